@@ -1,0 +1,65 @@
+/* A bump allocator: a scene's many small pieces are freed in one call, which
+ * also keeps error paths (the parser unwinds with longjmp) free of leaks. */
+#include "scene.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct Block {
+    struct Block *next;
+    size_t used, size;
+    max_align_t data[];
+} Block;
+
+struct Arena {
+    Block *head;
+};
+
+Arena *arena_new(void)
+{
+    return calloc(1, sizeof(Arena));
+}
+
+void *arena_alloc(Arena *a, size_t size)
+{
+    const size_t align = sizeof(max_align_t);
+    size = (size + align - 1) / align * align;
+    if (size == 0)
+        size = align;
+    Block *b = a->head;
+    if (!b || b->size - b->used < size) {
+        size_t cap = size > 65536 ? size : 65536;
+        b = malloc(sizeof(Block) + cap);
+        if (!b)
+            return NULL;
+        b->size = cap;
+        b->used = 0;
+        b->next = a->head;
+        a->head = b;
+    }
+    void *p = (char *)b->data + b->used;
+    b->used += size;
+    memset(p, 0, size);
+    return p;
+}
+
+char *arena_strdup(Arena *a, const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *p = arena_alloc(a, n);
+    if (p)
+        memcpy(p, s, n);
+    return p;
+}
+
+void arena_free(Arena *a)
+{
+    if (!a)
+        return;
+    for (Block *b = a->head, *next; b; b = next) {
+        next = b->next;
+        free(b);
+    }
+    free(a);
+}

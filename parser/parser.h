@@ -1,0 +1,31 @@
+/* Reading a POV-Ray scene file into a Scene description (scene.h). */
+#ifndef HST_PARSER_H
+#define HST_PARSER_H
+
+#include "scene.h"
+
+typedef struct {
+    /* Folders searched for #include after the scene's own folder, in order:
+     * --include-path/+L folders, then the project's installed include folder,
+     * then POV-Ray's include folder when it exists. */
+    const char *const *include_dirs;
+    int ninclude_dirs;
+    /* image_width / image_height as the scene sees them. */
+    int image_width, image_height;
+} ParseOptions;
+
+/* A parse error: "FILE:LINE:COLUMN: message". */
+typedef struct {
+    char file[512];
+    int line, column;
+    char message[512];
+    int is_io; /* 1 when the error is an unreadable file rather than bad text */
+} ParseError;
+
+/* Returns NULL and fills err on failure; never exits, never crashes. */
+Scene *parse_scene_file(const char *path, const ParseOptions *opts, ParseError *err);
+/* The same from a string, `name` standing in for the file name in messages
+ * and as the folder for #include ("." when it has none). */
+Scene *parse_scene_string(const char *name, const char *text, const ParseOptions *opts, ParseError *err);
+
+#endif

@@ -1,0 +1,36 @@
+/* Defaults of the scene description, as POV-Ray 3.7 defines them. */
+#include "scene.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+Finish scene_default_finish(void)
+{
+    Finish f;
+    memset(&f, 0, sizeof f);
+    f.ambient[0] = f.ambient[1] = f.ambient[2] = 0.1;
+    f.diffuse = 0.6;
+    f.brilliance = 1.0;
+    f.phong_size = 40.0;
+    f.roughness = 0.05;
+    f.reflection_falloff = 1.0;
+    return f;
+}
+
+Interior scene_default_interior(void)
+{
+    Interior i;
+    memset(&i, 0, sizeof i);
+    i.ior = 1.0;
+    i.fade_power = 0.0;
+    return i;
+}
+
+void scene_free(Scene *scene)
+{
+    if (!scene)
+        return;
+    Arena *a = scene->arena;
+    free(scene);
+    arena_free(a);
+}

@@ -1,0 +1,195 @@
+/* The scene description: what a .pov file says, in plain data.
+ *
+ * The parser fills it and knows nothing of grids, shadows or pixels; the engine
+ * reads it and never sees a token. Everything hangs off one arena owned by the
+ * Scene, so a scene is freed (or abandoned after an error) in one call.
+ *
+ * Only what the scene instantiates is here: a declaration that is never used
+ * (a sphere in an include file) leaves no trace in the description. */
+#ifndef HST_SCENE_H
+#define HST_SCENE_H
+
+#include <stddef.h>
+
+#include "transform.h"
+#include "vecmath.h"
+
+/* Where something was written, for messages. `file` points into the arena. */
+typedef struct {
+    const char *file;
+    int line, column;
+} SourcePos;
+
+/* POV-Ray colours carry filter and transmit beside rgb. */
+typedef struct {
+    double r, g, b, filter, transmit;
+} Colour;
+
+typedef enum {
+    PIGMENT_SOLID, /* one colour; the only kind the foundation needs */
+} PigmentKind;
+
+typedef struct {
+    PigmentKind kind;
+    Colour colour;
+    Transform transform; /* pattern space; identity for solid colours */
+} Pigment;
+
+/* POV-Ray 3.7 finish, with its defaults (see scene_default_finish). */
+typedef struct {
+    double ambient[3];    /* default 0.1 (scaled by global ambient_light) */
+    double emission[3];   /* default 0 */
+    double diffuse;       /* default 0.6 */
+    double brilliance;    /* default 1 */
+    double crand;         /* parsed, not modelled */
+    double phong;         /* default 0 */
+    double phong_size;    /* default 40 */
+    double specular;      /* default 0 */
+    double roughness;     /* default 0.05; stored as written (POV-Ray uses 1/roughness) */
+    double metallic;      /* default 0: highlights tinted by the pigment when > 0 */
+    double reflection_min[3]; /* `reflection` sets min = max unless both given */
+    double reflection_max[3];
+    double reflection_falloff;  /* default 1 */
+    int reflection_fresnel;     /* `reflection { ... fresnel }` */
+    double reflection_metallic; /* `reflection { ... metallic }` */
+    int conserve_energy;
+} Finish;
+
+typedef struct {
+    double ior;           /* default 1 */
+    double fade_distance; /* 0: none */
+    double fade_power;
+    Colour fade_colour;
+} Interior;
+
+typedef struct SceneTexture {
+    Pigment pigment;
+    Finish finish;
+    SourcePos pos;
+} SceneTexture;
+
+typedef enum {
+    OBJ_POLYGON,
+    OBJ_TRIANGLE,        /* also smooth_triangle (has_normals) */
+    OBJ_MESH,            /* mesh and mesh2, already expanded to index form */
+    OBJ_BOX,
+    OBJ_PLANE,
+    OBJ_UNION,
+} ObjectKind;
+
+typedef struct {
+    int v[3];       /* vertex indices */
+    int n[3];       /* normal indices, or -1 for a flat triangle */
+    int texture;    /* index into the mesh's textures, or -1 for the object's */
+} MeshFace;
+
+typedef struct SceneObject SceneObject;
+
+struct SceneObject {
+    ObjectKind kind;
+    SourcePos pos;
+    /* Object to world, composed of every transform written on the object in
+     * order. A child's world transform is child.transform then parent's. */
+    Transform transform;
+    /* NULL: inherit from the enclosing union, else the scene's default. */
+    const SceneTexture *texture;
+    const Interior *interior; /* NULL: default interior (ior 1) */
+    unsigned no_shadow : 1, no_image : 1, no_reflection : 1, hollow : 1, inverse : 1;
+    int double_illuminate;
+    union {
+        struct {            /* polygon: one or more closed outlines */
+            int npoints;    /* all outline points; each outline is closed */
+            Vec3 *points;   /* in object space; 2-D points have z = 0 */
+            int noutlines;
+            int *outline_start; /* noutlines + 1 entries: start index of each, then npoints */
+        } polygon;
+        struct {
+            Vec3 v[3];
+            Vec3 n[3];
+            int has_normals; /* smooth_triangle */
+        } triangle;
+        struct {
+            int nvertices, nnormals, nfaces, ntextures;
+            Vec3 *vertices, *normals;
+            MeshFace *faces;
+            const SceneTexture **textures;
+        } mesh;
+        struct {
+            Vec3 corner1, corner2;
+        } box;
+        struct {
+            Vec3 normal; /* as written (not normalised) */
+            double distance;
+        } plane;
+        struct {
+            int nchildren;
+            SceneObject **children;
+        } csg;
+    } u;
+};
+
+typedef enum {
+    LIGHT_POINT,
+    LIGHT_PARALLEL,
+} LightKind;
+
+typedef struct {
+    LightKind kind;
+    SourcePos pos;
+    Vec3 location;  /* world space, transforms applied */
+    Vec3 point_at;  /* parallel lights: direction is location - point_at */
+    Colour colour;
+    int shadowless;
+    double fade_distance; /* 0: no fading */
+    double fade_power;
+} SceneLight;
+
+typedef enum {
+    CAMERA_PERSPECTIVE,
+    CAMERA_ORTHOGRAPHIC,
+} CameraKind;
+
+/* The camera after POV-Ray's parse rules (defaults, angle, look_at, sky and
+ * transforms already applied): the engine only builds rays from it. */
+typedef struct {
+    CameraKind kind;
+    SourcePos pos;
+    Vec3 location, direction, up, right;
+} SceneCamera;
+
+typedef struct {
+    double assumed_gamma;   /* 0 when not given */
+    int max_trace_level;    /* default 5 */
+    double adc_bailout;     /* default 1/255 */
+    Colour ambient_light;   /* default 1,1,1 */
+    int has_assumed_gamma;
+} GlobalSettings;
+
+typedef struct Arena Arena;
+
+typedef struct {
+    Arena *arena;
+    double version;            /* from #version, default 3.7 */
+    SceneCamera camera;
+    int has_camera;
+    Colour background;         /* default black, transmit 1 when unspecified in 3.7 */
+    GlobalSettings globals;
+    SceneTexture default_texture;
+    int nlights;
+    SceneLight *lights;
+    int nobjects;
+    SceneObject **objects;     /* top-level objects in file order */
+} Scene;
+
+Finish scene_default_finish(void);
+Interior scene_default_interior(void);
+
+/* Arena allocation: zeroed memory that lives as long as the scene. */
+Arena *arena_new(void);
+void *arena_alloc(Arena *a, size_t size);
+char *arena_strdup(Arena *a, const char *s);
+void arena_free(Arena *a);
+
+void scene_free(Scene *scene);
+
+#endif

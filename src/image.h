@@ -1,0 +1,36 @@
+/* Images: linear RGBA float buffers, and the files they are written to and
+ * read from (OpenEXR through its C API, PNG, PPM). */
+#ifndef HST_IMAGE_H
+#define HST_IMAGE_H
+
+typedef struct {
+    int width, height;
+    float *rgba; /* width*height*4, row 0 at the top, linear light */
+} Image;
+
+typedef enum { IMAGE_FORMAT_UNKNOWN, IMAGE_FORMAT_EXR, IMAGE_FORMAT_PNG, IMAGE_FORMAT_PPM } ImageFormat;
+
+typedef struct {
+    int exr_float;      /* 1: 32-bit float channels; 0: half (default) */
+    int png_16bit;      /* 1: 16-bit PNG; 0: 8-bit (default) */
+    int write_alpha;    /* include alpha in PNG (EXR always has RGBA) */
+    /* Display encoding for PNG/PPM, as POV-Ray 3.7 does: 0 means sRGB, any
+     * other value a power-law gamma (file_gamma). */
+    double display_gamma;
+} ImageWriteOptions;
+
+int image_alloc(Image *img, int width, int height);
+void image_free(Image *img);
+
+ImageFormat image_format_from_path(const char *path);
+
+/* Write to a temporary file beside `path` and rename it into place, so an
+ * interrupted or failed write never leaves a truncated image. Returns 0 on
+ * success, or -1 with a message in err. */
+int image_write(const char *path, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+
+/* Read an EXR, PNG or PPM into linear RGBA (PNG/PPM are decoded from sRGB, or
+ * the gamma given, back to linear). Returns 0, or -1 with a message. */
+int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen);
+
+#endif

@@ -1,0 +1,32 @@
+/* Affine transforms with POV-Ray's conventions: row vectors, a point p maps to
+ * p * M, transforms compose in the order they are written, rotations are in
+ * degrees about x, then y, then z in POV-Ray's left-handed frame. */
+#ifndef HST_TRANSFORM_H
+#define HST_TRANSFORM_H
+
+#include "vecmath.h"
+
+typedef struct {
+    double m[4][4];   /* forward: object to world */
+    double inv[4][4]; /* inverse: world to object */
+} Transform;
+
+void transform_identity(Transform *t);
+void transform_translate(Transform *t, Vec3 v);
+void transform_scale(Transform *t, Vec3 v);
+void transform_rotate(Transform *t, Vec3 degrees);
+/* POV-Ray's `matrix <m00,m01,m02, m10,m11,m12, m20,m21,m22, m30,m31,m32>`.
+ * Returns 0 when the matrix is singular (and leaves t unchanged). */
+int transform_matrix(Transform *t, const double v[12]);
+/* t = t followed by u (u applied after t). */
+void transform_compose(Transform *t, const Transform *u);
+int transform_is_identity(const Transform *t);
+
+Vec3 transform_point(const Transform *t, Vec3 p);
+Vec3 transform_direction(const Transform *t, Vec3 d);
+/* Normals transform with the inverse transpose. */
+Vec3 transform_normal(const Transform *t, Vec3 n);
+Vec3 inverse_transform_point(const Transform *t, Vec3 p);
+Vec3 inverse_transform_direction(const Transform *t, Vec3 d);
+
+#endif

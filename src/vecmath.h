@@ -1,0 +1,37 @@
+/* Three-component vectors in double precision, as POV-Ray's DBL vectors.
+ * Everything is inline: these run per ray and per polygon test. */
+#ifndef HST_VECMATH_H
+#define HST_VECMATH_H
+
+#include <math.h>
+
+#ifndef M_PI /* not in strict C11 */
+#define M_PI 3.14159265358979323846
+#endif
+
+typedef struct { double x, y, z; } Vec3;
+
+static inline Vec3 v3(double x, double y, double z) { Vec3 r = { x, y, z }; return r; }
+static inline Vec3 v3_add(Vec3 a, Vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline Vec3 v3_sub(Vec3 a, Vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline Vec3 v3_mul(Vec3 a, Vec3 b) { return v3(a.x * b.x, a.y * b.y, a.z * b.z); }
+static inline Vec3 v3_scale(Vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static inline Vec3 v3_neg(Vec3 a) { return v3(-a.x, -a.y, -a.z); }
+static inline double v3_dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline Vec3 v3_cross(Vec3 a, Vec3 b)
+{
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline double v3_length(Vec3 a) { return sqrt(v3_dot(a, a)); }
+static inline Vec3 v3_normalize(Vec3 a)
+{
+    double l = v3_length(a);
+    return l > 0.0 ? v3_scale(a, 1.0 / l) : a;
+}
+/* a + b * s: the ray-point idiom. */
+static inline Vec3 v3_madd(Vec3 a, Vec3 b, double s) { return v3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
+static inline double v3_comp(Vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
+static inline Vec3 v3_min(Vec3 a, Vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
+static inline Vec3 v3_max(Vec3 a, Vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
+
+#endif
