@@ -14,6 +14,7 @@ Finish scene_default_finish(void)
     f.phong_size = 40.0;
     f.roughness = 0.05;
     f.reflection_falloff = 1.0;
+    f.reflection_exponent = 1.0;
     return f;
 }
 

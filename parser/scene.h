@@ -50,6 +50,7 @@ typedef struct {
     double reflection_min[3]; /* `reflection` sets min = max unless both given */
     double reflection_max[3];
     double reflection_falloff;  /* default 1 */
+    double reflection_exponent; /* default 1 (`reflection_exponent`, or `exponent` in a reflection block) */
     int reflection_fresnel;     /* `reflection { ... fresnel }` */
     double reflection_metallic; /* `reflection { ... metallic }` */
     int conserve_energy;

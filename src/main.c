@@ -1,1 +1,186 @@
-int main(void) { return 0; }
+/* hstrace: scene file -> description -> polygons and grid -> rays -> image. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "config.h"
+#include "grid.h"
+#include "image.h"
+#include "options.h"
+#include "parser.h"
+#include "render.h"
+#include "shadow.h"
+#include "stats.h"
+#include "world.h"
+
+#ifndef HST_DATADIR
+#define HST_DATADIR "/usr/local/share/hstrace"
+#endif
+
+static Quality quality_from_level(int q)
+{
+    /* POV-Ray's QUALITY_n flags (povray.h): shadows from 4, refraction
+     * from 6, reflection from 8; 0-1 show the bare pigment colour. */
+    Quality r = { q >= 4, q >= 6, q >= 8, q <= 1 };
+    return r;
+}
+
+/* Default output: the scene's base name with .png, in the current folder,
+ * as POV-Ray does. */
+static char *default_output(const char *scene)
+{
+    const char *base = strrchr(scene, '/');
+    base = base ? base + 1 : scene;
+    size_t n = strlen(base);
+    const char *dot = strrchr(base, '.');
+    if (dot && dot != base)
+        n = (size_t)(dot - base);
+    char *out = malloc(n + 5);
+    if (out) {
+        memcpy(out, base, n);
+        memcpy(out + n, ".png", 5);
+    }
+    return out;
+}
+
+static int is_dir(const char *p)
+{
+    struct stat st;
+    return stat(p, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+static int online_cpus(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > 1024 ? 1024 : (int)n;
+}
+
+int main(int argc, char **argv)
+{
+    double wall0 = clock_wall();
+    Options opt;
+    char err[1024];
+    if (options_parse(argc, argv, &opt, err, sizeof err)) {
+        fprintf(stderr, "hstrace: %s\n", err);
+        return EXIT_USAGE;
+    }
+    if (opt.help) {
+        options_usage(stdout);
+        return EXIT_OK;
+    }
+    if (opt.version) {
+        printf("hstrace %s\n", PACKAGE_VERSION);
+        return EXIT_OK;
+    }
+
+    char *owned_output = NULL;
+    const char *output = opt.output;
+    if (!output && !(output = owned_output = default_output(opt.scene))) {
+        fprintf(stderr, "hstrace: out of memory\n");
+        return EXIT_IO;
+    }
+    if (image_format_from_path(output) == IMAGE_FORMAT_UNKNOWN) {
+        fprintf(stderr, "hstrace: '%s': unknown image format (use .exr, .png or .ppm)\n", output);
+        free(owned_output);
+        return EXIT_USAGE;
+    }
+
+    /* Include search: the scene's folder (the parser's own rule), then the
+     * user's folders, the project's, and POV-Ray's when installed. */
+    const char *dirs[MAX_INCLUDE_PATHS + 2];
+    int ndirs = 0;
+    for (int i = 0; i < opt.ninclude_paths; i++)
+        dirs[ndirs++] = opt.include_paths[i];
+    dirs[ndirs++] = HST_DATADIR "/include";
+    if (is_dir(POVRAY_INCLUDE_DIR))
+        dirs[ndirs++] = POVRAY_INCLUDE_DIR;
+    ParseOptions popt = { dirs, ndirs, opt.width, opt.height };
+
+    StatsReport report;
+    memset(&report, 0, sizeof report);
+    report.scene = opt.scene;
+    report.shadow_method = opt.shadows;
+    report.width = opt.width;
+    report.height = opt.height;
+
+    double t = clock_wall();
+    ParseError perr;
+    Scene *scene = parse_scene_file(opt.scene, &popt, &perr);
+    if (!scene) {
+        if (perr.line > 0)
+            fprintf(stderr, "%s:%d:%d: %s\n", perr.file, perr.line, perr.column, perr.message);
+        else
+            fprintf(stderr, "%s: %s\n", perr.file[0] ? perr.file : opt.scene, perr.message);
+        free(owned_output);
+        return perr.is_io ? EXIT_IO : EXIT_SCENE;
+    }
+    report.parse_seconds = clock_wall() - t;
+
+    t = clock_wall();
+    World world;
+    WorldError werr;
+    if (world_build(&world, scene, &werr)) {
+        fprintf(stderr, "hstrace: %s\n", werr.message);
+        scene_free(scene);
+        free(owned_output);
+        return EXIT_IO;
+    }
+    Grid grid;
+    if (grid_build(&grid, &world, opt.grid[0] ? opt.grid : NULL, NULL, 0)) {
+        fprintf(stderr, "hstrace: out of memory while building the grid\n");
+        world_free(&world);
+        scene_free(scene);
+        free(owned_output);
+        return EXIT_IO;
+    }
+    report.preprocess_seconds = clock_wall() - t;
+    memcpy(report.grid, grid.n, sizeof report.grid);
+    report.grid_registrations = grid.nitems;
+    report.npolygons = world.npolygons;
+    report.nplanes = world.nplanes;
+    report.nlights = world.nlights;
+
+    RenderOptions ropt;
+    memset(&ropt, 0, sizeof ropt);
+    ropt.width = opt.width;
+    ropt.height = opt.height;
+    ropt.threads = opt.threads > 0 ? opt.threads : online_cpus();
+    ropt.quality = quality_from_level(opt.quality);
+    ropt.shadow = shadow_method_find(opt.shadows);
+    ropt.progress = isatty(STDERR_FILENO);
+    report.threads = ropt.threads;
+
+    Image img;
+    int status = EXIT_OK;
+    if (render_image(&world, &grid, &ropt, &img, &report.render)) {
+        fprintf(stderr, "hstrace: out of memory while rendering\n");
+        status = EXIT_IO;
+    } else {
+        t = clock_wall();
+        ImageWriteOptions wopt;
+        memset(&wopt, 0, sizeof wopt);
+        wopt.exr_float = opt.exr_float;
+        wopt.png_16bit = opt.png16;
+        wopt.display_gamma = 0.0; /* sRGB, as POV-Ray 3.7 writes assumed_gamma 1 scenes */
+        if (image_write(output, &img, &wopt, err, sizeof err)) {
+            fprintf(stderr, "hstrace: %s\n", err);
+            status = EXIT_IO;
+        }
+        report.output_seconds = clock_wall() - t;
+        image_free(&img);
+    }
+    report.wall_seconds = clock_wall() - wall0;
+    if (status == EXIT_OK && opt.stats)
+        stats_print(stderr, &report);
+    if (status == EXIT_OK && opt.stats_json && stats_write_json(opt.stats_json, &report, err, sizeof err)) {
+        fprintf(stderr, "hstrace: %s\n", err);
+        status = EXIT_IO;
+    }
+    grid_free(&grid);
+    world_free(&world);
+    scene_free(scene);
+    free(owned_output);
+    return status;
+}

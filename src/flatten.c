@@ -1,0 +1,422 @@
+/* Flattening: the scene description's object tree becomes world-space
+ * polygons. Unions pass their transform, texture, interior and flags down;
+ * boxes become six quads; mesh faces become triangles; planes stay infinite
+ * and are kept apart (they cannot go into a finite grid). */
+#include "world.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    World *w;
+    int cap_polygons, cap_points, cap_outlines, cap_normals, cap_planes, cap_materials;
+    int failed;
+} Builder;
+
+/* Grows *array (of `size`-byte items) so that index `need` fits. */
+static int grow(void **array, int *cap, int need, size_t size)
+{
+    if (need < *cap)
+        return 0;
+    int ncap = *cap ? *cap : 64;
+    while (ncap <= need) {
+        if (ncap > (1 << 29))
+            return -1;
+        ncap *= 2;
+    }
+    void *p = realloc(*array, (size_t)ncap * size);
+    if (!p)
+        return -1;
+    *array = p;
+    *cap = ncap;
+    return 0;
+}
+
+#define GROW(b, arr, cap, need) \
+    (grow((void **)&(b)->w->arr, &(b)->cap, (need), sizeof(*(b)->w->arr)) ? ((b)->failed = 1, -1) : 0)
+
+typedef struct {
+    Transform transform;
+    const SceneTexture *texture;
+    const Interior *interior;
+    int no_shadow, no_image, no_reflection, double_illuminate;
+    const void *top_object; /* the top-level object: owner of the default interior */
+} Inherited;
+
+static RGB rgb_of(const Colour *c) { RGB r = { c->r, c->g, c->b }; return r; }
+
+static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex, SourcePos pos)
+{
+    World *w = b->w;
+    if (GROW(b, materials, cap_materials, w->nmaterials))
+        return -1;
+    Material *m = &w->materials[w->nmaterials];
+    memset(m, 0, sizeof *m);
+    m->pigment = tex->pigment.colour;
+    m->finish = tex->finish;
+    /* POV-Ray keeps 1/roughness internally; so do we. */
+    m->finish.roughness = tex->finish.roughness != 0.0 ? 1.0 / tex->finish.roughness : 0.0;
+    Interior def = scene_default_interior();
+    const Interior *it = in->interior ? in->interior : &def;
+    m->interior_key = in->interior ? (const void *)in->interior : in->top_object;
+    m->ior = it->ior;
+    m->fade_distance = it->fade_distance;
+    m->fade_power = it->fade_power;
+    m->fade_colour = rgb_of(&it->fade_colour);
+    m->opaque = tex->pigment.colour.filter == 0.0 && tex->pigment.colour.transmit == 0.0;
+    m->no_shadow = in->no_shadow;
+    m->no_image = in->no_image;
+    m->no_reflection = in->no_reflection;
+    m->double_illuminate = in->double_illuminate;
+    m->pos = pos;
+    return w->nmaterials++;
+}
+
+/* Picks the two axes to keep when projecting onto the plane: drop the axis
+ * where the normal is largest, so the projection never degenerates. */
+static void choose_axes(Polygon *p)
+{
+    double ax = fabs(p->normal.x), ay = fabs(p->normal.y), az = fabs(p->normal.z);
+    if (ax >= ay && ax >= az) { p->axis_u = 1; p->axis_v = 2; }
+    else if (ay >= az)        { p->axis_u = 0; p->axis_v = 2; }
+    else                      { p->axis_u = 0; p->axis_v = 1; }
+}
+
+static void finish_polygon_bounds(World *w, Polygon *p)
+{
+    Vec3 lo = w->points[p->first_point], hi = lo;
+    for (int i = 1; i < p->npoints; i++) {
+        lo = v3_min(lo, w->points[p->first_point + i]);
+        hi = v3_max(hi, w->points[p->first_point + i]);
+    }
+    p->bbox_min = lo;
+    p->bbox_max = hi;
+    w->bounds_min = v3_min(w->bounds_min, lo);
+    w->bounds_max = v3_max(w->bounds_max, hi);
+}
+
+/* A triangle in world space; zero-area triangles are dropped (they can hit
+ * nothing and have no normal). Returns 0, or -1 on allocation failure. */
+static int add_triangle(Builder *b, Vec3 a, Vec3 c1, Vec3 c2, const Vec3 *normals, int material)
+{
+    World *w = b->w;
+    Vec3 n = v3_cross(v3_sub(c1, a), v3_sub(c2, a));
+    double len = v3_length(n);
+    if (!(len > 0.0) || !isfinite(len))
+        return 0;
+    if (GROW(b, polygons, cap_polygons, w->npolygons) || GROW(b, points, cap_points, w->npoints + 3))
+        return -1;
+    Polygon *p = &w->polygons[w->npolygons];
+    memset(p, 0, sizeof *p);
+    p->normal = v3_scale(n, 1.0 / len);
+    p->d = v3_dot(p->normal, a);
+    choose_axes(p);
+    p->first_point = w->npoints;
+    p->npoints = 3;
+    p->first_outline = -1;
+    p->noutlines = 1;
+    p->smooth_normals = -1;
+    p->material = material;
+    w->points[w->npoints++] = a;
+    w->points[w->npoints++] = c1;
+    w->points[w->npoints++] = c2;
+    if (normals) {
+        if (GROW(b, vertex_normals, cap_normals, w->nvertex_normals + 3))
+            return -1;
+        p->smooth_normals = w->nvertex_normals;
+        for (int i = 0; i < 3; i++)
+            w->vertex_normals[w->nvertex_normals++] = normals[i];
+    }
+    finish_polygon_bounds(w, p);
+    w->npolygons++;
+    return 0;
+}
+
+/* A general polygon: `n` world points forming `noutlines` closed outlines
+ * (outline k spans starts[k]..starts[k+1]). The plane normal comes from
+ * Newell's method over all points, which is exact for planar input and
+ * averages sensibly otherwise. */
+static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, int noutlines, int material)
+{
+    World *w = b->w;
+    Vec3 nrm = v3(0, 0, 0), centroid = v3(0, 0, 0);
+    for (int k = 0; k < noutlines; k++) {
+        for (int i = starts[k]; i < starts[k + 1]; i++) {
+            int j = (i + 1 < starts[k + 1]) ? i + 1 : starts[k];
+            Vec3 p = pts[i], q = pts[j];
+            nrm.x += (p.y - q.y) * (p.z + q.z);
+            nrm.y += (p.z - q.z) * (p.x + q.x);
+            nrm.z += (p.x - q.x) * (p.y + q.y);
+        }
+    }
+    for (int i = 0; i < n; i++)
+        centroid = v3_add(centroid, pts[i]);
+    double len = v3_length(nrm);
+    if (!(len > 0.0) || !isfinite(len) || n < 3)
+        return 0; /* degenerate: no area, nothing to hit */
+    if (n == 3 && noutlines == 1)
+        return add_triangle(b, pts[0], pts[1], pts[2], NULL, material);
+    if (GROW(b, polygons, cap_polygons, w->npolygons) || GROW(b, points, cap_points, w->npoints + n) ||
+        GROW(b, outline_start, cap_outlines, w->noutline_starts + noutlines + 1))
+        return -1;
+    Polygon *p = &w->polygons[w->npolygons];
+    memset(p, 0, sizeof *p);
+    p->normal = v3_scale(nrm, 1.0 / len);
+    p->d = v3_dot(p->normal, v3_scale(centroid, 1.0 / n));
+    choose_axes(p);
+    p->first_point = w->npoints;
+    p->npoints = n;
+    p->first_outline = w->noutline_starts;
+    p->noutlines = noutlines;
+    p->smooth_normals = -1;
+    p->material = material;
+    for (int k = 0; k <= noutlines; k++)
+        w->outline_start[w->noutline_starts++] = w->npoints + starts[k];
+    memcpy(&w->points[w->npoints], pts, sizeof(Vec3) * (size_t)n);
+    w->npoints += n;
+    finish_polygon_bounds(w, p);
+    w->npolygons++;
+    return 0;
+}
+
+static int flatten_polygon(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    int n = o->u.polygon.npoints, no = o->u.polygon.noutlines;
+    Vec3 *pts = malloc(sizeof(Vec3) * (size_t)(n > 0 ? n : 1));
+    int *starts = malloc(sizeof(int) * (size_t)(no + 1));
+    if (!pts || !starts) {
+        free(pts);
+        free(starts);
+        b->failed = 1;
+        return -1;
+    }
+    /* Outlines arrive closed (last point repeats the first); the inside test
+     * walks edges cyclically, so the repeat is dropped here. */
+    int m = 0;
+    for (int k = 0; k < no; k++) {
+        int s = o->u.polygon.outline_start[k], e = o->u.polygon.outline_start[k + 1];
+        starts[k] = m;
+        for (int i = s; i < e; i++) {
+            Vec3 q = o->u.polygon.points[i];
+            if (i == e - 1 && e - s > 1) {
+                Vec3 f = o->u.polygon.points[s];
+                if (q.x == f.x && q.y == f.y && q.z == f.z)
+                    continue;
+            }
+            pts[m++] = transform_point(&in->transform, q);
+        }
+    }
+    starts[no] = m;
+    int rc = add_polygon(b, pts, m, starts, no, material);
+    free(pts);
+    free(starts);
+    return rc;
+}
+
+static int flatten_box(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Vec3 lo = v3_min(o->u.box.corner1, o->u.box.corner2);
+    Vec3 hi = v3_max(o->u.box.corner1, o->u.box.corner2);
+    Vec3 c[8];
+    for (int i = 0; i < 8; i++)
+        c[i] = transform_point(&in->transform, v3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z));
+    static const int faces[6][4] = {
+        { 0, 2, 6, 4 }, { 1, 5, 7, 3 }, /* x = lo, x = hi */
+        { 0, 4, 5, 1 }, { 2, 3, 7, 6 }, /* y = lo, y = hi */
+        { 0, 1, 3, 2 }, { 4, 6, 7, 5 }, /* z = lo, z = hi */
+    };
+    for (int f = 0; f < 6; f++) {
+        Vec3 q[4] = { c[faces[f][0]], c[faces[f][1]], c[faces[f][2]], c[faces[f][3]] };
+        int starts[2] = { 0, 4 };
+        if (add_polygon(b, q, 4, starts, 1, material))
+            return -1;
+    }
+    return 0;
+}
+
+static Vec3 world_normal(const Inherited *in, Vec3 n)
+{
+    return v3_normalize(transform_normal(&in->transform, n));
+}
+
+static int flatten_triangle(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Vec3 v[3], n[3];
+    for (int i = 0; i < 3; i++) {
+        v[i] = transform_point(&in->transform, o->u.triangle.v[i]);
+        n[i] = world_normal(in, o->u.triangle.n[i]);
+    }
+    return add_triangle(b, v[0], v[1], v[2], o->u.triangle.has_normals ? n : NULL, material);
+}
+
+static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    const int nt = o->u.mesh.ntextures;
+    int *face_material = NULL;
+    if (nt > 0) {
+        face_material = malloc(sizeof(int) * (size_t)nt);
+        if (!face_material) {
+            b->failed = 1;
+            return -1;
+        }
+        for (int i = 0; i < nt; i++) {
+            const SceneTexture *t = o->u.mesh.textures[i];
+            face_material[i] = t ? add_material(b, in, t, o->pos) : material;
+            if (face_material[i] < 0) {
+                free(face_material);
+                return -1;
+            }
+        }
+    }
+    int rc = 0;
+    for (int f = 0; f < o->u.mesh.nfaces && rc == 0; f++) {
+        const MeshFace *face = &o->u.mesh.faces[f];
+        Vec3 v[3], n[3];
+        int smooth = 1;
+        for (int i = 0; i < 3; i++) {
+            int vi = face->v[i];
+            if (vi < 0 || vi >= o->u.mesh.nvertices) {
+                smooth = -1;
+                break;
+            }
+            v[i] = transform_point(&in->transform, o->u.mesh.vertices[vi]);
+            int ni = face->n[i];
+            if (ni < 0 || ni >= o->u.mesh.nnormals)
+                smooth = 0;
+            else
+                n[i] = world_normal(in, o->u.mesh.normals[ni]);
+        }
+        if (smooth < 0)
+            continue; /* the parser rejects bad indices; be safe anyway */
+        int m = (face->texture >= 0 && face->texture < nt) ? face_material[face->texture] : material;
+        rc = add_triangle(b, v[0], v[1], v[2], smooth ? n : NULL, m);
+    }
+    free(face_material);
+    return rc;
+}
+
+static int flatten_plane(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    World *w = b->w;
+    Vec3 n = o->u.plane.normal;
+    double len = v3_length(n);
+    if (!(len > 0.0))
+        return 0;
+    /* POV-Ray normalises the normal but not the distance: the plane is
+     * dot(n/|n|, p) == distance. A point on it and its normal go to world space. */
+    Vec3 p = v3_scale(v3_scale(n, 1.0 / len), o->u.plane.distance);
+    Vec3 wp = transform_point(&in->transform, p);
+    Vec3 wn = v3_normalize(transform_normal(&in->transform, n));
+    if (GROW(b, planes, cap_planes, w->nplanes))
+        return -1;
+    InfinitePlane *pl = &w->planes[w->nplanes++];
+    pl->normal = wn;
+    pl->d = v3_dot(wn, wp);
+    pl->material = material;
+    return 0;
+}
+
+static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth)
+{
+    if (depth > 1000)
+        return 0;
+    Inherited in = *parent;
+    if (depth == 0)
+        in.top_object = o;
+    in.transform = o->transform;
+    transform_compose(&in.transform, &parent->transform);
+    if (o->texture)
+        in.texture = o->texture;
+    if (o->interior)
+        in.interior = o->interior;
+    in.no_shadow |= o->no_shadow;
+    in.no_image |= o->no_image;
+    in.no_reflection |= o->no_reflection;
+    in.double_illuminate |= o->double_illuminate;
+
+    if (o->kind == OBJ_UNION) {
+        for (int i = 0; i < o->u.csg.nchildren; i++)
+            if (flatten_object(b, o->u.csg.children[i], &in, scene, depth + 1))
+                return -1;
+        return 0;
+    }
+    const SceneTexture *tex = in.texture ? in.texture : &scene->default_texture;
+    int material = add_material(b, &in, tex, o->pos);
+    if (material < 0)
+        return -1;
+    switch (o->kind) {
+    case OBJ_POLYGON: return flatten_polygon(b, o, &in, material);
+    case OBJ_TRIANGLE: return flatten_triangle(b, o, &in, material);
+    case OBJ_MESH: return flatten_mesh(b, o, &in, material);
+    case OBJ_BOX: return flatten_box(b, o, &in, material);
+    case OBJ_PLANE: return flatten_plane(b, o, &in, material);
+    case OBJ_UNION: break;
+    }
+    return 0;
+}
+
+static void build_lights(World *w, const Scene *scene)
+{
+    for (int i = 0; i < scene->nlights; i++) {
+        const SceneLight *sl = &scene->lights[i];
+        Light *l = &w->lights[i];
+        l->kind = sl->kind;
+        l->location = sl->location;
+        l->colour = rgb_of(&sl->colour);
+        l->shadowless = sl->shadowless;
+        l->fade_distance = sl->fade_distance;
+        l->fade_power = sl->fade_power;
+        l->direction = v3_normalize(v3_sub(sl->location, sl->point_at));
+    }
+}
+
+int world_build(World *w, const Scene *scene, WorldError *err)
+{
+    memset(w, 0, sizeof *w);
+    memset(err, 0, sizeof *err);
+    w->bounds_min = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
+    w->bounds_max = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+    Builder b = { .w = w };
+    Inherited root;
+    memset(&root, 0, sizeof root);
+    transform_identity(&root.transform);
+    for (int i = 0; i < scene->nobjects; i++) {
+        if (flatten_object(&b, scene->objects[i], &root, scene, 0) || b.failed) {
+            snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
+            err->pos = scene->objects[i]->pos;
+            world_free(w);
+            return -1;
+        }
+    }
+    w->nlights = scene->nlights;
+    w->lights = calloc((size_t)(scene->nlights > 0 ? scene->nlights : 1), sizeof(Light));
+    if (!w->lights) {
+        snprintf(err->message, sizeof err->message, "out of memory");
+        world_free(w);
+        return -1;
+    }
+    build_lights(w, scene);
+    w->camera.kind = scene->camera.kind;
+    w->camera.location = scene->camera.location;
+    w->camera.direction = scene->camera.direction;
+    w->camera.up = scene->camera.up;
+    w->camera.right = scene->camera.right;
+    w->background = rgb_of(&scene->background);
+    w->ambient_light = rgb_of(&scene->globals.ambient_light);
+    w->max_trace_level = scene->globals.max_trace_level > 0 ? scene->globals.max_trace_level : 5;
+    w->adc_bailout = scene->globals.adc_bailout > 0 ? scene->globals.adc_bailout : 1.0 / 255.0;
+    return 0;
+}
+
+void world_free(World *w)
+{
+    free(w->polygons);
+    free(w->points);
+    free(w->outline_start);
+    free(w->vertex_normals);
+    free(w->planes);
+    free(w->materials);
+    free(w->lights);
+    memset(w, 0, sizeof *w);
+}

@@ -1,0 +1,255 @@
+/* Grid construction (exact polygon/cell registration) and the 3DDDA set-up. */
+#include "grid.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void grid_choose_resolution(const World *w, Vec3 lo, Vec3 hi, int res[3])
+{
+    /* About two cells per polygon, shaped like the box: the usual ARTS
+     * heuristic. Flat boxes get one cell across their thin axis. */
+    const double density = 2.0;
+    double n = w->npolygons > 0 ? w->npolygons : 1;
+    Vec3 ext = v3_sub(hi, lo);
+    double e[3] = { ext.x, ext.y, ext.z };
+    double emax = fmax(e[0], fmax(e[1], e[2]));
+    double volume = 1.0;
+    int dims = 0;
+    for (int a = 0; a < 3; a++) {
+        if (e[a] > emax * 1e-3) {
+            volume *= e[a];
+            dims++;
+        }
+    }
+    double per_len = dims > 0 ? pow(density * n / volume, 1.0 / dims) : 1.0;
+    for (int a = 0; a < 3; a++) {
+        int k = (e[a] > emax * 1e-3) ? (int)ceil(e[a] * per_len) : 1;
+        res[a] = k < 1 ? 1 : k > 512 ? 512 : k;
+    }
+    /* Keep the cell array within reason (2^24 cells). */
+    while ((double)res[0] * res[1] * res[2] > 16777216.0)
+        for (int a = 0; a < 3; a++)
+            res[a] = res[a] > 1 ? res[a] * 3 / 4 : 1;
+}
+
+/* Sutherland-Hodgman: clip the convex-or-not outline in `in` against the
+ * half space where coordinate `axis` is >= (sign>0) or <= (sign<0) `bound`. */
+static int clip_against(const Vec3 *in, int n, Vec3 *out, int axis, double bound, int sign)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        Vec3 a = in[i], b = in[(i + 1) % n];
+        double da = sign * (v3_comp(a, axis) - bound);
+        double db = sign * (v3_comp(b, axis) - bound);
+        if (da >= 0)
+            out[m++] = a;
+        if ((da >= 0) != (db >= 0)) {
+            double t = da / (da - db);
+            out[m++] = v3_add(a, v3_scale(v3_sub(b, a), t));
+        }
+    }
+    return m;
+}
+
+static int outline_overlaps_box(const Vec3 *pts, int n, Vec3 lo, Vec3 hi, Vec3 *buf_a, Vec3 *buf_b)
+{
+    memcpy(buf_a, pts, sizeof(Vec3) * (size_t)n);
+    int m = n;
+    Vec3 *src = buf_a, *dst = buf_b;
+    for (int axis = 0; axis < 3 && m > 0; axis++) {
+        m = clip_against(src, m, dst, axis, v3_comp(lo, axis), +1);
+        Vec3 *t = src; src = dst; dst = t;
+        if (m == 0)
+            break;
+        m = clip_against(src, m, dst, axis, v3_comp(hi, axis), -1);
+        t = src; src = dst; dst = t;
+    }
+    return m > 0;
+}
+
+int polygon_overlaps_box(const World *w, const Polygon *p, Vec3 lo, Vec3 hi)
+{
+    /* The plane must pass through the box: corners on both sides (or on it). */
+    Vec3 c = v3_scale(v3_add(lo, hi), 0.5), h = v3_scale(v3_sub(hi, lo), 0.5);
+    double r = h.x * fabs(p->normal.x) + h.y * fabs(p->normal.y) + h.z * fabs(p->normal.z);
+    if (fabs(v3_dot(p->normal, c) - p->d) > r)
+        return 0;
+    /* Clip buffers: an n-gon clipped by 6 planes has at most n + 6 points. */
+    int maxn = p->npoints + 8;
+    Vec3 stack_a[32], stack_b[32];
+    Vec3 *a = maxn <= 32 ? stack_a : malloc(sizeof(Vec3) * (size_t)maxn);
+    Vec3 *b = maxn <= 32 ? stack_b : malloc(sizeof(Vec3) * (size_t)maxn);
+    int hit = 1; /* when memory is short, register conservatively */
+    if (a && b) {
+        if (p->first_outline < 0) {
+            hit = outline_overlaps_box(&w->points[p->first_point], 3, lo, hi, a, b);
+        } else {
+            hit = 0;
+            const int *start = &w->outline_start[p->first_outline];
+            for (int k = 0; k < p->noutlines && !hit; k++)
+                hit = outline_overlaps_box(&w->points[start[k]], start[k + 1] - start[k], lo, hi, a, b);
+        }
+    }
+    if (a != stack_a) free(a);
+    if (b != stack_b) free(b);
+    return hit;
+}
+
+typedef struct {
+    uint32_t cell, polygon;
+} Registration;
+
+static int cell_coord(const Grid *g, double x, int axis)
+{
+    int c = (int)floor((x - v3_comp(g->min, axis)) * v3_comp(g->inv_cell_size, axis));
+    return c < 0 ? 0 : c >= g->n[axis] ? g->n[axis] - 1 : c;
+}
+
+int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int nextra)
+{
+    memset(g, 0, sizeof *g);
+    Vec3 lo = w->bounds_min, hi = w->bounds_max;
+    for (int i = 0; i < nextra; i++) {
+        lo = v3_min(lo, extra[i]);
+        hi = v3_max(hi, extra[i]);
+    }
+    if (!(lo.x <= hi.x)) { /* no geometry at all */
+        lo = v3(-1, -1, -1);
+        hi = v3(1, 1, 1);
+    }
+    /* Pad so that nothing lies exactly on the outer faces. */
+    Vec3 ext = v3_sub(hi, lo);
+    double pad = 1e-6 * fmax(1.0, fmax(ext.x, fmax(ext.y, ext.z)));
+    lo = v3_sub(lo, v3(pad, pad, pad));
+    hi = v3_add(hi, v3(pad, pad, pad));
+    int r[3];
+    if (res)
+        memcpy(r, res, sizeof r);
+    else
+        grid_choose_resolution(w, lo, hi, r);
+    g->min = lo;
+    g->max = hi;
+    for (int a = 0; a < 3; a++)
+        g->n[a] = r[a] < 1 ? 1 : r[a];
+    g->ncells = g->n[0] * g->n[1] * g->n[2];
+    ext = v3_sub(hi, lo);
+    g->cell_size = v3(ext.x / g->n[0], ext.y / g->n[1], ext.z / g->n[2]);
+    g->inv_cell_size = v3(1.0 / g->cell_size.x, 1.0 / g->cell_size.y, 1.0 / g->cell_size.z);
+
+    size_t cap = (size_t)w->npolygons * 2 + 16, count = 0;
+    Registration *regs = malloc(cap * sizeof *regs);
+    g->cell_start = calloc((size_t)g->ncells + 1, sizeof(uint32_t));
+    if (!regs || !g->cell_start) {
+        free(regs);
+        grid_free(g);
+        return -1;
+    }
+    for (int pi = 0; pi < w->npolygons; pi++) {
+        const Polygon *p = &w->polygons[pi];
+        int c0[3], c1[3];
+        for (int a = 0; a < 3; a++) {
+            c0[a] = cell_coord(g, v3_comp(p->bbox_min, a), a);
+            c1[a] = cell_coord(g, v3_comp(p->bbox_max, a), a);
+        }
+        int single = c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2];
+        for (int z = c0[2]; z <= c1[2]; z++)
+            for (int y = c0[1]; y <= c1[1]; y++)
+                for (int x = c0[0]; x <= c1[0]; x++) {
+                    if (!single) {
+                        /* The cell, grown by a hair so that a polygon lying on a
+                         * cell face is registered on both sides of it. */
+                        Vec3 clo = v3(lo.x + x * g->cell_size.x, lo.y + y * g->cell_size.y, lo.z + z * g->cell_size.z);
+                        Vec3 chi = v3_add(clo, g->cell_size);
+                        Vec3 eps = v3_scale(g->cell_size, 1e-9);
+                        if (!polygon_overlaps_box(w, p, v3_sub(clo, eps), v3_add(chi, eps)))
+                            continue;
+                    }
+                    if (count == cap) {
+                        cap *= 2;
+                        Registration *n = realloc(regs, cap * sizeof *regs);
+                        if (!n) {
+                            free(regs);
+                            grid_free(g);
+                            return -1;
+                        }
+                        regs = n;
+                    }
+                    int c[3] = { x, y, z };
+                    regs[count].cell = (uint32_t)grid_cell_index(g, c);
+                    regs[count].polygon = (uint32_t)pi;
+                    count++;
+                }
+    }
+    /* Counting sort into compressed rows: polygons keep index order per cell,
+     * so walks and results do not depend on anything but the scene. */
+    for (size_t i = 0; i < count; i++)
+        g->cell_start[regs[i].cell + 1]++;
+    for (int c = 0; c < g->ncells; c++)
+        g->cell_start[c + 1] += g->cell_start[c];
+    g->items = malloc((count ? count : 1) * sizeof(uint32_t));
+    uint32_t *fill = malloc(((size_t)g->ncells + 1) * sizeof(uint32_t));
+    if (!g->items || !fill) {
+        free(regs);
+        free(fill);
+        grid_free(g);
+        return -1;
+    }
+    memcpy(fill, g->cell_start, ((size_t)g->ncells + 1) * sizeof(uint32_t));
+    for (size_t i = 0; i < count; i++)
+        g->items[fill[regs[i].cell]++] = regs[i].polygon;
+    g->nitems = count;
+    free(fill);
+    free(regs);
+    return 0;
+}
+
+void grid_free(Grid *g)
+{
+    free(g->cell_start);
+    free(g->items);
+    memset(g, 0, sizeof *g);
+}
+
+int grid_walk_begin(const Grid *g, Vec3 org, Vec3 dir, double t0, double t1, GridWalk *walk)
+{
+    /* Clip [t0, t1] to the grid box (slabs). */
+    double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };
+    double lo[3] = { g->min.x, g->min.y, g->min.z }, hi[3] = { g->max.x, g->max.y, g->max.z };
+    for (int a = 0; a < 3; a++) {
+        if (d[a] == 0.0) {
+            if (o[a] < lo[a] || o[a] > hi[a])
+                return 0;
+            continue;
+        }
+        double inv = 1.0 / d[a];
+        double ta = (lo[a] - o[a]) * inv, tb = (hi[a] - o[a]) * inv;
+        if (ta > tb) { double t = ta; ta = tb; tb = t; }
+        if (ta > t0) t0 = ta;
+        if (tb < t1) t1 = tb;
+        if (t0 > t1)
+            return 0;
+    }
+    walk->t_enter = t0;
+    walk->t_end = t1;
+    double cs[3] = { g->cell_size.x, g->cell_size.y, g->cell_size.z };
+    for (int a = 0; a < 3; a++) {
+        double p = o[a] + d[a] * t0;
+        int c = (int)floor((p - lo[a]) / cs[a]);
+        c = c < 0 ? 0 : c >= g->n[a] ? g->n[a] - 1 : c;
+        walk->cell[a] = c;
+        if (d[a] > 0.0) {
+            walk->step[a] = 1;
+            walk->t_next[a] = (lo[a] + (c + 1) * cs[a] - o[a]) / d[a];
+            walk->t_delta[a] = cs[a] / d[a];
+        } else if (d[a] < 0.0) {
+            walk->step[a] = -1;
+            walk->t_next[a] = (lo[a] + c * cs[a] - o[a]) / d[a];
+            walk->t_delta[a] = -cs[a] / d[a];
+        } else {
+            walk->step[a] = 0;
+            walk->t_next[a] = HUGE_VAL;
+            walk->t_delta[a] = HUGE_VAL;
+        }
+    }
+    return 1;
+}

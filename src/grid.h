@@ -1,0 +1,81 @@
+/* Uniform space subdivision (Fujimoto's ARTS): the box around the finite
+ * geometry is cut into cells, every polygon is registered in exactly the
+ * cells it overlaps, and rays walk the cells in order with 3DDDA. */
+#ifndef HST_GRID_H
+#define HST_GRID_H
+
+#include <stdint.h>
+
+#include "world.h"
+
+typedef struct {
+    Vec3 min, max;      /* the grid box */
+    Vec3 cell_size;
+    Vec3 inv_cell_size;
+    int n[3];           /* cells per axis */
+    int ncells;
+    uint32_t *cell_start; /* ncells + 1 offsets into items */
+    uint32_t *items;      /* polygon indices, grouped by cell */
+    size_t nitems;
+} Grid;
+
+/* Cells per axis from the polygon count and the box's shape, aiming at about
+ * `density` cells per polygon (ARTS-style uniform grids do best near 1-4). */
+void grid_choose_resolution(const World *w, Vec3 box_min, Vec3 box_max, int res[3]);
+
+/* Builds the grid over the box holding all polygons and the extra points
+ * (the camera, the lights: whatever rays may start from). `res` NULL picks
+ * the resolution with grid_choose_resolution. Returns 0, or -1 when out of
+ * memory. */
+int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int nextra);
+void grid_free(Grid *g);
+
+/* Exact overlap of polygon p with the axis-aligned box [lo, hi] (polygon
+ * clipped against the box; holes are ignored, which only over-registers). */
+int polygon_overlaps_box(const World *w, const Polygon *p, Vec3 lo, Vec3 hi);
+
+/* A 3DDDA walk along org + t*dir for t in [t0, t1]. */
+typedef struct {
+    int cell[3];
+    int step[3];
+    double t_next[3];   /* t at which the walk crosses the next boundary on each axis */
+    double t_delta[3];  /* t between boundaries on each axis */
+    double t_enter;     /* t at which the current cell was entered */
+    double t_end;
+} GridWalk;
+
+/* Starts a walk; returns 0 when the segment misses the grid box. */
+int grid_walk_begin(const Grid *g, Vec3 org, Vec3 dir, double t0, double t1, GridWalk *walk);
+
+static inline int grid_cell_index(const Grid *g, const int c[3])
+{
+    return (c[2] * g->n[1] + c[1]) * g->n[0] + c[0];
+}
+
+/* t at which the walk leaves the current cell. */
+static inline double grid_walk_exit(const GridWalk *walk)
+{
+    double t = walk->t_next[0];
+    if (walk->t_next[1] < t) t = walk->t_next[1];
+    if (walk->t_next[2] < t) t = walk->t_next[2];
+    return t;
+}
+
+/* Moves to the next cell; returns 0 when the walk has left the grid or passed t1. */
+static inline int grid_walk_next(const Grid *g, GridWalk *walk)
+{
+    int axis = 0;
+    if (walk->t_next[1] < walk->t_next[axis]) axis = 1;
+    if (walk->t_next[2] < walk->t_next[axis]) axis = 2;
+    double t = walk->t_next[axis];
+    if (t > walk->t_end)
+        return 0;
+    walk->cell[axis] += walk->step[axis];
+    if (walk->cell[axis] < 0 || walk->cell[axis] >= g->n[axis])
+        return 0;
+    walk->t_enter = t;
+    walk->t_next[axis] += walk->t_delta[axis];
+    return 1;
+}
+
+#endif

@@ -1,0 +1,69 @@
+/* Internal interface between image.c (dispatch, atomic writes) and the
+ * per-format codecs, plus the display encoding shared by PNG and PPM. Not for
+ * use outside the image module (the unit test includes it to check the
+ * encoder). */
+#ifndef HST_IMAGE_CODEC_H
+#define HST_IMAGE_CODEC_H
+
+#include <stdio.h>
+
+#include "image.h"
+
+/* ---- display encoding (image_encoding.c) --------------------------------
+ * POV-Ray 3.7's integer encoding for a linear working space
+ * (assumed_gamma 1), in single precision as POV-Ray computes it:
+ *   sRGB:      e = x <= 0.0031308f ? x*12.92f : 1.055f*powf(x, 1/2.4f) - 0.055f
+ *   power law: e = powf(max(x,0), 1/gamma)   (no curve when |1-gamma| <= 0.01)
+ *   quantize:  q = floorf(clamp(e, 0, 1) * max + 0.5f)
+ * No dithering (POV-Ray's default). */
+typedef struct {
+    int srgb;      /* 1: sRGB transfer function */
+    int neutral;   /* 1: identity (power law within 1% of 1) */
+    float enc_exp; /* power-law exponent applied when encoding (1/gamma) */
+    double gama;   /* value for the PNG gAMA chunk (1/2.2 for sRGB) */
+} Transfer;
+
+void transfer_init(Transfer *t, double display_gamma);
+float transfer_encode(const Transfer *t, float linear);
+float transfer_decode(const Transfer *t, float encoded);
+/* POV-Ray's IntEncode: clamps to 0..1 (NaN gives 0) and rounds half up. */
+unsigned quantize(float encoded, unsigned max);
+
+/* One pixel of premultiplied linear RGBA to integer samples in 0..max.
+ * Without alpha the premultiplied colour is encoded as it is (composited on
+ * black). With alpha the colour is un-premultiplied first, as POV-Ray does,
+ * raising the opacity of pixels brighter than their alpha (by POV-Ray's
+ * greyscale weights 0.297/0.589/0.114) so highlights on transparent objects
+ * survive the clamp. out[3] is set only when with_alpha. */
+void encode_pixel(const Transfer *t, const float rgba[4], unsigned max, int with_alpha, unsigned out[4]);
+
+/* Decoding table for integer samples 0..max (max <= 65535): linear values.
+ * Returns NULL when out of memory. Free with free(). */
+float *transfer_decode_table(const Transfer *t, unsigned max);
+
+/* ---- errors --------------------------------------------------------------- */
+#if defined(__GNUC__)
+#define HST_PRINTF(a, b) __attribute__((format(printf, a, b)))
+#else
+#define HST_PRINTF(a, b)
+#endif
+void image_set_error(char *err, int errlen, const char *fmt, ...) HST_PRINTF(3, 4);
+
+/* Largest accepted width or height, and pixel count, on read and write. */
+#define IMAGE_MAX_DIM 65536
+#define IMAGE_MAX_PIXELS (1L << 28)
+
+/* ---- codecs --------------------------------------------------------------
+ * Writers get the open descriptor of the temporary file (the EXR writer) or
+ * a FILE wrapping it (PNG, PPM; the caller closes it), and report errors as
+ * a bare reason ("disk full"); image_write adds "cannot write 'path': ".
+ * Readers fill a fresh Image and report the bare reason likewise. */
+int exr_write_fd(int fd, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+int png_write_file(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+int ppm_write_file(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+
+int exr_read_fd(int fd, Image *img, char *err, int errlen);
+int png_read_file(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
+int ppm_read_file(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
+
+#endif

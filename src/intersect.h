@@ -1,0 +1,22 @@
+/* Ray/polygon and ray/plane intersection, and the point-in-polygon test. */
+#ifndef HST_INTERSECT_H
+#define HST_INTERSECT_H
+
+#include "world.h"
+
+/* Distance along `dir` (not necessarily unit) from `org` to polygon `p`, or a
+ * negative value when the line misses it or runs parallel to its plane. */
+double intersect_polygon(const World *w, const Polygon *p, Vec3 org, Vec3 dir);
+
+/* Distance to an infinite plane, or negative when parallel or behind. */
+double intersect_plane(const InfinitePlane *pl, Vec3 org, Vec3 dir);
+
+/* Is the point (already on the plane of p) inside p? Even-odd over all of
+ * p's outlines, so later outlines cut holes, as in POV-Ray. */
+int polygon_contains(const World *w, const Polygon *p, Vec3 q);
+
+/* The shading normal of p at q: the plane normal, or the interpolated
+ * vertex normal of a smooth triangle. Not yet flipped toward the viewer. */
+Vec3 polygon_shading_normal(const World *w, const Polygon *p, Vec3 q);
+
+#endif

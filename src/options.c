@@ -1,0 +1,249 @@
+/* Command-line parsing. */
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "options.h"
+#include "shadow.h"
+
+#define MAX_DIMENSION 32768
+
+static int parse_int(const char *s, int lo, int hi, int *out)
+{
+    if (!s || !*s)
+        return -1;
+    errno = 0;
+    char *end;
+    long v = strtol(s, &end, 10);
+    if (errno || *end || v < lo || v > hi)
+        return -1;
+    *out = (int)v;
+    return 0;
+}
+
+/* "N" or "NxNxN". */
+static int parse_grid(const char *s, int g[3])
+{
+    int a, b, c;
+    char tail;
+    if (sscanf(s, "%dx%dx%d%c", &a, &b, &c, &tail) == 3) {
+        g[0] = a; g[1] = b; g[2] = c;
+    } else if (sscanf(s, "%d%c", &a, &tail) == 1) {
+        g[0] = g[1] = g[2] = a;
+    } else {
+        return -1;
+    }
+    for (int i = 0; i < 3; i++)
+        if (g[i] < 1 || g[i] > 4096)
+            return -1;
+    if ((double)g[0] * g[1] * g[2] > 1 << 28)
+        return -1;
+    return 0;
+}
+
+void options_usage(FILE *f)
+{
+    fprintf(f,
+            "usage: hstrace SCENE.pov [options]\n"
+            "\n"
+            "Renders a POV-Ray scene made of polygons, with hybrid shadow testing.\n"
+            "\n"
+            "  -o, --output FILE      image to write (.exr, .png or .ppm; default SCENE.png)\n"
+            "      --width N          image width in pixels (default 320)\n"
+            "      --height N         image height in pixels (default 240)\n"
+            "      --shadows METHOD   shadow test: %s (default conventional)\n"
+            "      --threads N        render threads (default: all cores); the image does not depend on N\n"
+            "      --grid N|NxNxN     grid cells per axis (default: chosen from the polygon count)\n"
+            "      --include-path DIR folder searched for #include files (repeatable)\n"
+            "      --exr-float        write 32-bit float EXR channels instead of half\n"
+            "      --png16            write 16-bit PNG\n"
+            "      --stats            print timings and counts on stderr\n"
+            "      --stats-json FILE  write the same statistics as JSON\n"
+            "      --help             show this help\n"
+            "      --version          show the version\n"
+            "\n"
+            "POV-Ray switches: +Wn +Hn +Oname +Iname +Ldir +WTn +Qn (quality: <=3 no shadows,\n"
+            "4-5 shadows, 6-7 also refraction, >=8 also reflection; default 9).\n"
+            "\n"
+            "Exit status: 0 success, 1 bad usage, 2 scene error, 3 input/output error.\n",
+            shadow_method_names());
+}
+
+/* Takes the value of a long option: "--name=value" or "--name value". */
+static const char *option_value(int argc, char **argv, int *i, const char *name, char *err, int errlen)
+{
+    const char *arg = argv[*i];
+    size_t n = strlen(name);
+    if (arg[n] == '=')
+        return arg + n + 1;
+    if (*i + 1 >= argc) {
+        snprintf(err, (size_t)errlen, "option '%s' needs a value", name);
+        return NULL;
+    }
+    return argv[++*i];
+}
+
+static int is_long(const char *arg, const char *name)
+{
+    size_t n = strlen(name);
+    return strncmp(arg, name, n) == 0 && (arg[n] == '\0' || arg[n] == '=');
+}
+
+static int add_include(Options *opt, const char *dir, char *err, int errlen)
+{
+    if (opt->ninclude_paths >= MAX_INCLUDE_PATHS) {
+        snprintf(err, (size_t)errlen, "too many include paths (at most %d)", MAX_INCLUDE_PATHS);
+        return -1;
+    }
+    opt->include_paths[opt->ninclude_paths++] = dir;
+    return 0;
+}
+
+/* POV-Ray switches: +X or -X followed by a value where it has one. */
+static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen)
+{
+    const char *s = arg + 1;
+    int on = arg[0] == '+';
+    if (strncmp(s, "WT", 2) == 0 || strncmp(s, "wt", 2) == 0) {
+        if (parse_int(s + 2, 1, 1024, &opt->threads)) {
+            snprintf(err, (size_t)errlen, "'%s': thread count must be 1 to 1024", arg);
+            return -1;
+        }
+        return 0;
+    }
+    switch (s[0]) {
+    case 'W': case 'w':
+        if (parse_int(s + 1, 1, MAX_DIMENSION, &opt->width)) {
+            snprintf(err, (size_t)errlen, "'%s': width must be 1 to %d", arg, MAX_DIMENSION);
+            return -1;
+        }
+        return 0;
+    case 'H': case 'h':
+        if (parse_int(s + 1, 1, MAX_DIMENSION, &opt->height)) {
+            snprintf(err, (size_t)errlen, "'%s': height must be 1 to %d", arg, MAX_DIMENSION);
+            return -1;
+        }
+        return 0;
+    case 'Q': case 'q':
+        if (parse_int(s + 1, 0, 11, &opt->quality)) {
+            snprintf(err, (size_t)errlen, "'%s': quality must be 0 to 11", arg);
+            return -1;
+        }
+        return 0;
+    case 'O': case 'o':
+        if (!s[1]) break;
+        opt->output = s + 1;
+        return 0;
+    case 'I': case 'i':
+        if (!s[1]) break;
+        opt->scene = s + 1;
+        return 0;
+    case 'L': case 'l':
+        if (!s[1]) break;
+        return add_include(opt, s + 1, err, errlen);
+    case 'A': case 'a':
+        if (on) {
+            snprintf(err, (size_t)errlen, "'%s': anti-aliasing is not supported by hstrace", arg);
+            return -1;
+        }
+        return 0;
+    case 'D': case 'd':
+        return 0; /* no display window either way */
+    case 'V': case 'v':
+        return 0; /* verbosity */
+    default:
+        break;
+    }
+    snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
+    return -1;
+}
+
+int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->width = 320;
+    opt->height = 240;
+    opt->quality = 9;
+    opt->shadows = "conventional";
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            opt->help = 1;
+        } else if (strcmp(a, "--version") == 0) {
+            opt->version = 1;
+        } else if (strcmp(a, "-o") == 0 || is_long(a, "--output")) {
+            if (!(v = option_value(argc, argv, &i, strcmp(a, "-o") == 0 ? "-o" : "--output", err, errlen)))
+                return -1;
+            opt->output = v;
+        } else if (is_long(a, "--width") || is_long(a, "--height")) {
+            int is_w = is_long(a, "--width");
+            if (!(v = option_value(argc, argv, &i, is_w ? "--width" : "--height", err, errlen)))
+                return -1;
+            if (parse_int(v, 1, MAX_DIMENSION, is_w ? &opt->width : &opt->height)) {
+                snprintf(err, (size_t)errlen, "%s '%s': must be a whole number from 1 to %d",
+                         is_w ? "--width" : "--height", v, MAX_DIMENSION);
+                return -1;
+            }
+        } else if (is_long(a, "--shadows")) {
+            if (!(v = option_value(argc, argv, &i, "--shadows", err, errlen)))
+                return -1;
+            if (!shadow_method_find(v)) {
+                snprintf(err, (size_t)errlen, "unknown shadow method '%s' (valid: %s)", v, shadow_method_names());
+                return -1;
+            }
+            opt->shadows = v;
+        } else if (is_long(a, "--threads")) {
+            if (!(v = option_value(argc, argv, &i, "--threads", err, errlen)))
+                return -1;
+            if (parse_int(v, 1, 1024, &opt->threads)) {
+                snprintf(err, (size_t)errlen, "--threads '%s': must be 1 to 1024", v);
+                return -1;
+            }
+        } else if (is_long(a, "--grid")) {
+            if (!(v = option_value(argc, argv, &i, "--grid", err, errlen)))
+                return -1;
+            if (parse_grid(v, opt->grid)) {
+                snprintf(err, (size_t)errlen, "--grid '%s': expected N or NxNxN, each 1 to 4096", v);
+                return -1;
+            }
+        } else if (is_long(a, "--include-path")) {
+            if (!(v = option_value(argc, argv, &i, "--include-path", err, errlen)) ||
+                add_include(opt, v, err, errlen))
+                return -1;
+        } else if (strcmp(a, "--stats") == 0) {
+            opt->stats = 1;
+        } else if (is_long(a, "--stats-json")) {
+            if (!(v = option_value(argc, argv, &i, "--stats-json", err, errlen)))
+                return -1;
+            opt->stats_json = v;
+        } else if (strcmp(a, "--exr-float") == 0) {
+            opt->exr_float = 1;
+        } else if (strcmp(a, "--png16") == 0) {
+            opt->png16 = 1;
+        } else if ((a[0] == '+' || a[0] == '-') && a[1] && a[1] != '-') {
+            if (parse_pov_switch(a, opt, err, errlen))
+                return -1;
+        } else if (a[0] == '-' && a[1] == '-') {
+            snprintf(err, (size_t)errlen, "unknown option '%s' (see --help)", a);
+            return -1;
+        } else if (!opt->scene) {
+            opt->scene = a;
+        } else {
+            snprintf(err, (size_t)errlen, "more than one scene given ('%s' and '%s')", opt->scene, a);
+            return -1;
+        }
+    }
+    if (!opt->help && !opt->version && !opt->scene) {
+        snprintf(err, (size_t)errlen, "no scene file given (see --help)");
+        return -1;
+    }
+    if ((double)opt->width * opt->height > (double)(1 << 28)) {
+        snprintf(err, (size_t)errlen, "image of %dx%d pixels is too large (at most 268435456 pixels)", opt->width,
+                 opt->height);
+        return -1;
+    }
+    return 0;
+}

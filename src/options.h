@@ -1,0 +1,39 @@
+/* The command line: GNU-style options and POV-Ray's own +/- switches where
+ * they mean the same thing. The names are fixed: tools outside call them. */
+#ifndef HST_OPTIONS_H
+#define HST_OPTIONS_H
+
+#include <stdio.h>
+
+/* Exit statuses, documented in the man page. */
+enum {
+    EXIT_OK = 0,
+    EXIT_USAGE = 1,       /* bad command line, impossible sizes */
+    EXIT_SCENE = 2,       /* the scene has an error or uses something unsupported */
+    EXIT_IO = 3,          /* a file could not be read or written */
+};
+
+#define MAX_INCLUDE_PATHS 32
+
+typedef struct {
+    const char *scene;
+    const char *output;           /* NULL: scene name with .png, in the current folder */
+    int width, height;
+    int threads;                  /* 0: all cores */
+    int quality;                  /* POV-Ray's +Q: 0..11, default 9 */
+    const char *shadows;          /* method name */
+    int grid[3];                  /* 0: choose from the polygon count */
+    const char *include_paths[MAX_INCLUDE_PATHS];
+    int ninclude_paths;
+    int stats;
+    const char *stats_json;
+    int exr_float;
+    int png16;
+    int help, version;
+} Options;
+
+/* Fills opt from argv. Returns 0, or -1 with a message in err. */
+int options_parse(int argc, char **argv, Options *opt, char *err, int errlen);
+void options_usage(FILE *f);
+
+#endif

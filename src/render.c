@@ -1,0 +1,154 @@
+/* Rendering in tiles on a pool of threads. */
+#include "render.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "shade.h"
+
+#define TILE 16
+
+void camera_ray(const Camera *cam, int width, int height, int x, int y, Vec3 *org, Vec3 *dir)
+{
+    /* POV-Ray's CreateCameraRay: x += 0.5, y -= 0.5, then
+     * x0 = x/width - 0.5 and y0 = ((height-1) - y)/height - 0.5. */
+    double px = x + 0.5, py = y - 0.5;
+    double x0 = px / width - 0.5;
+    double y0 = ((height - 1) - py) / height - 0.5;
+    if (cam->kind == CAMERA_ORTHOGRAPHIC) {
+        *org = v3_add(cam->location, v3_add(v3_scale(cam->right, x0), v3_scale(cam->up, y0)));
+        *dir = v3_normalize(cam->direction);
+        return;
+    }
+    *org = cam->location;
+    *dir = v3_normalize(v3_add(cam->direction, v3_add(v3_scale(cam->right, x0), v3_scale(cam->up, y0))));
+}
+
+typedef struct {
+    const World *world;
+    const Grid *grid;
+    const RenderOptions *opt;
+    Image *img;
+    int tiles_x, ntiles;
+    atomic_int next_tile;   /* shared by the workers: the only mutable shared state */
+    atomic_int done_tiles;
+    atomic_int failed;
+    double start;
+} Job;
+
+typedef struct {
+    Job *job;
+    int index;
+    RenderStats stats;
+} Worker;
+
+static void render_tile(TraceContext *ctx, Job *job, int tile)
+{
+    const RenderOptions *opt = job->opt;
+    int x0 = (tile % job->tiles_x) * TILE, y0 = (tile / job->tiles_x) * TILE;
+    int x1 = x0 + TILE < opt->width ? x0 + TILE : opt->width;
+    int y1 = y0 + TILE < opt->height ? y0 + TILE : opt->height;
+    for (int y = y0; y < y1; y++) {
+        for (int x = x0; x < x1; x++) {
+            Ray ray;
+            memset(&ray, 0, sizeof ray);
+            ray.from.kind = HIT_NONE;
+            camera_ray(&job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
+            Radiance c;
+            shade_trace(ctx, &ray, 1.0, 0, &c);
+            ctx->stats.camera_rays++;
+            ctx->stats.pixels++;
+            float *px = &job->img->rgba[((size_t)y * opt->width + x) * 4];
+            px[0] = (float)c.r;
+            px[1] = (float)c.g;
+            px[2] = (float)c.b;
+            px[3] = (float)(1.0 - c.transmit);
+        }
+    }
+}
+
+static void *worker_main(void *arg)
+{
+    Worker *wk = arg;
+    Job *job = wk->job;
+    TraceContext ctx;
+    if (trace_context_init(&ctx, job->world, job->grid, job->opt->shadow, job->opt->quality)) {
+        atomic_store(&job->failed, 1);
+        return NULL;
+    }
+    double t0 = clock_thread_cpu();
+    double last_report = 0.0;
+    for (;;) {
+        int tile = atomic_fetch_add(&job->next_tile, 1);
+        if (tile >= job->ntiles)
+            break;
+        render_tile(&ctx, job, tile);
+        int done = atomic_fetch_add(&job->done_tiles, 1) + 1;
+        if (job->opt->progress && wk->index == 0) {
+            double now = clock_wall() - job->start;
+            if (now > 1.0 && now - last_report > 0.25) {
+                fprintf(stderr, "\rrendering: %3d%%", (int)(100.0 * done / job->ntiles));
+                last_report = now;
+            }
+        }
+    }
+    ctx.stats.render_seconds = clock_thread_cpu() - t0;
+    wk->stats = ctx.stats;
+    trace_context_free(&ctx);
+    return NULL;
+}
+
+int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image *img, RenderStats *stats)
+{
+    memset(stats, 0, sizeof *stats);
+    if (image_alloc(img, opt->width, opt->height))
+        return -1;
+    Job job;
+    memset(&job, 0, sizeof job);
+    job.world = w;
+    job.grid = g;
+    job.opt = opt;
+    job.img = img;
+    job.tiles_x = (opt->width + TILE - 1) / TILE;
+    job.ntiles = job.tiles_x * ((opt->height + TILE - 1) / TILE);
+    atomic_init(&job.next_tile, 0);
+    atomic_init(&job.done_tiles, 0);
+    atomic_init(&job.failed, 0);
+    job.start = clock_wall();
+
+    int n = opt->threads < 1 ? 1 : opt->threads;
+    Worker *workers = calloc((size_t)n, sizeof *workers);
+    pthread_t *tids = calloc((size_t)n, sizeof *tids);
+    if (!workers || !tids) {
+        free(workers);
+        free(tids);
+        image_free(img);
+        return -1;
+    }
+    int started = 0;
+    for (int i = 0; i < n; i++) {
+        workers[i].job = &job;
+        workers[i].index = i;
+        if (i == 0)
+            continue; /* the calling thread is worker 0 */
+        if (pthread_create(&tids[i], NULL, worker_main, &workers[i]) != 0)
+            break;
+        started = i;
+    }
+    worker_main(&workers[0]);
+    for (int i = 1; i <= started; i++)
+        pthread_join(tids[i], NULL);
+    for (int i = 0; i < n; i++)
+        stats_add(stats, &workers[i].stats);
+    if (opt->progress && clock_wall() - job.start > 1.0)
+        fprintf(stderr, "\rrendering: 100%%\n");
+    free(workers);
+    free(tids);
+    if (atomic_load(&job.failed) || atomic_load(&job.next_tile) < job.ntiles) {
+        image_free(img);
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,27 @@
+/* The render loop: camera rays through pixel centres exactly as POV-Ray
+ * makes them, tiles handed to threads, one image out. Each pixel depends on
+ * nothing but the scene, so the image is the same for any thread count. */
+#ifndef HST_RENDER_H
+#define HST_RENDER_H
+
+#include "grid.h"
+#include "image.h"
+#include "shadow.h"
+#include "stats.h"
+#include "world.h"
+
+typedef struct {
+    int width, height;
+    int threads;              /* >= 1 */
+    Quality quality;
+    const ShadowMethod *shadow;
+    int progress;             /* print a progress line on stderr */
+} RenderOptions;
+
+/* The camera ray through the centre of pixel (x, y), row 0 at the top. */
+void camera_ray(const Camera *cam, int width, int height, int x, int y, Vec3 *org, Vec3 *dir);
+
+/* Renders into img (allocated here). Returns 0, or -1 when out of memory. */
+int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image *img, RenderStats *stats);
+
+#endif

@@ -1,0 +1,412 @@
+/* Shading, following POV-Ray 3.7's Trace::ComputeLightedTexture for plain
+ * one-layer textures, so that images compare pixel for pixel. Where POV-Ray
+ * has a tolerance (EPSILON) we use the same value, and say so. */
+#include "shade.h"
+
+#include <string.h>
+
+#include "intersect.h"
+#include "shadow.h"
+
+#define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
+
+/* POV-Ray's greyscale weights (base/types.h). */
+static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589 * g + 0.114 * b; }
+
+static void background(const World *w, Radiance *out)
+{
+    /* Without an alpha channel POV-Ray ignores the background's filter and
+     * transmit, so it is opaque and the pixel's transmittance is 0. */
+    out->r = w->background.r;
+    out->g = w->background.g;
+    out->b = w->background.b;
+    out->transmit = 0.0;
+}
+
+/* Light colour after distance fading (POV-Ray's Attenuate_Light). */
+static double light_attenuation(const Light *l, double distance)
+{
+    if (l->fade_power > 0.0 && fabs(l->fade_distance) > POV_EPSILON)
+        return 2.0 / (1.0 + pow(distance / l->fade_distance, l->fade_power));
+    return 1.0;
+}
+
+/* POV-Ray's empirical Fresnel term for metallic highlights. */
+static RGB metallic_colour(double metallic, Vec3 normal, Vec3 to_light, RGB light, RGB pigment)
+{
+    double x = fabs(acos(v3_dot(normal, to_light))) / (M_PI / 2.0);
+    double f = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
+    f = fmin(1.0, fmax(0.0, f));
+    double k = metallic * (1.0 - f);
+    RGB r = { light.r * (1.0 + k * (pigment.r - 1.0)), light.g * (1.0 + k * (pigment.g - 1.0)),
+              light.b * (1.0 + k * (pigment.b - 1.0)) };
+    return r;
+}
+
+/* Diffuse, phong and specular from every light (ComputeDiffuseLight). */
+static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, Vec3 eye_dir, Vec3 normal,
+                         RGB pigment, double attenuation, RGB *acc)
+{
+    const World *w = ctx->world;
+    const Finish *f = &m->finish;
+    for (int li = 0; li < w->nlights; li++) {
+        const Light *l = &w->lights[li];
+        Vec3 to_light;
+        double distance;
+        Vec3 d = v3_sub(l->location, hit->point);
+        distance = v3_length(d);
+        to_light = v3_scale(d, 1.0 / distance);
+        if (l->kind == LIGHT_PARALLEL) {
+            /* Parallel light: one direction, and the distance to the plane
+             * through the light perpendicular to it. */
+            distance *= v3_dot(l->direction, to_light);
+            to_light = l->direction;
+        }
+        double fade = light_attenuation(l, distance);
+        RGB lc = { l->colour.r * fade, l->colour.g * fade, l->colour.b * fade };
+        if (fabs(lc.r) < POV_EPSILON && fabs(lc.g) < POV_EPSILON && fabs(lc.b) < POV_EPSILON)
+            continue;
+        /* A light behind the surface (as seen from the eye) adds nothing and
+         * needs no shadow test. */
+        if (!m->double_illuminate && v3_dot(normal, to_light) < POV_EPSILON)
+            continue;
+        if (ctx->quality.shadows && !l->shadowless) {
+            ShadowQuery q = { hit->point, hit, li, to_light, distance };
+            RGB through;
+            double t0 = clock_thread_cpu();
+            ctx->shadow->test(ctx, &q, &through);
+            ctx->stats.shadow_seconds += clock_thread_cpu() - t0;
+            ctx->stats.shadow_queries++;
+            lc.r *= through.r;
+            lc.g *= through.g;
+            lc.b *= through.b;
+        }
+        if (!(fabs(lc.r) > POV_EPSILON || fabs(lc.g) > POV_EPSILON || fabs(lc.b) > POV_EPSILON))
+            continue;
+
+        if (f->diffuse > 0.0) {
+            double c = fabs(v3_dot(normal, to_light));
+            double intensity = (f->brilliance != 1.0 ? pow(c, f->brilliance) : c) * f->diffuse * attenuation;
+            acc->r += intensity * pigment.r * lc.r;
+            acc->g += intensity * pigment.g * lc.g;
+            acc->b += intensity * pigment.b * lc.b;
+        }
+        if (l->shadowless)
+            continue; /* POV-Ray's fill lights give no highlights */
+        if (f->phong > 0.0) {
+            Vec3 refl = v3_madd(eye_dir, normal, -2.0 * v3_dot(eye_dir, normal));
+            double c = v3_dot(refl, to_light);
+            if (c > 0.0) {
+                double intensity = (f->phong_size < 60 || c > 0.0008) ? f->phong * pow(c, f->phong_size) : 0.0;
+                RGB cs = f->metallic > 0.0 ? metallic_colour(f->metallic, normal, to_light, lc, pigment) : lc;
+                acc->r += intensity * cs.r;
+                acc->g += intensity * cs.g;
+                acc->b += intensity * cs.b;
+            }
+        }
+        if (f->specular > 0.0) {
+            Vec3 half = v3_scale(v3_add(v3_neg(eye_dir), to_light), 0.5);
+            double hl = v3_length(half);
+            if (hl > 0.0) {
+                double c = v3_dot(half, normal) / hl;
+                if (c > 0.0) {
+                    double intensity = f->specular * pow(c, f->roughness);
+                    RGB cs = f->metallic > 0.0 ? metallic_colour(f->metallic, normal, to_light, lc, pigment) : lc;
+                    acc->r += intensity * cs.r;
+                    acc->g += intensity * cs.g;
+                    acc->b += intensity * cs.b;
+                }
+            }
+        }
+    }
+}
+
+/* Reflectivity for the plain (non-fresnel) reflection model, and the
+ * weight of the reflected ray (ComputeReflectivity, type 0). */
+static RGB reflectivity(const Finish *f, double cos_incidence, double *weight)
+{
+    double wmax = fmax(f->reflection_max[0], fmax(f->reflection_max[1], f->reflection_max[2]));
+    double wmin = fmax(f->reflection_min[0], fmax(f->reflection_min[1], f->reflection_min[2]));
+    *weight *= fmax(wmax, wmin);
+    double frac = fabs(f->reflection_falloff - 1.0) > POV_EPSILON ? pow(1.0 - cos_incidence, f->reflection_falloff)
+                                                                  : 1.0 - cos_incidence;
+    RGB r;
+    if (fabs(frac) < POV_EPSILON) {
+        r.r = f->reflection_min[0]; r.g = f->reflection_min[1]; r.b = f->reflection_min[2];
+    } else if (fabs(frac - 1.0) < POV_EPSILON) {
+        r.r = f->reflection_max[0]; r.g = f->reflection_max[1]; r.b = f->reflection_max[2];
+    } else {
+        r.r = frac * f->reflection_max[0] + (1.0 - frac) * f->reflection_min[0];
+        r.g = frac * f->reflection_max[1] + (1.0 - frac) * f->reflection_min[1];
+        r.b = frac * f->reflection_max[2] + (1.0 - frac) * f->reflection_min[2];
+    }
+    return r;
+}
+
+/* Fresnel reflectivity (reflection { ... fresnel }), POV-Ray's formula. */
+static RGB reflectivity_fresnel(const Finish *f, double cos_incidence, double ior, double *weight)
+{
+    RGB r;
+    double sqx = ior * ior + cos_incidence * cos_incidence - 1.0;
+    if (sqx > 0.0) {
+        double g = sqrt(sqx);
+        double k = 0.5 * ((g - cos_incidence) * (g - cos_incidence)) / ((g + cos_incidence) * (g + cos_incidence));
+        double a = cos_incidence * (g + cos_incidence) - 1.0, b = cos_incidence * (g - cos_incidence) + 1.0;
+        k = k * (1.0 + (a * a) / (b * b));
+        k = fmin(1.0, fmax(0.0, k));
+        r.r = k * f->reflection_max[0] + (1.0 - k) * f->reflection_min[0];
+        r.g = k * f->reflection_max[1] + (1.0 - k) * f->reflection_min[1];
+        r.b = k * f->reflection_max[2] + (1.0 - k) * f->reflection_min[2];
+    } else {
+        r.r = f->reflection_max[0]; r.g = f->reflection_max[1]; r.b = f->reflection_max[2];
+    }
+    *weight *= fmax(r.r, fmax(r.g, r.b));
+    return r;
+}
+
+static int interior_index(const InteriorList *l, const void *key)
+{
+    for (int i = l->n - 1; i >= 0; i--)
+        if (l->key[i] == key)
+            return i;
+    return -1;
+}
+
+static void interior_remove(InteriorList *l, int i)
+{
+    for (; i + 1 < l->n; i++) {
+        l->key[i] = l->key[i + 1];
+        l->ior[i] = l->ior[i + 1];
+    }
+    l->n--;
+}
+
+/* The ior ratio at this surface, and the interior list beyond it
+ * (POV-Ray's ComputeRefraction bookkeeping; the atmosphere has ior 1). */
+static double refraction_ratio(const InteriorList *inside, const Material *m, InteriorList *beyond)
+{
+    *beyond = *inside;
+    if (beyond->n == 0) {
+        if (beyond->n < MAX_INTERIOR_NESTING) {
+            beyond->key[beyond->n] = m->interior_key;
+            beyond->ior[beyond->n++] = m->ior;
+        }
+        return 1.0 / m->ior;
+    }
+    int at = interior_index(beyond, m->interior_key);
+    if (at == beyond->n - 1) { /* leaving the innermost */
+        interior_remove(beyond, at);
+        return beyond->n == 0 ? m->ior : m->ior / beyond->ior[beyond->n - 1];
+    }
+    if (at >= 0) { /* leaving an overlap */
+        interior_remove(beyond, at);
+        return 1.0;
+    }
+    double outer = beyond->ior[beyond->n - 1];
+    if (beyond->n < MAX_INTERIOR_NESTING) {
+        beyond->key[beyond->n] = m->interior_key;
+        beyond->ior[beyond->n++] = m->ior;
+    }
+    return outer / m->ior;
+}
+
+/* The ior ratio the fresnel reflectivity uses (POV-Ray's
+ * ComputeRelativeIOR; note it is the inverse of refraction_ratio's). */
+static double refraction_ratio_peek(const Ray *ray, const Material *m)
+{
+    const InteriorList *l = &ray->inside;
+    if (l->n == 0)
+        return m->ior;
+    if (interior_index(l, m->interior_key) >= 0)
+        return l->n == 1 ? 1.0 / m->ior : l->ior[l->n - 1] / m->ior;
+    return m->ior / l->ior[l->n - 1];
+}
+
+static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int level, int continued, Radiance *out);
+
+static void trace_reflection(TraceContext *ctx, const Ray *ray, const Hit *hit, Vec3 normal, Vec3 raw_normal,
+                             double weight, int level, Radiance *out)
+{
+    Ray r;
+    r.from = *hit;
+    r.inside = ray->inside;
+    r.org = hit->point;
+    Vec3 d = v3_madd(ray->dir, normal, -2.0 * v3_dot(ray->dir, normal));
+    /* POV-Ray's fix for reflected rays that point into the surface. */
+    double n = v3_dot(d, raw_normal);
+    if (n < 0.0) {
+        if (v3_dot(d, normal) < 0.0)
+            d = v3_madd(ray->dir, raw_normal, -2.0 * v3_dot(ray->dir, raw_normal));
+        else
+            d = v3_madd(d, raw_normal, -2.0 * n);
+    }
+    r.dir = v3_normalize(d);
+    ctx->stats.reflected_rays++;
+    trace_ray(ctx, &r, weight, level, 0, out);
+}
+
+/* Refracted or transmitted ray; returns 1 on total internal reflection. */
+static int trace_refraction(TraceContext *ctx, const Ray *ray, const Hit *hit, const Material *m, Vec3 normal,
+                            Vec3 raw_normal, double weight, int level, Radiance *out)
+{
+    Ray r;
+    r.from = *hit;
+    r.org = hit->point;
+    double ior = refraction_ratio(&ray->inside, m, &r.inside);
+    if (fabs(ior - 1.0) < POV_EPSILON) {
+        /* Same ior on both sides: the ray goes straight on, and POV-Ray
+         * does not count it as a new trace level. */
+        r.dir = ray->dir;
+        ctx->stats.transmitted_rays++;
+        trace_ray(ctx, &r, weight, level, 1, out);
+        return 0;
+    }
+    double n = v3_dot(ray->dir, normal);
+    Vec3 local = normal;
+    if (n <= 0.0)
+        n = -n;
+    else
+        local = v3_neg(normal);
+    double t = 1.0 + ior * ior * (n * n - 1.0);
+    if (t < 0.0) {
+        Radiance refl;
+        trace_reflection(ctx, ray, hit, normal, raw_normal, weight, level, &refl);
+        out->r += refl.r;
+        out->g += refl.g;
+        out->b += refl.b;
+        out->transmit += refl.transmit;
+        return 1;
+    }
+    t = ior * n - sqrt(t);
+    /* POV-Ray does not normalise the refracted direction here; it is unit
+     * length already up to rounding. */
+    r.dir = v3_add(v3_scale(ray->dir, ior), v3_scale(local, t));
+    ctx->stats.refracted_rays++;
+    trace_ray(ctx, &r, weight, level, 0, out);
+    return 0;
+}
+
+void shade_trace(TraceContext *ctx, const Ray *ray, double weight, int level, Radiance *out)
+{
+    trace_ray(ctx, ray, weight, level, 0, out);
+}
+
+/* POV-Ray's TraceRay: `level` is the trace level so far; a continued
+ * (transmitted, same-ior) ray does not start a new level. */
+static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int level, int continued, Radiance *out)
+{
+    const World *w = ctx->world;
+    memset(out, 0, sizeof *out);
+    if (level >= w->max_trace_level || weight < w->adc_bailout)
+        return;
+    Hit hit;
+    if (!trace_nearest(ctx, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit)) {
+        background(w, out);
+        return;
+    }
+    if (!continued)
+        level++;
+
+    const Material *m = &w->materials[hit_material(w, &hit)];
+    const Finish *f = &m->finish;
+    Vec3 raw = hit.kind == HIT_POLYGON ? polygon_shading_normal(w, &w->polygons[hit.index], hit.point)
+                                       : w->planes[hit.index].normal;
+    if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
+        raw = v3_neg(raw);
+    Vec3 normal = raw;
+    const Colour *pc = &m->pigment;
+    RGB pigment = { pc->r, pc->g, pc->b };
+
+    if (ctx->quality.full_ambient) {
+        out->r = pigment.r;
+        out->g = pigment.g;
+        out->b = pigment.b;
+        return;
+    }
+
+    /* Reflectivity is computed before lighting, as POV-Ray does. */
+    double cos_incidence = -v3_dot(ray->dir, normal);
+    double reflect_weight = weight;
+    RGB reflec = f->reflection_fresnel
+                     ? reflectivity_fresnel(f, cos_incidence, refraction_ratio_peek(ray, m), &reflect_weight)
+                     : reflectivity(f, cos_incidence, &reflect_weight);
+    if (f->reflection_metallic != 0.0) {
+        double x = fabs(acos(cos_incidence)) / (M_PI / 2.0);
+        double F = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
+        F = fmin(1.0, fmax(0.0, F));
+        double k = f->reflection_metallic * (1.0 - F);
+        reflec.r *= 1.0 + k * (pigment.r - 1.0);
+        reflec.g *= 1.0 + k * (pigment.g - 1.0);
+        reflec.b *= 1.0 + k * (pigment.b - 1.0);
+    }
+
+    /* The surface's own light, reduced where it is see-through. */
+    double att = 1.0 - pc->filter - pc->transmit;
+    RGB acc;
+    acc.r = pigment.r * (f->ambient[0] * w->ambient_light.r * att + f->emission[0] * att);
+    acc.g = pigment.g * (f->ambient[1] * w->ambient_light.g * att + f->emission[1] * att);
+    acc.b = pigment.b * (f->ambient[2] * w->ambient_light.b * att + f->emission[2] * att);
+    if (f->diffuse != 0.0 || f->specular != 0.0 || f->phong != 0.0)
+        direct_light(ctx, m, &hit, ray->dir, normal, pigment, att, &acc);
+    out->r = acc.r;
+    out->g = acc.g;
+    out->b = acc.b;
+
+    /* What shows through: rgb*filter + transmit. */
+    RGB fil = { pigment.r * pc->filter + pc->transmit, pigment.g * pc->filter + pc->transmit,
+                pigment.b * pc->filter + pc->transmit };
+    if (f->conserve_energy) {
+        fil.r *= fmin(1.0, 1.0 - reflec.r);
+        fil.g *= fmin(1.0, 1.0 - reflec.g);
+        fil.b *= fmin(1.0, 1.0 - reflec.b);
+    }
+    double trans = fmin(1.0, fabs(greyscale(fil.r, fil.g, fil.b)));
+
+    int tir = 0;
+    if (trans > w->adc_bailout && ctx->quality.refraction) {
+        double w1 = fmax(fabs(fil.r), fmax(fabs(fil.g), fabs(fil.b)));
+        Radiance rfr = { 0, 0, 0, 0 };
+        tir = trace_refraction(ctx, ray, &hit, m, normal, raw, weight * w1, level, &rfr);
+        RGB attc = { 1.0, 1.0, 1.0 };
+        if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON) {
+            if (m->fade_power >= 1000) {
+                double depth = hit.t / m->fade_distance;
+                attc.r = exp(-(1.0 - m->fade_colour.r) * depth);
+                attc.g = exp(-(1.0 - m->fade_colour.g) * depth);
+                attc.b = exp(-(1.0 - m->fade_colour.b) * depth);
+            } else {
+                double a = 1.0 + pow(hit.t / m->fade_distance, m->fade_power);
+                attc.r = m->fade_colour.r + (1.0 - m->fade_colour.r) / a;
+                attc.g = m->fade_colour.g + (1.0 - m->fade_colour.g) / a;
+                attc.b = m->fade_colour.b + (1.0 - m->fade_colour.b) / a;
+            }
+        }
+        if (tir) {
+            out->r += attc.r * rfr.r;
+            out->g += attc.g * rfr.g;
+            out->b += attc.b * rfr.b;
+        } else {
+            out->r += attc.r * rfr.r * fil.r;
+            out->g += attc.g * rfr.g * fil.g;
+            out->b += attc.b * rfr.b * fil.b;
+            out->transmit = greyscale(attc.r, attc.g, attc.b) * rfr.transmit * trans;
+        }
+    }
+
+    /* Reflection, skipped after total internal reflection (the layer's
+     * normal is the top normal for one-layer textures). */
+    if (ctx->quality.reflection && !tir && !(reflec.r == 0.0 && reflec.g == 0.0 && reflec.b == 0.0)) {
+        Radiance rfl;
+        trace_reflection(ctx, ray, &hit, normal, raw, reflect_weight, level, &rfl);
+        double e = f->reflection_exponent;
+        if (e != 1.0 && e > 0.0) {
+            out->r += reflec.r * pow(rfl.r, e);
+            out->g += reflec.g * pow(rfl.g, e);
+            out->b += reflec.b * pow(rfl.b, e);
+        } else {
+            out->r += reflec.r * rfl.r;
+            out->g += reflec.g * rfl.g;
+            out->b += reflec.b * rfl.b;
+        }
+    }
+}

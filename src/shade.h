@@ -1,0 +1,34 @@
+/* Shading: POV-Ray 3.7's classic model for one-layer textures (ambient,
+ * emission, diffuse with brilliance, phong, specular, reflection, refraction
+ * with ior, filter and transmit, max_trace_level, adc_bailout, light fading).
+ * Shadows are asked of the context's shadow method. */
+#ifndef HST_SHADE_H
+#define HST_SHADE_H
+
+#include "tracer.h"
+
+#define MAX_INTERIOR_NESTING 16
+
+/* The interiors a ray is inside, innermost last (for ior ratios). */
+typedef struct {
+    int n;
+    const void *key[MAX_INTERIOR_NESTING];
+    double ior[MAX_INTERIOR_NESTING];
+} InteriorList;
+
+typedef struct {
+    Vec3 org, dir;      /* dir is unit length */
+    Hit from;           /* surface the ray leaves (kind HIT_NONE for camera rays) */
+    InteriorList inside;
+} Ray;
+
+/* Colour seen along a ray: rgb plus transmittance (for the alpha channel). */
+typedef struct {
+    double r, g, b, transmit;
+} Radiance;
+
+/* Traces `ray` and returns what it sees. `level` counts rays already on the
+ * path (0 for camera rays), as POV-Ray's trace level. */
+void shade_trace(TraceContext *ctx, const Ray *ray, double weight, int level, Radiance *out);
+
+#endif

@@ -1,0 +1,71 @@
+/* The conventional (Whitted) shadow test: a shadow ray from the shading
+ * point toward the light, walked cell by cell through the grid, stopped by
+ * the first opaque polygon. Transparent polygons on the way filter the light
+ * (POV-Ray multiplies rgb*filter + transmit of each), in any order. */
+#include "shadow.h"
+
+#include "intersect.h"
+
+/* Folds one blocker into the light that gets through; returns 1 when the
+ * light is now fully blocked. */
+static int pass_through(const Material *m, RGB *light)
+{
+    if (m->opaque) {
+        light->r = light->g = light->b = 0.0;
+        return 1;
+    }
+    const Colour *c = &m->pigment;
+    light->r *= c->r * c->filter + c->transmit;
+    light->g *= c->g * c->filter + c->transmit;
+    light->b *= c->b * c->filter + c->transmit;
+    return 0;
+}
+
+void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    const World *w = ctx->world;
+    const Grid *g = ctx->grid;
+    light->r = light->g = light->b = 1.0;
+    ctx->stats.shadow_rays++;
+    double tmin = trace_min_distance(q->point);
+    double tmax = q->distance;
+
+    for (int i = 0; i < w->nplanes; i++) {
+        if (q->surface->kind == HIT_PLANE && q->surface->index == i)
+            continue;
+        const InfinitePlane *pl = &w->planes[i];
+        if (w->materials[pl->material].no_shadow)
+            continue;
+        double t = intersect_plane(pl, q->point, q->to_light);
+        if (t > tmin && t < tmax && pass_through(&w->materials[pl->material], light)) {
+            ctx->stats.shadow_blocked++;
+            return;
+        }
+    }
+
+    GridWalk walk;
+    if (w->npolygons == 0 || !grid_walk_begin(g, q->point, q->to_light, 0.0, tmax, &walk))
+        return;
+    uint32_t id = trace_new_segment(ctx);
+    if (q->surface->kind == HIT_POLYGON)
+        ctx->stamp[q->surface->index] = id;
+    do {
+        int c = grid_cell_index(g, walk.cell);
+        for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
+            uint32_t pi = g->items[k];
+            if (ctx->stamp[pi] == id)
+                continue;
+            ctx->stamp[pi] = id;
+            const Polygon *p = &w->polygons[pi];
+            const Material *m = &w->materials[p->material];
+            if (m->no_shadow)
+                continue;
+            ctx->stats.shadow_polygon_tests++;
+            double t = intersect_polygon(w, p, q->point, q->to_light);
+            if (t > tmin && t < tmax && pass_through(m, light)) {
+                ctx->stats.shadow_blocked++;
+                return;
+            }
+        }
+    } while (grid_walk_next(g, &walk));
+}

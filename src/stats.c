@@ -1,0 +1,112 @@
+/* Statistics: summing per-thread counters and printing the report. */
+#include "stats.h"
+
+#include <errno.h>
+#include <string.h>
+#include <time.h>
+
+void stats_add(RenderStats *t, const RenderStats *p)
+{
+    t->pixels += p->pixels;
+    t->camera_rays += p->camera_rays;
+    t->reflected_rays += p->reflected_rays;
+    t->refracted_rays += p->refracted_rays;
+    t->transmitted_rays += p->transmitted_rays;
+    t->polygon_tests += p->polygon_tests;
+    t->polygon_hits += p->polygon_hits;
+    t->plane_tests += p->plane_tests;
+    t->cells_visited += p->cells_visited;
+    t->shadow_queries += p->shadow_queries;
+    t->shadow_rays += p->shadow_rays;
+    t->shadow_blocked += p->shadow_blocked;
+    t->shadow_polygon_tests += p->shadow_polygon_tests;
+    t->shadow_seconds += p->shadow_seconds;
+    t->render_seconds += p->render_seconds;
+}
+
+double clock_wall(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+double clock_thread_cpu(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* "Others" is the render loop's CPU time that was not shadow testing, plus
+ * writing the image: the paper's split (finding hits, shading, output). */
+static double others_seconds(const StatsReport *r)
+{
+    double o = r->render.render_seconds - r->render.shadow_seconds;
+    return (o > 0 ? o : 0) + r->output_seconds;
+}
+
+void stats_print(FILE *f, const StatsReport *r)
+{
+    const RenderStats *s = &r->render;
+    double others = others_seconds(r);
+    double total = r->parse_seconds + r->preprocess_seconds + s->shadow_seconds + others;
+    fprintf(f, "hstrace statistics for %s (%dx%d, %d thread%s, shadows: %s)\n", r->scene, r->width, r->height,
+            r->threads, r->threads == 1 ? "" : "s", r->shadow_method);
+    fprintf(f, "  scene       %d polygons, %d infinite planes, %d lights\n", r->npolygons, r->nplanes, r->nlights);
+    fprintf(f, "  grid        %dx%dx%d cells, %llu registrations\n", r->grid[0], r->grid[1], r->grid[2],
+            (unsigned long long)r->grid_registrations);
+    fprintf(f, "  time (s)    parse %.3f  preprocessing %.3f  shadow testing %.3f  others %.3f  total %.3f  (wall %.3f)\n",
+            r->parse_seconds, r->preprocess_seconds, s->shadow_seconds, others, total, r->wall_seconds);
+    fprintf(f, "              shadow testing and others are CPU time summed over threads\n");
+    fprintf(f, "  rays        camera %llu  reflected %llu  refracted %llu  transmitted %llu\n",
+            (unsigned long long)s->camera_rays, (unsigned long long)s->reflected_rays,
+            (unsigned long long)s->refracted_rays, (unsigned long long)s->transmitted_rays);
+    fprintf(f, "  tests       ray/polygon %llu (hits %llu)  ray/plane %llu  cells visited %llu\n",
+            (unsigned long long)s->polygon_tests, (unsigned long long)s->polygon_hits,
+            (unsigned long long)s->plane_tests, (unsigned long long)s->cells_visited);
+    fprintf(f, "  shadows     queries %llu  shadow rays %llu (blocked %llu)  shadow-ray/polygon tests %llu\n",
+            (unsigned long long)s->shadow_queries, (unsigned long long)s->shadow_rays,
+            (unsigned long long)s->shadow_blocked, (unsigned long long)s->shadow_polygon_tests);
+}
+
+int stats_write_json(const char *path, const StatsReport *r, char *err, int errlen)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, (size_t)errlen, "cannot write '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    const RenderStats *s = &r->render;
+    double others = others_seconds(r);
+    fprintf(f, "{\n  \"scene\": \"");
+    for (const char *c = r->scene; *c; c++) {
+        if (*c == '"' || *c == '\\')
+            fputc('\\', f);
+        if ((unsigned char)*c >= 0x20)
+            fputc(*c, f);
+    }
+    fprintf(f, "\",\n  \"shadow_method\": \"%s\",\n  \"width\": %d,\n  \"height\": %d,\n  \"threads\": %d,\n",
+            r->shadow_method, r->width, r->height, r->threads);
+    fprintf(f, "  \"polygons\": %d,\n  \"planes\": %d,\n  \"lights\": %d,\n", r->npolygons, r->nplanes, r->nlights);
+    fprintf(f, "  \"grid\": [%d, %d, %d],\n  \"grid_registrations\": %llu,\n", r->grid[0], r->grid[1], r->grid[2],
+            (unsigned long long)r->grid_registrations);
+    fprintf(f, "  \"time\": {\"parse\": %.6f, \"preprocessing\": %.6f, \"shadow_testing\": %.6f, \"others\": %.6f, "
+               "\"total\": %.6f, \"wall\": %.6f},\n",
+            r->parse_seconds, r->preprocess_seconds, s->shadow_seconds, others,
+            r->parse_seconds + r->preprocess_seconds + s->shadow_seconds + others, r->wall_seconds);
+    fprintf(f, "  \"rays\": {\"camera\": %llu, \"reflected\": %llu, \"refracted\": %llu, \"transmitted\": %llu},\n",
+            (unsigned long long)s->camera_rays, (unsigned long long)s->reflected_rays,
+            (unsigned long long)s->refracted_rays, (unsigned long long)s->transmitted_rays);
+    fprintf(f, "  \"tests\": {\"ray_polygon\": %llu, \"ray_polygon_hits\": %llu, \"ray_plane\": %llu, \"cells_visited\": %llu},\n",
+            (unsigned long long)s->polygon_tests, (unsigned long long)s->polygon_hits,
+            (unsigned long long)s->plane_tests, (unsigned long long)s->cells_visited);
+    fprintf(f, "  \"shadows\": {\"queries\": %llu, \"shadow_rays\": %llu, \"blocked\": %llu, \"polygon_tests\": %llu}\n}\n",
+            (unsigned long long)s->shadow_queries, (unsigned long long)s->shadow_rays,
+            (unsigned long long)s->shadow_blocked, (unsigned long long)s->shadow_polygon_tests);
+    if (fclose(f) != 0) {
+        snprintf(err, (size_t)errlen, "cannot write '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}

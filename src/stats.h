@@ -1,0 +1,43 @@
+/* Counters and timers. Each render thread owns a RenderStats and the totals
+ * are summed once at the end, so nothing here is shared while rendering. */
+#ifndef HST_STATS_H
+#define HST_STATS_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+typedef struct {
+    uint64_t pixels;
+    uint64_t camera_rays, reflected_rays, refracted_rays, transmitted_rays;
+    uint64_t polygon_tests, polygon_hits, plane_tests;
+    uint64_t cells_visited;
+    uint64_t shadow_queries;      /* shading point x light pairs that needed a decision */
+    uint64_t shadow_rays;         /* conventional shadow rays walked */
+    uint64_t shadow_blocked;      /* ... of which found an opaque blocker */
+    uint64_t shadow_polygon_tests;
+    double shadow_seconds;        /* thread CPU time spent deciding shadows */
+    double render_seconds;        /* thread CPU time in the render loop */
+} RenderStats;
+
+void stats_add(RenderStats *total, const RenderStats *part);
+
+/* The report: phases (the rows of the paper's Table 2) and counters. */
+typedef struct {
+    const char *scene;
+    const char *shadow_method;
+    int width, height, threads;
+    int grid[3];
+    uint64_t grid_registrations;
+    int npolygons, nplanes, nlights;
+    double parse_seconds, preprocess_seconds, output_seconds, wall_seconds;
+    RenderStats render;
+} StatsReport;
+
+void stats_print(FILE *f, const StatsReport *r);
+int stats_write_json(const char *path, const StatsReport *r, char *err, int errlen);
+
+/* Monotonic wall clock and this thread's CPU clock, in seconds. */
+double clock_wall(void);
+double clock_thread_cpu(void);
+
+#endif

@@ -1,0 +1,81 @@
+/* Nearest-hit queries through the grid, and the planes beside it. */
+#include "tracer.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "intersect.h"
+
+int trace_context_init(TraceContext *ctx, const World *w, const Grid *g, const struct ShadowMethod *shadow, Quality q)
+{
+    memset(ctx, 0, sizeof *ctx);
+    ctx->world = w;
+    ctx->grid = g;
+    ctx->shadow = shadow;
+    ctx->quality = q;
+    ctx->stamp = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof(uint32_t));
+    return ctx->stamp ? 0 : -1;
+}
+
+void trace_context_free(TraceContext *ctx)
+{
+    free(ctx->stamp);
+    ctx->stamp = NULL;
+}
+
+int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit)
+{
+    const World *w = ctx->world;
+    const Grid *g = ctx->grid;
+    double tmin = trace_min_distance(org);
+    double best = tmax;
+    hit->kind = HIT_NONE;
+
+    for (int i = 0; i < w->nplanes; i++) {
+        if (from && from->kind == HIT_PLANE && from->index == i)
+            continue;
+        ctx->stats.plane_tests++;
+        double t = intersect_plane(&w->planes[i], org, dir);
+        if (t > tmin && t < best) {
+            best = t;
+            hit->kind = HIT_PLANE;
+            hit->index = i;
+        }
+    }
+
+    GridWalk walk;
+    if (w->npolygons > 0 && grid_walk_begin(g, org, dir, 0.0, best, &walk)) {
+        uint32_t id = trace_new_segment(ctx);
+        int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
+        if (exclude >= 0)
+            ctx->stamp[exclude] = id;
+        do {
+            ctx->stats.cells_visited++;
+            int c = grid_cell_index(g, walk.cell);
+            for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
+                uint32_t pi = g->items[k];
+                if (ctx->stamp[pi] == id)
+                    continue;
+                ctx->stamp[pi] = id;
+                ctx->stats.polygon_tests++;
+                double t = intersect_polygon(w, &w->polygons[pi], org, dir);
+                if (t > tmin && t < best) {
+                    best = t;
+                    hit->kind = HIT_POLYGON;
+                    hit->index = (int)pi;
+                }
+            }
+            /* A hit inside this cell cannot be beaten by later cells. */
+            if (best <= grid_walk_exit(&walk))
+                break;
+            walk.t_end = best;
+        } while (grid_walk_next(g, &walk));
+    }
+    if (hit->kind == HIT_NONE)
+        return 0;
+    if (hit->kind == HIT_POLYGON)
+        ctx->stats.polygon_hits++;
+    hit->t = best;
+    hit->point = v3_madd(org, dir, best);
+    return 1;
+}

@@ -1,0 +1,77 @@
+/* Ray queries against the world: nearest hit (camera, reflected and refracted
+ * rays) through the grid with a per-segment bucket. One TraceContext per
+ * render thread; it owns the bucket stamps and the thread's counters. */
+#ifndef HST_TRACER_H
+#define HST_TRACER_H
+
+#include <stdint.h>
+
+#include "grid.h"
+#include "stats.h"
+#include "world.h"
+
+struct ShadowMethod;
+
+/* What a surface hit is: a grid polygon or an infinite plane. */
+typedef enum { HIT_NONE, HIT_POLYGON, HIT_PLANE } HitKind;
+
+typedef struct {
+    HitKind kind;
+    int index;          /* polygon or plane index */
+    double t;
+    Vec3 point;
+} Hit;
+
+/* Which rays and tests a render performs: POV-Ray's +Q levels. */
+typedef struct {
+    int shadows;        /* Q >= 4 */
+    int refraction;     /* Q >= 6 */
+    int reflection;     /* Q >= 8 */
+    int full_ambient;   /* Q <= 1: pigment colour only */
+} Quality;
+
+typedef struct {
+    const World *world;
+    const Grid *grid;
+    const struct ShadowMethod *shadow;
+    Quality quality;
+    /* The bucket: stamp[i] == ray_id marks polygon i as already tested by
+     * the current segment, so it is tested once however many cells hold it. */
+    uint32_t *stamp;
+    uint32_t ray_id;
+    RenderStats stats;
+} TraceContext;
+
+int trace_context_init(TraceContext *ctx, const World *w, const Grid *g, const struct ShadowMethod *shadow, Quality q);
+void trace_context_free(TraceContext *ctx);
+
+/* A fresh bucket for a new segment. */
+static inline uint32_t trace_new_segment(TraceContext *ctx)
+{
+    if (++ctx->ray_id == 0) { /* wrapped: old stamps could collide */
+        for (int i = 0; i < ctx->world->npolygons; i++)
+            ctx->stamp[i] = 0;
+        ctx->ray_id = 1;
+    }
+    return ctx->ray_id;
+}
+
+/* Smallest distance below which a hit is taken to be the segment's own start
+ * point: a few thousand ulps of the coordinates involved. */
+static inline double trace_min_distance(Vec3 org)
+{
+    double m = fmax(fabs(org.x), fmax(fabs(org.y), fabs(org.z)));
+    return 1e-9 * (1.0 + m);
+}
+
+/* Nearest hit along org + t*dir, t in (min distance, tmax); `from` is the
+ * surface the segment starts on (excluded, as the paper's bucket rule says),
+ * kind HIT_NONE for the camera. */
+int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit);
+
+static inline int hit_material(const World *w, const Hit *h)
+{
+    return h->kind == HIT_POLYGON ? w->polygons[h->index].material : w->planes[h->index].material;
+}
+
+#endif

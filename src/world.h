@@ -1,0 +1,98 @@
+/* The engine's view of a scene: the description flattened into world-space
+ * polygons (every polygon, triangle, mesh face and box side), infinite planes,
+ * materials, lights and the camera. Built once by world_build (flatten.c);
+ * read-only while rendering, so threads share it freely. */
+#ifndef HST_WORLD_H
+#define HST_WORLD_H
+
+#include "scene.h"
+#include "vecmath.h"
+
+typedef struct {
+    double r, g, b;
+} RGB;
+
+/* Surface properties shared by all polygons of one object. */
+typedef struct {
+    Colour pigment;       /* solid colour (filter/transmit included) */
+    Finish finish;        /* roughness already inverted, as POV-Ray uses it */
+    double ior;
+    /* Identity of the interior: POV-Ray gives each top-level object one,
+     * shared by its children unless they name their own. Rays keep a list of
+     * the interiors they are inside to know the ior on both sides. */
+    const void *interior_key;
+    double fade_distance, fade_power;
+    RGB fade_colour;
+    int opaque;           /* filter == transmit == 0: blocks light fully */
+    int no_shadow, no_image, no_reflection, double_illuminate;
+    SourcePos pos;        /* the object, for messages */
+} Material;
+
+/* One planar polygon: a triangle, or POV-Ray polygon outlines (holes by the
+ * even-odd rule). Points live in World.points. */
+typedef struct {
+    Vec3 normal;          /* unit geometric normal */
+    double d;             /* plane: dot(normal, p) == d */
+    int axis_u, axis_v;   /* the two axes kept when projecting to 2-D */
+    int first_point;      /* index in World.points */
+    int npoints;          /* 3 for triangles; outline points incl. closing repeats otherwise */
+    int first_outline;    /* index in World.outline_start; -1 for a triangle */
+    int noutlines;
+    int smooth_normals;   /* index of 3 normals in World.vertex_normals, or -1 */
+    int material;
+    Vec3 bbox_min, bbox_max;
+} Polygon;
+
+typedef struct {
+    Vec3 normal;          /* unit */
+    double d;             /* dot(normal, p) == d */
+    int material;
+} InfinitePlane;
+
+typedef struct {
+    LightKind kind;
+    Vec3 location;
+    Vec3 direction;       /* parallel: unit vector from the scene toward the light */
+    RGB colour;
+    int shadowless;
+    double fade_distance, fade_power;
+} Light;
+
+typedef struct {
+    CameraKind kind;
+    Vec3 location, direction, up, right;
+} Camera;
+
+typedef struct {
+    int npolygons;
+    Polygon *polygons;
+    int npoints;
+    Vec3 *points;
+    int noutline_starts;
+    int *outline_start;   /* per polygon with outlines: noutlines+1 indices into points */
+    int nvertex_normals;
+    Vec3 *vertex_normals;
+    int nplanes;
+    InfinitePlane *planes;
+    int nmaterials;
+    Material *materials;
+    int nlights;
+    Light *lights;
+    Camera camera;
+    RGB background;
+    RGB ambient_light;
+    int max_trace_level;
+    double adc_bailout;
+    Vec3 bounds_min, bounds_max; /* of all polygons; empty when min > max */
+} World;
+
+typedef struct {
+    char message[512];
+    SourcePos pos;
+} WorldError;
+
+/* Returns 0, or -1 with err filled (e.g. out of memory). */
+int world_build(World *w, const Scene *scene, WorldError *err);
+void world_free(World *w);
+
+#endif
