@@ -5,10 +5,17 @@
 
 typedef struct {
     int width, height;
-    float *rgba; /* width*height*4, row 0 at the top, linear light */
+    float *rgba; /* width*height*4, row 0 at the top, linear light; colour
+                  * premultiplied by alpha, as in POV-Ray and EXR files */
 } Image;
 
 typedef enum { IMAGE_FORMAT_UNKNOWN, IMAGE_FORMAT_EXR, IMAGE_FORMAT_PNG, IMAGE_FORMAT_PPM } ImageFormat;
+
+/* EXR compression; the zero default is ZIP (16 scanlines a block), what
+ * POV-Ray 3.7 writes. */
+typedef enum {
+    IMAGE_EXR_ZIP = 0, IMAGE_EXR_NONE, IMAGE_EXR_RLE, IMAGE_EXR_ZIPS, IMAGE_EXR_PIZ
+} ImageExrCompression;
 
 typedef struct {
     int exr_float;      /* 1: 32-bit float channels; 0: half (default) */
@@ -17,6 +24,7 @@ typedef struct {
     /* Display encoding for PNG/PPM, as POV-Ray 3.7 does: 0 means sRGB, any
      * other value a power-law gamma (file_gamma). */
     double display_gamma;
+    ImageExrCompression exr_compression; /* 0: ZIP */
 } ImageWriteOptions;
 
 int image_alloc(Image *img, int width, int height);

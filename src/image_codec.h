@@ -21,13 +21,13 @@ typedef struct {
     int neutral;   /* 1: identity (power law within 1% of 1) */
     float enc_exp; /* power-law exponent applied when encoding (1/gamma) */
     double gama;   /* value for the PNG gAMA chunk (1/2.2 for sRGB) */
-} Transfer;
+} ImageTransfer;
 
-void transfer_init(Transfer *t, double display_gamma);
-float transfer_encode(const Transfer *t, float linear);
-float transfer_decode(const Transfer *t, float encoded);
+void image_transfer_init(ImageTransfer *t, double display_gamma);
+float image_transfer_encode(const ImageTransfer *t, float linear);
+float image_transfer_decode(const ImageTransfer *t, float encoded);
 /* POV-Ray's IntEncode: clamps to 0..1 (NaN gives 0) and rounds half up. */
-unsigned quantize(float encoded, unsigned max);
+unsigned image_quantize(float encoded, unsigned max);
 
 /* One pixel of premultiplied linear RGBA to integer samples in 0..max.
  * Without alpha the premultiplied colour is encoded as it is (composited on
@@ -35,11 +35,11 @@ unsigned quantize(float encoded, unsigned max);
  * raising the opacity of pixels brighter than their alpha (by POV-Ray's
  * greyscale weights 0.297/0.589/0.114) so highlights on transparent objects
  * survive the clamp. out[3] is set only when with_alpha. */
-void encode_pixel(const Transfer *t, const float rgba[4], unsigned max, int with_alpha, unsigned out[4]);
+void image_encode_pixel(const ImageTransfer *t, const float rgba[4], unsigned max, int with_alpha, unsigned out[4]);
 
 /* Decoding table for integer samples 0..max (max <= 65535): linear values.
  * Returns NULL when out of memory. Free with free(). */
-float *transfer_decode_table(const Transfer *t, unsigned max);
+float *image_transfer_decode_table(const ImageTransfer *t, unsigned max);
 
 /* ---- errors --------------------------------------------------------------- */
 #if defined(__GNUC__)
@@ -58,12 +58,12 @@ void image_set_error(char *err, int errlen, const char *fmt, ...) HST_PRINTF(3, 
  * a FILE wrapping it (PNG, PPM; the caller closes it), and report errors as
  * a bare reason ("disk full"); image_write adds "cannot write 'path': ".
  * Readers fill a fresh Image and report the bare reason likewise. */
-int exr_write_fd(int fd, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
-int png_write_file(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
-int ppm_write_file(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+int image_ppm_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
 
-int exr_read_fd(int fd, Image *img, char *err, int errlen);
-int png_read_file(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
-int ppm_read_file(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
+int image_exr_read(int fd, Image *img, char *err, int errlen);
+int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
+int image_ppm_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
 
 #endif

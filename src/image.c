@@ -1,0 +1,206 @@
+/* Image buffers, format detection, and the atomic write / read dispatch. */
+#include "image.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "atomic_file.h"
+#include "image_codec.h"
+
+int image_alloc(Image *img, int width, int height)
+{
+    img->width = 0;
+    img->height = 0;
+    img->rgba = NULL;
+    if (width <= 0 || height <= 0 || width > IMAGE_MAX_DIM || height > IMAGE_MAX_DIM ||
+        (long)width * (long)height > IMAGE_MAX_PIXELS)
+        return -1;
+    img->rgba = calloc((size_t)width * (size_t)height * 4, sizeof(float));
+    if (img->rgba == NULL)
+        return -1;
+    img->width = width;
+    img->height = height;
+    return 0;
+}
+
+void image_free(Image *img)
+{
+    if (img == NULL)
+        return;
+    free(img->rgba);
+    img->rgba = NULL;
+    img->width = 0;
+    img->height = 0;
+}
+
+ImageFormat image_format_from_path(const char *path)
+{
+    const char *dot, *slash;
+
+    if (path == NULL)
+        return IMAGE_FORMAT_UNKNOWN;
+    dot = strrchr(path, '.');
+    slash = strrchr(path, '/');
+    if (dot == NULL || (slash != NULL && dot < slash))
+        return IMAGE_FORMAT_UNKNOWN;
+    if (strcasecmp(dot, ".exr") == 0)
+        return IMAGE_FORMAT_EXR;
+    if (strcasecmp(dot, ".png") == 0)
+        return IMAGE_FORMAT_PNG;
+    if (strcasecmp(dot, ".ppm") == 0)
+        return IMAGE_FORMAT_PPM;
+    return IMAGE_FORMAT_UNKNOWN;
+}
+
+/* Runs the codec on the temporary file; returns 0, or -1 with the reason in
+ * why (errno text when the codec left none). */
+static int write_codec(AtomicFile *af, ImageFormat fmt, const Image *img, const ImageWriteOptions *opt,
+                       char *why, int whylen)
+{
+    FILE *fp;
+    int rc;
+
+    why[0] = '\0';
+    if (fmt == IMAGE_FORMAT_EXR) {
+        errno = 0;
+        return image_exr_write(af->fd, img, opt, why, whylen);
+    }
+    fp = fdopen(af->fd, "wb");
+    if (fp == NULL)
+        return -1;
+    errno = 0;
+    if (fmt == IMAGE_FORMAT_PNG)
+        rc = image_png_write(fp, img, opt, why, whylen);
+    else
+        rc = image_ppm_write(fp, img, opt, why, whylen);
+    /* fclose flushes: a full disk shows up here at the latest. */
+    if (ferror(fp) && rc == 0)
+        rc = -1;
+    af->fd = -1;
+    if (fclose(fp) != 0 && rc == 0)
+        rc = -1;
+    return rc;
+}
+
+int image_write(const char *path, const Image *img, const ImageWriteOptions *opt, char *err, int errlen)
+{
+    static const ImageWriteOptions defaults = { 0 };
+    ImageFormat fmt = image_format_from_path(path);
+    AtomicFile af;
+    char why[256];
+
+    if (err != NULL && errlen > 0)
+        err[0] = '\0';
+    if (opt == NULL)
+        opt = &defaults;
+    if (path == NULL || path[0] == '\0') {
+        image_set_error(err, errlen, "cannot write an image: no file name given");
+        return -1;
+    }
+    if (fmt == IMAGE_FORMAT_UNKNOWN) {
+        image_set_error(err, errlen, "cannot write '%s': unknown image format (use .exr, .png or .ppm)", path);
+        return -1;
+    }
+    if (img == NULL || img->rgba == NULL || img->width <= 0 || img->height <= 0 ||
+        img->width > IMAGE_MAX_DIM || img->height > IMAGE_MAX_DIM) {
+        image_set_error(err, errlen, "cannot write '%s': empty or invalid image", path);
+        return -1;
+    }
+    if (atomic_file_open(&af, path) != 0) {
+        image_set_error(err, errlen, "cannot write '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    if (write_codec(&af, fmt, img, opt, why, (int)sizeof why) != 0) {
+        int e = errno;
+        atomic_file_abort(&af);
+        if (why[0] == '\0')
+            snprintf(why, sizeof why, "%s", e ? strerror(e) : "write error");
+        image_set_error(err, errlen, "cannot write '%s': %s", path, why);
+        return -1;
+    }
+    if (atomic_file_commit(&af) != 0) {
+        image_set_error(err, errlen, "cannot write '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* Which codec reads this file: by its first bytes, falling back to the
+ * extension for files too short to tell. */
+static ImageFormat sniff(int fd, const char *path)
+{
+    unsigned char m[8];
+    ssize_t n = pread(fd, m, sizeof m, 0);
+
+    if (n >= 4 && m[0] == 0x76 && m[1] == 0x2f && m[2] == 0x31 && m[3] == 0x01)
+        return IMAGE_FORMAT_EXR;
+    if (n >= 8 && memcmp(m, "\211PNG\r\n\032\n", 8) == 0)
+        return IMAGE_FORMAT_PNG;
+    if (n >= 2 && m[0] == 'P' && (m[1] == '3' || m[1] == '6' || m[1] == '2' || m[1] == '5'))
+        return IMAGE_FORMAT_PPM;
+    return n >= 8 ? IMAGE_FORMAT_UNKNOWN : image_format_from_path(path);
+}
+
+int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen)
+{
+    char why[256];
+    struct stat st;
+    ImageFormat fmt;
+    int fd, rc;
+
+    if (err != NULL && errlen > 0)
+        err[0] = '\0';
+    if (img != NULL) {
+        img->width = img->height = 0;
+        img->rgba = NULL;
+    }
+    if (path == NULL || img == NULL) {
+        image_set_error(err, errlen, "cannot read an image: no file name given");
+        return -1;
+    }
+    fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    if (fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
+        close(fd);
+        image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(EISDIR));
+        return -1;
+    }
+    fmt = sniff(fd, path);
+    why[0] = '\0';
+    if (fmt == IMAGE_FORMAT_EXR) {
+        rc = image_exr_read(fd, img, why, (int)sizeof why);
+        close(fd);
+    } else if (fmt == IMAGE_FORMAT_PNG || fmt == IMAGE_FORMAT_PPM) {
+        FILE *fp = fdopen(fd, "rb");
+        if (fp == NULL) {
+            image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+            close(fd);
+            return -1;
+        }
+        if (fmt == IMAGE_FORMAT_PNG)
+            rc = image_png_read(fp, img, display_gamma, why, (int)sizeof why);
+        else
+            rc = image_ppm_read(fp, img, display_gamma, why, (int)sizeof why);
+        fclose(fp);
+    } else {
+        close(fd);
+        snprintf(why, sizeof why, "not an EXR, PNG or PPM file");
+        rc = -1;
+    }
+    if (rc != 0) {
+        image_free(img);
+        image_set_error(err, errlen, "cannot read '%s': %s", path, why[0] ? why : "unreadable image");
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,102 @@
+/* The display encoding of PNG and PPM files, as POV-Ray 3.7 computes it. */
+#include "image_codec.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+
+void image_transfer_init(ImageTransfer *t, double display_gamma)
+{
+    t->srgb = 0;
+    t->neutral = 0;
+    t->enc_exp = 1.0f;
+    if (!(display_gamma > 0.0) || !isfinite(display_gamma)) {
+        /* 0 (and anything unusable) selects the sRGB curve, POV-Ray's
+         * default File_Gamma; PNG readers are told it is about 2.2. */
+        t->srgb = 1;
+        t->gama = 1.0 / 2.2f;
+        return;
+    }
+    /* POV-Ray keeps the encoding exponent as a float (1.0f/gamma) and treats
+     * a power law within 1% of 1 as no curve at all. */
+    t->enc_exp = 1.0f / (float)display_gamma;
+    t->neutral = fabs(1.0 - t->enc_exp) <= 0.01;
+    t->gama = t->neutral ? 1.0 : 1.0f / (1.0f / t->enc_exp);
+}
+
+float image_transfer_encode(const ImageTransfer *t, float x)
+{
+    if (t->srgb) {
+        if (x <= 0.0031308f)
+            return x * 12.92f;
+        return 1.055f * powf(x, 1.0f / 2.4f) - 0.055f;
+    }
+    if (t->neutral)
+        return x;
+    return powf(x > 0.0f ? x : 0.0f, t->enc_exp);
+}
+
+float image_transfer_decode(const ImageTransfer *t, float x)
+{
+    if (t->srgb) {
+        if (x < 0.04045f)
+            return x / 12.92f;
+        return powf((x + 0.055f) / 1.055f, 2.4f);
+    }
+    if (t->neutral)
+        return x;
+    return powf(x > 0.0f ? x : 0.0f, 1.0f / t->enc_exp);
+}
+
+unsigned image_quantize(float e, unsigned max)
+{
+    if (!(e > 0.0f)) /* negative, zero or NaN */
+        return 0;
+    if (e > 1.0f)
+        e = 1.0f;
+    return (unsigned)floorf(e * (float)max + 0.5f);
+}
+
+void image_encode_pixel(const ImageTransfer *t, const float rgba[4], unsigned max, int with_alpha, unsigned out[4])
+{
+    float r = rgba[0], g = rgba[1], b = rgba[2];
+
+    if (with_alpha) {
+        float a = rgba[3];
+        /* POV-Ray's greyscale() sums in double with these weights. */
+        float bright = (float)(0.297 * r + 0.589 * g + 0.114 * b);
+        float div;
+        if (bright > a)
+            a = bright < 1.0f ? bright : 1.0f;
+        /* Fully transparent: divide by a tiny alpha instead (POV-Ray's
+         * ALPHA_EPSILON); the stored alpha stays 0. */
+        div = a == 0.0f ? 1.0e-6f : a;
+        r /= div;
+        g /= div;
+        b /= div;
+        out[3] = image_quantize(a, max);
+    }
+    out[0] = image_quantize(image_transfer_encode(t, r), max);
+    out[1] = image_quantize(image_transfer_encode(t, g), max);
+    out[2] = image_quantize(image_transfer_encode(t, b), max);
+}
+
+float *image_transfer_decode_table(const ImageTransfer *t, unsigned max)
+{
+    float *lut = malloc(((size_t)max + 1) * sizeof *lut);
+    if (lut == NULL)
+        return NULL;
+    for (unsigned i = 0; i <= max; i++)
+        lut[i] = image_transfer_decode(t, (float)i / (float)max);
+    return lut;
+}
+
+void image_set_error(char *err, int errlen, const char *fmt, ...)
+{
+    va_list ap;
+    if (err == NULL || errlen <= 0)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(err, (size_t)errlen, fmt, ap);
+    va_end(ap);
+}

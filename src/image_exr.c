@@ -1,0 +1,418 @@
+/* OpenEXR through the library's C API (libOpenEXRCore). Writes one scanline
+ * part, channels A,B,G,R as half or float, data window = display window.
+ * Reads part 0 of any scanline or tiled file (level 0 of mip/rip maps),
+ * channels R,G,B,A (or Y as grey); missing colour is 0, missing A is 1. */
+#include <errno.h>
+#include <openexr.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "image_codec.h"
+
+typedef struct {
+    int fd;
+    char *err;
+    int errlen;
+    int have_err; /* keep the first message, the root cause */
+} ExrIO;
+
+static void on_exr_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
+{
+    void *ud = NULL;
+    ExrIO *io;
+
+    (void)code;
+    if (ctxt == NULL || exr_get_user_data(ctxt, &ud) != EXR_ERR_SUCCESS || ud == NULL)
+        return;
+    io = ud;
+    if (!io->have_err && msg != NULL) {
+        image_set_error(io->err, io->errlen, "%s", msg);
+        io->have_err = 1;
+    }
+}
+
+static int64_t exr_fd_write(exr_const_context_t ctxt, void *ud, const void *buf, uint64_t sz, uint64_t off,
+                            exr_stream_error_func_ptr_t error_cb)
+{
+    ExrIO *io = ud;
+    const char *p = buf;
+    uint64_t done = 0;
+
+    while (done < sz) {
+        ssize_t n = pwrite(io->fd, p + done, (size_t)(sz - done), (off_t)(off + done));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            int e = n < 0 ? errno : EIO;
+            error_cb(ctxt, EXR_ERR_WRITE_IO, "%s", strerror(e));
+            errno = e;
+            return -1;
+        }
+        done += (uint64_t)n;
+    }
+    return (int64_t)sz;
+}
+
+static int64_t exr_fd_read(exr_const_context_t ctxt, void *ud, void *buf, uint64_t sz, uint64_t off,
+                           exr_stream_error_func_ptr_t error_cb)
+{
+    ExrIO *io = ud;
+    char *p = buf;
+    uint64_t done = 0;
+
+    while (done < sz) {
+        ssize_t n = pread(io->fd, p + done, (size_t)(sz - done), (off_t)(off + done));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0) {
+            error_cb(ctxt, EXR_ERR_READ_IO, "%s", strerror(errno));
+            return -1;
+        }
+        if (n == 0)
+            break; /* end of file: the library reports the short read */
+        done += (uint64_t)n;
+    }
+    return (int64_t)done;
+}
+
+static int64_t exr_fd_size(exr_const_context_t ctxt, void *ud)
+{
+    ExrIO *io = ud;
+    struct stat st;
+    (void)ctxt;
+    if (fstat(io->fd, &st) != 0)
+        return -1;
+    return (int64_t)st.st_size;
+}
+
+static exr_compression_t exr_compression_of(ImageExrCompression c)
+{
+    switch (c) {
+    case IMAGE_EXR_NONE: return EXR_COMPRESSION_NONE;
+    case IMAGE_EXR_RLE: return EXR_COMPRESSION_RLE;
+    case IMAGE_EXR_ZIPS: return EXR_COMPRESSION_ZIPS;
+    case IMAGE_EXR_PIZ: return EXR_COMPRESSION_PIZ;
+    case IMAGE_EXR_ZIP:
+    default: return EXR_COMPRESSION_ZIP;
+    }
+}
+
+/* A failed call: make sure some message is there, then give up. */
+static int exr_fail(ExrIO *io, exr_result_t rv)
+{
+    if (!io->have_err) {
+        image_set_error(io->err, io->errlen, "%s", exr_get_default_error_message(rv));
+        io->have_err = 1;
+    }
+    return -1;
+}
+
+int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char *err, int errlen)
+{
+    /* Alphabetical, as EXR stores channels; offsets into an RGBA pixel. */
+    static const char *const names[4] = { "A", "B", "G", "R" };
+    static const int offsets[4] = { 3, 2, 1, 0 };
+    ExrIO io = { fd, err, errlen, 0 };
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    exr_context_t ctx = NULL;
+    exr_encode_pipeline_t enc;
+    exr_pixel_type_t ptype = opt->exr_float ? EXR_PIXEL_FLOAT : EXR_PIXEL_HALF;
+    const int w = img->width, h = img->height;
+    int part, lines, started = 0;
+    exr_result_t rv;
+
+    memset(&enc, 0, sizeof enc);
+    init.user_data = &io;
+    init.write_fn = exr_fd_write;
+    init.error_handler_fn = on_exr_error;
+
+    rv = exr_start_write(&ctx, "image.exr", EXR_WRITE_FILE_DIRECTLY, &init);
+    if (rv != EXR_ERR_SUCCESS)
+        goto fail;
+    rv = exr_add_part(ctx, "", EXR_STORAGE_SCANLINE, &part);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_initialize_required_attr_simple(ctx, part, w, h, exr_compression_of(opt->exr_compression));
+    for (int c = 0; c < 4 && rv == EXR_ERR_SUCCESS; c++)
+        rv = exr_add_channel(ctx, part, names[c], ptype, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_set_lineorder(ctx, part, EXR_LINEORDER_INCREASING_Y);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_attr_set_string(ctx, part, "software", "hstrace");
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_write_header(ctx);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_scanlines_per_chunk(ctx, part, &lines);
+    if (rv != EXR_ERR_SUCCESS)
+        goto fail;
+
+    for (int y = 0; y < h; y += lines) {
+        exr_chunk_info_t cinfo;
+        rv = exr_write_scanline_chunk_info(ctx, part, y, &cinfo);
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+        if (!started) {
+            rv = exr_encoding_initialize(ctx, part, &cinfo, &enc);
+            started = rv == EXR_ERR_SUCCESS;
+        } else {
+            rv = exr_encoding_update(ctx, part, &cinfo, &enc);
+        }
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+        for (int c = 0; c < enc.channel_count; c++) {
+            exr_coding_channel_info_t *ch = &enc.channels[c];
+            int k = 0;
+            while (k < 4 && strcmp(ch->channel_name, names[k]) != 0)
+                k++;
+            if (k == 4) {
+                rv = EXR_ERR_INVALID_ARGUMENT;
+                goto fail;
+            }
+            /* The library converts our float samples to the channel type. */
+            ch->user_data_type = EXR_PIXEL_FLOAT;
+            ch->user_bytes_per_element = 4;
+            ch->user_pixel_stride = 4 * (int32_t)sizeof(float);
+            ch->user_line_stride = w * 4 * (int32_t)sizeof(float);
+            ch->encode_from_ptr = (const uint8_t *)(img->rgba + (size_t)(cinfo.start_y) * (size_t)w * 4 + offsets[k]);
+        }
+        if (y == 0)
+            rv = exr_encoding_choose_default_routines(ctx, part, &enc);
+        if (rv == EXR_ERR_SUCCESS)
+            rv = exr_encoding_run(ctx, part, &enc);
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+    }
+    if (started)
+        exr_encoding_destroy(ctx, &enc);
+    started = 0;
+    rv = exr_finish(&ctx);
+    if (rv != EXR_ERR_SUCCESS)
+        return exr_fail(&io, rv);
+    return 0;
+
+fail:
+    if (started)
+        exr_encoding_destroy(ctx, &enc);
+    if (ctx != NULL)
+        exr_finish(&ctx);
+    return exr_fail(&io, rv);
+}
+
+/* Where each wanted channel goes in an RGBA pixel, -1 to skip it. */
+static int channel_slot(const char *name, int grey_only)
+{
+    if (strcmp(name, "R") == 0) return 0;
+    if (strcmp(name, "G") == 0) return 1;
+    if (strcmp(name, "B") == 0) return 2;
+    if (strcmp(name, "A") == 0) return 3;
+    if (grey_only && strcmp(name, "Y") == 0) return 0;
+    return -1;
+}
+
+/* Scratch pixels for one chunk: 8 floats a pixel, RGBA in the first four.
+ * The padding is deliberate: OpenEXR 3.1.x picks hand-written routines for
+ * 3 or 4 half channels decoded to tightly interleaved floats, and up to 3.2
+ * the 4-channel ones put the channels in reverse order (fixed upstream in
+ * 3.3, commit 6fdcad4a). With a pixel stride of 32 bytes none of them
+ * matches and the library uses its generic unpacker. */
+#define SCRATCH_STRIDE 8
+
+typedef struct {
+    float *buf;
+    size_t cap; /* in pixels */
+} Scratch;
+
+/* Decodes one chunk covering pixels (x0,y0)..(x0+cw-1,y0+ch-1) of the
+ * image and stores its RGBA floats there. */
+static exr_result_t decode_chunk(exr_const_context_t ctx, int part, const exr_chunk_info_t *cinfo, int x0, int y0,
+                                 Image *img, int grey_only, exr_decode_pipeline_t *dec, int *started, Scratch *sc)
+{
+    exr_result_t rv;
+    size_t npix;
+    const int cw = cinfo->width, chh = cinfo->height;
+
+    if (x0 < 0 || y0 < 0 || cw <= 0 || chh <= 0 || cw > img->width - x0 || chh > img->height - y0)
+        return EXR_ERR_CORRUPT_CHUNK;
+    npix = (size_t)cw * (size_t)chh;
+    if (npix > sc->cap) {
+        float *nb = realloc(sc->buf, npix * SCRATCH_STRIDE * sizeof(float));
+        if (nb == NULL)
+            return EXR_ERR_OUT_OF_MEMORY;
+        sc->buf = nb;
+        sc->cap = npix;
+    }
+    for (size_t i = 0; i < npix; i++) {
+        float *p = sc->buf + i * SCRATCH_STRIDE;
+        p[0] = p[1] = p[2] = 0.0f;
+        p[3] = 1.0f;
+    }
+    if (!*started) {
+        rv = exr_decoding_initialize(ctx, part, cinfo, dec);
+        if (rv != EXR_ERR_SUCCESS)
+            return rv;
+        *started = 1;
+    } else {
+        rv = exr_decoding_update(ctx, part, cinfo, dec);
+        if (rv != EXR_ERR_SUCCESS)
+            return rv;
+    }
+    for (int c = 0; c < dec->channel_count; c++) {
+        exr_coding_channel_info_t *ch = &dec->channels[c];
+        int slot = channel_slot(ch->channel_name, grey_only);
+        if (slot < 0 || ch->x_samples != 1 || ch->y_samples != 1 || ch->width != cw || ch->height != chh) {
+            ch->decode_to_ptr = NULL;
+            continue;
+        }
+        ch->user_data_type = EXR_PIXEL_FLOAT; /* half and uint converted by the library */
+        ch->user_bytes_per_element = 4;
+        ch->user_pixel_stride = SCRATCH_STRIDE * (int32_t)sizeof(float);
+        ch->user_line_stride = cw * SCRATCH_STRIDE * (int32_t)sizeof(float);
+        ch->decode_to_ptr = (uint8_t *)(sc->buf + slot);
+    }
+    rv = exr_decoding_choose_default_routines(ctx, part, dec);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_decoding_run(ctx, part, dec);
+    if (rv != EXR_ERR_SUCCESS)
+        return rv;
+    for (int y = 0; y < chh; y++) {
+        const float *src = sc->buf + (size_t)y * (size_t)cw * SCRATCH_STRIDE;
+        float *dst = img->rgba + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4;
+        for (int x = 0; x < cw; x++, src += SCRATCH_STRIDE, dst += 4)
+            memcpy(dst, src, 4 * sizeof(float));
+    }
+    return EXR_ERR_SUCCESS;
+}
+
+int image_exr_read(int fd, Image *img, char *err, int errlen)
+{
+    ExrIO io = { fd, err, errlen, 0 };
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    exr_context_t ctx = NULL;
+    exr_decode_pipeline_t dec;
+    Scratch sc = { NULL, 0 };
+    exr_storage_t storage;
+    exr_attr_box2i_t dw;
+    const exr_attr_chlist_t *chans = NULL;
+    int nparts = 0, started = 0, have_rgb = 0, have_y = 0, grey_only, w, h;
+    exr_result_t rv;
+
+    memset(&dec, 0, sizeof dec);
+    init.user_data = &io;
+    init.read_fn = exr_fd_read;
+    init.size_fn = exr_fd_size;
+    init.error_handler_fn = on_exr_error;
+    init.max_image_width = IMAGE_MAX_DIM;
+    init.max_image_height = IMAGE_MAX_DIM;
+    init.max_tile_width = IMAGE_MAX_DIM;
+    init.max_tile_height = IMAGE_MAX_DIM;
+
+    rv = exr_start_read(&ctx, "image.exr", &init);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_count(ctx, &nparts);
+    if (rv == EXR_ERR_SUCCESS && nparts < 1)
+        rv = EXR_ERR_FILE_BAD_HEADER;
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_storage(ctx, 0, &storage);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_data_window(ctx, 0, &dw);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_channels(ctx, 0, &chans);
+    if (rv != EXR_ERR_SUCCESS)
+        goto fail;
+    if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED) {
+        image_set_error(err, errlen, "deep EXR images are not supported");
+        goto fail_quiet;
+    }
+    for (int c = 0; c < chans->num_channels; c++) {
+        const char *n = chans->entries[c].name.str;
+        if (strcmp(n, "R") == 0 || strcmp(n, "G") == 0 || strcmp(n, "B") == 0)
+            have_rgb = 1;
+        else if (strcmp(n, "Y") == 0)
+            have_y = 1;
+    }
+    if (!have_rgb && !have_y) {
+        image_set_error(err, errlen, "EXR file has no R, G, B or Y channel");
+        goto fail_quiet;
+    }
+    grey_only = !have_rgb;
+    {
+        int64_t lw = (int64_t)dw.max.x - dw.min.x + 1, lh = (int64_t)dw.max.y - dw.min.y + 1;
+        if (lw <= 0 || lh <= 0 || lw > IMAGE_MAX_DIM || lh > IMAGE_MAX_DIM || lw * lh > IMAGE_MAX_PIXELS) {
+            image_set_error(err, errlen, "unsupported EXR data window (%lldx%lld)", (long long)lw, (long long)lh);
+            goto fail_quiet;
+        }
+        w = (int)lw;
+        h = (int)lh;
+    }
+    if (image_alloc(img, w, h) != 0) {
+        image_set_error(err, errlen, "out of memory for a %dx%d image", w, h);
+        goto fail_quiet;
+    }
+    /* No pre-fill: every pixel belongs to exactly one chunk, and each chunk
+     * fills all four channels (missing ones from the scratch defaults), so
+     * memory is only touched as valid data arrives. */
+
+    if (storage == EXR_STORAGE_SCANLINE) {
+        int lines;
+        rv = exr_get_scanlines_per_chunk(ctx, 0, &lines);
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+        if (lines < 1)
+            lines = 1;
+        for (int64_t y = dw.min.y; y <= dw.max.y; y += lines) {
+            exr_chunk_info_t cinfo;
+            rv = exr_read_scanline_chunk_info(ctx, 0, (int)y, &cinfo);
+            if (rv == EXR_ERR_SUCCESS)
+                rv = decode_chunk(ctx, 0, &cinfo, cinfo.start_x - dw.min.x, cinfo.start_y - dw.min.y, img,
+                                  grey_only, &dec, &started, &sc);
+            if (rv != EXR_ERR_SUCCESS)
+                goto fail;
+        }
+    } else {
+        int32_t tw, th, lw, lh, cx, cy;
+        rv = exr_get_tile_sizes(ctx, 0, 0, 0, &tw, &th);
+        if (rv == EXR_ERR_SUCCESS)
+            rv = exr_get_level_sizes(ctx, 0, 0, 0, &lw, &lh);
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+        if (tw < 1 || th < 1 || lw != w || lh != h) {
+            rv = EXR_ERR_BAD_CHUNK_LEADER;
+            goto fail;
+        }
+        cx = (int32_t)(((int64_t)lw + tw - 1) / tw);
+        cy = (int32_t)(((int64_t)lh + th - 1) / th);
+        for (int ty = 0; ty < cy; ty++) {
+            for (int tx = 0; tx < cx; tx++) {
+                exr_chunk_info_t cinfo;
+                rv = exr_read_tile_chunk_info(ctx, 0, tx, ty, 0, 0, &cinfo);
+                if (rv == EXR_ERR_SUCCESS)
+                    rv = decode_chunk(ctx, 0, &cinfo, (int)((int64_t)tx * tw), (int)((int64_t)ty * th), img,
+                                      grey_only, &dec, &started, &sc);
+                if (rv != EXR_ERR_SUCCESS)
+                    goto fail;
+            }
+        }
+    }
+    if (started)
+        exr_decoding_destroy(ctx, &dec);
+    exr_finish(&ctx);
+    free(sc.buf);
+    if (grey_only) {
+        for (size_t i = 0; i < (size_t)w * (size_t)h; i++)
+            img->rgba[4 * i + 1] = img->rgba[4 * i + 2] = img->rgba[4 * i];
+    }
+    return 0;
+
+fail:
+    exr_fail(&io, rv);
+fail_quiet:
+    if (started)
+        exr_decoding_destroy(ctx, &dec);
+    if (ctx != NULL)
+        exr_finish(&ctx);
+    free(sc.buf);
+    image_free(img);
+    return -1;
+}

@@ -1,0 +1,247 @@
+/* PNG through libpng: 8 or 16 bits, RGB or RGBA, encoded like POV-Ray 3.7
+ * (see image_codec.h) with gAMA, sRGB (for the sRGB curve) and sBIT chunks. */
+#include <png.h>
+#include <setjmp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "image_codec.h"
+
+typedef struct {
+    char *err;
+    int errlen;
+} PngErr;
+
+static void on_png_error(png_structp png, png_const_charp msg)
+{
+    PngErr *pe = png_get_error_ptr(png);
+    if (pe != NULL)
+        image_set_error(pe->err, pe->errlen, "%s", msg);
+    png_longjmp(png, 1);
+}
+
+static void on_png_warning(png_structp png, png_const_charp msg)
+{
+    (void)png;
+    (void)msg;
+}
+
+/* Everything libpng does for a write, outside the function that calls
+ * setjmp so that no local of that one changes after it. */
+static void png_write_body(png_structp png, png_infop info, const Image *img, const ImageTransfer *t, int depth,
+                           int alpha, unsigned char *row)
+{
+    const int nch = alpha ? 4 : 3;
+    const unsigned max = depth == 16 ? 65535u : 255u;
+    png_color_8 sbit;
+    png_text text;
+
+    png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, depth,
+                 alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    memset(&sbit, 0, sizeof sbit);
+    sbit.red = sbit.green = sbit.blue = (png_byte)depth;
+    if (alpha)
+        sbit.alpha = (png_byte)depth;
+    png_set_sBIT(png, info, &sbit);
+    /* As POV-Ray: gAMA 1/2.2 (45455) plus sRGB (perceptual) for the sRGB
+     * curve, gAMA 1/gamma for a power law. */
+    png_set_gAMA(png, info, t->gama);
+    if (t->srgb)
+        png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    memset(&text, 0, sizeof text);
+    text.compression = PNG_TEXT_COMPRESSION_NONE;
+    text.key = (png_charp) "Software";
+    text.text = (png_charp) "hstrace";
+    text.text_length = strlen(text.text);
+    png_set_text(png, info, &text, 1);
+    png_write_info(png, info);
+
+    for (int y = 0; y < img->height; y++) {
+        const float *px = img->rgba + (size_t)y * (size_t)img->width * 4;
+        unsigned char *o = row;
+        for (int x = 0; x < img->width; x++, px += 4) {
+            unsigned q[4];
+            image_encode_pixel(t, px, max, alpha, q);
+            for (int c = 0; c < nch; c++) {
+                if (depth == 16) {
+                    *o++ = (unsigned char)(q[c] >> 8);
+                    *o++ = (unsigned char)(q[c] & 0xff);
+                } else {
+                    *o++ = (unsigned char)q[c];
+                }
+            }
+        }
+        png_write_row(png, row);
+    }
+    png_write_end(png, info);
+}
+
+int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen)
+{
+    PngErr pe = { err, errlen };
+    png_structp png;
+    png_infop info;
+    ImageTransfer t;
+    const int depth = opt->png_16bit ? 16 : 8;
+    const int alpha = opt->write_alpha != 0;
+    unsigned char *row;
+
+    image_transfer_init(&t, opt->display_gamma);
+    row = malloc((size_t)img->width * (size_t)(alpha ? 4 : 3) * (size_t)(depth / 8));
+    if (row == NULL) {
+        image_set_error(err, errlen, "out of memory");
+        return -1;
+    }
+    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &pe, on_png_error, on_png_warning);
+    info = png ? png_create_info_struct(png) : NULL;
+    if (info == NULL) {
+        png_destroy_write_struct(&png, NULL);
+        free(row);
+        image_set_error(err, errlen, "out of memory");
+        return -1;
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        free(row);
+        return -1;
+    }
+    png_init_io(png, fp);
+    png_write_body(png, info, img, &t, depth, alpha, row);
+    png_destroy_write_struct(&png, &info);
+    free(row);
+    return 0;
+}
+
+/* Working state of a read, kept behind one pointer so that nothing the error
+ * path needs lives in a local changed after setjmp. */
+typedef struct {
+    png_structp png;
+    png_infop info;
+    unsigned char *row;
+    float *lut;
+} PngRead;
+
+int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen)
+{
+    PngErr pe = { err, errlen };
+    PngRead *st = calloc(1, sizeof *st);
+    ImageTransfer t;
+    png_uint_32 w, h;
+    int depth, ctype, nch, wide, passes;
+    unsigned max;
+    unsigned char sig[8];
+
+    if (st == NULL) {
+        image_set_error(err, errlen, "out of memory");
+        return -1;
+    }
+    if (fread(sig, 1, 8, fp) != 8 || png_sig_cmp(sig, 0, 8) != 0) {
+        free(st);
+        image_set_error(err, errlen, "not a PNG file (bad signature or truncated)");
+        return -1;
+    }
+    st->png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &pe, on_png_error, on_png_warning);
+    st->info = st->png ? png_create_info_struct(st->png) : NULL;
+    if (st->info == NULL) {
+        png_destroy_read_struct(&st->png, NULL, NULL);
+        free(st);
+        image_set_error(err, errlen, "out of memory");
+        return -1;
+    }
+    if (setjmp(png_jmpbuf(st->png))) {
+        png_destroy_read_struct(&st->png, &st->info, NULL);
+        free(st->row);
+        free(st->lut);
+        free(st);
+        image_free(img);
+        if (err != NULL && errlen > 0 && err[0] == '\0')
+            image_set_error(err, errlen, "corrupt PNG file");
+        return -1;
+    }
+    png_set_user_limits(st->png, IMAGE_MAX_DIM, IMAGE_MAX_DIM);
+    /* A corrupt length must not make libpng allocate gigabytes for an
+     * ancillary chunk (zTXt, iCCP, ...). */
+    png_set_chunk_malloc_max(st->png, 16u << 20);
+    png_set_chunk_cache_max(st->png, 1000);
+    {
+        /* Metadata chunks are of no use here: skip them unread (libpng
+         * would otherwise buffer whatever length a corrupt one claims). */
+        static const png_byte skip[] = "tEXt\0zTXt\0iTXt\0iCCP\0sPLT\0eXIf\0tIME\0";
+        png_set_keep_unknown_chunks(st->png, PNG_HANDLE_CHUNK_NEVER, NULL, 0);
+        png_set_keep_unknown_chunks(st->png, PNG_HANDLE_CHUNK_NEVER, skip, (int)(sizeof skip / 5));
+    }
+    png_init_io(st->png, fp);
+    png_set_sig_bytes(st->png, 8);
+    png_read_info(st->png, st->info);
+    w = png_get_image_width(st->png, st->info);
+    h = png_get_image_height(st->png, st->info);
+    if ((unsigned long)w * h > (unsigned long)IMAGE_MAX_PIXELS)
+        png_error(st->png, "image too large");
+
+    /* Everything to 8 or 16-bit RGB or RGBA, 16-bit samples big-endian. */
+    png_set_expand(st->png);
+    png_set_gray_to_rgb(st->png);
+    passes = png_set_interlace_handling(st->png);
+    png_read_update_info(st->png, st->info);
+    depth = png_get_bit_depth(st->png, st->info);
+    ctype = png_get_color_type(st->png, st->info);
+    nch = png_get_channels(st->png, st->info);
+    if ((depth != 8 && depth != 16) || (nch != 3 && nch != 4) || !(ctype & PNG_COLOR_MASK_COLOR))
+        png_error(st->png, "unsupported PNG layout");
+    wide = depth == 16;
+    max = wide ? 65535u : 255u;
+
+    image_transfer_init(&t, display_gamma);
+    st->lut = image_transfer_decode_table(&t, max);
+    if (st->lut == NULL || image_alloc(img, (int)w, (int)h) != 0)
+        png_error(st->png, "out of memory");
+    st->row = malloc(png_get_rowbytes(st->png, st->info));
+    if (st->row == NULL)
+        png_error(st->png, "out of memory");
+
+    {
+        /* Interlaced images: libpng fills each row over several passes, so
+         * every row needs its own buffer until the last pass. */
+        if (passes > 1) {
+            size_t rb = png_get_rowbytes(st->png, st->info);
+            unsigned char *all = malloc(rb * h);
+            if (all == NULL)
+                png_error(st->png, "out of memory");
+            free(st->row);
+            st->row = all;
+            for (int p = 0; p < passes; p++)
+                for (png_uint_32 y = 0; y < h; y++)
+                    png_read_row(st->png, all + rb * y, NULL);
+        }
+        for (png_uint_32 y = 0; y < h; y++) {
+            const unsigned char *in;
+            float *px = img->rgba + (size_t)y * w * 4;
+            if (passes > 1) {
+                in = st->row + png_get_rowbytes(st->png, st->info) * y;
+            } else {
+                png_read_row(st->png, st->row, NULL);
+                in = st->row;
+            }
+            for (png_uint_32 x = 0; x < w; x++, px += 4) {
+                unsigned v[4] = { 0, 0, 0, max };
+                for (int c = 0; c < nch; c++) {
+                    v[c] = wide ? (unsigned)(in[0] << 8 | in[1]) : in[0];
+                    in += wide ? 2 : 1;
+                }
+                /* PNG alpha is straight; the image holds premultiplied. */
+                float a = (float)v[3] / (float)max;
+                px[0] = st->lut[v[0]] * a;
+                px[1] = st->lut[v[1]] * a;
+                px[2] = st->lut[v[2]] * a;
+                px[3] = a;
+            }
+        }
+    }
+    png_read_end(st->png, NULL);
+    png_destroy_read_struct(&st->png, &st->info, NULL);
+    free(st->row);
+    free(st->lut);
+    free(st);
+    return 0;
+}

@@ -1,0 +1,149 @@
+/* PPM: writes binary P6 with maxval 255 in the display encoding; reads P6
+ * and P3 (and the grey P5/P2) with maxval up to 65535. */
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "image_codec.h"
+
+int image_ppm_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen)
+{
+    ImageTransfer t;
+    unsigned char *row;
+    size_t rowbytes = (size_t)img->width * 3;
+
+    image_transfer_init(&t, opt->display_gamma);
+    row = malloc(rowbytes);
+    if (row == NULL) {
+        image_set_error(err, errlen, "out of memory");
+        return -1;
+    }
+    if (fprintf(fp, "P6\n%d %d\n255\n", img->width, img->height) < 0) {
+        free(row);
+        return -1;
+    }
+    for (int y = 0; y < img->height; y++) {
+        const float *px = img->rgba + (size_t)y * (size_t)img->width * 4;
+        for (int x = 0; x < img->width; x++, px += 4) {
+            unsigned q[4];
+            image_encode_pixel(&t, px, 255, 0, q);
+            row[3 * x] = (unsigned char)q[0];
+            row[3 * x + 1] = (unsigned char)q[1];
+            row[3 * x + 2] = (unsigned char)q[2];
+        }
+        if (fwrite(row, 1, rowbytes, fp) != rowbytes) {
+            free(row);
+            return -1;
+        }
+    }
+    free(row);
+    return 0;
+}
+
+/* Skips whitespace and '#' comments, then reads an unsigned decimal.
+ * Returns -1 at end of file or on anything else. */
+static long read_number(FILE *fp)
+{
+    int c;
+    long v = 0;
+
+    for (;;) {
+        c = getc(fp);
+        if (c == '#') {
+            while (c != '\n' && c != '\r' && c != EOF)
+                c = getc(fp);
+        }
+        if (c == EOF)
+            return -1;
+        if (c != ' ' && c != '\t' && c != '\n' && c != '\r' && c != '\v' && c != '\f')
+            break;
+    }
+    if (c < '0' || c > '9')
+        return -1;
+    while (c >= '0' && c <= '9') {
+        if (v > (LONG_MAX - 9) / 10)
+            return -1;
+        v = v * 10 + (c - '0');
+        c = getc(fp);
+    }
+    /* the character ending the number is consumed, as the format wants for
+     * the single whitespace before binary data */
+    if (c != EOF && c != ' ' && c != '\t' && c != '\n' && c != '\r' && c != '\v' && c != '\f') {
+        if (c == '#')
+            ungetc(c, fp);
+        else
+            return -1;
+    }
+    return v;
+}
+
+int image_ppm_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen)
+{
+    ImageTransfer t;
+    float *lut;
+    long w, h, maxval;
+    int kind, channels, ascii, wide;
+    int c0 = getc(fp), c1 = getc(fp);
+
+    if (c0 == EOF) {
+        image_set_error(err, errlen, "file is empty");
+        return -1;
+    }
+    if (c0 != 'P' || (c1 != '3' && c1 != '6' && c1 != '2' && c1 != '5')) {
+        image_set_error(err, errlen, "not a PPM file (expected P6 or P3)");
+        return -1;
+    }
+    kind = c1;
+    channels = (kind == '3' || kind == '6') ? 3 : 1;
+    ascii = kind == '3' || kind == '2';
+    w = read_number(fp);
+    h = read_number(fp);
+    maxval = read_number(fp);
+    if (w < 0 || h < 0 || maxval < 0) {
+        image_set_error(err, errlen, "corrupt or truncated PPM header");
+        return -1;
+    }
+    if (w == 0 || h == 0 || w > IMAGE_MAX_DIM || h > IMAGE_MAX_DIM || w * h > IMAGE_MAX_PIXELS) {
+        image_set_error(err, errlen, "unsupported PPM size %ldx%ld", w, h);
+        return -1;
+    }
+    if (maxval < 1 || maxval > 65535) {
+        image_set_error(err, errlen, "invalid PPM maxval %ld (must be 1 to 65535)", maxval);
+        return -1;
+    }
+    wide = maxval > 255;
+    image_transfer_init(&t, display_gamma);
+    lut = image_transfer_decode_table(&t, (unsigned)maxval);
+    if (lut == NULL || image_alloc(img, (int)w, (int)h) != 0) {
+        free(lut);
+        image_set_error(err, errlen, "out of memory for a %ldx%ld image", w, h);
+        return -1;
+    }
+    for (long i = 0; i < w * h; i++) {
+        float *px = img->rgba + i * 4;
+        for (int ch = 0; ch < channels; ch++) {
+            long v;
+            if (ascii) {
+                v = read_number(fp);
+            } else {
+                int a = getc(fp), b = 0;
+                if (wide && a != EOF)
+                    b = getc(fp);
+                v = (a == EOF || b == EOF) ? -1 : wide ? (a << 8 | b) : a;
+            }
+            if (v < 0) {
+                free(lut);
+                image_set_error(err, errlen, "PPM pixel data is %s", ascii ? "corrupt or truncated" : "truncated");
+                return -1;
+            }
+            if (v > maxval)
+                v = maxval; /* out-of-range samples are clamped */
+            px[ch] = lut[v];
+        }
+        if (channels == 1)
+            px[1] = px[2] = px[0];
+        px[3] = 1.0f;
+    }
+    free(lut);
+    return 0;
+}

@@ -1,0 +1,903 @@
+/* Image I/O: EXR/PNG/PPM round trips, POV-Ray's display encoding, atomic
+ * writes, and resistance to truncated or garbage files. Temporary files go to
+ * a fresh folder under $TMPDIR (else /tmp), removed at the end. With $POVRAY
+ * set (configure exports it), POV-Ray's own PNG/PPM encoding is checked. */
+#include <dirent.h>
+#include <errno.h>
+#include <float.h>
+#include <math.h>
+#include <openexr.h>
+#include <png.h>
+#include <signal.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "image.h"
+#include "image_codec.h"
+#include "tap.h"
+
+static char workdir[4096];
+
+static const char *tmp_path(const char *name)
+{
+    static char buf[8][4200];
+    static int next;
+    char *p = buf[next++ % 8];
+    snprintf(p, sizeof buf[0], "%s/%s", workdir, name);
+    return p;
+}
+
+static int make_workdir(void)
+{
+    /* $TMPDIR, else /tmp; the build folder only as a last resort (it is the
+     * source tree in an in-tree build). */
+    const char *bases[3] = { getenv("TMPDIR"), "/tmp", getenv("top_builddir") };
+    for (int i = 0; i < 3; i++) {
+        if (bases[i] == NULL || bases[i][0] == '\0')
+            continue;
+        snprintf(workdir, sizeof workdir, "%s/hst-test-image-XXXXXX", bases[i]);
+        if (mkdtemp(workdir) != NULL)
+            return 0;
+    }
+    return -1;
+}
+
+static void remove_tree(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char p[4400];
+    if (d == NULL)
+        return;
+    while ((e = readdir(d)) != NULL) {
+        struct stat st;
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+        if (lstat(p, &st) == 0 && S_ISDIR(st.st_mode))
+            remove_tree(p);
+        else
+            unlink(p);
+    }
+    closedir(d);
+    rmdir(dir);
+}
+
+/* Names in a folder other than . and .., for checking that no temporary
+ * file was left behind. */
+static int count_entries(const char *dir, int *hidden)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    int n = 0;
+    *hidden = 0;
+    if (d == NULL)
+        return -1;
+    while ((e = readdir(d)) != NULL) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        n++;
+        if (e->d_name[0] == '.')
+            (*hidden)++;
+    }
+    closedir(d);
+    return n;
+}
+
+static unsigned char *slurp(const char *path, long *len)
+{
+    FILE *f = fopen(path, "rb");
+    unsigned char *buf;
+    long n;
+    *len = -1;
+    if (f == NULL)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    buf = malloc(n > 0 ? (size_t)n : 1);
+    if (buf != NULL && fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    }
+    fclose(f);
+    if (buf != NULL)
+        *len = n;
+    return buf;
+}
+
+static int spit(const char *path, const void *data, long len)
+{
+    FILE *f = fopen(path, "wb");
+    int ok;
+    if (f == NULL)
+        return -1;
+    ok = fwrite(data, 1, (size_t)len, f) == (size_t)len;
+    return fclose(f) == 0 && ok ? 0 : -1;
+}
+
+/* A test picture: smooth ramps, values above 1, tiny values, distinct
+ * channels, premultiplied alpha (colour <= alpha except a few highlights). */
+static void fill_test_image(Image *img, int with_alpha)
+{
+    for (int y = 0; y < img->height; y++) {
+        for (int x = 0; x < img->width; x++) {
+            float *p = img->rgba + ((size_t)y * img->width + x) * 4;
+            float u = (float)x / (float)(img->width - 1), v = (float)y / (float)(img->height - 1);
+            float a = with_alpha ? 0.25f + 0.75f * v : 1.0f;
+            p[0] = u * a;
+            p[1] = (1.0f - u) * 0.5f * a;
+            p[2] = (x % 7 == 0 ? 1e-4f * (float)(y + 1) : u * v * 0.9f) * a;
+            p[3] = a;
+            if (x == img->width - 1 && y % 3 == 0)
+                p[0] = 2.5f; /* a highlight above 1 */
+        }
+    }
+}
+
+/* ---- format detection and buffers ------------------------------------- */
+
+static void test_basics(void)
+{
+    Image img;
+    tap_ok(image_format_from_path("a.exr") == IMAGE_FORMAT_EXR, "format: .exr");
+    tap_ok(image_format_from_path("dir.png/b.EXR") == IMAGE_FORMAT_EXR, "format: .EXR, case-insensitive");
+    tap_ok(image_format_from_path("x/y.Png") == IMAGE_FORMAT_PNG, "format: .Png");
+    tap_ok(image_format_from_path("out.ppm") == IMAGE_FORMAT_PPM, "format: .ppm");
+    tap_ok(image_format_from_path("out.tga") == IMAGE_FORMAT_UNKNOWN, "format: .tga unknown");
+    tap_ok(image_format_from_path("dir.png/noext") == IMAGE_FORMAT_UNKNOWN, "format: dot only in folder name");
+    tap_ok(image_format_from_path("png") == IMAGE_FORMAT_UNKNOWN, "format: no extension");
+
+    tap_ok(image_alloc(&img, 3, 2) == 0 && img.width == 3 && img.height == 2 && img.rgba != NULL &&
+               img.rgba[23] == 0.0f,
+           "image_alloc gives a zeroed 3x2 buffer");
+    image_free(&img);
+    tap_ok(img.rgba == NULL && img.width == 0, "image_free clears the image");
+    image_free(&img); /* twice is harmless */
+    tap_ok(image_alloc(&img, 0, 5) != 0 && img.rgba == NULL, "image_alloc refuses a zero width");
+    tap_ok(image_alloc(&img, -3, 5) != 0, "image_alloc refuses a negative width");
+    tap_ok(image_alloc(&img, 1 << 20, 1 << 20) != 0, "image_alloc refuses absurd sizes");
+}
+
+/* ---- the display encoding ------------------------------------------------ */
+
+static double srgb_formula(double x)
+{
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
+}
+
+static void test_encoding(void)
+{
+    ImageTransfer srgb, g22, g1;
+    int worst = 0, code_mismatch = 0, inverse_bad = 0;
+    double maxerr = 0;
+
+    image_transfer_init(&srgb, 0.0);
+    image_transfer_init(&g22, 2.2);
+    image_transfer_init(&g1, 1.0);
+    tap_ok(srgb.srgb && !g22.srgb && g1.neutral, "display_gamma 0 is sRGB, 2.2 a power law, 1.0 neutral");
+
+    tap_ok(image_transfer_encode(&srgb, 0.0f) == 0.0f, "sRGB encode(0) = 0");
+    tap_ok(fabs(image_transfer_encode(&srgb, 1.0f) - 1.0) < 1e-6, "sRGB encode(1) = 1");
+    tap_ok(fabs(image_transfer_encode(&srgb, 0.0031308f) - 0.0404500) < 1e-6, "sRGB encode at the knee = 0.04045");
+    tap_ok(fabs(image_transfer_encode(&srgb, 0.5f) - 0.7353569831) < 2e-6, "sRGB encode(0.5) = 0.735357");
+    tap_ok(fabs(image_transfer_encode(&srgb, 0.18f) - 0.4613561) < 2e-6, "sRGB encode(0.18) = 0.461356");
+    tap_ok(fabs(image_transfer_encode(&srgb, 0.001f) - 0.01292) < 1e-7, "sRGB encode(0.001) = 0.01292 (linear part)");
+    tap_ok(image_quantize(image_transfer_encode(&srgb, 0.5f), 255) == 188, "0.5 encodes to 188");
+    tap_ok(image_quantize(image_transfer_encode(&srgb, 0.18f), 255) == 118, "0.18 encodes to 118");
+    tap_ok(image_quantize(image_transfer_encode(&srgb, 0.5f), 65535) == 48192, "0.5 encodes to 48192 in 16 bits");
+    tap_ok(image_quantize(-0.5f, 255) == 0 && image_quantize(7.0f, 255) == 255 && image_quantize(NAN, 255) == 0 &&
+               image_quantize(INFINITY, 255) == 255 && image_quantize(-INFINITY, 65535) == 0,
+           "quantize clamps negative, large, infinite and NaN values");
+    tap_ok(image_quantize(0.5f, 1) == 1 && image_quantize(0.49f, 1) == 0 && image_quantize(0.5f, 255) == 128,
+           "quantize rounds half up (floor(x*max+0.5))");
+
+    for (int i = 0; i <= 100000; i++) {
+        double x = i / 100000.0;
+        double e = fabs(image_transfer_encode(&srgb, (float)x) - srgb_formula(x));
+        unsigned q = image_quantize(image_transfer_encode(&srgb, (float)x), 255);
+        unsigned qd = (unsigned)floor(srgb_formula(x) * 255.0 + 0.5);
+        if (e > maxerr)
+            maxerr = e;
+        if (q != qd) {
+            code_mismatch++;
+            if ((int)abs((int)q - (int)qd) > worst)
+                worst = abs((int)q - (int)qd);
+        }
+    }
+    tap_ok(maxerr < 1e-6, "sRGB encoder follows the formula over 0..1 (max error %.2g)", maxerr);
+    tap_diag("8-bit codes differing from the double-precision formula: %d of 100001 (rounding ties only)",
+             code_mismatch);
+    tap_ok(worst <= 1 && code_mismatch < 50, "8-bit codes equal the formula's except at rounding ties");
+
+    for (unsigned i = 0; i <= 255; i++) {
+        float lin = image_transfer_decode(&srgb, (float)i / 255.0f);
+        if (image_quantize(image_transfer_encode(&srgb, lin), 255) != i)
+            inverse_bad++;
+    }
+    tap_ok(inverse_bad == 0, "sRGB decode inverts encode for every 8-bit code");
+
+    tap_ok(fabs(image_transfer_encode(&g22, 0.5f) - pow(0.5, 1 / 2.2)) < 1e-6, "gamma 2.2 encode(0.5) = 0.5^(1/2.2)");
+    tap_ok(fabs(image_transfer_decode(&g22, 0.5f) - pow(0.5, 2.2)) < 1e-6, "gamma 2.2 decode(0.5) = 0.5^2.2");
+    tap_ok(image_transfer_encode(&g22, -1.0f) == 0.0f, "gamma 2.2 encodes negatives as 0");
+    tap_ok(image_transfer_encode(&g1, 0.3f) == 0.3f, "gamma 1.0 is the identity");
+    tap_ok(fabs(srgb.gama - 0.45455) < 1e-5 && fabs(g22.gama - 1 / 2.2) < 1e-6 && g1.gama == 1.0,
+           "PNG gAMA values: 1/2.2 for sRGB and 2.2, 1 for 1.0");
+
+    {
+        /* POV-Ray's un-premultiplication for files with alpha */
+        ImageTransfer t = srgb;
+        unsigned q[4];
+        const float half_red[4] = { 0.25f, 0.0f, 0.0f, 0.5f };
+        const float bright[4] = { 1.8f, 1.8f, 1.8f, 0.9f };
+        const float clear[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+        image_encode_pixel(&t, half_red, 255, 1, q);
+        tap_ok(q[0] == 188 && q[1] == 0 && q[2] == 0 && q[3] == 128, "RGBA: premultiplied 0.25/0.5 becomes 0.5 straight");
+        image_encode_pixel(&t, bright, 255, 1, q);
+        tap_ok(q[3] == 255 && q[0] == 255, "RGBA: a highlight brighter than alpha raises alpha to 1");
+        image_encode_pixel(&t, clear, 255, 1, q);
+        tap_ok(q[0] == 0 && q[3] == 0, "RGBA: fully transparent black stays 0,0,0,0");
+        image_encode_pixel(&t, half_red, 255, 0, q);
+        tap_ok(q[0] == 137 && q[1] == 0, "RGB: premultiplied colour is written as is (over black)");
+    }
+}
+
+/* ---- EXR ------------------------------------------------------------------- */
+
+static int same_float(float a, float b)
+{
+    return a == b || (isnan(a) && isnan(b));
+}
+
+static int near_half(float got, float want)
+{
+    /* half has 11 significant bits: error at most 2^-11 relative after
+     * round to nearest, 2^-25 absolute for subnormals */
+    return fabsf(got - want) <= fabsf(want) * (1.0f / 2048.0f) + 6.0e-8f;
+}
+
+static void test_exr(void)
+{
+    Image src, back;
+    ImageWriteOptions opt = { 0 };
+    char err[512];
+    const char *p = tmp_path("round.exr");
+    int bad = 0;
+
+    image_alloc(&src, 61, 37); /* odd sizes: partial 16-line blocks */
+    fill_test_image(&src, 1);
+    src.rgba[0] = -0.75f;      /* negatives survive EXR */
+    src.rgba[5] = 65504.0f;    /* largest half */
+    src.rgba[10] = 1.0e-7f;    /* half subnormal */
+    src.rgba[4 * 100 + 3] = 0.0f;
+
+    opt.exr_float = 1;
+    tap_ok(image_write(p, &src, &opt, err, sizeof err) == 0, "EXR float written (%s)", err);
+    tap_ok(image_read(p, &back, 0, err, sizeof err) == 0 && back.width == 61 && back.height == 37,
+           "EXR float read back (%s)", err);
+    for (size_t i = 0; back.rgba && i < (size_t)61 * 37 * 4; i++)
+        bad += !same_float(back.rgba[i], src.rgba[i]);
+    tap_ok(back.rgba && bad == 0, "EXR float round trip is exact (%d differences)", bad);
+    image_free(&back);
+
+    /* the header as the brief wants it, read through the C API */
+    {
+        exr_context_t ctx;
+        exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+        const exr_attr_chlist_t *ch = NULL;
+        exr_compression_t comp = EXR_COMPRESSION_LAST_TYPE;
+        exr_attr_box2i_t dw, dsp;
+        exr_storage_t st;
+        int ok = exr_start_read(&ctx, p, &init) == EXR_ERR_SUCCESS;
+        ok = ok && exr_get_channels(ctx, 0, &ch) == EXR_ERR_SUCCESS && ch->num_channels == 4;
+        ok = ok && strcmp(ch->entries[0].name.str, "A") == 0 && strcmp(ch->entries[1].name.str, "B") == 0 &&
+             strcmp(ch->entries[2].name.str, "G") == 0 && strcmp(ch->entries[3].name.str, "R") == 0;
+        ok = ok && ch->entries[0].pixel_type == EXR_PIXEL_FLOAT;
+        ok = ok && exr_get_compression(ctx, 0, &comp) == EXR_ERR_SUCCESS && comp == EXR_COMPRESSION_ZIP;
+        ok = ok && exr_get_storage(ctx, 0, &st) == EXR_ERR_SUCCESS && st == EXR_STORAGE_SCANLINE;
+        ok = ok && exr_get_data_window(ctx, 0, &dw) == EXR_ERR_SUCCESS &&
+             exr_get_display_window(ctx, 0, &dsp) == EXR_ERR_SUCCESS;
+        ok = ok && dw.min.x == 0 && dw.min.y == 0 && dw.max.x == 60 && dw.max.y == 36 && dsp.min.x == 0 &&
+             dsp.max.x == 60 && dsp.max.y == 36;
+        exr_finish(&ctx);
+        tap_ok(ok, "EXR header: scanline, ZIP, channels A,B,G,R float, data window = display window = 0..60,0..36");
+    }
+
+    opt.exr_float = 0;
+    tap_ok(image_write(p, &src, &opt, err, sizeof err) == 0, "EXR half written over the float one (%s)", err);
+    bad = 0;
+    tap_ok(image_read(p, &back, 0, err, sizeof err) == 0, "EXR half read back (%s)", err);
+    for (size_t i = 0; back.rgba && i < (size_t)61 * 37 * 4; i++)
+        bad += !near_half(back.rgba[i], src.rgba[i]);
+    tap_ok(back.rgba && bad == 0, "EXR half round trip within half precision (%d outside)", bad);
+    tap_ok(back.rgba && back.rgba[5] == 65504.0f && back.rgba[0] == -0.75f && back.rgba[4 * 100 + 3] == 0.0f,
+           "EXR half keeps exact halves (65504, -0.75, 0)");
+    image_free(&back);
+
+    {
+        static const struct {
+            ImageExrCompression c;
+            const char *name;
+        } comps[] = { { IMAGE_EXR_NONE, "none" }, { IMAGE_EXR_RLE, "RLE" }, { IMAGE_EXR_ZIPS, "ZIPS" },
+                      { IMAGE_EXR_ZIP, "ZIP" }, { IMAGE_EXR_PIZ, "PIZ" } };
+        for (size_t k = 0; k < sizeof comps / sizeof comps[0]; k++) {
+            for (int fl = 0; fl <= 1; fl++) {
+                opt.exr_compression = comps[k].c;
+                opt.exr_float = fl;
+                bad = -1;
+                if (image_write(p, &src, &opt, err, sizeof err) == 0 && image_read(p, &back, 0, err, sizeof err) == 0) {
+                    bad = 0;
+                    for (size_t i = 0; i < (size_t)61 * 37 * 4; i++)
+                        bad += fl ? !same_float(back.rgba[i], src.rgba[i]) : !near_half(back.rgba[i], src.rgba[i]);
+                    image_free(&back);
+                }
+                tap_ok(bad == 0, "EXR %s %s compression round trip (%s)", fl ? "float" : "half", comps[k].name,
+                       bad < 0 ? err : "ok");
+            }
+        }
+        opt.exr_compression = IMAGE_EXR_ZIP;
+        opt.exr_float = 0;
+    }
+    image_free(&src);
+}
+
+/* A tiled RGB half EXR written with the C API: 16x16 tiles over 37x21
+ * (partial edge tiles), decreasing compression choice by argument. */
+static int write_tiled_rgb(const char *path, const Image *img, exr_compression_t comp)
+{
+    static const char *const names[3] = { "B", "G", "R" };
+    static const int slot[3] = { 2, 1, 0 };
+    exr_context_t ctx;
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    exr_encode_pipeline_t enc;
+    int part, started = 0, ok;
+    const int T = 16, cx = (img->width + T - 1) / T, cy = (img->height + T - 1) / T;
+
+    memset(&enc, 0, sizeof enc);
+    ok = exr_start_write(&ctx, path, EXR_WRITE_FILE_DIRECTLY, &init) == EXR_ERR_SUCCESS;
+    ok = ok && exr_add_part(ctx, "", EXR_STORAGE_TILED, &part) == EXR_ERR_SUCCESS;
+    ok = ok && exr_initialize_required_attr_simple(ctx, part, img->width, img->height, comp) == EXR_ERR_SUCCESS;
+    ok = ok && exr_set_tile_descriptor(ctx, part, T, T, EXR_TILE_ONE_LEVEL, EXR_TILE_ROUND_DOWN) == EXR_ERR_SUCCESS;
+    for (int c = 0; c < 3 && ok; c++)
+        ok = exr_add_channel(ctx, part, names[c], EXR_PIXEL_HALF, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1) ==
+             EXR_ERR_SUCCESS;
+    ok = ok && exr_write_header(ctx) == EXR_ERR_SUCCESS;
+    for (int ty = 0; ty < cy && ok; ty++) {
+        for (int tx = 0; tx < cx && ok; tx++) {
+            exr_chunk_info_t ci;
+            ok = exr_write_tile_chunk_info(ctx, part, tx, ty, 0, 0, &ci) == EXR_ERR_SUCCESS;
+            if (ok && !started)
+                ok = started = exr_encoding_initialize(ctx, part, &ci, &enc) == EXR_ERR_SUCCESS;
+            else if (ok)
+                ok = exr_encoding_update(ctx, part, &ci, &enc) == EXR_ERR_SUCCESS;
+            for (int c = 0; ok && c < enc.channel_count; c++) {
+                int k = 0;
+                while (strcmp(enc.channels[c].channel_name, names[k]) != 0)
+                    k++;
+                enc.channels[c].user_data_type = EXR_PIXEL_FLOAT;
+                enc.channels[c].user_bytes_per_element = 4;
+                enc.channels[c].user_pixel_stride = 16;
+                enc.channels[c].user_line_stride = img->width * 16;
+                enc.channels[c].encode_from_ptr =
+                    (const uint8_t *)(img->rgba + ((size_t)ty * T * img->width + (size_t)tx * T) * 4 + slot[k]);
+            }
+            if (ok && tx == 0 && ty == 0)
+                ok = exr_encoding_choose_default_routines(ctx, part, &enc) == EXR_ERR_SUCCESS;
+            ok = ok && exr_encoding_run(ctx, part, &enc) == EXR_ERR_SUCCESS;
+        }
+    }
+    if (started)
+        exr_encoding_destroy(ctx, &enc);
+    return exr_finish(&ctx) == EXR_ERR_SUCCESS && ok ? 0 : -1;
+}
+
+static void test_exr_tiled(void)
+{
+    static const struct {
+        exr_compression_t c;
+        const char *name;
+    } comps[] = { { EXR_COMPRESSION_ZIP, "ZIP" }, { EXR_COMPRESSION_PIZ, "PIZ" }, { EXR_COMPRESSION_RLE, "RLE" },
+                  { EXR_COMPRESSION_NONE, "none" } };
+    Image src, back;
+    char err[512];
+    const char *p = tmp_path("tiled.exr");
+
+    image_alloc(&src, 37, 21);
+    fill_test_image(&src, 0);
+    for (size_t k = 0; k < sizeof comps / sizeof comps[0]; k++) {
+        int bad = -1;
+        if (write_tiled_rgb(p, &src, comps[k].c) == 0 && image_read(p, &back, 0, err, sizeof err) == 0) {
+            bad = back.width == 37 && back.height == 21 ? 0 : 1;
+            for (size_t i = 0; !bad && i < (size_t)37 * 21; i++) {
+                bad += !near_half(back.rgba[4 * i], src.rgba[4 * i]) ||
+                       !near_half(back.rgba[4 * i + 1], src.rgba[4 * i + 1]) ||
+                       !near_half(back.rgba[4 * i + 2], src.rgba[4 * i + 2]) || back.rgba[4 * i + 3] != 1.0f;
+            }
+            image_free(&back);
+        }
+        tap_ok(bad == 0, "tiled RGB (no A) %s EXR reads back, alpha 1", comps[k].name);
+    }
+    image_free(&src);
+}
+
+/* ---- PNG ------------------------------------------------------------------- */
+
+/* Compares decoded samples in the encoded domain: within `steps` codes of
+ * the original. Colours are compared un-premultiplied. */
+static int png_ppm_mismatches(const Image *a, const Image *b, double gamma, unsigned max, int with_alpha, float steps)
+{
+    ImageTransfer t;
+    int bad = 0;
+    image_transfer_init(&t, gamma);
+    for (size_t i = 0; i < (size_t)a->width * a->height; i++) {
+        const float *pa = a->rgba + 4 * i, *pb = b->rgba + 4 * i;
+        unsigned qa[4], qb[4];
+        image_encode_pixel(&t, pa, max, with_alpha, qa);
+        image_encode_pixel(&t, pb, max, with_alpha, qb);
+        for (int c = 0; c < (with_alpha ? 4 : 3); c++)
+            if (fabsf((float)qa[c] - (float)qb[c]) > steps)
+                bad++;
+        if (!with_alpha && pb[3] != 1.0f)
+            bad++;
+    }
+    return bad;
+}
+
+static int png_chunks(const char *path, int *depth, int *ctype, int *has_srgb, unsigned long *gama)
+{
+    FILE *f = fopen(path, "rb");
+    png_structp png;
+    png_infop info;
+    png_fixed_point g = 0;
+    int intent;
+    if (f == NULL)
+        return -1;
+    png = png_create_read_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    info = png_create_info_struct(png);
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_read_struct(&png, &info, NULL);
+        fclose(f);
+        return -1;
+    }
+    png_init_io(png, f);
+    png_read_info(png, info);
+    *depth = png_get_bit_depth(png, info);
+    *ctype = png_get_color_type(png, info);
+    *has_srgb = png_get_sRGB(png, info, &intent) != 0;
+    *gama = png_get_gAMA_fixed(png, info, &g) ? (unsigned long)g : 0;
+    png_destroy_read_struct(&png, &info, NULL);
+    fclose(f);
+    return 0;
+}
+
+static void test_png(void)
+{
+    Image src, back;
+    ImageWriteOptions opt = { 0 };
+    char err[512];
+    const char *p = tmp_path("round.png");
+
+    image_alloc(&src, 67, 29);
+    fill_test_image(&src, 0);
+    for (int bits16 = 0; bits16 <= 1; bits16++) {
+        for (int alpha = 0; alpha <= 1; alpha++) {
+            int depth = 0, ctype = 0, srgb = 0, bad = -1;
+            unsigned long gama = 0;
+            Image *s = &src, withalpha;
+            if (alpha) {
+                image_alloc(&withalpha, 67, 29);
+                fill_test_image(&withalpha, 1);
+                s = &withalpha;
+            }
+            opt.png_16bit = bits16;
+            opt.write_alpha = alpha;
+            opt.display_gamma = 0.0;
+            if (image_write(p, s, &opt, err, sizeof err) == 0 && image_read(p, &back, 0.0, err, sizeof err) == 0) {
+                bad = png_ppm_mismatches(s, &back, 0.0, bits16 ? 65535 : 255, alpha, bits16 ? 1.0f : 1.0f);
+                image_free(&back);
+            }
+            tap_ok(bad == 0, "PNG %d-bit %s round trip within one step (%s)", bits16 ? 16 : 8, alpha ? "RGBA" : "RGB",
+                   bad < 0 ? err : "ok");
+            png_chunks(p, &depth, &ctype, &srgb, &gama);
+            tap_ok(depth == (bits16 ? 16 : 8) && ctype == (alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB) &&
+                       srgb && gama == 45455,
+                   "PNG %d-bit %s: IHDR layout, sRGB chunk and gAMA 45455", bits16 ? 16 : 8, alpha ? "RGBA" : "RGB");
+            if (alpha)
+                image_free(&withalpha);
+        }
+    }
+
+    /* a power-law gamma: gAMA 1/2.2, no sRGB chunk, decoded by the same law */
+    {
+        int depth = 0, ctype = 0, srgb = 1, bad = -1;
+        unsigned long gama = 0;
+        opt.png_16bit = 0;
+        opt.write_alpha = 0;
+        opt.display_gamma = 2.2;
+        if (image_write(p, &src, &opt, err, sizeof err) == 0 && image_read(p, &back, 2.2, err, sizeof err) == 0) {
+            bad = png_ppm_mismatches(&src, &back, 2.2, 255, 0, 1.0f);
+            image_free(&back);
+        }
+        tap_ok(bad == 0, "PNG gamma 2.2 round trip within one step");
+        png_chunks(p, &depth, &ctype, &srgb, &gama);
+        tap_ok(!srgb && gama == 45455, "PNG gamma 2.2: gAMA 45455 and no sRGB chunk");
+    }
+
+    /* exact values: codes 0..255 decode to the sRGB curve */
+    {
+        Image ramp;
+        ImageTransfer t;
+        int bad = 0;
+        image_transfer_init(&t, 0.0);
+        image_alloc(&ramp, 256, 1);
+        for (int i = 0; i < 256; i++) {
+            ramp.rgba[4 * i] = ramp.rgba[4 * i + 1] = ramp.rgba[4 * i + 2] = image_transfer_decode(&t, i / 255.0f);
+            ramp.rgba[4 * i + 3] = 1.0f;
+        }
+        memset(&opt, 0, sizeof opt);
+        if (image_write(p, &ramp, &opt, err, sizeof err) == 0 && image_read(p, &back, 0.0, err, sizeof err) == 0) {
+            for (int i = 0; i < 256; i++)
+                bad += back.rgba[4 * i] != ramp.rgba[4 * i];
+            image_free(&back);
+        } else {
+            bad = -1;
+        }
+        tap_ok(bad == 0, "PNG: every 8-bit code survives write and read exactly");
+        image_free(&ramp);
+    }
+    image_free(&src);
+}
+
+/* ---- PPM ------------------------------------------------------------------- */
+
+static void test_ppm(void)
+{
+    Image src, back;
+    ImageWriteOptions opt = { 0 };
+    char err[512];
+    const char *p = tmp_path("round.ppm");
+    unsigned char *data;
+    long len;
+    int bad = -1;
+
+    image_alloc(&src, 45, 33);
+    fill_test_image(&src, 0);
+    if (image_write(p, &src, &opt, err, sizeof err) == 0 && image_read(p, &back, 0.0, err, sizeof err) == 0) {
+        bad = png_ppm_mismatches(&src, &back, 0.0, 255, 0, 1.0f);
+        image_free(&back);
+    }
+    tap_ok(bad == 0, "PPM round trip within one 8-bit step (%s)", bad < 0 ? err : "ok");
+    data = slurp(p, &len);
+    tap_ok(data != NULL && len == 13 + 45 * 33 * 3 && memcmp(data, "P6\n45 33\n255\n", 13) == 0,
+           "PPM is binary P6 with maxval 255");
+    /* same bytes as the PNG encoder: compare with a direct encoding */
+    if (data != NULL) {
+        ImageTransfer t;
+        int diff = 0;
+        image_transfer_init(&t, 0.0);
+        for (int i = 0; i < 45 * 33; i++) {
+            unsigned q[4];
+            image_encode_pixel(&t, src.rgba + 4 * i, 255, 0, q);
+            for (int c = 0; c < 3; c++)
+                diff += data[13 + 3 * i + c] != q[c];
+        }
+        tap_ok(diff == 0, "PPM bytes are the display encoding of the pixels");
+    }
+    free(data);
+
+    {
+        const char *txt = "P3\n# a comment\n2 1\n# another\n255\n255 0 0   0 128 255\n";
+        const char *p3 = tmp_path("ascii.ppm");
+        spit(p3, txt, (long)strlen(txt));
+        tap_ok(image_read(p3, &back, 0.0, err, sizeof err) == 0 && back.width == 2 && back.rgba[0] == 1.0f &&
+                   back.rgba[1] == 0.0f && back.rgba[6] == 1.0f && fabsf(back.rgba[5] - 0.2158605f) < 1e-5f &&
+                   back.rgba[3] == 1.0f,
+               "PPM P3 with comments reads (%s)", err);
+        image_free(&back);
+    }
+    {
+        const unsigned char bin[] = { 'P', '6', '\n', '1', ' ', '1', '\n', '6', '5', '5', '3', '5', '\n',
+                                      0xff, 0xff, 0x80, 0x00, 0x00, 0x00 };
+        const char *p16 = tmp_path("wide.ppm");
+        ImageTransfer t;
+        image_transfer_init(&t, 0.0);
+        spit(p16, bin, sizeof bin);
+        tap_ok(image_read(p16, &back, 0.0, err, sizeof err) == 0 && back.rgba[0] == 1.0f &&
+                   fabsf(back.rgba[1] - image_transfer_decode(&t, 32768.0f / 65535.0f)) < 1e-6f && back.rgba[2] == 0.0f,
+               "PPM P6 with maxval 65535 reads two bytes a sample (%s)", err);
+        image_free(&back);
+    }
+    image_free(&src);
+}
+
+/* ---- atomic writes ---------------------------------------------------------- */
+
+static void test_atomic(void)
+{
+    Image img;
+    ImageWriteOptions opt = { 0 };
+    char err[512];
+    const char *dir = tmp_path("atomic");
+    char target[4400], missing[4400];
+    unsigned char *before, *after;
+    long lb, la;
+    int hidden, n;
+
+    mkdir(dir, 0777);
+    image_alloc(&img, 256, 256);
+    fill_test_image(&img, 0);
+
+    snprintf(missing, sizeof missing, "%s/no/such/folder/x.png", dir);
+    tap_ok(image_write(missing, &img, &opt, err, sizeof err) == -1, "write into a missing folder fails");
+    tap_ok(strstr(err, "cannot write '") != NULL && strstr(err, missing) != NULL &&
+               strstr(err, strerror(ENOENT)) != NULL,
+           "message names the file and the reason: %s", err);
+    n = count_entries(dir, &hidden);
+    tap_ok(n == 0, "nothing was created");
+
+    snprintf(target, sizeof target, "%s/out.exr", dir);
+    opt.exr_float = 0;
+    tap_ok(image_write(target, &img, &opt, err, sizeof err) == 0, "write an EXR (%s)", err);
+    before = slurp(target, &lb);
+    n = count_entries(dir, &hidden);
+    tap_ok(n == 1 && hidden == 0, "only the target exists after a successful write");
+    {
+        struct stat st;
+        mode_t um = umask(022);
+        umask(um);
+        tap_ok(stat(target, &st) == 0 && (st.st_mode & 0777) == (0666 & ~um), "new file has mode 0666 & ~umask");
+    }
+
+    /* A write that fails half way: limit the file size, as a full disk would.
+     * The existing target must be untouched and no temporary left. */
+    {
+        struct rlimit old, lim;
+        void (*oldsig)(int) = signal(SIGXFSZ, SIG_IGN);
+        int rc;
+        getrlimit(RLIMIT_FSIZE, &old);
+        lim = old;
+        lim.rlim_cur = 4096;
+        opt.exr_float = 1; /* bigger than 4096 bytes in any format */
+        setrlimit(RLIMIT_FSIZE, &lim);
+        rc = image_write(target, &img, &opt, err, sizeof err);
+        setrlimit(RLIMIT_FSIZE, &old);
+        tap_ok(rc == -1 && strstr(err, target) != NULL, "EXR write failing half way reports it: %s", err);
+        setrlimit(RLIMIT_FSIZE, &lim);
+        rc = image_write(tmp_path("atomic/out.png"), &img, &opt, err, sizeof err);
+        setrlimit(RLIMIT_FSIZE, &old);
+        tap_ok(rc == -1 && strstr(err, "out.png") != NULL, "PNG write failing half way reports it: %s", err);
+        setrlimit(RLIMIT_FSIZE, &lim);
+        rc = image_write(tmp_path("atomic/out.ppm"), &img, &opt, err, sizeof err);
+        setrlimit(RLIMIT_FSIZE, &old);
+        tap_ok(rc == -1 && strstr(err, "out.ppm") != NULL, "PPM write failing half way reports it: %s", err);
+        signal(SIGXFSZ, oldsig);
+        opt.exr_float = 0;
+    }
+    after = slurp(target, &la);
+    tap_ok(before != NULL && after != NULL && la == lb && memcmp(before, after, (size_t)lb) == 0,
+           "the existing target is unchanged");
+    n = count_entries(dir, &hidden);
+    tap_ok(n == 1 && hidden == 0, "no temporary and no partial file left behind (%d entries)", n);
+    free(after);
+
+    /* rename onto a folder fails: the temporary must go too */
+    {
+        char sub[4400];
+        snprintf(sub, sizeof sub, "%s/folder.png", dir);
+        mkdir(sub, 0777);
+        tap_ok(image_write(sub, &img, &opt, err, sizeof err) == -1, "writing over a folder fails: %s", err);
+        n = count_entries(dir, &hidden);
+        tap_ok(n == 2 && hidden == 0, "no temporary left after a failed rename");
+        rmdir(sub);
+    }
+
+    tap_ok(image_write(tmp_path("atomic/x.tga"), &img, &opt, err, sizeof err) == -1 && strstr(err, "x.tga"),
+           "unknown extension refused: %s", err);
+    {
+        Image empty = { 0, 0, NULL };
+        tap_ok(image_write(target, &empty, &opt, err, sizeof err) == -1, "empty image refused: %s", err);
+    }
+
+    /* replacing works and keeps no temporaries */
+    fill_test_image(&img, 1);
+    tap_ok(image_write(target, &img, &opt, err, sizeof err) == 0, "overwriting the target succeeds");
+    after = slurp(target, &la);
+    tap_ok(after != NULL && (la != lb || memcmp(before, after, (size_t)lb) != 0), "the target has the new content");
+    n = count_entries(dir, &hidden);
+    tap_ok(n == 1 && hidden == 0, "still one file in the folder");
+    free(before);
+    free(after);
+    image_free(&img);
+}
+
+/* ---- broken files ------------------------------------------------------------ */
+
+static void check_broken(const char *label, const unsigned char *data, long len, int *crashes, int *silent)
+{
+    const char *p = tmp_path(label);
+    Image img;
+    char err[512];
+    int rc;
+
+    spit(p, data, len);
+    err[0] = '\0';
+    rc = image_read(p, &img, 0.0, err, sizeof err);
+    if (rc == 0)
+        image_free(&img);
+    else if (err[0] == '\0')
+        (*silent)++;
+    (void)crashes;
+}
+
+static void test_broken(void)
+{
+    static const char *const names[3] = { "good.exr", "good.png", "good.ppm" };
+    Image img, back;
+    ImageWriteOptions opt = { 0 };
+    char err[512];
+    uint32_t seed = 12345;
+
+    image_alloc(&img, 40, 40);
+    fill_test_image(&img, 1);
+    image_write(tmp_path(names[0]), &img, &opt, err, sizeof err);
+    image_write(tmp_path(names[1]), &img, &opt, err, sizeof err);
+    image_write(tmp_path(names[2]), &img, &opt, err, sizeof err);
+
+    tap_ok(image_read(tmp_path("does-not-exist.png"), &back, 0, err, sizeof err) == -1 &&
+               strstr(err, "does-not-exist.png") && strstr(err, strerror(ENOENT)),
+           "missing file: %s", err);
+    tap_ok(image_read(workdir, &back, 0, err, sizeof err) == -1 && back.rgba == NULL, "a folder: %s", err);
+    spit(tmp_path("empty.png"), "", 0);
+    tap_ok(image_read(tmp_path("empty.png"), &back, 0, err, sizeof err) == -1, "empty file: %s", err);
+    spit(tmp_path("text.exr"), "hello, this is not an image at all\n", 35);
+    tap_ok(image_read(tmp_path("text.exr"), &back, 0, err, sizeof err) == -1, "text file: %s", err);
+
+    for (int f = 0; f < 3; f++) {
+        long len;
+        unsigned char *good = slurp(tmp_path(names[f]), &len);
+        int truncated_ok = 0, truncated_total = 0, silent = 0, crashes = 0;
+        if (good == NULL) {
+            tap_ok(0, "%s was written", names[f]);
+            continue;
+        }
+        /* every truncation length for the header, then a stride */
+        for (long cut = 0; cut < len; cut += cut < 400 ? 1 : 37) {
+            Image t;
+            const char *p = tmp_path(f == 0 ? "cut.exr" : f == 1 ? "cut.png" : "cut.ppm");
+            spit(p, good, cut);
+            err[0] = '\0';
+            truncated_total++;
+            if (image_read(p, &t, 0.0, err, sizeof err) == 0)
+                image_free(&t);
+            else if (err[0] != '\0')
+                truncated_ok++;
+        }
+        tap_ok(truncated_ok == truncated_total, "%s: all %d truncations give an error with a message", names[f],
+               truncated_total);
+        /* random byte corruption: must not crash (sanitizers watch), every
+         * failure must say why */
+        for (int iter = 0; iter < 300; iter++) {
+            unsigned char *bad = malloc((size_t)len);
+            memcpy(bad, good, (size_t)len);
+            for (int k = 0; k < 1 + iter % 8; k++) {
+                seed = seed * 1664525u + 1013904223u;
+                long pos = (long)((seed >> 8) % (uint32_t)(iter < 150 && len > 400 ? 400 : len));
+                seed = seed * 1664525u + 1013904223u;
+                bad[pos] = (unsigned char)(seed >> 24);
+            }
+            check_broken(f == 0 ? "fuzz.exr" : f == 1 ? "fuzz.png" : "fuzz.ppm", bad, len, &crashes, &silent);
+            free(bad);
+        }
+        tap_ok(silent == 0, "%s: 300 corrupted copies read or fail with a message", names[f]);
+        /* garbage after a valid magic number */
+        {
+            unsigned char junk[2048];
+            for (size_t i = 0; i < sizeof junk; i++) {
+                seed = seed * 1664525u + 1013904223u;
+                junk[i] = (unsigned char)(seed >> 24);
+            }
+            memcpy(junk, good, 8);
+            check_broken(f == 0 ? "junk.exr" : f == 1 ? "junk.png" : "junk.ppm", junk, sizeof junk, &crashes, &silent);
+            tap_ok(silent == 0, "%s: magic number followed by garbage fails with a message", names[f]);
+        }
+        free(good);
+    }
+    {
+        const char *huge = "P6\n99999999 99999999\n255\n";
+        spit(tmp_path("huge.ppm"), huge, (long)strlen(huge));
+        tap_ok(image_read(tmp_path("huge.ppm"), &back, 0, err, sizeof err) == -1, "absurd PPM size: %s", err);
+        spit(tmp_path("max0.ppm"), "P6\n1 1\n0\n", 9);
+        tap_ok(image_read(tmp_path("max0.ppm"), &back, 0, err, sizeof err) == -1, "PPM maxval 0: %s", err);
+    }
+    image_free(&img);
+}
+
+/* ---- against POV-Ray itself (when $POVRAY names it) --------------------------- */
+
+/* Renders a strip of flat colours whose values are exact in half precision,
+ * to EXR (linear, what POV-Ray computed) and to 8 and 16-bit PNG and PPM;
+ * re-encoding the EXR must give POV-Ray's bytes exactly. */
+static void test_povray(void)
+{
+    const char *povray = getenv("POVRAY");
+    static const char *const outs[4] = { "pov.exr", "pov.png", "pov16.png", "pov.ppm" };
+    static const char *const flags[4] = { "+FE", "+FN", "+FN16", "+FP" };
+    FILE *f;
+    char cmd[16384];
+    Image lin;
+    int ok = 1;
+
+    if (povray == NULL || povray[0] == '\0' || access(povray, X_OK) != 0) {
+        tap_ok(1, "POV-Ray PNG encoding matches # SKIP POVRAY not set");
+        return;
+    }
+    f = fopen(tmp_path("strip.pov"), "w");
+    if (f == NULL) {
+        tap_ok(0, "scene written");
+        return;
+    }
+    fprintf(f, "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+               "camera { orthographic location <0.5,0.5,-1> look_at <0.5,0.5,0> right x up y }\n"
+               "#declare K = 0;\n#while (K < 256)\n"
+               " box { <K/256,2/3,0>, <(K+1)/256,1,1> pigment { rgb <K/256, K/1024, K/64> } finish { ambient 1 diffuse 0 } }\n"
+               " box { <K/256,1/3,0>, <(K+1)/256,2/3,1> pigment { rgb <K/8192, K/32768, K/2048> } finish { ambient 1 diffuse 0 } }\n"
+               " box { <K/256,0,0>, <(K+1)/256,1/3,1> pigment { rgb <(255-K)/512, K/512+0.5, K/128> } finish { ambient 1 diffuse 0 } }\n"
+               " #declare K = K + 1;\n#end\n");
+    fclose(f);
+    for (int i = 0; i < 4 && ok; i++) {
+        snprintf(cmd, sizeof cmd, "cd '%s' && '%s' +Istrip.pov +O%s %s +W256 +H3 -A -D -GA -V >/dev/null 2>&1",
+                 workdir, povray, outs[i], flags[i]);
+        ok = system(cmd) == 0;
+    }
+    if (!ok || image_read(tmp_path("pov.exr"), &lin, 0, cmd, sizeof cmd) != 0) {
+        tap_ok(0, "POV-Ray rendered the strip");
+        return;
+    }
+    for (int i = 1; i < 4; i++) {
+        ImageWriteOptions opt = { 0 };
+        const char *mine = tmp_path(i == 3 ? "mine.ppm" : "mine.png");
+        Image a, b;
+        long mism = -1, total = 0;
+        opt.png_16bit = i == 2;
+        if (image_write(mine, &lin, &opt, cmd, sizeof cmd) == 0) {
+            /* compare decoded samples: equal floats means equal codes */
+            if (image_read(tmp_path(outs[i]), &a, 0, cmd, sizeof cmd) == 0) {
+                if (image_read(mine, &b, 0, cmd, sizeof cmd) == 0) {
+                    mism = 0;
+                    for (size_t k = 0; k < (size_t)a.width * a.height * 4; k++, total++)
+                        mism += a.rgba[k] != b.rgba[k];
+                    image_free(&b);
+                }
+                image_free(&a);
+            }
+        }
+        tap_ok(mism == 0, "%s: our encoding of POV-Ray's EXR equals POV-Ray's own file (%ld of %ld samples differ)",
+               outs[i], mism, total);
+    }
+    image_free(&lin);
+}
+
+int main(void)
+{
+    if (make_workdir() != 0) {
+        tap_ok(0, "cannot create a temporary folder: %s", strerror(errno));
+        return tap_done();
+    }
+    tap_diag("temporary files in %s", workdir);
+    test_basics();
+    test_encoding();
+    test_exr();
+    test_exr_tiled();
+    test_png();
+    test_ppm();
+    test_atomic();
+    test_broken();
+    test_povray();
+    remove_tree(workdir);
+    return tap_done();
+}
