@@ -4,6 +4,8 @@
  * and are kept apart (they cannot go into a finite grid). */
 #include "world.h"
 
+#define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -109,7 +111,7 @@ static int add_triangle(Builder *b, Vec3 a, Vec3 c1, Vec3 c2, const Vec3 *normal
         return -1;
     Polygon *p = &w->polygons[w->npolygons];
     memset(p, 0, sizeof *p);
-    p->normal = v3_scale(n, 1.0 / len);
+    p->normal = v3(n.x / len, n.y / len, n.z / len);
     p->d = v3_dot(p->normal, a);
     choose_axes(p);
     p->first_point = w->npoints;
@@ -162,7 +164,7 @@ static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, in
         return -1;
     Polygon *p = &w->polygons[w->npolygons];
     memset(p, 0, sizeof *p);
-    p->normal = v3_scale(nrm, 1.0 / len);
+    p->normal = v3(nrm.x / len, nrm.y / len, nrm.z / len);
     p->d = v3_dot(p->normal, v3_scale(centroid, 1.0 / n));
     choose_axes(p);
     p->first_point = w->npoints;
@@ -235,19 +237,43 @@ static int flatten_box(Builder *b, const SceneObject *o, const Inherited *in, in
     return 0;
 }
 
+/* A surface normal carried to world space (inverse transpose), not
+ * normalised: interpolating these and normalising afterwards equals
+ * interpolating in object space and transforming, which is what POV-Ray's
+ * meshes do. */
 static Vec3 world_normal(const Inherited *in, Vec3 n)
 {
-    return v3_normalize(transform_normal(&in->transform, n));
+    return transform_normal(&in->transform, n);
+}
+
+/* POV-Ray drops a smooth_triangle whose vertex normals are not all strictly
+ * on one side of its face (SmoothTriangle::Compute_Smooth_Triangle marks it
+ * degenerate, so it is never hit). Checked in object space, as POV-Ray does. */
+static int smooth_normals_consistent(const Vec3 v[3], const Vec3 n[3])
+{
+    Vec3 face = v3_cross(v3_sub(v[0], v[1]), v3_sub(v[2], v[1]));
+    double d0 = v3_dot(face, n[0]), d1 = v3_dot(face, n[1]), d2 = v3_dot(face, n[2]);
+    return (d0 > 0 && d1 > 0 && d2 > 0) || (d0 < 0 && d1 < 0 && d2 < 0);
 }
 
 static int flatten_triangle(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
     Vec3 v[3], n[3];
+    int smooth = o->u.triangle.has_normals;
+    if (smooth) {
+        for (int i = 0; i < 3; i++)
+            if (v3_length(o->u.triangle.n[i]) == 0.0)
+                return 0; /* degenerate in POV-Ray too */
+        if (!smooth_normals_consistent(o->u.triangle.v, o->u.triangle.n))
+            return 0;
+    }
     for (int i = 0; i < 3; i++) {
         v[i] = transform_point(&in->transform, o->u.triangle.v[i]);
-        n[i] = world_normal(in, o->u.triangle.n[i]);
+        /* smooth_triangle normals are transformed and normalised at parse
+         * time in POV-Ray, before any interpolation. */
+        n[i] = v3_normalize(world_normal(in, v3_normalize(o->u.triangle.n[i])));
     }
-    return add_triangle(b, v[0], v[1], v[2], o->u.triangle.has_normals ? n : NULL, material);
+    return add_triangle(b, v[0], v[1], v[2], smooth ? n : NULL, material);
 }
 
 static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, int material)
@@ -272,12 +298,12 @@ static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, i
     int rc = 0;
     for (int f = 0; f < o->u.mesh.nfaces && rc == 0; f++) {
         const MeshFace *face = &o->u.mesh.faces[f];
-        Vec3 v[3], n[3];
-        int smooth = 1;
+        Vec3 v[3], on[3], n[3];
+        int smooth = 1, bad = 0;
         for (int i = 0; i < 3; i++) {
             int vi = face->v[i];
             if (vi < 0 || vi >= o->u.mesh.nvertices) {
-                smooth = -1;
+                bad = 1;
                 break;
             }
             v[i] = transform_point(&in->transform, o->u.mesh.vertices[vi]);
@@ -285,10 +311,19 @@ static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, i
             if (ni < 0 || ni >= o->u.mesh.nnormals)
                 smooth = 0;
             else
-                n[i] = world_normal(in, o->u.mesh.normals[ni]);
+                on[i] = v3_normalize(o->u.mesh.normals[ni]);
         }
-        if (smooth < 0)
+        if (bad)
             continue; /* the parser rejects bad indices; be safe anyway */
+        if (smooth) {
+            /* Three equal normals make a flat triangle in POV-Ray (the face
+             * normal is used, not the given one). */
+            Vec3 d1 = v3_sub(on[0], on[1]), d2 = v3_sub(on[0], on[2]);
+            if (v3_dot(d1, d1) <= POV_EPSILON && v3_dot(d2, d2) <= POV_EPSILON)
+                smooth = 0;
+            for (int i = 0; i < 3; i++)
+                n[i] = world_normal(in, on[i]);
+        }
         int m = (face->texture >= 0 && face->texture < nt) ? face_material[face->texture] : material;
         rc = add_triangle(b, v[0], v[1], v[2], smooth ? n : NULL, m);
     }

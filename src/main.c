@@ -96,7 +96,12 @@ int main(int argc, char **argv)
     dirs[ndirs++] = HST_DATADIR "/include";
     if (is_dir(POVRAY_INCLUDE_DIR))
         dirs[ndirs++] = POVRAY_INCLUDE_DIR;
-    ParseOptions popt = { dirs, ndirs, opt.width, opt.height };
+    ParseOptions popt;
+    memset(&popt, 0, sizeof popt);
+    popt.include_dirs = dirs;
+    popt.ninclude_dirs = ndirs;
+    popt.image_width = opt.width;
+    popt.image_height = opt.height;
 
     StatsReport report;
     memset(&report, 0, sizeof report);

@@ -15,7 +15,7 @@ typedef struct {
     uint64_t shadow_rays;         /* conventional shadow rays walked */
     uint64_t shadow_blocked;      /* ... of which found an opaque blocker */
     uint64_t shadow_polygon_tests;
-    double shadow_seconds;        /* thread CPU time spent deciding shadows */
+    double shadow_seconds;        /* time spent deciding shadows, summed over threads */
     double render_seconds;        /* thread CPU time in the render loop */
 } RenderStats;
 

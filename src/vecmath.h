@@ -23,10 +23,12 @@ static inline Vec3 v3_cross(Vec3 a, Vec3 b)
     return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 static inline double v3_length(Vec3 a) { return sqrt(v3_dot(a, a)); }
+/* Divides rather than multiplying by 1/l, so an axis-aligned vector comes
+ * out exactly unit (x * (1/x) is not always 1 in floating point). */
 static inline Vec3 v3_normalize(Vec3 a)
 {
     double l = v3_length(a);
-    return l > 0.0 ? v3_scale(a, 1.0 / l) : a;
+    return l > 0.0 ? v3(a.x / l, a.y / l, a.z / l) : a;
 }
 /* a + b * s: the ray-point idiom. */
 static inline Vec3 v3_madd(Vec3 a, Vec3 b, double s) { return v3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
