@@ -12,6 +12,9 @@ typedef struct {
     int ninclude_dirs;
     /* image_width / image_height as the scene sees them. */
     int image_width, image_height;
+    /* Total #while/#for iterations allowed before the parse fails as a
+     * runaway loop; 0 means the default, 10 million. */
+    long max_loop_iterations;
 } ParseOptions;
 
 /* A parse error: "FILE:LINE:COLUMN: message". */

@@ -164,6 +164,7 @@ typedef struct {
     double adc_bailout;     /* default 1/255 */
     Colour ambient_light;   /* default 1,1,1 */
     int has_assumed_gamma;
+    int assumed_gamma_srgb; /* `assumed_gamma srgb` (assumed_gamma is then 0) */
 } GlobalSettings;
 
 typedef struct Arena Arena;

@@ -1,0 +1,466 @@
+/* The token stream the grammar sees: raw tokens with every #directive already
+ * carried out (#include, #declare, #if, #while, #for, #macro skipping, ...).
+ *
+ * #while and #for are replayed the way POV-Ray does it: the loop remembers
+ * where its condition (or body) starts in the file buffer and the lexer jumps
+ * back there at #end. Skipped text (a false #if branch, a finished loop, a
+ * macro body) is tokenised but not interpreted, counting nested directives to
+ * find the matching #else/#end. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+int is_punct(const Token *t, int c) { return t->type == TK_PUNCT && t->punct == c; }
+int is_kw(const Token *t, int kw) { return t->type == TK_WORD && t->kw == kw; }
+
+static void handle_directive(Parser *p, const Token *hash);
+
+static void count_braces(Parser *p, const Token *t, int dir)
+{
+    if (is_punct(t, '{'))
+        p->brace_depth += dir;
+    else if (is_punct(t, '}'))
+        p->brace_depth -= dir;
+}
+
+/* End of the current file: check its #if/#while are closed, go back to the
+ * includer. Returns 0 at the end of the scene itself. */
+static int close_file(Parser *p, const Token *eof)
+{
+    SourceFile *f = &p->files[p->depth - 1];
+    if (p->controls.n > f->controls_at_entry) {
+        Control *c = (Control *)p->controls.data + p->controls.n - 1;
+        parse_fail(p, c->pos, "this directive has no matching #end before the end of '%s'", f->name);
+    }
+    if (p->depth == 1) {
+        (void)eof;
+        return 0;
+    }
+    p->depth--;
+    symbols_pop_scope(p);
+    return 1;
+}
+
+Token *next(Parser *p)
+{
+    if (p->ungot) {
+        p->ungot = 0;
+        count_braces(p, &p->tok, +1);
+        return &p->tok;
+    }
+    for (;;) {
+        lex_raw(p, &p->tok);
+        if (p->tok.type == TK_EOF) {
+            if (close_file(p, &p->tok))
+                continue;
+            break;
+        }
+        if (is_punct(&p->tok, '#')) {
+            Token hash = p->tok;
+            handle_directive(p, &hash);
+            if (p->ungot) {
+                /* the directive read one token too far (an expression's
+                 * lookahead): that token is the next one */
+                p->ungot = 0;
+                break;
+            }
+            continue;
+        }
+        break;
+    }
+    p->last_pos = p->tok.pos;
+    count_braces(p, &p->tok, +1);
+    return &p->tok;
+}
+
+void unget(Parser *p)
+{
+    p->ungot = 1;
+    count_braces(p, &p->tok, -1);
+}
+
+Token *peek(Parser *p)
+{
+    Token *t = next(p);
+    unget(p);
+    return t;
+}
+
+void expect_punct(Parser *p, int c, const char *after)
+{
+    Token *t = next(p);
+    if (!is_punct(t, c)) {
+        char what[64];
+        snprintf(what, sizeof what, "'%c' after %s", c, after);
+        fail_expected(p, t, what);
+    }
+}
+
+void begin_block(Parser *p, const char *after)
+{
+    Token *t = next(p);
+    if (!is_punct(t, '{')) {
+        char what[80];
+        snprintf(what, sizeof what, "'{' after '%s'", after);
+        fail_expected(p, t, what);
+    }
+}
+
+/* After a '{' was read: everything up to its '}', directives still obeyed. */
+void skip_block_body(Parser *p)
+{
+    int target = p->brace_depth - 1;
+    for (;;) {
+        Token *t = next(p);
+        if (t->type == TK_EOF)
+            parse_fail(p, t->pos, "expected '}' before the end of the file");
+        if (is_punct(t, '}') && p->brace_depth == target)
+            return;
+    }
+}
+
+/* `open` ('(' '[' or '{') was read: skip to its partner. */
+void skip_balanced_group(Parser *p, const Token *open)
+{
+    if (is_punct(open, '{')) {
+        skip_block_body(p);
+        return;
+    }
+    int close = open->punct == '(' ? ')' : ']';
+    int level = 1;
+    SourcePos start = open->pos;
+    while (level > 0) {
+        Token *t = next(p);
+        if (t->type == TK_EOF)
+            parse_fail(p, start, "no matching '%c' for this '%c' before the end of the file", close, open->punct);
+        if (is_punct(t, open->punct))
+            level++;
+        else if (is_punct(t, close))
+            level--;
+    }
+}
+
+/* ---- skipping text ------------------------------------------------------ */
+
+typedef enum { SKIP_TO_END, SKIP_TO_ELSE } SkipMode;
+typedef enum { STOP_END, STOP_ELSE, STOP_ELSEIF } SkipStop;
+
+static int opens_block(int kw)
+{
+    return kw == KW_if || kw == KW_ifdef || kw == KW_ifndef || kw == KW_while || kw == KW_for ||
+           kw == KW_switch || kw == KW_macro;
+}
+
+/* Raw tokens up to the matching #end (or, in SKIP_TO_ELSE, an #else/#elseif
+ * of the same level), which is consumed. `from` is for the message. */
+static SkipStop skip_text(Parser *p, SkipMode mode, SourcePos from, const char *what)
+{
+    int level = 0;
+    Token t;
+    for (;;) {
+        lex_raw(p, &t);
+        if (t.type == TK_EOF)
+            parse_fail(p, from, "%s has no matching #end", what);
+        if (!is_punct(&t, '#'))
+            continue;
+        lex_raw(p, &t);
+        if (t.type != TK_WORD)
+            continue;
+        if (opens_block(t.kw)) {
+            level++;
+        } else if (t.kw == KW_end) {
+            if (level == 0)
+                return STOP_END;
+            level--;
+        } else if (level == 0 && mode == SKIP_TO_ELSE) {
+            if (t.kw == KW_else)
+                return STOP_ELSE;
+            if (t.kw == KW_elseif)
+                return STOP_ELSEIF;
+        }
+    }
+}
+
+/* ---- the control stack ---------------------------------------------------- */
+
+static Control *push_control(Parser *p, ControlKind kind, SourcePos pos)
+{
+    if (p->controls.n >= 100000)
+        parse_fail(p, pos, "directives nested too deeply");
+    Control *c = tvec_push(p, &p->controls);
+    c->kind = kind;
+    c->file_depth = p->depth;
+    c->pos = pos;
+    return c;
+}
+
+static Control *top_control(Parser *p)
+{
+    SourceFile *f = &p->files[p->depth - 1];
+    if (p->controls.n <= f->controls_at_entry)
+        return NULL;
+    return (Control *)p->controls.data + p->controls.n - 1;
+}
+
+static void count_iteration(Parser *p, SourcePos pos)
+{
+    long limit = p->opts->max_loop_iterations > 0 ? p->opts->max_loop_iterations : MAX_LOOP_ITERATIONS;
+    if (++p->loop_iterations > limit)
+        parse_fail(p, pos, "more than %ld loop iterations: is this loop endless?", limit);
+}
+
+/* `( expr )`, as POV-Ray requires after #if/#while: the closing parenthesis
+ * ends it, so no token beyond is read (it may be another directive). */
+static double parse_condition(Parser *p, const char *after)
+{
+    expect_punct(p, '(', after);
+    double e[5] = { 0 };
+    int terms = 1;
+    parse_express(p, e, &terms);
+    expect_punct(p, ')', "the condition");
+    return e[0];
+}
+
+/* A condition is true when it is not (nearly) zero, as POV-Ray's ftrue(). */
+static int truthy(double v) { return fabs(v) > 1e-5; }
+
+static void run_if(Parser *p, const Token *hash, int cond)
+{
+    while (!cond) {
+        SkipStop s = skip_text(p, SKIP_TO_ELSE, hash->pos, "#if");
+        if (s == STOP_END)
+            return;
+        if (s == STOP_ELSE) {
+            push_control(p, CTL_ELSE, hash->pos);
+            return;
+        }
+        cond = truthy(parse_condition(p, "#elseif"));
+    }
+    push_control(p, CTL_IF, hash->pos);
+}
+
+static Token read_identifier(Parser *p, const char *after)
+{
+    Token *t = next(p);
+    if (t->type != TK_WORD) {
+        char what[80];
+        snprintf(what, sizeof what, "an identifier after %s", after);
+        fail_expected(p, t, what);
+    }
+    return *t;
+}
+
+static void directive_end(Parser *p, const Token *hash)
+{
+    Control *c = top_control(p);
+    if (!c)
+        parse_fail(p, hash->pos, "#end without a matching #if, #while or #for");
+    if (c->kind == CTL_IF || c->kind == CTL_ELSE) {
+        p->controls.n--;
+        return;
+    }
+    count_iteration(p, c->pos);
+    if (c->kind == CTL_WHILE) {
+        LexMark m = c->loop;
+        SourcePos at = c->pos;
+        lex_seek(p, m);
+        if (!truthy(parse_condition(p, "#while"))) {
+            p->controls.n--;
+            skip_text(p, SKIP_TO_END, at, "#while");
+        }
+        return;
+    }
+    /* CTL_FOR */
+    Symbol *s = symbol_find(p, c->for_var, (int)strlen(c->for_var));
+    if (!s || s->value.kind != VAL_NUMERIC || s->value.terms != 1)
+        parse_fail(p, hash->pos, "the #for variable '%s' is no longer a float", c->for_var);
+    double v = s->value.v[0] + c->for_step;
+    s->value.v[0] = v;
+    if (c->for_step > 0 ? v <= c->for_end : v >= c->for_end)
+        lex_seek(p, c->loop);
+    else
+        p->controls.n--;
+}
+
+static void directive_for(Parser *p, const Token *hash)
+{
+    expect_punct(p, '(', "#for");
+    Token var = read_identifier(p, "#for (");
+    if (var.kw >= 0)
+        parse_fail(p, var.pos, "'%s' is a reserved word and cannot be a #for variable", keyword_name(var.kw));
+    expect_punct(p, ',', "the #for variable");
+    double start = parse_float(p);
+    expect_punct(p, ',', "the #for start value");
+    double end = parse_float(p);
+    double step = 1.0;
+    Token *t = next(p);
+    if (is_punct(t, ',')) {
+        step = parse_float(p);
+        t = next(p);
+    }
+    if (!is_punct(t, ')'))
+        fail_expected(p, t, "')' to close #for");
+    if (step == 0.0)
+        parse_fail(p, hash->pos, "#for step must not be zero");
+    Value v = { .kind = VAL_NUMERIC, .terms = 1 };
+    v.v[0] = start;
+    symbol_set(p, var.text, var.len, 1, &v);
+    if (step > 0 ? start > end : start < end) {
+        skip_text(p, SKIP_TO_END, hash->pos, "#for");
+        return;
+    }
+    Control *c = push_control(p, CTL_FOR, hash->pos);
+    c->loop = lex_mark(p);
+    c->for_var = tmp_strndup(p, var.text, (size_t)var.len);
+    c->for_end = end;
+    c->for_step = step;
+}
+
+static void directive_include(Parser *p, const Token *hash)
+{
+    Token *t = peek(p);
+    SourcePos at = t->pos;
+    char *name = parse_string(p);
+    if (name[0] == '/') {
+        if (!lex_open_file(p, name, name, at))
+            parse_fail_io(p, at, "cannot open include file '%s'", name);
+    } else {
+        const char *dirs[130];
+        int nd = 0;
+        dirs[nd++] = p->files[p->depth - 1].dir;
+        for (int i = 0; i < p->opts->ninclude_dirs && nd < 128; i++)
+            if (p->opts->include_dirs[i])
+                dirs[nd++] = p->opts->include_dirs[i];
+        for (int i = 0; i < nd; i++) {
+            size_t n = strlen(dirs[i]) + strlen(name) + 2;
+            char *path = tmp_alloc(p, n);
+            if (strcmp(dirs[i], ".") == 0)
+                snprintf(path, n, "%s", name);
+            else
+                snprintf(path, n, "%s%s%s", dirs[i], dirs[i][strlen(dirs[i]) - 1] == '/' ? "" : "/", name);
+            if (lex_open_file(p, path, path, at)) {
+                symbols_push_scope(p);
+                return;
+            }
+        }
+        char searched[400];
+        size_t used = 0;
+        searched[0] = '\0';
+        for (int i = 0; i < nd && used + 4 < sizeof searched; i++) {
+            int w = snprintf(searched + used, sizeof searched - used, "%s%s", i ? ", " : "", dirs[i]);
+            used += w > 0 ? (size_t)w : 0;
+        }
+        if (used >= sizeof searched)
+            memcpy(searched + sizeof searched - 4, "...", 4);
+        parse_fail_io(p, at, "cannot open include file '%s' (searched: %s)", name, searched);
+    }
+    (void)hash;
+    symbols_push_scope(p);
+}
+
+static void handle_directive(Parser *p, const Token *hash)
+{
+    Token t;
+    lex_raw(p, &t);
+    if (t.type != TK_WORD || t.kw < 0) {
+        if (t.type == TK_WORD && symbol_find(p, t.text, t.len))
+            parse_fail(p, t.pos, "macro calls are not supported by hstrace");
+        fail_expected(p, &t, "a directive after '#'");
+    }
+    switch (t.kw) {
+    case KW_include:
+        directive_include(p, hash);
+        return;
+    case KW_declare:
+    case KW_local:
+        parse_declare(p, hash, t.kw == KW_local);
+        return;
+    case KW_undef: {
+        Token id = read_identifier(p, "#undef");
+        symbol_undef(p, id.text, id.len);
+        return;
+    }
+    case KW_if:
+        run_if(p, hash, truthy(parse_condition(p, "#if")));
+        return;
+    case KW_ifdef:
+    case KW_ifndef: {
+        expect_punct(p, '(', t.kw == KW_ifdef ? "#ifdef" : "#ifndef");
+        Token id = read_identifier(p, "'('");
+        expect_punct(p, ')', "the identifier");
+        int defined = id.kw < 0 && symbol_find(p, id.text, id.len) != NULL;
+        run_if(p, hash, t.kw == KW_ifdef ? defined : !defined);
+        return;
+    }
+    case KW_else:
+    case KW_elseif: {
+        Control *c = top_control(p);
+        if (!c || c->kind != CTL_IF)
+            parse_fail(p, t.pos, "#%s without a matching #if", keyword_name(t.kw));
+        /* The branch before it ran: skip the rest, #elseif conditions unread. */
+        p->controls.n--;
+        skip_text(p, SKIP_TO_END, c->pos, "#if");
+        return;
+    }
+    case KW_end:
+        directive_end(p, hash);
+        return;
+    case KW_while: {
+        LexMark m = lex_mark(p);
+        if (truthy(parse_condition(p, "#while"))) {
+            count_iteration(p, hash->pos);
+            Control *c = push_control(p, CTL_WHILE, hash->pos);
+            c->loop = m;
+        } else {
+            skip_text(p, SKIP_TO_END, hash->pos, "#while");
+        }
+        return;
+    }
+    case KW_for:
+        directive_for(p, hash);
+        return;
+    case KW_macro: {
+        Token name = read_identifier(p, "#macro");
+        skip_text(p, SKIP_TO_END, hash->pos, "#macro");
+        Value v = { .kind = VAL_UNSUPPORTED };
+        char *what = tmp_alloc(p, (size_t)name.len + 16);
+        snprintf(what, (size_t)name.len + 16, "macro '%.*s'", name.len, name.text);
+        v.what = what;
+        v.declared_at = name.pos;
+        if (name.kw < 0)
+            symbol_set(p, name.text, name.len, 0, &v);
+        return;
+    }
+    case KW_version: {
+        double v = parse_float(p);
+        if (!is_punct(next(p), ';'))
+            unget(p); /* POV-Ray wants the ';'; hstrace does not insist */
+        p->version = v;
+        return;
+    }
+    case KW_debug:
+    case KW_warning:
+        (void)parse_string(p);
+        return;
+    case KW_error: {
+        char *msg = parse_string(p);
+        parse_fail(p, hash->pos, "#error: %s", msg);
+    }
+    case KW_default:
+        parse_default_directive(p);
+        return;
+    case KW_switch:
+    case KW_case:
+    case KW_range:
+    case KW_break:
+    case KW_fopen:
+    case KW_fclose:
+    case KW_read:
+    case KW_write:
+        parse_fail(p, t.pos, "'#%s' is not supported by hstrace", keyword_name(t.kw));
+    default:
+        fail_expected(p, &t, "a directive after '#'");
+    }
+}

@@ -1,0 +1,998 @@
+/* Numeric, string and colour expressions, and transforms.
+ *
+ * The numeric grammar follows POV-Ray's express.cpp: every level works on up
+ * to five components plus a component count `terms`. The count passed in is
+ * the context (a float parsed where a vector is wanted fills every component);
+ * binary operators promote the shorter side (a float is repeated, a shorter
+ * vector padded with zeros). Precedence, loosest first:
+ *   ?:   & |   < <= = != >= >   + -   * /   unary - + !   factors
+ * A plain float or vector (parse_float, parse_vector) stops at + - as POV-Ray
+ * does; comparisons need parentheses there. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+static void parse_num_factor(Parser *p, double e[5], int *terms);
+
+static void fill(double e[5], int terms, double v)
+{
+    for (int i = 0; i < 5; i++)
+        e[i] = i < terms ? v : 0.0;
+}
+
+/* A shorter operand grows to `to` components: a float repeats, a vector pads. */
+static void promote(double e[5], int *terms, int to)
+{
+    if (*terms >= to)
+        return;
+    for (int i = *terms; i < to; i++)
+        e[i] = *terms == 1 ? e[0] : 0.0;
+    *terms = to;
+}
+
+static void balance(double a[5], int *ta, double b[5], int *tb)
+{
+    if (*tb > *ta)
+        promote(a, ta, *tb);
+    else
+        promote(b, tb, *ta);
+}
+
+/* POV-Ray's ftrue(): "not zero" with a small tolerance. */
+static int ftrue(double v) { return fabs(v) > 1e-5; }
+
+static void parse_num_term(Parser *p, double e[5], int *terms)
+{
+    parse_num_factor(p, e, terms);
+    for (;;) {
+        Token *t = next(p);
+        if (!is_punct(t, '*') && !is_punct(t, '/')) {
+            unget(p);
+            return;
+        }
+        int op = t->punct;
+        double r[5] = { 0 };
+        int rt = *terms;
+        parse_num_factor(p, r, &rt);
+        balance(e, terms, r, &rt);
+        for (int i = 0; i < *terms; i++) {
+            if (op == '*')
+                e[i] *= r[i];
+            else
+                e[i] = r[i] == 0.0 ? HUGE_VAL : e[i] / r[i]; /* POV-Ray warns and goes on */
+        }
+    }
+}
+
+void parse_rel_factor(Parser *p, double e[5], int *terms)
+{
+    parse_num_term(p, e, terms);
+    for (;;) {
+        Token *t = next(p);
+        if (!is_punct(t, '+') && !is_punct(t, '-')) {
+            unget(p);
+            return;
+        }
+        int op = t->punct;
+        double r[5] = { 0 };
+        int rt = *terms;
+        parse_num_term(p, r, &rt);
+        balance(e, terms, r, &rt);
+        for (int i = 0; i < *terms; i++)
+            e[i] = op == '+' ? e[i] + r[i] : e[i] - r[i];
+    }
+}
+
+static void parse_rel_term(Parser *p, double e[5], int *terms)
+{
+    parse_rel_factor(p, e, terms);
+    for (;;) {
+        Token *t = next(p);
+        int op = t->type == TK_PUNCT ? t->punct : 0;
+        if (op != '<' && op != '>' && op != '=' && op != P_LE && op != P_GE && op != P_NE) {
+            unget(p);
+            return;
+        }
+        double r[5] = { 0 };
+        int rt = *terms;
+        parse_rel_factor(p, r, &rt);
+        promote(e, terms, rt);
+        for (int i = 0; i < *terms; i++) {
+            double a = e[i], b = r[i];
+            int eq = !ftrue(a - b);
+            switch (op) {
+            case '<': e[i] = a < b; break;
+            case '>': e[i] = a > b; break;
+            case '=': e[i] = eq; break;
+            case P_NE: e[i] = !eq; break;
+            case P_LE: e[i] = a <= b || eq; break;
+            default: e[i] = a >= b || eq; break;
+            }
+        }
+    }
+}
+
+static void parse_logical(Parser *p, double e[5], int *terms)
+{
+    parse_rel_term(p, e, terms);
+    for (;;) {
+        Token *t = next(p);
+        if (!is_punct(t, '&') && !is_punct(t, '|')) {
+            unget(p);
+            return;
+        }
+        int op = t->punct;
+        double r[5] = { 0 };
+        int rt = *terms;
+        parse_rel_term(p, r, &rt);
+        promote(e, terms, rt);
+        for (int i = 0; i < *terms; i++)
+            e[i] = op == '&' ? (ftrue(e[i]) && ftrue(r[i])) : (ftrue(e[i]) || ftrue(r[i]));
+    }
+}
+
+void parse_express(Parser *p, double e[5], int *terms)
+{
+    Token first = *peek(p);
+    nesting_enter(p, &first);
+    int want = *terms, got = 1;
+    parse_logical(p, e, &got);
+    Token *t = next(p);
+    if (is_punct(t, '?')) {
+        if (got != 1)
+            parse_fail(p, t->pos, "the condition before '?' must be a float");
+        int cond = ftrue(e[0]);
+        double a[5] = { 0 }, b[5] = { 0 };
+        int ta = want, tb = want;
+        parse_express(p, a, &ta);
+        expect_punct(p, ':', "the first choice of '?'");
+        parse_express(p, b, &tb);
+        memcpy(e, cond ? a : b, sizeof a);
+        *terms = cond ? ta : tb;
+    } else {
+        unget(p);
+        promote(e, &got, want);
+        *terms = got;
+    }
+    nesting_leave(p);
+}
+
+double parse_float(Parser *p)
+{
+    Token first = *peek(p);
+    double e[5] = { 0 };
+    int terms = 1;
+    parse_rel_factor(p, e, &terms);
+    if (terms > 1)
+        parse_fail(p, first.pos, "float expected but vector or colour expression found");
+    return e[0];
+}
+
+Vec3 parse_vector(Parser *p)
+{
+    Token first = *peek(p);
+    double e[5] = { 0 };
+    int terms = 3;
+    parse_rel_factor(p, e, &terms);
+    if (terms > 3)
+        parse_fail(p, first.pos, "vector expected but colour expression found");
+    return v3(e[0], e[1], e[2]);
+}
+
+Vec3 parse_scale_vector(Parser *p)
+{
+    Vec3 v = parse_vector(p);
+    /* POV-Ray turns a zero scale into 1 (with a warning) */
+    if (v.x == 0.0) v.x = 1.0;
+    if (v.y == 0.0) v.y = 1.0;
+    if (v.z == 0.0) v.z = 1.0;
+    return v;
+}
+
+void parse_comma(Parser *p)
+{
+    if (!is_punct(next(p), ','))
+        unget(p);
+}
+
+/* A float in parentheses: sin(x). */
+static double float_param(Parser *p)
+{
+    expect_punct(p, '(', "the function name");
+    double v = parse_float_full(p);
+    expect_punct(p, ')', "the argument");
+    return v;
+}
+
+/* Function arguments are full expressions (comparisons allowed). */
+double parse_float_full(Parser *p)
+{
+    Token first = *peek(p);
+    double e[5] = { 0 };
+    int terms = 1;
+    parse_express(p, e, &terms);
+    if (terms > 1)
+        parse_fail(p, first.pos, "float expected but vector or colour expression found");
+    return e[0];
+}
+
+static Vec3 vector_full(Parser *p)
+{
+    double e[5] = { 0 };
+    int terms = 3;
+    parse_express(p, e, &terms);
+    return v3(e[0], e[1], e[2]);
+}
+
+static void float_params2(Parser *p, double *a, double *b)
+{
+    expect_punct(p, '(', "the function name");
+    *a = parse_float_full(p);
+    expect_punct(p, ',', "the first argument");
+    *b = parse_float_full(p);
+    expect_punct(p, ')', "the second argument");
+}
+
+static int is_colour_keyword(int kw)
+{
+    switch (kw) {
+    case KW_color: case KW_colour: case KW_rgb: case KW_rgbf: case KW_rgbt: case KW_rgbft:
+    case KW_srgb: case KW_srgbf: case KW_srgbt: case KW_srgbft:
+    case KW_red: case KW_green: case KW_blue: case KW_filter: case KW_transmit: case KW_alpha:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+static int is_float_keyword(int kw)
+{
+    switch (kw) {
+    case KW_abs: case KW_acos: case KW_acosh: case KW_asin: case KW_asinh: case KW_atan: case KW_atan2:
+    case KW_atanh: case KW_ceil: case KW_clock: case KW_clock_on: case KW_clock_delta: case KW_cos:
+    case KW_cosh: case KW_defined: case KW_degrees: case KW_div: case KW_exp: case KW_floor: case KW_int:
+    case KW_ln: case KW_log: case KW_max: case KW_min: case KW_mod: case KW_pi: case KW_pow:
+    case KW_radians: case KW_select: case KW_sin: case KW_sinh: case KW_sqr: case KW_sqrt: case KW_tan:
+    case KW_tanh: case KW_true: case KW_false: case KW_yes: case KW_no: case KW_on: case KW_off:
+    case KW_version: case KW_image_width: case KW_image_height: case KW_vdot: case KW_vlength:
+    case KW_strlen: case KW_strcmp: case KW_val: case KW_asc: case KW_initial_frame: case KW_final_frame:
+    case KW_frame_number: case KW_initial_clock: case KW_final_clock: case KW_bitwise_and:
+    case KW_bitwise_or: case KW_bitwise_xor:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+static int is_vector_keyword(int kw)
+{
+    switch (kw) {
+    case KW_x: case KW_y: case KW_z: case KW_t: case KW_u: case KW_v:
+    case KW_vcross: case KW_vnormalize: case KW_vrotate: case KW_vaxis_rotate:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+static Symbol *numeric_symbol(Parser *p, const Token *t)
+{
+    if (t->type != TK_WORD || t->kw >= 0)
+        return NULL;
+    Symbol *s = symbol_find(p, t->text, t->len);
+    return s && s->value.kind == VAL_NUMERIC ? s : NULL;
+}
+
+int token_starts_float(Parser *p, const Token *t)
+{
+    if (t->type == TK_NUMBER)
+        return 1;
+    if (t->type == TK_PUNCT)
+        return t->punct == '(' || t->punct == '-' || t->punct == '+' || t->punct == '!';
+    if (t->type != TK_WORD)
+        return 0;
+    if (t->kw >= 0)
+        return is_float_keyword(t->kw);
+    Symbol *s = numeric_symbol(p, t);
+    return s && s->value.terms == 1;
+}
+
+int token_starts_colour(Parser *p, const Token *t)
+{
+    if (t->type != TK_WORD)
+        return 0;
+    if (t->kw >= 0)
+        return is_colour_keyword(t->kw);
+    Symbol *s = numeric_symbol(p, t);
+    return s && s->value.terms == 5;
+}
+
+int token_starts_expression(Parser *p, const Token *t)
+{
+    if (token_starts_float(p, t) || token_starts_colour(p, t) || is_punct(t, '<'))
+        return 1;
+    if (t->type != TK_WORD)
+        return 0;
+    if (t->kw >= 0)
+        return is_vector_keyword(t->kw);
+    return numeric_symbol(p, t) != NULL;
+}
+
+int token_starts_string(Parser *p, const Token *t)
+{
+    if (t->type == TK_STRING)
+        return 1;
+    if (t->type != TK_WORD)
+        return 0;
+    switch (t->kw) {
+    case KW_concat: case KW_str: case KW_chr: case KW_substr: case KW_strupr: case KW_strlwr: case KW_vstr:
+        return 1;
+    case -1: {
+        Symbol *s = symbol_find(p, t->text, t->len);
+        return s && s->value.kind == VAL_STRING;
+    }
+    default:
+        return 0;
+    }
+}
+
+static const char *kind_name(ValueKind k)
+{
+    switch (k) {
+    case VAL_NUMERIC: return "a number";
+    case VAL_STRING: return "a string";
+    case VAL_OBJECT: return "an object";
+    case VAL_LIGHT: return "a light_source";
+    case VAL_TEXTURE: return "a texture";
+    case VAL_PIGMENT: return "a pigment";
+    case VAL_FINISH: return "a finish";
+    case VAL_INTERIOR: return "an interior";
+    case VAL_CAMERA: return "a camera";
+    case VAL_TRANSFORM: return "a transform";
+    case VAL_NORMAL: return "a normal";
+    default: return "something else";
+    }
+}
+
+/* An identifier in a numeric expression. */
+static void identifier_factor(Parser *p, const Token *t, double e[5], int *terms)
+{
+    Symbol *s = symbol_find(p, t->text, t->len);
+    if (!s)
+        parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+    const Value *v = &s->value;
+    if (v->kind == VAL_UNSUPPORTED)
+        use_unsupported(p, t, v);
+    if (v->kind != VAL_NUMERIC)
+        parse_fail(p, t->pos, "numeric expression expected but '%.*s' is %s", t->len, t->text, kind_name(v->kind));
+    if (v->terms == 1) {
+        fill(e, *terms, v->v[0]);
+    } else {
+        memcpy(e, v->v, sizeof v->v);
+        *terms = v->terms;
+    }
+}
+
+static void vector_literal(Parser *p, double e[5], int *terms)
+{
+    int n = 0;
+    fill(e, 5, 0.0);
+    for (;;) {
+        e[n++] = parse_float(p);
+        parse_comma(p);
+        Token *t = next(p);
+        if (is_punct(t, '>')) {
+            if (n < 2)
+                fail_expected(p, t, "a second vector component");
+            break;
+        }
+        if (n == 5)
+            fail_expected(p, t, "'>' after five vector components");
+        unget(p);
+    }
+    *terms = n;
+}
+
+static Vec3 rotate_about_axis(Vec3 v, Vec3 axis, double degrees)
+{
+    Vec3 a = v3_normalize(axis);
+    double th = degrees * M_PI / 180.0, c = cos(th), s = sin(th);
+    /* Rodrigues' formula; checked against POV-Ray's vaxis_rotate */
+    Vec3 cross = v3_cross(a, v);
+    return v3_add(v3_add(v3_scale(v, c), v3_scale(cross, s)), v3_scale(a, v3_dot(a, v) * (1.0 - c)));
+}
+
+static double variadic_minmax(Parser *p, int is_max)
+{
+    expect_punct(p, '(', is_max ? "'max'" : "'min'");
+    double v = parse_float_full(p);
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, ')'))
+            return v;
+        if (!is_punct(t, ','))
+            fail_expected(p, t, "',' or ')' in the argument list");
+        double w = parse_float_full(p);
+        v = is_max ? fmax(v, w) : fmin(v, w);
+    }
+}
+
+/* A keyword in a numeric expression; returns 0 when it is none of ours. */
+static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
+{
+    double a, b, val;
+    Vec3 va, vb;
+    switch (t->kw) {
+    case KW_x: va = v3(1, 0, 0); goto vector;
+    case KW_y: va = v3(0, 1, 0); goto vector;
+    case KW_z: va = v3(0, 0, 1); goto vector;
+    case KW_t:
+        fill(e, 5, 0.0);
+        e[3] = 1.0;
+        *terms = 4;
+        return 1;
+    case KW_u:
+    case KW_v:
+        fill(e, 5, 0.0);
+        e[t->kw == KW_u ? 0 : 1] = 1.0;
+        *terms = 2;
+        return 1;
+    case KW_vcross:
+        expect_punct(p, '(', "'vcross'");
+        va = vector_full(p);
+        expect_punct(p, ',', "the first vector");
+        vb = vector_full(p);
+        expect_punct(p, ')', "the second vector");
+        va = v3_cross(va, vb);
+        goto vector;
+    case KW_vnormalize:
+        expect_punct(p, '(', "'vnormalize'");
+        va = vector_full(p);
+        expect_punct(p, ')', "the vector");
+        if (v3_length(va) == 0.0)
+            parse_fail(p, t->pos, "cannot normalise a zero-length vector");
+        va = v3_normalize(va);
+        goto vector;
+    case KW_vrotate: {
+        expect_punct(p, '(', "'vrotate'");
+        va = vector_full(p);
+        expect_punct(p, ',', "the vector");
+        vb = vector_full(p);
+        expect_punct(p, ')', "the angles");
+        Transform tr;
+        transform_identity(&tr);
+        transform_rotate(&tr, vb);
+        va = transform_direction(&tr, va);
+        goto vector;
+    }
+    case KW_vaxis_rotate: {
+        expect_punct(p, '(', "'vaxis_rotate'");
+        va = vector_full(p);
+        expect_punct(p, ',', "the vector");
+        vb = vector_full(p);
+        expect_punct(p, ',', "the axis");
+        a = parse_float_full(p);
+        expect_punct(p, ')', "the angle");
+        va = rotate_about_axis(va, vb, a);
+        goto vector;
+    }
+    case KW_vdot:
+        expect_punct(p, '(', "'vdot'");
+        va = vector_full(p);
+        expect_punct(p, ',', "the first vector");
+        vb = vector_full(p);
+        expect_punct(p, ')', "the second vector");
+        val = v3_dot(va, vb);
+        break;
+    case KW_vlength:
+        expect_punct(p, '(', "'vlength'");
+        va = vector_full(p);
+        expect_punct(p, ')', "the vector");
+        val = v3_length(va);
+        break;
+    case KW_abs: val = fabs(float_param(p)); break;
+    case KW_acos: val = acos(fmax(-1.0, fmin(1.0, float_param(p)))); break;
+    case KW_asin: val = asin(fmax(-1.0, fmin(1.0, float_param(p)))); break;
+    case KW_atan: val = atan(float_param(p)); break;
+    case KW_acosh: val = acosh(float_param(p)); break;
+    case KW_asinh: val = asinh(float_param(p)); break;
+    case KW_atanh: val = atanh(float_param(p)); break;
+    case KW_cosh: val = cosh(float_param(p)); break;
+    case KW_sinh: val = sinh(float_param(p)); break;
+    case KW_tanh: val = tanh(float_param(p)); break;
+    case KW_atan2:
+        float_params2(p, &a, &b);
+        val = (a == 0.0 && b == 0.0) ? 0.0 : atan2(a, b);
+        break;
+    case KW_ceil: val = ceil(float_param(p)); break;
+    case KW_floor: val = floor(float_param(p)); break;
+    case KW_cos: val = cos(float_param(p)); break;
+    case KW_sin: val = sin(float_param(p)); break;
+    case KW_tan: val = tan(float_param(p)); break;
+    case KW_degrees: val = float_param(p) * 180.0 / M_PI; break;
+    case KW_radians: val = float_param(p) * M_PI / 180.0; break;
+    case KW_exp: val = exp(float_param(p)); break;
+    case KW_int: {
+        double f = float_param(p);
+        val = (f > -2147483648.0 && f < 2147483648.0) ? (double)(int)f : trunc(f);
+        break;
+    }
+    case KW_ln: val = log(float_param(p)); break;
+    case KW_log: val = log10(float_param(p)); break;
+    case KW_sqrt: val = sqrt(float_param(p)); break;
+    case KW_sqr: val = float_param(p); val *= val; break;
+    case KW_pow: float_params2(p, &a, &b); val = pow(a, b); break;
+    case KW_mod: float_params2(p, &a, &b); val = b == 0.0 ? HUGE_VAL : fmod(a, b); break;
+    case KW_div: float_params2(p, &a, &b); val = b == 0.0 ? HUGE_VAL : trunc(a / b); break;
+    case KW_bitwise_and:
+    case KW_bitwise_or:
+    case KW_bitwise_xor: {
+        float_params2(p, &a, &b);
+        long ia = (long)fmax(-2e9, fmin(2e9, a)), ib = (long)fmax(-2e9, fmin(2e9, b));
+        val = (double)(t->kw == KW_bitwise_and ? (ia & ib) : t->kw == KW_bitwise_or ? (ia | ib) : (ia ^ ib));
+        break;
+    }
+    case KW_max:
+    case KW_min: val = variadic_minmax(p, t->kw == KW_max); break;
+    case KW_select: {
+        expect_punct(p, '(', "'select'");
+        double c = parse_float_full(p), r[3];
+        int n = 0;
+        for (;;) {
+            Token *s = next(p);
+            if (is_punct(s, ')') && n >= 2)
+                break;
+            if (!is_punct(s, ',') || n == 3)
+                fail_expected(p, s, n >= 2 ? "')' after the choices of 'select'" : "',' in 'select'");
+            r[n++] = parse_float_full(p);
+        }
+        val = n == 2 ? (c < 0 ? r[0] : r[1]) : (c < 0 ? r[0] : c == 0 ? r[1] : r[2]);
+        break;
+    }
+    case KW_defined: {
+        expect_punct(p, '(', "'defined'");
+        Token *id = next(p);
+        if (id->type != TK_WORD)
+            fail_expected(p, id, "an identifier in 'defined'");
+        val = id->kw < 0 && symbol_find(p, id->text, id->len) != NULL;
+        expect_punct(p, ')', "the identifier");
+        break;
+    }
+    case KW_strlen: {
+        expect_punct(p, '(', "'strlen'");
+        val = (double)strlen(parse_string(p));
+        expect_punct(p, ')', "the string");
+        break;
+    }
+    case KW_strcmp: {
+        expect_punct(p, '(', "'strcmp'");
+        char *s1 = parse_string(p);
+        expect_punct(p, ',', "the first string");
+        char *s2 = parse_string(p);
+        expect_punct(p, ')', "the second string");
+        int c = strcmp(s1, s2);
+        val = c < 0 ? -1 : c > 0;
+        break;
+    }
+    case KW_val: {
+        expect_punct(p, '(', "'val'");
+        val = strtod(parse_string(p), NULL);
+        expect_punct(p, ')', "the string");
+        break;
+    }
+    case KW_asc: {
+        expect_punct(p, '(', "'asc'");
+        val = (unsigned char)parse_string(p)[0];
+        expect_punct(p, ')', "the string");
+        break;
+    }
+    case KW_pi: val = M_PI; break;
+    case KW_true: case KW_yes: case KW_on: val = 1.0; break;
+    case KW_false: case KW_no: case KW_off: val = 0.0; break;
+    case KW_clock: case KW_clock_on: case KW_initial_clock: case KW_frame_number: case KW_initial_frame:
+    case KW_final_frame:
+        val = 0.0;
+        break;
+    case KW_final_clock: case KW_clock_delta: val = 1.0; break;
+    case KW_version: val = p->version; break;
+    case KW_image_width: val = p->opts->image_width; break;
+    case KW_image_height: val = p->opts->image_height; break;
+    default:
+        return 0;
+    }
+    fill(e, *terms, val);
+    return 1;
+vector:
+    if (*terms < 3)
+        *terms = 3;
+    fill(e, 5, 0.0);
+    e[0] = va.x;
+    e[1] = va.y;
+    e[2] = va.z;
+    return 1;
+}
+
+static void parse_num_factor(Parser *p, double e[5], int *terms)
+{
+    Token t = *next(p);
+    nesting_enter(p, &t);
+    if (t.type == TK_NUMBER) {
+        fill(e, *terms, t.number);
+    } else if (is_punct(&t, '(')) {
+        parse_express(p, e, terms);
+        expect_punct(p, ')', "the expression in parentheses");
+    } else if (is_punct(&t, '<')) {
+        vector_literal(p, e, terms);
+    } else if (is_punct(&t, '-') || is_punct(&t, '+') || is_punct(&t, '!')) {
+        parse_num_factor(p, e, terms);
+        for (int i = 0; i < *terms; i++) {
+            if (t.punct == '-')
+                e[i] = -e[i];
+            else if (t.punct == '!')
+                e[i] = ftrue(e[i]) ? 0.0 : 1.0;
+        }
+    } else if (t.type == TK_WORD && t.kw < 0) {
+        identifier_factor(p, &t, e, terms);
+    } else if (t.type == TK_WORD && is_colour_keyword(t.kw)) {
+        unget(p);
+        Colour c;
+        parse_colour(p, &c, 1);
+        e[0] = c.r; e[1] = c.g; e[2] = c.b; e[3] = c.filter; e[4] = c.transmit;
+        *terms = 5;
+    } else if (t.type != TK_WORD || !keyword_factor(p, &t, e, terms)) {
+        fail_expected(p, &t, "a numeric expression");
+    }
+    nesting_leave(p);
+
+    /* v.x, c.red and friends */
+    if (!is_punct(next(p), '.')) {
+        unget(p);
+        return;
+    }
+    Token *c = next(p);
+    int i = -1;
+    switch (c->type == TK_WORD ? c->kw : -2) {
+    case KW_x: case KW_u: case KW_red: i = 0; break;
+    case KW_y: case KW_v: case KW_green: i = 1; break;
+    case KW_z: case KW_blue: i = 2; break;
+    case KW_t: case KW_filter: i = 3; break;
+    case KW_transmit: i = 4; break;
+    case KW_gray: {
+        double g = e[0] * 0.297 + e[1] * 0.589 + e[2] * 0.114;
+        fill(e, 5, g);
+        *terms = 1;
+        return;
+    }
+    default:
+        fail_expected(p, c, "x, y, z, t, u, v or a colour component after '.'");
+    }
+    if (i >= *terms)
+        parse_fail(p, c->pos, "'.%s' asks for a component the expression does not have", keyword_name(c->kw));
+    double v = e[i];
+    fill(e, 5, v);
+    *terms = 1;
+}
+
+/* ---- colours ----------------------------------------------------------- */
+
+static double srgb_to_linear(double c)
+{
+    return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}
+
+/* srgb values become working-gamma values: decoded to linear light, then
+ * encoded with assumed_gamma (identity for the usual assumed_gamma 1). */
+static double decode_srgb(Parser *p, double c)
+{
+    if (p->assumed_gamma == 0.0)
+        return c; /* assumed_gamma srgb: nothing to convert */
+    double lin = srgb_to_linear(c);
+    return p->assumed_gamma == 1.0 ? lin : pow(lin, 1.0 / p->assumed_gamma);
+}
+
+/* POV-Ray's Parse_Colour: an optional color/colour, then rgb-family keywords
+ * (only first), an identifier or expression (only first), and component
+ * keywords (red 0.5 filter 0.3) in any number. */
+void parse_colour(Parser *p, Colour *out, int expect_ft)
+{
+    double c[5] = { 0 };
+    int started = 0;
+    Token *t = next(p);
+    if (!is_kw(t, KW_color) && !is_kw(t, KW_colour))
+        unget(p);
+    for (;;) {
+        t = next(p);
+        Token at = *t;
+        if (t->type == TK_WORD && is_colour_keyword(t->kw) && t->kw != KW_color && t->kw != KW_colour) {
+            int kw = t->kw, terms = 0, is_srgb = 0;
+            switch (kw) {
+            case KW_red: c[0] = parse_float(p); break;
+            case KW_green: c[1] = parse_float(p); break;
+            case KW_blue: c[2] = parse_float(p); break;
+            case KW_alpha:
+            case KW_filter: c[3] = parse_float(p); break;
+            case KW_transmit: c[4] = parse_float(p); break;
+            case KW_srgb: is_srgb = 1; terms = 3; break;
+            case KW_srgbf: is_srgb = 1; terms = 4; break;
+            case KW_srgbt: is_srgb = 1; terms = 4; break;
+            case KW_srgbft: is_srgb = 1; terms = 5; break;
+            case KW_rgb: terms = 3; break;
+            case KW_rgbf: case KW_rgbt: terms = 4; break;
+            default: terms = 5; break; /* rgbft */
+            }
+            if (terms) {
+                if (started) {
+                    unget(p);
+                    break;
+                }
+                if (is_srgb && !p->gamma_set)
+                    parse_fail(p, at.pos, "cannot parse sRGB colours before assumed_gamma has been set");
+                double e[5] = { 0 };
+                int n = terms;
+                parse_express(p, e, &n);
+                for (int i = 0; i < n && i < 5; i++)
+                    c[i] = e[i];
+                if (kw == KW_rgbt || kw == KW_srgbt) {
+                    c[4] = c[3];
+                    c[3] = 0.0;
+                }
+                if (is_srgb)
+                    for (int i = 0; i < 3; i++)
+                        c[i] = decode_srgb(p, c[i]);
+            }
+            started = 1;
+            continue;
+        }
+        if (!started && (token_starts_expression(p, t) && !is_kw(t, KW_color) && !is_kw(t, KW_colour))) {
+            unget(p);
+            double e[5] = { 0 };
+            int n = expect_ft ? 5 : 3;
+            parse_express(p, e, &n);
+            if (n < 3 || (expect_ft && n != 5))
+                parse_fail(p, at.pos, "colour expression expected but float or vector expression found");
+            for (int i = 0; i < n && i < 5; i++)
+                c[i] = e[i];
+            started = 1;
+            continue;
+        }
+        if (t->type == TK_WORD && t->kw < 0 && !started) {
+            Symbol *s = symbol_find(p, t->text, t->len);
+            if (!s)
+                parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+            if (s->value.kind == VAL_UNSUPPORTED)
+                use_unsupported(p, t, &s->value);
+        }
+        unget(p);
+        break;
+    }
+    if (!started)
+        fail_expected(p, peek(p), "a colour");
+    out->r = c[0];
+    out->g = c[1];
+    out->b = c[2];
+    out->filter = expect_ft ? c[3] : 0.0;
+    out->transmit = expect_ft ? c[4] : 0.0;
+}
+
+/* ---- strings ---------------------------------------------------------- */
+
+static char *string_param(Parser *p)
+{
+    char *s = parse_string(p);
+    return s;
+}
+
+char *parse_string(Parser *p)
+{
+    Token t = *next(p);
+    if (t.type == TK_STRING)
+        return t.string;
+    if (t.type == TK_WORD && t.kw < 0) {
+        Symbol *s = symbol_find(p, t.text, t.len);
+        if (s && s->value.kind == VAL_STRING)
+            return s->value.string;
+        if (s && s->value.kind == VAL_UNSUPPORTED)
+            use_unsupported(p, &t, &s->value);
+        if (!s)
+            parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+        fail_expected(p, &t, "a string");
+    }
+    char buf[512];
+    switch (t.type == TK_WORD ? t.kw : -1) {
+    case KW_concat: {
+        expect_punct(p, '(', "'concat'");
+        char *acc = string_param(p);
+        for (;;) {
+            Token *s = next(p);
+            if (is_punct(s, ')'))
+                return acc;
+            if (!is_punct(s, ','))
+                fail_expected(p, s, "',' or ')' in 'concat'");
+            char *more = string_param(p);
+            size_t n1 = strlen(acc), n2 = strlen(more);
+            if (n1 + n2 > (1u << 24))
+                parse_fail(p, s->pos, "string too long");
+            char *joined = tmp_alloc(p, n1 + n2 + 1);
+            memcpy(joined, acc, n1);
+            memcpy(joined + n1, more, n2 + 1);
+            acc = joined;
+        }
+    }
+    case KW_str: {
+        expect_punct(p, '(', "'str'");
+        double v = parse_float_full(p);
+        expect_punct(p, ',', "the value");
+        int w = (int)fmax(-100, fmin(100, parse_float_full(p)));
+        expect_punct(p, ',', "the width");
+        int prec = (int)fmax(-1, fmin(40, parse_float_full(p)));
+        expect_punct(p, ')', "the precision");
+        if (prec < 0)
+            prec = 6;
+        if (w < 0)
+            snprintf(buf, sizeof buf, "%0*.*f", -w, prec, v);
+        else
+            snprintf(buf, sizeof buf, "%*.*f", w, prec, v);
+        return tmp_strndup(p, buf, strlen(buf));
+    }
+    case KW_vstr: {
+        expect_punct(p, '(', "'vstr'");
+        int n = (int)fmax(1, fmin(5, parse_float_full(p)));
+        expect_punct(p, ',', "the component count");
+        double e[5] = { 0 };
+        int terms = n;
+        parse_express(p, e, &terms);
+        expect_punct(p, ',', "the vector");
+        char *sep = string_param(p);
+        expect_punct(p, ',', "the separator");
+        int w = (int)fmax(-100, fmin(100, parse_float_full(p)));
+        expect_punct(p, ',', "the width");
+        int prec = (int)fmax(-1, fmin(40, parse_float_full(p)));
+        expect_punct(p, ')', "the precision");
+        if (prec < 0)
+            prec = 6;
+        size_t used = 0;
+        buf[0] = '\0';
+        for (int i = 0; i < n && used < sizeof buf - 1; i++) {
+            int k = snprintf(buf + used, sizeof buf - used, "%s%*.*f", i ? sep : "", w < 0 ? -w : w, prec, e[i]);
+            if (k < 0)
+                break;
+            used += (size_t)k;
+        }
+        return tmp_strndup(p, buf, strlen(buf));
+    }
+    case KW_chr: {
+        int c = (int)float_param(p);
+        buf[0] = (char)(c > 0 && c < 256 ? c : '?');
+        return tmp_strndup(p, buf, 1);
+    }
+    case KW_substr: {
+        expect_punct(p, '(', "'substr'");
+        char *s = string_param(p);
+        expect_punct(p, ',', "the string");
+        double start = parse_float_full(p);
+        expect_punct(p, ',', "the start");
+        double len = parse_float_full(p);
+        expect_punct(p, ')', "the length");
+        size_t n = strlen(s);
+        if (start < 1 || len < 0 || start - 1 + len > (double)n)
+            parse_fail(p, t.pos, "'substr' range outside the string");
+        return tmp_strndup(p, s + (size_t)start - 1, (size_t)len);
+    }
+    case KW_strupr:
+    case KW_strlwr: {
+        expect_punct(p, '(', "the function name");
+        char *s = string_param(p);
+        expect_punct(p, ')', "the string");
+        char *r = tmp_strndup(p, s, strlen(s));
+        for (char *q = r; *q; q++)
+            if (t.kw == KW_strupr && *q >= 'a' && *q <= 'z')
+                *q = (char)(*q - 32);
+            else if (t.kw == KW_strlwr && *q >= 'A' && *q <= 'Z')
+                *q = (char)(*q + 32);
+        return r;
+    }
+    default:
+        fail_expected(p, &t, "a string");
+    }
+}
+
+/* ---- transforms ----------------------------------------------------------- */
+
+static void compose_checked(Parser *p, Transform *tr, const Transform *u, SourcePos at)
+{
+    transform_compose(tr, u);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            if (!isfinite(tr->m[i][j]) || !isfinite(tr->inv[i][j]))
+                parse_fail(p, at, "this transform makes the object degenerate (infinite or invalid values)");
+}
+
+int parse_transform_item(Parser *p, const Token *t, Transform *tr)
+{
+    if (t->type != TK_WORD)
+        return 0;
+    Token at = *t;
+    Transform u;
+    transform_identity(&u);
+    switch (t->kw) {
+    case KW_translate:
+        transform_translate(&u, parse_vector(p));
+        break;
+    case KW_rotate:
+        transform_rotate(&u, parse_vector(p));
+        break;
+    case KW_scale:
+        transform_scale(&u, parse_scale_vector(p));
+        break;
+    case KW_matrix: {
+        double m[12];
+        expect_punct(p, '<', "'matrix'");
+        for (int i = 0; i < 12; i++) {
+            m[i] = parse_float(p);
+            if (i < 11)
+                parse_comma(p);
+        }
+        expect_punct(p, '>', "the twelve matrix values");
+        if (!transform_matrix(&u, m))
+            parse_fail(p, at.pos, "singular matrix");
+        break;
+    }
+    case KW_transform:
+        parse_transform_block(p, &u);
+        break;
+    default:
+        return 0;
+    }
+    compose_checked(p, tr, &u, at.pos);
+    return 1;
+}
+
+static int transform_identifier(Parser *p, const Token *t, Transform *out)
+{
+    if (t->type != TK_WORD || t->kw >= 0)
+        return 0;
+    Symbol *s = symbol_find(p, t->text, t->len);
+    if (!s)
+        parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+    if (s->value.kind == VAL_UNSUPPORTED)
+        use_unsupported(p, t, &s->value);
+    if (s->value.kind != VAL_TRANSFORM)
+        parse_fail(p, t->pos, "'%.*s' is %s, not a transform", t->len, t->text, kind_name(s->value.kind));
+    *out = *s->value.transform;
+    return 1;
+}
+
+void parse_transform_block(Parser *p, Transform *tr)
+{
+    Token *t = next(p);
+    Transform u;
+    if (!is_punct(t, '{')) {
+        if (transform_identifier(p, t, &u)) {
+            transform_compose(tr, &u);
+            return;
+        }
+        fail_expected(p, t, "'{' after 'transform'");
+    }
+    t = next(p);
+    if (transform_identifier(p, t, &u))
+        transform_compose(tr, &u);
+    else
+        unget(p);
+    for (;;) {
+        t = next(p);
+        if (is_punct(t, '}'))
+            return;
+        if (is_kw(t, KW_inverse)) {
+            double tmp[4][4];
+            memcpy(tmp, tr->m, sizeof tmp);
+            memcpy(tr->m, tr->inv, sizeof tmp);
+            memcpy(tr->inv, tmp, sizeof tmp);
+            continue;
+        }
+        if (!parse_transform_item(p, t, tr))
+            fail_expected(p, t, "a transform or '}' in 'transform'");
+    }
+}

@@ -1,0 +1,310 @@
+/* Characters to tokens, and the stack of open files (#include).
+ *
+ * Every file is read whole into the temporary arena, so a token's spelling can
+ * point into its buffer and #while can jump back by offset. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+const char *dir_of(Parser *p, const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        return ".";
+    if (slash == path)
+        return "/";
+    return tmp_strndup(p, path, (size_t)(slash - path));
+}
+
+void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at)
+{
+    if (p->depth >= MAX_INCLUDE_DEPTH) {
+        /* Name the cycle when there is one: that is the usual cause. */
+        for (int i = 0; i < p->depth; i++)
+            if (strcmp(p->files[i].name, name) == 0)
+                parse_fail(p, at, "#include nested more than %d deep: '%s' includes itself", MAX_INCLUDE_DEPTH,
+                           name);
+        parse_fail(p, at, "#include nested more than %d deep", MAX_INCLUDE_DEPTH);
+    }
+    SourceFile *f = &p->files[p->depth++];
+    memset(f, 0, sizeof *f);
+    f->name = arena_strdup(p->arena, name);
+    if (!f->name)
+        parse_fail(p, at, "out of memory");
+    f->dir = dir_of(p, name);
+    f->buf = buf;
+    f->size = size;
+    f->line = 1;
+    f->col = 1;
+    f->controls_at_entry = p->controls.n;
+}
+
+/* Returns 0 when the file cannot be opened (the caller words the message);
+ * read errors after opening are reported here. */
+int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return 0;
+    size_t cap = 65536, n = 0;
+    char *buf = malloc(cap);
+    for (;;) {
+        if (!buf) {
+            fclose(fp);
+            parse_fail(p, at, "out of memory reading '%s'", shown_name);
+        }
+        n += fread(buf + n, 1, cap - n, fp);
+        if (n < cap)
+            break;
+        char *bigger = cap > ((size_t)1 << 31) ? NULL : realloc(buf, cap * 2);
+        if (!bigger) {
+            free(buf);
+            buf = NULL;
+            continue;
+        }
+        buf = bigger;
+        cap *= 2;
+    }
+    int failed = ferror(fp);
+    fclose(fp);
+    if (failed) {
+        free(buf);
+        parse_fail_io(p, at, "cannot read '%s'", shown_name);
+    }
+    /* Move into the arena so an error longjmp cannot leak it. */
+    char *kept = arena_alloc(p->temp, n + 1);
+    if (!kept) {
+        free(buf);
+        parse_fail(p, at, "out of memory reading '%s'", shown_name);
+    }
+    memcpy(kept, buf, n);
+    free(buf);
+    lex_open_buffer(p, shown_name, kept, n, at);
+    return 1;
+}
+
+LexMark lex_mark(Parser *p)
+{
+    SourceFile *f = &p->files[p->depth - 1];
+    LexMark m = { p->depth, f->offset, f->line, f->col };
+    return m;
+}
+
+void lex_seek(Parser *p, LexMark m)
+{
+    SourceFile *f = &p->files[m.depth - 1];
+    f->offset = m.offset;
+    f->line = m.line;
+    f->col = m.col;
+}
+
+static int peek_char(const SourceFile *f, size_t ahead)
+{
+    return f->offset + ahead < f->size ? (unsigned char)f->buf[f->offset + ahead] : -1;
+}
+
+static void advance(SourceFile *f)
+{
+    if (f->offset >= f->size)
+        return;
+    if (f->buf[f->offset] == '\n') {
+        f->line++;
+        f->col = 1;
+    } else {
+        f->col++;
+    }
+    f->offset++;
+}
+
+static SourcePos here(const SourceFile *f)
+{
+    SourcePos s = { f->name, f->line, f->col };
+    return s;
+}
+
+/* Whitespace and comments. POV-Ray nests block comments. */
+static void skip_space(Parser *p, SourceFile *f)
+{
+    for (;;) {
+        int c = peek_char(f, 0);
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
+            advance(f);
+        } else if (c == '/' && peek_char(f, 1) == '/') {
+            while (f->offset < f->size && f->buf[f->offset] != '\n')
+                advance(f);
+        } else if (c == '/' && peek_char(f, 1) == '*') {
+            SourcePos start = here(f);
+            int level = 0;
+            do {
+                if (f->offset >= f->size)
+                    parse_fail(p, start, "comment starting here has no closing '*/'");
+                if (peek_char(f, 0) == '/' && peek_char(f, 1) == '*') {
+                    level++;
+                    advance(f);
+                } else if (peek_char(f, 0) == '*' && peek_char(f, 1) == '/') {
+                    level--;
+                    advance(f);
+                }
+                advance(f);
+            } while (level > 0);
+        } else {
+            return;
+        }
+    }
+}
+
+int lex_skip_semicolon(Parser *p)
+{
+    SourceFile *f = &p->files[p->depth - 1];
+    skip_space(p, f);
+    if (peek_char(f, 0) == ';') {
+        advance(f);
+        return 1;
+    }
+    return 0;
+}
+
+static int is_ident_start(int c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+static int is_digit(int c) { return c >= '0' && c <= '9'; }
+
+static void lex_number(Parser *p, SourceFile *f, Token *t)
+{
+    size_t start = f->offset;
+    while (is_digit(peek_char(f, 0)))
+        advance(f);
+    if (peek_char(f, 0) == '.') {
+        advance(f);
+        while (is_digit(peek_char(f, 0)))
+            advance(f);
+    }
+    int c = peek_char(f, 0);
+    if (c == 'e' || c == 'E') {
+        int k = 1, s = peek_char(f, 1);
+        if (s == '+' || s == '-')
+            k = 2;
+        if (is_digit(peek_char(f, (size_t)k))) {
+            for (int i = 0; i < k; i++)
+                advance(f);
+            while (is_digit(peek_char(f, 0)))
+                advance(f);
+        }
+    }
+    size_t len = f->offset - start;
+    char tmp[128];
+    if (len >= sizeof tmp)
+        parse_fail(p, t->pos, "number too long");
+    memcpy(tmp, f->buf + start, len);
+    tmp[len] = '\0';
+    t->type = TK_NUMBER;
+    t->number = strtod(tmp, NULL);
+    t->len = (int)len;
+}
+
+static void lex_string(Parser *p, SourceFile *f, Token *t)
+{
+    advance(f); /* the opening quote */
+    size_t start = f->offset;
+    size_t n = 0;
+    while (f->offset < f->size && f->buf[f->offset] != '"') {
+        if (f->buf[f->offset] == '\\' && f->offset + 1 < f->size)
+            advance(f);
+        advance(f);
+        n++;
+    }
+    if (f->offset >= f->size)
+        parse_fail(p, t->pos, "string starting here has no closing '\"'");
+    size_t end = f->offset;
+    advance(f);
+    char *s = tmp_alloc(p, n + 1), *o = s;
+    for (size_t i = start; i < end; i++) {
+        char c = f->buf[i];
+        if (c == '\\' && i + 1 < end) {
+            c = f->buf[++i];
+            switch (c) {
+            case 'n': c = '\n'; break;
+            case 't': c = '\t'; break;
+            case 'r': c = '\r'; break;
+            case 'a': c = '\a'; break;
+            case 'b': c = '\b'; break;
+            case 'f': c = '\f'; break;
+            case 'v': c = '\v'; break;
+            default: break; /* \\ \" \' stand for themselves */
+            }
+        }
+        *o++ = c;
+    }
+    *o = '\0';
+    t->type = TK_STRING;
+    t->string = s;
+    t->len = (int)(f->offset - start + 1);
+}
+
+void lex_raw(Parser *p, Token *t)
+{
+    SourceFile *f = &p->files[p->depth - 1];
+    skip_space(p, f);
+    memset(t, 0, sizeof *t);
+    t->kw = -1;
+    t->pos = here(f);
+    t->text = f->buf + f->offset;
+    int c = peek_char(f, 0);
+    if (c < 0) {
+        t->type = TK_EOF;
+        t->text = "";
+        return;
+    }
+    if (is_digit(c) || (c == '.' && is_digit(peek_char(f, 1)))) {
+        lex_number(p, f, t);
+        return;
+    }
+    if (is_ident_start(c)) {
+        size_t start = f->offset;
+        while (is_ident_start(peek_char(f, 0)) || is_digit(peek_char(f, 0)))
+            advance(f);
+        size_t len = f->offset - start;
+        if (len > 200)
+            parse_fail(p, t->pos, "identifier too long (more than 200 characters)");
+        t->type = TK_WORD;
+        t->len = (int)len;
+        t->kw = keyword_lookup(t->text, t->len);
+        return;
+    }
+    if (c == '"') {
+        lex_string(p, f, t);
+        return;
+    }
+    t->type = TK_PUNCT;
+    t->punct = c;
+    t->len = 1;
+    int c2 = peek_char(f, 1);
+    if (c == '<' && c2 == '=')
+        t->punct = P_LE;
+    else if (c == '>' && c2 == '=')
+        t->punct = P_GE;
+    else if (c == '!' && c2 == '=')
+        t->punct = P_NE;
+    if (t->punct >= 256) {
+        t->len = 2;
+        advance(f);
+    }
+    if (!strchr("{}()[]<>,;=+-*/.?:!&|#", c) || c == '\0') {
+        if (c >= 32 && c < 127)
+            parse_fail(p, t->pos, "unexpected character '%c'", c);
+        parse_fail(p, t->pos, "unexpected byte 0x%02x", (unsigned)c);
+    }
+    advance(f);
+}
+
+int lex_next_is_keyword(Parser *p, int kw)
+{
+    if (p->ungot)
+        return p->tok.type == TK_WORD && p->tok.kw == kw;
+    LexMark m = lex_mark(p);
+    Token t;
+    lex_raw(p, &t);
+    lex_seek(p, m);
+    return t.type == TK_WORD && t.kw == kw;
+}

@@ -1,0 +1,204 @@
+/* camera and light_source.
+ *
+ * The camera follows POV-Ray 3.5+ (Parse_Camera, languageVersion >= 350):
+ * modifiers are collected in any order, then applied in a fixed order --
+ * right, direction, angle, up, sky, location, look_at -- and the transforms
+ * last. The stored vectors are the final, world-space ones. */
+#include <math.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+void default_camera(SceneCamera *cam)
+{
+    memset(cam, 0, sizeof *cam);
+    cam->kind = CAMERA_PERSPECTIVE;
+    cam->location = v3(0, 0, 0);
+    cam->direction = v3(0, 0, 1);
+    cam->up = v3(0, 1, 0);
+    cam->right = v3(1.33, 0, 0);
+}
+
+static void transform_camera(SceneCamera *cam, const Transform *tr)
+{
+    cam->location = transform_point(tr, cam->location);
+    cam->direction = transform_direction(tr, cam->direction);
+    cam->up = transform_direction(tr, cam->up);
+    cam->right = transform_direction(tr, cam->right);
+}
+
+static const double CAMERA_EPSILON = 1e-10; /* POV-Ray's EPSILON */
+
+void parse_camera(Parser *p, const Token *kw, SceneCamera *cam)
+{
+    begin_block(p, "camera");
+    Transform tr;
+    transform_identity(&tr);
+
+    /* `camera { Declared transforms }`: only transforms may follow. */
+    Token *t = next(p);
+    if (t->type == TK_WORD && t->kw < 0) {
+        Symbol *s = symbol_find(p, t->text, t->len);
+        if (!s)
+            parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+        if (s->value.kind == VAL_UNSUPPORTED)
+            use_unsupported(p, t, &s->value);
+        if (s->value.kind != VAL_CAMERA)
+            parse_fail(p, t->pos, "'%.*s' is not a camera", t->len, t->text);
+        *cam = *s->value.camera;
+        cam->pos = kw->pos;
+        for (;;) {
+            t = next(p);
+            if (is_punct(t, '}'))
+                break;
+            if (!parse_transform_item(p, t, &tr))
+                fail_expected(p, t, "a transform or '}' after a camera identifier");
+        }
+        transform_camera(cam, &tr);
+        return;
+    }
+    unget(p);
+
+    SceneCamera c;
+    default_camera(&c);
+    c.pos = kw->pos;
+    Vec3 sky = v3(0, 1, 0), look_at = v3(0, 0, 1);
+    int had_up = 0, had_right = 0, had_angle = 0, had_look_at = 0;
+    double angle = 0.0;
+    Token angle_tok = *kw;
+
+    t = next(p);
+    if (is_kw(t, KW_perspective))
+        c.kind = CAMERA_PERSPECTIVE;
+    else if (is_kw(t, KW_orthographic))
+        c.kind = CAMERA_ORTHOGRAPHIC;
+    else if (t->type == TK_WORD && (t->kw == KW_fisheye || t->kw == KW_ultra_wide_angle || t->kw == KW_omnimax ||
+                                    t->kw == KW_panoramic || t->kw == KW_spherical || t->kw == KW_cylinder ||
+                                    t->kw == KW_mesh_camera))
+        unsupported(p, t);
+    else
+        unget(p);
+
+    for (;;) {
+        t = next(p);
+        if (is_punct(t, '}'))
+            break;
+        if (parse_transform_item(p, t, &tr))
+            continue;
+        switch (t->type == TK_WORD ? t->kw : -1) {
+        case KW_location: c.location = parse_vector(p); break;
+        case KW_look_at: look_at = parse_vector(p); had_look_at = 1; break;
+        case KW_direction: c.direction = parse_vector(p); break;
+        case KW_up: c.up = parse_vector(p); had_up = 1; break;
+        case KW_right: c.right = parse_vector(p); had_right = 1; break;
+        case KW_sky: sky = parse_vector(p); break;
+        case KW_angle:
+            angle_tok = *t;
+            if (c.kind == CAMERA_ORTHOGRAPHIC && !token_starts_float(p, peek(p)))
+                angle = 0.0;
+            else
+                angle = parse_float(p);
+            if (angle < 0.0)
+                parse_fail(p, t->pos, "negative viewing angle");
+            had_angle = 1;
+            break;
+        case KW_perspective: case KW_orthographic: case KW_fisheye: case KW_ultra_wide_angle:
+        case KW_omnimax: case KW_panoramic: case KW_spherical: case KW_cylinder:
+            parse_fail(p, t->pos, "the camera type must come first in 'camera'");
+        case KW_aperture: case KW_blur_samples: case KW_focal_point: case KW_confidence: case KW_variance:
+        case KW_bokeh: case KW_normal:
+            unsupported(p, t);
+        default:
+            fail_expected(p, t, "a camera item or '}' in 'camera'");
+        }
+    }
+
+    if (had_angle) {
+        if (angle >= 180.0)
+            parse_fail(p, angle_tok.pos, "viewing angle has to be smaller than 180 degrees");
+        if (angle > 0.0) {
+            double right_len = v3_length(c.right);
+            c.direction = v3_scale(v3_normalize(c.direction), right_len / tan(angle * M_PI / 360.0) / 2.0);
+        }
+    }
+    if (had_look_at) {
+        double dir_len = v3_length(c.direction), up_len = v3_length(c.up), right_len = v3_length(c.right);
+        double handedness = v3_dot(v3_cross(c.up, c.direction), c.right);
+        Vec3 d = v3_sub(look_at, c.location);
+        if (v3_dot(d, d) < CAMERA_EPSILON)
+            parse_fail(p, kw->pos, "camera location and look_at point must be different");
+        d = v3_normalize(d);
+        Vec3 old_right = c.right;
+        c.right = v3_cross(sky, d);
+        if (fabs(c.right.x) < CAMERA_EPSILON && fabs(c.right.y) < CAMERA_EPSILON &&
+            fabs(c.right.z) < CAMERA_EPSILON)
+            c.right = old_right; /* POV-Ray warns and keeps the given right */
+        c.right = v3_normalize(c.right);
+        c.up = v3_cross(d, c.right);
+        c.direction = v3_scale(d, dir_len);
+        c.right = v3_scale(c.right, handedness > 0.0 ? right_len : -right_len);
+        c.up = v3_scale(c.up, up_len);
+    }
+    if (c.kind == CAMERA_ORTHOGRAPHIC && ((!had_up && !had_right) || had_angle)) {
+        /* Same image area as the perspective camera would show at look_at. */
+        Vec3 la = had_look_at ? look_at : v3(0, 0, 1);
+        double k1 = v3_length(v3_sub(la, c.location)), k2 = v3_length(c.direction);
+        if (k1 > CAMERA_EPSILON && k2 > CAMERA_EPSILON) {
+            c.right = v3_scale(c.right, k1 / k2);
+            c.up = v3_scale(c.up, k1 / k2);
+        }
+    }
+    transform_camera(&c, &tr);
+    *cam = c;
+}
+
+void transform_light(SceneLight *l, const Transform *tr)
+{
+    l->location = transform_point(tr, l->location);
+    l->point_at = transform_point(tr, l->point_at);
+}
+
+SceneLight *parse_light_source(Parser *p, const Token *kw)
+{
+    begin_block(p, "light_source");
+    SceneLight *l = palloc(p, sizeof *l);
+    l->kind = LIGHT_POINT;
+    l->pos = kw->pos;
+    l->location = parse_vector(p);
+    parse_comma(p);
+    parse_colour(p, &l->colour, 0);
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, '}'))
+            break;
+        /* As in POV-Ray, a transform moves what is set so far: a point_at
+         * written after it is taken as written. */
+        Transform tr;
+        transform_identity(&tr);
+        if (parse_transform_item(p, t, &tr)) {
+            transform_light(l, &tr);
+            continue;
+        }
+        switch (t->type == TK_WORD ? t->kw : -1) {
+        case KW_shadowless: l->shadowless = 1; break;
+        case KW_parallel: l->kind = LIGHT_PARALLEL; break;
+        case KW_point_at: l->point_at = parse_vector(p); break;
+        case KW_fade_distance: l->fade_distance = parse_float(p); break;
+        case KW_fade_power: l->fade_power = parse_float(p); break;
+        case KW_media_attenuation:
+        case KW_media_interaction: /* only matter with media, which is unsupported */
+            if (token_starts_float(p, peek(p)))
+                (void)parse_float(p);
+            break;
+        case KW_photons: /* photon settings: parsed past, not modelled */
+            begin_block(p, "photons");
+            skip_block_body(p);
+            break;
+        default:
+            if (t->type == TK_WORD && t->kw >= 0)
+                unsupported(p, t); /* spotlight, area_light, cylinder, looks_like, ... */
+            fail_expected(p, t, "a light_source item or '}' in 'light_source'");
+        }
+    }
+    return l;
+}

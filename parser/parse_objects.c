@@ -1,0 +1,629 @@
+/* Objects: polygon, triangle, smooth_triangle, mesh, mesh2, box, plane,
+ * union and object{}, with their modifiers. Every object keeps its own
+ * transform, composed from the transforms written on it in order; a union's
+ * children keep theirs (the engine applies child, then parent). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+static const double POLY_EPSILON = 1e-10; /* POV-Ray's EPSILON for closing outlines */
+
+int is_object_keyword(int kw)
+{
+    switch (kw) {
+    case KW_polygon: case KW_triangle: case KW_smooth_triangle: case KW_mesh: case KW_mesh2:
+    case KW_box: case KW_plane: case KW_union: case KW_object:
+    /* POV-Ray objects hstrace cannot render */
+    case KW_sphere: case KW_cylinder: case KW_cone: case KW_torus: case KW_disc: case KW_blob:
+    case KW_lathe: case KW_sor: case KW_prism: case KW_superellipsoid: case KW_sphere_sweep:
+    case KW_height_field: case KW_bicubic_patch: case KW_text: case KW_julia_fractal:
+    case KW_isosurface: case KW_parametric: case KW_poly: case KW_polynomial: case KW_cubic:
+    case KW_quartic: case KW_quadric: case KW_ovus: case KW_intersection: case KW_difference:
+    case KW_merge: case KW_light_group:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
+{
+    SceneObject *o = palloc(p, sizeof *o);
+    o->kind = kind;
+    o->pos = t->pos;
+    transform_identity(&o->transform);
+    return o;
+}
+
+/* The object's own texture, copied so a shared (declared) one stays intact. */
+static SceneTexture *own_texture(Parser *p, SceneObject *o, const Token *t)
+{
+    SceneTexture *tex;
+    if (o->texture) {
+        tex = palloc(p, sizeof *tex);
+        *tex = *o->texture;
+    } else {
+        tex = new_default_texture(p);
+        tex->pos = t->pos;
+    }
+    o->texture = tex;
+    return tex;
+}
+
+static void skip_optional_float(Parser *p)
+{
+    if (token_starts_float(p, peek(p)))
+        (void)parse_float(p);
+}
+
+static int optional_bool(Parser *p)
+{
+    if (token_starts_float(p, peek(p)))
+        return fabs(parse_float(p)) > 1e-5;
+    return 1;
+}
+
+static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const Token *at)
+{
+    /* A second texture is a layer on top of the first: only an opaque top
+     * layer, which hides the rest, is supported. */
+    if (o->texture && (tex->pigment.colour.filter != 0.0 || tex->pigment.colour.transmit != 0.0))
+        parse_fail(p, at->pos, "layered textures are not supported by hstrace");
+    o->texture = tex;
+}
+
+static void parse_material(Parser *p, SceneObject *o)
+{
+    begin_block(p, "material");
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, '}'))
+            return;
+        Token at = *t;
+        if (is_kw(t, KW_texture)) {
+            apply_texture(p, o, parse_texture(p), &at);
+        } else if (is_kw(t, KW_interior)) {
+            Interior *in = palloc(p, sizeof *in);
+            *in = o->interior ? *o->interior : scene_default_interior();
+            parse_interior(p, in);
+            o->interior = in;
+        } else if (!parse_transform_item(p, t, &o->transform)) {
+            if (t->type == TK_WORD && t->kw < 0)
+                parse_fail(p, t->pos, "material identifiers are not supported by hstrace");
+            fail_expected(p, t, "texture, interior, a transform or '}' in 'material'");
+        }
+    }
+}
+
+/* Modifiers up to the object's closing '}'. */
+static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
+{
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, '}'))
+            return;
+        Token at = *t;
+        if (parse_transform_item(p, t, &o->transform))
+            continue;
+        switch (t->type == TK_WORD ? t->kw : -1) {
+        case KW_texture:
+            apply_texture(p, o, parse_texture(p), &at);
+            break;
+        case KW_pigment:
+            parse_pigment(p, &own_texture(p, o, &at)->pigment);
+            break;
+        case KW_finish:
+            parse_finish(p, &own_texture(p, o, &at)->finish);
+            break;
+        case KW_normal:
+            /* not modelled, but as in POV-Ray it gives the object a texture */
+            (void)own_texture(p, o, &at);
+            skip_normal(p);
+            break;
+        case KW_interior: {
+            Interior *in = palloc(p, sizeof *in);
+            *in = o->interior ? *o->interior : scene_default_interior();
+            parse_interior(p, in);
+            o->interior = in;
+            break;
+        }
+        case KW_material: parse_material(p, o); break;
+        case KW_no_shadow: o->no_shadow = 1; break;
+        case KW_no_image: o->no_image = 1; break;
+        case KW_no_reflection: o->no_reflection = 1; break;
+        case KW_no_radiosity: break; /* no radiosity in hstrace */
+        case KW_hollow: o->hollow = optional_bool(p) ? 1u : 0u; break;
+        case KW_inverse: o->inverse = !o->inverse; break;
+        case KW_double_illuminate: o->double_illuminate = 1; break;
+        case KW_sturm: case KW_split_union: skip_optional_float(p); break;
+        case KW_uv_mapping: case KW_cutaway_textures: break; /* no effect on solid colours */
+        case KW_photons: case KW_radiosity: /* parsed past: hstrace has neither */
+            begin_block(p, keyword_name(at.kw));
+            skip_block_body(p);
+            break;
+        default:
+            if (token_starts_colour(p, t)) { /* a "quick colour": preview only */
+                Colour ignored;
+                unget(p);
+                parse_colour(p, &ignored, 1);
+                break;
+            }
+            if (t->type == TK_WORD && t->kw >= 0 && !is_object_keyword(t->kw))
+                unsupported(p, t); /* bounded_by, clipped_by, ... */
+            {
+                char msg[96];
+                snprintf(msg, sizeof msg, "an object modifier or '}' in '%s'", what);
+                fail_expected(p, t, msg);
+            }
+        }
+    }
+}
+
+static Vec3 *vec3_array(Parser *p, const TempVec *v)
+{
+    Vec3 *out = palloc(p, sizeof(Vec3) * (size_t)(v->n > 0 ? v->n : 1));
+    if (v->n)
+        memcpy(out, v->data, sizeof(Vec3) * (size_t)v->n);
+    return out;
+}
+
+static int near_point(Vec3 a, Vec3 b)
+{
+    return fabs(a.x - b.x) < POLY_EPSILON && fabs(a.y - b.y) < POLY_EPSILON && fabs(a.z - b.z) < POLY_EPSILON;
+}
+
+/* An element count read from the file, sanity-checked against garbage. */
+static int parse_count(Parser *p, const char *what, int minimum)
+{
+    Token at = *peek(p);
+    double n = parse_float(p);
+    if (!(n >= minimum) || n > 50000000.0)
+        parse_fail(p, at.pos, "%s: %g is not a usable count", what, n);
+    return (int)n;
+}
+
+static SceneObject *parse_polygon(Parser *p, const Token *kw)
+{
+    begin_block(p, "polygon");
+    SceneObject *o = new_object(p, OBJ_POLYGON, kw);
+    Token at = *peek(p);
+    double count = parse_float(p);
+    if (count < 3)
+        parse_fail(p, at.pos, "polygon needs at least three points");
+    if (count > 50000000.0)
+        parse_fail(p, at.pos, "polygon: %g is not a usable count", count);
+    int n = (int)count;
+    TempVec pts;
+    tvec_init(&pts, sizeof(Vec3));
+    for (int i = 0; i < n; i++) {
+        parse_comma(p);
+        *(Vec3 *)tvec_push(p, &pts) = parse_vector(p);
+    }
+    /* POV-Ray's outline rule (Parse_Polygon): an outline closes when a point
+     * repeats its first point; the next point starts a new outline. */
+    TempVec starts;
+    tvec_init(&starts, sizeof(int));
+    *(int *)tvec_push(p, &starts) = 0;
+    Vec3 *v = pts.data;
+    Vec3 first = v[0];
+    int closed = 0;
+    for (int i = 1; i < n; i++) {
+        closed = 0;
+        if (near_point(first, v[i])) {
+            v[i] = first;
+            i++;
+            if (i < n) {
+                first = v[i];
+                *(int *)tvec_push(p, &starts) = i;
+            }
+            closed = 1;
+        }
+    }
+    if (!closed) { /* POV-Ray warns "Polygon not closed. Closing it." */
+        *(Vec3 *)tvec_push(p, &pts) = first;
+        v = pts.data;
+    }
+    *(int *)tvec_push(p, &starts) = pts.n;
+    o->u.polygon.npoints = pts.n;
+    o->u.polygon.points = vec3_array(p, &pts);
+    o->u.polygon.noutlines = starts.n - 1;
+    o->u.polygon.outline_start = palloc(p, sizeof(int) * (size_t)starts.n);
+    memcpy(o->u.polygon.outline_start, starts.data, sizeof(int) * (size_t)starts.n);
+    parse_object_mods(p, o, "polygon");
+    return o;
+}
+
+static void parse_triangle_points(Parser *p, SceneObject *o, int smooth)
+{
+    for (int i = 0; i < 3; i++) {
+        if (i)
+            parse_comma(p);
+        o->u.triangle.v[i] = parse_vector(p);
+        if (smooth) {
+            parse_comma(p);
+            o->u.triangle.n[i] = parse_vector(p);
+        }
+    }
+    o->u.triangle.has_normals = smooth;
+}
+
+static SceneObject *parse_triangle(Parser *p, const Token *kw, int smooth)
+{
+    const char *name = smooth ? "smooth_triangle" : "triangle";
+    begin_block(p, name);
+    SceneObject *o = new_object(p, OBJ_TRIANGLE, kw);
+    parse_triangle_points(p, o, smooth);
+    parse_object_mods(p, o, name);
+    return o;
+}
+
+static SceneObject *parse_box(Parser *p, const Token *kw)
+{
+    begin_block(p, "box");
+    SceneObject *o = new_object(p, OBJ_BOX, kw);
+    o->u.box.corner1 = parse_vector(p);
+    parse_comma(p);
+    o->u.box.corner2 = parse_vector(p);
+    parse_object_mods(p, o, "box");
+    return o;
+}
+
+static SceneObject *parse_plane(Parser *p, const Token *kw)
+{
+    begin_block(p, "plane");
+    SceneObject *o = new_object(p, OBJ_PLANE, kw);
+    Token at = *peek(p);
+    o->u.plane.normal = parse_vector(p);
+    if (v3_length(o->u.plane.normal) == 0.0)
+        parse_fail(p, at.pos, "degenerate plane normal");
+    parse_comma(p);
+    o->u.plane.distance = parse_float(p);
+    parse_object_mods(p, o, "plane");
+    return o;
+}
+
+/* ---- meshes ------------------------------------------------------------ */
+
+typedef struct {
+    TempVec vertices, normals, faces, textures;
+} MeshBuilder;
+
+static int add_mesh_texture(Parser *p, MeshBuilder *mb, const SceneTexture *t)
+{
+    for (int i = 0; i < mb->textures.n; i++)
+        if (((const SceneTexture **)mb->textures.data)[i] == t)
+            return i;
+    *(const SceneTexture **)tvec_push(p, &mb->textures) = t;
+    return mb->textures.n - 1;
+}
+
+static void finish_mesh(Parser *p, SceneObject *o, MeshBuilder *mb)
+{
+    o->u.mesh.nvertices = mb->vertices.n;
+    o->u.mesh.vertices = vec3_array(p, &mb->vertices);
+    o->u.mesh.nnormals = mb->normals.n;
+    o->u.mesh.normals = vec3_array(p, &mb->normals);
+    o->u.mesh.nfaces = mb->faces.n;
+    o->u.mesh.faces = palloc(p, sizeof(MeshFace) * (size_t)(mb->faces.n ? mb->faces.n : 1));
+    if (mb->faces.n)
+        memcpy(o->u.mesh.faces, mb->faces.data, sizeof(MeshFace) * (size_t)mb->faces.n);
+    o->u.mesh.ntextures = mb->textures.n;
+    o->u.mesh.textures = palloc(p, sizeof(SceneTexture *) * (size_t)(mb->textures.n ? mb->textures.n : 1));
+    if (mb->textures.n)
+        memcpy(o->u.mesh.textures, mb->textures.data, sizeof(SceneTexture *) * (size_t)mb->textures.n);
+}
+
+static void init_mesh_builder(MeshBuilder *mb)
+{
+    tvec_init(&mb->vertices, sizeof(Vec3));
+    tvec_init(&mb->normals, sizeof(Vec3));
+    tvec_init(&mb->faces, sizeof(MeshFace));
+    tvec_init(&mb->textures, sizeof(SceneTexture *));
+}
+
+static SceneObject *parse_mesh(Parser *p, const Token *kw)
+{
+    begin_block(p, "mesh");
+    SceneObject *o = new_object(p, OBJ_MESH, kw);
+    MeshBuilder mb;
+    init_mesh_builder(&mb);
+    for (;;) {
+        Token *t = next(p);
+        if (is_kw(t, KW_triangle) || is_kw(t, KW_smooth_triangle)) {
+            int smooth = t->kw == KW_smooth_triangle;
+            begin_block(p, smooth ? "smooth_triangle" : "triangle");
+            SceneObject tri;
+            memset(&tri, 0, sizeof tri);
+            parse_triangle_points(p, &tri, smooth);
+            MeshFace *f = tvec_push(p, &mb.faces);
+            for (int i = 0; i < 3; i++) {
+                f->v[i] = mb.vertices.n;
+                *(Vec3 *)tvec_push(p, &mb.vertices) = tri.u.triangle.v[i];
+                f->n[i] = -1;
+                if (smooth) {
+                    f->n[i] = mb.normals.n;
+                    *(Vec3 *)tvec_push(p, &mb.normals) = tri.u.triangle.n[i];
+                }
+            }
+            f->texture = -1;
+            for (;;) {
+                t = next(p);
+                if (is_punct(t, '}'))
+                    break;
+                if (is_kw(t, KW_texture)) {
+                    int idx = add_mesh_texture(p, &mb, parse_texture(p));
+                    ((MeshFace *)mb.faces.data)[mb.faces.n - 1].texture = idx;
+                } else if (is_kw(t, KW_uv_vectors)) {
+                    for (int i = 0; i < 3; i++) {
+                        if (i)
+                            parse_comma(p);
+                        (void)parse_vector(p);
+                    }
+                } else {
+                    if (t->type == TK_WORD && t->kw >= 0)
+                        unsupported(p, t);
+                    fail_expected(p, t, "texture, uv_vectors or '}' in a mesh triangle");
+                }
+            }
+        } else if (is_kw(t, KW_inside_vector)) {
+            (void)parse_vector(p);
+        } else if (is_kw(t, KW_hierarchy)) {
+            skip_optional_float(p);
+        } else {
+            unget(p);
+            break;
+        }
+    }
+    finish_mesh(p, o, &mb);
+    parse_object_mods(p, o, "mesh");
+    return o;
+}
+
+static void parse_vector_list(Parser *p, TempVec *out, const char *what)
+{
+    begin_block(p, what);
+    int n = parse_count(p, what, 0);
+    for (int i = 0; i < n; i++) {
+        parse_comma(p);
+        *(Vec3 *)tvec_push(p, out) = parse_vector(p);
+    }
+    expect_punct(p, '}', what);
+}
+
+static int index_in_range(double v, int n) { return v >= 0 && v < n; }
+
+static SceneObject *parse_mesh2(Parser *p, const Token *kw)
+{
+    begin_block(p, "mesh2");
+    SceneObject *o = new_object(p, OBJ_MESH, kw);
+    MeshBuilder mb;
+    init_mesh_builder(&mb);
+    TempVec uvs;
+    tvec_init(&uvs, sizeof(Vec3));
+    int have_faces = 0, have_normal_indices = 0;
+    for (;;) {
+        Token *t = next(p);
+        Token at = *t;
+        switch (t->type == TK_WORD ? t->kw : -1) {
+        case KW_vertex_vectors:
+            mb.vertices.n = 0;
+            parse_vector_list(p, &mb.vertices, "vertex_vectors");
+            continue;
+        case KW_normal_vectors:
+            mb.normals.n = 0;
+            parse_vector_list(p, &mb.normals, "normal_vectors");
+            for (int i = 0; i < mb.normals.n; i++) {
+                Vec3 *nv = (Vec3 *)mb.normals.data + i;
+                if (v3_length(*nv) == 0.0)
+                    *nv = v3(1, 0, 0); /* as POV-Ray, with its warning */
+            }
+            continue;
+        case KW_uv_vectors: /* uv mapping: parsed, not needed for solid colours */
+            uvs.n = 0;
+            parse_vector_list(p, &uvs, "uv_vectors");
+            continue;
+        case KW_texture_list: {
+            begin_block(p, "texture_list");
+            int n = parse_count(p, "texture_list", 0);
+            mb.textures.n = 0;
+            for (int i = 0; i < n; i++) {
+                parse_comma(p);
+                Token *tt = next(p);
+                if (!is_kw(tt, KW_texture))
+                    fail_expected(p, tt, "'texture' in 'texture_list'");
+                *(const SceneTexture **)tvec_push(p, &mb.textures) = parse_texture(p);
+            }
+            expect_punct(p, '}', "texture_list");
+            continue;
+        }
+        case KW_face_indices: {
+            begin_block(p, "face_indices");
+            int n = parse_count(p, "face_indices", 1);
+            mb.faces.n = 0;
+            for (int i = 0; i < n; i++) {
+                parse_comma(p);
+                Token vt = *peek(p);
+                Vec3 idx = parse_vector(p);
+                if (!index_in_range(idx.x, mb.vertices.n) || !index_in_range(idx.y, mb.vertices.n) ||
+                    !index_in_range(idx.z, mb.vertices.n))
+                    parse_fail(p, vt.pos, "mesh2 face index out of range (%d vertices)", mb.vertices.n);
+                MeshFace *f = tvec_push(p, &mb.faces);
+                f->v[0] = (int)idx.x;
+                f->v[1] = (int)idx.y;
+                f->v[2] = (int)idx.z;
+                f->n[0] = f->n[1] = f->n[2] = -1;
+                f->texture = -1;
+                /* one texture index, or three (per vertex: hstrace uses the first) */
+                for (int k = 0; k < 3; k++) {
+                    parse_comma(p);
+                    if (!token_starts_float(p, peek(p)))
+                        break;
+                    Token it = *peek(p);
+                    double ti = parse_float(p);
+                    if (!index_in_range(ti, mb.textures.n))
+                        parse_fail(p, it.pos, "texture index out of range in mesh2");
+                    if (k == 0)
+                        f->texture = (int)ti;
+                }
+            }
+            expect_punct(p, '}', "face_indices");
+            have_faces = 1;
+            continue;
+        }
+        case KW_normal_indices: {
+            if (!have_faces)
+                parse_fail(p, at.pos, "normal_indices must follow face_indices in mesh2");
+            begin_block(p, "normal_indices");
+            Token ct = *peek(p);
+            int n = parse_count(p, "normal_indices", 0);
+            if (n != mb.faces.n)
+                parse_fail(p, ct.pos, "number of normal indices must equal number of faces");
+            for (int i = 0; i < n; i++) {
+                parse_comma(p);
+                Token vt = *peek(p);
+                Vec3 idx = parse_vector(p);
+                if (!index_in_range(idx.x, mb.normals.n) || !index_in_range(idx.y, mb.normals.n) ||
+                    !index_in_range(idx.z, mb.normals.n))
+                    parse_fail(p, vt.pos, "mesh2 normal index out of range (%d normals)", mb.normals.n);
+                MeshFace *f = (MeshFace *)mb.faces.data + i;
+                f->n[0] = (int)idx.x;
+                f->n[1] = (int)idx.y;
+                f->n[2] = (int)idx.z;
+            }
+            expect_punct(p, '}', "normal_indices");
+            have_normal_indices = 1;
+            continue;
+        }
+        case KW_uv_indices: /* parsed past like uv_vectors */
+            begin_block(p, "uv_indices");
+            skip_block_body(p);
+            continue;
+        case KW_inside_vector:
+            (void)parse_vector(p);
+            continue;
+        default:
+            break;
+        }
+        unget(p);
+        break;
+    }
+    Token end = *peek(p);
+    if (mb.vertices.n == 0)
+        parse_fail(p, end.pos, "vertex_vectors not found in mesh2");
+    if (!have_faces)
+        parse_fail(p, end.pos, "face_indices not found in mesh2");
+    if (!have_normal_indices && mb.normals.n > 0) {
+        /* POV-Ray: as many normals as vertices means "same indices" */
+        if (mb.normals.n != mb.vertices.n)
+            parse_fail(p, end.pos, "normal_indices missing in mesh2");
+        for (int i = 0; i < mb.faces.n; i++) {
+            MeshFace *f = (MeshFace *)mb.faces.data + i;
+            memcpy(f->n, f->v, sizeof f->n);
+        }
+    }
+    finish_mesh(p, o, &mb);
+    parse_object_mods(p, o, "mesh2");
+    return o;
+}
+
+/* ---- union and object{} ------------------------------------------------- */
+
+static SceneObject *parse_union(Parser *p, const Token *kw)
+{
+    begin_block(p, "union");
+    SceneObject *o = new_object(p, OBJ_UNION, kw);
+    TempVec children;
+    tvec_init(&children, sizeof(SceneObject *));
+    for (;;) {
+        Token t = *next(p);
+        SceneObject *child = NULL;
+        SceneLight *light = NULL;
+        if (!parse_object(p, &t, &child, &light)) {
+            unget(p);
+            break;
+        }
+        if (light)
+            parse_fail(p, t.pos, "a light_source inside a union is not supported by hstrace");
+        *(SceneObject **)tvec_push(p, &children) = child;
+    }
+    o->u.csg.nchildren = children.n;
+    o->u.csg.children = palloc(p, sizeof(SceneObject *) * (size_t)(children.n ? children.n : 1));
+    if (children.n)
+        memcpy(o->u.csg.children, children.data, sizeof(SceneObject *) * (size_t)children.n);
+    parse_object_mods(p, o, "union");
+    return o;
+}
+
+static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj, SceneLight **light)
+{
+    begin_block(p, "object");
+    Token t = *next(p);
+    if (t.type == TK_WORD && t.kw < 0) {
+        Symbol *s = symbol_find(p, t.text, t.len);
+        if (!s)
+            parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+        const Value *v = &s->value;
+        if (v->kind == VAL_UNSUPPORTED)
+            use_unsupported(p, &t, v);
+        if (v->kind == VAL_LIGHT) {
+            SceneLight *l = palloc(p, sizeof *l);
+            *l = *v->light;
+            l->pos = kw->pos;
+            for (;;) {
+                Token *m = next(p);
+                if (is_punct(m, '}'))
+                    break;
+                Transform tr;
+                transform_identity(&tr);
+                if (!parse_transform_item(p, m, &tr))
+                    fail_expected(p, m, "a transform or '}' after a light_source identifier");
+                transform_light(l, &tr);
+            }
+            *light = l;
+            return;
+        }
+        if (v->kind != VAL_OBJECT)
+            parse_fail(p, t.pos, "'%.*s' is not an object", t.len, t.text);
+        SceneObject *o = palloc(p, sizeof *o);
+        *o = *v->object;
+        o->pos = kw->pos;
+        parse_object_mods(p, o, "object");
+        *obj = o;
+        return;
+    }
+    SceneObject *inner = NULL;
+    SceneLight *inner_light = NULL;
+    if (!parse_object(p, &t, &inner, &inner_light))
+        fail_expected(p, &t, "an object or object identifier after 'object {'");
+    if (inner_light)
+        parse_fail(p, t.pos, "a light_source inside 'object' is not supported by hstrace");
+    parse_object_mods(p, inner, "object");
+    *obj = inner;
+}
+
+int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
+{
+    *obj = NULL;
+    *light = NULL;
+    if (t->type != TK_WORD || (!is_object_keyword(t->kw) && t->kw != KW_light_source))
+        return 0;
+    Token kw = *t;
+    nesting_enter(p, &kw);
+    switch (kw.kw) {
+    case KW_polygon: *obj = parse_polygon(p, &kw); break;
+    case KW_triangle: *obj = parse_triangle(p, &kw, 0); break;
+    case KW_smooth_triangle: *obj = parse_triangle(p, &kw, 1); break;
+    case KW_mesh: *obj = parse_mesh(p, &kw); break;
+    case KW_mesh2: *obj = parse_mesh2(p, &kw); break;
+    case KW_box: *obj = parse_box(p, &kw); break;
+    case KW_plane: *obj = parse_plane(p, &kw); break;
+    case KW_union: *obj = parse_union(p, &kw); break;
+    case KW_object: parse_object_statement(p, &kw, obj, light); break;
+    case KW_light_source: *light = parse_light_source(p, &kw); break;
+    default: unsupported(p, &kw);
+    }
+    nesting_leave(p);
+    return 1;
+}

@@ -1,0 +1,600 @@
+/* The top level: scene statements, #declare values, errors, and the public
+ * entry points of parser.h. */
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+/* ---- errors ------------------------------------------------------------ */
+
+static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt, va_list ap)
+{
+    ParseError *e = p->err;
+    snprintf(e->file, sizeof e->file, "%s", pos.file ? pos.file : "");
+    e->line = pos.line;
+    e->column = pos.column;
+    e->is_io = is_io;
+    vsnprintf(e->message, sizeof e->message, fmt, ap);
+    longjmp(p->fail, 1);
+}
+
+void parse_fail(Parser *p, SourcePos pos, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfail(p, pos, 0, fmt, ap);
+}
+
+void parse_fail_io(Parser *p, SourcePos pos, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfail(p, pos, 1, fmt, ap);
+}
+
+const char *describe_token(Parser *p, const Token *t)
+{
+    char buf[80];
+    switch (t->type) {
+    case TK_EOF:
+        return "the end of the file";
+    case TK_STRING:
+        snprintf(buf, sizeof buf, "string \"%.40s%s\"", t->string, strlen(t->string) > 40 ? "..." : "");
+        break;
+    default:
+        snprintf(buf, sizeof buf, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
+        break;
+    }
+    return tmp_strndup(p, buf, strlen(buf));
+}
+
+void fail_expected(Parser *p, const Token *found, const char *what)
+{
+    parse_fail(p, found->pos, "expected %s, found %s", what, describe_token(p, found));
+}
+
+/* Inside a #declare an unsupported thing only poisons the declaration: the
+ * error comes when (if ever) the scene uses it. */
+static _Noreturn void poison(Parser *p, const char *what, SourcePos at)
+{
+    p->poison_what = what;
+    p->poison_at = at;
+    longjmp(*p->poison_jmp, 1);
+}
+
+void unsupported(Parser *p, const Token *t)
+{
+    char buf[96];
+    snprintf(buf, sizeof buf, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
+    if (p->declaring)
+        poison(p, tmp_strndup(p, buf, strlen(buf)), t->pos);
+    parse_fail(p, t->pos, "%s is not supported by hstrace", buf);
+}
+
+void use_unsupported(Parser *p, const Token *t, const Value *v)
+{
+    if (p->declaring)
+        poison(p, v->what, v->declared_at);
+    parse_fail(p, t->pos, "%s is not supported by hstrace (declared at %s:%d)", v->what, v->declared_at.file,
+               v->declared_at.line);
+}
+
+int nesting_enter(Parser *p, const Token *t)
+{
+    if (++p->nesting > MAX_NESTING)
+        parse_fail(p, t->pos, "nested too deeply (more than %d levels)", MAX_NESTING);
+    return p->nesting;
+}
+
+void nesting_leave(Parser *p)
+{
+    p->nesting--;
+}
+
+/* ---- memory ------------------------------------------------------------ */
+
+static _Noreturn void out_of_memory(Parser *p)
+{
+    parse_fail(p, p->last_pos, "out of memory");
+}
+
+void *palloc(Parser *p, size_t size)
+{
+    void *m = arena_alloc(p->arena, size);
+    if (!m)
+        out_of_memory(p);
+    return m;
+}
+
+void *tmp_alloc(Parser *p, size_t size)
+{
+    void *m = arena_alloc(p->temp, size);
+    if (!m)
+        out_of_memory(p);
+    return m;
+}
+
+char *tmp_strndup(Parser *p, const char *s, size_t n)
+{
+    char *r = tmp_alloc(p, n + 1);
+    memcpy(r, s, n);
+    r[n] = '\0';
+    return r;
+}
+
+void tvec_init(TempVec *v, size_t elem)
+{
+    memset(v, 0, sizeof *v);
+    v->elem = elem;
+}
+
+void *tvec_push(Parser *p, TempVec *v)
+{
+    if (v->n == v->cap) {
+        if (v->cap > (1 << 28))
+            out_of_memory(p);
+        int cap = v->cap ? v->cap * 2 : 16;
+        void *d = tmp_alloc(p, v->elem * (size_t)cap);
+        if (v->n)
+            memcpy(d, v->data, v->elem * (size_t)v->n);
+        v->data = d;
+        v->cap = cap;
+    }
+    void *slot = (char *)v->data + v->elem * (size_t)v->n++;
+    memset(slot, 0, v->elem);
+    return slot;
+}
+
+/* ---- #declare ------------------------------------------------------------ */
+
+static int is_unsupported_value_keyword(int kw)
+{
+    switch (kw) {
+    case KW_function: case KW_spline: case KW_array: case KW_pattern: case KW_media: case KW_density:
+    case KW_fog: case KW_rainbow: case KW_sky_sphere: case KW_color_map: case KW_colour_map:
+    case KW_pigment_map: case KW_normal_map: case KW_slope_map: case KW_texture_map: case KW_material_map:
+    case KW_density_map: case KW_photons: case KW_radiosity: case KW_material: case KW_interior_texture:
+    case KW_trace: case KW_min_extent: case KW_max_extent: case KW_vturbulence: case KW_file_exists:
+    case KW_datetime: case KW_now:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+/* The value of a declaration, whatever it is. */
+static Value parse_rvalue(Parser *p)
+{
+    Value v;
+    memset(&v, 0, sizeof v);
+    Token t = *next(p);
+    SceneObject *obj;
+    SceneLight *light;
+    if (t.type == TK_WORD && t.kw >= 0) {
+        switch (t.kw) {
+        case KW_texture:
+            v.kind = VAL_TEXTURE;
+            v.texture = parse_texture(p);
+            return v;
+        case KW_pigment:
+            v.kind = VAL_PIGMENT;
+            v.pigment = palloc(p, sizeof *v.pigment);
+            *v.pigment = p->scene->default_texture.pigment;
+            parse_pigment(p, v.pigment);
+            return v;
+        case KW_finish:
+            v.kind = VAL_FINISH;
+            v.finish = palloc(p, sizeof *v.finish);
+            *v.finish = p->scene->default_texture.finish;
+            parse_finish(p, v.finish);
+            return v;
+        case KW_interior:
+            v.kind = VAL_INTERIOR;
+            v.interior = palloc(p, sizeof *v.interior);
+            *v.interior = scene_default_interior();
+            parse_interior(p, v.interior);
+            return v;
+        case KW_normal:
+            v.kind = VAL_NORMAL;
+            skip_normal(p);
+            return v;
+        case KW_camera:
+            v.kind = VAL_CAMERA;
+            v.camera = palloc(p, sizeof *v.camera);
+            parse_camera(p, &t, v.camera);
+            return v;
+        case KW_transform:
+            v.kind = VAL_TRANSFORM;
+            v.transform = palloc(p, sizeof *v.transform);
+            transform_identity(v.transform);
+            parse_transform_block(p, v.transform);
+            return v;
+        default:
+            break;
+        }
+        if (parse_object(p, &t, &obj, &light)) {
+            v.kind = obj ? VAL_OBJECT : VAL_LIGHT;
+            v.object = obj;
+            v.light = light;
+            return v;
+        }
+        if (is_unsupported_value_keyword(t.kw))
+            unsupported(p, &t);
+    }
+    if (t.type == TK_WORD && t.kw < 0) {
+        Symbol *s = symbol_find(p, t.text, t.len);
+        if (!s)
+            parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+        if (s->value.kind == VAL_UNSUPPORTED)
+            use_unsupported(p, &t, &s->value);
+        if (s->value.kind != VAL_NUMERIC && s->value.kind != VAL_STRING)
+            return s->value; /* a copy of a declared object, texture, ... */
+    }
+    unget(p);
+    if (token_starts_string(p, &t)) {
+        v.kind = VAL_STRING;
+        v.string = parse_string(p);
+        return v;
+    }
+    if (!token_starts_expression(p, &t)) {
+        if (t.type == TK_WORD && t.kw >= 0)
+            unsupported(p, &t);
+        fail_expected(p, &t, "a value after '='");
+    }
+    v.kind = VAL_NUMERIC;
+    v.terms = 1;
+    parse_express(p, v.v, &v.terms);
+    if (v.terms > 5)
+        v.terms = 5;
+    return v;
+}
+
+/* After an unsupported keyword in a declaration: skip the rest of the value,
+ * directives still obeyed, so the file reads on as POV-Ray would. */
+static void skip_poisoned_value(Parser *p, int start_depth)
+{
+    if (p->brace_depth > start_depth) {
+        /* inside the value's braces: read to the one closing the value */
+        while (p->brace_depth > start_depth) {
+            Token *t = next(p);
+            if (t->type == TK_EOF)
+                parse_fail(p, t->pos, "expected '}' before the end of the file");
+        }
+        return;
+    }
+    /* The keyword itself was unsupported: `sphere {...}`, `array[3] {...}`,
+     * `function(x) {...}`, a macro call `Foo(1, 2)`. */
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, '(') || is_punct(t, '[')) {
+            Token open = *t;
+            skip_balanced_group(p, &open);
+            continue;
+        }
+        if (is_punct(t, '{')) {
+            skip_block_body(p);
+            return;
+        }
+        unget(p);
+        return;
+    }
+}
+
+void parse_declare(Parser *p, const Token *hash, int local)
+{
+    Token name = *next(p);
+    if (is_kw(&name, KW_deprecated)) {
+        /* #declare deprecated [once] "message" Name = ...: the warning is dropped */
+        if (!is_kw(next(p), KW_once))
+            unget(p);
+        (void)parse_string(p);
+        name = *next(p);
+    }
+    if (name.type != TK_WORD)
+        fail_expected(p, &name, "an identifier after #declare");
+    if (name.kw >= 0)
+        parse_fail(p, name.pos, "'%s' is a reserved word and cannot be declared", keyword_name(name.kw));
+    Token *t = next(p);
+    if (is_punct(t, '['))
+        parse_fail(p, t->pos, "arrays are not supported by hstrace");
+    if (!is_punct(t, '=')) {
+        char what[120];
+        snprintf(what, sizeof what, "'=' after '#declare %.*s'", name.len > 60 ? 60 : name.len, name.text);
+        fail_expected(p, t, what);
+    }
+    Token first = *peek(p);
+
+    /* Catch "unsupported" from anywhere inside the value. */
+    jmp_buf here;
+    jmp_buf *volatile outer = p->poison_jmp;
+    volatile int saved_nesting = p->nesting, saved_declaring = p->declaring;
+    volatile int start_depth = p->brace_depth;
+    Value v;
+    p->poison_jmp = &here;
+    p->declaring++;
+    if (setjmp(here) == 0) {
+        v = parse_rvalue(p);
+    } else {
+        p->nesting = saved_nesting;
+        memset(&v, 0, sizeof v);
+        v.kind = VAL_UNSUPPORTED;
+        v.what = p->poison_what;
+        v.declared_at = p->poison_at;
+        skip_poisoned_value(p, start_depth);
+    }
+    p->declaring = saved_declaring;
+    p->poison_jmp = outer;
+    (void)hash;
+
+    /* `texture {...} texture {...}`: POV-Ray layers the textures. */
+    if (is_kw(&first, KW_texture)) {
+        while (lex_next_is_keyword(p, KW_texture)) {
+            Token layer = *next(p);
+            begin_block(p, "texture");
+            skip_block_body(p);
+            if (v.kind != VAL_UNSUPPORTED) {
+                memset(&v, 0, sizeof v);
+                v.kind = VAL_UNSUPPORTED;
+                v.what = "a layered texture";
+                v.declared_at = layer.pos;
+            }
+        }
+    }
+
+    /* POV-Ray 3.5+ wants ';' after float, vector, colour and string values;
+     * after a block it is optional. */
+    if (v.kind == VAL_NUMERIC || v.kind == VAL_STRING) {
+        Token *s = next(p);
+        if (!is_punct(s, ';')) {
+            if (p->version >= 3.5)
+                fail_expected(p, s, "';' after the declared value");
+            unget(p);
+        }
+    } else if (p->ungot && is_punct(&p->tok, ';')) {
+        next(p);
+    } else if (!p->ungot) {
+        lex_skip_semicolon(p);
+    }
+    (void)first;
+    symbol_set(p, name.text, name.len, local, &v);
+}
+
+/* #default { texture {...} | pigment {...} | finish {...} | normal {...} } */
+void parse_default_directive(Parser *p)
+{
+    begin_block(p, "#default");
+    SceneTexture *d = &p->scene->default_texture;
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, '}'))
+            break;
+        switch (t->type == TK_WORD ? t->kw : -1) {
+        case KW_texture: {
+            SceneTexture *n = parse_texture(p);
+            *d = *n;
+            break;
+        }
+        case KW_pigment: parse_pigment(p, &d->pigment); break;
+        case KW_finish: parse_finish(p, &d->finish); break;
+        case KW_normal: skip_normal(p); break;
+        default:
+            if (t->type == TK_WORD && t->kw >= 0)
+                unsupported(p, t);
+            fail_expected(p, t, "texture, pigment, finish, normal or '}' in #default");
+        }
+    }
+    p->default_changed = 1;
+}
+
+/* ---- scene statements ---------------------------------------------------- */
+
+static void parse_global_settings(Parser *p)
+{
+    GlobalSettings *g = &p->scene->globals;
+    begin_block(p, "global_settings");
+    for (;;) {
+        Token t = *next(p);
+        if (is_punct(&t, '}'))
+            return;
+        Colour c;
+        switch (t.type == TK_WORD ? t.kw : -1) {
+        case KW_assumed_gamma: {
+            Token *n = next(p);
+            if (is_kw(n, KW_srgb)) {
+                g->assumed_gamma = 0.0;
+                g->assumed_gamma_srgb = 1;
+            } else {
+                unget(p);
+                Token at = *peek(p);
+                g->assumed_gamma = parse_float(p);
+                if (g->assumed_gamma <= 0.0)
+                    parse_fail(p, at.pos, "gamma value must be positive");
+            }
+            if (!p->gamma_set) { /* POV-Ray ignores a second assumed_gamma */
+                p->gamma_set = 1;
+                p->assumed_gamma = g->assumed_gamma;
+                g->has_assumed_gamma = 1;
+            }
+            break;
+        }
+        case KW_max_trace_level: g->max_trace_level = (int)parse_float(p); break;
+        case KW_adc_bailout: g->adc_bailout = parse_float(p); break;
+        case KW_ambient_light:
+            parse_colour(p, &c, 0);
+            g->ambient_light = c;
+            break;
+        case KW_charset: (void)next(p); break;
+        case KW_radiosity: case KW_photons: case KW_subsurface:
+            /* Not modelled: parsed past and ignored, so scenes written for
+             * POV-Ray still load (their lighting will differ). */
+            begin_block(p, keyword_name(t.kw));
+            skip_block_body(p);
+            break;
+        case KW_irid_wavelength:
+            parse_colour(p, &c, 0);
+            break;
+        case KW_number_of_waves: case KW_noise_generator: case KW_max_intersections: case KW_hf_gray_16:
+        case KW_mm_per_unit:
+            if (token_starts_float(p, peek(p)))
+                (void)parse_float(p);
+            break;
+        default:
+            if (t.type == TK_WORD && t.kw >= 0)
+                unsupported(p, &t);
+            fail_expected(p, &t, "a global setting or '}' in 'global_settings'");
+        }
+    }
+}
+
+static void add_object(Parser *p, SceneObject *o, SceneLight *l)
+{
+    if (l) {
+        *(SceneLight *)tvec_push(p, &p->lights) = *l;
+        return;
+    }
+    if (!o->texture && p->default_changed)
+        o->texture = new_default_texture(p); /* POV-Ray binds the default at this point */
+    *(SceneObject **)tvec_push(p, &p->objects) = o;
+}
+
+static void parse_statements(Parser *p)
+{
+    for (;;) {
+        Token t = *next(p);
+        if (t.type == TK_EOF)
+            return;
+        SceneObject *o;
+        SceneLight *l;
+        if (parse_object(p, &t, &o, &l)) {
+            add_object(p, o, l);
+            continue;
+        }
+        switch (t.type == TK_WORD ? t.kw : -1) {
+        case KW_camera:
+            parse_camera(p, &t, &p->scene->camera);
+            p->scene->has_camera = 1;
+            break;
+        case KW_background: {
+            begin_block(p, "background");
+            parse_colour(p, &p->scene->background, 1);
+            expect_punct(p, '}', "the background colour");
+            break;
+        }
+        case KW_global_settings:
+            parse_global_settings(p);
+            break;
+        default:
+            if (t.type == TK_WORD && t.kw >= 0)
+                unsupported(p, &t); /* fog, sky_sphere, rainbow, media, ... */
+            if (t.type == TK_WORD) {
+                Symbol *s = symbol_find(p, t.text, t.len);
+                if (s && s->value.kind == VAL_UNSUPPORTED)
+                    use_unsupported(p, &t, &s->value);
+                if (!s)
+                    parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+                parse_fail(p, t.pos, "'%.*s' cannot stand alone here; use object { %.*s }", t.len, t.text,
+                           t.len, t.text);
+            }
+            fail_expected(p, &t, "an object or a scene statement");
+        }
+    }
+}
+
+/* ---- entry points ------------------------------------------------------ */
+
+static void init_scene(Scene *s)
+{
+    s->version = 3.7;
+    default_camera(&s->camera);
+    s->background.transmit = 1.0;
+    s->globals.max_trace_level = 5;
+    s->globals.adc_bailout = 1.0 / 255.0;
+    s->globals.ambient_light = (Colour){ 1, 1, 1, 0, 0 };
+    s->default_texture.pigment.kind = PIGMENT_SOLID;
+    transform_identity(&s->default_texture.pigment.transform);
+    s->default_texture.finish = scene_default_finish();
+}
+
+/* Everything after the setjmp lives here, so no local of run_parser is
+ * modified between setjmp and a longjmp. */
+static Scene *parse_everything(Parser *p, const char *name, const char *text, size_t len)
+{
+    Scene *scene = p->scene;
+    SourcePos start = { name, 0, 0 };
+    if (text) {
+        char *copy = tmp_alloc(p, len + 1);
+        memcpy(copy, text, len);
+        lex_open_buffer(p, name, copy, len, start);
+    } else if (!lex_open_file(p, name, name, start)) {
+        parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
+    }
+    parse_statements(p);
+
+    scene->version = p->version;
+    scene->nobjects = p->objects.n;
+    scene->objects = palloc(p, sizeof(SceneObject *) * (size_t)(p->objects.n ? p->objects.n : 1));
+    if (p->objects.n)
+        memcpy(scene->objects, p->objects.data, sizeof(SceneObject *) * (size_t)p->objects.n);
+    scene->nlights = p->lights.n;
+    scene->lights = palloc(p, sizeof(SceneLight) * (size_t)(p->lights.n ? p->lights.n : 1));
+    if (p->lights.n)
+        memcpy(scene->lights, p->lights.data, sizeof(SceneLight) * (size_t)p->lights.n);
+    arena_free(p->temp);
+    free(p);
+    return scene;
+}
+
+static Scene *run_parser(const char *name, const char *text, size_t len, const ParseOptions *opts,
+                         ParseError *err)
+{
+    static const ParseOptions no_options; /* all zero */
+    ParseError ignored;
+    if (!err)
+        err = &ignored;
+    memset(err, 0, sizeof *err);
+    Parser *p = calloc(1, sizeof *p);
+    Scene *scene = calloc(1, sizeof *scene);
+    Arena *temp = arena_new(), *arena = arena_new();
+    if (!p || !scene || !temp || !arena) {
+        free(p);
+        free(scene);
+        arena_free(temp);
+        arena_free(arena);
+        snprintf(err->file, sizeof err->file, "%s", name);
+        snprintf(err->message, sizeof err->message, "out of memory");
+        return NULL;
+    }
+    scene->arena = arena;
+    p->scene = scene;
+    p->arena = arena;
+    p->temp = temp;
+    p->opts = opts ? opts : &no_options;
+    p->err = err;
+    p->version = 3.7;
+    tvec_init(&p->controls, sizeof(Control));
+    tvec_init(&p->objects, sizeof(SceneObject *));
+    tvec_init(&p->lights, sizeof(SceneLight));
+    symbols_init(p);
+    init_scene(scene);
+
+    if (setjmp(p->fail)) {
+        scene_free(p->scene);
+        arena_free(p->temp);
+        free(p);
+        return NULL;
+    }
+    return parse_everything(p, name, text, len);
+}
+
+Scene *parse_scene_file(const char *path, const ParseOptions *opts, ParseError *err)
+{
+    return run_parser(path, NULL, 0, opts, err);
+}
+
+Scene *parse_scene_string(const char *name, const char *text, const ParseOptions *opts, ParseError *err)
+{
+    return run_parser(name ? name : "<string>", text ? text : "", text ? strlen(text) : 0, opts, err);
+}

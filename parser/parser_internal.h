@@ -1,0 +1,278 @@
+/* State shared by the parser's files: tokens, the include stack, values and
+ * symbols, and the Parser itself.
+ *
+ * Error handling: every error calls parse_fail(), which fills the ParseError
+ * and longjmps back to the public entry point. Nothing the parser allocates
+ * is owned by the C stack: scene data lives in the scene's arena, everything
+ * temporary (file buffers, symbols, growing arrays) in `p->temp`, so an error
+ * anywhere leaks nothing. */
+#ifndef HST_PARSER_INTERNAL_H
+#define HST_PARSER_INTERNAL_H
+
+#include <setjmp.h>
+#include <stddef.h>
+
+#include "keywords.h"
+#include "parser.h"
+#include "scene.h"
+
+/* ---- tokens ------------------------------------------------------------ */
+
+typedef enum {
+    TK_EOF,
+    TK_NUMBER,
+    TK_STRING,
+    TK_WORD,  /* a keyword (kw >= 0) or an identifier (kw == -1) */
+    TK_PUNCT, /* punct holds the character, or one of the P_* below */
+} TokenType;
+
+enum { P_LE = 256, P_GE, P_NE };
+
+typedef struct {
+    TokenType type;
+    int punct;
+    int kw;
+    double number;
+    const char *text; /* spelling, pointing into the file buffer */
+    int len;
+    char *string;     /* TK_STRING: contents with escapes resolved */
+    SourcePos pos;
+} Token;
+
+/* ---- the include stack --------------------------------------------------- */
+
+#define MAX_INCLUDE_DEPTH 64
+
+typedef struct {
+    const char *name; /* as shown in messages (scene arena) */
+    const char *dir;  /* folder searched first for its #includes */
+    const char *buf;
+    size_t size, offset;
+    int line, col;
+    int controls_at_entry; /* control stack height when the file started */
+} SourceFile;
+
+/* A point in the input to come back to (#while, #for). */
+typedef struct {
+    int depth;
+    size_t offset;
+    int line, col;
+} LexMark;
+
+/* ---- values and symbols ---------------------------------------------------- */
+
+typedef enum {
+    VAL_NONE,
+    VAL_NUMERIC, /* float, 2-5 component vector or colour: see terms */
+    VAL_STRING,
+    VAL_OBJECT,
+    VAL_LIGHT,
+    VAL_TEXTURE,
+    VAL_PIGMENT,
+    VAL_FINISH,
+    VAL_INTERIOR,
+    VAL_CAMERA,
+    VAL_TRANSFORM,
+    VAL_NORMAL,      /* parsed and forgotten: normals are not modelled */
+    VAL_UNSUPPORTED, /* a declaration of something hstrace cannot render */
+} ValueKind;
+
+typedef struct {
+    ValueKind kind;
+    int terms;      /* VAL_NUMERIC: 1 float, 2-4 vector, 5 colour */
+    double v[5];
+    char *string;
+    SceneObject *object;
+    SceneLight *light;
+    SceneTexture *texture;
+    Pigment *pigment;
+    Finish *finish;
+    Interior *interior;
+    SceneCamera *camera;
+    Transform *transform;
+    /* VAL_UNSUPPORTED: what it is ("'sphere'", "macro 'Foo'") and where the
+     * unsupported thing was first written. */
+    const char *what;
+    SourcePos declared_at;
+} Value;
+
+typedef struct Symbol {
+    struct Symbol *next;
+    char *name;
+    int level; /* 0: global; each include file opens one more */
+    Value value;
+} Symbol;
+
+#define SYMBOL_BUCKETS 1024
+
+typedef struct {
+    Symbol *buckets[SYMBOL_BUCKETS];
+    int level;
+    Symbol *free_list;
+} SymbolTable;
+
+/* ---- #if / #while / #for ---------------------------------------------------- */
+
+typedef enum { CTL_IF, CTL_ELSE, CTL_WHILE, CTL_FOR } ControlKind;
+
+typedef struct {
+    ControlKind kind;
+    int file_depth;
+    SourcePos pos;  /* of the directive, for "missing #end" */
+    LexMark loop;   /* #while: start of the condition; #for: start of the body */
+    char *for_var;
+    double for_end, for_step;
+} Control;
+
+/* A growable array in the temporary arena. */
+typedef struct {
+    void *data;
+    int n, cap;
+    size_t elem;
+} TempVec;
+
+/* ---- the parser ----------------------------------------------------------- */
+
+/* Hard limits that turn runaway input into an error instead of a hang or a
+ * stack overflow. POV-Ray has no loop limit; a scene needing more than ten
+ * million #while/#for iterations (ParseOptions.max_loop_iterations can raise
+ * it) is far more likely an endless loop, which would otherwise hang. */
+#define MAX_LOOP_ITERATIONS 10000000L
+#define MAX_NESTING 200
+
+typedef struct Parser {
+    Scene *scene;
+    Arena *arena; /* the scene's */
+    Arena *temp;  /* freed when parsing ends */
+    const ParseOptions *opts;
+    ParseError *err;
+    jmp_buf fail;
+
+    SourceFile files[MAX_INCLUDE_DEPTH];
+    int depth; /* number of open files */
+
+    Token tok;      /* the last token next() returned */
+    int ungot;      /* next() returns tok again */
+    int brace_depth;
+    SourcePos last_pos;
+
+    SymbolTable symbols;
+    TempVec controls; /* of Control */
+    long loop_iterations;
+
+    double version;
+    int gamma_set;
+    double assumed_gamma; /* 0 with gamma_set: srgb */
+    int default_changed;  /* #default was used */
+
+    int nesting; /* recursion guard for expressions and objects */
+
+    /* Inside a #declare: unsupported things become VAL_UNSUPPORTED instead of
+     * errors. `poison_jmp` leads back to the innermost declaration. */
+    int declaring;
+    jmp_buf *poison_jmp;
+    const char *poison_what;
+    SourcePos poison_at;
+
+    TempVec objects; /* of SceneObject *, top level */
+    TempVec lights;  /* of SceneLight */
+} Parser;
+
+/* errors (parse_scene.c) */
+#if defined(__GNUC__)
+#define HST_PRINTF(a, b) __attribute__((format(printf, a, b)))
+#else
+#define HST_PRINTF(a, b)
+#endif
+_Noreturn void parse_fail(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
+_Noreturn void parse_fail_io(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
+/* "expected X after Y, found Z" at the found token. */
+_Noreturn void fail_expected(Parser *p, const Token *found, const char *what);
+/* An unsupported keyword at `t`: an error, or VAL_UNSUPPORTED in a #declare. */
+_Noreturn void unsupported(Parser *p, const Token *t);
+/* Use of an identifier holding an unsupported declaration. */
+_Noreturn void use_unsupported(Parser *p, const Token *t, const Value *v);
+void *palloc(Parser *p, size_t size);       /* scene arena, checked */
+void *tmp_alloc(Parser *p, size_t size);    /* temporary arena, checked */
+char *tmp_strndup(Parser *p, const char *s, size_t n);
+void tvec_init(TempVec *v, size_t elem);
+void *tvec_push(Parser *p, TempVec *v); /* returns the new zeroed slot */
+const char *describe_token(Parser *p, const Token *t);
+int nesting_enter(Parser *p, const Token *t);
+void nesting_leave(Parser *p);
+
+/* lexer.c */
+void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at);
+int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at);
+void lex_raw(Parser *p, Token *t); /* TK_EOF at the end of the current file */
+LexMark lex_mark(Parser *p);
+void lex_seek(Parser *p, LexMark m);
+int lex_skip_semicolon(Parser *p); /* consume a ';' if it comes next */
+/* Whether the next token is keyword kw, looking at the raw text so that no
+ * directive is carried out early (the current #declare is not stored yet). */
+int lex_next_is_keyword(Parser *p, int kw);
+const char *dir_of(Parser *p, const char *path);
+
+/* directives.c: the token stream after #directives */
+Token *next(Parser *p);
+void unget(Parser *p);
+Token *peek(Parser *p);
+int is_punct(const Token *t, int c);
+int is_kw(const Token *t, int kw);
+void expect_punct(Parser *p, int c, const char *after);
+void begin_block(Parser *p, const char *after); /* '{' after `after` */
+void skip_block_body(Parser *p);                /* after '{': to its '}' */
+void skip_balanced_group(Parser *p, const Token *open);
+
+/* symbols.c */
+void symbols_init(Parser *p);
+Symbol *symbol_find(Parser *p, const char *name, int len);
+void symbol_set(Parser *p, const char *name, int len, int local, const Value *v);
+void symbol_undef(Parser *p, const char *name, int len);
+void symbols_push_scope(Parser *p);
+void symbols_pop_scope(Parser *p);
+
+/* expr.c */
+void parse_express(Parser *p, double e[5], int *terms);
+void parse_rel_factor(Parser *p, double e[5], int *terms);
+double parse_float(Parser *p);
+double parse_float_full(Parser *p); /* comparisons allowed */
+Vec3 parse_vector(Parser *p);
+Vec3 parse_scale_vector(Parser *p);
+void parse_colour(Parser *p, Colour *c, int expect_ft);
+int token_starts_colour(Parser *p, const Token *t);
+int token_starts_float(Parser *p, const Token *t);
+int token_starts_expression(Parser *p, const Token *t);
+int token_starts_string(Parser *p, const Token *t);
+char *parse_string(Parser *p);
+void parse_comma(Parser *p); /* an optional ',' */
+/* translate/rotate/scale/matrix/transform at t (already read): composes
+ * into tr and returns 1, or returns 0 when t is no transform. */
+int parse_transform_item(Parser *p, const Token *t, Transform *tr);
+void parse_transform_block(Parser *p, Transform *tr); /* after 'transform' */
+
+/* parse_texture.c */
+SceneTexture *new_default_texture(Parser *p);
+SceneTexture *parse_texture(Parser *p);   /* after 'texture' */
+void parse_pigment(Parser *p, Pigment *pig); /* after 'pigment' */
+void parse_finish(Parser *p, Finish *f);  /* after 'finish' */
+void parse_interior(Parser *p, Interior *in); /* after 'interior' */
+void skip_normal(Parser *p);              /* after 'normal' */
+
+/* parse_objects.c */
+int is_object_keyword(int kw);
+/* An object or light starting at t (already read); returns 1 and fills one
+ * of *obj / *light, or 0 when t starts no object. */
+int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light);
+
+/* parse_camera.c */
+void parse_camera(Parser *p, const Token *t, SceneCamera *cam);
+void default_camera(SceneCamera *cam);
+SceneLight *parse_light_source(Parser *p, const Token *t);
+void transform_light(SceneLight *l, const Transform *tr);
+
+/* parse_scene.c */
+void parse_declare(Parser *p, const Token *hash, int local);
+void parse_default_directive(Parser *p);
+
+#endif

@@ -1,0 +1,482 @@
+/* The scene-language parser: values, directives, objects, camera, errors,
+ * and robustness against truncated and mutated input. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "parser.h"
+#include "tap.h"
+
+static const char *const pov_dirs[] = { "/usr/share/povray-3.7/include" };
+/* A small loop limit keeps the runaway and fuzz tests fast. */
+static ParseOptions opts = { .include_dirs = pov_dirs, .ninclude_dirs = 1, .image_width = 320, .image_height = 240, .max_loop_iterations = 100000 };
+static ParseError err;
+
+static Scene *parse(const char *text)
+{
+    Scene *s = parse_scene_string("t.pov", text, &opts, &err);
+    if (!s)
+        tap_diag("parse error: %s:%d:%d: %s", err.file, err.line, err.column, err.message);
+    return s;
+}
+
+static int near(double a, double b) { return fabs(a - b) < 1e-9; }
+static int near_tol(double a, double b, double tol) { return fabs(a - b) < tol; }
+static int vnear(Vec3 a, double x, double y, double z) { return near(a.x, x) && near(a.y, y) && near(a.z, z); }
+
+/* The box corner2.x of the first object: tests evaluate expressions there. */
+static double value_of(const char *expr)
+{
+    char buf[512];
+    snprintf(buf, sizeof buf, "box { 0, <%s, 0, 0> }", expr);
+    Scene *s = parse(buf);
+    double v = s ? s->objects[0]->u.box.corner2.x : NAN;
+    scene_free(s);
+    return v;
+}
+
+static Vec3 vector_of(const char *decl)
+{
+    char buf[512];
+    snprintf(buf, sizeof buf, "%s\nbox { 0, V }", decl);
+    Scene *s = parse(buf);
+    Vec3 v = s ? s->objects[0]->u.box.corner2 : v3(NAN, NAN, NAN);
+    scene_free(s);
+    return v;
+}
+
+/* Parses text expecting failure at line:col with msg in the message. */
+static void expect_error(const char *text, int line, int col, const char *msg, const char *what)
+{
+    Scene *s = parse_scene_string("t.pov", text, &opts, &err);
+    int ok = !s && err.line == line && err.column == col && strstr(err.message, msg) != NULL;
+    tap_ok(ok, "error: %s", what);
+    if (!ok)
+        tap_diag("got %s -> %s:%d:%d: %s", s ? "a scene" : "error", err.file, err.line, err.column, err.message);
+    scene_free(s);
+}
+
+static void test_expressions(void)
+{
+    tap_ok(near(value_of("1 + 2 * 3"), 7), "precedence: 1 + 2 * 3 = 7");
+    tap_ok(near(value_of("(1 + 2) * 3"), 9), "parentheses");
+    tap_ok(near(value_of("-2 * 3 + 1"), -5), "unary minus binds tightest");
+    tap_ok(near(value_of("- - 4"), 4), "double unary minus");
+    tap_ok(near(value_of("10 / 4 - 1"), 1.5), "division");
+    tap_ok(near(value_of("sqrt(16) + pow(2, 3) + abs(-1)"), 13), "sqrt pow abs");
+    tap_ok(near(value_of("max(1, 5, 3) - min(4, 2)"), 3), "variadic max/min");
+    tap_ok(near(value_of("sin(pi / 2) + cos(0)"), 2), "sin cos pi");
+    tap_ok(near(value_of("mod(7, 3) + int(2.7) + floor(-0.5) + ceil(0.2)"), 3), "mod int floor ceil");
+    tap_ok(near(value_of("degrees(pi) + radians(180)"), 180 + M_PI), "degrees radians");
+    tap_ok(near(value_of("(2 < 3) + (3 <= 3) + (1 = 1) + (1 != 1) + (2 > 3)"), 3), "comparisons");
+    tap_ok(near(value_of("(1 & 0) + (1 | 0) + !0"), 2), "logic");
+    tap_ok(near(value_of("(1 > 0 ? 10 : 20)"), 10), "conditional");
+    tap_ok(near(value_of("true + yes + on + false + no + off"), 3), "boolean keywords");
+    tap_ok(near(value_of("image_width + image_height"), 560), "image_width/height from options");
+    tap_ok(near(value_of("vlength(<3, 4, 0>) + vdot(x, y)"), 5), "vlength vdot");
+    tap_ok(near(value_of("select(-1, 1, 2, 3) + select(1, 1, 2, 3)"), 4), "select");
+    tap_ok(near(value_of("atan2(1, 1) * 4"), M_PI), "atan2");
+    tap_ok(near(value_of("<1, 2, 3>.y + clock"), 2), "component access, clock = 0");
+    tap_ok(vnear(vector_of("#declare V = 2 * <1, 2, 3> + 1;"), 3, 5, 7), "float promotes to vector");
+    tap_ok(vnear(vector_of("#declare V = <1, 2, 3> * <2, 2, 0.5>;"), 2, 4, 1.5), "componentwise product");
+    tap_ok(vnear(vector_of("#declare V = vcross(x, y) - z + vnormalize(<0, 0, 5>);"), 0, 0, 1), "vcross vnormalize");
+    tap_ok(vnear(vector_of("#declare V = <1, 2>;"), 1, 2, 0), "2-D vector pads with 0");
+    /* values printed by POV-Ray 3.7 with #debug vstr(...) */
+    tap_ok(vnear(vector_of("#declare V = vaxis_rotate(x, y, 30) - vrotate(x, 30 * y);"), 0, 0, 0) &&
+               vnear(vector_of("#declare V = vrotate(x, <0, 30, 0>);"), cos(M_PI / 6), 0, -0.5),
+           "vrotate and vaxis_rotate as POV-Ray");
+    tap_ok(vnear(vector_of("#declare V = 1 + <1, 2>;"), 2, 3, 0), "float + 2-D vector as POV-Ray");
+    Scene *s = parse("box { 0, 1 + <1, 2> }");
+    /* In vector context the float is already three wide: <2,3,1> in POV-Ray */
+    tap_ok(s && vnear(s->objects[0]->u.box.corner2, 2, 3, 1), "vector context promotes the float first");
+    scene_free(s);
+}
+
+static const Colour *pigment_of(const Scene *s, int i) { return &s->objects[i]->texture->pigment.colour; }
+
+static int colour_is(const Colour *c, double r, double g, double b, double f, double t)
+{
+    return near_tol(c->r, r, 1e-6) && near_tol(c->g, g, 1e-6) && near_tol(c->b, b, 1e-6) &&
+           near_tol(c->filter, f, 1e-6) && near_tol(c->transmit, t, 1e-6);
+}
+
+static void test_colours(void)
+{
+    Scene *s = parse("#include \"colors.inc\"\n"
+                     "global_settings { assumed_gamma 1 }\n"
+                     "box { 0, 1 pigment { Red } }\n"
+                     "box { 0, 1 pigment { color Red filter 0.5 } }\n"
+                     "box { 0, 1 pigment { rgb <1, 2, 3, 4, 5> } }\n"
+                     "box { 0, 1 pigment { rgbt <1, 2, 3, 4> } }\n"
+                     "box { 0, 1 pigment { color 0.5 } }\n"
+                     "box { 0, 1 pigment { srgb 0.5 } }\n"
+                     "box { 0, 1 pigment { color red 0.1 green 0.2 blue 0.3 } }\n"
+                     "box { 0, 1 pigment { rgb 0.5 filter 0.3 red 0.1 } }\n"
+                     "box { 0, 1 pigment { Gray50 * 2 } }\n");
+    tap_ok(s != NULL, "colors.inc parses; colour forms parse");
+    if (s) {
+        tap_ok(colour_is(pigment_of(s, 0), 1, 0, 0, 0, 0), "pigment { Red }");
+        tap_ok(colour_is(pigment_of(s, 1), 1, 0, 0, 0.5, 0), "color Red filter 0.5");
+        tap_ok(colour_is(pigment_of(s, 2), 1, 2, 3, 4, 5), "rgb with five components keeps all five");
+        tap_ok(colour_is(pigment_of(s, 3), 1, 2, 3, 0, 4), "rgbt puts the 4th into transmit");
+        tap_ok(colour_is(pigment_of(s, 4), 0.5, 0.5, 0.5, 0.5, 0.5), "color 0.5 fills all five (POV-Ray)");
+        tap_ok(colour_is(pigment_of(s, 5), 0.214041, 0.214041, 0.214041, 0, 0), "srgb decodes to linear");
+        tap_ok(colour_is(pigment_of(s, 6), 0.1, 0.2, 0.3, 0, 0), "red/green/blue keywords");
+        tap_ok(colour_is(pigment_of(s, 7), 0.1, 0.5, 0.5, 0.3, 0), "rgb then filter then red");
+        tap_ok(colour_is(pigment_of(s, 8), 1, 1, 1, 0, 0), "colour identifier arithmetic");
+    }
+    scene_free(s);
+    expect_error("box { 0, 1 pigment { srgb 1 } }", 1, 22, "assumed_gamma", "srgb before assumed_gamma");
+}
+
+static void test_finish_texture(void)
+{
+    Scene *s = parse("#include \"finish.inc\"\n"
+                     "#declare T = texture { pigment { rgb <0, 1, 0> } finish { Shiny ambient 0.2 } }\n"
+                     "box { 0, 1 texture { T } }\n"
+                     "box { 0, 1 finish { phong 1 reflection { 0.1, 0.5 fresnel } metallic } }\n"
+                     "box { 0, 1 finish { reflection 0.3 diffuse 0.7 brilliance 2 emission rgb 1 } }\n"
+                     "box { 0, 1 interior { ior 1.5 } }\n"
+                     "box { 0, 1 }\n");
+    tap_ok(s != NULL, "finish.inc parses; textures parse");
+    if (s) {
+        const SceneTexture *t = s->objects[0]->texture;
+        tap_ok(t && colour_is(&t->pigment.colour, 0, 1, 0, 0, 0), "declared texture pigment");
+        tap_ok(t && near(t->finish.specular, 1) && near(t->finish.roughness, 0.001) && near(t->finish.ambient[1], 0.2),
+               "finish identifier then a change");
+        const Finish *f = &s->objects[1]->texture->finish;
+        tap_ok(near(f->phong, 1) && near(f->reflection_min[0], 0.1) && near(f->reflection_max[2], 0.5) &&
+                   f->reflection_fresnel && near(f->metallic, 1) && near(f->diffuse, 0.6),
+               "finish-only object gets default texture plus finish");
+        tap_ok(colour_is(&s->objects[1]->texture->pigment.colour, 0, 0, 0, 0, 0), "default pigment is black");
+        f = &s->objects[2]->texture->finish;
+        tap_ok(near(f->reflection_min[1], 0.3) && near(f->reflection_max[1], 0.3) && near(f->diffuse, 0.7) &&
+                   near(f->brilliance, 2) && near(f->emission[2], 1),
+               "old reflection syntax, diffuse, brilliance, emission");
+        tap_ok(s->objects[3]->interior && near(s->objects[3]->interior->ior, 1.5) && !s->objects[3]->texture,
+               "interior ior, no texture");
+        tap_ok(s->objects[4]->texture == NULL, "object without texture has NULL texture");
+    }
+    scene_free(s);
+}
+
+static void test_directives(void)
+{
+    Scene *s = parse("#declare I = 0;\n"
+                     "#while (I < 5)\n"
+                     "  box { 0, 1 translate I * x }\n"
+                     "  #declare I = I + 1;\n"
+                     "#end\n"
+                     "#if (I = 5) plane { y, 1 } #else plane { y, 2 } #end\n"
+                     "#if (0) plane { y, 3 } #elseif (1) plane { y, 4 } #else plane { y, 5 } #end\n"
+                     "#ifdef (I) plane { y, 6 } #end\n"
+                     "#ifndef (Nope) plane { y, 7 } #end\n"
+                     "#for (J, 1, 3) triangle { 0, x, y } #end\n"
+                     "/* nested /* comment */ still comment */\n");
+    tap_ok(s != NULL, "#while/#if/#for scene parses");
+    if (s) {
+        tap_ok(s->nobjects == 5 + 4 + 3, "#while made 5 boxes, #if chain 4 planes, #for 3 triangles (%d)", s->nobjects);
+        tap_ok(s->nobjects >= 5 && near(s->objects[4]->transform.m[3][0], 4), "last box translated by 4");
+        tap_ok(s->nobjects >= 9 && near(s->objects[5]->u.plane.distance, 1) && near(s->objects[6]->u.plane.distance, 4) &&
+                   near(s->objects[7]->u.plane.distance, 6) && near(s->objects[8]->u.plane.distance, 7),
+               "#if/#else/#elseif/#ifdef/#ifndef choose the right branches");
+    }
+    scene_free(s);
+
+    s = parse("#declare A = 1;\n#if (1)\n #local A = 2;\n#end\nbox { 0, A }\n#undef A\n#ifndef(A) plane { y, 0 } #end\n");
+    tap_ok(s && s->nobjects == 2 && near(s->objects[0]->u.box.corner2.x, 2), "#local at top level, #undef");
+    scene_free(s);
+
+    s = parse("#macro Foo(a) sphere { a, 1 } #end\n#declare S = sphere { 0, 1 }\n"
+              "#declare F = function { x * y }\n#declare A = array[3];\nbox { 0, 1 }\n");
+    tap_ok(s && s->nobjects == 1, "unsupported declarations are parsed past");
+    scene_free(s);
+
+    s = parse("#include \"colors.inc\"\n#include \"textures.inc\"\n#include \"metals.inc\"\n#include \"shapes.inc\"\n"
+              "#include \"woods.inc\"\n#include \"glass.inc\"\n#include \"stones.inc\"\n"
+              "box { 0, 1 texture { T_Gold_1A } }\n");
+    tap_ok(s && s->nobjects == 1, "textures, metals, shapes, woods, glass, stones .inc parse");
+    scene_free(s);
+    expect_error("#include \"textures.inc\"\nbox { 0, 1 texture { Jade } }", 2, 22,
+                 "is not supported by hstrace (declared at /usr/share/povray-3.7/include/textures.inc:",
+                 "a pattern texture from textures.inc used in the scene");
+}
+
+static void test_objects(void)
+{
+    Scene *s = parse("#declare P = polygon { 10, <0,0>, <4,0>, <4,4>, <0,4>, <0,0>,\n"
+                     "  <1,1>, <2,1>, <2,2>, <1,2>, <1,1> pigment { rgb 1 } }\n"
+                     "object { P translate <1, 0, 0> }\n"
+                     "object { P scale 2 }\n"
+                     "polygon { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n"
+                     "union { box { 0, 1 } plane { y, 0 pigment { rgb x } } translate y pigment { rgb z } }\n");
+    tap_ok(s != NULL && s->nobjects == 4, "polygon, object{}, union");
+    if (s && s->nobjects == 4) {
+        const SceneObject *o = s->objects[0];
+        tap_ok(o->kind == OBJ_POLYGON && o->u.polygon.noutlines == 2 && o->u.polygon.npoints == 10 &&
+                   o->u.polygon.outline_start[1] == 5 && o->u.polygon.outline_start[2] == 10,
+               "polygon with a hole: two outlines of five points");
+        tap_ok(vnear(o->u.polygon.points[6], 2, 1, 0), "2-D polygon points get z = 0");
+        tap_ok(near(o->transform.m[3][0], 1) && o->texture && near(o->texture->pigment.colour.r, 1),
+               "object{} keeps the declared texture and adds a transform");
+        tap_ok(near(s->objects[1]->transform.m[0][0], 2) && near(s->objects[1]->transform.m[3][0], 0),
+               "second copy has its own transform");
+        o = s->objects[2];
+        tap_ok(o->u.polygon.noutlines == 1 && o->u.polygon.npoints == 4 && vnear(o->u.polygon.points[3], 0, 0, 0),
+               "unclosed polygon is closed");
+        o = s->objects[3];
+        tap_ok(o->kind == OBJ_UNION && o->u.csg.nchildren == 2 && near(o->transform.m[3][1], 1) &&
+                   o->u.csg.children[0]->texture == NULL && near(o->u.csg.children[1]->texture->pigment.colour.r, 1) &&
+                   near(o->texture->pigment.colour.b, 1),
+               "union children keep their own texture and transform");
+    }
+    scene_free(s);
+
+    s = parse("mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }\n"
+              "  normal_vectors { 1, z }\n"
+              "  texture_list { 2, texture { pigment { rgb x } } texture { pigment { rgb y } } }\n"
+              "  face_indices { 2, <0,1,2>, 1, <0,2,3>, 0 }\n"
+              "  normal_indices { 2, <0,0,0>, <0,0,0> }\n"
+              "  uv_vectors { 1, <0,0> } uv_indices { 2, <0,0,0>, <0,0,0> }\n"
+              "  translate z }\n"
+              "mesh { triangle { 0, x, y } smooth_triangle { 0, z, x, z, y, z texture { pigment { rgb 1 } } }\n"
+              "  inside_vector z }\n");
+    tap_ok(s && s->nobjects == 2, "mesh2 and mesh parse");
+    if (s && s->nobjects == 2) {
+        const SceneObject *m = s->objects[0];
+        tap_ok(m->kind == OBJ_MESH && m->u.mesh.nvertices == 4 && m->u.mesh.nfaces == 2 && m->u.mesh.ntextures == 2,
+               "mesh2 counts");
+        tap_ok(m->u.mesh.faces[1].v[2] == 3 && m->u.mesh.faces[0].texture == 1 && m->u.mesh.faces[1].texture == 0 &&
+                   m->u.mesh.faces[1].n[1] == 0,
+               "mesh2 indices, texture indices, normal indices");
+        tap_ok(near(m->transform.m[3][2], 1), "mesh2 transform");
+        m = s->objects[1];
+        tap_ok(m->u.mesh.nfaces == 2 && m->u.mesh.nvertices == 6 && m->u.mesh.faces[0].n[0] == -1 &&
+                   m->u.mesh.faces[1].n[2] == 2 && m->u.mesh.faces[1].texture == 0 && m->u.mesh.faces[0].texture == -1,
+               "mesh triangles become indexed faces");
+    }
+    scene_free(s);
+
+    s = parse("triangle { <0,0,0>, <1,0,0>, <0,1,0> no_shadow double_illuminate }\n"
+              "smooth_triangle { 0, y, x, y, z, y hollow no_image no_reflection }\n"
+              "box { -1, 1 rotate <0, 90, 0> matrix <1,0,0, 0,1,0, 0,0,1, 0,0,5> transform { scale 2 inverse } }\n");
+    tap_ok(s && s->nobjects == 3, "triangle, smooth_triangle, box with matrix and transform");
+    if (s && s->nobjects == 3) {
+        tap_ok(s->objects[0]->no_shadow && s->objects[0]->double_illuminate, "flags");
+        tap_ok(s->objects[1]->u.triangle.has_normals && vnear(s->objects[1]->u.triangle.n[2], 0, 1, 0) &&
+                   s->objects[1]->hollow && s->objects[1]->no_image && s->objects[1]->no_reflection,
+               "smooth_triangle normals and flags");
+        Vec3 q = transform_point(&s->objects[2]->transform, v3(1, 0, 0));
+        tap_ok(vnear(q, 0, 0, -1.0 / 2 + 2.5), "rotate, matrix, inverse transform in order (%g %g %g)", q.x, q.y, q.z);
+    }
+    scene_free(s);
+}
+
+static void test_camera_lights(void)
+{
+    Scene *s = parse("camera { location <0, 2, -5> look_at <0, 1, 0> angle 60 }\n"
+                     "light_source { <10, 10, -10>, rgb 1 }\n"
+                     "light_source { <0, 1, 0> color rgb <1, 0.5, 0> parallel point_at <0, 0, 0> translate x shadowless "
+                     "fade_distance 3 fade_power 2 }\n"
+                     "background { rgb <0.1, 0.2, 0.3> }\n"
+                     "global_settings { assumed_gamma 1.0 max_trace_level 7 ambient_light rgb 0.5 radiosity { count 10 } }\n");
+    tap_ok(s != NULL, "camera, lights, background, global_settings");
+    if (s) {
+        const SceneCamera *c = &s->camera;
+        /* direction length 1.33/2/tan(30 deg); values checked against POV-Ray's formulas */
+        double dl = 1.33 / 2.0 / tan(M_PI / 6);
+        Vec3 d = v3_normalize(v3(0, -1, 5));
+        tap_ok(s->has_camera && vnear(c->location, 0, 2, -5), "camera location");
+        tap_ok(vnear(c->direction, d.x * dl, d.y * dl, d.z * dl), "look_at + angle direction");
+        tap_ok(vnear(c->right, 1.33, 0, 0), "right keeps length and handedness");
+        Vec3 up = v3_cross(d, v3(1, 0, 0));
+        tap_ok(vnear(c->up, up.x, up.y, up.z), "up is perpendicular");
+        tap_ok(s->nlights == 2 && s->lights[1].kind == LIGHT_PARALLEL && vnear(s->lights[1].location, 1, 1, 0) &&
+                   vnear(s->lights[1].point_at, 1, 0, 0) && s->lights[1].shadowless &&
+                   near(s->lights[1].fade_distance, 3) && near(s->lights[1].colour.g, 0.5),
+               "parallel light with transform applied");
+        tap_ok(near(s->background.b, 0.3) && near(s->background.transmit, 0), "background");
+        tap_ok(s->globals.has_assumed_gamma && near(s->globals.assumed_gamma, 1) && s->globals.max_trace_level == 7 &&
+                   near(s->globals.ambient_light.g, 0.5),
+               "global settings");
+    }
+    scene_free(s);
+
+    s = parse("box { 0, 1 }");
+    tap_ok(s && !s->has_camera && vnear(s->camera.right, 1.33, 0, 0) && vnear(s->camera.direction, 0, 0, 1) &&
+               near(s->background.transmit, 1),
+           "default camera and background");
+    scene_free(s);
+
+    /* left-handed right flips when right is given negative (a right-handed camera) */
+    s = parse("camera { right -x * 4 / 3 up y location <3, 3, 3> look_at 0 sky z }");
+    if (s) {
+        const SceneCamera *c = &s->camera;
+        Vec3 d = v3_normalize(v3(-3, -3, -3));
+        Vec3 r = v3_scale(v3_normalize(v3_cross(v3(0, 0, 1), d)), -4.0 / 3.0);
+        tap_ok(vnear(c->right, r.x, r.y, r.z), "negative right with sky z");
+        tap_ok(vnear(c->direction, d.x, d.y, d.z), "direction keeps unit length");
+    } else {
+        tap_ok(0, "negative right with sky z");
+        tap_ok(0, "direction keeps unit length");
+    }
+    scene_free(s);
+
+    s = parse("camera { orthographic location <0, 0, -10> look_at 0 }\n"
+              "#declare C = camera { location <1, 2, 3> }\ncamera { C translate x }\n");
+    tap_ok(s && vnear(s->camera.location, 2, 2, 3), "declared camera with transform");
+    scene_free(s);
+    s = parse("camera { orthographic location <0, 0, -10> look_at 0 }");
+    tap_ok(s && s->camera.kind == CAMERA_ORTHOGRAPHIC && vnear(s->camera.right, 13.3, 0, 0) &&
+               vnear(s->camera.up, 0, 10, 0),
+           "orthographic camera sizes right/up like POV-Ray");
+    scene_free(s);
+}
+
+static void write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
+static void test_errors(void)
+{
+    expect_error("polygon foo", 1, 9, "expected '{' after 'polygon', found 'foo'", "missing brace");
+    expect_error("box { 0, 1\n", 2, 1, "found the end of the file", "unclosed block");
+    expect_error("box { 0, Nope }", 1, 10, "undeclared identifier 'Nope'", "unknown identifier");
+    expect_error("sphere { 0, 1 }", 1, 1, "'sphere' is not supported by hstrace", "unsupported object");
+    expect_error("light_source { 0, 1 spotlight }", 1, 21, "'spotlight' is not supported", "spotlight");
+    expect_error("#declare I = 0;\n#while (1)\n#end\n", 2, 1, "loop iterations", "runaway #while");
+    expect_error("#include \"nonexistent.inc\"\n", 1, 10, "cannot open include file 'nonexistent.inc' (searched: ",
+                 "missing include file");
+    tap_ok(err.is_io, "missing include file is an I/O error");
+    expect_error("#if (1)\nbox { 0, 1 }\n", 1, 1, "no matching #end", "#if without #end");
+    expect_error("#declare X = 1\nbox { 0, X }", 2, 1, "expected ';'", "missing semicolon after a float");
+    expect_error("box { 0, 1 } }", 1, 14, "expected an object", "stray brace");
+    expect_error("box { 0, 1 bounded_by { box { 0, 1 } } }", 1, 12, "'bounded_by' is not supported", "bounded_by");
+    expect_error("box { 0, 1 texture { pigment { checker } } }", 1, 32, "'checker' is not supported", "pattern");
+    expect_error("#error \"stop here\"\n", 1, 1, "#error: stop here", "#error");
+    expect_error("box { 0, <1, 2, 3 }", 1, 19, "expected", "unclosed vector");
+    expect_error("box { 0, ((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((("
+                 "((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((("
+                 "(((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((1",
+                 1, 110, "nested too deeply", "deep nesting is an error, not a crash");
+
+    /* an unsupported object declared in an include file, used in the scene */
+    char dir[] = "/tmp/hst_parser_testXXXXXX";
+    if (!mkdtemp(dir)) {
+        tap_ok(0, "temporary folder");
+        return;
+    }
+    char inc[300], main_file[300], loop_a[300], loop_b[300];
+    snprintf(inc, sizeof inc, "%s/shapes_x.inc", dir);
+    snprintf(main_file, sizeof main_file, "%s/main.pov", dir);
+    snprintf(loop_a, sizeof loop_a, "%s/a.inc", dir);
+    snprintf(loop_b, sizeof loop_b, "%s/b.inc", dir);
+    write_file(inc, "// shapes\n#declare Ball =\n  union { box { 0, 1 } sphere { 0, 1 } }\n#declare Plate = box { 0, 1 }\n");
+    write_file(main_file, "#include \"shapes_x.inc\"\nobject { Plate }\n  object { Ball }\n");
+    Scene *s = parse_scene_file(main_file, &opts, &err);
+    char want[400];
+    snprintf(want, sizeof want, "'sphere' is not supported by hstrace (declared at %s:3)", inc);
+    tap_ok(!s && err.line == 3 && err.column == 12 && strcmp(err.message, want) == 0 && strstr(err.file, "main.pov"),
+           "unsupported object from an include file: error at its use");
+    if (s || strcmp(err.message, want) != 0)
+        tap_diag("got %s:%d:%d: %s", err.file, err.line, err.column, err.message);
+    scene_free(s);
+
+    write_file(loop_a, "#include \"b.inc\"\n");
+    write_file(loop_b, "box { 0, 1 }\n#include \"a.inc\"\n");
+    s = parse_scene_file(loop_a, &opts, &err);
+    tap_ok(!s && strstr(err.message, "includes itself") && strstr(err.file, ".inc"), "include cycle is reported");
+    if (s || !strstr(err.message, "includes itself"))
+        tap_diag("got %s:%d:%d: %s", err.file, err.line, err.column, err.message);
+    scene_free(s);
+
+    s = parse_scene_file("/nonexistent/scene.pov", &opts, &err);
+    tap_ok(!s && err.is_io && strstr(err.message, "cannot open"), "unreadable scene file is an I/O error");
+    scene_free(s);
+
+    remove(inc);
+    remove(main_file);
+    remove(loop_a);
+    remove(loop_b);
+    rmdir(dir);
+}
+
+static void test_includes(void)
+{
+    Scene *s = parse("#include \"colors.inc\"\n#include \"finish.inc\"\n#include \"colors.inc\"\n"
+                     "box { 0, 1 pigment { Coral } finish { Mirror } }\n");
+    tap_ok(s && near(s->objects[0]->texture->pigment.colour.g, 0.498039) &&
+               near(s->objects[0]->texture->finish.reflection_max[0], 1),
+           "colors.inc and finish.inc, included twice");
+    scene_free(s);
+}
+
+/* Truncated and mutated scenes: an error or a scene, never a crash. */
+static void test_robustness(void)
+{
+    const char *base = "#version 3.7;\n#include \"colors.inc\"\nglobal_settings { assumed_gamma 1 }\n"
+                       "camera { location <0, 1, -3> look_at 0 angle 50 }\n"
+                       "light_source { <2, 4, -3>, White }\n"
+                       "#declare I = 0;\n#while (I < 3)\n"
+                       "  polygon { 5, <0,0>, <1,0>, <1,1>, <0,1>, <0,0> translate I*x pigment { rgb <1, I/3, 0> } }\n"
+                       "  #declare I = I + 1;\n#end\n"
+                       "mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 2> } }\n"
+                       "union { box { -1, 1 finish { phong 1 } } plane { y, -1 } rotate 30*y }\n"
+                       "/* c /* nested */ */ #if (I > 2) box { 0, 1 } #else triangle { 0, x, y } #end\n";
+    size_t n = strlen(base);
+    char *buf = malloc(n + 1);
+    int scenes = 0, errors = 0;
+    for (size_t cut = 0; cut <= n; cut++) {
+        memcpy(buf, base, cut);
+        buf[cut] = '\0';
+        Scene *s = parse_scene_string("t.pov", buf, &opts, &err);
+        if (s)
+            scenes++;
+        else
+            errors++;
+        scene_free(s);
+    }
+    tap_ok(scenes + errors == (int)n + 1, "every truncation returns (%d scenes, %d errors)", scenes, errors);
+    static const char junk[] = "{}()<>#,;\"/*x0.9-";
+    unsigned seed = 12345;
+    scenes = errors = 0;
+    for (int round = 0; round < 3000; round++) {
+        memcpy(buf, base, n + 1);
+        for (int k = 0; k < 1 + round % 4; k++) {
+            seed = seed * 1103515245u + 12345u;
+            size_t at = (seed >> 8) % n;
+            seed = seed * 1103515245u + 12345u;
+            buf[at] = (seed >> 9) % 3 ? junk[(seed >> 12) % (sizeof junk - 1)] : (char)((seed >> 12) & 0xff);
+        }
+        buf[n] = '\0';
+        Scene *s = parse_scene_string("t.pov", buf, &opts, &err);
+        if (s)
+            scenes++;
+        else
+            errors++;
+        scene_free(s);
+    }
+    tap_ok(scenes + errors == 3000, "every mutation returns (%d scenes, %d errors)", scenes, errors);
+    free(buf);
+}
+
+int main(void)
+{
+    test_expressions();
+    test_colours();
+    test_finish_texture();
+    test_directives();
+    test_objects();
+    test_camera_lights();
+    test_errors();
+    test_includes();
+    test_robustness();
+    return tap_done();
+}
