@@ -389,6 +389,7 @@ static void parse_vector_list(Parser *p, TempVec *out, const char *what)
         parse_comma(p);
         *(Vec3 *)tvec_push(p, out) = parse_vector(p);
     }
+    parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
     expect_punct(p, '}', what);
 }
 
@@ -435,6 +436,7 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                     fail_expected(p, tt, "'texture' in 'texture_list'");
                 *(const SceneTexture **)tvec_push(p, &mb.textures) = parse_texture(p);
             }
+            parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
             expect_punct(p, '}', "texture_list");
             continue;
         }
@@ -468,6 +470,7 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                         f->texture = (int)ti;
                 }
             }
+            parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
             expect_punct(p, '}', "face_indices");
             have_faces = 1;
             continue;
@@ -492,6 +495,7 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                 f->n[1] = (int)idx.y;
                 f->n[2] = (int)idx.z;
             }
+            parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
             expect_punct(p, '}', "normal_indices");
             have_normal_indices = 1;
             continue;
