@@ -6,9 +6,9 @@
 
 void grid_choose_resolution(const World *w, Vec3 lo, Vec3 hi, int res[3])
 {
-    /* About two cells per polygon, shaped like the box: the usual ARTS
+    /* About eight cells per polygon, shaped like the box: the usual ARTS
      * heuristic. Flat boxes get one cell across their thin axis. */
-    const double density = 2.0;
+    const double density = 8.0;
     double n = w->npolygons > 0 ? w->npolygons : 1;
     Vec3 ext = v3_sub(hi, lo);
     double e[3] = { ext.x, ext.y, ext.z };

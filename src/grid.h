@@ -20,7 +20,7 @@ typedef struct {
 } Grid;
 
 /* Cells per axis from the polygon count and the box's shape, aiming at about
- * `density` cells per polygon (ARTS-style uniform grids do best near 1-4). */
+ * eight cells per polygon (measured best of 2, 8, 16, 32 on the project's scenes). */
 void grid_choose_resolution(const World *w, Vec3 box_min, Vec3 box_max, int res[3]);
 
 /* Builds the grid over the box holding all polygons and the extra points

@@ -110,7 +110,7 @@ int main(void)
     int r[3];
     grid_choose_resolution(&w, g.min, g.max, r);
     double cells = (double)r[0] * r[1] * r[2];
-    tap_ok(cells >= w.npolygons && cells <= 8.0 * w.npolygons, "heuristic gives %dx%dx%d cells for %d polygons", r[0],
+    tap_ok(cells >= 4.0 * w.npolygons && cells <= 32.0 * w.npolygons, "heuristic gives %dx%dx%d cells for %d polygons", r[0],
            r[1], r[2], w.npolygons);
 
     grid_free(&g);
