@@ -53,9 +53,8 @@ void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *ligh
         int c = grid_cell_index(g, walk.cell);
         for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
             uint32_t pi = g->items[k];
-            if (ctx->stamp[pi] == id)
+            if (!bucket_admit(ctx, id, pi))
                 continue;
-            ctx->stamp[pi] = id;
             const Polygon *p = &w->polygons[pi];
             const Material *m = &w->materials[p->material];
             if (m->no_shadow)

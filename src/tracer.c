@@ -58,9 +58,8 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
             int c = grid_cell_index(g, walk.cell);
             for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
                 uint32_t pi = g->items[k];
-                if (ctx->stamp[pi] == id)
+                if (!bucket_admit(ctx, id, pi))
                     continue;
-                ctx->stamp[pi] = id;
                 ctx->stats.polygon_tests++;
                 double t = intersect_polygon(w, &w->polygons[pi], org, dir);
                 if (t > tmin && t < best && t < plane_t) {

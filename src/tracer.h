@@ -56,6 +56,16 @@ static inline uint32_t trace_new_segment(TraceContext *ctx)
     return ctx->ray_id;
 }
 
+/* The bucket test: 1 when polygon pi is new to the segment `id` (and now
+ * marked), 0 when the segment has already tested it in an earlier cell. */
+static inline int bucket_admit(TraceContext *ctx, uint32_t id, uint32_t pi)
+{
+    if (ctx->stamp[pi] == id)
+        return 0;
+    ctx->stamp[pi] = id;
+    return 1;
+}
+
 /* Smallest distance below which a hit is taken to be the segment's own start
  * point: a few thousand ulps of the coordinates involved. */
 static inline double trace_min_distance(Vec3 org)
