@@ -4,7 +4,7 @@
 #version 3.7;
 global_settings { assumed_gamma 1 }
 
-camera { location <0, 3.2, -7.5> look_at <0, 1.0, 0.5> angle 48 right x*image_width/image_height }
+camera { location <0, 3.2, -7.5> look_at <0, 1.0, 0.5> angle 48 right x*4/3 }
 light_source { <-3, 7, -4> color rgb <0.85, 0.82, 0.75> }
 light_source { <5, 4, -2> color rgb <0.35, 0.38, 0.50> parallel point_at <0, 0, 0> }
 background { color rgb <0.10, 0.12, 0.18> }
@@ -22,14 +22,14 @@ polygon { 10,
 
 // A stencil: a plate with letter-like holes, one hole holding an island
 #declare R = 0.18;
-polygon { 5 + 5 + 5 + 9 + 5 + 5,
+polygon { 5 + 5 + 5 + 7 + 5 + 5,
   <-1.4, -0.8>, <1.4, -0.8>, <1.4, 0.8>, <-1.4, 0.8>, <-1.4, -0.8>,
   // an "I"
   <-1.1, -0.5>, <-0.9, -0.5>, <-0.9, 0.5>, <-1.1, 0.5>, <-1.1, -0.5>,
   // an "O": outer hole ...
   <-0.6, -0.5>, <0.0, -0.5>, <0.0, 0.5>, <-0.6, 0.5>, <-0.6, -0.5>,
   // an "L"
-  <0.25, -0.5>, <0.85, -0.5>, <0.85, -0.3>, <0.45, -0.3>, <0.45, 0.5>, <0.35, 0.5>, <0.35, 0.5>, <0.25, 0.5>, <0.25, -0.5>,
+  <0.25, -0.5>, <0.85, -0.5>, <0.85, -0.3>, <0.45, -0.3>, <0.45, 0.5>, <0.25, 0.5>, <0.25, -0.5>,
   // ... and the island inside the "O" (inside the hole: solid again)
   <-0.45, -0.3>, <-0.15, -0.3>, <-0.15, 0.3>, <-0.45, 0.3>, <-0.45, -0.3>,
   // a small window

@@ -3,7 +3,7 @@
 #version 3.7;
 global_settings { assumed_gamma 1 max_trace_level 6 }
 
-camera { location <0, 3.4, -6.5> look_at <0, 0.6, 0> angle 50 right x*image_width/image_height }
+camera { location <0, 3.4, -6.5> look_at <0, 0.6, 0> angle 50 right x*4/3 }
 light_source { <4, 7, -5> color rgb <0.90, 0.85, 0.80> }
 light_source { <-5, 4, -1> color rgb <0.30, 0.35, 0.50> }
 background { color rgb <0.12, 0.14, 0.20> }
