@@ -51,6 +51,6 @@ polygon { 5 + 5*Slots,
   pigment { color rgb <0.85, 0.80, 0.35> }
   rotate x*90 translate <-0.4, 0.45, -1.2>
 }
-// its two supports
-box { <-0.05, 0, -0.05>, <0.05, 0.45, 0.05> pigment { color rgb 0.4 } translate <-1.5, 0, -1.2> }
-box { <-0.05, 0, -0.05>, <0.05, 0.45, 0.05> pigment { color rgb 0.4 } translate < 0.7, 0, -1.2> }
+// its two supports, stopping just under the plate (coplanar faces would z-fight)
+box { <-0.05, 0, -0.05>, <0.05, 0.449, 0.05> pigment { color rgb 0.4 } translate <-1.5, 0, -1.2> }
+box { <-0.05, 0, -0.05>, <0.05, 0.449, 0.05> pigment { color rgb 0.4 } translate < 0.7, 0, -1.2> }
