@@ -34,7 +34,7 @@ void grid_choose_resolution(const World *w, Vec3 lo, Vec3 hi, int res[3])
 
 /* Sutherland-Hodgman: clip the convex-or-not outline in `in` against the
  * half space where coordinate `axis` is >= (sign>0) or <= (sign<0) `bound`. */
-static int clip_against(const Vec3 *in, int n, Vec3 *out, int axis, double bound, int sign)
+int clip_against(const Vec3 *in, int n, Vec3 *out, int axis, double bound, int sign)
 {
     int m = 0;
     for (int i = 0; i < n; i++) {
@@ -51,7 +51,7 @@ static int clip_against(const Vec3 *in, int n, Vec3 *out, int axis, double bound
     return m;
 }
 
-static int outline_overlaps_box(const Vec3 *pts, int n, Vec3 lo, Vec3 hi, Vec3 *buf_a, Vec3 *buf_b)
+static int outline_overlaps_box_buf(const Vec3 *pts, int n, Vec3 lo, Vec3 hi, Vec3 *buf_a, Vec3 *buf_b)
 {
     memcpy(buf_a, pts, sizeof(Vec3) * (size_t)n);
     int m = n;
@@ -65,6 +65,14 @@ static int outline_overlaps_box(const Vec3 *pts, int n, Vec3 lo, Vec3 hi, Vec3 *
         t = src; src = dst; dst = t;
     }
     return m > 0;
+}
+
+int outline_overlaps_box(const Vec3 *pts, int n, Vec3 lo, Vec3 hi)
+{
+    Vec3 a[16], b[16];
+    if (n + 8 > 16)
+        return 1; /* only short outlines are asked for; register conservatively */
+    return outline_overlaps_box_buf(pts, n, lo, hi, a, b);
 }
 
 int polygon_overlaps_box(const World *w, const Polygon *p, Vec3 lo, Vec3 hi)
@@ -82,12 +90,12 @@ int polygon_overlaps_box(const World *w, const Polygon *p, Vec3 lo, Vec3 hi)
     int hit = 1; /* when memory is short, register conservatively */
     if (a && b) {
         if (p->first_outline < 0) {
-            hit = outline_overlaps_box(&w->points[p->first_point], 3, lo, hi, a, b);
+            hit = outline_overlaps_box_buf(&w->points[p->first_point], 3, lo, hi, a, b);
         } else {
             hit = 0;
             const int *start = &w->outline_start[p->first_outline];
             for (int k = 0; k < p->noutlines && !hit; k++)
-                hit = outline_overlaps_box(&w->points[start[k]], start[k + 1] - start[k], lo, hi, a, b);
+                hit = outline_overlaps_box_buf(&w->points[start[k]], start[k + 1] - start[k], lo, hi, a, b);
         }
     }
     if (a != stack_a) free(a);
@@ -99,7 +107,7 @@ typedef struct {
     uint32_t cell, polygon;
 } Registration;
 
-static int cell_coord(const Grid *g, double x, int axis)
+int grid_cell_coord(const Grid *g, double x, int axis)
 {
     int c = (int)floor((x - v3_comp(g->min, axis)) * v3_comp(g->inv_cell_size, axis));
     return c < 0 ? 0 : c >= g->n[axis] ? g->n[axis] - 1 : c;
@@ -148,8 +156,8 @@ int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int n
         const Polygon *p = &w->polygons[pi];
         int c0[3], c1[3];
         for (int a = 0; a < 3; a++) {
-            c0[a] = cell_coord(g, v3_comp(p->bbox_min, a), a);
-            c1[a] = cell_coord(g, v3_comp(p->bbox_max, a), a);
+            c0[a] = grid_cell_coord(g, v3_comp(p->bbox_min, a), a);
+            c1[a] = grid_cell_coord(g, v3_comp(p->bbox_max, a), a);
         }
         int single = c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2];
         for (int z = c0[2]; z <= c1[2]; z++)
@@ -201,6 +209,33 @@ int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int n
     free(fill);
     free(regs);
     return 0;
+}
+
+int grid_extra_points(const World *w, Vec3 *out, int cap)
+{
+    int n = 0;
+    if (n < cap)
+        out[n++] = w->camera.location;
+    if (!(w->bounds_min.x <= w->bounds_max.x))
+        return n;
+    Vec3 ext = v3_sub(w->bounds_max, w->bounds_min);
+    double diagonal = v3_length(ext);
+    for (int i = 0; i < w->nplanes && n + 8 <= cap; i++) {
+        const InfinitePlane *pl = &w->planes[i];
+        Vec3 corner[8];
+        double nearest = HUGE_VAL;
+        for (int k = 0; k < 8; k++) {
+            corner[k] = v3(k & 1 ? w->bounds_max.x : w->bounds_min.x, k & 2 ? w->bounds_max.y : w->bounds_min.y,
+                           k & 4 ? w->bounds_max.z : w->bounds_min.z);
+            nearest = fmin(nearest, fabs(v3_dot(pl->normal, corner[k]) - pl->d));
+        }
+        /* Only planes near the geometry: a far one would stretch the grid. */
+        if (nearest > diagonal)
+            continue;
+        for (int k = 0; k < 8; k++)
+            out[n++] = v3_madd(corner[k], pl->normal, pl->d - v3_dot(pl->normal, corner[k]));
+    }
+    return n;
 }
 
 void grid_free(Grid *g)

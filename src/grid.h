@@ -30,9 +30,26 @@ void grid_choose_resolution(const World *w, Vec3 box_min, Vec3 box_max, int res[
 int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int nextra);
 void grid_free(Grid *g);
 
+/* Points the grid box must hold besides the polygons: the camera, and the
+ * corners of the polygons' box projected onto each infinite plane (so that
+ * shadows falling on a floor are inside). Returns how many were written. */
+int grid_extra_points(const World *w, Vec3 *out, int cap);
+
 /* Exact overlap of polygon p with the axis-aligned box [lo, hi] (polygon
  * clipped against the box; holes are ignored, which only over-registers). */
 int polygon_overlaps_box(const World *w, const Polygon *p, Vec3 lo, Vec3 hi);
+
+/* Sutherland-Hodgman: clips the outline in[0..n) against the half space
+ * where coordinate `axis` is >= bound (sign > 0) or <= bound (sign < 0);
+ * out needs room for n + 1 points. Returns the new point count. */
+int clip_against(const Vec3 *in, int n, Vec3 *out, int axis, double bound, int sign);
+
+/* Overlap of a planar outline of at most 8 points with [lo, hi] (exact
+ * clipping; longer outlines are taken to overlap). */
+int outline_overlaps_box(const Vec3 *pts, int n, Vec3 lo, Vec3 hi);
+
+/* The cell coordinate holding x on `axis`, clamped to the grid. */
+int grid_cell_coord(const Grid *g, double x, int axis);
 
 /* A 3DDDA walk along org + t*dir for t in [t0, t1]. */
 typedef struct {

@@ -20,25 +20,30 @@ static int triangle_contains(const Vec3 *v, int iu, int iv, double qu, double qv
     return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
 }
 
-/* Crossing-number test of a +u ray from q against each outline's edges. */
+int outline_contains(const Vec3 *pts, int n, int iu, int iv, double qu, double qv)
+{
+    int inside = 0;
+    for (int i = 0; i < n; i++) {
+        Vec3 a = pts[i], b = pts[i + 1 < n ? i + 1 : 0];
+        double au = comp(a, iu), av = comp(a, iv);
+        double bu = comp(b, iu), bv = comp(b, iv);
+        if ((av >= qv) != (bv >= qv)) {
+            /* u of the edge at height qv, compared without division. */
+            double lhs = (qu - au) * (bv - av), rhs = (qv - av) * (bu - au);
+            if ((bv > av) ? lhs < rhs : lhs > rhs)
+                inside = !inside;
+        }
+    }
+    return inside;
+}
+
+/* Even-odd over all outlines: a point inside an odd number of them is inside. */
 static int outlines_contain(const World *w, const Polygon *p, double qu, double qv)
 {
     int inside = 0;
     const int *start = &w->outline_start[p->first_outline];
-    for (int k = 0; k < p->noutlines; k++) {
-        int s = start[k], e = start[k + 1];
-        for (int i = s; i < e; i++) {
-            Vec3 a = w->points[i], b = w->points[(i + 1 < e) ? i + 1 : s];
-            double au = comp(a, p->axis_u), av = comp(a, p->axis_v);
-            double bu = comp(b, p->axis_u), bv = comp(b, p->axis_v);
-            if ((av >= qv) != (bv >= qv)) {
-                /* u of the edge at height qv, compared without division. */
-                double lhs = (qu - au) * (bv - av), rhs = (qv - av) * (bu - au);
-                if ((bv > av) ? lhs < rhs : lhs > rhs)
-                    inside = !inside;
-            }
-        }
-    }
+    for (int k = 0; k < p->noutlines; k++)
+        inside ^= outline_contains(&w->points[start[k]], start[k + 1] - start[k], p->axis_u, p->axis_v, qu, qv);
     return inside;
 }
 

@@ -15,6 +15,10 @@ double intersect_plane(const InfinitePlane *pl, Vec3 org, Vec3 dir);
  * p's outlines, so later outlines cut holes, as in POV-Ray. */
 int polygon_contains(const World *w, const Polygon *p, Vec3 q);
 
+/* Crossing-number test of the point (qu, qv) against one closed outline of
+ * n points, projected onto axes iu and iv. */
+int outline_contains(const Vec3 *pts, int n, int iu, int iv, double qu, double qv);
+
 /* The shading normal of p at q: the plane normal, or the interpolated
  * vertex normal of a smooth triangle. Not yet flipped toward the viewer. */
 Vec3 polygon_shading_normal(const World *w, const Polygon *p, Vec3 q);

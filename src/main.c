@@ -11,7 +11,9 @@
 #include "options.h"
 #include "parser.h"
 #include "render.h"
+#include "cost_model.h"
 #include "shadow.h"
+#include "shadow_volumes.h"
 #include "stats.h"
 #include "world.h"
 
@@ -132,13 +134,40 @@ int main(int argc, char **argv)
         free(owned_output);
         return EXIT_IO;
     }
+    /* The grid box holds the camera (depth counts start there) and the part
+     * of every infinite plane under the geometry, where shadows fall. */
+    Vec3 extra[1 + 8 * 16];
+    int nextra = grid_extra_points(&world, extra, (int)(sizeof extra / sizeof extra[0]));
     Grid grid;
-    if (grid_build(&grid, &world, opt.grid[0] ? opt.grid : NULL, NULL, 0)) {
+    if (grid_build(&grid, &world, opt.grid[0] ? opt.grid : NULL, extra, nextra)) {
         fprintf(stderr, "hstrace: out of memory while building the grid\n");
         world_free(&world);
         scene_free(scene);
         free(owned_output);
         return EXIT_IO;
+    }
+    const ShadowMethod *method = shadow_method_find(opt.shadows);
+    ShadowVolumes volumes;
+    memset(&volumes, 0, sizeof volumes);
+    CostModel cost;
+    memset(&cost, 0, sizeof cost);
+    int have_volumes = 0;
+    if (method->uses_volumes && opt.quality >= 4) {
+        double tv = clock_wall();
+        const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
+        if (shadow_volumes_build(&volumes, &world, &grid, eye)) {
+            fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
+            grid_free(&grid);
+            world_free(&world);
+            scene_free(scene);
+            free(owned_output);
+            return EXIT_IO;
+        }
+        have_volumes = 1;
+        report.volumes_seconds = clock_wall() - tv;
+        if (cost_model_calibrate(&cost, &world, &grid, &volumes) == 0)
+            report.cost = &cost;
+        report.volumes = &volumes;
     }
     report.preprocess_seconds = clock_wall() - t;
     memcpy(report.grid, grid.n, sizeof report.grid);
@@ -153,7 +182,14 @@ int main(int argc, char **argv)
     ropt.height = opt.height;
     ropt.threads = opt.threads > 0 ? opt.threads : online_cpus();
     ropt.quality = quality_from_level(opt.quality);
-    ropt.shadow = shadow_method_find(opt.shadows);
+    ropt.shadow = method;
+    ropt.volumes = have_volumes ? &volumes : NULL;
+    ropt.cost = &cost;
+    ropt.verify = opt.verify_shadows;
+    ropt.nth = opt.nth == NTH_PER_POINT ? -1.0 : opt.nth == NTH_AUTO ? cost.nth : opt.nth;
+    report.nth = ropt.nth;
+    report.nth_mode = opt.nth == NTH_PER_POINT ? "per-point" : opt.nth == NTH_AUTO ? "auto (eq. 7)" : "fixed";
+    report.verify = opt.verify_shadows;
     ropt.progress = isatty(STDERR_FILENO);
     report.threads = ropt.threads;
 
@@ -183,6 +219,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "hstrace: %s\n", err);
         status = EXIT_IO;
     }
+    if (have_volumes)
+        shadow_volumes_free(&volumes);
     grid_free(&grid);
     world_free(&world);
     scene_free(scene);

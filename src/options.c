@@ -53,7 +53,11 @@ void options_usage(FILE *f)
             "  -o, --output FILE      image to write (.exr, .png or .ppm; default SCENE.png)\n"
             "      --width N          image width in pixels (default 320)\n"
             "      --height N         image height in pixels (default 240)\n"
-            "      --shadows METHOD   shadow test: %s (default conventional)\n"
+            "      --shadows METHOD   shadow test: %s (default hst)\n"
+            "      --nth N|auto|per-point  hst's switching threshold N_th: fixed, from the\n"
+            "                         paper's eq. (7) once per scene (default), or per shading point\n"
+            "      --verify-shadows   also fire the exact shadow ray at every decision and count\n"
+            "                         disagreements (--stats shows them)\n"
             "      --threads N        render threads (default: all cores); the image does not depend on N\n"
             "      --grid N|NxNxN     grid cells per axis (default: chosen from the polygon count)\n"
             "      --include-path DIR folder searched for #include files (repeatable)\n"
@@ -166,7 +170,8 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     opt->width = 320;
     opt->height = 240;
     opt->quality = 9;
-    opt->shadows = "conventional";
+    opt->shadows = "hst";
+    opt->nth = NTH_AUTO;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v;
@@ -195,6 +200,23 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 return -1;
             }
             opt->shadows = v;
+        } else if (is_long(a, "--nth")) {
+            if (!(v = option_value(argc, argv, &i, "--nth", err, errlen)))
+                return -1;
+            char *end;
+            double n = strtod(v, &end);
+            if (strcmp(v, "auto") == 0) {
+                opt->nth = NTH_AUTO;
+            } else if (strcmp(v, "per-point") == 0) {
+                opt->nth = NTH_PER_POINT;
+            } else if (end != v && *end == '\0' && n >= 0.0 && n <= 1e9) {
+                opt->nth = n;
+            } else {
+                snprintf(err, (size_t)errlen, "--nth '%s': expected auto, per-point or a number from 0 to 1e9", v);
+                return -1;
+            }
+        } else if (strcmp(a, "--verify-shadows") == 0) {
+            opt->verify_shadows = 1;
         } else if (is_long(a, "--threads")) {
             if (!(v = option_value(argc, argv, &i, "--threads", err, errlen)))
                 return -1;

@@ -14,6 +14,8 @@ enum {
 };
 
 #define MAX_INCLUDE_PATHS 32
+#define NTH_AUTO (-1.0)
+#define NTH_PER_POINT (-2.0)
 
 typedef struct {
     const char *scene;
@@ -22,6 +24,8 @@ typedef struct {
     int threads;                  /* 0: all cores */
     int quality;                  /* POV-Ray's +Q: 0..11, default 9 */
     const char *shadows;          /* method name */
+    double nth;                   /* hst's N_th; NTH_AUTO: eq. (7) once per scene; NTH_PER_POINT */
+    int verify_shadows;
     int grid[3];                  /* 0: choose from the polygon count */
     const char *include_paths[MAX_INCLUDE_PATHS];
     int ninclude_paths;

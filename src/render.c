@@ -74,10 +74,15 @@ static void *worker_main(void *arg)
     Worker *wk = arg;
     Job *job = wk->job;
     TraceContext ctx;
-    if (trace_context_init(&ctx, job->world, job->grid, job->opt->shadow, job->opt->quality)) {
+    const RenderOptions *opt = job->opt;
+    if (trace_context_init(&ctx, job->world, job->grid, opt->shadow, opt->quality, opt->volumes)) {
+        trace_context_free(&ctx);
         atomic_store(&job->failed, 1);
         return NULL;
     }
+    ctx.verify = opt->verify;
+    ctx.nth = opt->nth;
+    ctx.cost = opt->cost;
     double t0 = clock_thread_cpu();
     double last_report = 0.0;
     for (;;) {

@@ -15,6 +15,10 @@ typedef struct {
     int threads;              /* >= 1 */
     Quality quality;
     const ShadowMethod *shadow;
+    const struct ShadowVolumes *volumes; /* when the method uses them */
+    const struct CostModel *cost;        /* hst's per-point N_th */
+    double nth;               /* hst: N_th; negative: per point */
+    int verify;               /* --verify-shadows */
     int progress;             /* print a progress line on stderr */
 } RenderOptions;
 

@@ -43,9 +43,50 @@ static RGB metallic_colour(double metallic, Vec3 normal, Vec3 to_light, RGB ligh
     return r;
 }
 
+/* --verify-shadows: the shadow ray's answer beside the method's. */
+static void verify_shadow(TraceContext *ctx, const ShadowQuery *q, RGB got)
+{
+    int scheme = ctx->last_scheme;
+    RGB want;
+    RenderStats keep = ctx->stats; /* the check's own work is not the method's */
+    shadow_conventional_test(ctx, q, &want);
+    uint64_t disagreements = keep.shadow_disagreements;
+    ctx->stats = keep;
+    ctx->stats.shadow_verified++;
+    if (want.r != got.r || want.g != got.g || want.b != got.b) {
+        ctx->stats.shadow_disagreements = disagreements + 1;
+        ctx->stats.shadow_disagreements_by_scheme[scheme]++;
+    }
+    ctx->last_scheme = scheme;
+}
+
+/* The shadow methods' states when the shading asks nothing about any light. */
+static void skip_all_lights(TraceContext *ctx, const Hit *hit, const Segment *seg)
+{
+    const World *w = ctx->world;
+    if (!ctx->quality.shadows || !ctx->shadow->skip)
+        return;
+    double t0 = clock_wall();
+    for (int li = 0; li < w->nlights; li++) {
+        const Light *l = &w->lights[li];
+        if (l->shadowless)
+            continue;
+        Vec3 d = v3_sub(l->location, hit->point);
+        double distance = v3_length(d);
+        Vec3 to_light = v3_scale(d, 1.0 / distance);
+        if (l->kind == LIGHT_PARALLEL) {
+            distance *= v3_dot(l->direction, to_light);
+            to_light = l->direction;
+        }
+        ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
+        ctx->shadow->skip(ctx, &q, 0);
+    }
+    ctx->stats.shadow_seconds += clock_wall() - t0;
+}
+
 /* Diffuse, phong and specular from every light (ComputeDiffuseLight). */
-static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, Vec3 eye_dir, Vec3 normal,
-                         RGB pigment, double attenuation, RGB *acc)
+static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, const Segment *seg, Vec3 eye_dir,
+                         Vec3 normal, RGB pigment, double attenuation, RGB *acc)
 {
     const World *w = ctx->world;
     const Finish *f = &m->finish;
@@ -64,14 +105,20 @@ static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, V
         }
         double fade = light_attenuation(l, distance);
         RGB lc = { l->colour.r * fade, l->colour.g * fade, l->colour.b * fade };
-        if (fabs(lc.r) < POV_EPSILON && fabs(lc.g) < POV_EPSILON && fabs(lc.b) < POV_EPSILON)
-            continue;
+        int shadows = ctx->quality.shadows && !l->shadowless;
+        ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, normal };
         /* A light behind the surface (as seen from the eye) adds nothing and
-         * needs no shadow test. */
-        if (!m->double_illuminate && v3_dot(normal, to_light) < POV_EPSILON)
+         * needs no shadow test; methods that carry state still see it. */
+        int faces_away = !m->double_illuminate && v3_dot(normal, to_light) < POV_EPSILON;
+        if (faces_away || (fabs(lc.r) < POV_EPSILON && fabs(lc.g) < POV_EPSILON && fabs(lc.b) < POV_EPSILON)) {
+            if (shadows && ctx->shadow->skip) {
+                double t0 = clock_wall();
+                ctx->shadow->skip(ctx, &q, faces_away);
+                ctx->stats.shadow_seconds += clock_wall() - t0;
+            }
             continue;
-        if (ctx->quality.shadows && !l->shadowless) {
-            ShadowQuery q = { hit->point, hit, li, to_light, distance };
+        }
+        if (shadows) {
             RGB through;
             /* The monotonic clock is read in user space (vDSO), cheap enough
              * per query; the thread CPU clock would be a system call. */
@@ -79,6 +126,8 @@ static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, V
             ctx->shadow->test(ctx, &q, &through);
             ctx->stats.shadow_seconds += clock_wall() - t0;
             ctx->stats.shadow_queries++;
+            if (ctx->verify)
+                verify_shadow(ctx, &q, through);
             lc.r *= through.r;
             lc.g *= through.g;
             lc.b *= through.b;
@@ -225,12 +274,15 @@ static double refraction_ratio_peek(const Ray *ray, const Material *m)
 }
 
 static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int level, int continued, Radiance *out);
+static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hit, const Segment *seg, double weight,
+                      int level, Radiance *out);
 
-static void trace_reflection(TraceContext *ctx, const Ray *ray, const Hit *hit, Vec3 normal, Vec3 raw_normal,
-                             double weight, int level, Radiance *out)
+static void trace_reflection(TraceContext *ctx, const Ray *ray, const Hit *hit, const LightState *state,
+                             Vec3 normal, Vec3 raw_normal, double weight, int level, Radiance *out)
 {
     Ray r;
     r.from = *hit;
+    r.state = state;
     r.inside = ray->inside;
     r.org = hit->point;
     Vec3 d = v3_madd(ray->dir, normal, -2.0 * v3_dot(ray->dir, normal));
@@ -248,11 +300,12 @@ static void trace_reflection(TraceContext *ctx, const Ray *ray, const Hit *hit, 
 }
 
 /* Refracted or transmitted ray; returns 1 on total internal reflection. */
-static int trace_refraction(TraceContext *ctx, const Ray *ray, const Hit *hit, const Material *m, Vec3 normal,
-                            Vec3 raw_normal, double weight, int level, Radiance *out)
+static int trace_refraction(TraceContext *ctx, const Ray *ray, const Hit *hit, const LightState *state,
+                            const Material *m, Vec3 normal, Vec3 raw_normal, double weight, int level, Radiance *out)
 {
     Ray r;
     r.from = *hit;
+    r.state = state;
     r.org = hit->point;
     double ior = refraction_ratio(&ray->inside, m, &r.inside);
     if (fabs(ior - 1.0) < POV_EPSILON) {
@@ -272,7 +325,7 @@ static int trace_refraction(TraceContext *ctx, const Ray *ray, const Hit *hit, c
     double t = 1.0 + ior * ior * (n * n - 1.0);
     if (t < 0.0) {
         Radiance refl;
-        trace_reflection(ctx, ray, hit, normal, raw_normal, weight, level, &refl);
+        trace_reflection(ctx, ray, hit, state, normal, raw_normal, weight, level, &refl);
         out->r += refl.r;
         out->g += refl.g;
         out->b += refl.b;
@@ -309,6 +362,24 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
     if (!continued)
         level++;
 
+    /* The segment ray->org -> hit and a row of light states for the hit,
+     * one row per recursion depth. */
+    LightState *row = NULL;
+    int nl = w->nlights;
+    if (ctx->states && ctx->state_depth < ctx->state_capacity)
+        row = (LightState *)ctx->states + (size_t)ctx->state_depth * (size_t)nl;
+    Segment seg = { ray->org, ray->dir, &ray->from, ray->state, row };
+    ctx->state_depth++;
+    shade_hit(ctx, ray, &hit, &seg, weight, level, out);
+    ctx->state_depth--;
+}
+
+static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hitp, const Segment *seg, double weight,
+                      int level, Radiance *out)
+{
+    const World *w = ctx->world;
+    const Hit hit = *hitp;
+    const LightState *state = (const LightState *)seg->state;
     const Material *m = &w->materials[hit_material(w, &hit)];
     const Finish *f = &m->finish;
     Vec3 raw = hit.kind == HIT_POLYGON ? polygon_shading_normal(w, &w->polygons[hit.index], hit.point)
@@ -320,6 +391,7 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
     RGB pigment = { pc->r, pc->g, pc->b };
 
     if (ctx->quality.full_ambient) {
+        skip_all_lights(ctx, &hit, seg);
         out->r = pigment.r;
         out->g = pigment.g;
         out->b = pigment.b;
@@ -349,7 +421,9 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
     acc.g = pigment.g * (f->ambient[1] * w->ambient_light.g * att + f->emission[1] * att);
     acc.b = pigment.b * (f->ambient[2] * w->ambient_light.b * att + f->emission[2] * att);
     if (f->diffuse != 0.0 || f->specular != 0.0 || f->phong != 0.0)
-        direct_light(ctx, m, &hit, ray->dir, normal, pigment, att, &acc);
+        direct_light(ctx, m, &hit, seg, ray->dir, normal, pigment, att, &acc);
+    else
+        skip_all_lights(ctx, &hit, seg);
     out->r = acc.r;
     out->g = acc.g;
     out->b = acc.b;
@@ -368,7 +442,7 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
     if (trans > w->adc_bailout && ctx->quality.refraction) {
         double w1 = fmax(fabs(fil.r), fmax(fabs(fil.g), fabs(fil.b)));
         Radiance rfr = { 0, 0, 0, 0 };
-        tir = trace_refraction(ctx, ray, &hit, m, normal, raw, weight * w1, level, &rfr);
+        tir = trace_refraction(ctx, ray, &hit, state, m, normal, raw, weight * w1, level, &rfr);
         RGB attc = { 1.0, 1.0, 1.0 };
         if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON) {
             if (m->fade_power >= 1000) {
@@ -399,7 +473,7 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
      * normal is the top normal for one-layer textures). */
     if (ctx->quality.reflection && !tir && !(reflec.r == 0.0 && reflec.g == 0.0 && reflec.b == 0.0)) {
         Radiance rfl;
-        trace_reflection(ctx, ray, &hit, normal, raw, reflect_weight, level, &rfl);
+        trace_reflection(ctx, ray, &hit, state, normal, raw, reflect_weight, level, &rfl);
         double e = f->reflection_exponent;
         if (e != 1.0 && e > 0.0) {
             out->r += reflec.r * pow(rfl.r, e);

@@ -5,7 +5,7 @@
 #ifndef HST_SHADE_H
 #define HST_SHADE_H
 
-#include "tracer.h"
+#include "shadow.h"
 
 #define MAX_INTERIOR_NESTING 16
 
@@ -20,6 +20,7 @@ typedef struct {
     Vec3 org, dir;      /* dir is unit length */
     Hit from;           /* surface the ray leaves (kind HIT_NONE for camera rays) */
     InteriorList inside;
+    const LightState *state;   /* shadow methods' state per light at org; NULL: the eye */
 } Ray;
 
 /* Colour seen along a ray: rgb plus transmittance (for the alpha channel). */

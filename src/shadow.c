@@ -6,14 +6,26 @@
 /* --shadows=none: every light reaches every point (POV-Ray's +Q3 look). */
 static void shadow_none_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    (void)ctx;
     (void)q;
+    ctx->last_scheme = SCHEME_CONVENTIONAL;
     light->r = light->g = light->b = 1.0;
 }
 
+_Static_assert(SCHEME_COUNT == STATS_SCHEMES, "stats.h counts every scheme");
+
+const char *const shadow_scheme_names[SCHEME_COUNT] = { "sustain", "self-shadow", "volume", "conventional",
+                                                        "cache hit" };
+
+/* The first is the default. */
 static const ShadowMethod methods[] = {
-    { "conventional", "a shadow ray per light through the grid (exact reference)", shadow_conventional_test },
-    { "none", "no shadows: every light reaches every point", shadow_none_test },
+    { "hst", "the paper's hybrid: sustain, self-shadow, shadow volume or shadow ray, switched by N_th", 1,
+      shadow_hst_test, shadow_hst_skip },
+    { "conventional", "a shadow ray per light through the grid (exact reference)", 0, shadow_conventional_test, NULL },
+    { "cache", "shadow rays that first try the light's last opaque blocker (as POV-Ray does)", 0, shadow_cache_test,
+      NULL },
+    { "volume", "shadow volumes: a depth count carried along every segment", 1, shadow_volume_test,
+      shadow_volume_skip },
+    { "none", "no shadows: every light reaches every point", 0, shadow_none_test, NULL },
 };
 
 const ShadowMethod *shadow_method_find(const char *name)
@@ -26,5 +38,5 @@ const ShadowMethod *shadow_method_find(const char *name)
 
 const char *shadow_method_names(void)
 {
-    return "conventional, none";
+    return "hst, conventional, cache, volume, none";
 }

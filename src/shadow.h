@@ -1,25 +1,68 @@
 /* Shadow methods: one interface, selectable by name (--shadows). A method
  * answers, for a shading point and a light, how much of the light arrives:
- * (1,1,1) unblocked, (0,0,0) blocked by an opaque polygon, a colour when the
- * light passes through transparent (filter/transmit) polygons, as POV-Ray
- * filters it. The conventional shadow ray is the exact reference. */
+ * (1,1,1) unblocked, (0,0,0) blocked by an opaque object, a colour when the
+ * light passes through transparent (filter/transmit) objects, as POV-Ray
+ * filters it. The conventional shadow ray is the exact reference; every
+ * other method must give the same answer (--verify-shadows counts where it
+ * does not).
+ *
+ * Methods that carry a shadow condition along the ray tree (volume, hst)
+ * keep a LightState per light at every shading point; each ray segment
+ * knows the state at its start and fills the one at its end. */
 #ifndef HST_SHADOW_H
 #define HST_SHADOW_H
 
 #include "tracer.h"
 
+/* What is known about one light at one point. The depth counts are the
+ * number of opaque and of transparent polygons between the point and the
+ * light (the polygon the point lies on excluded); infinite planes are not
+ * counted, every method tests them directly. */
+typedef enum { COND_UNKNOWN = 0, COND_LIT, COND_BLOCKED, COND_FILTERED } ShadowCondition;
+
 typedef struct {
-    Vec3 point;          /* the shading point */
+    int8_t condition;     /* of the polygons alone (ShadowCondition) */
+    int8_t depth_known;
+    int8_t self;          /* blocked by the polygon the point lies on (self-shadow) */
+    int32_t depth_opaque, depth_transparent;
+} LightState;
+
+/* The ray segment P1 -> P2 that found the shading point P2. */
+typedef struct {
+    Vec3 org, dir;                /* P1 and the unit direction */
+    const Hit *from;              /* P1's surface (HIT_NONE: the eye) */
+    const LightState *from_state; /* per light at P1; NULL: the eye's */
+    LightState *state;            /* per light at P2, filled by the method; NULL: not kept */
+} Segment;
+
+typedef struct {
+    Vec3 point;          /* the shading point P2 */
     const Hit *surface;  /* the surface it lies on (excluded from the test) */
+    const Segment *segment;
     int light;           /* index into World.lights */
     Vec3 to_light;       /* unit direction toward the light */
     double distance;     /* to the light (parallel: to the light's plane) */
+    Vec3 normal;         /* shading normal, facing the arriving ray */
 } ShadowQuery;
+
+/* How a decision was made (statistics, --verify-shadows). */
+typedef enum {
+    SCHEME_SUSTAIN, SCHEME_SELF_SHADOW, SCHEME_VOLUME, SCHEME_CONVENTIONAL, SCHEME_CACHE_HIT,
+    SCHEME_COUNT
+} ShadowScheme;
+
+extern const char *const shadow_scheme_names[SCHEME_COUNT];
 
 typedef struct ShadowMethod {
     const char *name;
     const char *summary;
+    int uses_volumes;    /* needs shadow volumes and the shadow buckets of segments */
+    /* Decides q's light; sets ctx->last_scheme. */
     void (*test)(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
+    /* The shading needs no answer for q's light (it faces away from the
+     * point, or adds nothing there); keeps the state at P2 consistent.
+     * faces_away: the shading normal faces away from the light. May be NULL. */
+    void (*skip)(TraceContext *ctx, const ShadowQuery *q, int faces_away);
 } ShadowMethod;
 
 /* NULL when no method has that name. */
@@ -27,7 +70,18 @@ const ShadowMethod *shadow_method_find(const char *name);
 /* Names of all methods, comma separated, for messages and --help. */
 const char *shadow_method_names(void);
 
-/* The exact test: a shadow ray walked through the grid to the light. */
+/* The exact test: a shadow ray walked through the grid to the light,
+ * infinite planes first, then polygons. */
 void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
+/* Its two halves, so that methods sharing the plane part stay exact:
+ * both multiply into *light and return 1 when it is fully blocked. */
+int shadow_planes_test(TraceContext *ctx, const ShadowQuery *q, RGB *light);
+int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light);
+
+void shadow_cache_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
+void shadow_volume_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
+void shadow_volume_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away);
+void shadow_hst_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
+void shadow_hst_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away);
 
 #endif

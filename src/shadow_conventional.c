@@ -21,15 +21,10 @@ static int pass_through(const Material *m, RGB *light)
     return 0;
 }
 
-void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+int shadow_planes_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->world;
-    const Grid *g = ctx->grid;
-    light->r = light->g = light->b = 1.0;
-    ctx->stats.shadow_rays++;
     double tmin = trace_min_distance(q->point);
-    double tmax = q->distance;
-
     for (int i = 0; i < w->nplanes; i++) {
         if (q->surface->kind == HIT_PLANE && q->surface->index == i)
             continue;
@@ -37,15 +32,22 @@ void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *ligh
         if (w->materials[pl->material].no_shadow)
             continue;
         double t = intersect_plane(pl, q->point, q->to_light);
-        if (t > tmin && t < tmax && pass_through(&w->materials[pl->material], light)) {
-            ctx->stats.shadow_blocked++;
-            return;
-        }
+        if (t > tmin && t < q->distance && pass_through(&w->materials[pl->material], light))
+            return 1;
     }
+    return 0;
+}
 
+int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    const World *w = ctx->world;
+    const Grid *g = ctx->grid;
+    ctx->stats.shadow_rays++;
+    double tmin = trace_min_distance(q->point);
+    double tmax = q->distance;
     GridWalk walk;
     if (w->npolygons == 0 || !grid_walk_begin(g, q->point, q->to_light, 0.0, tmax, &walk))
-        return;
+        return 0;
     uint32_t id = trace_new_segment(ctx);
     if (q->surface->kind == HIT_POLYGON)
         ctx->stamp[q->surface->index] = id;
@@ -61,10 +63,22 @@ void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *ligh
                 continue;
             ctx->stats.shadow_polygon_tests++;
             double t = intersect_polygon(w, p, q->point, q->to_light);
-            if (t > tmin && t < tmax && pass_through(m, light)) {
-                ctx->stats.shadow_blocked++;
-                return;
+            if (t > tmin && t < tmax) {
+                if (pass_through(m, light)) {
+                    ctx->last_blocker = (int)pi;
+                    return 1;
+                }
+                ctx->last_filtered++;
             }
         }
     } while (grid_walk_next(g, &walk));
+    return 0;
+}
+
+void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    light->r = light->g = light->b = 1.0;
+    ctx->last_scheme = SCHEME_CONVENTIONAL;
+    if (shadow_planes_test(ctx, q, light) || shadow_polygons_test(ctx, q, light))
+        ctx->stats.shadow_blocked++;
 }

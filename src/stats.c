@@ -5,6 +5,10 @@
 #include <string.h>
 #include <time.h>
 
+#include "cost_model.h"
+#include "shadow.h"
+#include "shadow_volumes.h"
+
 void stats_add(RenderStats *t, const RenderStats *p)
 {
     t->pixels += p->pixels;
@@ -20,6 +24,17 @@ void stats_add(RenderStats *t, const RenderStats *p)
     t->shadow_rays += p->shadow_rays;
     t->shadow_blocked += p->shadow_blocked;
     t->shadow_polygon_tests += p->shadow_polygon_tests;
+    for (int i = 0; i < STATS_SCHEMES; i++) {
+        t->shadow_schemes[i] += p->shadow_schemes[i];
+        t->shadow_disagreements_by_scheme[i] += p->shadow_disagreements_by_scheme[i];
+    }
+    t->shadow_volume_tests += p->shadow_volume_tests;
+    t->shadow_bucket_polygons += p->shadow_bucket_polygons;
+    t->shadow_unsure += p->shadow_unsure;
+    t->shadow_no_count += p->shadow_no_count;
+    t->shadow_deferred += p->shadow_deferred;
+    t->shadow_verified += p->shadow_verified;
+    t->shadow_disagreements += p->shadow_disagreements;
     t->shadow_seconds += p->shadow_seconds;
     t->render_seconds += p->render_seconds;
 }
@@ -68,6 +83,52 @@ void stats_print(FILE *f, const StatsReport *r)
     fprintf(f, "  shadows     queries %llu  shadow rays %llu (blocked %llu)  shadow-ray/polygon tests %llu\n",
             (unsigned long long)s->shadow_queries, (unsigned long long)s->shadow_rays,
             (unsigned long long)s->shadow_blocked, (unsigned long long)s->shadow_polygon_tests);
+    fprintf(f, "  sub-schemes");
+    for (int i = 0; i < STATS_SCHEMES; i++)
+        fprintf(f, "  %s %llu", shadow_scheme_names[i], (unsigned long long)s->shadow_schemes[i]);
+    fprintf(f, "\n");
+    if (r->volumes) {
+        const ShadowVolumes *sv = r->volumes;
+        fprintf(f, "  volumes     %d welded vertices, %d welded edges; built in %.3f s; tolerance %.3g\n",
+                sv->nwelded_vertices, sv->nedges / (sv->nlights > 0 ? sv->nlights : 1), r->volumes_seconds,
+                sv->tolerance);
+        for (int i = 0; i < sv->nlights; i++) {
+            const LightVolumes *lv = &sv->light[i];
+            if (!lv->cell_start)
+                continue;
+            fprintf(f, "    light %d   %d shadow polygons (%d edges cancelled), %zu cell registrations, eye depth ",
+                    i, lv->count, lv->cancelled_edges, lv->nitems);
+            if (lv->eye_known)
+                fprintf(f, "%d opaque, %d transparent\n", lv->eye_opaque, lv->eye_transparent);
+            else
+                fprintf(f, "unknown\n");
+        }
+        fprintf(f, "  counting    segment/shadow-polygon tests %llu  shadow polygons gathered %llu  unsure %llu"
+                   "  no count %llu  deferred %llu\n",
+                (unsigned long long)s->shadow_volume_tests, (unsigned long long)s->shadow_bucket_polygons,
+                (unsigned long long)s->shadow_unsure, (unsigned long long)s->shadow_no_count,
+                (unsigned long long)s->shadow_deferred);
+    }
+    if (r->cost) {
+        const CostModel *c = r->cost;
+        fprintf(f, "  cost model  C_s %.1f ns  C_i %.1f ns  C_c %.1f ns  C_o %.1f ns  p %.4f  alpha %.3f  N_c %.1f  N_o %.1f"
+                   "  (calibrated in %.1f ms)\n",
+                c->c_s * 1e9, c->c_i * 1e9, c->c_c * 1e9, c->c_o * 1e9, c->p, c->alpha, c->n_c, c->n_o,
+                c->seconds * 1e3);
+        if (r->nth >= 0.0)
+            fprintf(f, "  N_th        %.2f (%s; eq. 7 gives %.2f)\n", r->nth, r->nth_mode, c->nth);
+        else
+            fprintf(f, "  N_th        per shading point from its own N_c (eq. 7 for the mean N_c gives %.2f)\n", c->nth);
+    }
+    if (r->verify) {
+        fprintf(f, "  verified    %llu decisions against the shadow ray: %llu disagreements",
+                (unsigned long long)s->shadow_verified, (unsigned long long)s->shadow_disagreements);
+        for (int i = 0; i < STATS_SCHEMES; i++)
+            if (s->shadow_disagreements_by_scheme[i])
+                fprintf(f, " (%s %llu)", shadow_scheme_names[i],
+                        (unsigned long long)s->shadow_disagreements_by_scheme[i]);
+        fprintf(f, "\n");
+    }
 }
 
 int stats_write_json(const char *path, const StatsReport *r, char *err, int errlen)

@@ -6,6 +6,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#define STATS_SCHEMES 5
+
 typedef struct {
     uint64_t pixels;
     uint64_t camera_rays, reflected_rays, refracted_rays, transmitted_rays;
@@ -15,6 +17,17 @@ typedef struct {
     uint64_t shadow_rays;         /* conventional shadow rays walked */
     uint64_t shadow_blocked;      /* ... of which found an opaque blocker */
     uint64_t shadow_polygon_tests;
+    /* Decisions by sub-scheme: sustain, self-shadow, volume, conventional,
+     * cache hit (the order of ShadowScheme in shadow.h). */
+    uint64_t shadow_schemes[STATS_SCHEMES];
+    uint64_t shadow_volume_tests;  /* segment/shadow polygon tests */
+    uint64_t shadow_bucket_polygons; /* shadow polygons gathered into segments' buckets */
+    uint64_t shadow_unsure;       /* counts abandoned for a crossing too close to call */
+    uint64_t shadow_no_count;     /* volume: no count possible (depth unknown, outside the box) */
+    uint64_t shadow_deferred;     /* states left unknown where nobody needed the answer */
+    uint64_t shadow_verified;     /* decisions checked against the shadow ray */
+    uint64_t shadow_disagreements;
+    uint64_t shadow_disagreements_by_scheme[STATS_SCHEMES];
     double shadow_seconds;        /* time spent deciding shadows, summed over threads */
     double render_seconds;        /* thread CPU time in the render loop */
 } RenderStats;
@@ -30,6 +43,12 @@ typedef struct {
     uint64_t grid_registrations;
     int npolygons, nplanes, nlights;
     double parse_seconds, preprocess_seconds, output_seconds, wall_seconds;
+    double volumes_seconds;           /* silhouettes and shadow polygon registration (in preprocessing) */
+    const struct ShadowVolumes *volumes; /* NULL unless the method uses them */
+    const struct CostModel *cost;     /* the calibration, when made */
+    double nth;                       /* N_th used (negative: per point) */
+    const char *nth_mode;
+    int verify;
     RenderStats render;
 } StatsReport;
 

@@ -11,6 +11,7 @@
 #include "world.h"
 
 struct ShadowMethod;
+struct ShadowVolumes;
 
 /* What a surface hit is: a grid polygon or an infinite plane. */
 typedef enum { HIT_NONE, HIT_POLYGON, HIT_PLANE } HitKind;
@@ -40,9 +41,33 @@ typedef struct {
     uint32_t *stamp;
     uint32_t ray_id;
     RenderStats stats;
+
+    /* Shadow methods' per-thread state. */
+    int last_scheme;           /* how the last decision was made (ShadowScheme) */
+    int last_blocker;          /* polygon that blocked the last shadow ray, or -1 */
+    int last_filtered;         /* transparent polygons the last shadow ray passed */
+    int *light_cache;          /* cache method: last opaque blocker per light, or -1 */
+    int verify;                /* --verify-shadows: check every decision against the shadow ray */
+    double nth;                /* hst: N_th; negative: per point from its own N_c */
+    const struct CostModel *cost;  /* for the per-point N_th */
+    /* Shadow buckets (volume, hst): the shadow polygons registered in the
+     * cells the current segment pierced, per light, each once (stamps). */
+    const struct ShadowVolumes *volumes;
+    uint32_t *sp_stamp;
+    uint32_t sp_id;
+    uint32_t **bucket;
+    int *bucket_n;
+    int segment_in_box;        /* the current segment ended inside the grid box */
+    /* Light states along the ray tree: one row of nlights per recursion depth. */
+    void *states;
+    int state_depth, state_capacity;
 } TraceContext;
 
-int trace_context_init(TraceContext *ctx, const World *w, const Grid *g, const struct ShadowMethod *shadow, Quality q);
+struct CostModel;
+
+/* volumes: the shadow volumes when the method uses them, else NULL. */
+int trace_context_init(TraceContext *ctx, const World *w, const Grid *g, const struct ShadowMethod *shadow, Quality q,
+                       const struct ShadowVolumes *volumes);
 void trace_context_free(TraceContext *ctx);
 
 /* A fresh bucket for a new segment. */

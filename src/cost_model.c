@@ -1,0 +1,234 @@
+/* Calibrating the cost model on the running machine and scene. */
+#include "cost_model.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "intersect.h"
+#include "stats.h"
+
+#define SAMPLES 2000        /* shadow rays sampled for p, alpha, N_c */
+#define MIN_TIMING 0.0015   /* seconds each cost is timed for, at least */
+
+typedef struct {
+    uint64_t s;
+} Rng;
+
+static uint64_t rng_next(Rng *r)
+{
+    r->s ^= r->s << 13;
+    r->s ^= r->s >> 7;
+    r->s ^= r->s << 17;
+    return r->s;
+}
+
+static double rng_unit(Rng *r)
+{
+    return (double)(rng_next(r) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* A point on polygon pi (in the triangle of its first three points). */
+static Vec3 point_on(const World *w, int pi, Rng *r)
+{
+    const Polygon *p = &w->polygons[pi];
+    const Vec3 *v = &w->points[p->first_point];
+    double a = rng_unit(r), b = rng_unit(r);
+    if (a + b > 1.0) {
+        a = 1.0 - a;
+        b = 1.0 - b;
+    }
+    return v3_add(v[0], v3_add(v3_scale(v3_sub(v[1], v[0]), a), v3_scale(v3_sub(v[2], v[0]), b)));
+}
+
+typedef struct {
+    Vec3 org, dir;
+    double tmax;
+    int from;
+} SampleRay;
+
+typedef struct {
+    SampleRay ray;
+    int polygon;
+} SampleTest;
+
+int cost_model_cells_to_light(const Grid *g, Vec3 p, const Light *l)
+{
+    Vec3 target;
+    if (l->kind == LIGHT_PARALLEL) {
+        /* Where the ray toward the light leaves the box. */
+        double t = HUGE_VAL;
+        for (int a = 0; a < 3; a++) {
+            double d = v3_comp(l->direction, a);
+            if (d > 0.0)
+                t = fmin(t, (v3_comp(g->max, a) - v3_comp(p, a)) / d);
+            else if (d < 0.0)
+                t = fmin(t, (v3_comp(g->min, a) - v3_comp(p, a)) / d);
+        }
+        target = t < HUGE_VAL ? v3_madd(p, l->direction, fmax(t, 0.0)) : p;
+    } else {
+        target = l->location;
+    }
+    int n = 1;
+    for (int a = 0; a < 3; a++) {
+        int c0 = grid_cell_coord(g, v3_comp(p, a), a), c1 = grid_cell_coord(g, v3_comp(target, a), a);
+        n += c0 > c1 ? c0 - c1 : c1 - c0;
+    }
+    return n;
+}
+
+double cost_model_threshold(const CostModel *m, double n_c)
+{
+    double p = m->p, alpha = m->alpha;
+    double n_o = alpha * n_c;
+    double cv;
+    if (p <= 0.0 || alpha <= 0.0) {
+        /* The limit p -> 0: every cell and every polygon is visited. */
+        cv = m->c_i + m->c_c * n_c + m->c_o * n_o;
+    } else {
+        double q = log1p(-fmin(p, 1.0 - 1e-12));           /* ln(1 - p) */
+        double reach = -expm1(q * n_o);                      /* 1 - (1-p)^N_o */
+        double per_cell = -expm1(q * alpha);                 /* 1 - (1-p)^alpha */
+        cv = m->c_i + reach * (m->c_c / per_cell + m->c_o / p);
+    }
+    return m->c_s > 0.0 ? cv / m->c_s : HUGE_VAL;
+}
+
+/* Walks one shadow ray to its end, counting cells, new polygons, hits. */
+static void sample_walk(const World *w, const Grid *g, uint32_t *stamp, uint32_t id, const SampleRay *s, long *cells,
+                        long *tests, long *hits, SampleTest *keep, int *nkeep, int cap)
+{
+    GridWalk walk;
+    if (!grid_walk_begin(g, s->org, s->dir, 0.0, s->tmax, &walk))
+        return;
+    stamp[s->from] = id;
+    double tmin = 1e-9 * (1.0 + fmax(fabs(s->org.x), fmax(fabs(s->org.y), fabs(s->org.z))));
+    do {
+        (*cells)++;
+        int c = grid_cell_index(g, walk.cell);
+        for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
+            uint32_t pi = g->items[k];
+            if (stamp[pi] == id)
+                continue;
+            stamp[pi] = id;
+            (*tests)++;
+            double t = intersect_polygon(w, &w->polygons[pi], s->org, s->dir);
+            if (t > tmin && t < s->tmax)
+                (*hits)++;
+            if (*nkeep < cap)
+                keep[(*nkeep)++] = (SampleTest){ *s, (int)pi };
+        }
+    } while (grid_walk_next(g, &walk));
+}
+
+int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const ShadowVolumes *sv)
+{
+    memset(m, 0, sizeof *m);
+    double start = clock_wall();
+    int lights[64], nlights = 0;
+    for (int i = 0; i < w->nlights && nlights < 64; i++)
+        if (!w->lights[i].shadowless)
+            lights[nlights++] = i;
+    if (w->npolygons == 0 || nlights == 0) {
+        m->nth = 0.0;
+        m->seconds = clock_wall() - start;
+        return 0;
+    }
+    SampleRay *rays = malloc(sizeof *rays * SAMPLES);
+    SampleTest *tests = malloc(sizeof *tests * 4096);
+    uint32_t *stamp = calloc((size_t)w->npolygons, sizeof *stamp);
+    if (!rays || !tests || !stamp) {
+        free(rays);
+        free(tests);
+        free(stamp);
+        return -1;
+    }
+    Rng rng = { 0x9E3779B97F4A7C15ull };
+    for (int i = 0; i < SAMPLES; i++) {
+        int pi = (int)(rng_next(&rng) % (uint64_t)w->npolygons);
+        const Light *l = &w->lights[lights[rng_next(&rng) % (uint64_t)nlights]];
+        SampleRay *s = &rays[i];
+        s->org = point_on(w, pi, &rng);
+        s->from = pi;
+        if (l->kind == LIGHT_PARALLEL) {
+            s->dir = l->direction;
+            s->tmax = HUGE_VAL;
+        } else {
+            Vec3 d = v3_sub(l->location, s->org);
+            s->tmax = v3_length(d);
+            s->dir = s->tmax > 0.0 ? v3_scale(d, 1.0 / s->tmax) : v3(0, 1, 0);
+        }
+    }
+
+    /* p, alpha and N_c from whole walks to the light. */
+    long cells = 0, ntests = 0, hits = 0;
+    int nkeep = 0;
+    for (int i = 0; i < SAMPLES; i++)
+        sample_walk(w, g, stamp, (uint32_t)i + 1, &rays[i], &cells, &ntests, &hits, tests, &nkeep, 4096);
+    m->samples = SAMPLES;
+    m->n_c = (double)cells / SAMPLES;
+    m->alpha = cells > 0 ? (double)ntests / (double)cells : 0.0;
+    m->p = ntests > 0 ? (double)hits / (double)ntests : 0.0;
+    m->n_o = m->alpha * m->n_c;
+
+    volatile double sink = 0.0;
+    /* C_o: ray/polygon tests on the pairs the walks met. */
+    if (nkeep > 0) {
+        long n = 0;
+        double t0 = clock_wall(), t;
+        do {
+            for (int i = 0; i < nkeep; i++)
+                sink += intersect_polygon(w, &w->polygons[tests[i].polygon], tests[i].ray.org, tests[i].ray.dir);
+            n += nkeep;
+        } while ((t = clock_wall() - t0) < MIN_TIMING);
+        m->c_o = t / (double)n;
+    }
+    /* C_i and C_c: walk set-ups, and cell steps. */
+    {
+        long n = 0;
+        double t0 = clock_wall(), t;
+        GridWalk walk;
+        do {
+            for (int i = 0; i < SAMPLES; i++)
+                sink += grid_walk_begin(g, rays[i].org, rays[i].dir, 0.0, rays[i].tmax, &walk);
+            n += SAMPLES;
+        } while ((t = clock_wall() - t0) < MIN_TIMING);
+        m->c_i = t / (double)n;
+        long steps = 0;
+        t0 = clock_wall();
+        do {
+            for (int i = 0; i < SAMPLES; i++) {
+                if (!grid_walk_begin(g, rays[i].org, rays[i].dir, 0.0, rays[i].tmax, &walk))
+                    continue;
+                while (grid_walk_next(g, &walk))
+                    steps++;
+                sink += walk.cell[0];
+            }
+            n += SAMPLES;
+        } while ((t = clock_wall() - t0) < MIN_TIMING);
+        /* Subtract the set-ups timed above. */
+        double walking = t - m->c_i * (double)n;
+        m->c_c = steps > 0 ? fmax(walking, 0.0) / (double)steps : 0.0;
+    }
+    /* C_s: segment/shadow polygon tests on the scene's shadow polygons. */
+    if (sv && sv->npolygons > 0) {
+        long n = 0;
+        double t0 = clock_wall(), t;
+        int sign = 0;
+        do {
+            for (int i = 0; i + 1 < SAMPLES; i++) {
+                const ShadowPolygon *sp = &sv->polygons[(size_t)i * 7919u % (size_t)sv->npolygons];
+                sink += shadow_polygon_cross(sp, rays[i].org, rays[i + 1].org, sv->tolerance, &sign) + sign;
+            }
+            n += SAMPLES - 1;
+        } while ((t = clock_wall() - t0) < MIN_TIMING);
+        m->c_s = t / (double)n;
+    }
+    (void)sink;
+    free(rays);
+    free(tests);
+    free(stamp);
+    m->nth = cost_model_threshold(m, m->n_c);
+    m->seconds = clock_wall() - start;
+    return 0;
+}

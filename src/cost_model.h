@@ -1,0 +1,37 @@
+/* The paper's cost model (eq. 1-7): when is counting shadow polygons along
+ * a segment cheaper than firing a shadow ray? The machine costs C_s, C_i,
+ * C_c, C_o are measured at start-up on the scene's own data (a few ms), the
+ * scene statistics p and alpha by sampling shadow rays through the built
+ * grid, N_c as the mean number of cells such a ray visits. */
+#ifndef HST_COST_MODEL_H
+#define HST_COST_MODEL_H
+
+#include "grid.h"
+#include "shadow_volumes.h"
+#include "world.h"
+
+typedef struct CostModel {
+    double c_s;     /* one segment/shadow polygon test, seconds */
+    double c_i;     /* setting up a 3DDDA walk */
+    double c_c;     /* one cell step */
+    double c_o;     /* one ray/polygon test */
+    double p;       /* chance that a polygon tested in a visited cell is hit */
+    double alpha;   /* new polygons met per cell */
+    double n_c;     /* cells a shadow ray visits, mean over samples */
+    double n_o;     /* alpha * n_c */
+    double nth;     /* eq. (7) with these values */
+    double seconds; /* what the calibration cost */
+    int samples;    /* shadow rays sampled for p and alpha */
+} CostModel;
+
+/* Measures everything; deterministic sampling (fixed seed), so only the
+ * timings vary between runs. Returns 0, or -1 when out of memory. */
+int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const ShadowVolumes *sv);
+
+/* Eq. (7): N_th for a shadow ray that would visit n_c cells. */
+double cost_model_threshold(const CostModel *m, double n_c);
+
+/* Cells a walk from p to the light visits (3DDDA: one per boundary crossed). */
+int cost_model_cells_to_light(const Grid *g, Vec3 p, const Light *l);
+
+#endif

@@ -1,0 +1,260 @@
+/* Shadow volumes with depth counts ("volume") and the paper's hybrid
+ * ("hst"): per shading point and light,
+ *   sustain       N_s == 0: nothing was crossed, P1's condition holds at P2;
+ *   self-shadow   the point faces away from the light: in shadow, depth unknown;
+ *   shadow volume N_s <= N_th and (P1 lit or its depth known): count crossings;
+ *   conventional  otherwise: fire the shadow ray, depth unknown (0 when lit).
+ * N_s is the size of the segment's shadow bucket (shadow polygons in the
+ * cells it pierced), plus one when the segment passes through the polygon
+ * it starts on into that polygon's shadow.
+ *
+ * Where a count cannot be trusted the answer comes from the shadow ray
+ * instead: a crossing within the tolerance of a shadow polygon's border or
+ * plane (counted in statistics as "unsure"), a segment ending outside the
+ * grid box, or one arriving on a polygon from the side away from the light
+ * (its own volume would be counted at P2, where the shadow ray excludes it). */
+#include "shadow.h"
+
+#include "cost_model.h"
+#include "shadow_volumes.h"
+
+static int condition_from_depth(int opaque, int transparent)
+{
+    return opaque > 0 ? COND_BLOCKED : transparent > 0 ? COND_FILTERED : COND_LIT;
+}
+
+static LightState eye_state(const LightVolumes *lv)
+{
+    LightState s = { COND_UNKNOWN, 0, 0, 0, 0 };
+    if (lv->eye_known) {
+        s.depth_known = 1;
+        s.depth_opaque = lv->eye_opaque;
+        s.depth_transparent = lv->eye_transparent;
+        s.condition = (int8_t)condition_from_depth(lv->eye_opaque, lv->eye_transparent);
+    }
+    return s;
+}
+
+/* Positive when v points to the light's side of polygon p. */
+static double toward_light(const Polygon *p, const OccluderSide *o, Vec3 v)
+{
+    return o->light_side * v3_dot(p->normal, v);
+}
+
+typedef struct {
+    LightState from;             /* at P1 */
+    int n_s;                     /* shadow polygons to test */
+    int cap_opaque, cap_transparent; /* the segment enters the shadow of P1's own polygon */
+    int countable;               /* a count can be carried from P1 to P2 */
+} SegmentView;
+
+static void view_segment(TraceContext *ctx, const ShadowQuery *q, SegmentView *v)
+{
+    const World *w = ctx->world;
+    const LightVolumes *lv = &ctx->volumes->light[q->light];
+    const Segment *seg = q->segment;
+    v->from = seg->from_state ? seg->from_state[q->light] : eye_state(lv);
+    v->n_s = ctx->bucket_n[q->light];
+    v->cap_opaque = v->cap_transparent = 0;
+    v->countable = ctx->segment_in_box;
+    if (seg->from->kind == HIT_POLYGON) {
+        const OccluderSide *o = &lv->occluder[seg->from->index];
+        if (o->channel && toward_light(&w->polygons[seg->from->index], o, seg->dir) < 0.0) {
+            v->n_s++;
+            if (o->channel == 1)
+                v->cap_opaque = 1;
+            else
+                v->cap_transparent = 1;
+        }
+    }
+    if (q->surface->kind == HIT_POLYGON) {
+        const OccluderSide *o = &lv->occluder[q->surface->index];
+        if (o->channel && toward_light(&w->polygons[q->surface->index], o, seg->dir) > 0.0)
+            v->countable = 0;
+    }
+}
+
+/* depth(P2) = depth(P1) + signed crossings. Returns 0 when undecidable. */
+static int count_crossings(TraceContext *ctx, const ShadowQuery *q, const SegmentView *v, LightState *out)
+{
+    const ShadowVolumes *sv = ctx->volumes;
+    int opaque = v->cap_opaque, transparent = v->cap_transparent;
+    if (v->from.depth_known) {
+        opaque += v->from.depth_opaque;
+        transparent += v->from.depth_transparent;
+    } /* else P1 is lit: both counts are 0 there */
+    const uint32_t *b = ctx->bucket[q->light];
+    int n = ctx->bucket_n[q->light];
+    Vec3 p1 = q->segment->org, p2 = q->point;
+    ctx->stats.shadow_volume_tests += (uint64_t)n;
+    for (int i = 0; i < n; i++) {
+        const ShadowPolygon *sp = &sv->polygons[b[i]];
+        int sign;
+        CrossResult r = shadow_polygon_cross(sp, p1, p2, sv->tolerance, &sign);
+        if (r == CROSS_UNSURE)
+            return 0;
+        if (r == CROSS_YES) {
+            opaque += sign * sp->weight_opaque;
+            transparent += sign * sp->weight_transparent;
+        }
+    }
+    if (opaque < 0 || transparent < 0)
+        return 0; /* cannot happen with exact crossings: do not trust it */
+    out->depth_known = 1;
+    out->self = 0;
+    out->depth_opaque = opaque;
+    out->depth_transparent = transparent;
+    out->condition = (int8_t)condition_from_depth(opaque, transparent);
+    return 1;
+}
+
+/* The answer for a known polygon condition: planes are tested as the
+ * shadow ray tests them, and filtered light is filtered by the ray. */
+static void answer(TraceContext *ctx, const ShadowQuery *q, int condition, RGB *light)
+{
+    light->r = light->g = light->b = 1.0;
+    if (shadow_planes_test(ctx, q, light)) {
+        ctx->stats.shadow_blocked++;
+        return;
+    }
+    if (condition == COND_BLOCKED) {
+        light->r = light->g = light->b = 0.0;
+        ctx->stats.shadow_blocked++;
+    } else if (condition == COND_FILTERED) {
+        if (shadow_polygons_test(ctx, q, light))
+            ctx->stats.shadow_blocked++;
+    }
+}
+
+/* The shadow ray, and what it tells about the polygons. */
+static void conventional(TraceContext *ctx, const ShadowQuery *q, LightState *out, RGB *light)
+{
+    ctx->last_scheme = SCHEME_CONVENTIONAL;
+    light->r = light->g = light->b = 1.0;
+    out->depth_known = 0;
+    out->self = 0;
+    out->condition = COND_UNKNOWN;
+    if (shadow_planes_test(ctx, q, light)) {
+        ctx->stats.shadow_blocked++;
+        return;
+    }
+    ctx->last_filtered = 0;
+    if (shadow_polygons_test(ctx, q, light)) {
+        ctx->stats.shadow_blocked++;
+        out->condition = COND_BLOCKED;
+    } else if (ctx->last_filtered) {
+        out->condition = COND_FILTERED;
+    } else {
+        out->condition = COND_LIT; /* and the counts are 0 */
+        out->depth_known = 1;
+        out->depth_opaque = out->depth_transparent = 0;
+    }
+}
+
+/* Self-shadow: the point faces away from the light. Its own polygon then
+ * stands between the light and every point behind it that the next
+ * segments reach before they cross a shadow polygon, but only if the
+ * polygon itself faces away (a smooth normal can disagree with it) and is
+ * opaque; `self` records that the blocker is the point's own polygon. */
+static void self_shadow(TraceContext *ctx, const ShadowQuery *q, LightState *out)
+{
+    ctx->last_scheme = SCHEME_SELF_SHADOW;
+    ctx->stats.shadow_schemes[SCHEME_SELF_SHADOW]++;
+    out->depth_known = 0;
+    out->self = 0;
+    out->condition = COND_UNKNOWN;
+    if (q->surface->kind != HIT_POLYGON)
+        return;
+    const LightVolumes *lv = &ctx->volumes->light[q->light];
+    const OccluderSide *o = &lv->occluder[q->surface->index];
+    /* The ray arrived on the side away from the light. */
+    if (o->channel == 1 && toward_light(&ctx->world->polygons[q->surface->index], o, q->segment->dir) > 0.0) {
+        out->condition = COND_BLOCKED;
+        out->self = 1;
+    }
+}
+
+typedef enum { MODE_VOLUME, MODE_HYBRID } Mode;
+
+static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces_away, RGB *light)
+{
+    LightState scratch;
+    LightState *out = q->segment->state ? &q->segment->state[q->light] : &scratch;
+    SegmentView v;
+    view_segment(ctx, q, &v);
+    int from_usable = v.from.condition == COND_LIT || v.from.depth_known;
+
+    if (mode == MODE_HYBRID) {
+        /* Sustain. Entering the shadow of P1's own polygon keeps a blocked
+         * point blocked; leaving P1's polygon toward the light does not
+         * when that polygon was the blocker (self-shadow). */
+        int cap = v.cap_opaque || v.cap_transparent;
+        int bucket_empty = ctx->bucket_n[q->light] == 0;
+        if (bucket_empty && v.countable &&
+            ((v.from.condition == COND_LIT && !cap) || (v.from.condition == COND_BLOCKED && (cap || !v.from.self)))) {
+            *out = v.from;
+            out->self = 0;
+            out->depth_opaque += v.cap_opaque;
+            out->depth_transparent += v.cap_transparent;
+            ctx->last_scheme = SCHEME_SUSTAIN;
+            ctx->stats.shadow_schemes[SCHEME_SUSTAIN]++;
+            if (light)
+                answer(ctx, q, out->condition, light);
+            return;
+        }
+        if (faces_away) {
+            self_shadow(ctx, q, out);
+            return;
+        }
+    }
+    double nth = HUGE_VAL;
+    if (mode == MODE_HYBRID) {
+        nth = ctx->nth;
+        if (nth < 0.0)
+            nth = cost_model_threshold(ctx->cost, cost_model_cells_to_light(ctx->grid, q->point,
+                                                                           &ctx->world->lights[q->light]));
+    }
+    if (v.countable && from_usable && v.n_s <= nth) {
+        if (count_crossings(ctx, q, &v, out)) {
+            ctx->last_scheme = SCHEME_VOLUME;
+            ctx->stats.shadow_schemes[SCHEME_VOLUME]++;
+            if (light)
+                answer(ctx, q, out->condition, light);
+            return;
+        }
+        ctx->stats.shadow_unsure++;
+    } else if (mode == MODE_VOLUME) {
+        ctx->stats.shadow_no_count++;
+    }
+    if (!light) {
+        /* Nobody needs the answer here; firing a ray only to keep the state
+         * would cost more than it saves later. */
+        out->condition = COND_UNKNOWN;
+        out->depth_known = 0;
+        ctx->stats.shadow_deferred++;
+        return;
+    }
+    conventional(ctx, q, out, light);
+    ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
+}
+
+void shadow_volume_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    decide(ctx, q, MODE_VOLUME, 0, light);
+}
+
+void shadow_volume_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away)
+{
+    (void)faces_away; /* the pure method counts everywhere to keep its depth */
+    decide(ctx, q, MODE_VOLUME, 0, NULL);
+}
+
+void shadow_hst_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    decide(ctx, q, MODE_HYBRID, 0, light);
+}
+
+void shadow_hst_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away)
+{
+    decide(ctx, q, MODE_HYBRID, faces_away, NULL);
+}

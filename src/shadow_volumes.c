@@ -1,0 +1,544 @@
+/* Building the shadow volumes: welding, silhouette edges with weights,
+ * shadow polygons clipped to the grid box and registered per light, and the
+ * eye's depth count. */
+#include "shadow_volumes.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "intersect.h"
+
+/* ---- welding vertices by exact position ---------------------------------- */
+
+static uint64_t bits(double x)
+{
+    if (x == 0.0)
+        x = 0.0; /* -0 and +0 are one position */
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
+
+static uint64_t hash_point(Vec3 p)
+{
+    uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ull;
+    h ^= bits(p.y) + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2);
+    h ^= bits(p.z) + 0x85EBCA77C2B2AE63ull + (h << 6) + (h >> 2);
+    return h ^ (h >> 29);
+}
+
+static int same_point(Vec3 a, Vec3 b)
+{
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+/* weld[i] for every entry of w->points: the index of its position class. */
+static int *weld_points(const World *w, int *nclasses)
+{
+    int n = w->npoints;
+    int *weld = malloc(sizeof(int) * (size_t)(n > 0 ? n : 1));
+    size_t cap = 16;
+    while (cap < (size_t)n * 2)
+        cap *= 2;
+    int *table = malloc(sizeof(int) * cap); /* holds a representative point index */
+    if (!weld || !table) {
+        free(weld);
+        free(table);
+        return NULL;
+    }
+    for (size_t i = 0; i < cap; i++)
+        table[i] = -1;
+    int classes = 0;
+    for (int i = 0; i < n; i++) {
+        size_t h = (size_t)hash_point(w->points[i]) & (cap - 1);
+        while (table[h] >= 0 && !same_point(w->points[table[h]], w->points[i]))
+            h = (h + 1) & (cap - 1);
+        if (table[h] < 0) {
+            table[h] = i;
+            weld[i] = classes++;
+        } else {
+            weld[i] = weld[table[h]];
+        }
+    }
+    free(table);
+    *nclasses = classes;
+    return weld;
+}
+
+/* ---- polygon edges with the side their polygon lies on ------------------- */
+
+typedef struct {
+    int a, b;          /* point indices, in outline order */
+    int interior_left; /* the polygon lies on the side of cross(normal, b - a) */
+} PolygonEdge;
+
+static double outline_orientation(const Vec3 *pts, int n, Vec3 normal)
+{
+    Vec3 area = v3(0, 0, 0);
+    for (int i = 0; i < n; i++)
+        area = v3_add(area, v3_cross(pts[i], pts[(i + 1) % n]));
+    return v3_dot(area, normal);
+}
+
+/* Fills edges (capacity p->npoints + 3) and returns their number. */
+static int polygon_edges(const World *w, const Polygon *p, PolygonEdge *edges)
+{
+    int m = 0;
+    if (p->first_outline < 0) {
+        const Vec3 *v = &w->points[p->first_point];
+        int left = v3_dot(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])), p->normal) > 0.0;
+        for (int i = 0; i < 3; i++)
+            edges[m++] = (PolygonEdge){ p->first_point + i, p->first_point + (i + 1) % 3, left };
+        return m;
+    }
+    const int *start = &w->outline_start[p->first_outline];
+    for (int k = 0; k < p->noutlines; k++) {
+        int s = start[k], e = start[k + 1], n = e - s;
+        if (n < 3)
+            continue;
+        /* An outline inside an odd number of others bounds a hole: the
+         * polygon lies outside it. */
+        int nesting = 0;
+        Vec3 q = w->points[s];
+        for (int j = 0; j < p->noutlines; j++)
+            if (j != k)
+                nesting += outline_contains(&w->points[start[j]], start[j + 1] - start[j], p->axis_u, p->axis_v,
+                                            v3_comp(q, p->axis_u), v3_comp(q, p->axis_v));
+        int ccw = outline_orientation(&w->points[s], n, p->normal) > 0.0;
+        int left = ccw ^ (nesting & 1);
+        for (int i = 0; i < n; i++)
+            edges[m++] = (PolygonEdge){ s + i, s + (i + 1) % n, left };
+    }
+    return m;
+}
+
+int shadow_light_side(const Polygon *p, const Light *l, double tol)
+{
+    if (l->kind == LIGHT_PARALLEL) {
+        /* A direction: edge-on when within about 1e-12 rad of the plane. */
+        double s = v3_dot(p->normal, l->direction);
+        return s > 1e-12 ? 1 : s < -1e-12 ? -1 : 0;
+    }
+    double s = v3_dot(p->normal, l->location) - p->d;
+    return s > tol ? 1 : s < -tol ? -1 : 0;
+}
+
+/* ---- edge contributions and merging -------------------------------------- */
+
+typedef struct {
+    int lo, hi;      /* welded vertex ids, lo < hi */
+    int a, b;        /* point indices of lo and hi */
+    int8_t sign;     /* +1: the polygon lies on the positive side of the edge's plane */
+    int8_t channel;  /* 1 opaque, 2 transparent */
+} EdgeUse;
+
+static int compare_edge_use(const void *x, const void *y)
+{
+    const EdgeUse *a = x, *b = y;
+    if (a->lo != b->lo)
+        return a->lo < b->lo ? -1 : 1;
+    if (a->hi != b->hi)
+        return a->hi < b->hi ? -1 : 1;
+    return 0;
+}
+
+/* The plane through the edge (a, b) and the light, from the canonical
+ * vertex order so that every use of a welded edge gets the same plane. */
+static int edge_plane(const Light *l, Vec3 a, Vec3 b, Vec3 *normal)
+{
+    Vec3 n = l->kind == LIGHT_PARALLEL ? v3_cross(v3_sub(b, a), l->direction)
+                                       : v3_cross(v3_sub(a, l->location), v3_sub(b, l->location));
+    double len = v3_length(n);
+    double scale = v3_length(v3_sub(b, a)) *
+                   (l->kind == LIGHT_PARALLEL ? 1.0 : fmax(v3_length(v3_sub(a, l->location)), v3_length(v3_sub(b, l->location))));
+    if (!(len > 1e-12 * scale)) /* the light on the edge's line: no plane */
+        return 0;
+    *normal = v3_scale(n, 1.0 / len);
+    return 1;
+}
+
+static Vec3 unit(Vec3 v)
+{
+    double len = v3_length(v);
+    return len > 0.0 ? v3_scale(v, 1.0 / len) : v;
+}
+
+/* The wedge of edge (a, b): in the plane, beyond the edge, between the two
+ * rays from the light through a and b (parallel: along the light direction). */
+static void make_shadow_polygon(ShadowPolygon *sp, const Light *l, Vec3 a, Vec3 b, Vec3 n)
+{
+    sp->normal = n;
+    sp->d = v3_dot(n, a);
+    Vec3 ra, rb; /* directions away from the light at a and b */
+    if (l->kind == LIGHT_PARALLEL) {
+        ra = rb = v3_neg(l->direction);
+    } else {
+        ra = v3_sub(a, l->location);
+        rb = v3_sub(b, l->location);
+    }
+    Vec3 s0 = unit(v3_cross(n, ra)); /* border through a, inward toward b */
+    if (v3_dot(s0, v3_sub(b, a)) < 0.0)
+        s0 = v3_neg(s0);
+    Vec3 s1 = unit(v3_cross(n, rb)); /* border through b, inward toward a */
+    if (v3_dot(s1, v3_sub(a, b)) < 0.0)
+        s1 = v3_neg(s1);
+    Vec3 s2 = unit(v3_cross(n, v3_sub(b, a))); /* the edge, inward away from the light */
+    if (v3_dot(s2, v3_add(ra, rb)) < 0.0)
+        s2 = v3_neg(s2);
+    sp->side_normal[0] = s0;
+    sp->side_d[0] = v3_dot(s0, a);
+    sp->side_normal[1] = s1;
+    sp->side_d[1] = v3_dot(s1, b);
+    sp->side_normal[2] = s2;
+    sp->side_d[2] = v3_dot(s2, a);
+}
+
+/* ---- registration in the grid --------------------------------------------- */
+
+typedef struct {
+    uint32_t cell, item;
+} Registration;
+
+typedef struct {
+    Registration *r;
+    size_t n, cap;
+} RegList;
+
+static int reg_push(RegList *l, uint32_t cell, uint32_t item)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? l->cap * 2 : 1024;
+        Registration *r = realloc(l->r, cap * sizeof *r);
+        if (!r)
+            return -1;
+        l->r = r;
+        l->cap = cap;
+    }
+    l->r[l->n++] = (Registration){ cell, item };
+    return 0;
+}
+
+/* The part of the wedge inside the box lies within the quadrilateral
+ * (a, b, b_far, a_far) when the far points are a box diagonal beyond the
+ * edge as seen from the light. */
+static void wedge_outline(const Light *l, Vec3 a, Vec3 b, double diagonal, Vec3 out[4])
+{
+    out[0] = a;
+    out[1] = b;
+    if (l->kind == LIGHT_PARALLEL) {
+        Vec3 away = v3_scale(l->direction, -2.0 * diagonal);
+        out[2] = v3_add(b, away);
+        out[3] = v3_add(a, away);
+        return;
+    }
+    /* Distance from the light to the segment ab bounds how fast the wedge
+     * moves away from the edge. */
+    Vec3 ab = v3_sub(b, a), la = v3_sub(a, l->location);
+    double len2 = v3_dot(ab, ab);
+    double t = len2 > 0.0 ? -v3_dot(la, ab) / len2 : 0.0;
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    double dist = v3_length(v3_add(la, v3_scale(ab, t)));
+    double lambda = 2.0 * diagonal / (dist > 1e-300 ? dist : 1e-300);
+    if (lambda > 1e12)
+        lambda = 1e12;
+    out[2] = v3_add(b, v3_scale(v3_sub(b, l->location), lambda));
+    out[3] = v3_add(a, v3_scale(la, lambda));
+}
+
+/* Clips a convex outline to the slab lo <= coordinate `axis` <= hi. */
+static int clip_slab(const Vec3 *in, int n, Vec3 *out, int axis, double lo, double hi)
+{
+    Vec3 tmp[12];
+    int m = clip_against(in, n, tmp, axis, lo, +1);
+    return m > 0 ? clip_against(tmp, m, out, axis, hi, -1) : 0;
+}
+
+static void extent(const Vec3 *pts, int n, int axis, double *lo, double *hi)
+{
+    *lo = HUGE_VAL;
+    *hi = -HUGE_VAL;
+    for (int i = 0; i < n; i++) {
+        double v = v3_comp(pts[i], axis);
+        *lo = fmin(*lo, v);
+        *hi = fmax(*hi, v);
+    }
+}
+
+/* Registers the quadrilateral q (convex) in every cell it overlaps, cells
+ * grown by tol: a point that close to the shadow polygon must find it in
+ * its own cell, to know that it is undecidable. Row by row: clipped to a
+ * z-slab, then to a y-row, the outline is still convex and connected, so
+ * it overlaps exactly the cells its x-extent spans. */
+static int register_shadow_polygon(RegList *regs, const Grid *g, const Vec3 q[4], uint32_t item, double tol)
+{
+    double zlo, zhi;
+    extent(q, 4, 2, &zlo, &zhi);
+    int z0 = grid_cell_coord(g, zlo - tol, 2), z1 = grid_cell_coord(g, zhi + tol, 2);
+    for (int z = z0; z <= z1; z++) {
+        Vec3 pz[12], pzy[16];
+        double cz = g->min.z + z * g->cell_size.z;
+        int nz = clip_slab(q, 4, pz, 2, cz - tol, cz + g->cell_size.z + tol);
+        if (nz == 0)
+            continue;
+        double ylo, yhi;
+        extent(pz, nz, 1, &ylo, &yhi);
+        int y0 = grid_cell_coord(g, ylo - tol, 1), y1 = grid_cell_coord(g, yhi + tol, 1);
+        for (int y = y0; y <= y1; y++) {
+            double cy = g->min.y + y * g->cell_size.y;
+            int nzy = clip_slab(pz, nz, pzy, 1, cy - tol, cy + g->cell_size.y + tol);
+            if (nzy == 0)
+                continue;
+            double xlo, xhi;
+            extent(pzy, nzy, 0, &xlo, &xhi);
+            if (xhi < g->min.x - tol || xlo > g->max.x + tol)
+                continue;
+            int x0 = grid_cell_coord(g, xlo - tol, 0), x1 = grid_cell_coord(g, xhi + tol, 0);
+            for (int x = x0; x <= x1; x++) {
+                int cell[3] = { x, y, z };
+                if (reg_push(regs, (uint32_t)grid_cell_index(g, cell), item))
+                    return -1;
+            }
+        }
+    }
+    return 0;
+}
+
+/* Counting sort into compressed rows; items keep their order per cell. */
+static int fill_cells(LightVolumes *lv, const Grid *g, RegList *regs)
+{
+    lv->cell_start = calloc((size_t)g->ncells + 1, sizeof(uint32_t));
+    lv->items = malloc((regs->n ? regs->n : 1) * sizeof(uint32_t));
+    uint32_t *fill = malloc(((size_t)g->ncells + 1) * sizeof(uint32_t));
+    if (!lv->cell_start || !lv->items || !fill) {
+        free(fill);
+        return -1;
+    }
+    for (size_t i = 0; i < regs->n; i++)
+        lv->cell_start[regs->r[i].cell + 1]++;
+    for (int c = 0; c < g->ncells; c++)
+        lv->cell_start[c + 1] += lv->cell_start[c];
+    memcpy(fill, lv->cell_start, ((size_t)g->ncells + 1) * sizeof(uint32_t));
+    for (size_t i = 0; i < regs->n; i++)
+        lv->items[fill[regs->r[i].cell]++] = regs->r[i].item;
+    lv->nitems = regs->n;
+    free(fill);
+    return 0;
+}
+
+/* ---- the eye's depth count ------------------------------------------------ */
+
+static double point_segment_distance(Vec3 p, Vec3 a, Vec3 b)
+{
+    Vec3 ab = v3_sub(b, a);
+    double len2 = v3_dot(ab, ab);
+    double t = len2 > 0.0 ? v3_dot(v3_sub(p, a), ab) / len2 : 0.0;
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    return v3_length(v3_sub(p, v3_add(a, v3_scale(ab, t))));
+}
+
+/* Does the segment from `eye` to the light cross polygon p? Returns 1 or 0,
+ * or -1 when the crossing lies within tol of p's plane or border. */
+static int eye_crosses(const World *w, const Polygon *p, const Light *l, Vec3 eye, double tol, PolygonEdge *edges)
+{
+    double se = v3_dot(p->normal, eye) - p->d;
+    Vec3 dir;
+    double t;
+    if (l->kind == LIGHT_PARALLEL) {
+        dir = l->direction;
+        double den = v3_dot(p->normal, dir);
+        if (fabs(se) <= tol)
+            return -1;
+        if (den == 0.0)
+            return 0;
+        t = -se / den;
+        if (t <= 0.0)
+            return 0;
+    } else {
+        double sl = v3_dot(p->normal, l->location) - p->d;
+        if (fabs(se) <= tol)
+            return -1;
+        if ((se > 0.0) == (sl > 0.0))
+            return 0;
+        dir = v3_sub(l->location, eye);
+        t = se / (se - sl);
+    }
+    Vec3 x = v3_add(eye, v3_scale(dir, t));
+    int m = polygon_edges(w, p, edges);
+    for (int i = 0; i < m; i++)
+        if (point_segment_distance(x, w->points[edges[i].a], w->points[edges[i].b]) <= tol)
+            return -1;
+    return polygon_contains(w, p, x);
+}
+
+/* ---- the whole build ------------------------------------------------------ */
+
+static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, const Grid *g, const Light *l,
+                       const int *weld, const Vec3 *eye, PolygonEdge *edges, ShadowPolygon **all, int *nall, int *cap_all)
+{
+    double tol = sv->tolerance;
+    lv->occluder = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof *lv->occluder);
+    if (!lv->occluder)
+        return -1;
+    size_t nuses = 0, cap_uses = 1024;
+    EdgeUse *uses = malloc(cap_uses * sizeof *uses);
+    if (!uses)
+        return -1;
+    lv->eye_known = eye != NULL;
+    for (int pi = 0; pi < w->npolygons; pi++) {
+        const Polygon *p = &w->polygons[pi];
+        const Material *m = &w->materials[p->material];
+        OccluderSide *o = &lv->occluder[pi];
+        o->light_side = (int8_t)shadow_light_side(p, l, tol);
+        o->channel = (int8_t)(m->no_shadow || o->light_side == 0 ? 0 : m->opaque ? 1 : 2);
+        if (!o->channel)
+            continue;
+        int ne = polygon_edges(w, p, edges);
+        for (int i = 0; i < ne; i++) {
+            int a = edges[i].a, b = edges[i].b;
+            if (weld[a] == weld[b])
+                continue; /* zero length */
+            if (nuses == cap_uses) {
+                cap_uses *= 2;
+                EdgeUse *n = realloc(uses, cap_uses * sizeof *uses);
+                if (!n) {
+                    free(uses);
+                    return -1;
+                }
+                uses = n;
+            }
+            EdgeUse *u = &uses[nuses];
+            int swap = weld[a] > weld[b];
+            u->lo = swap ? weld[b] : weld[a];
+            u->hi = swap ? weld[a] : weld[b];
+            u->a = swap ? b : a;
+            u->b = swap ? a : b;
+            u->channel = o->channel;
+            Vec3 n;
+            if (!edge_plane(l, w->points[u->a], w->points[u->b], &n))
+                continue;
+            /* The polygon's side of the edge, in its plane. */
+            Vec3 inward = v3_cross(p->normal, v3_sub(w->points[b], w->points[a]));
+            if (!edges[i].interior_left)
+                inward = v3_neg(inward);
+            u->sign = (int8_t)(v3_dot(n, inward) > 0.0 ? 1 : -1);
+            nuses++;
+        }
+        if (lv->eye_known) {
+            int c = eye_crosses(w, p, l, *eye, tol, edges);
+            if (c < 0)
+                lv->eye_known = 0;
+            else if (c && o->channel == 1)
+                lv->eye_opaque++;
+            else if (c)
+                lv->eye_transparent++;
+        }
+    }
+    qsort(uses, nuses, sizeof *uses, compare_edge_use);
+
+    RegList regs = { NULL, 0, 0 };
+    Vec3 ext = v3_sub(g->max, g->min);
+    double diagonal = v3_length(ext);
+    lv->first = *nall;
+    int status = 0;
+    for (size_t i = 0; i < nuses && status == 0;) {
+        size_t j = i;
+        int wo = 0, wt = 0;
+        for (; j < nuses && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi; j++) {
+            if (uses[j].channel == 1)
+                wo += uses[j].sign;
+            else
+                wt += uses[j].sign;
+        }
+        sv->nedges++;
+        if (wo == 0 && wt == 0) {
+            lv->cancelled_edges++;
+            i = j;
+            continue;
+        }
+        lv->silhouette_edges++;
+        if (*nall == *cap_all) {
+            int cap = *cap_all ? *cap_all * 2 : 1024;
+            ShadowPolygon *n = realloc(*all, (size_t)cap * sizeof *n);
+            if (!n) {
+                status = -1;
+                break;
+            }
+            *all = n;
+            *cap_all = cap;
+        }
+        Vec3 a = w->points[uses[i].a], b = w->points[uses[i].b], n;
+        edge_plane(l, a, b, &n);
+        ShadowPolygon *sp = &(*all)[*nall];
+        make_shadow_polygon(sp, l, a, b, n);
+        sp->weight_opaque = (int16_t)wo;
+        sp->weight_transparent = (int16_t)wt;
+        sp->edge = (int32_t)(sv->nedges - 1);
+        Vec3 q[4];
+        wedge_outline(l, a, b, diagonal, q);
+        status = register_shadow_polygon(&regs, g, q, (uint32_t)*nall, tol);
+        (*nall)++;
+        i = j;
+    }
+    free(uses);
+    lv->count = *nall - lv->first;
+    if (status == 0)
+        status = fill_cells(lv, g, &regs);
+    free(regs.r);
+    return status;
+}
+
+int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye)
+{
+    memset(sv, 0, sizeof *sv);
+    double m = 0.0;
+    Vec3 c[2] = { g->min, g->max };
+    for (int i = 0; i < 2; i++)
+        m = fmax(m, fmax(fabs(c[i].x), fmax(fabs(c[i].y), fabs(c[i].z))));
+    sv->tolerance = 1e-9 * (1.0 + m);
+    sv->box_min = g->min;
+    sv->box_max = g->max;
+    sv->nlights = w->nlights;
+    sv->light = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *sv->light);
+    int nclasses = 0;
+    int *weld = weld_points(w, &nclasses);
+    int maxpts = 3;
+    for (int i = 0; i < w->npolygons; i++)
+        if (w->polygons[i].npoints + 3 > maxpts)
+            maxpts = w->polygons[i].npoints + 3;
+    PolygonEdge *edges = malloc(sizeof *edges * (size_t)maxpts);
+    if (!sv->light || !weld || !edges) {
+        free(weld);
+        free(edges);
+        shadow_volumes_free(sv);
+        return -1;
+    }
+    sv->nwelded_vertices = nclasses;
+    int cap = 0, status = 0;
+    for (int li = 0; li < w->nlights && status == 0; li++) {
+        if (w->lights[li].shadowless)
+            continue;
+        status = build_light(sv, &sv->light[li], w, g, &w->lights[li], weld, eye, edges, &sv->polygons,
+                             &sv->npolygons, &cap);
+    }
+    free(weld);
+    free(edges);
+    if (status) {
+        shadow_volumes_free(sv);
+        return -1;
+    }
+    return 0;
+}
+
+void shadow_volumes_free(ShadowVolumes *sv)
+{
+    if (sv->light) {
+        for (int i = 0; i < sv->nlights; i++) {
+            free(sv->light[i].cell_start);
+            free(sv->light[i].items);
+            free(sv->light[i].occluder);
+        }
+    }
+    free(sv->light);
+    free(sv->polygons);
+    memset(sv, 0, sizeof *sv);
+}

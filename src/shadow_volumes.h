@@ -1,0 +1,116 @@
+/* Shadow volumes per light (Crow, generalised as Bergeron did): every edge of
+ * every shadow-casting polygon is extruded away from the light into a
+ * semi-infinite shadow polygon. Vertices are welded by exact position; the
+ * shadow polygons of one welded edge are merged into one with an integer
+ * weight, so edges inside a mesh whose two faces continue each other as seen
+ * from the light cancel (weight 0, dropped) and only silhouettes remain. This
+ * needs no consistent winding, and handles open meshes, single cards, holes
+ * and edges shared by three or more faces alike.
+ *
+ * The depth count of a point X is the number of polygons that the segment
+ * X->light crosses (the polygon X lies on excluded), kept in two channels:
+ * opaque polygons, and transparent ones (filter/transmit), whose light must
+ * still be filtered by the conventional path. Crossing a shadow polygon from
+ * its negative to its positive side adds its weight.
+ *
+ * Shadow polygons are registered, per light, in the grid cells they overlap
+ * (clipped to the grid box, which holds the camera). Infinite planes have no
+ * silhouette; every method tests them directly. */
+#ifndef HST_SHADOW_VOLUMES_H
+#define HST_SHADOW_VOLUMES_H
+
+#include <stdint.h>
+
+#include "grid.h"
+#include "world.h"
+
+typedef struct {
+    Vec3 normal;          /* unit normal of the plane through the edge and the light */
+    double d;             /* plane: dot(normal, x) == d */
+    Vec3 side_normal[3];  /* in-plane unit normals of the wedge's three borders, */
+    double side_d[3];     /* pointing inward: dot(side_normal[i], x) - side_d[i] >= 0 inside */
+    int16_t weight_opaque, weight_transparent; /* count change, negative -> positive side */
+    int32_t edge;         /* welded edge index (for statistics and tests) */
+} ShadowPolygon;
+
+/* A polygon's relation to one light. */
+typedef struct {
+    int8_t channel;       /* 0 casts no shadow (no_shadow, or edge-on to the light), 1 opaque, 2 transparent */
+    int8_t light_side;    /* +1: the light is on the side of polygon.normal, -1 the other */
+} OccluderSide;
+
+typedef struct {
+    int first, count;     /* shadow polygons of this light: polygons[first .. first+count) */
+    uint32_t *cell_start; /* ncells + 1 offsets into items */
+    uint32_t *items;      /* global shadow polygon indices, grouped by cell */
+    size_t nitems;
+    OccluderSide *occluder; /* per world polygon */
+    /* The eye's depth count, computed once. */
+    int eye_known;
+    int eye_opaque, eye_transparent;
+    int silhouette_edges;   /* edges with nonzero weight */
+    int cancelled_edges;    /* welded edges whose contributions cancelled */
+} LightVolumes;
+
+typedef struct ShadowVolumes {
+    int nlights;
+    LightVolumes *light;
+    int npolygons;
+    ShadowPolygon *polygons;
+    int nwelded_vertices, nedges;
+    double tolerance;     /* distances below this are undecidable: fall back to the ray */
+    Vec3 box_min, box_max; /* the grid box: points outside have no valid count */
+} ShadowVolumes;
+
+/* Builds the volumes of every light that casts shadows (shadowless lights
+ * get none). `eye`: where every camera ray starts, or NULL when they start
+ * at different points (orthographic camera): no eye count then. Returns 0,
+ * or -1 when out of memory. */
+int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye);
+void shadow_volumes_free(ShadowVolumes *sv);
+
+/* Outcome of one segment/shadow polygon test. */
+typedef enum { CROSS_NONE = 0, CROSS_YES = 1, CROSS_UNSURE = 2 } CrossResult;
+
+/* Does the segment p1->p2 cross shadow polygon sp? On CROSS_YES, *sign is
+ * +1 when it goes from the negative to the positive side. CROSS_UNSURE when
+ * an end point or the crossing lies within `tol` of the shadow polygon's
+ * plane or border: rounding could decide either way there, so the caller
+ * must fall back to the exact shadow ray. */
+static inline CrossResult shadow_polygon_cross(const ShadowPolygon *sp, Vec3 p1, Vec3 p2, double tol, int *sign)
+{
+    double s1 = v3_dot(sp->normal, p1) - sp->d;
+    double s2 = v3_dot(sp->normal, p2) - sp->d;
+    if ((s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol))
+        return CROSS_NONE;
+    Vec3 x;
+    int near_end = 0;
+    if (fabs(s2) <= tol) {
+        x = p2;
+        near_end = 1;
+    } else if (fabs(s1) <= tol) {
+        x = p1;
+        near_end = 1;
+    } else {
+        x = v3_add(p1, v3_scale(v3_sub(p2, p1), s1 / (s1 - s2)));
+    }
+    int inside = 1;
+    for (int i = 0; i < 3; i++) {
+        double e = v3_dot(sp->side_normal[i], x) - sp->side_d[i];
+        if (e < -tol)
+            return CROSS_NONE;
+        if (e <= tol)
+            inside = 0;
+    }
+    if (near_end || !inside)
+        return CROSS_UNSURE;
+    *sign = s1 < 0.0 ? 1 : -1;
+    return CROSS_YES;
+}
+
+/* Which side of polygon p the light is on, for a point light at `light` or
+ * a parallel light along `dir` (unit, toward the light): +1 the normal's
+ * side, -1 the other, 0 within tol of p's plane (edge-on). */
+int shadow_light_side(const Polygon *p, const Light *l, double tol);
+
+#endif
