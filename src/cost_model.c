@@ -6,10 +6,13 @@
 #include <string.h>
 
 #include "intersect.h"
+#include "render.h"
 #include "stats.h"
+#include "tracer.h"
 
-#define SAMPLES 2000        /* shadow rays sampled for p, alpha, N_c */
-#define MIN_TIMING 0.0015   /* seconds each cost is timed for, at least */
+#define SAMPLE_GRID 24      /* camera rays per axis whose hits are the sample points */
+#define SAMPLES (SAMPLE_GRID * SAMPLE_GRID)
+#define MIN_TIMING 0.0008   /* seconds each cost is timed for, at least */
 
 typedef struct {
     uint64_t s;
@@ -121,7 +124,7 @@ static void sample_walk(const World *w, const Grid *g, uint32_t *stamp, uint32_t
     } while (grid_walk_next(g, &walk));
 }
 
-int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const ShadowVolumes *sv)
+int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const ShadowVolumes *sv, int width, int height)
 {
     memset(m, 0, sizeof *m);
     double start = clock_wall();
@@ -143,13 +146,30 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Shad
         free(stamp);
         return -1;
     }
+    /* The sample points are where camera rays through a coarse grid of
+     * pixels land: shadow rays start where the render's will. */
     Rng rng = { 0x9E3779B97F4A7C15ull };
+    TraceContext tc;
+    if (trace_context_init(&tc, w, g, NULL, (Quality){ 0, 0, 0, 0 }, NULL)) {
+        trace_context_free(&tc);
+        free(rays);
+        free(tests);
+        free(stamp);
+        return -1;
+    }
+    int nrays = 0;
     for (int i = 0; i < SAMPLES; i++) {
-        int pi = (int)(rng_next(&rng) % (uint64_t)w->npolygons);
+        Vec3 org, dir;
+        int px = (int)((i % SAMPLE_GRID + rng_unit(&rng)) * width / SAMPLE_GRID);
+        int py = (int)((i / SAMPLE_GRID + rng_unit(&rng)) * height / SAMPLE_GRID);
+        camera_ray(&w->camera, width, height, px, py, &org, &dir);
+        Hit from = { HIT_NONE, -1, 0.0, org }, hit;
+        if (!trace_nearest(&tc, org, dir, HUGE_VAL, &from, &hit) || hit.kind != HIT_POLYGON)
+            continue;
         const Light *l = &w->lights[lights[rng_next(&rng) % (uint64_t)nlights]];
-        SampleRay *s = &rays[i];
-        s->org = point_on(w, pi, &rng);
-        s->from = pi;
+        SampleRay *s = &rays[nrays++];
+        s->org = hit.point;
+        s->from = hit.index;
         if (l->kind == LIGHT_PARALLEL) {
             s->dir = l->direction;
             s->tmax = HUGE_VAL;
@@ -159,14 +179,25 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Shad
             s->dir = s->tmax > 0.0 ? v3_scale(d, 1.0 / s->tmax) : v3(0, 1, 0);
         }
     }
+    trace_context_free(&tc);
+    /* A view of planes only: sample points on random polygons instead. */
+    for (int i = 0; nrays < SAMPLES / 4 && i < SAMPLES; i++) {
+        int pi = (int)(rng_next(&rng) % (uint64_t)w->npolygons);
+        const Light *l = &w->lights[lights[rng_next(&rng) % (uint64_t)nlights]];
+        SampleRay *s = &rays[nrays++];
+        s->org = point_on(w, pi, &rng);
+        s->from = pi;
+        s->dir = l->kind == LIGHT_PARALLEL ? l->direction : v3_normalize(v3_sub(l->location, s->org));
+        s->tmax = l->kind == LIGHT_PARALLEL ? HUGE_VAL : v3_length(v3_sub(l->location, s->org));
+    }
 
     /* p, alpha and N_c from whole walks to the light. */
     long cells = 0, ntests = 0, hits = 0;
     int nkeep = 0;
-    for (int i = 0; i < SAMPLES; i++)
+    for (int i = 0; i < nrays; i++)
         sample_walk(w, g, stamp, (uint32_t)i + 1, &rays[i], &cells, &ntests, &hits, tests, &nkeep, 4096);
-    m->samples = SAMPLES;
-    m->n_c = (double)cells / SAMPLES;
+    m->samples = nrays;
+    m->n_c = nrays > 0 ? (double)cells / nrays : 0.0;
     m->alpha = cells > 0 ? (double)ntests / (double)cells : 0.0;
     m->p = ntests > 0 ? (double)hits / (double)ntests : 0.0;
     m->n_o = m->alpha * m->n_c;
@@ -183,44 +214,42 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Shad
         } while ((t = clock_wall() - t0) < MIN_TIMING);
         m->c_o = t / (double)n;
     }
-    /* C_i and C_c: walk set-ups, and cell steps. */
-    {
-        long n = 0;
-        double t0 = clock_wall(), t;
+    /* C_i and C_c: walk set-ups, then whole walks; C_c is the difference
+     * per cell step, both timed in alternation so drifts cancel. */
+    if (nrays > 0) {
+        long n = 0, steps = 0;
+        double t_begin = 0.0, t_walk = 0.0;
         GridWalk walk;
         do {
-            for (int i = 0; i < SAMPLES; i++)
+            double t0 = clock_wall();
+            for (int i = 0; i < nrays; i++)
                 sink += grid_walk_begin(g, rays[i].org, rays[i].dir, 0.0, rays[i].tmax, &walk);
-            n += SAMPLES;
-        } while ((t = clock_wall() - t0) < MIN_TIMING);
-        m->c_i = t / (double)n;
-        long steps = 0;
-        t0 = clock_wall();
-        do {
-            for (int i = 0; i < SAMPLES; i++) {
+            double t1 = clock_wall();
+            for (int i = 0; i < nrays; i++) {
                 if (!grid_walk_begin(g, rays[i].org, rays[i].dir, 0.0, rays[i].tmax, &walk))
                     continue;
                 while (grid_walk_next(g, &walk))
                     steps++;
                 sink += walk.cell[0];
             }
-            n += SAMPLES;
-        } while ((t = clock_wall() - t0) < MIN_TIMING);
-        /* Subtract the set-ups timed above. */
-        double walking = t - m->c_i * (double)n;
-        m->c_c = steps > 0 ? fmax(walking, 0.0) / (double)steps : 0.0;
+            t_walk += clock_wall() - t1;
+            t_begin += t1 - t0;
+            n += nrays;
+        } while (t_begin + t_walk < 2 * MIN_TIMING);
+        m->c_i = t_begin / (double)n;
+        m->c_c = steps > 0 ? fmax(t_walk - t_begin, 0.0) / (double)steps : 0.0;
     }
     /* C_s: segment/shadow polygon tests on the scene's shadow polygons. */
-    if (sv && sv->npolygons > 0) {
+    if (sv && sv->npolygons > 0 && nrays > 1) {
         long n = 0;
         double t0 = clock_wall(), t;
         int sign = 0;
         do {
-            for (int i = 0; i + 1 < SAMPLES; i++) {
+            for (int i = 0; i + 1 < nrays; i++) {
                 const ShadowPolygon *sp = &sv->polygons[(size_t)i * 7919u % (size_t)sv->npolygons];
                 sink += shadow_polygon_cross(sp, rays[i].org, rays[i + 1].org, sv->tolerance, &sign) + sign;
             }
-            n += SAMPLES - 1;
+            n += nrays - 1;
         } while ((t = clock_wall() - t0) < MIN_TIMING);
         m->c_s = t / (double)n;
     }

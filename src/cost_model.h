@@ -24,9 +24,11 @@ typedef struct CostModel {
     int samples;    /* shadow rays sampled for p and alpha */
 } CostModel;
 
-/* Measures everything; deterministic sampling (fixed seed), so only the
- * timings vary between runs. Returns 0, or -1 when out of memory. */
-int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const ShadowVolumes *sv);
+/* Measures everything. The sample shadow rays start where camera rays
+ * through a coarse grid of pixels of a width x height image land, toward a
+ * random light (fixed seed: only the timings vary between runs). Returns 0,
+ * or -1 when out of memory. */
+int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const ShadowVolumes *sv, int width, int height);
 
 /* Eq. (7): N_th for a shadow ray that would visit n_c cells. */
 double cost_model_threshold(const CostModel *m, double n_c);

@@ -165,7 +165,7 @@ int main(int argc, char **argv)
         }
         have_volumes = 1;
         report.volumes_seconds = clock_wall() - tv;
-        if (cost_model_calibrate(&cost, &world, &grid, &volumes) == 0)
+        if (cost_model_calibrate(&cost, &world, &grid, &volumes, opt.width, opt.height) == 0)
             report.cost = &cost;
         report.volumes = &volumes;
     }

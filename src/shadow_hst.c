@@ -43,7 +43,7 @@ static double toward_light(const Polygon *p, const OccluderSide *o, Vec3 v)
 
 typedef struct {
     LightState from;             /* at P1 */
-    int n_s;                     /* shadow polygons to test */
+    uint32_t registrations;      /* of the light's shadow polygons in the pierced cells */
     int cap_opaque, cap_transparent; /* the segment enters the shadow of P1's own polygon */
     int countable;               /* a count can be carried from P1 to P2 */
 } SegmentView;
@@ -54,13 +54,12 @@ static void view_segment(TraceContext *ctx, const ShadowQuery *q, SegmentView *v
     const LightVolumes *lv = &ctx->volumes->light[q->light];
     const Segment *seg = q->segment;
     v->from = seg->from_state ? seg->from_state[q->light] : eye_state(lv);
-    v->n_s = ctx->bucket_n[q->light];
+    v->registrations = trace_shadow_registrations(ctx, q->light);
     v->cap_opaque = v->cap_transparent = 0;
     v->countable = ctx->segment_in_box;
     if (seg->from->kind == HIT_POLYGON) {
         const OccluderSide *o = &lv->occluder[seg->from->index];
         if (o->channel && toward_light(&w->polygons[seg->from->index], o, seg->dir) < 0.0) {
-            v->n_s++;
             if (o->channel == 1)
                 v->cap_opaque = 1;
             else
@@ -74,8 +73,9 @@ static void view_segment(TraceContext *ctx, const ShadowQuery *q, SegmentView *v
     }
 }
 
-/* depth(P2) = depth(P1) + signed crossings. Returns 0 when undecidable. */
-static int count_crossings(TraceContext *ctx, const ShadowQuery *q, const SegmentView *v, LightState *out)
+/* depth(P2) = depth(P1) + signed crossings of the n shadow polygons in
+ * ctx->bucket. Returns 0 when undecidable. */
+static int count_crossings(TraceContext *ctx, const ShadowQuery *q, const SegmentView *v, int n, LightState *out)
 {
     const ShadowVolumes *sv = ctx->volumes;
     int opaque = v->cap_opaque, transparent = v->cap_transparent;
@@ -83,14 +83,19 @@ static int count_crossings(TraceContext *ctx, const ShadowQuery *q, const Segmen
         opaque += v->from.depth_opaque;
         transparent += v->from.depth_transparent;
     } /* else P1 is lit: both counts are 0 there */
-    const uint32_t *b = ctx->bucket[q->light];
-    int n = ctx->bucket_n[q->light];
+    const uint32_t *b = ctx->bucket;
     Vec3 p1 = q->segment->org, p2 = q->point;
     ctx->stats.shadow_volume_tests += (uint64_t)n;
+    double tol = sv->tolerance;
     for (int i = 0; i < n; i++) {
+        /* Both ends clearly on one side of the plane: no crossing. */
+        const ShadowPlane *pl = &sv->planes[b[i]];
+        double s1 = v3_dot(pl->normal, p1) - pl->d, s2 = v3_dot(pl->normal, p2) - pl->d;
+        if ((s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol))
+            continue;
         const ShadowPolygon *sp = &sv->polygons[b[i]];
         int sign;
-        CrossResult r = shadow_polygon_cross(sp, p1, p2, sv->tolerance, &sign);
+        CrossResult r = shadow_polygon_cross(sp, p1, p2, tol, &sign);
         if (r == CROSS_UNSURE)
             return 0;
         if (r == CROSS_YES) {
@@ -189,7 +194,7 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
          * point blocked; leaving P1's polygon toward the light does not
          * when that polygon was the blocker (self-shadow). */
         int cap = v.cap_opaque || v.cap_transparent;
-        int bucket_empty = ctx->bucket_n[q->light] == 0;
+        int bucket_empty = v.registrations == 0;
         if (bucket_empty && v.countable &&
             ((v.from.condition == COND_LIT && !cap) || (v.from.condition == COND_BLOCKED && (cap || !v.from.self)))) {
             *out = v.from;
@@ -214,8 +219,16 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
             nth = cost_model_threshold(ctx->cost, cost_model_cells_to_light(ctx->grid, q->point,
                                                                            &ctx->world->lights[q->light]));
     }
-    if (v.countable && from_usable && v.n_s <= nth) {
-        if (count_crossings(ctx, q, &v, out)) {
+    /* N_s: the bucket, plus the crossing of P1's own polygon. The bucket
+     * is filled only when a count may follow. */
+    int counted = 0; /* 1 counted, -1 undecidable, 0 not tried */
+    if (v.countable && from_usable) {
+        int n = trace_fill_shadow_bucket(ctx, q->light);
+        if (n + v.cap_opaque + v.cap_transparent <= nth)
+            counted = count_crossings(ctx, q, &v, n, out) ? 1 : -1;
+    }
+    if (counted) {
+        if (counted > 0) {
             ctx->last_scheme = SCHEME_VOLUME;
             ctx->stats.shadow_schemes[SCHEME_VOLUME]++;
             if (light)

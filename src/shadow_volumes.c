@@ -522,6 +522,13 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     }
     free(weld);
     free(edges);
+    if (status == 0) {
+        sv->planes = malloc(sizeof *sv->planes * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
+        if (!sv->planes)
+            status = -1;
+        for (int i = 0; status == 0 && i < sv->npolygons; i++)
+            sv->planes[i] = (ShadowPlane){ sv->polygons[i].normal, sv->polygons[i].d };
+    }
     if (status) {
         shadow_volumes_free(sv);
         return -1;
@@ -540,5 +547,6 @@ void shadow_volumes_free(ShadowVolumes *sv)
     }
     free(sv->light);
     free(sv->polygons);
+    free(sv->planes);
     memset(sv, 0, sizeof *sv);
 }

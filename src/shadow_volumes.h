@@ -52,11 +52,18 @@ typedef struct {
     int cancelled_edges;    /* welded edges whose contributions cancelled */
 } LightVolumes;
 
+/* The planes of the shadow polygons alone, packed: most tests end there. */
+typedef struct {
+    Vec3 normal;
+    double d;
+} ShadowPlane;
+
 typedef struct ShadowVolumes {
     int nlights;
     LightVolumes *light;
     int npolygons;
     ShadowPolygon *polygons;
+    ShadowPlane *planes;  /* planes[i] is polygons[i]'s plane */
     int nwelded_vertices, nedges;
     double tolerance;     /* distances below this are undecidable: fall back to the ray */
     Vec3 box_min, box_max; /* the grid box: points outside have no valid count */

@@ -30,19 +30,19 @@ int trace_context_init(TraceContext *ctx, const World *w, const Grid *g, const s
         ctx->light_cache[i] = -1;
     if (volumes) {
         ctx->volumes = volumes;
+        int most = 1;
+        for (int i = 0; i < volumes->nlights; i++)
+            if (volumes->light[i].count > most)
+                most = volumes->light[i].count;
         ctx->sp_stamp = calloc((size_t)(volumes->npolygons > 0 ? volumes->npolygons : 1), sizeof(uint32_t));
-        ctx->bucket = calloc((size_t)nl, sizeof *ctx->bucket);
-        ctx->bucket_n = calloc((size_t)nl, sizeof *ctx->bucket_n);
+        ctx->bucket = malloc(sizeof(uint32_t) * (size_t)most);
+        /* A 3DDDA walk visits at most one cell per boundary crossed. */
+        ctx->segment_cells_cap = g->n[0] + g->n[1] + g->n[2] + 3;
+        ctx->segment_cells = malloc(sizeof(uint32_t) * (size_t)ctx->segment_cells_cap);
         ctx->states = calloc((size_t)nl * STATE_DEPTH, sizeof(LightState));
-        if (!ctx->sp_stamp || !ctx->bucket || !ctx->bucket_n || !ctx->states)
+        if (!ctx->sp_stamp || !ctx->bucket || !ctx->segment_cells || !ctx->states)
             return -1;
         ctx->state_capacity = STATE_DEPTH;
-        for (int i = 0; i < w->nlights; i++) {
-            int n = volumes->light[i].count;
-            ctx->bucket[i] = malloc(sizeof(uint32_t) * (size_t)(n > 0 ? n : 1));
-            if (!ctx->bucket[i])
-                return -1;
-        }
     }
     return 0;
 }
@@ -51,52 +51,55 @@ void trace_context_free(TraceContext *ctx)
 {
     free(ctx->stamp);
     free(ctx->light_cache);
-    if (ctx->bucket)
-        for (int i = 0; i < ctx->world->nlights; i++)
-            free(ctx->bucket[i]);
     free(ctx->bucket);
-    free(ctx->bucket_n);
+    free(ctx->segment_cells);
     free(ctx->sp_stamp);
     free(ctx->states);
     ctx->stamp = NULL;
     ctx->light_cache = NULL;
     ctx->bucket = NULL;
-    ctx->bucket_n = NULL;
+    ctx->segment_cells = NULL;
     ctx->sp_stamp = NULL;
     ctx->states = NULL;
 }
 
-/* The segment's shadow bucket: every shadow polygon registered in cell c,
- * per light, added once. */
-static void gather_shadow_polygons(TraceContext *ctx, int c)
+int trace_fill_shadow_bucket(TraceContext *ctx, int light)
 {
-    const ShadowVolumes *sv = ctx->volumes;
-    for (int li = 0; li < sv->nlights; li++) {
-        const LightVolumes *lv = &sv->light[li];
-        if (!lv->cell_start)
-            continue;
-        uint32_t k0 = lv->cell_start[c], k1 = lv->cell_start[c + 1];
-        for (uint32_t k = k0; k < k1; k++) {
-            uint32_t s = lv->items[k];
-            if (ctx->sp_stamp[s] == ctx->sp_id)
-                continue;
-            ctx->sp_stamp[s] = ctx->sp_id;
-            ctx->bucket[li][ctx->bucket_n[li]++] = s;
-            ctx->stats.shadow_bucket_polygons++;
-        }
-    }
-}
-
-static void begin_shadow_bucket(TraceContext *ctx)
-{
+    const LightVolumes *lv = &ctx->volumes->light[light];
+    if (!lv->cell_start)
+        return 0;
     if (++ctx->sp_id == 0) {
         for (int i = 0; i < ctx->volumes->npolygons; i++)
             ctx->sp_stamp[i] = 0;
         ctx->sp_id = 1;
     }
-    for (int li = 0; li < ctx->world->nlights; li++)
-        ctx->bucket_n[li] = 0;
-    ctx->segment_in_box = 0;
+    uint32_t id = ctx->sp_id;
+    int n = 0;
+    for (int k = 0; k < ctx->segment_ncells; k++) {
+        uint32_t c = ctx->segment_cells[k];
+        for (uint32_t j = lv->cell_start[c]; j < lv->cell_start[c + 1]; j++) {
+            uint32_t s = lv->items[j];
+            if (ctx->sp_stamp[s] == id)
+                continue;
+            ctx->sp_stamp[s] = id;
+            ctx->bucket[n++] = s;
+        }
+    }
+    ctx->stats.shadow_bucket_polygons += (uint64_t)n;
+    return n;
+}
+
+uint32_t trace_shadow_registrations(const TraceContext *ctx, int light)
+{
+    const LightVolumes *lv = &ctx->volumes->light[light];
+    if (!lv->cell_start)
+        return 0;
+    uint32_t n = 0;
+    for (int k = 0; k < ctx->segment_ncells; k++) {
+        uint32_t c = ctx->segment_cells[k];
+        n += lv->cell_start[c + 1] - lv->cell_start[c];
+    }
+    return n;
 }
 
 static int inside_box(const ShadowVolumes *sv, Vec3 p)
@@ -130,9 +133,9 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
 
     double best = HUGE_VAL;
     GridWalk walk;
-    int gather = ctx->volumes != NULL;
+    int gather = ctx->volumes != NULL, overflow = 0;
     if (gather)
-        begin_shadow_bucket(ctx);
+        ctx->segment_ncells = 0;
     if ((w->npolygons > 0 || gather) && grid_walk_begin(g, org, dir, 0.0, plane_t, &walk)) {
         uint32_t id = trace_new_segment(ctx);
         int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
@@ -141,8 +144,12 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
         do {
             ctx->stats.cells_visited++;
             int c = grid_cell_index(g, walk.cell);
-            if (gather)
-                gather_shadow_polygons(ctx, c);
+            if (gather) {
+                if (ctx->segment_ncells < ctx->segment_cells_cap)
+                    ctx->segment_cells[ctx->segment_ncells++] = (uint32_t)c;
+                else
+                    overflow = 1; /* cannot happen with 3DDDA; distrust the bucket if it did */
+            }
             for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
                 uint32_t pi = g->items[k];
                 if (!bucket_admit(ctx, id, pi))
@@ -175,6 +182,6 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
     hit->point = v3_madd(org, dir, best);
     /* The walk covered the whole segment only when its end is in the box. */
     if (gather)
-        ctx->segment_in_box = inside_box(ctx->volumes, hit->point) && inside_box(ctx->volumes, org);
+        ctx->segment_in_box = !overflow && inside_box(ctx->volumes, hit->point) && inside_box(ctx->volumes, org);
     return 1;
 }

@@ -45,19 +45,22 @@ typedef struct {
     /* Shadow methods' per-thread state. */
     int last_scheme;           /* how the last decision was made (ShadowScheme) */
     int last_blocker;          /* polygon that blocked the last shadow ray, or -1 */
-    int last_filtered;         /* transparent polygons the last shadow ray passed */
+    int last_filtered;
+    unsigned shadow_timer;     /* decisions so far, for timing every 8th */         /* transparent polygons the last shadow ray passed */
     int *light_cache;          /* cache method: last opaque blocker per light, or -1 */
     int verify;                /* --verify-shadows: check every decision against the shadow ray */
     double nth;                /* hst: N_th; negative: per point from its own N_c */
     const struct CostModel *cost;  /* for the per-point N_th */
-    /* Shadow buckets (volume, hst): the shadow polygons registered in the
-     * cells the current segment pierced, per light, each once (stamps). */
+    /* Shadow buckets (volume, hst). The walk of a segment records the cells
+     * it pierced; a method that needs a light's bucket (the shadow polygons
+     * registered in those cells, each once: stamps) fills it from them. */
     const struct ShadowVolumes *volumes;
+    uint32_t *segment_cells;
+    int segment_ncells, segment_cells_cap;
+    int segment_in_box;        /* the current segment lies inside the grid box */
     uint32_t *sp_stamp;
     uint32_t sp_id;
-    uint32_t **bucket;
-    int *bucket_n;
-    int segment_in_box;        /* the current segment ended inside the grid box */
+    uint32_t *bucket;          /* room for any light's shadow polygons */
     /* Light states along the ray tree: one row of nlights per recursion depth. */
     void *states;
     int state_depth, state_capacity;
@@ -103,6 +106,14 @@ static inline double trace_min_distance(Vec3 org)
  * surface the segment starts on (excluded, as the paper's bucket rule says),
  * kind HIT_NONE for the camera. */
 int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit);
+
+/* The current segment's shadow bucket for a light: fills ctx->bucket with
+ * the distinct shadow polygons registered in the cells the segment pierced
+ * and returns how many (the paper's N_s). */
+int trace_fill_shadow_bucket(TraceContext *ctx, int light);
+/* Registrations of the light's shadow polygons in those cells: 0 exactly
+ * when the bucket is empty, never less than its size. Cheap. */
+uint32_t trace_shadow_registrations(const TraceContext *ctx, int light);
 
 static inline int hit_material(const World *w, const Hit *h)
 {
