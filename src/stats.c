@@ -162,9 +162,52 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
     fprintf(f, "  \"tests\": {\"ray_polygon\": %llu, \"ray_polygon_hits\": %llu, \"ray_plane\": %llu, \"cells_visited\": %llu},\n",
             (unsigned long long)s->polygon_tests, (unsigned long long)s->polygon_hits,
             (unsigned long long)s->plane_tests, (unsigned long long)s->cells_visited);
-    fprintf(f, "  \"shadows\": {\"queries\": %llu, \"shadow_rays\": %llu, \"blocked\": %llu, \"polygon_tests\": %llu}\n}\n",
+    fprintf(f, "  \"shadows\": {\"queries\": %llu, \"shadow_rays\": %llu, \"blocked\": %llu, \"polygon_tests\": %llu,\n",
             (unsigned long long)s->shadow_queries, (unsigned long long)s->shadow_rays,
             (unsigned long long)s->shadow_blocked, (unsigned long long)s->shadow_polygon_tests);
+    fprintf(f, "    \"schemes\": {");
+    for (int i = 0; i < STATS_SCHEMES; i++)
+        fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i], (unsigned long long)s->shadow_schemes[i]);
+    fprintf(f, "},\n    \"shadow_polygon_tests\": %llu, \"bucket_polygons\": %llu, \"unsure\": %llu, \"no_count\": %llu, "
+               "\"deferred\": %llu,\n",
+            (unsigned long long)s->shadow_volume_tests, (unsigned long long)s->shadow_bucket_polygons,
+            (unsigned long long)s->shadow_unsure, (unsigned long long)s->shadow_no_count,
+            (unsigned long long)s->shadow_deferred);
+    fprintf(f, "    \"verified\": %llu, \"disagreements\": %llu, \"disagreements_by_scheme\": {",
+            (unsigned long long)s->shadow_verified, (unsigned long long)s->shadow_disagreements);
+    for (int i = 0; i < STATS_SCHEMES; i++)
+        fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i],
+                (unsigned long long)s->shadow_disagreements_by_scheme[i]);
+    fprintf(f, "}}");
+    if (r->volumes) {
+        const ShadowVolumes *sv = r->volumes;
+        fprintf(f, ",\n  \"volumes\": {\"seconds\": %.6f, \"welded_vertices\": %d, \"tolerance\": %.3g, \"lights\": [",
+                r->volumes_seconds, sv->nwelded_vertices, sv->tolerance);
+        for (int i = 0; i < sv->nlights; i++) {
+            const LightVolumes *lv = &sv->light[i];
+            fprintf(f, "%s\n    {\"shadow_polygons\": %d, \"cancelled_edges\": %d, \"cell_registrations\": %zu, "
+                       "\"eye_depth\": ",
+                    i ? "," : "", lv->count, lv->cancelled_edges, lv->nitems);
+            if (lv->eye_known)
+                fprintf(f, "[%d, %d]}", lv->eye_opaque, lv->eye_transparent);
+            else
+                fprintf(f, "null}");
+        }
+        fprintf(f, "]}");
+    }
+    if (r->cost) {
+        const CostModel *c = r->cost;
+        fprintf(f, ",\n  \"cost_model\": {\"c_s_ns\": %.3f, \"c_i_ns\": %.3f, \"c_c_ns\": %.3f, \"c_o_ns\": %.3f, "
+                   "\"p\": %.6f, \"alpha\": %.4f, \"n_c\": %.3f, \"n_o\": %.3f, \"nth_eq7\": %.3f, \"seconds\": %.6f, "
+                   "\"samples\": %d},\n  \"nth\": ",
+                c->c_s * 1e9, c->c_i * 1e9, c->c_c * 1e9, c->c_o * 1e9, c->p, c->alpha, c->n_c, c->n_o, c->nth,
+                c->seconds, c->samples);
+        if (r->nth >= 0.0)
+            fprintf(f, "%.3f", r->nth);
+        else
+            fprintf(f, "\"per-point\"");
+    }
+    fprintf(f, "\n}\n");
     if (fclose(f) != 0) {
         snprintf(err, (size_t)errlen, "cannot write '%s': %s", path, strerror(errno));
         return -1;

@@ -1,0 +1,74 @@
+#!/bin/sh
+# Every shadow method against the exact shadow ray, in TAP. For every scene
+# in scenes/ and every method (cache, volume, hst with the threshold from
+# eq. 7, per point, 0 and effectively infinite): --verify-shadows fires the
+# conventional shadow ray beside the method at every shading point (primary,
+# reflected, refracted) and must count 0 disagreements out of a nonzero
+# number of checked decisions, and the image must be bit-identical to the
+# conventional render. hst must really use its sub-schemes (sustain and
+# shadow volume decisions > 0), and give the same image for 1 and 2 threads.
+set -u
+srcdir=${top_srcdir:-.}
+builddir=${top_builddir:-.}
+hstrace="$builddir/hstrace"
+work=$(mktemp -d "${TMPDIR:-/tmp}/hstshadows.XXXXXX") || { echo "Bail out! no temporary folder"; exit 1; }
+trap 'rm -rf "$work"' EXIT
+n=0
+check() { # description, then a shell condition
+    n=$((n + 1)); d=$1; shift
+    if eval "$@"; then echo "ok $n - $d"; else echo "not ok $n - $d"; fi
+}
+# json_number FILE KEY: the first number after "KEY": in FILE.
+json_number() {
+    sed -n "s/.*\"$2\": \\([0-9][0-9.]*\\).*/\\1/p" "$1" | head -1
+}
+
+# Beside the project's scenes, one made for the cases they lack: filtered
+# light through transparent cards in front of opaque ones, a transparent
+# plane, a parallel light, a mirror, and a glass slab that refracts.
+cat >"$work/filtered.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 max_trace_level 6 }
+camera { location <0, 2.5, -6> look_at <0, 0.6, 0> angle 50 right x*4/3 }
+light_source { <-3, 6, -3> color rgb 0.9 }
+light_source { <4, 5, -1> color rgb 0.4 parallel point_at <0, 0, 0> }
+plane { y, 0 pigment { color rgb <0.8, 0.8, 0.75> } finish { reflection 0.2 } }
+plane { z, 6 pigment { color rgbt <0.6, 0.7, 0.9, 0.5> } }
+polygon { 5, <-1, 0>, <1, 0>, <1, 1.5>, <-1, 1.5>, <-1, 0>
+  pigment { color rgbf <0.9, 0.3, 0.2, 0.7> } translate <-0.8, 0.2, 0.5> }
+polygon { 5, <-1, 0>, <1, 0>, <1, 1.2>, <-1, 1.2>, <-1, 0>
+  pigment { color rgbt <0.2, 0.8, 0.3, 0.5> } rotate y*30 translate <0.9, 0.1, 0.2> }
+box { <-0.4, 0, -0.4>, <0.4, 0.8, 0.4> pigment { color rgb <0.3, 0.3, 0.9> } translate <0.2, 0, 1.6> }
+box { <-1, 0, -0.05>, <1, 1, 0.05> pigment { color rgbf <1, 1, 1, 0.9> } interior { ior 1.5 }
+  finish { reflection 0.1 } rotate y*-20 translate <-1.6, 0, -1> }
+triangle { <1.5, 0, -1.5>, <2.5, 0, -0.5>, <2, 1.5, -1> pigment { color rgb 0.9 } finish { reflection 0.6 } }
+POV
+
+for scene in "$srcdir"/scenes/*.pov "$work/filtered.pov"; do
+    name=$(basename "$scene" .pov)
+    "$hstrace" "$scene" --shadows conventional --exr-float --threads 2 -o "$work/$name.conventional.exr" 2>"$work/err"
+    check "$name: conventional renders" '[ $? -eq 0 ]'
+    for variant in cache volume hst hst:per-point hst:0 hst:1e9; do
+        method=${variant%%:*}
+        nth=auto
+        [ "$variant" != "$method" ] && nth=${variant#*:}
+        out="$work/$name.$method.$nth"
+        "$hstrace" "$scene" --shadows "$method" --nth "$nth" --verify-shadows --exr-float --threads 2 \
+            --stats-json "$out.json" -o "$out.exr" 2>"$work/err"
+        status=$?
+        verified=$(json_number "$out.json" verified)
+        disagreements=$(json_number "$out.json" disagreements)
+        check "$name: $method (N_th $nth) agrees with the shadow ray: $disagreements disagreements in $verified decisions" \
+            '[ $status -eq 0 ] && [ "${verified:-0}" -gt 0 ] && [ "$disagreements" = 0 ]'
+        check "$name: $method (N_th $nth) image identical to conventional" \
+            'cmp -s "$out.exr" "$work/$name.conventional.exr"'
+    done
+    json="$work/$name.hst.auto.json"
+    sustain=$(json_number "$json" sustain)
+    volume=$(json_number "$json" volume)
+    check "$name: hst decided by sustain ($sustain) and shadow volume ($volume)" \
+        '[ "${sustain:-0}" -gt 0 ] && [ "${volume:-0}" -gt 0 ]'
+    "$hstrace" "$scene" --exr-float --threads 1 -o "$work/$name.t1.exr" 2>/dev/null
+    check "$name: hst gives the same image on 1 and 2 threads" 'cmp -s "$work/$name.t1.exr" "$work/$name.hst.auto.exr"'
+done
+echo "1..$n"

@@ -1,0 +1,157 @@
+/* Shadow volumes against brute force: for random scenes (a welded height
+ * field with random winding, loose triangles, a polygon with a hole, a
+ * card), point and parallel lights, and random segments P1 -> P2, the depth
+ * count carried by the shadow polygons must equal the number of polygons
+ * the segment P2 -> light crosses, counted directly:
+ *     count(P1) + signed crossings of every shadow polygon == count(P2)
+ * whenever no crossing was too close to call (those are counted, and must
+ * be rare). The eye's count must equal the direct count too. */
+#include <stdio.h>
+
+#include "fixtures.h"
+#include "grid.h"
+#include "intersect.h"
+#include "shadow_volumes.h"
+#include "tap.h"
+#include "world.h"
+
+/* Polygons crossed by the segment x -> light (parallel: the ray). */
+static int direct_count(const World *w, const Light *l, Vec3 x)
+{
+    Vec3 dir = l->kind == LIGHT_PARALLEL ? l->direction : v3_sub(l->location, x);
+    double tmax = l->kind == LIGHT_PARALLEL ? HUGE_VAL : 1.0;
+    int n = 0;
+    for (int i = 0; i < w->npolygons; i++) {
+        double t = intersect_polygon(w, &w->polygons[i], x, dir);
+        if (t > 0.0 && t < tmax)
+            n++;
+    }
+    return n;
+}
+
+static void add_scene(Scene *s, TestRng *r)
+{
+    /* A height field of 6x6 quads as 72 triangles, every other one wound
+     * the other way: welded edges without consistent winding. */
+    const int N = 6;
+    Vec3 h[7][7];
+    for (int i = 0; i <= N; i++)
+        for (int j = 0; j <= N; j++)
+            h[i][j] = v3(-3 + i, 1.5 + rng_range(r, -0.4, 0.4), -3 + j);
+    for (int i = 0; i < N; i++)
+        for (int j = 0; j < N; j++) {
+            if ((i + j) % 2)
+                fixture_triangle(s, h[i][j], h[i + 1][j], h[i + 1][j + 1]);
+            else
+                fixture_triangle(s, h[i + 1][j + 1], h[i + 1][j], h[i][j]);
+            fixture_triangle(s, h[i][j], h[i + 1][j + 1], h[i][j + 1]);
+        }
+    /* Loose triangles. */
+    for (int k = 0; k < 6; k++) {
+        Vec3 c = v3(rng_range(r, -3, 3), rng_range(r, 0.2, 1.2), rng_range(r, -3, 3));
+        fixture_triangle(s, v3_add(c, v3(rng_range(r, -1, 1), rng_range(r, -0.3, 0.3), rng_range(r, -1, 1))),
+                         v3_add(c, v3(rng_range(r, -1, 1), rng_range(r, -0.3, 0.3), rng_range(r, -1, 1))),
+                         v3_add(c, v3(rng_range(r, -1, 1), rng_range(r, -0.3, 0.3), rng_range(r, -1, 1))));
+    }
+    /* A frame: a square with a square hole (outlines in the same direction). */
+    Vec3 frame[10] = { v3(-1, 0.8, -1), v3(1, 0.8, -1), v3(1, 0.8, 1), v3(-1, 0.8, 1), v3(-1, 0.8, -1),
+                       v3(-0.5, 0.8, -0.5), v3(0.5, 0.8, -0.5), v3(0.5, 0.8, 0.5), v3(-0.5, 0.8, 0.5),
+                       v3(-0.5, 0.8, -0.5) };
+    int starts[3] = { 0, 5, 10 };
+    SceneObject *o = fixture_polygon(s, frame, 10, starts, 2);
+    transform_translate(&o->transform, v3(rng_range(r, -1, 1), 0, rng_range(r, -1, 1)));
+    /* A standing card. */
+    fixture_triangle(s, v3(2, 0, 2), v3(2.8, 0, 2.4), v3(2.4, 1.4, 2.2));
+}
+
+int main(void)
+{
+    TestRng rng = { 0x2545F4914F6CDD1Dull };
+    int scenes = 12, samples = 0, unsure = 0, wrong = 0, eye_wrong = 0, eye_checked = 0;
+    int cancelled = 0, silhouettes = 0;
+    for (int sc = 0; sc < scenes; sc++) {
+        Scene *s = fixture_scene(128);
+        add_scene(s, &rng);
+        SceneLight lights[2];
+        memset(lights, 0, sizeof lights);
+        lights[0].kind = LIGHT_POINT;
+        /* Above the scene, or among the objects (below the height field). */
+        lights[0].location = v3(rng_range(&rng, -2, 2), sc % 3 == 0 ? 1.0 : rng_range(&rng, 3, 6), rng_range(&rng, -2, 2));
+        lights[0].colour.r = lights[0].colour.g = lights[0].colour.b = 1;
+        lights[1] = lights[0];
+        lights[1].kind = LIGHT_PARALLEL;
+        lights[1].location = v3(rng_range(&rng, -1, 1), 1, rng_range(&rng, -1, 1));
+        lights[1].point_at = v3(0, 0, 0);
+        s->lights = lights;
+        s->nlights = 2;
+        s->camera.location = v3(rng_range(&rng, -4, 4), rng_range(&rng, 0.1, 4), -6);
+        World w;
+        WorldError err;
+        if (world_build(&w, s, &err)) {
+            tap_ok(0, "world: %s", err.message);
+            continue;
+        }
+        Vec3 extra[1] = { w.camera.location };
+        Grid g;
+        ShadowVolumes sv;
+        if (grid_build(&g, &w, NULL, extra, 1) || shadow_volumes_build(&sv, &w, &g, &w.camera.location)) {
+            tap_ok(0, "grid and volumes built");
+            continue;
+        }
+        for (int li = 0; li < w.nlights; li++) {
+            const Light *l = &w.lights[li];
+            const LightVolumes *lv = &sv.light[li];
+            cancelled += lv->cancelled_edges;
+            silhouettes += lv->silhouette_edges;
+            if (lv->eye_known) {
+                eye_checked++;
+                eye_wrong += lv->eye_opaque != direct_count(&w, l, w.camera.location);
+            }
+            for (int k = 0; k < 400; k++) {
+                Vec3 p1 = v3(rng_range(&rng, g.min.x, g.max.x), rng_range(&rng, g.min.y, g.max.y),
+                             rng_range(&rng, g.min.z, g.max.z));
+                Vec3 p2 = v3(rng_range(&rng, g.min.x, g.max.x), rng_range(&rng, g.min.y, g.max.y),
+                             rng_range(&rng, g.min.z, g.max.z));
+                int depth = direct_count(&w, l, p1), sure = 1;
+                for (int q = lv->first; q < lv->first + lv->count; q++) {
+                    int sign;
+                    CrossResult c = shadow_polygon_cross(&sv.polygons[q], p1, p2, sv.tolerance, &sign);
+                    if (c == CROSS_UNSURE)
+                        sure = 0;
+                    else if (c == CROSS_YES)
+                        depth += sign * sv.polygons[q].weight_opaque;
+                }
+                /* The segment must not pass through a polygon: its count
+                 * changes there without a shadow polygon (a ray would stop). */
+                int blocked = 0;
+                for (int i = 0; i < w.npolygons && !blocked; i++) {
+                    double t = intersect_polygon(&w, &w.polygons[i], p1, v3_sub(p2, p1));
+                    blocked = t > 0.0 && t < 1.0;
+                }
+                if (blocked)
+                    continue;
+                samples++;
+                if (!sure) {
+                    unsure++;
+                    continue;
+                }
+                if (depth != direct_count(&w, l, p2))
+                    wrong++;
+            }
+        }
+        shadow_volumes_free(&sv);
+        grid_free(&g);
+        world_free(&w);
+        s->lights = NULL;
+        s->nlights = 0;
+        scene_free(s);
+    }
+    tap_ok(silhouettes > 0 && cancelled > 0, "welded edges cancel (%d) and silhouettes remain (%d)", cancelled, silhouettes);
+    tap_ok(samples > 2000, "%d free segments sampled", samples);
+    tap_ok(wrong == 0, "carried depth count equals the direct count on every segment (%d wrong of %d)", wrong,
+           samples - unsure);
+    tap_ok(unsure * 1000 <= samples, "undecidable crossings are rare (%d of %d)", unsure, samples);
+    tap_ok(eye_checked > 0 && eye_wrong == 0, "the eye's count equals the direct count (%d wrong of %d)", eye_wrong,
+           eye_checked);
+    return tap_done();
+}
