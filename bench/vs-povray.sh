@@ -29,7 +29,7 @@ for f in *.pov; do
     s=${f%.pov}
     hyperfine -N -w 2 -r 10 --export-json "$work/$s.json" \
         "povray +I$s.pov +O$work/${s}_p.exr +FE -A -D -GA +WT2 +W320 +H240" \
-        "$build/hstrace $s.pov -o $work/${s}_h.exr --threads 2 --width 320 --height 240" >/dev/null 2>&1
+        "$build/hstrace $s.pov -o $work/${s}_h.exr --threads 2 --width 320 --height 240 --shadows conventional" >/dev/null 2>&1
     python3 - "$work/$s.json" "$s" >>"$out" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))["results"]

@@ -24,16 +24,19 @@ void shadow_cache_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
     light->r = light->g = light->b = 1.0;
     ctx->last_scheme = SCHEME_CONVENTIONAL;
     if (shadow_planes_test(ctx, q, light)) {
+        ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
         ctx->stats.shadow_blocked++;
         return;
     }
     if (cached_blocker_hits(ctx, q)) {
         light->r = light->g = light->b = 0.0;
         ctx->last_scheme = SCHEME_CACHE_HIT;
+        ctx->stats.shadow_schemes[SCHEME_CACHE_HIT]++;
         ctx->stats.shadow_blocked++;
         return;
     }
     ctx->last_blocker = -1;
+    ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
     if (shadow_polygons_test(ctx, q, light)) {
         ctx->stats.shadow_blocked++;
         /* Only opaque blockers are cached: a hit must mean "no light". */

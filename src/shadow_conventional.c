@@ -79,6 +79,7 @@ void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *ligh
 {
     light->r = light->g = light->b = 1.0;
     ctx->last_scheme = SCHEME_CONVENTIONAL;
+    ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
     if (shadow_planes_test(ctx, q, light) || shadow_polygons_test(ctx, q, light))
         ctx->stats.shadow_blocked++;
 }
