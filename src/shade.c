@@ -43,6 +43,21 @@ static RGB metallic_colour(double metallic, Vec3 normal, Vec3 to_light, RGB ligh
     return r;
 }
 
+/* The unit direction from p toward the light, and the distance to it. A
+ * parallel light has one direction, and the distance is to the plane
+ * through the light perpendicular to it. */
+static double light_direction(const Light *l, Vec3 p, Vec3 *to_light)
+{
+    Vec3 d = v3_sub(l->location, p);
+    double distance = v3_length(d);
+    *to_light = v3_scale(d, 1.0 / distance);
+    if (l->kind == LIGHT_PARALLEL) {
+        distance *= v3_dot(l->direction, *to_light);
+        *to_light = l->direction;
+    }
+    return distance;
+}
+
 /* Shadow-testing time is estimated from every 8th decision, timed and
  * scaled: reading the clock around each one would cost as much as a cheap
  * decision (sustain) itself, and would inflate every method's figure. */
@@ -86,13 +101,8 @@ static void skip_all_lights(TraceContext *ctx, const Hit *hit, const Segment *se
         const Light *l = &w->lights[li];
         if (l->shadowless)
             continue;
-        Vec3 d = v3_sub(l->location, hit->point);
-        double distance = v3_length(d);
-        Vec3 to_light = v3_scale(d, 1.0 / distance);
-        if (l->kind == LIGHT_PARALLEL) {
-            distance *= v3_dot(l->direction, to_light);
-            to_light = l->direction;
-        }
+        Vec3 to_light;
+        double distance = light_direction(l, hit->point, &to_light);
         ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
         double t0 = shadow_timer_start(ctx);
         ctx->shadow->skip(ctx, &q, 0);
@@ -109,16 +119,7 @@ static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, c
     for (int li = 0; li < w->nlights; li++) {
         const Light *l = &w->lights[li];
         Vec3 to_light;
-        double distance;
-        Vec3 d = v3_sub(l->location, hit->point);
-        distance = v3_length(d);
-        to_light = v3_scale(d, 1.0 / distance);
-        if (l->kind == LIGHT_PARALLEL) {
-            /* Parallel light: one direction, and the distance to the plane
-             * through the light perpendicular to it. */
-            distance *= v3_dot(l->direction, to_light);
-            to_light = l->direction;
-        }
+        double distance = light_direction(l, hit->point, &to_light);
         double fade = light_attenuation(l, distance);
         RGB lc = { l->colour.r * fade, l->colour.g * fade, l->colour.b * fade };
         int shadows = ctx->quality.shadows && !l->shadowless;

@@ -95,7 +95,7 @@ static int count_crossings(TraceContext *ctx, const ShadowQuery *q, const Segmen
             continue;
         const ShadowPolygon *sp = &sv->polygons[b[i]];
         int sign;
-        CrossResult r = shadow_polygon_cross(sp, p1, p2, tol, &sign);
+        CrossResult r = shadow_polygon_cross_sides(sp, p1, p2, s1, s2, tol, &sign);
         if (r == CROSS_UNSURE)
             return 0;
         if (r == CROSS_YES) {

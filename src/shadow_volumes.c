@@ -449,7 +449,6 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
             else
                 wt += uses[j].sign;
         }
-        sv->nedges++;
         if (wo == 0 && wt == 0) {
             lv->cancelled_edges++;
             i = j;
@@ -472,7 +471,6 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
         make_shadow_polygon(sp, l, a, b, n);
         sp->weight_opaque = (int16_t)wo;
         sp->weight_transparent = (int16_t)wt;
-        sp->edge = (int32_t)(sv->nedges - 1);
         Vec3 q[4];
         wedge_outline(l, a, b, diagonal, q);
         status = register_shadow_polygon(&regs, g, q, (uint32_t)*nall, tol);

@@ -30,7 +30,6 @@ typedef struct {
     Vec3 side_normal[3];  /* in-plane unit normals of the wedge's three borders, */
     double side_d[3];     /* pointing inward: dot(side_normal[i], x) - side_d[i] >= 0 inside */
     int16_t weight_opaque, weight_transparent; /* count change, negative -> positive side */
-    int32_t edge;         /* welded edge index (for statistics and tests) */
 } ShadowPolygon;
 
 /* A polygon's relation to one light. */
@@ -64,7 +63,7 @@ typedef struct ShadowVolumes {
     int npolygons;
     ShadowPolygon *polygons;
     ShadowPlane *planes;  /* planes[i] is polygons[i]'s plane */
-    int nwelded_vertices, nedges;
+    int nwelded_vertices;
     double tolerance;     /* distances below this are undecidable: fall back to the ray */
     Vec3 box_min, box_max; /* the grid box: points outside have no valid count */
 } ShadowVolumes;
@@ -79,15 +78,11 @@ void shadow_volumes_free(ShadowVolumes *sv);
 /* Outcome of one segment/shadow polygon test. */
 typedef enum { CROSS_NONE = 0, CROSS_YES = 1, CROSS_UNSURE = 2 } CrossResult;
 
-/* Does the segment p1->p2 cross shadow polygon sp? On CROSS_YES, *sign is
- * +1 when it goes from the negative to the positive side. CROSS_UNSURE when
- * an end point or the crossing lies within `tol` of the shadow polygon's
- * plane or border: rounding could decide either way there, so the caller
- * must fall back to the exact shadow ray. */
-static inline CrossResult shadow_polygon_cross(const ShadowPolygon *sp, Vec3 p1, Vec3 p2, double tol, int *sign)
+/* Segment p1->p2 against shadow polygon sp, given the signed distances s1,
+ * s2 of p1 and p2 from its plane (see shadow_polygon_cross below). */
+static inline CrossResult shadow_polygon_cross_sides(const ShadowPolygon *sp, Vec3 p1, Vec3 p2, double s1, double s2,
+                                                     double tol, int *sign)
 {
-    double s1 = v3_dot(sp->normal, p1) - sp->d;
-    double s2 = v3_dot(sp->normal, p2) - sp->d;
     if ((s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol))
         return CROSS_NONE;
     Vec3 x;
@@ -113,6 +108,17 @@ static inline CrossResult shadow_polygon_cross(const ShadowPolygon *sp, Vec3 p1,
         return CROSS_UNSURE;
     *sign = s1 < 0.0 ? 1 : -1;
     return CROSS_YES;
+}
+
+/* Does the segment p1->p2 cross shadow polygon sp? On CROSS_YES, *sign is
+ * +1 when it goes from the negative to the positive side. CROSS_UNSURE when
+ * an end point or the crossing lies within `tol` of the shadow polygon's
+ * plane or border: rounding could decide either way there, so the caller
+ * must fall back to the exact shadow ray. */
+static inline CrossResult shadow_polygon_cross(const ShadowPolygon *sp, Vec3 p1, Vec3 p2, double tol, int *sign)
+{
+    return shadow_polygon_cross_sides(sp, p1, p2, v3_dot(sp->normal, p1) - sp->d, v3_dot(sp->normal, p2) - sp->d,
+                                      tol, sign);
 }
 
 /* Which side of polygon p the light is on, for a point light at `light` or

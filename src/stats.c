@@ -89,9 +89,8 @@ void stats_print(FILE *f, const StatsReport *r)
     fprintf(f, "\n");
     if (r->volumes) {
         const ShadowVolumes *sv = r->volumes;
-        fprintf(f, "  volumes     %d welded vertices, %d welded edges; built in %.3f s; tolerance %.3g\n",
-                sv->nwelded_vertices, sv->nedges / (sv->nlights > 0 ? sv->nlights : 1), r->volumes_seconds,
-                sv->tolerance);
+        fprintf(f, "  volumes     %d welded vertices; built in %.3f s; tolerance %.3g\n", sv->nwelded_vertices,
+                r->volumes_seconds, sv->tolerance);
         for (int i = 0; i < sv->nlights; i++) {
             const LightVolumes *lv = &sv->light[i];
             if (!lv->cell_start)

@@ -68,12 +68,7 @@ int trace_fill_shadow_bucket(TraceContext *ctx, int light)
     const LightVolumes *lv = &ctx->volumes->light[light];
     if (!lv->cell_start)
         return 0;
-    if (++ctx->sp_id == 0) {
-        for (int i = 0; i < ctx->volumes->npolygons; i++)
-            ctx->sp_stamp[i] = 0;
-        ctx->sp_id = 1;
-    }
-    uint32_t id = ctx->sp_id;
+    uint32_t id = stamp_next(ctx->sp_stamp, ctx->volumes->npolygons, &ctx->sp_id);
     int n = 0;
     for (int k = 0; k < ctx->segment_ncells; k++) {
         uint32_t c = ctx->segment_cells[k];

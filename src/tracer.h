@@ -66,22 +66,27 @@ typedef struct {
     int state_depth, state_capacity;
 } TraceContext;
 
-struct CostModel;
-
 /* volumes: the shadow volumes when the method uses them, else NULL. */
 int trace_context_init(TraceContext *ctx, const World *w, const Grid *g, const struct ShadowMethod *shadow, Quality q,
                        const struct ShadowVolumes *volumes);
 void trace_context_free(TraceContext *ctx);
 
+/* The next mailbox id for a stamp array of n entries (cleared when the id
+ * wraps, so old stamps cannot collide). */
+static inline uint32_t stamp_next(uint32_t *stamp, int n, uint32_t *id)
+{
+    if (++*id == 0) {
+        for (int i = 0; i < n; i++)
+            stamp[i] = 0;
+        *id = 1;
+    }
+    return *id;
+}
+
 /* A fresh bucket for a new segment. */
 static inline uint32_t trace_new_segment(TraceContext *ctx)
 {
-    if (++ctx->ray_id == 0) { /* wrapped: old stamps could collide */
-        for (int i = 0; i < ctx->world->npolygons; i++)
-            ctx->stamp[i] = 0;
-        ctx->ray_id = 1;
-    }
-    return ctx->ray_id;
+    return stamp_next(ctx->stamp, ctx->world->npolygons, &ctx->ray_id);
 }
 
 /* The bucket test: 1 when polygon pi is new to the segment `id` (and now
