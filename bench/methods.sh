@@ -1,7 +1,8 @@
 #!/bin/sh
 # The shadow methods side by side on the project's scenes (the paper's
 # Table 2): for each scene, conventional, cache, volume, hst (N_th from
-# eq. 7) and hst with a per-point N_th, rendered at 640x480 on one thread
+# eq. 7, with pixel coherence), hst without pixel coherence and hst with a
+# per-point N_th, rendered at 640x480 on one thread
 # (so that the CPU-time split is clean). hyperfine times the whole runs in
 # one interleaved session (wall medians); each method's --stats-json split
 # (preprocessing, shadow testing, others) is the median of 5 further runs.
@@ -18,7 +19,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/hstmethods.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 out="$here/methods.md"
 size="--width 640 --height 480 --threads 1"
-variants="conventional cache volume hst hst:per-point"
+variants="conventional cache volume hst hst:auto:off hst:per-point"
 {
     echo "# Shadow methods side by side"
     echo
@@ -34,11 +35,13 @@ for scene in "$src"/scenes/*.pov; do
     name=$(basename "$scene" .pov)
     set --
     for v in $variants; do
-        m=${v%%:*}; nth=auto; [ "$v" != "$m" ] && nth=${v#*:}
-        set -- "$@" "$build/hstrace $scene $size --shadows $m --nth $nth -o $work/$name.exr"
+        m=${v%%:*}; rest=${v#"$m"}; rest=${rest#:}
+        nth=${rest%%:*}; [ -n "$nth" ] || nth=auto
+        coh=on; case $rest in *:off) coh=off ;; esac
+        opts="--shadows $m --nth $nth --pixel-coherence $coh"
+        set -- "$@" "$build/hstrace $scene $size $opts -o $work/$name.exr"
         for i in 1 2 3 4 5; do
-            "$build/hstrace" "$scene" $size --shadows "$m" --nth "$nth" -o "$work/$name.exr" \
-                --stats-json "$work/$name.$m.$nth.$i.json"
+            "$build/hstrace" "$scene" $size $opts -o "$work/$name.exr" --stats-json "$work/$name.$v.$i.json"
         done
     done
     hyperfine -N -w 2 -r 10 --export-json "$work/$name.hyperfine.json" "$@" >/dev/null 2>&1
@@ -48,24 +51,26 @@ work, name, variants = sys.argv[1], sys.argv[2], sys.argv[3].split()
 wall = [r["median"] for r in json.load(open(f"{work}/{name}.hyperfine.json"))["results"]]
 rows = []
 for v, w in zip(variants, wall):
-    m, nth = (v.split(":") + ["auto"])[:2]
-    runs = [json.load(open(f"{work}/{name}.{m}.{nth}.{i}.json")) for i in range(1, 6)]
+    m, nth, coh = (v.split(":") + ["auto", "on"][len(v.split(":")) - 1:])[:3]
+    runs = [json.load(open(f"{work}/{name}.{v}.{i}.json")) for i in range(1, 6)]
     med = lambda f: statistics.median(f(r) for r in runs)
     t = {k: med(lambda r: r["time"][k]) for k in ("preprocessing", "shadow_testing", "others", "total")}
     sch = runs[0]["shadows"]["schemes"]
     label = m if nth == "auto" else f"{m} (N_th {nth})"
+    if coh == "off":
+        label += " (no pixel coherence)"
     nthv = runs[0].get("nth", "")
     rows.append((label, t, w, sch, nthv, runs[0]))
 base = rows[0]
 print(f"## {name}\n")
 print(f"{base[5]['polygons']} polygons, {base[5]['lights']} lights, grid {'x'.join(map(str, base[5]['grid']))}.\n")
-print("| method | preprocessing (ms) | shadow testing (ms) | others (ms) | total (ms) | wall median (ms) | shadow / conv. | total / conv. | wall / conv. | sustain | self-shadow | volume | conventional | cache hit |")
+print("| method | preprocessing (ms) | shadow testing (ms) | others (ms) | total (ms) | wall median (ms) | shadow / conv. | total / conv. | wall / conv. | sustain | self-shadow | volume (from the previous pixel) | conventional | cache hit |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for label, t, w, sch, nthv, r in rows:
     ms = lambda x: f"{1000 * x:.1f}"
     print(f"| {label} | {ms(t['preprocessing'])} | {ms(t['shadow_testing'])} | {ms(t['others'])} | {ms(t['total'])} | {ms(w)} | "
           f"{t['shadow_testing'] / base[1]['shadow_testing']:.2f} | {t['total'] / base[1]['total']:.2f} | {w / base[2]:.2f} | "
-          f"{sch['sustain']} | {sch['self-shadow']} | {sch['volume']} | {sch['conventional']} | {sch['cache hit']} |")
+          f"{sch['sustain']} | {sch['self-shadow']} | {sch['volume']} ({r['shadows'].get('coherent', 0)}) | {sch['conventional']} | {sch['cache hit']} |")
 hst = [r for r in rows if r[0] == "hst"][0][5]
 c = hst.get("cost_model")
 if c:

@@ -186,6 +186,7 @@ int main(int argc, char **argv)
     ropt.volumes = have_volumes ? &volumes : NULL;
     ropt.cost = &cost;
     ropt.verify = opt.verify_shadows;
+    ropt.pixel_coherence = opt.pixel_coherence;
     ropt.nth = opt.nth == NTH_PER_POINT ? -1.0 : opt.nth == NTH_AUTO ? cost.nth : opt.nth;
     report.nth = ropt.nth;
     report.nth_mode = opt.nth == NTH_PER_POINT ? "per-point" : opt.nth == NTH_AUTO ? "auto (eq. 7)" : "fixed";

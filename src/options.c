@@ -56,6 +56,8 @@ void options_usage(FILE *f)
             "      --shadows METHOD   shadow test: %s (default hst)\n"
             "      --nth N|auto|per-point  hst's switching threshold N_th: fixed, from the\n"
             "                         paper's eq. (7) once per scene (default), or per shading point\n"
+            "      --pixel-coherence on|off  hst: carry depth counts from the previous pixel's\n"
+            "                         hit instead of the eye where cheaper (default on)\n"
             "      --verify-shadows   also fire the exact shadow ray at every decision and count\n"
             "                         disagreements (--stats shows them)\n"
             "      --threads N        render threads (default: all cores); the image does not depend on N\n"
@@ -172,6 +174,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     opt->quality = 9;
     opt->shadows = "hst";
     opt->nth = NTH_AUTO;
+    opt->pixel_coherence = 1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v;
@@ -207,12 +210,22 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             double n = strtod(v, &end);
             if (strcmp(v, "auto") == 0) {
                 opt->nth = NTH_AUTO;
+    opt->pixel_coherence = 1;
             } else if (strcmp(v, "per-point") == 0) {
                 opt->nth = NTH_PER_POINT;
             } else if (end != v && *end == '\0' && n >= 0.0 && n <= 1e9) {
                 opt->nth = n;
             } else {
                 snprintf(err, (size_t)errlen, "--nth '%s': expected auto, per-point or a number from 0 to 1e9", v);
+                return -1;
+            }
+        } else if (is_long(a, "--pixel-coherence")) {
+            if (!(v = option_value(argc, argv, &i, "--pixel-coherence", err, errlen)))
+                return -1;
+            if (strcmp(v, "on") == 0 || strcmp(v, "off") == 0) {
+                opt->pixel_coherence = strcmp(v, "on") == 0;
+            } else {
+                snprintf(err, (size_t)errlen, "--pixel-coherence '%s': expected on or off", v);
                 return -1;
             }
         } else if (strcmp(a, "--verify-shadows") == 0) {

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "shade.h"
+#include "shadow_coherence.h"
 
 #define TILE 16
 
@@ -57,7 +58,12 @@ static void render_tile(TraceContext *ctx, Job *job, int tile)
             ray.from.kind = HIT_NONE;
             camera_ray(&job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
             Radiance c;
+            if (ctx->coherence)
+                pixel_coherence_begin(ctx->coherence, x == x0, y == y0);
             shade_trace(ctx, &ray, 1.0, 0, &c);
+            if (ctx->coherence)
+                pixel_coherence_end(ctx->coherence, ctx->coherence->have_hit ? &ctx->coherence->hit : NULL,
+                                    (const LightState *)ctx->states, x == x0);
             ctx->stats.camera_rays++;
             ctx->stats.pixels++;
             float *px = &job->img->rgba[((size_t)y * opt->width + x) * 4];
@@ -80,6 +86,17 @@ static void *worker_main(void *arg)
         atomic_store(&job->failed, 1);
         return NULL;
     }
+    PixelCoherence coherence;
+    memset(&coherence, 0, sizeof coherence);
+    if (opt->pixel_coherence && opt->volumes) {
+        if (pixel_coherence_init(&coherence, job->world, job->grid)) {
+            pixel_coherence_free(&coherence);
+            trace_context_free(&ctx);
+            atomic_store(&job->failed, 1);
+            return NULL;
+        }
+        ctx.coherence = &coherence;
+    }
     ctx.verify = opt->verify;
     ctx.nth = opt->nth;
     ctx.cost = opt->cost;
@@ -101,6 +118,7 @@ static void *worker_main(void *arg)
     }
     ctx.stats.render_seconds = clock_thread_cpu() - t0;
     wk->stats = ctx.stats;
+    pixel_coherence_free(&coherence);
     trace_context_free(&ctx);
     return NULL;
 }

@@ -19,6 +19,7 @@ typedef struct {
     const struct CostModel *cost;        /* hst's per-point N_th */
     double nth;               /* hst: N_th; negative: per point */
     int verify;               /* --verify-shadows */
+    int pixel_coherence;      /* hst: count from the neighbouring pixel's hit */
     int progress;             /* print a progress line on stderr */
 } RenderOptions;
 

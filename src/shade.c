@@ -7,6 +7,7 @@
 
 #include "intersect.h"
 #include "shadow.h"
+#include "shadow_coherence.h"
 
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
@@ -375,6 +376,10 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
     if (!trace_nearest(ctx, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit)) {
         background(w, out);
         return;
+    }
+    if (ctx->coherence && ctx->state_depth == 0 && ray->from.kind == HIT_NONE) {
+        ctx->coherence->hit = hit; /* the next pixel's neighbour */
+        ctx->coherence->have_hit = 1;
     }
     if (!continued)
         level++;

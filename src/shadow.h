@@ -83,5 +83,7 @@ void shadow_volume_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_thro
 void shadow_volume_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away);
 void shadow_hst_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
 void shadow_hst_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away);
+/* The most shadow polygons a bucket may hold for a count under N_th. */
+int bucket_limit(double nth);
 
 #endif

@@ -15,7 +15,10 @@
  * (its own volume would be counted at P2, where the shadow ray excludes it). */
 #include "shadow.h"
 
+#include <limits.h>
+
 #include "cost_model.h"
+#include "shadow_coherence.h"
 #include "shadow_volumes.h"
 
 static int condition_from_depth(int opaque, int transparent)
@@ -77,32 +80,14 @@ static void view_segment(TraceContext *ctx, const ShadowQuery *q, SegmentView *v
  * ctx->bucket. Returns 0 when undecidable. */
 static int count_crossings(TraceContext *ctx, const ShadowQuery *q, const SegmentView *v, int n, LightState *out)
 {
-    const ShadowVolumes *sv = ctx->volumes;
     int opaque = v->cap_opaque, transparent = v->cap_transparent;
     if (v->from.depth_known) {
         opaque += v->from.depth_opaque;
         transparent += v->from.depth_transparent;
     } /* else P1 is lit: both counts are 0 there */
-    const uint32_t *b = ctx->bucket;
-    Vec3 p1 = q->segment->org, p2 = q->point;
     ctx->stats.shadow_volume_tests += (uint64_t)n;
-    double tol = sv->tolerance;
-    for (int i = 0; i < n; i++) {
-        /* Both ends clearly on one side of the plane: no crossing. */
-        const ShadowPlane *pl = &sv->planes[b[i]];
-        double s1 = v3_dot(pl->normal, p1) - pl->d, s2 = v3_dot(pl->normal, p2) - pl->d;
-        if ((s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol))
-            continue;
-        const ShadowPolygon *sp = &sv->polygons[b[i]];
-        int sign;
-        CrossResult r = shadow_polygon_cross_sides(sp, p1, p2, s1, s2, tol, &sign);
-        if (r == CROSS_UNSURE)
-            return 0;
-        if (r == CROSS_YES) {
-            opaque += sign * sp->weight_opaque;
-            transparent += sign * sp->weight_transparent;
-        }
-    }
+    if (!shadow_bucket_crossings(ctx->volumes, ctx->bucket, n, q->segment->org, q->point, &opaque, &transparent))
+        return 0;
     if (opaque < 0 || transparent < 0)
         return 0; /* cannot happen with exact crossings: do not trust it */
     out->depth_known = 1;
@@ -181,6 +166,11 @@ static void self_shadow(TraceContext *ctx, const ShadowQuery *q, LightState *out
 
 typedef enum { MODE_VOLUME, MODE_HYBRID } Mode;
 
+int bucket_limit(double nth)
+{
+    return nth >= (double)INT_MAX ? INT_MAX : nth < 0.0 ? -1 : (int)nth;
+}
+
 static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces_away, RGB *light)
 {
     LightState scratch;
@@ -218,12 +208,27 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
         if (nth < 0.0)
             nth = cost_model_threshold(ctx->cost, cost_model_cells_to_light(ctx->grid, q->point,
                                                                            &ctx->world->lights[q->light]));
+        /* Pixel coherence: count from the previous pixel's hit when that
+         * is cheaper than counting from the eye. */
+        if (ctx->coherence && q->segment->from->kind == HIT_NONE) {
+            uint32_t eye_cost = v.countable && from_usable ? v.registrations : UINT32_MAX;
+            int r = pixel_coherence_count(ctx, q, nth, eye_cost, out);
+            if (r > 0) {
+                ctx->last_scheme = SCHEME_VOLUME;
+                ctx->stats.shadow_schemes[SCHEME_VOLUME]++;
+                if (light)
+                    answer(ctx, q, out->condition, light);
+                return;
+            }
+            if (r < 0)
+                ctx->stats.shadow_coherence_unsure++;
+        }
     }
     /* N_s: the bucket, plus the crossing of P1's own polygon. The bucket
      * is filled only when a count may follow. */
     int counted = 0; /* 1 counted, -1 undecidable, 0 not tried */
     if (v.countable && from_usable) {
-        int n = trace_fill_shadow_bucket(ctx, q->light);
+        int n = trace_fill_shadow_bucket(ctx, q->light, bucket_limit(nth - v.cap_opaque - v.cap_transparent));
         if (n + v.cap_opaque + v.cap_transparent <= nth)
             counted = count_crossings(ctx, q, &v, n, out) ? 1 : -1;
     }

@@ -548,3 +548,26 @@ void shadow_volumes_free(ShadowVolumes *sv)
     free(sv->planes);
     memset(sv, 0, sizeof *sv);
 }
+
+int shadow_bucket_crossings(const ShadowVolumes *sv, const uint32_t *bucket, int n, Vec3 p1, Vec3 p2, int *opaque,
+                            int *transparent)
+{
+    double tol = sv->tolerance;
+    for (int i = 0; i < n; i++) {
+        /* Both ends clearly on one side of the plane: no crossing. */
+        const ShadowPlane *pl = &sv->planes[bucket[i]];
+        double s1 = v3_dot(pl->normal, p1) - pl->d, s2 = v3_dot(pl->normal, p2) - pl->d;
+        if ((s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol))
+            continue;
+        const ShadowPolygon *sp = &sv->polygons[bucket[i]];
+        int sign;
+        CrossResult r = shadow_polygon_cross_sides(sp, p1, p2, s1, s2, tol, &sign);
+        if (r == CROSS_UNSURE)
+            return 0;
+        if (r == CROSS_YES) {
+            *opaque += sign * sp->weight_opaque;
+            *transparent += sign * sp->weight_transparent;
+        }
+    }
+    return 1;
+}

@@ -121,6 +121,12 @@ static inline CrossResult shadow_polygon_cross(const ShadowPolygon *sp, Vec3 p1,
                                       tol, sign);
 }
 
+/* Adds the signed crossings of the segment p1 -> p2 with the shadow
+ * polygons bucket[0..n) to the two counts. Returns 0 when one of them is
+ * too close to call (the counts are then meaningless). */
+int shadow_bucket_crossings(const ShadowVolumes *sv, const uint32_t *bucket, int n, Vec3 p1, Vec3 p2, int *opaque,
+                            int *transparent);
+
 /* Which side of polygon p the light is on, for a point light at `light` or
  * a parallel light along `dir` (unit, toward the light): +1 the normal's
  * side, -1 the other, 0 within tol of p's plane (edge-on). */

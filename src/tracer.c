@@ -63,15 +63,25 @@ void trace_context_free(TraceContext *ctx)
     ctx->states = NULL;
 }
 
-int trace_fill_shadow_bucket(TraceContext *ctx, int light)
+int trace_fill_shadow_bucket(TraceContext *ctx, int light, int limit)
+{
+    return trace_fill_shadow_bucket_in(ctx, light, ctx->segment_cells, ctx->segment_ncells, limit);
+}
+
+uint32_t trace_shadow_registrations(const TraceContext *ctx, int light)
+{
+    return trace_shadow_registrations_in(ctx, light, ctx->segment_cells, ctx->segment_ncells);
+}
+
+int trace_fill_shadow_bucket_in(TraceContext *ctx, int light, const uint32_t *cells, int ncells, int limit)
 {
     const LightVolumes *lv = &ctx->volumes->light[light];
     if (!lv->cell_start)
         return 0;
     uint32_t id = stamp_next(ctx->sp_stamp, ctx->volumes->npolygons, &ctx->sp_id);
     int n = 0;
-    for (int k = 0; k < ctx->segment_ncells; k++) {
-        uint32_t c = ctx->segment_cells[k];
+    for (int k = 0; k < ncells; k++) {
+        uint32_t c = cells[k];
         for (uint32_t j = lv->cell_start[c]; j < lv->cell_start[c + 1]; j++) {
             uint32_t s = lv->items[j];
             if (ctx->sp_stamp[s] == id)
@@ -79,19 +89,21 @@ int trace_fill_shadow_bucket(TraceContext *ctx, int light)
             ctx->sp_stamp[s] = id;
             ctx->bucket[n++] = s;
         }
+        if (n > limit)
+            break; /* too many to count: the caller fires the shadow ray */
     }
     ctx->stats.shadow_bucket_polygons += (uint64_t)n;
     return n;
 }
 
-uint32_t trace_shadow_registrations(const TraceContext *ctx, int light)
+uint32_t trace_shadow_registrations_in(const TraceContext *ctx, int light, const uint32_t *cells, int ncells)
 {
     const LightVolumes *lv = &ctx->volumes->light[light];
     if (!lv->cell_start)
         return 0;
     uint32_t n = 0;
-    for (int k = 0; k < ctx->segment_ncells; k++) {
-        uint32_t c = ctx->segment_cells[k];
+    for (int k = 0; k < ncells; k++) {
+        uint32_t c = cells[k];
         n += lv->cell_start[c + 1] - lv->cell_start[c];
     }
     return n;

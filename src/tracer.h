@@ -12,6 +12,7 @@
 
 struct ShadowMethod;
 struct ShadowVolumes;
+struct PixelCoherence;
 
 /* What a surface hit is: a grid polygon or an infinite plane. */
 typedef enum { HIT_NONE, HIT_POLYGON, HIT_PLANE } HitKind;
@@ -61,6 +62,7 @@ typedef struct {
     uint32_t *sp_stamp;
     uint32_t sp_id;
     uint32_t *bucket;          /* room for any light's shadow polygons */
+    struct PixelCoherence *coherence; /* hst's pixel coherence, or NULL when off */
     /* Light states along the ray tree: one row of nlights per recursion depth. */
     void *states;
     int state_depth, state_capacity;
@@ -114,11 +116,15 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
 
 /* The current segment's shadow bucket for a light: fills ctx->bucket with
  * the distinct shadow polygons registered in the cells the segment pierced
- * and returns how many (the paper's N_s). */
-int trace_fill_shadow_bucket(TraceContext *ctx, int light);
+ * and returns how many (the paper's N_s). Stops early, returning more than
+ * `limit`, once there are more than `limit` of them. */
+int trace_fill_shadow_bucket(TraceContext *ctx, int light, int limit);
 /* Registrations of the light's shadow polygons in those cells: 0 exactly
  * when the bucket is empty, never less than its size. Cheap. */
 uint32_t trace_shadow_registrations(const TraceContext *ctx, int light);
+/* The same for any list of cells (another segment's walk). */
+int trace_fill_shadow_bucket_in(TraceContext *ctx, int light, const uint32_t *cells, int ncells, int limit);
+uint32_t trace_shadow_registrations_in(const TraceContext *ctx, int light, const uint32_t *cells, int ncells);
 
 static inline int hit_material(const World *w, const Hit *h)
 {

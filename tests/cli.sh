@@ -46,6 +46,11 @@ run "$srcdir/scenes/holes.pov" --frobnicate
 check "unknown option: exit status 1" '[ $status -eq 1 ]'
 run "$srcdir/scenes/holes.pov" --shadows bogus
 check "unknown shadow method lists the valid ones" '[ $status -eq 1 ] && grep -q conventional "$work/err"'
+run "$srcdir/scenes/holes.pov" --pixel-coherence maybe
+check "bad --pixel-coherence value: exit status 1, says what is valid" \
+    '[ $status -eq 1 ] && grep -q "expected on or off" "$work/err"'
+run "$srcdir/scenes/holes.pov" --nth lots
+check "bad --nth value: exit status 1, says what is valid" '[ $status -eq 1 ] && grep -q "per-point" "$work/err"'
 run "$srcdir/scenes/holes.pov" -o "$work/no/such/folder/x.png" --width 16 --height 12
 check "unwritable output: exit status 3" '[ $status -eq 3 ] && grep -q "no/such/folder" "$work/err"'
 run --help

@@ -1,12 +1,14 @@
 #!/bin/sh
 # Every shadow method against the exact shadow ray, in TAP. For every scene
 # in scenes/ and every method (cache, volume, hst with the threshold from
-# eq. 7, per point, 0 and effectively infinite): --verify-shadows fires the
+# eq. 7, per point, 0 and effectively infinite; with pixel coherence, the
+# default, and without it): --verify-shadows fires the
 # conventional shadow ray beside the method at every shading point (primary,
 # reflected, refracted) and must count 0 disagreements out of a nonzero
 # number of checked decisions, and the image must be bit-identical to the
 # conventional render. hst must really use its sub-schemes (sustain and
-# shadow volume decisions > 0), and give the same image for 1 and 2 threads.
+# shadow volume decisions > 0, counts carried from the neighbouring pixel
+# > 0), and give the same image for 1 and 2 threads.
 set -u
 srcdir=${top_srcdir:-.}
 builddir=${top_builddir:-.}
@@ -44,31 +46,61 @@ box { <-1, 0, -0.05>, <1, 1, 0.05> pigment { color rgbf <1, 1, 1, 0.9> } interio
 triangle { <1.5, 0, -1.5>, <2.5, 0, -0.5>, <2, 1.5, -1> pigment { color rgb 0.9 } finish { reflection 0.6 } }
 POV
 
-for scene in "$srcdir"/scenes/*.pov "$work/filtered.pov"; do
+# And one for pixel coherence's end-point rules: a floor of coplanar
+# triangles (counts carried along it run in the plane of every floor
+# polygon), a card lying flat on it (coplanar and overlapping), boxes and a
+# standing card resting on it (segments leaving the floor at their bases).
+{
+    echo '#version 3.7;'
+    echo 'global_settings { assumed_gamma 1 }'
+    echo 'camera { location <0.3, 3, -5> look_at <0, 0, 0.5> angle 55 right x*4/3 }'
+    echo 'light_source { <-2, 5, -2> color rgb 1 }'
+    echo 'light_source { <3, 2, 4> color rgb 0.5 }'
+    echo 'mesh {'
+    for i in -3 -2 -1 0 1 2; do
+        for j in -3 -2 -1 0 1 2; do
+            echo "  triangle { <$i, 0, $j>, <$((i + 1)), 0, $j>, <$((i + 1)), 0, $((j + 1))> }"
+            echo "  triangle { <$i, 0, $j>, <$((i + 1)), 0, $((j + 1))>, <$i, 0, $((j + 1))> }"
+        done
+    done
+    echo '  pigment { color rgb <0.8, 0.75, 0.7> } }'
+    echo 'polygon { 5, <-0.5, 0, -0.5>, <0.5, 0, -0.5>, <0.5, 0, 0.5>, <-0.5, 0, 0.5>, <-0.5, 0, -0.5>'
+    echo '  pigment { color rgb <0.9, 0.2, 0.2> } rotate y*25 translate <-1.2, 0, -1> }'
+    echo 'box { <-0.5, 0, -0.5>, <0.5, 1, 0.5> pigment { color rgb <0.3, 0.4, 0.9> } rotate y*30 translate <0.8, 0, 0.8> }'
+    echo 'box { <0, 0, 0>, <1, 0.5, 1> pigment { color rgb <0.3, 0.8, 0.4> } translate <-1, 0, 1> }'
+    echo 'triangle { <-0.5, 0, 0>, <0.5, 0, 0>, <0, 1.2, 0> pigment { color rgb 0.9 } translate <1.5, 0, -1.2> }'
+} >"$work/contact.pov"
+
+for scene in "$srcdir"/scenes/*.pov "$work/filtered.pov" "$work/contact.pov"; do
     name=$(basename "$scene" .pov)
     "$hstrace" "$scene" --shadows conventional --exr-float --threads 2 -o "$work/$name.conventional.exr" 2>"$work/err"
     check "$name: conventional renders" '[ $? -eq 0 ]'
-    for variant in cache volume hst hst:per-point hst:0 hst:1e9; do
+    for variant in cache volume hst hst:per-point hst:0 hst:1e9 hst:auto:off hst:1e9:off; do
         method=${variant%%:*}
-        nth=auto
-        [ "$variant" != "$method" ] && nth=${variant#*:}
-        out="$work/$name.$method.$nth"
-        "$hstrace" "$scene" --shadows "$method" --nth "$nth" --verify-shadows --exr-float --threads 2 \
-            --stats-json "$out.json" -o "$out.exr" 2>"$work/err"
+        nth=auto coherence=on
+        rest=${variant#"$method"}; rest=${rest#:}
+        [ -n "$rest" ] && nth=${rest%%:*}
+        case $rest in *:off) coherence=off ;; esac
+        out="$work/$name.$method.$nth.$coherence"
+        "$hstrace" "$scene" --shadows "$method" --nth "$nth" --pixel-coherence "$coherence" --verify-shadows \
+            --exr-float --threads 2 --stats-json "$out.json" -o "$out.exr" 2>"$work/err"
         status=$?
         verified=$(json_number "$out.json" verified)
         disagreements=$(json_number "$out.json" disagreements)
-        check "$name: $method (N_th $nth) agrees with the shadow ray: $disagreements disagreements in $verified decisions" \
+        label="$method (N_th $nth, pixel coherence $coherence)"
+        [ "$method" = hst ] || label=$method
+        check "$name: $label agrees with the shadow ray: $disagreements disagreements in $verified decisions" \
             '[ $status -eq 0 ] && [ "${verified:-0}" -gt 0 ] && [ "$disagreements" = 0 ]'
-        check "$name: $method (N_th $nth) image identical to conventional" \
+        check "$name: $label image identical to conventional" \
             'cmp -s "$out.exr" "$work/$name.conventional.exr"'
     done
-    json="$work/$name.hst.auto.json"
+    json="$work/$name.hst.auto.on.json"
     sustain=$(json_number "$json" sustain)
     volume=$(json_number "$json" volume)
-    check "$name: hst decided by sustain ($sustain) and shadow volume ($volume)" \
-        '[ "${sustain:-0}" -gt 0 ] && [ "${volume:-0}" -gt 0 ]'
+    coherent=$(json_number "$json" coherent)
+    check "$name: hst decided by sustain ($sustain) and shadow volume ($volume, $coherent from the neighbouring pixel)" \
+        '[ "${sustain:-0}" -gt 0 ] && [ "${volume:-0}" -gt 0 ] && [ "${coherent:-0}" -gt 0 ]'
     "$hstrace" "$scene" --exr-float --threads 1 -o "$work/$name.t1.exr" 2>/dev/null
-    check "$name: hst gives the same image on 1 and 2 threads" 'cmp -s "$work/$name.t1.exr" "$work/$name.hst.auto.exr"'
+    check "$name: hst gives the same image on 1 and 2 threads" 'cmp -s "$work/$name.t1.exr" "$work/$name.hst.auto.on.exr"'
 done
 echo "1..$n"
