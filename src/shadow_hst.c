@@ -164,6 +164,15 @@ static void self_shadow(TraceContext *ctx, const ShadowQuery *q, LightState *out
     }
 }
 
+/* A depth count decided: the shadow volume sub-scheme. */
+static void decided_by_count(TraceContext *ctx, const ShadowQuery *q, const LightState *out, RGB *light)
+{
+    ctx->last_scheme = SCHEME_VOLUME;
+    ctx->stats.shadow_schemes[SCHEME_VOLUME]++;
+    if (light)
+        answer(ctx, q, out->condition, light);
+}
+
 typedef enum { MODE_VOLUME, MODE_HYBRID } Mode;
 
 int bucket_limit(double nth)
@@ -214,10 +223,7 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
             uint32_t eye_cost = v.countable && from_usable ? v.registrations : UINT32_MAX;
             int r = pixel_coherence_count(ctx, q, nth, eye_cost, out);
             if (r > 0) {
-                ctx->last_scheme = SCHEME_VOLUME;
-                ctx->stats.shadow_schemes[SCHEME_VOLUME]++;
-                if (light)
-                    answer(ctx, q, out->condition, light);
+                decided_by_count(ctx, q, out, light);
                 return;
             }
             if (r < 0)
@@ -234,10 +240,7 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
     }
     if (counted) {
         if (counted > 0) {
-            ctx->last_scheme = SCHEME_VOLUME;
-            ctx->stats.shadow_schemes[SCHEME_VOLUME]++;
-            if (light)
-                answer(ctx, q, out->condition, light);
+            decided_by_count(ctx, q, out, light);
             return;
         }
         ctx->stats.shadow_unsure++;
