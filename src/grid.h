@@ -51,6 +51,16 @@ int outline_overlaps_box(const Vec3 *pts, int n, Vec3 lo, Vec3 hi);
 /* The cell coordinate holding x on `axis`, clamped to the grid. */
 int grid_cell_coord(const Grid *g, double x, int axis);
 
+/* Distances below this, about a million ulps of the grid box's largest
+ * coordinate, are too close to call: shadow tests treat such configurations
+ * by one rule (fall back to the shadow ray; edge-on polygons cast nothing). */
+static inline double grid_tolerance(const Grid *g)
+{
+    double m = fmax(fmax(fabs(g->min.x), fabs(g->max.x)), fmax(fmax(fabs(g->min.y), fabs(g->max.y)),
+                                                              fmax(fabs(g->min.z), fabs(g->max.z))));
+    return 1e-9 * (1.0 + m);
+}
+
 /* A 3DDDA walk along org + t*dir for t in [t0, t1]. */
 typedef struct {
     int cell[3];

@@ -15,6 +15,12 @@ double intersect_plane(const InfinitePlane *pl, Vec3 org, Vec3 dir);
  * p's outlines, so later outlines cut holes, as in POV-Ray. */
 int polygon_contains(const World *w, const Polygon *p, Vec3 q);
 
+/* Where point x (taken to lie in p's plane) is against polygon p, projected
+ * onto p's two kept axes: 1 inside, 0 outside, -1 within `margin` of its
+ * border (an edge or vertex). Projection only shortens distances, so a 2-D
+ * margin is at least that margin in 3-D. */
+int polygon_classify_point(const World *w, const Polygon *p, Vec3 x, double margin);
+
 /* Crossing-number test of the point (qu, qv) against one closed outline of
  * n points, projected onto axes iu and iv. */
 int outline_contains(const Vec3 *pts, int n, int iu, int iv, double qu, double qv);

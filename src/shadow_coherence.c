@@ -58,51 +58,6 @@ void pixel_coherence_end(PixelCoherence *pc, const Hit *hit, const LightState *s
         keep(&pc->row_first, hit, states, pc->nlights);
 }
 
-/* Where a point lies against polygon p (in p's plane, projected onto p's two
- * kept axes): 1 inside, 0 outside, -1 within `margin` of its border.
- * Projection only shortens distances, so a 2-D margin is a 3-D one. */
-static double sq(double x) { return x * x; }
-
-static double segment_distance2(double au, double av, double bu, double bv, double qu, double qv)
-{
-    double eu = bu - au, ev = bv - av;
-    double len2 = eu * eu + ev * ev;
-    double t = len2 > 0.0 ? ((qu - au) * eu + (qv - av) * ev) / len2 : 0.0;
-    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-    return sq(qu - (au + t * eu)) + sq(qv - (av + t * ev));
-}
-
-static int outline_near(const Vec3 *pts, int n, int iu, int iv, double qu, double qv, double margin2)
-{
-    for (int i = 0; i < n; i++) {
-        Vec3 a = pts[i], b = pts[i + 1 < n ? i + 1 : 0];
-        if (segment_distance2(v3_comp(a, iu), v3_comp(a, iv), v3_comp(b, iu), v3_comp(b, iv), qu, qv) <= margin2)
-            return 1;
-    }
-    return 0;
-}
-
-static int classify_point(const World *w, const Polygon *p, Vec3 x, double margin)
-{
-    int iu = p->axis_u, iv = p->axis_v;
-    double qu = v3_comp(x, iu), qv = v3_comp(x, iv);
-    double m2 = margin * margin;
-    /* Far outside the bounding box: no border nearby. */
-    if (qu < v3_comp(p->bbox_min, iu) - margin || qu > v3_comp(p->bbox_max, iu) + margin ||
-        qv < v3_comp(p->bbox_min, iv) - margin || qv > v3_comp(p->bbox_max, iv) + margin)
-        return 0;
-    if (p->first_outline < 0) {
-        if (outline_near(&w->points[p->first_point], 3, iu, iv, qu, qv, m2))
-            return -1;
-    } else {
-        const int *start = &w->outline_start[p->first_outline];
-        for (int k = 0; k < p->noutlines; k++)
-            if (outline_near(&w->points[start[k]], start[k + 1] - start[k], iu, iv, qu, qv, m2))
-                return -1;
-    }
-    return polygon_contains(w, p, x);
-}
-
 static int add_meet(PixelCoherence *pc, int polygon, MeetKind kind, double side)
 {
     if (pc->nmeets == pc->meets_cap) {
@@ -130,7 +85,7 @@ static int meet_polygon(PixelCoherence *pc, const World *w, int pi, Vec3 a, Vec3
         if ((sa > 0.0) == (sb > 0.0))
             return 1;
         Vec3 x = v3_add(a, v3_scale(v3_sub(b, a), sa / (sa - sb)));
-        int c = classify_point(w, p, x, tol);
+        int c = polygon_classify_point(w, p, x, tol);
         if (c < 0)
             return 0;
         return c == 0 || add_meet(pc, pi, MEET_CROSS, sa);
@@ -142,9 +97,9 @@ static int meet_polygon(PixelCoherence *pc, const World *w, int pi, Vec3 a, Vec3
     double margin = tol;
     if (!(near_a && near_b))
         margin += v3_length(v3_sub(b, a)) * 2.0 * tol / fabs(sb - sa);
-    if (near_a && classify_point(w, p, a, margin) != 0)
+    if (near_a && polygon_classify_point(w, p, a, margin) != 0)
         return 0;
-    if (near_b && classify_point(w, p, b, margin) != 0)
+    if (near_b && polygon_classify_point(w, p, b, margin) != 0)
         return 0;
     return 1;
 }
@@ -158,7 +113,7 @@ static int meet_own(PixelCoherence *pc, const World *w, int pi, MeetKind kind, V
         return add_meet(pc, pi, kind, s);
     /* The segment runs in the plane: no cap is crossed, unless the other
      * end lies on this polygon too (then the whole segment does). */
-    return classify_point(w, p, other, tol) == 0;
+    return polygon_classify_point(w, p, other, tol) == 0;
 }
 
 static int inside_box(const ShadowVolumes *sv, Vec3 p)

@@ -5,6 +5,7 @@
 #include "shadow.h"
 
 #include "intersect.h"
+#include "shadow_volumes.h"
 
 /* Folds one blocker into the light that gets through; returns 1 when the
  * light is now fully blocked. */
@@ -64,6 +65,11 @@ int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
             ctx->stats.shadow_polygon_tests++;
             double t = intersect_polygon(w, p, q->point, q->to_light);
             if (t > tmin && t < tmax) {
+                /* A polygon edge-on to the light (the light in its plane)
+                 * casts no shadow: the ray can only graze it, or meet it at
+                 * the light itself. The same rule as the shadow volumes'. */
+                if (shadow_light_side(p, &w->lights[q->light], grid_tolerance(g)) == 0)
+                    continue;
                 if (pass_through(m, light)) {
                     ctx->last_blocker = (int)pi;
                     return 1;

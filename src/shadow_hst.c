@@ -184,8 +184,24 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
 {
     LightState scratch;
     LightState *out = q->segment->state ? &q->segment->state[q->light] : &scratch;
+    if (!ctx->volumes->light[q->light].usable) {
+        /* No volumes for this light: the shadow ray decides, always. */
+        out->depth_known = 0;
+        out->self = 0;
+        out->condition = COND_UNKNOWN;
+        if (light) {
+            conventional(ctx, q, out, light);
+            ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
+        }
+        return;
+    }
     SegmentView v;
     view_segment(ctx, q, &v);
+    /* A point lying on a polygon besides its own has no count the shadow
+     * ray would agree with: decide it by the ray, and keep no count there. */
+    int touching = trace_point_touches_other(ctx, q->surface, ctx->volumes->tolerance);
+    if (touching)
+        v.countable = 0;
     int from_usable = v.from.condition == COND_LIT || v.from.depth_known;
 
     if (mode == MODE_HYBRID) {
@@ -219,7 +235,7 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
                                                                            &ctx->world->lights[q->light]));
         /* Pixel coherence: count from the previous pixel's hit when that
          * is cheaper than counting from the eye. */
-        if (ctx->coherence && q->segment->from->kind == HIT_NONE) {
+        if (ctx->coherence && q->segment->from->kind == HIT_NONE && !touching) {
             uint32_t eye_cost = v.countable && from_usable ? v.registrations : UINT32_MAX;
             int r = pixel_coherence_count(ctx, q, nth, eye_cost, out);
             if (r > 0) {
@@ -256,6 +272,10 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
         return;
     }
     conventional(ctx, q, out, light);
+    if (touching) {
+        out->depth_known = 0;
+        out->condition = COND_UNKNOWN;
+    }
     ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
 }
 

@@ -485,14 +485,24 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
     return status;
 }
 
+/* A parallel light shines from the plane through its location, across its
+ * direction: does any of the grid box lie on or beyond that plane? */
+static int parallel_plane_cuts_box(const Light *l, const Grid *g, double tol)
+{
+    if (l->kind != LIGHT_PARALLEL)
+        return 0;
+    for (int k = 0; k < 8; k++) {
+        Vec3 c = v3(k & 1 ? g->max.x : g->min.x, k & 2 ? g->max.y : g->min.y, k & 4 ? g->max.z : g->min.z);
+        if (v3_dot(v3_sub(l->location, c), l->direction) <= tol)
+            return 1;
+    }
+    return 0;
+}
+
 int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye)
 {
     memset(sv, 0, sizeof *sv);
-    double m = 0.0;
-    Vec3 c[2] = { g->min, g->max };
-    for (int i = 0; i < 2; i++)
-        m = fmax(m, fmax(fabs(c[i].x), fmax(fabs(c[i].y), fabs(c[i].z))));
-    sv->tolerance = 1e-9 * (1.0 + m);
+    sv->tolerance = grid_tolerance(g);
     sv->box_min = g->min;
     sv->box_max = g->max;
     sv->nlights = w->nlights;
@@ -515,6 +525,11 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     for (int li = 0; li < w->nlights && status == 0; li++) {
         if (w->lights[li].shadowless)
             continue;
+        if (parallel_plane_cuts_box(&w->lights[li], g, sv->tolerance)) {
+            sv->light[li].plane_cuts_scene = 1;
+            continue;
+        }
+        sv->light[li].usable = 1;
         status = build_light(sv, &sv->light[li], w, g, &w->lights[li], weld, eye, edges, &sv->polygons,
                              &sv->npolygons, &cap);
     }

@@ -39,6 +39,12 @@ typedef struct {
 } OccluderSide;
 
 typedef struct {
+    /* 0: no volumes for this light, every test fires the shadow ray (a
+     * shadowless light, or a parallel light whose plane cuts the grid box:
+     * polygons beyond that plane cast nothing, which extruded shadow
+     * polygons cannot say). */
+    int usable;
+    int plane_cuts_scene; /* why a parallel light has none */
     int first, count;     /* shadow polygons of this light: polygons[first .. first+count) */
     uint32_t *cell_start; /* ncells + 1 offsets into items */
     uint32_t *items;      /* global shadow polygon indices, grouped by cell */

@@ -95,6 +95,10 @@ void stats_print(FILE *f, const StatsReport *r)
                 r->volumes_seconds, sv->tolerance);
         for (int i = 0; i < sv->nlights; i++) {
             const LightVolumes *lv = &sv->light[i];
+            if (lv->plane_cuts_scene) {
+                fprintf(f, "    light %d   no shadow volumes: a parallel light whose plane cuts the scene; shadow rays only\n", i);
+                continue;
+            }
             if (!lv->cell_start)
                 continue;
             fprintf(f, "    light %d   %d shadow polygons (%d edges cancelled), %zu cell registrations, eye depth ",

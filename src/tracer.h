@@ -62,6 +62,9 @@ typedef struct {
     uint32_t *sp_stamp;
     uint32_t sp_id;
     uint32_t *bucket;          /* room for any light's shadow polygons */
+    /* trace_point_touches_other's answer for the last point asked about. */
+    int touch_valid, touch_kind, touch_index, touch_result;
+    Vec3 touch_point;
     struct PixelCoherence *coherence; /* hst's pixel coherence, or NULL when off */
     /* Light states along the ray tree: one row of nlights per recursion depth. */
     void *states;
@@ -125,6 +128,13 @@ uint32_t trace_shadow_registrations(const TraceContext *ctx, int light);
 /* The same for any list of cells (another segment's walk). */
 int trace_fill_shadow_bucket_in(TraceContext *ctx, int light, const uint32_t *cells, int ncells, int limit);
 uint32_t trace_shadow_registrations_in(const TraceContext *ctx, int light, const uint32_t *cells, int ncells);
+
+/* Does the hit point lie (within tol) on a polygon besides its own: on the
+ * border of its own (so on the neighbours sharing that edge or vertex), or
+ * in the plane and area of another? A depth count carried to or from such a
+ * point would include or miss that polygon, where the shadow ray excludes
+ * it (it starts on it). Remembers the last answer. */
+int trace_point_touches_other(TraceContext *ctx, const Hit *hit, double tol);
 
 static inline int hit_material(const World *w, const Hit *h)
 {

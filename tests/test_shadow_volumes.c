@@ -68,7 +68,7 @@ int main(void)
 {
     TestRng rng = { 0x2545F4914F6CDD1Dull };
     int scenes = 12, samples = 0, unsure = 0, wrong = 0, eye_wrong = 0, eye_checked = 0;
-    int cancelled = 0, silhouettes = 0;
+    int cancelled = 0, silhouettes = 0, usable = 0;
     for (int sc = 0; sc < scenes; sc++) {
         Scene *s = fixture_scene(128);
         add_scene(s, &rng);
@@ -80,7 +80,9 @@ int main(void)
         lights[0].colour.r = lights[0].colour.g = lights[0].colour.b = 1;
         lights[1] = lights[0];
         lights[1].kind = LIGHT_PARALLEL;
-        lights[1].location = v3(rng_range(&rng, -1, 1), 1, rng_range(&rng, -1, 1));
+        /* Far away: the plane a parallel light shines from must not cut the
+         * scene, or it gets no volumes (tested in test_agreement). */
+        lights[1].location = v3_scale(v3(rng_range(&rng, -1, 1), 1, rng_range(&rng, -1, 1)), 100.0);
         lights[1].point_at = v3(0, 0, 0);
         s->lights = lights;
         s->nlights = 2;
@@ -101,6 +103,7 @@ int main(void)
         for (int li = 0; li < w.nlights; li++) {
             const Light *l = &w.lights[li];
             const LightVolumes *lv = &sv.light[li];
+            usable += lv->usable;
             cancelled += lv->cancelled_edges;
             silhouettes += lv->silhouette_edges;
             if (lv->eye_known) {
@@ -146,6 +149,7 @@ int main(void)
         s->nlights = 0;
         scene_free(s);
     }
+    tap_ok(usable == 2 * scenes, "every light has volumes (%d of %d)", usable, 2 * scenes);
     tap_ok(silhouettes > 0 && cancelled > 0, "welded edges cancel (%d) and silhouettes remain (%d)", cancelled, silhouettes);
     tap_ok(samples > 2000, "%d free segments sampled", samples);
     tap_ok(wrong == 0, "carried depth count equals the direct count on every segment (%d wrong of %d)", wrong,

@@ -1,0 +1,548 @@
+/* Randomized agreement: every shadow method against a brute-force reference
+ * computed in long double, on thousands of small random scenes built on a
+ * lattice (so that shared vertices and edges, coplanar and touching polygons,
+ * lights in the planes of polygons and rays through vertices and along edges
+ * are common, not rare).
+ *
+ * For each scene: camera rays aimed at polygon vertices, at points on edges
+ * and at random points, and from each hit one secondary segment (a random
+ * direction, or aimed at a vertex); at every hit and for every light, each
+ * method decides lit or blocked exactly as the renderer asks it (the
+ * segment's start state, the previous "pixel" for pixel coherence), and the
+ * reference decides by testing every polygon in long double.
+ *
+ * The reference separates clear cases from ties: a decision is a tie when
+ * some polygon is met within 1e-12 of the scene's size of its border, of the
+ * segment's ends, or edge-on. On clear cases every method, the shadow ray
+ * included, must agree with the reference; on ties every method must agree
+ * with the shadow ray (the tie rule the others fall back to). Ties are
+ * counted and printed.
+ *
+ * usage: test_agreement [--seed N] [--scenes N]   (defaults: a fixed seed, 2000) */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixtures.h"
+#include "grid.h"
+#include "shadow.h"
+#include "shadow_coherence.h"
+#include "shadow_volumes.h"
+#include "tap.h"
+#include "tracer.h"
+#include "world.h"
+
+typedef long double ld;
+
+/* ---- the reference -------------------------------------------------------- */
+
+typedef struct {
+    ld x, y, z;
+} LVec;
+
+static LVec lv(Vec3 a) { LVec r = { a.x, a.y, a.z }; return r; }
+static LVec lsub(LVec a, LVec b) { LVec r = { a.x - b.x, a.y - b.y, a.z - b.z }; return r; }
+static ld ldot(LVec a, LVec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static ld lcomp(LVec a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
+static ld labs_(ld x) { return x < 0 ? -x : x; }
+
+/* The outlines of polygon p as point runs: triangles have one of 3 points. */
+static int outlines(const World *w, const Polygon *p, int *start, int *count, int cap)
+{
+    if (p->first_outline < 0) {
+        start[0] = p->first_point;
+        count[0] = 3;
+        return 1;
+    }
+    const int *s = &w->outline_start[p->first_outline];
+    int n = p->noutlines < cap ? p->noutlines : cap;
+    for (int k = 0; k < n; k++) {
+        start[k] = s[k];
+        count[k] = s[k + 1] - s[k];
+    }
+    return n;
+}
+
+static ld segment_distance(ld au, ld av, ld bu, ld bv, ld qu, ld qv)
+{
+    ld eu = bu - au, ev = bv - av, len2 = eu * eu + ev * ev;
+    ld t = len2 > 0 ? ((qu - au) * eu + (qv - av) * ev) / len2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    ld du = qu - (au + t * eu), dv = qv - (av + t * ev);
+    return sqrtl(du * du + dv * dv);
+}
+
+typedef enum { REF_LIT, REF_BLOCKED, REF_TIE } RefAnswer;
+
+/* Does the segment from p toward the light (direction d, length tmax; a
+ * parallel light: tmax is the distance to its plane) meet polygon i?
+ * Inclusive of the border (a shared edge blocks), exclusive of hits within
+ * tmin of p (the point's own surface). */
+static RefAnswer ref_polygon(const World *w, int i, LVec p, LVec d, ld tmax, ld tmin, ld eps)
+{
+    const Polygon *poly = &w->polygons[i];
+    int start[16] = { 0 }, count[16] = { 0 };
+    int no = outlines(w, poly, start, count, 16);
+    if (no < 1 || count[0] < 3)
+        return REF_LIT;
+    /* Newell's normal of the first outline, in long double. */
+    LVec n = { 0, 0, 0 };
+    const Vec3 *pts = w->points;
+    for (int k = 0; k < count[0]; k++) {
+        LVec a = lv(pts[start[0] + k]), b = lv(pts[start[0] + (k + 1) % count[0]]);
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    ld nl = sqrtl(ldot(n, n));
+    if (nl == 0)
+        return REF_LIT; /* degenerate: no area, blocks nothing */
+    n.x /= nl, n.y /= nl, n.z /= nl;
+    LVec a0 = lv(pts[start[0]]);
+    ld denom = ldot(n, d);
+    ld h = ldot(n, lsub(a0, p)); /* signed distance of the plane from p along n */
+    if (labs_(denom) <= eps)
+        return labs_(h) <= eps ? REF_TIE : REF_LIT; /* the segment runs along the plane */
+    ld t = h / denom;
+    if (labs_(t - tmin) <= eps || labs_(t - tmax) <= eps)
+        return REF_TIE;
+    if (t <= tmin || t >= tmax)
+        return REF_LIT;
+    LVec x = { p.x + t * d.x, p.y + t * d.y, p.z + t * d.z };
+    int iu = poly->axis_u, iv = poly->axis_v;
+    ld qu = lcomp(x, iu), qv = lcomp(x, iv);
+    int inside = 0;
+    for (int o = 0; o < no; o++) {
+        int c = count[o];
+        int in = 0;
+        for (int k = 0; k < c; k++) {
+            LVec a = lv(pts[start[o] + k]), b = lv(pts[start[o] + (k + 1) % c]);
+            ld au = lcomp(a, iu), av = lcomp(a, iv), bu = lcomp(b, iu), bv = lcomp(b, iv);
+            if (segment_distance(au, av, bu, bv, qu, qv) <= eps)
+                return REF_TIE;
+            if ((av >= qv) != (bv >= qv)) {
+                ld u = au + (qv - av) * (bu - au) / (bv - av);
+                if (qu < u)
+                    in = !in;
+            }
+        }
+        inside ^= in;
+    }
+    return inside ? REF_BLOCKED : REF_LIT;
+}
+
+/* The segment from p toward light l: unit direction and length (a parallel
+ * light: to the plane it shines from). */
+static void light_segment(const Light *l, LVec p, LVec *d, ld *tmax)
+{
+    if (l->kind == LIGHT_PARALLEL) {
+        *d = lv(l->direction);
+        *tmax = ldot(lsub(lv(l->location), p), *d);
+    } else {
+        *d = lsub(lv(l->location), p);
+        *tmax = sqrtl(ldot(*d, *d));
+        d->x /= *tmax, d->y /= *tmax, d->z /= *tmax;
+    }
+}
+
+static RefAnswer reference(const World *w, const Hit *at, const Light *l, ld eps)
+{
+    LVec p = lv(at->point), d;
+    ld tmax;
+    light_segment(l, p, &d, &tmax);
+    ld tmin = trace_min_distance(at->point);
+    RefAnswer r = REF_LIT;
+    for (int i = 0; i < w->npolygons; i++) {
+        if (at->kind == HIT_POLYGON && at->index == i)
+            continue;
+        RefAnswer a = ref_polygon(w, i, p, d, tmax, tmin, eps);
+        if (a == REF_BLOCKED)
+            return REF_BLOCKED; /* a clear blocker decides, whatever else is a tie */
+        if (a == REF_TIE)
+            r = REF_TIE;
+    }
+    return r;
+}
+
+/* Polygons met (blocked answers) from a point: ties count as met. */
+static int reference_count(const World *w, const Hit *at, const Light *l, ld eps)
+{
+    LVec p = lv(at->point), d;
+    ld tmax;
+    light_segment(l, p, &d, &tmax);
+    int n = 0;
+    for (int i = 0; i < w->npolygons; i++)
+        if (!(at->kind == HIT_POLYGON && at->index == i))
+            n += ref_polygon(w, i, p, d, tmax, trace_min_distance(at->point), eps) != REF_LIT;
+    return n;
+}
+
+/* ---- random lattice scenes ------------------------------------------------ */
+
+static Vec3 lattice_point(TestRng *r, double half)
+{
+    /* Multiples of 0.5 in [-half, half]: exact in binary. */
+    int n = (int)(2 * half);
+    return v3(0.5 * ((int)(rng_uniform(r) * (2 * n + 1)) - n), 0.5 * ((int)(rng_uniform(r) * (2 * n + 1)) - n),
+              0.5 * ((int)(rng_uniform(r) * (2 * n + 1)) - n));
+}
+
+static void random_scene(Scene *s, TestRng *r)
+{
+    int ntri = 2 + (int)(rng_uniform(r) * 4);
+    for (int k = 0; k < ntri; k++)
+        fixture_triangle(s, lattice_point(r, 2), lattice_point(r, 2), lattice_point(r, 2));
+    if (rng_uniform(r) < 0.6) { /* two triangles sharing an edge (a quad, maybe bent) */
+        Vec3 a = lattice_point(r, 2), b = lattice_point(r, 2), c = lattice_point(r, 2), d = lattice_point(r, 2);
+        fixture_triangle(s, a, b, c);
+        if (rng_uniform(r) < 0.5)
+            fixture_triangle(s, a, c, d);
+        else
+            fixture_triangle(s, c, a, d); /* the other winding */
+    }
+    if (rng_uniform(r) < 0.5) { /* an axis-aligned rectangle on a lattice plane */
+        int axis = (int)(rng_uniform(r) * 3);
+        Vec3 lo = lattice_point(r, 2), hi = lattice_point(r, 2);
+        double at = v3_comp(lo, axis);
+        Vec3 q[5];
+        for (int k = 0; k < 4; k++) {
+            double u = (k == 1 || k == 2) ? v3_comp(hi, (axis + 1) % 3) : v3_comp(lo, (axis + 1) % 3);
+            double v = (k >= 2) ? v3_comp(hi, (axis + 2) % 3) : v3_comp(lo, (axis + 2) % 3);
+            double c[3];
+            c[axis] = at;
+            c[(axis + 1) % 3] = u;
+            c[(axis + 2) % 3] = v;
+            q[k] = v3(c[0], c[1], c[2]);
+        }
+        q[4] = q[0];
+        int starts[2] = { 0, 5 };
+        if (v3_comp(lo, (axis + 1) % 3) != v3_comp(hi, (axis + 1) % 3) &&
+            v3_comp(lo, (axis + 2) % 3) != v3_comp(hi, (axis + 2) % 3))
+            fixture_polygon(s, q, 5, starts, 1);
+    }
+    if (rng_uniform(r) < 0.4) { /* a fan of three triangles around one vertex */
+        Vec3 c = lattice_point(r, 2), a = lattice_point(r, 2), b = lattice_point(r, 2), d = lattice_point(r, 2);
+        fixture_triangle(s, c, a, b);
+        fixture_triangle(s, c, b, d);
+        fixture_triangle(s, c, d, a);
+    }
+    if (rng_uniform(r) < 0.3) { /* a closed tetrahedron */
+        Vec3 a = lattice_point(r, 2), b = lattice_point(r, 2), c = lattice_point(r, 2), d = lattice_point(r, 2);
+        fixture_triangle(s, a, b, c);
+        fixture_triangle(s, a, d, b);
+        fixture_triangle(s, b, d, c);
+        fixture_triangle(s, c, d, a);
+    }
+}
+
+/* ---- one scene, every method ---------------------------------------------- */
+
+typedef struct {
+    const char *method;
+    double nth;
+    int coherence;
+    const char *label;
+} Variant;
+
+static const Variant variants[] = {
+    { "conventional", 0, 0, "conventional" },
+    { "cache", 0, 0, "cache" },
+    { "volume", 0, 0, "volume" },
+    { "hst", 1e9, 1, "hst (N_th 1e9, pixel coherence)" },
+    { "hst", 1e9, 0, "hst (N_th 1e9)" },
+    { "hst", 4, 1, "hst (N_th 4, pixel coherence)" },
+};
+#define NVARIANTS (int)(sizeof variants / sizeof variants[0])
+
+typedef struct {
+    int has_target;
+    Vec3 eye_target;    /* the camera ray's aim */
+    Vec3 bounce_dir;    /* the secondary segment's direction */
+} Probe;
+
+#define PROBES 40
+#define MAX_LIGHTS 3
+
+typedef struct {
+    /* Per probe: hits and decisions per light (primary, secondary); -1: none. */
+    signed char decision[NVARIANTS][PROBES][2][MAX_LIGHTS];
+    signed char scheme[NVARIANTS][PROBES][2][MAX_LIGHTS];
+} Decisions;
+
+static int decide_one(TraceContext *ctx, const World *w, const Hit *hit, const Segment *seg, int li)
+{
+    const Light *l = &w->lights[li];
+    Vec3 d = v3_sub(l->location, hit->point);
+    double distance = v3_length(d);
+    Vec3 to_light = v3_scale(d, 1.0 / distance);
+    if (l->kind == LIGHT_PARALLEL) {
+        distance *= v3_dot(l->direction, to_light);
+        to_light = l->direction;
+    }
+    ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
+    RGB through;
+    ctx->shadow->test(ctx, &q, &through);
+    return through.r == 0.0 && through.g == 0.0 && through.b == 0.0;
+}
+
+static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, const Variant *v, const Probe *probes,
+                        Decisions *dec, int vi, Hit hits[PROBES][2])
+{
+    const ShadowMethod *m = shadow_method_find(v->method);
+    Quality quality = { 1, 0, 0, 0 };
+    TraceContext ctx;
+    PixelCoherence pc;
+    memset(&pc, 0, sizeof pc);
+    if (trace_context_init(&ctx, w, g, m, quality, m->uses_volumes ? sv : NULL) ||
+        (v->coherence && pixel_coherence_init(&pc, w, g))) {
+        fprintf(stderr, "out of memory\n");
+        exit(99);
+    }
+    ctx.nth = v->nth;
+    if (v->coherence)
+        ctx.coherence = &pc;
+    int nl = w->nlights;
+    LightState row0[MAX_LIGHTS], row1[MAX_LIGHTS];
+    for (int k = 0; k < PROBES; k++) {
+        memset(dec->decision[vi][k], -1, sizeof dec->decision[vi][k]);
+        hits[k][0].kind = hits[k][1].kind = HIT_NONE;
+        if (!probes[k].has_target)
+            continue;
+        if (v->coherence)
+            pixel_coherence_begin(&pc, k == 0, 1);
+        Hit none = { HIT_NONE, -1, 0, w->camera.location };
+        Vec3 dir = v3_normalize(v3_sub(probes[k].eye_target, w->camera.location));
+        Hit h1;
+        int got = trace_nearest(&ctx, w->camera.location, dir, HUGE_VAL, &none, &h1);
+        if (got) {
+            hits[k][0] = h1;
+            if (v->coherence) {
+                pc.hit = h1;
+                pc.have_hit = 1;
+            }
+            Segment seg = { w->camera.location, dir, &none, NULL, m->uses_volumes ? row0 : NULL };
+            for (int li = 0; li < nl; li++)
+            {
+                dec->decision[vi][k][0][li] = (signed char)decide_one(&ctx, w, &h1, &seg, li);
+                dec->scheme[vi][k][0][li] = (signed char)ctx.last_scheme;
+            }
+            Hit h2;
+            Vec3 d2 = probes[k].bounce_dir;
+            if (trace_nearest(&ctx, h1.point, d2, HUGE_VAL, &h1, &h2)) {
+                hits[k][1] = h2;
+                Segment seg2 = { h1.point, d2, &h1, m->uses_volumes ? row0 : NULL, m->uses_volumes ? row1 : NULL };
+                for (int li = 0; li < nl; li++)
+                {
+                    dec->decision[vi][k][1][li] = (signed char)decide_one(&ctx, w, &h2, &seg2, li);
+                    dec->scheme[vi][k][1][li] = (signed char)ctx.last_scheme;
+                }
+            }
+        }
+        if (v->coherence)
+            pixel_coherence_end(&pc, got ? &h1 : NULL, row0, k == 0);
+    }
+    if (v->coherence)
+        pixel_coherence_free(&pc);
+    trace_context_free(&ctx);
+}
+
+static int verbose; /* --verbose: describe the first disagreements */
+
+static void describe(const World *w, const char *what, const Hit *h, int seg, int li, int probe)
+{
+    const Light *l = &w->lights[li];
+    fprintf(stderr, "%s: probe %d %s hit %s %d at (%.17g, %.17g, %.17g); light %d %s (%g, %g, %g); eye (%g, %g, %g)\n",
+            what, probe, seg ? "secondary" : "primary", h->kind == HIT_POLYGON ? "polygon" : "plane", h->index,
+            h->point.x, h->point.y, h->point.z, li, l->kind == LIGHT_PARALLEL ? "parallel" : "point", l->location.x,
+            l->location.y, l->location.z, w->camera.location.x, w->camera.location.y, w->camera.location.z);
+    for (int i = 0; i < w->npolygons; i++) {
+        const Polygon *p = &w->polygons[i];
+        fprintf(stderr, "  polygon %d:", i);
+        int n = p->first_outline < 0 ? 3 : p->npoints;
+        for (int k = 0; k < n; k++) {
+            Vec3 a = w->points[p->first_point + k];
+            fprintf(stderr, " <%g, %g, %g>", a.x, a.y, a.z);
+        }
+        fprintf(stderr, "\n");
+    }
+}
+
+/* What --verbose prints about a disagreement: the scene, the reference's
+ * answer per polygon, the own polygon's sides, the eye's count. */
+static void explain(const World *w, const ShadowVolumes *sv, const char *what, const Hit hits[2], int seg, int li,
+                    int probe, ld eps)
+{
+    const Hit *h = &hits[seg];
+    const Light *l = &w->lights[li];
+    describe(w, what, h, seg, li, probe);
+    LVec p = lv(h->point), d;
+    ld tmax;
+    light_segment(l, p, &d, &tmax);
+    fprintf(stderr, "  reference per polygon (Lit, Blocked, Tie):");
+    for (int i = 0; i < w->npolygons; i++)
+        fprintf(stderr, " %d:%c", i, "LBT"[ref_polygon(w, i, p, d, tmax, trace_min_distance(h->point), eps)]);
+    fprintf(stderr, "\n");
+    if (h->kind == HIT_POLYGON) {
+        const Polygon *pp = &w->polygons[h->index];
+        const OccluderSide *o = &sv->light[li].occluder[h->index];
+        Vec3 from = seg ? hits[0].point : w->camera.location;
+        fprintf(stderr, "  own polygon: light side %+.3g (occluder light_side %d, channel %d), segment start side %+.3g\n",
+                l->kind == LIGHT_PARALLEL ? v3_dot(pp->normal, l->direction) : v3_dot(pp->normal, l->location) - pp->d,
+                o->light_side, o->channel, v3_dot(pp->normal, from) - pp->d);
+    }
+    Hit eye = { HIT_NONE, -1, 0, w->camera.location };
+    fprintf(stderr, "  eye count %s %d, reference at the eye %d\n", sv->light[li].eye_known ? "known" : "unknown",
+            sv->light[li].eye_opaque, reference_count(w, &eye, l, eps));
+}
+
+typedef struct {
+    long decisions, ties, clear_wrong[NVARIANTS], tie_vs_ray[NVARIANTS], scenes, skipped;
+    long tie_blocked, tie_lit;
+} Totals;
+
+static void one_scene(TestRng *rng, Totals *tot)
+{
+    Scene *s = fixture_scene(64);
+    random_scene(s, rng);
+    SceneLight lights[MAX_LIGHTS];
+    memset(lights, 0, sizeof lights);
+    int nl = 1 + (int)(rng_uniform(rng) * MAX_LIGHTS);
+    for (int li = 0; li < nl; li++) {
+        lights[li].colour.r = lights[li].colour.g = lights[li].colour.b = 1;
+        if (rng_uniform(rng) < 0.25) {
+            lights[li].kind = LIGHT_PARALLEL;
+            lights[li].location = lattice_point(rng, 4);
+            lights[li].point_at = v3(0, 0, 0);
+            if (v3_length(lights[li].location) == 0.0)
+                lights[li].location = v3(1, 3, 2);
+        } else {
+            lights[li].kind = LIGHT_POINT;
+            lights[li].location = lattice_point(rng, rng_uniform(rng) < 0.5 ? 2 : 4); /* among or around */
+        }
+    }
+    s->lights = lights;
+    s->nlights = nl;
+    s->camera.location = lattice_point(rng, 4);
+    World w;
+    WorldError err;
+    int built = world_build(&w, s, &err) == 0;
+    if (!built || w.npolygons == 0) {
+        if (built)
+            world_free(&w);
+        tot->skipped++;
+        s->lights = NULL;
+        s->nlights = 0;
+        scene_free(s);
+        return;
+    }
+    Vec3 extra[64]; /* as the renderer builds its grid */
+    int nextra = grid_extra_points(&w, extra, 64);
+    Grid g;
+    ShadowVolumes sv;
+    if (grid_build(&g, &w, NULL, extra, nextra) || shadow_volumes_build(&sv, &w, &g, &w.camera.location)) {
+        fprintf(stderr, "out of memory\n");
+        exit(99);
+    }
+    /* Probes: vertices, points on edges, random points; bounces random or at a vertex. */
+    Probe probes[PROBES];
+    for (int k = 0; k < PROBES; k++) {
+        const Polygon *p = &w.polygons[(int)(rng_uniform(rng) * w.npolygons)];
+        int i = p->first_point + (int)(rng_uniform(rng) * 3);
+        int j = p->first_point + (i - p->first_point + 1) % 3;
+        double kind = rng_uniform(rng);
+        Vec3 target;
+        if (kind < 0.35)
+            target = w.points[i];
+        else if (kind < 0.7)
+            target = v3_add(w.points[i], v3_scale(v3_sub(w.points[j], w.points[i]), rng_uniform(rng) < 0.5 ? 0.5 : 0.25));
+        else
+            target = v3(rng_range(rng, -2, 2), rng_range(rng, -2, 2), rng_range(rng, -2, 2));
+        probes[k].eye_target = target;
+        probes[k].has_target = v3_length(v3_sub(target, w.camera.location)) > 0.0;
+        Vec3 d = v3(rng_range(rng, -1, 1), rng_range(rng, -1, 1), rng_range(rng, -1, 1));
+        if (rng_uniform(rng) < 0.4)
+            d = v3_sub(w.points[(int)(rng_uniform(rng) * w.npoints)], target);
+        probes[k].bounce_dir = v3_length(d) > 0.0 ? v3_normalize(d) : v3(0, 1, 0);
+    }
+    static Decisions dec;
+    Hit hits[NVARIANTS][PROBES][2];
+    for (int vi = 0; vi < NVARIANTS; vi++)
+        run_variant(&w, &g, &sv, &variants[vi], probes, &dec, vi, hits[vi]);
+    ld eps = 1e-12L * (1 + fmax(fabs(g.min.x), fmax(fabs(g.max.x), fmax(fabs(g.min.y), fmax(fabs(g.max.y),
+                                                                   fmax(fabs(g.min.z), fabs(g.max.z)))))));
+    for (int k = 0; k < PROBES; k++)
+        for (int seg = 0; seg < 2; seg++)
+            for (int li = 0; li < nl; li++) {
+                int ray = dec.decision[0][k][seg][li];
+                if (ray < 0)
+                    continue;
+                tot->decisions++;
+                RefAnswer ref = reference(&w, &hits[0][k][seg], &w.lights[li], eps);
+                if (ref == REF_TIE) {
+                    tot->ties++;
+                    if (ray)
+                        tot->tie_blocked++;
+                    else
+                        tot->tie_lit++;
+                }
+                for (int vi = 0; vi < NVARIANTS; vi++) {
+                    int got = dec.decision[vi][k][seg][li];
+                    int bad = ref == REF_TIE ? got != ray : got != (ref == REF_BLOCKED);
+                    if (ref == REF_TIE)
+                        tot->tie_vs_ray[vi] += bad;
+                    else
+                        tot->clear_wrong[vi] += bad;
+                    if (bad && verbose > 0) {
+                        verbose--;
+                        char what[160];
+                        snprintf(what, sizeof what, "scene %ld: %s says %s (%s), reference %s, shadow ray %s", tot->scenes,
+                                 variants[vi].label, got ? "blocked" : "lit",
+                                 shadow_scheme_names[dec.scheme[vi][k][seg][li]],
+                                 ref == REF_TIE ? "tie" : ref == REF_BLOCKED ? "blocked" : "lit", ray ? "blocked" : "lit");
+                        explain(&w, &sv, what, hits[0][k], seg, li, k, eps);
+                    }
+                }
+            }
+    tot->scenes++;
+    shadow_volumes_free(&sv);
+    grid_free(&g);
+    world_free(&w);
+    s->lights = NULL;
+    s->nlights = 0;
+    scene_free(s);
+}
+
+int main(int argc, char **argv)
+{
+    unsigned long long seed = 0x9E3779B97F4A7C15ull;
+    long scenes = 2000;
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--seed") == 0 && i + 1 < argc)
+            seed = strtoull(argv[++i], NULL, 0);
+        else if (strcmp(argv[i], "--verbose") == 0 && i + 1 < argc)
+            verbose = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--scenes") == 0 && i + 1 < argc)
+            scenes = strtol(argv[++i], NULL, 0);
+        else {
+            fprintf(stderr, "usage: %s [--seed N] [--scenes N]\n", argv[0]);
+            return 2;
+        }
+    }
+    TestRng rng = { seed ? seed : 1 };
+    Totals tot;
+    memset(&tot, 0, sizeof tot);
+    for (long i = 0; i < scenes; i++)
+        one_scene(&rng, &tot);
+    tap_diag("seed %#llx: %ld scenes (%ld without polygons skipped), %ld decisions, %ld ties (%ld blocked, %ld lit "
+             "by the shadow ray)",
+             seed, tot.scenes, tot.skipped, tot.decisions, tot.ties, tot.tie_blocked, tot.tie_lit);
+    tap_ok(tot.decisions > 50 * scenes, "enough decisions checked (%ld)", tot.decisions);
+    for (int vi = 0; vi < NVARIANTS; vi++) {
+        tap_ok(tot.clear_wrong[vi] == 0, "%s agrees with the long-double reference on every clear case (%ld wrong of %ld)",
+               variants[vi].label, tot.clear_wrong[vi], tot.decisions - tot.ties);
+        if (vi > 0)
+            tap_ok(tot.tie_vs_ray[vi] == 0, "%s agrees with the shadow ray on every tie (%ld differ of %ld)",
+                   variants[vi].label, tot.tie_vs_ray[vi], tot.ties);
+    }
+    return tap_done();
+}
