@@ -56,6 +56,21 @@ int polygon_contains(const World *w, const Polygon *p, Vec3 q)
     return outlines_contain(w, p, qu, qv);
 }
 
+/* Distance along dir from org to p's plane; -1 when the ray runs parallel
+ * to it, or starts in it (to within rounding of the coordinates): such a
+ * ray meets the polygon at its own start point or only grazes it edge-on,
+ * and a distance computed from two rounding errors would be arbitrary (a
+ * camera in the plane of a polygon would see it at random points). */
+static double plane_distance(const Polygon *p, Vec3 org, Vec3 dir)
+{
+    double num = p->d - v3_dot(p->normal, org);
+    double scale = 1.0 + fabs(p->d) + fmax(fabs(org.x), fmax(fabs(org.y), fabs(org.z)));
+    double denom = v3_dot(p->normal, dir);
+    if (denom == 0.0 || fabs(num) <= 1e-12 * scale)
+        return -1.0;
+    return num / denom;
+}
+
 /* Watertight ray/triangle intersection (Woop, Benthin and Wald, JCGT 2013):
  * the vertices are moved into a frame where the ray runs along an axis, so
  * the inside test is three 2-D edge functions that depend only on the ray
@@ -64,26 +79,31 @@ int polygon_contains(const World *w, const Polygon *p, Vec3 q)
  * exactly the negated value: a ray through a shared edge or vertex hits at
  * least one of them, whatever the rounding (no light leaks, and no camera
  * ray slips into a closed mesh between its faces). Points on an edge count
- * as inside. */
-static double intersect_triangle(const Vec3 *v, Vec3 org, Vec3 dir)
+ * as inside. The distance comes from the plane, as for other polygons. */
+static double intersect_triangle(const Polygon *p, const Vec3 *v, Vec3 org, Vec3 dir)
 {
+    /* The distance from the plane, as for every polygon: a ray starting in
+     * the triangle's plane meets it at t ~ 0 (its own surface), not at some
+     * point that rounding in the sheared frame would make up. */
+    double t = plane_distance(p, org, dir);
+    if (!(t > 0.0))
+        return -1.0;
     double d[3] = { dir.x, dir.y, dir.z };
     int kz = fabs(d[0]) > fabs(d[1]) ? (fabs(d[0]) > fabs(d[2]) ? 0 : 2) : (fabs(d[1]) > fabs(d[2]) ? 1 : 2);
     int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     if (d[kz] < 0.0) { /* keep the winding */
-        int t = kx;
+        int swap = kx;
         kx = ky;
-        ky = t;
+        ky = swap;
     }
-    double sx = d[kx] / d[kz], sy = d[ky] / d[kz], sz = 1.0 / d[kz];
-    double ax, ay, az, bx, by, bz, cx, cy, cz;
+    double sx = d[kx] / d[kz], sy = d[ky] / d[kz];
+    double ax, ay, bx, by, cx, cy;
     {
         Vec3 a = v3_sub(v[0], org), b = v3_sub(v[1], org), c = v3_sub(v[2], org);
         double pa[3] = { a.x, a.y, a.z }, pb[3] = { b.x, b.y, b.z }, pc[3] = { c.x, c.y, c.z };
         ax = pa[kx] - sx * pa[kz], ay = pa[ky] - sy * pa[kz];
         bx = pb[kx] - sx * pb[kz], by = pb[ky] - sy * pb[kz];
         cx = pc[kx] - sx * pc[kz], cy = pc[ky] - sy * pc[kz];
-        az = sz * pa[kz], bz = sz * pb[kz], cz = sz * pc[kz];
     }
     double u = cx * by - cy * bx, vv = ax * cy - ay * cx, ww = bx * ay - by * ax;
     if (u == 0.0 || vv == 0.0 || ww == 0.0) {
@@ -95,21 +115,16 @@ static double intersect_triangle(const Vec3 *v, Vec3 org, Vec3 dir)
     }
     if ((u < 0.0 || vv < 0.0 || ww < 0.0) && (u > 0.0 || vv > 0.0 || ww > 0.0))
         return -1.0;
-    double det = u + vv + ww;
-    if (det == 0.0)
+    if (u + vv + ww == 0.0)
         return -1.0; /* the ray runs in the triangle's plane */
-    double t = (u * az + vv * bz + ww * cz) / det;
-    return t > 0.0 ? t : -1.0;
+    return t;
 }
 
 double intersect_polygon(const World *w, const Polygon *p, Vec3 org, Vec3 dir)
 {
     if (p->first_outline < 0)
-        return intersect_triangle(&w->points[p->first_point], org, dir);
-    double denom = v3_dot(p->normal, dir);
-    if (denom == 0.0)
-        return -1.0;
-    double t = (p->d - v3_dot(p->normal, org)) / denom;
+        return intersect_triangle(p, &w->points[p->first_point], org, dir);
+    double t = plane_distance(p, org, dir);
     if (!(t > 0.0))
         return -1.0;
     Vec3 q = v3_madd(org, dir, t);

@@ -1,8 +1,8 @@
 /* The conventional test plus a last-blocker cache per light, as POV-Ray
  * keeps one: the opaque polygon that last blocked a light is tried first,
  * since neighbouring shading points are often shadowed by the same one.
- * A cache hit is a real intersection inside the segment to the light, so
- * the answer is the conventional one. The cache lives in the thread's
+ * A cache hit is a real intersection inside the segment to the light,
+ * clearly inside the polygon, so the answer is the conventional one. The cache lives in the thread's
  * context (one per thread, nothing shared). */
 #include "shadow.h"
 
@@ -15,8 +15,14 @@ static int cached_blocker_hits(TraceContext *ctx, const ShadowQuery *q)
         return 0;
     const World *w = ctx->world;
     ctx->stats.shadow_polygon_tests++;
-    double t = intersect_polygon(w, &w->polygons[pi], q->point, q->to_light);
-    return t > trace_min_distance(q->point) && t < q->distance;
+    const Polygon *p = &w->polygons[pi];
+    double t = intersect_polygon(w, p, q->point, q->to_light);
+    if (!(t > trace_min_distance(q->point) && t < q->distance))
+        return 0;
+    /* Only a hit clearly inside the polygon is taken: on its border the
+     * shadow ray's own walk decides (it may find the neighbour instead, or
+     * nothing, by the same tie rules as every other test). */
+    return polygon_classify_point(w, p, v3_madd(q->point, q->to_light, t), grid_tolerance(ctx->grid)) == 1;
 }
 
 void shadow_cache_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)

@@ -361,7 +361,7 @@ static void describe(const World *w, const char *what, const Hit *h, int seg, in
         int n = p->first_outline < 0 ? 3 : p->npoints;
         for (int k = 0; k < n; k++) {
             Vec3 a = w->points[p->first_point + k];
-            fprintf(stderr, " <%g, %g, %g>", a.x, a.y, a.z);
+            fprintf(stderr, " <%.17g, %.17g, %.17g>", a.x, a.y, a.z);
         }
         fprintf(stderr, "\n");
     }
@@ -390,6 +390,9 @@ static void explain(const World *w, const ShadowVolumes *sv, const char *what, c
                 l->kind == LIGHT_PARALLEL ? v3_dot(pp->normal, l->direction) : v3_dot(pp->normal, l->location) - pp->d,
                 o->light_side, o->channel, v3_dot(pp->normal, from) - pp->d);
     }
+    if (seg)
+        fprintf(stderr, "  the segment starts on polygon %d at (%.17g, %.17g, %.17g)\n", hits[0].index, hits[0].point.x,
+                hits[0].point.y, hits[0].point.z);
     Hit eye = { HIT_NONE, -1, 0, w->camera.location };
     fprintf(stderr, "  eye count %s %d, reference at the eye %d\n", sv->light[li].eye_known ? "known" : "unknown",
             sv->light[li].eye_opaque, reference_count(w, &eye, l, eps));
