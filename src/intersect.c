@@ -163,7 +163,7 @@ Vec3 polygon_shading_normal(const World *w, const Polygon *p, Vec3 q)
 
 static double sq(double x) { return x * x; }
 
-static double segment_distance2(double au, double av, double bu, double bv, double qu, double qv)
+double segment_distance2_2d(double au, double av, double bu, double bv, double qu, double qv)
 {
     double eu = bu - au, ev = bv - av;
     double len2 = eu * eu + ev * ev;
@@ -176,7 +176,7 @@ static int outline_near(const Vec3 *pts, int n, int iu, int iv, double qu, doubl
 {
     for (int i = 0; i < n; i++) {
         Vec3 a = pts[i], b = pts[i + 1 < n ? i + 1 : 0];
-        if (segment_distance2(v3_comp(a, iu), v3_comp(a, iv), v3_comp(b, iu), v3_comp(b, iv), qu, qv) <= margin2)
+        if (segment_distance2_2d(v3_comp(a, iu), v3_comp(a, iv), v3_comp(b, iu), v3_comp(b, iv), qu, qv) <= margin2)
             return 1;
     }
     return 0;

@@ -21,6 +21,9 @@ int polygon_contains(const World *w, const Polygon *p, Vec3 q);
  * margin is at least that margin in 3-D. */
 int polygon_classify_point(const World *w, const Polygon *p, Vec3 x, double margin);
 
+/* Squared distance from (qu, qv) to the segment (au, av)-(bu, bv) in 2-D. */
+double segment_distance2_2d(double au, double av, double bu, double bv, double qu, double qv);
+
 /* Crossing-number test of the point (qu, qv) against one closed outline of
  * n points, projected onto axes iu and iv. */
 int outline_contains(const Vec3 *pts, int n, int iu, int iv, double qu, double qv);

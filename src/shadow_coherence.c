@@ -58,6 +58,47 @@ void pixel_coherence_end(PixelCoherence *pc, const Hit *hit, const LightState *s
         keep(&pc->row_first, hit, states, pc->nlights);
 }
 
+/* Does segment a-b (in p's plane) pass within tol of p's border? In p's
+ * 2-D projection, against every edge. */
+static int segments_near(double au, double av, double bu, double bv, double cu, double cv, double du, double dv,
+                         double tol)
+{
+    /* Proper crossing: each segment's ends on opposite sides of the other. */
+    double d1 = (du - cu) * (av - cv) - (dv - cv) * (au - cu), d2 = (du - cu) * (bv - cv) - (dv - cv) * (bu - cu);
+    double d3 = (bu - au) * (cv - av) - (bv - av) * (cu - au), d4 = (bu - au) * (dv - av) - (bv - av) * (du - au);
+    if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)))
+        return 1;
+    /* Otherwise the nearest approach is at an end point. */
+    double t2 = tol * tol;
+    return segment_distance2_2d(cu, cv, du, dv, au, av) <= t2 || segment_distance2_2d(cu, cv, du, dv, bu, bv) <= t2 ||
+           segment_distance2_2d(au, av, bu, bv, cu, cv) <= t2 || segment_distance2_2d(au, av, bu, bv, du, dv) <= t2;
+}
+
+static int segment_crosses_border(const World *w, const Polygon *p, Vec3 a, Vec3 b, double tol)
+{
+    int iu = p->axis_u, iv = p->axis_v;
+    double au = v3_comp(a, iu), av = v3_comp(a, iv), bu = v3_comp(b, iu), bv = v3_comp(b, iv);
+    int nout = p->first_outline < 0 ? 1 : p->noutlines;
+    for (int k = 0; k < nout; k++) {
+        const Vec3 *pts;
+        int n;
+        if (p->first_outline < 0) {
+            pts = &w->points[p->first_point];
+            n = 3;
+        } else {
+            const int *start = &w->outline_start[p->first_outline];
+            pts = &w->points[start[k]];
+            n = start[k + 1] - start[k];
+        }
+        for (int i = 0; i < n; i++) {
+            Vec3 c = pts[i], d = pts[i + 1 < n ? i + 1 : 0];
+            if (segments_near(au, av, bu, bv, v3_comp(c, iu), v3_comp(c, iv), v3_comp(d, iu), v3_comp(d, iv), tol))
+                return 1;
+        }
+    }
+    return 0;
+}
+
 static int add_meet(PixelCoherence *pc, int polygon, MeetKind kind, double side)
 {
     if (pc->nmeets == pc->meets_cap) {
@@ -101,6 +142,9 @@ static int meet_polygon(PixelCoherence *pc, const World *w, int pi, Vec3 a, Vec3
         return 0;
     if (near_b && polygon_classify_point(w, p, b, margin) != 0)
         return 0;
+    /* Running in the plane across p: fine unless p is bent (per light). */
+    if (near_a && near_b && segment_crosses_border(w, p, a, b, tol))
+        return add_meet(pc, pi, MEET_IN_PLANE, 1.0);
     return 1;
 }
 
@@ -112,8 +156,11 @@ static int meet_own(PixelCoherence *pc, const World *w, int pi, MeetKind kind, V
     if (fabs(s) > tol)
         return add_meet(pc, pi, kind, s);
     /* The segment runs in the plane: no cap is crossed, unless the other
-     * end lies on this polygon too (then the whole segment does). */
-    return polygon_classify_point(w, p, other, tol) == 0;
+     * end lies on this polygon too (then the whole segment does). It
+     * leaves the polygon across its border, which matters if it is bent. */
+    if (polygon_classify_point(w, p, other, tol) != 0)
+        return 0;
+    return add_meet(pc, pi, MEET_IN_PLANE, 1.0);
 }
 
 static int inside_box(const ShadowVolumes *sv, Vec3 p)
@@ -202,6 +249,11 @@ int pixel_coherence_count(TraceContext *ctx, const ShadowQuery *q, double nth, u
         const OccluderSide *o = &lv->occluder[m->polygon];
         if (!o->channel)
             continue;
+        if (m->kind == MEET_IN_PLANE) {
+            if (o->bent)
+                return -1;
+            continue;
+        }
         int toward = m->side == o->light_side; /* the recorded point is on the light's side */
         int change;
         switch (m->kind) {

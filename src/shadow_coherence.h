@@ -32,7 +32,8 @@ typedef struct {
 typedef enum {
     MEET_CROSS,       /* crossed inside; side: N's side of its plane */
     MEET_START_CAP,   /* N's own polygon; side: P2's side of its plane */
-    MEET_END_CAP      /* P2's own polygon; side: N's side of its plane */
+    MEET_END_CAP,     /* P2's own polygon; side: N's side of its plane */
+    MEET_IN_PLANE     /* runs in its plane across its border: undecidable if it is bent */
 } MeetKind;
 
 typedef struct {

@@ -61,6 +61,13 @@ static void view_segment(TraceContext *ctx, const ShadowQuery *q, SegmentView *v
     v->cap_opaque = v->cap_transparent = 0;
     v->countable = ctx->segment_in_box;
     if (seg->from->kind == HIT_POLYGON) {
+        const Polygon *a = &w->polygons[seg->from->index];
+        /* A segment running in the plane of the polygon it starts on stays
+         * on that polygon's cap: where it crosses an edge cancelled against
+         * a bent neighbour the count would be off by one. Rare (grazing
+         * rays); the shadow ray decides. */
+        if (fabs(v3_dot(a->normal, q->point) - a->d) <= ctx->volumes->tolerance)
+            v->countable = 0;
         const OccluderSide *o = &lv->occluder[seg->from->index];
         if (o->channel && toward_light(&w->polygons[seg->from->index], o, seg->dir) < 0.0) {
             if (o->channel == 1)

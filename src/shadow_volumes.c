@@ -128,6 +128,7 @@ int shadow_light_side(const Polygon *p, const Light *l, double tol)
 typedef struct {
     int lo, hi;      /* welded vertex ids, lo < hi */
     int a, b;        /* point indices of lo and hi */
+    int polygon;
     int8_t sign;     /* +1: the polygon lies on the positive side of the edge's plane */
     int8_t channel;  /* 1 opaque, 2 transparent */
 } EdgeUse;
@@ -140,6 +141,20 @@ static int compare_edge_use(const void *x, const void *y)
     if (a->hi != b->hi)
         return a->hi < b->hi ? -1 : 1;
     return 0;
+}
+
+/* The faces of a cancelled edge that are not all in one plane are bent
+ * (see OccluderSide). They share the edge, so parallel normals mean one
+ * plane. */
+static void mark_bent(LightVolumes *lv, const World *w, const EdgeUse *u, size_t n)
+{
+    Vec3 n0 = w->polygons[u[0].polygon].normal;
+    int flat = 1;
+    for (size_t k = 1; k < n && flat; k++)
+        flat = v3_length(v3_cross(n0, w->polygons[u[k].polygon].normal)) <= 1e-12;
+    if (!flat)
+        for (size_t k = 0; k < n; k++)
+            lv->occluder[u[k].polygon].bent = 1;
 }
 
 /* The plane through the edge (a, b) and the light, from the canonical
@@ -413,6 +428,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
             u->a = swap ? b : a;
             u->b = swap ? a : b;
             u->channel = o->channel;
+            u->polygon = pi;
             Vec3 n;
             if (!edge_plane(l, w->points[u->a], w->points[u->b], &n))
                 continue;
@@ -451,6 +467,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
         }
         if (wo == 0 && wt == 0) {
             lv->cancelled_edges++;
+            mark_bent(lv, w, uses + i, j - i);
             i = j;
             continue;
         }

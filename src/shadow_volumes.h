@@ -36,6 +36,12 @@ typedef struct {
 typedef struct {
     int8_t channel;       /* 0 casts no shadow (no_shadow, or edge-on to the light), 1 opaque, 2 transparent */
     int8_t light_side;    /* +1: the light is on the side of polygon.normal, -1 the other */
+    /* An edge of the polygon cancelled against a face not in its plane:
+     * for points in this polygon's plane, crossing that edge changes the
+     * neighbour's count but not this polygon's, which the merged (zero)
+     * weight cannot say. Counts along segments in its plane across its
+     * border are undecidable. */
+    int8_t bent;
 } OccluderSide;
 
 typedef struct {
