@@ -66,8 +66,10 @@ static void view_segment(TraceContext *ctx, const ShadowQuery *q, SegmentView *v
          * on that polygon's cap: where it crosses an edge cancelled against
          * a bent neighbour the count would be off by one. Rare (grazing
          * rays); the shadow ray decides. */
-        if (fabs(v3_dot(a->normal, q->point) - a->d) <= ctx->volumes->tolerance)
+        if (fabs(v3_dot(a->normal, q->point) - a->d) <= ctx->volumes->tolerance) {
             v->countable = 0;
+            ctx->stats.shadow_in_plane++;
+        }
         const OccluderSide *o = &lv->occluder[seg->from->index];
         if (o->channel && toward_light(&w->polygons[seg->from->index], o, seg->dir) < 0.0) {
             if (o->channel == 1)
@@ -207,8 +209,10 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
     /* A point lying on a polygon besides its own has no count the shadow
      * ray would agree with: decide it by the ray, and keep no count there. */
     int touching = trace_point_touches_other(ctx, q->surface, ctx->volumes->tolerance);
-    if (touching)
+    if (touching) {
         v.countable = 0;
+        ctx->stats.shadow_touching++;
+    }
     int from_usable = v.from.condition == COND_LIT || v.from.depth_known;
 
     if (mode == MODE_HYBRID) {

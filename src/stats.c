@@ -32,6 +32,8 @@ void stats_add(RenderStats *t, const RenderStats *p)
     t->shadow_bucket_polygons += p->shadow_bucket_polygons;
     t->shadow_unsure += p->shadow_unsure;
     t->shadow_coherent += p->shadow_coherent;
+    t->shadow_touching += p->shadow_touching;
+    t->shadow_in_plane += p->shadow_in_plane;
     t->shadow_coherence_unsure += p->shadow_coherence_unsure;
     t->shadow_no_count += p->shadow_no_count;
     t->shadow_deferred += p->shadow_deferred;
@@ -113,6 +115,9 @@ void stats_print(FILE *f, const StatsReport *r)
                 (unsigned long long)s->shadow_volume_tests, (unsigned long long)s->shadow_bucket_polygons,
                 (unsigned long long)s->shadow_unsure, (unsigned long long)s->shadow_no_count,
                 (unsigned long long)s->shadow_deferred);
+        if (s->shadow_touching || s->shadow_in_plane)
+            fprintf(f, "  fallbacks   points on a second polygon %llu  segments in their start polygon's plane %llu\n",
+                    (unsigned long long)s->shadow_touching, (unsigned long long)s->shadow_in_plane);
         if (s->shadow_coherent || s->shadow_coherence_unsure)
             fprintf(f, "  coherence   counts from the neighbouring pixel %llu  abandoned %llu\n",
                     (unsigned long long)s->shadow_coherent, (unsigned long long)s->shadow_coherence_unsure);
@@ -177,11 +182,12 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
     for (int i = 0; i < STATS_SCHEMES; i++)
         fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i], (unsigned long long)s->shadow_schemes[i]);
     fprintf(f, "},\n    \"shadow_polygon_tests\": %llu, \"bucket_polygons\": %llu, \"unsure\": %llu, \"no_count\": %llu, "
-               "\"deferred\": %llu, \"coherent\": %llu, \"coherence_unsure\": %llu,\n",
+               "\"deferred\": %llu, \"coherent\": %llu, \"coherence_unsure\": %llu, \"touching\": %llu, \"in_plane\": %llu,\n",
             (unsigned long long)s->shadow_volume_tests, (unsigned long long)s->shadow_bucket_polygons,
             (unsigned long long)s->shadow_unsure, (unsigned long long)s->shadow_no_count,
             (unsigned long long)s->shadow_deferred, (unsigned long long)s->shadow_coherent,
-            (unsigned long long)s->shadow_coherence_unsure);
+            (unsigned long long)s->shadow_coherence_unsure, (unsigned long long)s->shadow_touching,
+            (unsigned long long)s->shadow_in_plane);
     fprintf(f, "    \"verified\": %llu, \"disagreements\": %llu, \"disagreements_by_scheme\": {",
             (unsigned long long)s->shadow_verified, (unsigned long long)s->shadow_disagreements);
     for (int i = 0; i < STATS_SCHEMES; i++)

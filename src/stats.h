@@ -25,6 +25,8 @@ typedef struct {
     uint64_t shadow_unsure;       /* counts abandoned for a crossing too close to call */
     uint64_t shadow_coherent;     /* volume counts carried from the neighbouring pixel's hit */
     uint64_t shadow_coherence_unsure; /* ... abandoned (too close to call) for the count from the eye */
+    uint64_t shadow_touching;     /* points on a second polygon: left to the shadow ray */
+    uint64_t shadow_in_plane;     /* segments in the plane of their start polygon: left to the shadow ray */
     uint64_t shadow_no_count;     /* volume: no count possible (depth unknown, outside the box) */
     uint64_t shadow_deferred;     /* states left unknown where nobody needed the answer */
     uint64_t shadow_verified;     /* decisions checked against the shadow ray */
