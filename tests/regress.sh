@@ -1,9 +1,16 @@
 #!/bin/sh
-# Regression against POV-Ray, in TAP. For every scene in scenes/: hstrace's
-# full render against POV-Ray's (RMSE <= 0.01, pixels off by > 0.02 <= 1%),
-# and hstrace's shadow mask (+Q3 vs +Q4) against POV-Ray's (<= 0.1% of the
-# pixels disagree, and only at shadow edges or silhouettes; see
-# tests/compare_images.c for the exact rules). With povray installed
+# Regression against POV-Ray, in TAP. For every scene in scenes/ and every
+# hard case in scenes/hard/ (named hard/NAME, compared against
+# reference/hard/NAME*.exr): hstrace's full render against POV-Ray's
+# (RMSE <= 0.01, pixels off by > 0.02 <= 1%), and hstrace's shadow mask
+# (+Q3 vs +Q4) against POV-Ray's (<= 0.1% of the pixels disagree, and only
+# at shadow edges or silhouettes; see tests/compare_images.c for the exact
+# rules). The hard cases are held to the rule of the hard-case issue: the
+# masks agree except at edges, however many edge pixels there are (they are
+# built to put ties on pixel centres); their full-image figures are printed
+# as comments. A hard scene marked "// hstrace-regress: povray-leaks" aims
+# shadow rays at shared mesh edges, where POV-Ray's ray/triangle test lets
+# light through: pixels shadowed by hstrace only are counted as its leaks. With povray installed
 # ($POVRAY) the references are re-rendered first, so they cannot go stale;
 # otherwise the committed ones in reference/ are used.
 #
@@ -49,21 +56,37 @@ else
     echo "# povray not installed: using the committed references"
 fi
 
-for scene in "$srcdir"/scenes/*.pov; do
+for scene in "$srcdir"/scenes/*.pov "$srcdir"/scenes/hard/*.pov; do
+    [ -f "$scene" ] || continue            # a pattern that matched nothing
     name=$(basename "$scene" .pov)
+    case $scene in
+        "$srcdir"/scenes/hard/*) name=hard/$name; mkdir -p "$work/hard" ;;
+    esac
     for q in 9 3 4; do
         suffix=$([ "$q" = 9 ] && echo "" || echo ".q$q")
         if ! "$hstrace" "$scene" --width $width --height $height "+Q$q" -o "$work/$name$suffix.exr" 2>"$work/err"; then
             not_ok "$name: hstrace renders at +Q$q"; sed 's/^/# /' "$work/err"
         fi
     done
-    if out=$("$compare" full "$refs/$name.exr" "$work/$name.exr" --rmse 0.01 --threshold 0.02 --share 0.01 2>&1); then
-        ok "$name: image matches POV-Ray: $out"
-    else
-        not_ok "$name: image matches POV-Ray: $out"
-    fi
+    full=$("$compare" full "$refs/$name.exr" "$work/$name.exr" --rmse 0.01 --threshold 0.02 --share 0.01 2>&1)
+    full_status=$?
+    share=0.001 leaks=""
+    case $name in
+        hard/*)
+            # The hard cases are built to put shadow boundaries on pixel
+            # centres and rays through shared edges, where POV-Ray and
+            # hstrace break ties differently: they must agree everywhere
+            # but at edges (any number of edge pixels), and the full image
+            # is reported, not asserted.
+            share=1
+            grep -q '^// hstrace-regress: povray-leaks' "$scene" && leaks="--pov-leaks-ok 1"
+            echo "# $name: full image against POV-Ray (not asserted): $full" ;;
+        *)
+            if [ $full_status -eq 0 ]; then ok "$name: image matches POV-Ray: $full"; else not_ok "$name: image matches POV-Ray: $full"; fi ;;
+    esac
+    # shellcheck disable=SC2086 # $leaks is one option and its value, or nothing
     if out=$("$compare" mask "$refs/$name.q3.exr" "$refs/$name.q4.exr" "$work/$name.q3.exr" "$work/$name.q4.exr" \
-             --share 0.001 --map "$work/$name.mask-map.png" 2>&1); then
+             --share $share $leaks --map "$work/$name.mask-map.png" 2>&1); then
         ok "$name: shadow mask matches POV-Ray: $out"
     else
         not_ok "$name: shadow mask matches POV-Ray: $out"

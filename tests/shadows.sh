@@ -1,6 +1,7 @@
 #!/bin/sh
 # Every shadow method against the exact shadow ray, in TAP. For every scene
-# in scenes/ and every method (cache, volume, hst with the threshold from
+# in scenes/, the two made below and every hard case in scenes/hard/ (named
+# hard/NAME), and every method (cache, volume, hst with the threshold from
 # eq. 7, per point, 0 and effectively infinite; with pixel coherence, the
 # default, and without it): --verify-shadows fires the
 # conventional shadow ray beside the method at every shading point (primary,
@@ -8,7 +9,12 @@
 # number of checked decisions, and the image must be bit-identical to the
 # conventional render. hst must really use its sub-schemes (sustain and
 # shadow volume decisions > 0, counts carried from the neighbouring pixel
-# > 0), and give the same image for 1 and 2 threads.
+# > 0), and give the same image for 1 and 2 threads. In the hard cases only
+# the shadow volume decisions and the counts from the neighbouring pixel
+# must be > 0: some of them leave no segment that pierces only cells free of
+# shadow polygons (a light shut in a box casts shadow polygons across the
+# whole grid) or give hst no count at the eye (an orthographic camera, an
+# eye in the plane of a face), so sustain may rightly stay at 0 there.
 set -u
 srcdir=${top_srcdir:-.}
 builddir=${top_builddir:-.}
@@ -71,8 +77,13 @@ POV
     echo 'triangle { <-0.5, 0, 0>, <0.5, 0, 0>, <0, 1.2, 0> pigment { color rgb 0.9 } translate <1.5, 0, -1.2> }'
 } >"$work/contact.pov"
 
-for scene in "$srcdir"/scenes/*.pov "$work/filtered.pov" "$work/contact.pov"; do
+for scene in "$srcdir"/scenes/*.pov "$work/filtered.pov" "$work/contact.pov" "$srcdir"/scenes/hard/*.pov; do
+    [ -f "$scene" ] || continue            # a pattern that matched nothing
     name=$(basename "$scene" .pov)
+    hard=0
+    case $scene in
+        "$srcdir"/scenes/hard/*) name=hard/$name; hard=1; mkdir -p "$work/hard" ;;
+    esac
     "$hstrace" "$scene" --shadows conventional --exr-float --threads 2 -o "$work/$name.conventional.exr" 2>"$work/err"
     check "$name: conventional renders" '[ $? -eq 0 ]'
     for variant in cache volume hst hst:per-point hst:0 hst:1e9 hst:auto:off hst:1e9:off; do
@@ -98,8 +109,13 @@ for scene in "$srcdir"/scenes/*.pov "$work/filtered.pov" "$work/contact.pov"; do
     sustain=$(json_number "$json" sustain)
     volume=$(json_number "$json" volume)
     coherent=$(json_number "$json" coherent)
-    check "$name: hst decided by sustain ($sustain) and shadow volume ($volume, $coherent from the neighbouring pixel)" \
-        '[ "${sustain:-0}" -gt 0 ] && [ "${volume:-0}" -gt 0 ] && [ "${coherent:-0}" -gt 0 ]'
+    if [ $hard = 1 ]; then
+        check "$name: hst decided by shadow volume ($volume, $coherent from the neighbouring pixel; sustain $sustain)" \
+            '[ "${volume:-0}" -gt 0 ] && [ "${coherent:-0}" -gt 0 ]'
+    else
+        check "$name: hst decided by sustain ($sustain) and shadow volume ($volume, $coherent from the neighbouring pixel)" \
+            '[ "${sustain:-0}" -gt 0 ] && [ "${volume:-0}" -gt 0 ] && [ "${coherent:-0}" -gt 0 ]'
+    fi
     "$hstrace" "$scene" --exr-float --threads 1 -o "$work/$name.t1.exr" 2>/dev/null
     check "$name: hst gives the same image on 1 and 2 threads" 'cmp -s "$work/$name.t1.exr" "$work/$name.hst.auto.on.exr"'
 done
