@@ -137,6 +137,7 @@ int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int n
         grid_choose_resolution(w, lo, hi, r);
     g->min = lo;
     g->max = hi;
+    grid_set_tolerance(g, GRID_TOLERANCE);
     for (int a = 0; a < 3; a++)
         g->n[a] = r[a] < 1 ? 1 : r[a];
     g->ncells = g->n[0] * g->n[1] * g->n[2];
@@ -236,6 +237,13 @@ int grid_extra_points(const World *w, Vec3 *out, int cap)
             out[n++] = v3_madd(corner[k], pl->normal, pl->d - v3_dot(pl->normal, corner[k]));
     }
     return n;
+}
+
+void grid_set_tolerance(Grid *g, double relative)
+{
+    double m = fmax(fmax(fabs(g->min.x), fabs(g->max.x)),
+                    fmax(fmax(fabs(g->min.y), fabs(g->max.y)), fmax(fabs(g->min.z), fabs(g->max.z))));
+    g->tolerance = relative * (1.0 + m);
 }
 
 void grid_free(Grid *g)

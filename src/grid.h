@@ -17,6 +17,7 @@ typedef struct {
     uint32_t *cell_start; /* ncells + 1 offsets into items */
     uint32_t *items;      /* polygon indices, grouped by cell */
     size_t nitems;
+    double tolerance;     /* see grid_tolerance */
 } Grid;
 
 /* Cells per axis from the polygon count and the box's shape, aiming at about
@@ -51,15 +52,14 @@ int outline_overlaps_box(const Vec3 *pts, int n, Vec3 lo, Vec3 hi);
 /* The cell coordinate holding x on `axis`, clamped to the grid. */
 int grid_cell_coord(const Grid *g, double x, int axis);
 
-/* Distances below this, about a million ulps of the grid box's largest
- * coordinate, are too close to call: shadow tests treat such configurations
- * by one rule (fall back to the shadow ray; edge-on polygons cast nothing). */
-static inline double grid_tolerance(const Grid *g)
-{
-    double m = fmax(fmax(fabs(g->min.x), fabs(g->max.x)), fmax(fmax(fabs(g->min.y), fabs(g->max.y)),
-                                                              fmax(fabs(g->min.z), fabs(g->max.z))));
-    return 1e-9 * (1.0 + m);
-}
+/* Distances below this are too close to call: shadow tests treat such
+ * configurations by one rule (fall back to the shadow ray; edge-on polygons
+ * cast nothing). GRID_TOLERANCE times one plus the grid box's largest
+ * coordinate (about a million ulps of it) unless set otherwise. */
+#define GRID_TOLERANCE 1e-9
+static inline double grid_tolerance(const Grid *g) { return g->tolerance; }
+/* Sets the tolerance to `relative` times one plus the box's largest coordinate. */
+void grid_set_tolerance(Grid *g, double relative);
 
 /* A 3DDDA walk along org + t*dir for t in [t0, t1]. */
 typedef struct {

@@ -1,6 +1,8 @@
-/* Intersections. Triangles: watertight, in the ray's own frame. Polygons
- * with outlines: the plane first, then an even-odd test in the 2-D
- * projection that drops the normal's dominant axis. */
+/* Intersections: the distance from the plane, then a watertight inside test
+ * in the ray's own frame (triangles: three edge functions; polygons with
+ * outlines: an even-odd crossing count). Point-in-polygon tests for points
+ * already in a polygon's plane use the projection that drops the normal's
+ * dominant axis. */
 #include "intersect.h"
 
 static inline double comp(Vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
@@ -71,48 +73,70 @@ static double plane_distance(const Polygon *p, Vec3 org, Vec3 dir)
     return num / denom;
 }
 
-/* Watertight ray/triangle intersection (Woop, Benthin and Wald, JCGT 2013):
- * the vertices are moved into a frame where the ray runs along an axis, so
- * the inside test is three 2-D edge functions that depend only on the ray
- * and the edge's two end points. Two triangles sharing an edge compute that
- * edge's function from the same numbers in the opposite order, which gives
- * exactly the negated value: a ray through a shared edge or vertex hits at
- * least one of them, whatever the rounding (no light leaks, and no camera
- * ray slips into a closed mesh between its faces). Points on an edge count
- * as inside. The distance comes from the plane, as for other polygons. */
+/* The ray's own frame (Woop, Benthin and Wald, JCGT 2013): axes permuted so
+ * the ray runs along z, then sheared so it becomes the z axis itself. A
+ * point's 2-D position in that frame depends only on the ray and the point,
+ * so an edge shared by two polygons is seen the same way from both. */
+typedef struct {
+    int kx, ky, kz;
+    double sx, sy;
+    Vec3 org;
+} RayFrame;
+
+static RayFrame ray_frame(Vec3 org, Vec3 dir)
+{
+    double d[3] = { dir.x, dir.y, dir.z };
+    RayFrame f;
+    f.kz = fabs(d[0]) > fabs(d[1]) ? (fabs(d[0]) > fabs(d[2]) ? 0 : 2) : (fabs(d[1]) > fabs(d[2]) ? 1 : 2);
+    f.kx = (f.kz + 1) % 3;
+    f.ky = (f.kx + 1) % 3;
+    if (d[f.kz] < 0.0) { /* keep the winding */
+        int swap = f.kx;
+        f.kx = f.ky;
+        f.ky = swap;
+    }
+    f.sx = d[f.kx] / d[f.kz];
+    f.sy = d[f.ky] / d[f.kz];
+    f.org = org;
+    return f;
+}
+
+static void frame_project(const RayFrame *f, Vec3 p, double *x, double *y)
+{
+    Vec3 a = v3_sub(p, f->org);
+    double c[3] = { a.x, a.y, a.z };
+    *x = c[f->kx] - f->sx * c[f->kz];
+    *y = c[f->ky] - f->sy * c[f->kz];
+}
+
+/* Twice the signed area of (origin, a, b) in the frame: where the ray passes
+ * the edge a-b. Computed from the same numbers for every polygon holding
+ * the edge, so swapping a and b gives exactly the negated value; an exact
+ * zero is refined in long double (still exactly antisymmetric). */
+static double edge_function(double ax, double ay, double bx, double by)
+{
+    double e = ax * by - ay * bx;
+    if (e == 0.0)
+        e = (double)((long double)ax * by - (long double)ay * bx);
+    return e;
+}
+
+/* Watertight ray/triangle test: a ray through a shared edge or vertex hits
+ * at least one of the triangles holding it, whatever the rounding (no light
+ * leaks, and no camera ray slips into a closed mesh between its faces).
+ * Points on an edge count as inside. The distance comes from the plane, as
+ * for other polygons. */
 static double intersect_triangle(const Polygon *p, const Vec3 *v, Vec3 org, Vec3 dir)
 {
-    /* The distance from the plane, as for every polygon: a ray starting in
-     * the triangle's plane meets it at t ~ 0 (its own surface), not at some
-     * point that rounding in the sheared frame would make up. */
     double t = plane_distance(p, org, dir);
     if (!(t > 0.0))
         return -1.0;
-    double d[3] = { dir.x, dir.y, dir.z };
-    int kz = fabs(d[0]) > fabs(d[1]) ? (fabs(d[0]) > fabs(d[2]) ? 0 : 2) : (fabs(d[1]) > fabs(d[2]) ? 1 : 2);
-    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    if (d[kz] < 0.0) { /* keep the winding */
-        int swap = kx;
-        kx = ky;
-        ky = swap;
-    }
-    double sx = d[kx] / d[kz], sy = d[ky] / d[kz];
+    RayFrame f = ray_frame(org, dir);
     double ax, ay, bx, by, cx, cy;
-    {
-        Vec3 a = v3_sub(v[0], org), b = v3_sub(v[1], org), c = v3_sub(v[2], org);
-        double pa[3] = { a.x, a.y, a.z }, pb[3] = { b.x, b.y, b.z }, pc[3] = { c.x, c.y, c.z };
-        ax = pa[kx] - sx * pa[kz], ay = pa[ky] - sy * pa[kz];
-        bx = pb[kx] - sx * pb[kz], by = pb[ky] - sy * pb[kz];
-        cx = pc[kx] - sx * pc[kz], cy = pc[ky] - sy * pc[kz];
-    }
-    double u = cx * by - cy * bx, vv = ax * cy - ay * cx, ww = bx * ay - by * ax;
-    if (u == 0.0 || vv == 0.0 || ww == 0.0) {
-        /* On an edge in double: decide in long double, still exactly
-         * antisymmetric per edge. */
-        u = (double)((long double)cx * by - (long double)cy * bx);
-        vv = (double)((long double)ax * cy - (long double)ay * cx);
-        ww = (double)((long double)bx * ay - (long double)by * ax);
-    }
+    frame_project(&f, v[0], &ax, &ay);
+    frame_project(&f, v[1], &bx, &by);
+    frame_project(&f, v[2], &cx, &cy);
+    double u = edge_function(bx, by, cx, cy), vv = edge_function(cx, cy, ax, ay), ww = edge_function(ax, ay, bx, by);
     if ((u < 0.0 || vv < 0.0 || ww < 0.0) && (u > 0.0 || vv > 0.0 || ww > 0.0))
         return -1.0;
     if (u + vv + ww == 0.0)
@@ -120,15 +144,47 @@ static double intersect_triangle(const Polygon *p, const Vec3 *v, Vec3 org, Vec3
     return t;
 }
 
+/* Polygons with outlines (holes cut by later outlines, even-odd): the same
+ * frame, and a crossing count along the frame's +x half-line. Each edge's
+ * crossing is decided by its end points' sides of the x axis (half-open, so
+ * a vertex on the axis is counted once) and the sign of its edge function,
+ * so two polygons sharing an edge see it cross or not alike, and a ray
+ * through a shared edge is inside one of them. A ray meeting an edge or
+ * vertex exactly is inside (inclusive, as for triangles). */
+static double intersect_outlines(const World *w, const Polygon *p, Vec3 org, Vec3 dir)
+{
+    double t = plane_distance(p, org, dir);
+    if (!(t > 0.0))
+        return -1.0;
+    RayFrame f = ray_frame(org, dir);
+    const int *start = &w->outline_start[p->first_outline];
+    int inside = 0;
+    for (int k = 0; k < p->noutlines; k++) {
+        const Vec3 *pts = &w->points[start[k]];
+        int n = start[k + 1] - start[k];
+        double px, py;
+        frame_project(&f, pts[n - 1], &px, &py);
+        for (int i = 0; i < n; i++) {
+            double qx, qy;
+            frame_project(&f, pts[i], &qx, &qy);
+            double e = edge_function(px, py, qx, qy);
+            if (e == 0.0 && fmin(px, qx) <= 0.0 && fmax(px, qx) >= 0.0 && fmin(py, qy) <= 0.0 && fmax(py, qy) >= 0.0 &&
+                (px != qx || py != qy))
+                return t; /* on the border */
+            if ((py > 0.0) != (qy > 0.0) && (e > 0.0) == (qy > py))
+                inside = !inside;
+            px = qx;
+            py = qy;
+        }
+    }
+    return inside ? t : -1.0;
+}
+
 double intersect_polygon(const World *w, const Polygon *p, Vec3 org, Vec3 dir)
 {
     if (p->first_outline < 0)
         return intersect_triangle(p, &w->points[p->first_point], org, dir);
-    double t = plane_distance(p, org, dir);
-    if (!(t > 0.0))
-        return -1.0;
-    Vec3 q = v3_madd(org, dir, t);
-    return polygon_contains(w, p, q) ? t : -1.0;
+    return intersect_outlines(w, p, org, dir);
 }
 
 double intersect_plane(const InfinitePlane *pl, Vec3 org, Vec3 dir)

@@ -146,6 +146,7 @@ int main(int argc, char **argv)
         free(owned_output);
         return EXIT_IO;
     }
+    grid_set_tolerance(&grid, opt.tolerance);
     const ShadowMethod *method = shadow_method_find(opt.shadows);
     ShadowVolumes volumes;
     memset(&volumes, 0, sizeof volumes);

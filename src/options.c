@@ -6,6 +6,8 @@
 #include <string.h>
 
 #include "options.h"
+
+#include "grid.h"
 #include "shadow.h"
 
 #define MAX_DIMENSION 32768
@@ -58,6 +60,8 @@ void options_usage(FILE *f)
             "                         paper's eq. (7) once per scene (default), or per shading point\n"
             "      --pixel-coherence on|off  hst: carry depth counts from the previous pixel's\n"
             "                         hit instead of the eye where cheaper (default on)\n"
+            "      --tolerance R      margin of the shadow tests, relative to the scene's\n"
+            "                         coordinates (default 1e-9; for measuring speed against error)\n"
             "      --verify-shadows   also fire the exact shadow ray at every decision and count\n"
             "                         disagreements (--stats shows them)\n"
             "      --threads N        render threads (default: all cores); the image does not depend on N\n"
@@ -175,6 +179,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     opt->shadows = "hst";
     opt->nth = NTH_AUTO;
     opt->pixel_coherence = 1;
+    opt->tolerance = GRID_TOLERANCE;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v;
@@ -211,6 +216,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             if (strcmp(v, "auto") == 0) {
                 opt->nth = NTH_AUTO;
     opt->pixel_coherence = 1;
+    opt->tolerance = GRID_TOLERANCE;
             } else if (strcmp(v, "per-point") == 0) {
                 opt->nth = NTH_PER_POINT;
             } else if (end != v && *end == '\0' && n >= 0.0 && n <= 1e9) {
@@ -219,6 +225,16 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 snprintf(err, (size_t)errlen, "--nth '%s': expected auto, per-point or a number from 0 to 1e9", v);
                 return -1;
             }
+        } else if (is_long(a, "--tolerance")) {
+            if (!(v = option_value(argc, argv, &i, "--tolerance", err, errlen)))
+                return -1;
+            char *end;
+            double t = strtod(v, &end);
+            if (end == v || *end != '\0' || !(t >= 0.0 && t <= 1e-3)) {
+                snprintf(err, (size_t)errlen, "--tolerance '%s': expected a number from 0 to 1e-3", v);
+                return -1;
+            }
+            opt->tolerance = t;
         } else if (is_long(a, "--pixel-coherence")) {
             if (!(v = option_value(argc, argv, &i, "--pixel-coherence", err, errlen)))
                 return -1;

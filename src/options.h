@@ -24,6 +24,7 @@ typedef struct {
     int threads;                  /* 0: all cores */
     int quality;                  /* POV-Ray's +Q: 0..11, default 9 */
     const char *shadows;          /* method name */
+    double tolerance;             /* relative margin of the shadow tests (--tolerance) */
     double nth;                   /* hst's N_th; NTH_AUTO: eq. (7) once per scene; NTH_PER_POINT */
     int verify_shadows;
     int pixel_coherence;          /* hst: counts from the neighbouring pixel (--pixel-coherence) */

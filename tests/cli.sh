@@ -49,6 +49,8 @@ check "unknown shadow method lists the valid ones" '[ $status -eq 1 ] && grep -q
 run "$srcdir/scenes/holes.pov" --pixel-coherence maybe
 check "bad --pixel-coherence value: exit status 1, says what is valid" \
     '[ $status -eq 1 ] && grep -q "expected on or off" "$work/err"'
+run "$srcdir/scenes/holes.pov" --tolerance 1
+check "bad --tolerance value: exit status 1, says the range" '[ $status -eq 1 ] && grep -q "from 0 to 1e-3" "$work/err"'
 run "$srcdir/scenes/holes.pov" --nth lots
 check "bad --nth value: exit status 1, says what is valid" '[ $status -eq 1 ] && grep -q "per-point" "$work/err"'
 run "$srcdir/scenes/holes.pov" -o "$work/no/such/folder/x.png" --width 16 --height 12

@@ -18,8 +18,9 @@
  * with the shadow ray (the tie rule the others fall back to). Ties are
  * counted and printed.
  *
- * usage: test_agreement [--seed N] [--scenes N] [--verbose N]   (defaults: a fixed seed, 5000 scenes;
- *        --verbose N describes the first N disagreements on stderr) */
+ * usage: test_agreement [--seed N] [--scenes N] [--verbose N] [--tolerance R]
+ *        defaults: a fixed seed, 5000 scenes, the engine's margin; --verbose N
+ *        describes the first N disagreements on stderr. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -348,6 +349,7 @@ static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, 
 }
 
 static int verbose; /* --verbose: describe the first disagreements */
+static double tolerance = GRID_TOLERANCE; /* --tolerance: the engine's margin (bench/hard.sh) */
 
 static void describe(const World *w, const char *what, const Hit *h, int seg, int li, int probe)
 {
@@ -443,7 +445,10 @@ static void one_scene(TestRng *rng, Totals *tot)
     int nextra = grid_extra_points(&w, extra, 64);
     Grid g;
     ShadowVolumes sv;
-    if (grid_build(&g, &w, NULL, extra, nextra) || shadow_volumes_build(&sv, &w, &g, &w.camera.location)) {
+    int grid_failed = grid_build(&g, &w, NULL, extra, nextra);
+    if (!grid_failed)
+        grid_set_tolerance(&g, tolerance);
+    if (grid_failed || shadow_volumes_build(&sv, &w, &g, &w.camera.location)) {
         fprintf(stderr, "out of memory\n");
         exit(99);
     }
@@ -523,12 +528,14 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--seed") == 0 && i + 1 < argc)
             seed = strtoull(argv[++i], NULL, 0);
+        else if (strcmp(argv[i], "--tolerance") == 0 && i + 1 < argc)
+            tolerance = strtod(argv[++i], NULL);
         else if (strcmp(argv[i], "--verbose") == 0 && i + 1 < argc)
             verbose = atoi(argv[++i]);
         else if (strcmp(argv[i], "--scenes") == 0 && i + 1 < argc)
             scenes = strtol(argv[++i], NULL, 0);
         else {
-            fprintf(stderr, "usage: %s [--seed N] [--scenes N]\n", argv[0]);
+            fprintf(stderr, "usage: %s [--seed N] [--scenes N] [--verbose N] [--tolerance R]\n", argv[0]);
             return 2;
         }
     }
