@@ -32,8 +32,8 @@ tolerances="1e-9 0 1e-6"
     echo "320x240, 1 thread. *Shadow ms*: shadow-testing time, median of 3 runs with \`--verify-shadows\`"
     echo "(the check itself is not timed). *Disagree*: decisions that differ from the conventional shadow ray."
     echo "*To the ray*: decisions the method left to the shadow ray as too close to call (unsure crossings,"
-    echo "points on a second polygon, segments in their start polygon's plane, abandoned pixel-coherence"
-    echo "counts). *Mask vs POV-Ray*: pixels whose shadow differs from POV-Ray's at +Q4, at edges (ties,"
+    echo "points on a second polygon, segments in their start polygon's plane; pixel-coherence counts given up"
+    echo "for the count from the eye are not among them). *Mask vs POV-Ray*: pixels whose shadow differs from POV-Ray's at +Q4, at edges (ties,"
     echo "allowed) / elsewhere (errors) / POV-Ray's leaks through shared edges (marked scenes only)."
     echo "*Tolerance*: \`--tolerance\`, the margin of every shadow test relative to the scene's coordinates."
     echo
@@ -62,7 +62,7 @@ work, name, m, tol, mask = sys.argv[1:6]
 runs = [json.load(open(f"{work}/{name}.{m}.{tol}.{i}.json")) for i in (1, 2, 3)]
 sh = runs[0]["shadows"]
 ms = 1000 * statistics.median(r["time"]["shadow_testing"] for r in runs)
-to_ray = sum(sh.get(k, 0) for k in ("unsure", "touching", "in_plane", "coherence_unsure"))
+to_ray = sum(sh.get(k, 0) for k in ("unsure", "touching", "in_plane"))
 num = lambda pat: (re.search(pat, mask) or [None, "?"])[1]
 edges, elsewhere = num(r"(\d+) at shadow edges"), num(r"(\d+) elsewhere")
 sil = num(r"(\d+) at silhouettes")
