@@ -73,17 +73,7 @@ static double plane_distance(const Polygon *p, Vec3 org, Vec3 dir)
     return num / denom;
 }
 
-/* The ray's own frame (Woop, Benthin and Wald, JCGT 2013): axes permuted so
- * the ray runs along z, then sheared so it becomes the z axis itself. A
- * point's 2-D position in that frame depends only on the ray and the point,
- * so an edge shared by two polygons is seen the same way from both. */
-typedef struct {
-    int kx, ky, kz;
-    double sx, sy;
-    Vec3 org;
-} RayFrame;
-
-static RayFrame ray_frame(Vec3 org, Vec3 dir)
+RayFrame ray_frame(Vec3 org, Vec3 dir)
 {
     double d[3] = { dir.x, dir.y, dir.z };
     RayFrame f;
@@ -98,6 +88,7 @@ static RayFrame ray_frame(Vec3 org, Vec3 dir)
     f.sx = d[f.kx] / d[f.kz];
     f.sy = d[f.ky] / d[f.kz];
     f.org = org;
+    f.dir = dir;
     return f;
 }
 
@@ -126,16 +117,15 @@ static double edge_function(double ax, double ay, double bx, double by)
  * leaks, and no camera ray slips into a closed mesh between its faces).
  * Points on an edge count as inside. The distance comes from the plane, as
  * for other polygons. */
-static double intersect_triangle(const Polygon *p, const Vec3 *v, Vec3 org, Vec3 dir)
+static double intersect_triangle(const Polygon *p, const Vec3 *v, const RayFrame *f, double tmax)
 {
-    double t = plane_distance(p, org, dir);
-    if (!(t > 0.0))
+    double t = plane_distance(p, f->org, f->dir);
+    if (!(t > 0.0 && t < tmax))
         return -1.0;
-    RayFrame f = ray_frame(org, dir);
     double ax, ay, bx, by, cx, cy;
-    frame_project(&f, v[0], &ax, &ay);
-    frame_project(&f, v[1], &bx, &by);
-    frame_project(&f, v[2], &cx, &cy);
+    frame_project(f, v[0], &ax, &ay);
+    frame_project(f, v[1], &bx, &by);
+    frame_project(f, v[2], &cx, &cy);
     double u = edge_function(bx, by, cx, cy), vv = edge_function(cx, cy, ax, ay), ww = edge_function(ax, ay, bx, by);
     if ((u < 0.0 || vv < 0.0 || ww < 0.0) && (u > 0.0 || vv > 0.0 || ww > 0.0))
         return -1.0;
@@ -151,22 +141,21 @@ static double intersect_triangle(const Polygon *p, const Vec3 *v, Vec3 org, Vec3
  * so two polygons sharing an edge see it cross or not alike, and a ray
  * through a shared edge is inside one of them. A ray meeting an edge or
  * vertex exactly is inside (inclusive, as for triangles). */
-static double intersect_outlines(const World *w, const Polygon *p, Vec3 org, Vec3 dir)
+static double intersect_outlines(const World *w, const Polygon *p, const RayFrame *f, double tmax)
 {
-    double t = plane_distance(p, org, dir);
-    if (!(t > 0.0))
+    double t = plane_distance(p, f->org, f->dir);
+    if (!(t > 0.0 && t < tmax))
         return -1.0;
-    RayFrame f = ray_frame(org, dir);
     const int *start = &w->outline_start[p->first_outline];
     int inside = 0;
     for (int k = 0; k < p->noutlines; k++) {
         const Vec3 *pts = &w->points[start[k]];
         int n = start[k + 1] - start[k];
         double px, py;
-        frame_project(&f, pts[n - 1], &px, &py);
+        frame_project(f, pts[n - 1], &px, &py);
         for (int i = 0; i < n; i++) {
             double qx, qy;
-            frame_project(&f, pts[i], &qx, &qy);
+            frame_project(f, pts[i], &qx, &qy);
             double e = edge_function(px, py, qx, qy);
             if (e == 0.0 && fmin(px, qx) <= 0.0 && fmax(px, qx) >= 0.0 && fmin(py, qy) <= 0.0 && fmax(py, qy) >= 0.0 &&
                 (px != qx || py != qy))
@@ -180,11 +169,17 @@ static double intersect_outlines(const World *w, const Polygon *p, Vec3 org, Vec
     return inside ? t : -1.0;
 }
 
-double intersect_polygon(const World *w, const Polygon *p, Vec3 org, Vec3 dir)
+double intersect_polygon_in(const World *w, const Polygon *p, const RayFrame *f, double tmax)
 {
     if (p->first_outline < 0)
-        return intersect_triangle(p, &w->points[p->first_point], org, dir);
-    return intersect_outlines(w, p, org, dir);
+        return intersect_triangle(p, &w->points[p->first_point], f, tmax);
+    return intersect_outlines(w, p, f, tmax);
+}
+
+double intersect_polygon(const World *w, const Polygon *p, Vec3 org, Vec3 dir)
+{
+    RayFrame f = ray_frame(org, dir);
+    return intersect_polygon_in(w, p, &f, HUGE_VAL);
 }
 
 double intersect_plane(const InfinitePlane *pl, Vec3 org, Vec3 dir)

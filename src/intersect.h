@@ -8,6 +8,22 @@
  * negative value when the line misses it or runs parallel to its plane. */
 double intersect_polygon(const World *w, const Polygon *p, Vec3 org, Vec3 dir);
 
+/* The ray's own frame (Woop, Benthin and Wald, JCGT 2013): axes permuted so
+ * the ray runs along z, then sheared so it becomes the z axis itself. A
+ * point's 2-D position in that frame depends only on the ray and the point,
+ * so an edge shared by two polygons is seen the same way from both: the
+ * inside tests made in it are watertight. Made once per ray. */
+typedef struct {
+    int kx, ky, kz;
+    double sx, sy;
+    Vec3 org, dir;
+} RayFrame;
+
+RayFrame ray_frame(Vec3 org, Vec3 dir);
+/* intersect_polygon for a ray whose frame is already made; hits at tmax or
+ * beyond are not looked at (negative). */
+double intersect_polygon_in(const World *w, const Polygon *p, const RayFrame *f, double tmax);
+
 /* Distance to an infinite plane, or negative when parallel or behind. */
 double intersect_plane(const InfinitePlane *pl, Vec3 org, Vec3 dir);
 

@@ -50,6 +50,7 @@ int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
     if (w->npolygons == 0 || !grid_walk_begin(g, q->point, q->to_light, 0.0, tmax, &walk))
         return 0;
     uint32_t id = trace_new_segment(ctx);
+    RayFrame frame = ray_frame(q->point, q->to_light);
     if (q->surface->kind == HIT_POLYGON)
         ctx->stamp[q->surface->index] = id;
     do {
@@ -63,7 +64,7 @@ int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
             if (m->no_shadow)
                 continue;
             ctx->stats.shadow_polygon_tests++;
-            double t = intersect_polygon(w, p, q->point, q->to_light);
+            double t = intersect_polygon_in(w, p, &frame, tmax);
             if (t > tmin && t < tmax) {
                 /* A polygon edge-on to the light (the light in its plane)
                  * casts no shadow: the ray can only graze it, or meet it at

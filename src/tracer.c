@@ -186,6 +186,7 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
         ctx->segment_ncells = 0;
     if ((w->npolygons > 0 || gather) && grid_walk_begin(g, org, dir, 0.0, plane_t, &walk)) {
         uint32_t id = trace_new_segment(ctx);
+        RayFrame frame = ray_frame(org, dir);
         int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
         if (exclude >= 0)
             ctx->stamp[exclude] = id;
@@ -203,7 +204,7 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
                 if (!bucket_admit(ctx, id, pi))
                     continue;
                 ctx->stats.polygon_tests++;
-                double t = intersect_polygon(w, &w->polygons[pi], org, dir);
+                double t = intersect_polygon_in(w, &w->polygons[pi], &frame, best < plane_t ? best : plane_t);
                 if (t > tmin && t < best && t < plane_t) {
                     best = t;
                     hit->kind = HIT_POLYGON;
