@@ -63,12 +63,11 @@ int polygon_contains(const World *w, const Polygon *p, Vec3 q)
  * ray meets the polygon at its own start point or only grazes it edge-on,
  * and a distance computed from two rounding errors would be arbitrary (a
  * camera in the plane of a polygon would see it at random points). */
-static double plane_distance(const Polygon *p, Vec3 org, Vec3 dir)
+static inline double plane_distance(const Polygon *p, const RayFrame *f)
 {
-    double num = p->d - v3_dot(p->normal, org);
-    double scale = 1.0 + fabs(p->d) + fmax(fabs(org.x), fmax(fabs(org.y), fabs(org.z)));
-    double denom = v3_dot(p->normal, dir);
-    if (denom == 0.0 || fabs(num) <= 1e-12 * scale)
+    double num = p->d - v3_dot(p->normal, f->org);
+    double denom = v3_dot(p->normal, f->dir);
+    if (denom == 0.0 || fabs(num) <= 1e-12 * (f->org_scale + fabs(p->d)))
         return -1.0;
     return num / denom;
 }
@@ -89,22 +88,25 @@ RayFrame ray_frame(Vec3 org, Vec3 dir)
     f.sy = d[f.ky] / d[f.kz];
     f.org = org;
     f.dir = dir;
+    f.ox = comp(org, f.kx);
+    f.oy = comp(org, f.ky);
+    f.oz = comp(org, f.kz);
+    f.org_scale = 1.0 + fmax(fabs(org.x), fmax(fabs(org.y), fabs(org.z)));
     return f;
 }
 
-static void frame_project(const RayFrame *f, Vec3 p, double *x, double *y)
+static inline void frame_project(const RayFrame *f, const Vec3 *p, double *x, double *y)
 {
-    Vec3 a = v3_sub(p, f->org);
-    double c[3] = { a.x, a.y, a.z };
-    *x = c[f->kx] - f->sx * c[f->kz];
-    *y = c[f->ky] - f->sy * c[f->kz];
+    double z = comp(*p, f->kz) - f->oz;
+    *x = (comp(*p, f->kx) - f->ox) - f->sx * z;
+    *y = (comp(*p, f->ky) - f->oy) - f->sy * z;
 }
 
 /* Twice the signed area of (origin, a, b) in the frame: where the ray passes
  * the edge a-b. Computed from the same numbers for every polygon holding
  * the edge, so swapping a and b gives exactly the negated value; an exact
  * zero is refined in long double (still exactly antisymmetric). */
-static double edge_function(double ax, double ay, double bx, double by)
+static inline double edge_function(double ax, double ay, double bx, double by)
 {
     double e = ax * by - ay * bx;
     if (e == 0.0)
@@ -119,13 +121,13 @@ static double edge_function(double ax, double ay, double bx, double by)
  * for other polygons. */
 static double intersect_triangle(const Polygon *p, const Vec3 *v, const RayFrame *f, double tmax)
 {
-    double t = plane_distance(p, f->org, f->dir);
+    double t = plane_distance(p, f);
     if (!(t > 0.0 && t < tmax))
         return -1.0;
     double ax, ay, bx, by, cx, cy;
-    frame_project(f, v[0], &ax, &ay);
-    frame_project(f, v[1], &bx, &by);
-    frame_project(f, v[2], &cx, &cy);
+    frame_project(f, &v[0], &ax, &ay);
+    frame_project(f, &v[1], &bx, &by);
+    frame_project(f, &v[2], &cx, &cy);
     double u = edge_function(bx, by, cx, cy), vv = edge_function(cx, cy, ax, ay), ww = edge_function(ax, ay, bx, by);
     if ((u < 0.0 || vv < 0.0 || ww < 0.0) && (u > 0.0 || vv > 0.0 || ww > 0.0))
         return -1.0;
@@ -143,7 +145,7 @@ static double intersect_triangle(const Polygon *p, const Vec3 *v, const RayFrame
  * vertex exactly is inside (inclusive, as for triangles). */
 static double intersect_outlines(const World *w, const Polygon *p, const RayFrame *f, double tmax)
 {
-    double t = plane_distance(p, f->org, f->dir);
+    double t = plane_distance(p, f);
     if (!(t > 0.0 && t < tmax))
         return -1.0;
     const int *start = &w->outline_start[p->first_outline];
@@ -152,10 +154,10 @@ static double intersect_outlines(const World *w, const Polygon *p, const RayFram
         const Vec3 *pts = &w->points[start[k]];
         int n = start[k + 1] - start[k];
         double px, py;
-        frame_project(f, pts[n - 1], &px, &py);
+        frame_project(f, &pts[n - 1], &px, &py);
         for (int i = 0; i < n; i++) {
             double qx, qy;
-            frame_project(f, pts[i], &qx, &qy);
+            frame_project(f, &pts[i], &qx, &qy);
             double e = edge_function(px, py, qx, qy);
             if (e == 0.0 && fmin(px, qx) <= 0.0 && fmax(px, qx) >= 0.0 && fmin(py, qy) <= 0.0 && fmax(py, qy) >= 0.0 &&
                 (px != qx || py != qy))

@@ -17,6 +17,8 @@ typedef struct {
     int kx, ky, kz;
     double sx, sy;
     Vec3 org, dir;
+    double ox, oy, oz;  /* the origin's coordinates on kx, ky, kz */
+    double org_scale;   /* 1 + the origin's largest coordinate, for plane_distance */
 } RayFrame;
 
 RayFrame ray_frame(Vec3 org, Vec3 dir);
