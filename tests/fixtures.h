@@ -26,6 +26,14 @@ static inline Scene *fixture_scene(int capacity)
     return s;
 }
 
+/* Frees a fixture scene whose lights array belongs to the caller. */
+static inline void fixture_scene_free(Scene *s)
+{
+    s->lights = NULL;
+    s->nlights = 0;
+    scene_free(s);
+}
+
 static inline SceneObject *fixture_object(Scene *s, ObjectKind kind)
 {
     SceneObject *o = arena_alloc(s->arena, sizeof *o);

@@ -436,9 +436,7 @@ static void one_scene(TestRng *rng, Totals *tot)
         if (built)
             world_free(&w);
         tot->skipped++;
-        s->lights = NULL;
-        s->nlights = 0;
-        scene_free(s);
+        fixture_scene_free(s);
         return;
     }
     Vec3 extra[64]; /* as the renderer builds its grid */
@@ -516,9 +514,7 @@ static void one_scene(TestRng *rng, Totals *tot)
     shadow_volumes_free(&sv);
     grid_free(&g);
     world_free(&w);
-    s->lights = NULL;
-    s->nlights = 0;
-    scene_free(s);
+    fixture_scene_free(s);
 }
 
 int main(int argc, char **argv)

@@ -145,9 +145,7 @@ int main(void)
         shadow_volumes_free(&sv);
         grid_free(&g);
         world_free(&w);
-        s->lights = NULL;
-        s->nlights = 0;
-        scene_free(s);
+        fixture_scene_free(s);
     }
     tap_ok(usable == 2 * scenes, "every light has volumes (%d of %d)", usable, 2 * scenes);
     tap_ok(silhouettes > 0 && cancelled > 0, "welded edges cancel (%d) and silhouettes remain (%d)", cancelled, silhouettes);
