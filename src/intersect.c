@@ -148,11 +148,10 @@ static double intersect_outlines(const World *w, const Polygon *p, const RayFram
     double t = plane_distance(p, f);
     if (!(t > 0.0 && t < tmax))
         return -1.0;
-    const int *start = &w->outline_start[p->first_outline];
     int inside = 0;
     for (int k = 0; k < p->noutlines; k++) {
-        const Vec3 *pts = &w->points[start[k]];
-        int n = start[k + 1] - start[k];
+        int n;
+        const Vec3 *pts = polygon_outline(w, p, k, &n);
         double px, py;
         frame_project(f, &pts[n - 1], &px, &py);
         for (int i = 0; i < n; i++) {
@@ -244,14 +243,11 @@ int polygon_classify_point(const World *w, const Polygon *p, Vec3 x, double marg
     if (qu < v3_comp(p->bbox_min, iu) - margin || qu > v3_comp(p->bbox_max, iu) + margin ||
         qv < v3_comp(p->bbox_min, iv) - margin || qv > v3_comp(p->bbox_max, iv) + margin)
         return 0;
-    if (p->first_outline < 0) {
-        if (outline_near(&w->points[p->first_point], 3, iu, iv, qu, qv, m2))
+    for (int k = 0; k < polygon_outline_count(p); k++) {
+        int n;
+        const Vec3 *pts = polygon_outline(w, p, k, &n);
+        if (outline_near(pts, n, iu, iv, qu, qv, m2))
             return -1;
-    } else {
-        const int *start = &w->outline_start[p->first_outline];
-        for (int k = 0; k < p->noutlines; k++)
-            if (outline_near(&w->points[start[k]], start[k + 1] - start[k], iu, iv, qu, qv, m2))
-                return -1;
     }
     return polygon_contains(w, p, x);
 }

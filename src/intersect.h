@@ -33,6 +33,20 @@ double intersect_plane(const InfinitePlane *pl, Vec3 org, Vec3 dir);
  * p's outlines, so later outlines cut holes, as in POV-Ray. */
 int polygon_contains(const World *w, const Polygon *p, Vec3 q);
 
+/* The outlines of polygon p: how many (a triangle has one), and the points
+ * of outline k (closed implicitly: the last point joins the first). */
+static inline int polygon_outline_count(const Polygon *p) { return p->first_outline < 0 ? 1 : p->noutlines; }
+static inline const Vec3 *polygon_outline(const World *w, const Polygon *p, int k, int *n)
+{
+    if (p->first_outline < 0) {
+        *n = 3;
+        return &w->points[p->first_point];
+    }
+    const int *start = &w->outline_start[p->first_outline];
+    *n = start[k + 1] - start[k];
+    return &w->points[start[k]];
+}
+
 /* Where point x (taken to lie in p's plane) is against polygon p, projected
  * onto p's two kept axes: 1 inside, 0 outside, -1 within `margin` of its
  * border (an edge or vertex). Projection only shortens distances, so a 2-D

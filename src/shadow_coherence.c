@@ -78,18 +78,9 @@ static int segment_crosses_border(const World *w, const Polygon *p, Vec3 a, Vec3
 {
     int iu = p->axis_u, iv = p->axis_v;
     double au = v3_comp(a, iu), av = v3_comp(a, iv), bu = v3_comp(b, iu), bv = v3_comp(b, iv);
-    int nout = p->first_outline < 0 ? 1 : p->noutlines;
-    for (int k = 0; k < nout; k++) {
-        const Vec3 *pts;
+    for (int k = 0; k < polygon_outline_count(p); k++) {
         int n;
-        if (p->first_outline < 0) {
-            pts = &w->points[p->first_point];
-            n = 3;
-        } else {
-            const int *start = &w->outline_start[p->first_outline];
-            pts = &w->points[start[k]];
-            n = start[k + 1] - start[k];
-        }
+        const Vec3 *pts = polygon_outline(w, p, k, &n);
         for (int i = 0; i < n; i++) {
             Vec3 c = pts[i], d = pts[i + 1 < n ? i + 1 : 0];
             if (segments_near(au, av, bu, bv, v3_comp(c, iu), v3_comp(c, iv), v3_comp(d, iu), v3_comp(d, iv), tol))

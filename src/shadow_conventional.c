@@ -64,8 +64,8 @@ int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
             if (m->no_shadow)
                 continue;
             ctx->stats.shadow_polygon_tests++;
-            double t = intersect_polygon_in(w, p, &frame, tmax);
-            if (t > tmin && t < tmax) {
+            double t = intersect_polygon_in(w, p, &frame, tmax); /* negative at tmax or beyond */
+            if (t > tmin) {
                 /* A polygon edge-on to the light (the light in its plane)
                  * casts no shadow: the ray can only graze it, or meet it at
                  * the light itself. The same rule as the shadow volumes'. */

@@ -109,45 +109,50 @@ uint32_t trace_shadow_registrations_in(const TraceContext *ctx, int light, const
     return n;
 }
 
-int trace_point_touches_other(TraceContext *ctx, const Hit *hit, double tol)
+/* The uncached part of trace_point_touches_other. */
+static int touches_other(TraceContext *ctx, const Hit *hit, double tol)
 {
-    if (ctx->touch_valid && ctx->touch_kind == (int)hit->kind && ctx->touch_index == hit->index &&
-        ctx->touch_point.x == hit->point.x && ctx->touch_point.y == hit->point.y && ctx->touch_point.z == hit->point.z)
-        return ctx->touch_result;
     const World *w = ctx->world;
     const Grid *g = ctx->grid;
-    int result = 0;
     if (hit->kind == HIT_POLYGON && polygon_classify_point(w, &w->polygons[hit->index], hit->point, tol) < 0)
-        result = 1; /* on its own polygon's border: on the neighbours' too */
+        return 1; /* on its own polygon's border: on the neighbours' too */
     /* Every cell within tol of the point (usually one). */
     int lo[3], hi[3];
-    for (int a = 0; a < 3 && !result; a++) {
+    for (int a = 0; a < 3; a++) {
         lo[a] = grid_cell_coord(g, v3_comp(hit->point, a) - tol, a);
         hi[a] = grid_cell_coord(g, v3_comp(hit->point, a) + tol, a);
     }
     uint32_t id = trace_new_segment(ctx);
     if (hit->kind == HIT_POLYGON)
         ctx->stamp[hit->index] = id;
-    for (int z = lo[2]; z <= hi[2] && !result; z++)
-        for (int y = lo[1]; y <= hi[1] && !result; y++)
-            for (int x = lo[0]; x <= hi[0] && !result; x++) {
+    for (int z = lo[2]; z <= hi[2]; z++)
+        for (int y = lo[1]; y <= hi[1]; y++)
+            for (int x = lo[0]; x <= hi[0]; x++) {
                 int c[3] = { x, y, z };
                 int ci = grid_cell_index(g, c);
-                for (uint32_t k = g->cell_start[ci]; k < g->cell_start[ci + 1] && !result; k++) {
+                for (uint32_t k = g->cell_start[ci]; k < g->cell_start[ci + 1]; k++) {
                     uint32_t pi = g->items[k];
                     if (!bucket_admit(ctx, id, pi))
                         continue;
                     const Polygon *p = &w->polygons[pi];
                     if (fabs(v3_dot(p->normal, hit->point) - p->d) <= tol && polygon_classify_point(w, p, hit->point, tol) != 0)
-                        result = 1;
+                        return 1;
                 }
             }
+    return 0;
+}
+
+int trace_point_touches_other(TraceContext *ctx, const Hit *hit, double tol)
+{
+    if (ctx->touch_valid && ctx->touch_kind == (int)hit->kind && ctx->touch_index == hit->index &&
+        ctx->touch_point.x == hit->point.x && ctx->touch_point.y == hit->point.y && ctx->touch_point.z == hit->point.z)
+        return ctx->touch_result;
     ctx->touch_valid = 1;
     ctx->touch_kind = (int)hit->kind;
     ctx->touch_index = hit->index;
     ctx->touch_point = hit->point;
-    ctx->touch_result = result;
-    return result;
+    ctx->touch_result = touches_other(ctx, hit, tol);
+    return ctx->touch_result;
 }
 
 static int inside_box(const ShadowVolumes *sv, Vec3 p)
@@ -204,8 +209,9 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
                 if (!bucket_admit(ctx, id, pi))
                     continue;
                 ctx->stats.polygon_tests++;
+                /* Only hits before the best so far are looked at. */
                 double t = intersect_polygon_in(w, &w->polygons[pi], &frame, best < plane_t ? best : plane_t);
-                if (t > tmin && t < best && t < plane_t) {
+                if (t > tmin) {
                     best = t;
                     hit->kind = HIT_POLYGON;
                     hit->index = (int)pi;
