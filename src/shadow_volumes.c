@@ -184,28 +184,18 @@ static void make_shadow_polygon(ShadowPolygon *sp, const Light *l, Vec3 a, Vec3 
 {
     sp->normal = n;
     sp->d = v3_dot(n, a);
-    Vec3 ra, rb; /* directions away from the light at a and b */
-    if (l->kind == LIGHT_PARALLEL) {
-        ra = rb = v3_neg(l->direction);
-    } else {
-        ra = v3_sub(a, l->location);
-        rb = v3_sub(b, l->location);
-    }
-    Vec3 s0 = unit(v3_cross(n, ra)); /* border through a, inward toward b */
-    if (v3_dot(s0, v3_sub(b, a)) < 0.0)
-        s0 = v3_neg(s0);
-    Vec3 s1 = unit(v3_cross(n, rb)); /* border through b, inward toward a */
-    if (v3_dot(s1, v3_sub(a, b)) < 0.0)
-        s1 = v3_neg(s1);
-    Vec3 s2 = unit(v3_cross(n, v3_sub(b, a))); /* the edge, inward away from the light */
-    if (v3_dot(s2, v3_add(ra, rb)) < 0.0)
-        s2 = v3_neg(s2);
-    sp->side_normal[0] = s0;
-    sp->side_d[0] = v3_dot(s0, a);
-    sp->side_normal[1] = s1;
-    sp->side_d[1] = v3_dot(s1, b);
-    sp->side_normal[2] = s2;
-    sp->side_d[2] = v3_dot(s2, a);
+    sp->end[0] = a;
+    sp->end[1] = b;
+    for (int i = 0; i < 2; i++)
+        sp->toward[i] = l->kind == LIGHT_PARALLEL ? l->direction : unit(v3_sub(l->location, sp->end[i]));
+    /* Inside lies on b's side of the ray through a, and on a's through b. */
+    sp->inside_sign[0] = (int8_t)(v3_dot(n, v3_cross(sp->toward[0], v3_sub(b, a))) >= 0.0 ? 1 : -1);
+    sp->inside_sign[1] = (int8_t)(v3_dot(n, v3_cross(sp->toward[1], v3_sub(a, b))) >= 0.0 ? 1 : -1);
+    Vec3 e = unit(v3_cross(n, v3_sub(b, a))); /* the edge, inward away from the light */
+    if (v3_dot(e, v3_add(sp->toward[0], sp->toward[1])) > 0.0)
+        e = v3_neg(e);
+    sp->edge_normal = e;
+    sp->edge_d = v3_dot(e, a);
 }
 
 /* ---- registration in the grid --------------------------------------------- */
@@ -592,7 +582,7 @@ int shadow_bucket_crossings(const ShadowVolumes *sv, const uint32_t *bucket, int
         if ((s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol))
             continue;
         const ShadowPolygon *sp = &sv->polygons[bucket[i]];
-        int sign;
+        int sign = 0;
         CrossResult r = shadow_polygon_cross_sides(sp, p1, p2, s1, s2, tol, &sign);
         if (r == CROSS_UNSURE)
             return 0;

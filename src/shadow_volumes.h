@@ -27,8 +27,17 @@
 typedef struct {
     Vec3 normal;          /* unit normal of the plane through the edge and the light */
     double d;             /* plane: dot(normal, x) == d */
-    Vec3 side_normal[3];  /* in-plane unit normals of the wedge's three borders, */
-    double side_d[3];     /* pointing inward: dot(side_normal[i], x) - side_d[i] >= 0 inside */
+    /* The two borders through the edge's ends run along the light's rays;
+     * neighbouring silhouette edges share them. A crossing's side of the
+     * border through end v is the sign of orient(p1, p2, v, v + toward[v]),
+     * computed from v and toward[v] alone, so two shadow polygons sharing v
+     * get the same number and a crossing there is counted exactly once
+     * (border_orientation below). */
+    Vec3 end[2];          /* the edge's ends a, b */
+    Vec3 toward[2];       /* unit, from each end toward the light (point: toward its location; parallel: its direction) */
+    int8_t inside_sign[2]; /* orient sign, for a crossing toward +normal, of points inside the wedge */
+    Vec3 edge_normal;     /* in-plane unit normal of the edge, pointing away from the light */
+    double edge_d;        /* dot(edge_normal, x) - edge_d >= 0 beyond the edge */
     int16_t weight_opaque, weight_transparent; /* count change, negative -> positive side */
 } ShadowPolygon;
 
@@ -90,35 +99,73 @@ void shadow_volumes_free(ShadowVolumes *sv);
 /* Outcome of one segment/shadow polygon test. */
 typedef enum { CROSS_NONE = 0, CROSS_YES = 1, CROSS_UNSURE = 2 } CrossResult;
 
+/* The orientation of p1, p2 against the line through v along r:
+ * det(p1 - v, p2 - v, r). Always computed this way, from the same v and r,
+ * so shadow polygons sharing a border get bit-identical values. */
+static inline double border_orientation(Vec3 p1, Vec3 p2, Vec3 v, Vec3 r)
+{
+    return v3_dot(v3_cross(v3_sub(p1, v), v3_sub(p2, v)), r);
+}
+
+/* The part of p1->p2 within tol of sp's plane (an end point lies there):
+ * CROSS_NONE when it is clearly outside one border of the wedge (which is
+ * convex), else CROSS_UNSURE. The crossing itself can be anywhere in that
+ * part: a segment almost parallel to the plane stays within tol of it for
+ * its whole length. */
+static inline CrossResult shadow_polygon_near_plane(const ShadowPolygon *sp, Vec3 p1, Vec3 p2, double s1, double s2,
+                                                    double tol)
+{
+    double t_lo = 0.0, t_hi = 1.0;
+    if (s1 != s2) {
+        double ta = (tol - s1) / (s2 - s1), tb = (-tol - s1) / (s2 - s1);
+        t_lo = fmax(t_lo, fmin(ta, tb));
+        t_hi = fmin(t_hi, fmax(ta, tb));
+    }
+    Vec3 d = v3_sub(p2, p1), q[2] = { v3_add(p1, v3_scale(d, t_lo)), v3_add(p1, v3_scale(d, t_hi)) };
+    for (int i = 0; i < 3; i++) {
+        int outside = 0;
+        for (int k = 0; k < 2; k++) {
+            double e = i < 2 ? sp->inside_sign[i] * v3_dot(sp->normal, v3_cross(sp->toward[i], v3_sub(q[k], sp->end[i])))
+                             : v3_dot(sp->edge_normal, q[k]) - sp->edge_d;
+            outside += e < -tol;
+        }
+        if (outside == 2)
+            return CROSS_NONE;
+    }
+    return CROSS_UNSURE;
+}
+
 /* Segment p1->p2 against shadow polygon sp, given the signed distances s1,
- * s2 of p1 and p2 from its plane (see shadow_polygon_cross below). */
+ * s2 of p1 and p2 from its plane (see shadow_polygon_cross below).
+ *
+ * Three borders bound a wedge: the two light rays through the edge's ends
+ * and the edge itself. Where the segment meets the plane, its side of a
+ * light ray is the sign of border_orientation (a crossing toward -normal
+ * flips it); a value of exactly 0 counts as positive in every wedge, so a
+ * crossing through the ray shared by two silhouette edges belongs to
+ * exactly one of them, however it rounds. The edge is shared with the
+ * occluder itself, which the tracer tests separately: there a margin
+ * decides, and too close to call is CROSS_UNSURE. */
 static inline CrossResult shadow_polygon_cross_sides(const ShadowPolygon *sp, Vec3 p1, Vec3 p2, double s1, double s2,
                                                      double tol, int *sign)
 {
     if ((s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol))
         return CROSS_NONE;
-    Vec3 x;
-    int near_end = 0;
-    if (fabs(s2) <= tol) {
-        x = p2;
-        near_end = 1;
-    } else if (fabs(s1) <= tol) {
-        x = p1;
-        near_end = 1;
-    } else {
-        x = v3_add(p1, v3_scale(v3_sub(p2, p1), s1 / (s1 - s2)));
-    }
-    int inside = 1;
-    for (int i = 0; i < 3; i++) {
-        double e = v3_dot(sp->side_normal[i], x) - sp->side_d[i];
-        if (e < -tol)
+    if (fabs(s1) <= tol || fabs(s2) <= tol)
+        return shadow_polygon_near_plane(sp, p1, p2, s1, s2, tol);
+    int toward_positive = s1 < 0.0 ? 1 : -1;
+    for (int i = 0; i < 2; i++) {
+        int side = border_orientation(p1, p2, sp->end[i], sp->toward[i]) >= 0.0 ? 1 : -1;
+        if (side * toward_positive != sp->inside_sign[i])
             return CROSS_NONE;
-        if (e <= tol)
-            inside = 0;
     }
-    if (near_end || !inside)
+    Vec3 x = v3_add(p1, v3_scale(v3_sub(p2, p1), s1 / (s1 - s2)));
+    double e = v3_dot(sp->edge_normal, x) - sp->edge_d;
+    if (e < -tol)
+        return CROSS_NONE;
+    if (e <= tol)
         return CROSS_UNSURE;
-    *sign = s1 < 0.0 ? 1 : -1;
+    *sign = toward_positive;
     return CROSS_YES;
 }
 
