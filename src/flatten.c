@@ -98,14 +98,33 @@ static void finish_polygon_bounds(World *w, Polygon *p)
     w->bounds_max = v3_max(w->bounds_max, hi);
 }
 
-/* A triangle in world space; zero-area triangles are dropped (they can hit
+/* A polygon whose area is below this share of its size squared is a
+ * line or a point up to rounding: vertices that are collinear in the scene
+ * file but were rotated or scaled end up with an area of about 1e-16 of it.
+ * Such a sliver can hardly be hit, and its normal, hence the side a light
+ * is on and the planes of its shadow polygons, is noise: it is dropped
+ * (counted in World.ndegenerate). POV-Ray keeps it unless its area is
+ * exactly 0; at 1e-12 the widest one dropped is a millionth of a pixel
+ * wide in any image. */
+#define DEGENERATE_AREA_SHARE 1e-12
+
+static int degenerate(Builder *b, double twice_area, double size_squared)
+{
+    if (twice_area > DEGENERATE_AREA_SHARE * size_squared && isfinite(twice_area))
+        return 0;
+    b->w->ndegenerate++;
+    return 1;
+}
+
+/* A triangle in world space; degenerate ones are dropped (they can hit
  * nothing and have no normal). Returns 0, or -1 on allocation failure. */
 static int add_triangle(Builder *b, Vec3 a, Vec3 c1, Vec3 c2, const Vec3 *normals, int material)
 {
     World *w = b->w;
-    Vec3 n = v3_cross(v3_sub(c1, a), v3_sub(c2, a));
+    Vec3 e1 = v3_sub(c1, a), e2 = v3_sub(c2, a), e3 = v3_sub(c2, c1);
+    Vec3 n = v3_cross(e1, e2);
     double len = v3_length(n);
-    if (!(len > 0.0) || !isfinite(len))
+    if (degenerate(b, len, fmax(v3_dot(e1, e1), fmax(v3_dot(e2, e2), v3_dot(e3, e3)))))
         return 0;
     if (GROW(b, polygons, cap_polygons, w->npolygons) || GROW(b, points, cap_points, w->npoints + 3))
         return -1;
@@ -152,11 +171,20 @@ static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, in
             nrm.z += (p.x - q.x) * (p.y + q.y);
         }
     }
-    for (int i = 0; i < n; i++)
+    if (n < 3) {
+        w->ndegenerate++;
+        return 0;
+    }
+    Vec3 lo = pts[0], hi = pts[0];
+    for (int i = 0; i < n; i++) {
         centroid = v3_add(centroid, pts[i]);
+        lo = v3_min(lo, pts[i]);
+        hi = v3_max(hi, pts[i]);
+    }
+    Vec3 diagonal = v3_sub(hi, lo);
     double len = v3_length(nrm);
-    if (!(len > 0.0) || !isfinite(len) || n < 3)
-        return 0; /* degenerate: no area, nothing to hit */
+    if (degenerate(b, len, v3_dot(diagonal, diagonal)))
+        return 0; /* no area, nothing to hit */
     if (n == 3 && noutlines == 1)
         return add_triangle(b, pts[0], pts[1], pts[2], NULL, material);
     if (GROW(b, polygons, cap_polygons, w->npolygons) || GROW(b, points, cap_points, w->npoints + n) ||

@@ -174,6 +174,7 @@ int main(int argc, char **argv)
     memcpy(report.grid, grid.n, sizeof report.grid);
     report.grid_registrations = grid.nitems;
     report.npolygons = world.npolygons;
+    report.ndegenerate = world.ndegenerate;
     report.nplanes = world.nplanes;
     report.nlights = world.nlights;
 

@@ -72,7 +72,8 @@ void stats_print(FILE *f, const StatsReport *r)
     double total = r->parse_seconds + r->preprocess_seconds + s->shadow_seconds + others;
     fprintf(f, "hstrace statistics for %s (%dx%d, %d thread%s, shadows: %s)\n", r->scene, r->width, r->height,
             r->threads, r->threads == 1 ? "" : "s", r->shadow_method);
-    fprintf(f, "  scene       %d polygons, %d infinite planes, %d lights\n", r->npolygons, r->nplanes, r->nlights);
+    fprintf(f, "  scene       %d polygons (%d degenerate dropped), %d infinite planes, %d lights\n", r->npolygons,
+            r->ndegenerate, r->nplanes, r->nlights);
     fprintf(f, "  grid        %dx%dx%d cells, %llu registrations\n", r->grid[0], r->grid[1], r->grid[2],
             (unsigned long long)r->grid_registrations);
     fprintf(f, "  time (s)    parse %.3f  preprocessing %.3f  shadow testing %.3f  others %.3f  total %.3f  (wall %.3f)\n",
@@ -162,7 +163,8 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
     }
     fprintf(f, "\",\n  \"shadow_method\": \"%s\",\n  \"width\": %d,\n  \"height\": %d,\n  \"threads\": %d,\n",
             r->shadow_method, r->width, r->height, r->threads);
-    fprintf(f, "  \"polygons\": %d,\n  \"planes\": %d,\n  \"lights\": %d,\n", r->npolygons, r->nplanes, r->nlights);
+    fprintf(f, "  \"polygons\": %d,\n  \"degenerate_dropped\": %d,\n  \"planes\": %d,\n  \"lights\": %d,\n", r->npolygons,
+            r->ndegenerate, r->nplanes, r->nlights);
     fprintf(f, "  \"grid\": [%d, %d, %d],\n  \"grid_registrations\": %llu,\n", r->grid[0], r->grid[1], r->grid[2],
             (unsigned long long)r->grid_registrations);
     fprintf(f, "  \"time\": {\"parse\": %.6f, \"preprocessing\": %.6f, \"shadow_testing\": %.6f, \"others\": %.6f, "

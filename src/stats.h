@@ -46,6 +46,7 @@ typedef struct {
     int grid[3];
     uint64_t grid_registrations;
     int npolygons, nplanes, nlights;
+    int ndegenerate;             /* polygons dropped at build: no area up to rounding */
     double parse_seconds, preprocess_seconds, output_seconds, wall_seconds;
     double volumes_seconds;           /* silhouettes and shadow polygon registration (in preprocessing) */
     const struct ShadowVolumes *volumes; /* NULL unless the method uses them */

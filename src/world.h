@@ -84,6 +84,7 @@ typedef struct {
     int max_trace_level;
     double adc_bailout;
     Vec3 bounds_min, bounds_max; /* of all polygons; empty when min > max */
+    int ndegenerate;      /* polygons dropped at build: no area, up to rounding */
 } World;
 
 typedef struct {

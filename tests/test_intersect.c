@@ -18,11 +18,20 @@ int main(void)
     fixture_triangle(s, v3(0, 0, 5), v3(1, 0, 5), v3(0, 1, 5));
     /* A zero-area triangle: dropped at build time. */
     fixture_triangle(s, v3(0, 0, 7), v3(1, 1, 7), v3(2, 2, 7));
+    /* Collinear in the file, rotated: rounding leaves an area of about
+     * 1e-17, and a normal that is noise. Dropped too. */
+    SceneObject *sliver = fixture_triangle(s, v3(0, 0, 0), v3(0.5, 0.4, 0), v3(1, 0.8, 0));
+    transform_rotate(&sliver->transform, v3(-60, 0, 0));
+    transform_translate(&sliver->transform, v3(0.6, 0.7, -0.3));
+    /* Thin, but a triangle: 1e-6 as high as it is long. Kept. */
+    fixture_triangle(s, v3(0, 0, 9), v3(1, 0, 9), v3(0.5, 1e-6, 9));
 
     World w;
     WorldError err;
     tap_ok(world_build(&w, s, &err) == 0, "world builds");
-    tap_ok(w.npolygons == 2, "degenerate triangle dropped (%d polygons)", w.npolygons);
+    tap_ok(w.npolygons == 3 && w.ndegenerate == 2,
+           "zero-area and rotated collinear triangles dropped, thin one kept (%d polygons, %d dropped)", w.npolygons,
+           w.ndegenerate);
     const Polygon *frame_p = &w.polygons[0], *tri = &w.polygons[1];
 
     tap_ok(polygon_contains(&w, frame_p, v3(1.5, 0, 0)), "point in the frame is inside");
