@@ -64,6 +64,8 @@ void options_usage(FILE *f)
             "                         coordinates (default 1e-9; for measuring speed against error)\n"
             "      --verify-shadows   also fire the exact shadow ray at every decision and count\n"
             "                         disagreements (--stats shows them)\n"
+            "      --verify-reference as --verify-shadows, and check both against a brute-force\n"
+            "                         long-double reference (slow; for measuring error)\n"
             "      --threads N        render threads (default: all cores); the image does not depend on N\n"
             "      --grid N|NxNxN     grid cells per axis (default: chosen from the polygon count)\n"
             "      --include-path DIR folder searched for #include files (repeatable)\n"
@@ -245,7 +247,9 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 return -1;
             }
         } else if (strcmp(a, "--verify-shadows") == 0) {
-            opt->verify_shadows = 1;
+            opt->verify_shadows = opt->verify_shadows > 1 ? opt->verify_shadows : 1;
+        } else if (strcmp(a, "--verify-reference") == 0) {
+            opt->verify_shadows = 2;
         } else if (is_long(a, "--threads")) {
             if (!(v = option_value(argc, argv, &i, "--threads", err, errlen)))
                 return -1;

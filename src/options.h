@@ -26,7 +26,7 @@ typedef struct {
     const char *shadows;          /* method name */
     double tolerance;             /* relative margin of the shadow tests (--tolerance) */
     double nth;                   /* hst's N_th; NTH_AUTO: eq. (7) once per scene; NTH_PER_POINT */
-    int verify_shadows;
+    int verify_shadows;        /* 1 --verify-shadows, 2 --verify-reference */
     int pixel_coherence;          /* hst: counts from the neighbouring pixel (--pixel-coherence) */
     int grid[3];                  /* 0: choose from the polygon count */
     const char *include_paths[MAX_INCLUDE_PATHS];

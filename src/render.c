@@ -8,6 +8,7 @@
 
 #include "shade.h"
 #include "shadow_coherence.h"
+#include "shadow_reference.h"
 
 #define TILE 16
 
@@ -98,6 +99,7 @@ static void *worker_main(void *arg)
         ctx.coherence = &coherence;
     }
     ctx.verify = opt->verify;
+    ctx.reference_eps = shadow_reference_eps(job->grid);
     ctx.nth = opt->nth;
     ctx.cost = opt->cost;
     double t0 = clock_thread_cpu();

@@ -18,7 +18,7 @@ typedef struct {
     const struct ShadowVolumes *volumes; /* when the method uses them */
     const struct CostModel *cost;        /* hst's per-point N_th */
     double nth;               /* hst: N_th; negative: per point */
-    int verify;               /* --verify-shadows */
+    int verify;               /* 1 --verify-shadows, 2 --verify-reference too */
     int pixel_coherence;      /* hst: count from the neighbouring pixel's hit */
     int progress;             /* print a progress line on stderr */
 } RenderOptions;

@@ -8,6 +8,7 @@
 #include "intersect.h"
 #include "shadow.h"
 #include "shadow_coherence.h"
+#include "shadow_reference.h"
 
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
@@ -75,7 +76,8 @@ static inline void shadow_timer_stop(TraceContext *ctx, double t0)
         ctx->stats.shadow_seconds += SHADOW_TIMING_STRIDE * (clock_wall() - t0);
 }
 
-/* --verify-shadows: the shadow ray's answer beside the method's. */
+/* --verify-shadows: the shadow ray's answer beside the method's;
+ * --verify-reference: and the long-double reference's beside both. */
 static void verify_shadow(TraceContext *ctx, const ShadowQuery *q, RGB got)
 {
     int scheme = ctx->last_scheme;
@@ -88,6 +90,18 @@ static void verify_shadow(TraceContext *ctx, const ShadowQuery *q, RGB got)
     if (want.r != got.r || want.g != got.g || want.b != got.b) {
         ctx->stats.shadow_disagreements = disagreements + 1;
         ctx->stats.shadow_disagreements_by_scheme[scheme]++;
+    }
+    if (ctx->verify > 1) {
+        /* The verdicts compared: is any light taken away? */
+        RefAnswer ref = shadow_reference(ctx->world, q->surface, &ctx->world->lights[q->light], ctx->reference_eps);
+        int got_blocked = got.r != 1.0 || got.g != 1.0 || got.b != 1.0;
+        int ray_blocked = want.r != 1.0 || want.g != 1.0 || want.b != 1.0;
+        if (ref == REF_TIE)
+            ctx->stats.reference_ties++;
+        else {
+            ctx->stats.reference_wrong += got_blocked != (ref == REF_BLOCKED);
+            ctx->stats.reference_ray_wrong += ray_blocked != (ref == REF_BLOCKED);
+        }
     }
     ctx->last_scheme = scheme;
 }

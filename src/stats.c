@@ -39,6 +39,9 @@ void stats_add(RenderStats *t, const RenderStats *p)
     t->shadow_deferred += p->shadow_deferred;
     t->shadow_verified += p->shadow_verified;
     t->shadow_disagreements += p->shadow_disagreements;
+    t->reference_ties += p->reference_ties;
+    t->reference_wrong += p->reference_wrong;
+    t->reference_ray_wrong += p->reference_ray_wrong;
     t->shadow_seconds += p->shadow_seconds;
     t->render_seconds += p->render_seconds;
 }
@@ -143,6 +146,12 @@ void stats_print(FILE *f, const StatsReport *r)
                         (unsigned long long)s->shadow_disagreements_by_scheme[i]);
         fprintf(f, "\n");
     }
+    if (r->verify > 1)
+        fprintf(f, "  reference   long double: %llu ties; on the %llu clear decisions, the method is wrong %llu times, "
+                   "the shadow ray %llu times\n",
+                (unsigned long long)s->reference_ties,
+                (unsigned long long)(s->shadow_verified - s->reference_ties), (unsigned long long)s->reference_wrong,
+                (unsigned long long)s->reference_ray_wrong);
 }
 
 int stats_write_json(const char *path, const StatsReport *r, char *err, int errlen)
@@ -195,7 +204,12 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
     for (int i = 0; i < STATS_SCHEMES; i++)
         fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i],
                 (unsigned long long)s->shadow_disagreements_by_scheme[i]);
-    fprintf(f, "}}");
+    fprintf(f, "}");
+    if (r->verify > 1)
+        fprintf(f, ",\n    \"reference_ties\": %llu, \"reference_wrong\": %llu, \"reference_ray_wrong\": %llu",
+                (unsigned long long)s->reference_ties, (unsigned long long)s->reference_wrong,
+                (unsigned long long)s->reference_ray_wrong);
+    fprintf(f, "}");
     if (r->volumes) {
         const ShadowVolumes *sv = r->volumes;
         fprintf(f, ",\n  \"volumes\": {\"seconds\": %.6f, \"welded_vertices\": %d, \"tolerance\": %.3g, \"lights\": [",

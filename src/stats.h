@@ -32,6 +32,12 @@ typedef struct {
     uint64_t shadow_verified;     /* decisions checked against the shadow ray */
     uint64_t shadow_disagreements;
     uint64_t shadow_disagreements_by_scheme[STATS_SCHEMES];
+    /* --verify-reference: the same decisions against the long-double
+     * reference; ties are where it cannot tell (then only the shadow ray's
+     * answer counts, as above). */
+    uint64_t reference_ties;
+    uint64_t reference_wrong;     /* the method, on clear cases */
+    uint64_t reference_ray_wrong; /* the shadow ray itself, on clear cases */
     double shadow_seconds;        /* time spent deciding shadows, summed over threads */
     double render_seconds;        /* thread CPU time in the render loop */
 } RenderStats;

@@ -46,10 +46,12 @@ typedef struct {
     /* Shadow methods' per-thread state. */
     int last_scheme;           /* how the last decision was made (ShadowScheme) */
     int last_blocker;          /* polygon that blocked the last shadow ray, or -1 */
-    int last_filtered;
-    unsigned shadow_timer;     /* decisions so far, for timing every 8th */         /* transparent polygons the last shadow ray passed */
+    int last_filtered;         /* transparent polygons the last shadow ray passed */
+    unsigned shadow_timer;     /* decisions so far, for timing every 8th */
     int *light_cache;          /* cache method: last opaque blocker per light, or -1 */
-    int verify;                /* --verify-shadows: check every decision against the shadow ray */
+    int verify;                /* 1: check every decision against the shadow ray (--verify-shadows);
+                                  2: and against the long-double reference (--verify-reference) */
+    long double reference_eps; /* the reference's margin of ties */
     double nth;                /* hst: N_th; negative: per point from its own N_c */
     const struct CostModel *cost;  /* for the per-point N_th */
     /* Shadow buckets (volume, hst). The walk of a segment records the cells

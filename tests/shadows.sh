@@ -14,7 +14,9 @@
 # must be > 0: some of them leave no segment that pierces only cells free of
 # shadow polygons (a light shut in a box casts shadow polygons across the
 # whole grid) or give hst no count at the eye (an orthographic camera, an
-# eye in the plane of a face), so sustain may rightly stay at 0 there.
+# eye in the plane of a face), so sustain may rightly stay at 0 there. The
+# hard cases are also checked with --verify-reference: hst and the shadow
+# ray against a long-double reference wherever it is not a tie.
 set -u
 srcdir=${top_srcdir:-.}
 builddir=${top_builddir:-.}
@@ -110,6 +112,18 @@ for scene in "$srcdir"/scenes/*.pov "$work/filtered.pov" "$work/contact.pov" "$s
     volume=$(json_number "$json" volume)
     coherent=$(json_number "$json" coherent)
     if [ $hard = 1 ]; then
+        # The high-precision check, at a quarter of the pixels (it tests
+        # every polygon in long double): on every decision the reference can
+        # make, hst and the shadow ray must both be right.
+        "$hstrace" "$scene" --verify-reference --width 160 --height 120 --threads 2 \
+            --stats-json "$work/$name.reference.json" -o "$work/$name.reference.exr" 2>"$work/err"
+        status=$?
+        ties=$(json_number "$work/$name.reference.json" reference_ties)
+        wrong=$(json_number "$work/$name.reference.json" reference_wrong)
+        ray_wrong=$(json_number "$work/$name.reference.json" reference_ray_wrong)
+        verified=$(json_number "$work/$name.reference.json" verified)
+        check "$name: hst and the shadow ray agree with the long-double reference ($wrong and $ray_wrong wrong of $verified decisions, $ties ties)" \
+            '[ $status -eq 0 ] && [ "${verified:-0}" -gt "${ties:-0}" ] && [ "$wrong" = 0 ] && [ "$ray_wrong" = 0 ]'
         check "$name: hst decided by shadow volume ($volume, $coherent from the neighbouring pixel; sustain $sustain)" \
             '[ "${volume:-0}" -gt 0 ] && [ "${coherent:-0}" -gt 0 ]'
     else

@@ -29,155 +29,13 @@
 #include "grid.h"
 #include "shadow.h"
 #include "shadow_coherence.h"
+#include "shadow_reference.h"
 #include "shadow_volumes.h"
 #include "tap.h"
 #include "tracer.h"
 #include "world.h"
 
 typedef long double ld;
-
-/* ---- the reference -------------------------------------------------------- */
-
-typedef struct {
-    ld x, y, z;
-} LVec;
-
-static LVec lv(Vec3 a) { LVec r = { a.x, a.y, a.z }; return r; }
-static LVec lsub(LVec a, LVec b) { LVec r = { a.x - b.x, a.y - b.y, a.z - b.z }; return r; }
-static ld ldot(LVec a, LVec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lcomp(LVec a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
-static ld labs_(ld x) { return x < 0 ? -x : x; }
-
-/* The outlines of polygon p as point runs: triangles have one of 3 points. */
-static int outlines(const World *w, const Polygon *p, int *start, int *count, int cap)
-{
-    if (p->first_outline < 0) {
-        start[0] = p->first_point;
-        count[0] = 3;
-        return 1;
-    }
-    const int *s = &w->outline_start[p->first_outline];
-    int n = p->noutlines < cap ? p->noutlines : cap;
-    for (int k = 0; k < n; k++) {
-        start[k] = s[k];
-        count[k] = s[k + 1] - s[k];
-    }
-    return n;
-}
-
-static ld segment_distance(ld au, ld av, ld bu, ld bv, ld qu, ld qv)
-{
-    ld eu = bu - au, ev = bv - av, len2 = eu * eu + ev * ev;
-    ld t = len2 > 0 ? ((qu - au) * eu + (qv - av) * ev) / len2 : 0;
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    ld du = qu - (au + t * eu), dv = qv - (av + t * ev);
-    return sqrtl(du * du + dv * dv);
-}
-
-typedef enum { REF_LIT, REF_BLOCKED, REF_TIE } RefAnswer;
-
-/* Does the segment from p toward the light (direction d, length tmax; a
- * parallel light: tmax is the distance to its plane) meet polygon i?
- * Inclusive of the border (a shared edge blocks), exclusive of hits within
- * tmin of p (the point's own surface). */
-static RefAnswer ref_polygon(const World *w, int i, LVec p, LVec d, ld tmax, ld tmin, ld eps)
-{
-    const Polygon *poly = &w->polygons[i];
-    int start[16] = { 0 }, count[16] = { 0 };
-    int no = outlines(w, poly, start, count, 16);
-    if (no < 1 || count[0] < 3)
-        return REF_LIT;
-    /* Newell's normal of the first outline, in long double. */
-    LVec n = { 0, 0, 0 };
-    const Vec3 *pts = w->points;
-    for (int k = 0; k < count[0]; k++) {
-        LVec a = lv(pts[start[0] + k]), b = lv(pts[start[0] + (k + 1) % count[0]]);
-        n.x += (a.y - b.y) * (a.z + b.z);
-        n.y += (a.z - b.z) * (a.x + b.x);
-        n.z += (a.x - b.x) * (a.y + b.y);
-    }
-    ld nl = sqrtl(ldot(n, n));
-    if (nl == 0)
-        return REF_LIT; /* degenerate: no area, blocks nothing */
-    n.x /= nl, n.y /= nl, n.z /= nl;
-    LVec a0 = lv(pts[start[0]]);
-    ld denom = ldot(n, d);
-    ld h = ldot(n, lsub(a0, p)); /* signed distance of the plane from p along n */
-    if (labs_(denom) <= eps)
-        return labs_(h) <= eps ? REF_TIE : REF_LIT; /* the segment runs along the plane */
-    ld t = h / denom;
-    if (labs_(t - tmin) <= eps || labs_(t - tmax) <= eps)
-        return REF_TIE;
-    if (t <= tmin || t >= tmax)
-        return REF_LIT;
-    LVec x = { p.x + t * d.x, p.y + t * d.y, p.z + t * d.z };
-    int iu = poly->axis_u, iv = poly->axis_v;
-    ld qu = lcomp(x, iu), qv = lcomp(x, iv);
-    int inside = 0;
-    for (int o = 0; o < no; o++) {
-        int c = count[o];
-        int in = 0;
-        for (int k = 0; k < c; k++) {
-            LVec a = lv(pts[start[o] + k]), b = lv(pts[start[o] + (k + 1) % c]);
-            ld au = lcomp(a, iu), av = lcomp(a, iv), bu = lcomp(b, iu), bv = lcomp(b, iv);
-            if (segment_distance(au, av, bu, bv, qu, qv) <= eps)
-                return REF_TIE;
-            if ((av >= qv) != (bv >= qv)) {
-                ld u = au + (qv - av) * (bu - au) / (bv - av);
-                if (qu < u)
-                    in = !in;
-            }
-        }
-        inside ^= in;
-    }
-    return inside ? REF_BLOCKED : REF_LIT;
-}
-
-/* The segment from p toward light l: unit direction and length (a parallel
- * light: to the plane it shines from). */
-static void light_segment(const Light *l, LVec p, LVec *d, ld *tmax)
-{
-    if (l->kind == LIGHT_PARALLEL) {
-        *d = lv(l->direction);
-        *tmax = ldot(lsub(lv(l->location), p), *d);
-    } else {
-        *d = lsub(lv(l->location), p);
-        *tmax = sqrtl(ldot(*d, *d));
-        d->x /= *tmax, d->y /= *tmax, d->z /= *tmax;
-    }
-}
-
-static RefAnswer reference(const World *w, const Hit *at, const Light *l, ld eps)
-{
-    LVec p = lv(at->point), d;
-    ld tmax;
-    light_segment(l, p, &d, &tmax);
-    ld tmin = trace_min_distance(at->point);
-    RefAnswer r = REF_LIT;
-    for (int i = 0; i < w->npolygons; i++) {
-        if (at->kind == HIT_POLYGON && at->index == i)
-            continue;
-        RefAnswer a = ref_polygon(w, i, p, d, tmax, tmin, eps);
-        if (a == REF_BLOCKED)
-            return REF_BLOCKED; /* a clear blocker decides, whatever else is a tie */
-        if (a == REF_TIE)
-            r = REF_TIE;
-    }
-    return r;
-}
-
-/* Polygons met (blocked answers) from a point: ties count as met. */
-static int reference_count(const World *w, const Hit *at, const Light *l, ld eps)
-{
-    LVec p = lv(at->point), d;
-    ld tmax;
-    light_segment(l, p, &d, &tmax);
-    int n = 0;
-    for (int i = 0; i < w->npolygons; i++)
-        if (!(at->kind == HIT_POLYGON && at->index == i))
-            n += ref_polygon(w, i, p, d, tmax, trace_min_distance(at->point), eps) != REF_LIT;
-    return n;
-}
 
 /* ---- random lattice scenes ------------------------------------------------ */
 
@@ -378,12 +236,9 @@ static void explain(const World *w, const ShadowVolumes *sv, const char *what, c
     const Hit *h = &hits[seg];
     const Light *l = &w->lights[li];
     describe(w, what, h, seg, li, probe);
-    LVec p = lv(h->point), d;
-    ld tmax;
-    light_segment(l, p, &d, &tmax);
     fprintf(stderr, "  reference per polygon (Lit, Blocked, Tie):");
     for (int i = 0; i < w->npolygons; i++)
-        fprintf(stderr, " %d:%c", i, "LBT"[ref_polygon(w, i, p, d, tmax, trace_min_distance(h->point), eps)]);
+        fprintf(stderr, " %d:%c", i, "LBT"[shadow_reference_polygon(w, i, h->point, l, trace_min_distance(h->point), eps)]);
     fprintf(stderr, "\n");
     if (h->kind == HIT_POLYGON) {
         const Polygon *pp = &w->polygons[h->index];
@@ -398,7 +253,7 @@ static void explain(const World *w, const ShadowVolumes *sv, const char *what, c
                 hits[0].point.y, hits[0].point.z);
     Hit eye = { HIT_NONE, -1, 0, w->camera.location };
     fprintf(stderr, "  eye count %s %d, reference at the eye %d\n", sv->light[li].eye_known ? "known" : "unknown",
-            sv->light[li].eye_opaque, reference_count(w, &eye, l, eps));
+            sv->light[li].eye_opaque, shadow_reference_count(w, &eye, l, eps));
 }
 
 typedef struct {
@@ -475,8 +330,7 @@ static void one_scene(TestRng *rng, Totals *tot)
     Hit hits[NVARIANTS][PROBES][2];
     for (int vi = 0; vi < NVARIANTS; vi++)
         run_variant(&w, &g, &sv, &variants[vi], probes, &dec, vi, hits[vi]);
-    ld eps = 1e-12L * (1 + fmax(fabs(g.min.x), fmax(fabs(g.max.x), fmax(fabs(g.min.y), fmax(fabs(g.max.y),
-                                                                   fmax(fabs(g.min.z), fabs(g.max.z)))))));
+    ld eps = shadow_reference_eps(&g);
     for (int k = 0; k < PROBES; k++)
         for (int seg = 0; seg < 2; seg++)
             for (int li = 0; li < nl; li++) {
@@ -484,7 +338,7 @@ static void one_scene(TestRng *rng, Totals *tot)
                 if (ray < 0)
                     continue;
                 tot->decisions++;
-                RefAnswer ref = reference(&w, &hits[0][k][seg], &w.lights[li], eps);
+                RefAnswer ref = shadow_reference(&w, &hits[0][k][seg], &w.lights[li], eps);
                 if (ref == REF_TIE) {
                     tot->ties++;
                     if (ray)
