@@ -1,9 +1,12 @@
 #!/bin/sh
 # Speed against error on the hard cases (scenes/hard/): for every scene,
-# shadow method and numeric margin (--tolerance: the default 1e-9, none at
-# all, and a thousand times wider), the shadow-testing time, the
+# shadow method and numeric setting (--tolerance: the default margin 1e-9,
+# none at all, and a thousand times wider; for volume and hst also
+# --plane-precision float and float-naive), the shadow-testing time, the
 # disagreements with the conventional shadow ray (--verify-shadows, at every
-# shading point, reflected and refracted ones included), the decisions left
+# shading point, reflected and refracted ones included), the method's and
+# the shadow ray's errors against the long-double reference
+# (--verify-reference, where it is not a tie), the decisions left
 # to the shadow ray as too close to call, and the shadow mask against
 # POV-Ray's (by the hard-case rule of tests/regress.sh: disagreements at
 # edges are ties; elsewhere they are errors, or POV-Ray's leaks through
@@ -25,6 +28,8 @@ out="$here/hard.md"
 size="--width 320 --height 240 --threads 1"
 methods="conventional cache volume hst"
 tolerances="1e-9 0 1e-6"
+# A numeric setting: name=hstrace options (spaces as commas).
+settings="margin_1e-9=--tolerance,1e-9 margin_0=--tolerance,0 margin_1e-6=--tolerance,1e-6 float_planes=--plane-precision,float float_planes_naive=--plane-precision,float-naive"
 {
     echo "# The hard cases: speed against error"
     echo
@@ -35,10 +40,16 @@ tolerances="1e-9 0 1e-6"
     echo "points on a second polygon, segments in their start polygon's plane; pixel-coherence counts given up"
     echo "for the count from the eye are not among them). *Mask vs POV-Ray*: pixels whose shadow differs from POV-Ray's at +Q4, at edges (ties,"
     echo "allowed) / elsewhere (errors) / POV-Ray's leaks through shared edges (marked scenes only)."
-    echo "*Tolerance*: \`--tolerance\`, the margin of every shadow test relative to the scene's coordinates."
+    echo "*Setting*: margin R is \`--tolerance R\`, the margin of every shadow test relative to the scene's"
+    echo "coordinates (1e-9 is the default); float planes is \`--plane-precision float\` (volume and hst test the"
+    echo "shadow polygons' planes in float with a margin widened for float's rounding), naive is"
+    echo "\`--plane-precision float-naive\` (float with the double margin)."
+    echo "*Reference*: \`--verify-reference\`, the decisions against a brute-force long-double reference where it"
+    echo "can tell (not a tie, i.e. no polygon within 1e-12 of the scene's size of a border or an end): the"
+    echo "method's wrong decisions / the shadow ray's own / ties."
     echo
-    echo "| scene | method | tolerance | shadow ms | disagree | to the ray | mask: edges | mask: elsewhere | mask: POV-Ray leaks |"
-    echo "|---|---|---|---|---|---|---|---|---|"
+    echo "| scene | method | setting | shadow ms | disagree | reference: method wrong / ray wrong / ties | to the ray | mask: edges | mask: elsewhere | mask: POV-Ray leaks |"
+    echo "|---|---|---|---|---|---|---|---|---|---|"
 } >"$out"
 for scene in "$src"/scenes/hard/*.pov; do
     name=$(basename "$scene" .pov)
@@ -47,19 +58,28 @@ for scene in "$src"/scenes/hard/*.pov; do
     grep -q '^// hstrace-regress: povray-leaks' "$scene" && leaks="--pov-leaks-ok 1"
     "$build/hstrace" "$scene" $size +Q3 -o "$work/$name.q3.exr"
     for m in $methods; do
-        for tol in $tolerances; do
+        for setting in $settings; do
+            label=$(echo "${setting%%=*}" | tr _ ' ')
+            opts=$(echo "${setting#*=}" | tr , ' ')
+            case $m:$label in conventional:float* | cache:float*) continue ;; esac # no shadow polygons
             for i in 1 2 3; do
-                "$build/hstrace" "$scene" $size --shadows "$m" --tolerance "$tol" --verify-shadows \
-                    --stats-json "$work/$name.$m.$tol.$i.json" -o "$work/x.exr"
+                # shellcheck disable=SC2086 # $opts is options and values
+                "$build/hstrace" "$scene" $size --shadows "$m" $opts --verify-shadows \
+                    --stats-json "$work/$name.$m.$i.json" -o "$work/x.exr"
             done
-            "$build/hstrace" "$scene" $size +Q4 --shadows "$m" --tolerance "$tol" -o "$work/$name.q4.exr"
+            # shellcheck disable=SC2086
+            "$build/hstrace" "$scene" --width 320 --height 240 --threads 2 --shadows "$m" $opts --verify-reference \
+                --stats-json "$work/$name.$m.ref.json" -o "$work/x.exr"
+            # shellcheck disable=SC2086
+            "$build/hstrace" "$scene" $size +Q4 --shadows "$m" $opts -o "$work/$name.q4.exr"
             # shellcheck disable=SC2086 # $leaks is one option and its value, or nothing
             mask=$("$build/tests/compare_images" mask "$ref.q3.exr" "$ref.q4.exr" "$work/$name.q3.exr" \
                    "$work/$name.q4.exr" --share 1 $leaks || true)
-            python3 - "$work" "$name" "$m" "$tol" "$mask" >>"$out" <<'PY'
+            python3 - "$work" "$name" "$m" "$label" "$mask" >>"$out" <<'PY'
 import json, re, statistics, sys
-work, name, m, tol, mask = sys.argv[1:6]
-runs = [json.load(open(f"{work}/{name}.{m}.{tol}.{i}.json")) for i in (1, 2, 3)]
+work, name, m, label, mask = sys.argv[1:6]
+runs = [json.load(open(f"{work}/{name}.{m}.{i}.json")) for i in (1, 2, 3)]
+ref = json.load(open(f"{work}/{name}.{m}.ref.json"))["shadows"]
 sh = runs[0]["shadows"]
 ms = 1000 * statistics.median(r["time"]["shadow_testing"] for r in runs)
 to_ray = sum(sh.get(k, 0) for k in ("unsure", "touching", "in_plane"))
@@ -68,11 +88,33 @@ edges, elsewhere = num(r"(\d+) at shadow edges"), num(r"(\d+) elsewhere")
 sil = num(r"(\d+) at silhouettes")
 leaks = num(r"(\d+) away from edges where POV-Ray") if "POV-Ray lets" in mask else "-"
 edge_total = int(edges) + int(sil) if edges != "?" and sil != "?" else "?"
-print(f"| {name} | {m} | {tol} | {ms:.1f} | {sh['disagreements']} of {sh['verified']} | {to_ray} | {edge_total} | {elsewhere} | {leaks} |")
+reference = f"{ref['reference_wrong']} / {ref['reference_ray_wrong']} / {ref['reference_ties']}"
+print(f"| {name} | {m} | {label} | {ms:.1f} | {sh['disagreements']} of {sh['verified']} | {reference} | {to_ray} | {edge_total} | {elsewhere} | {leaks} |")
 PY
         done
     done
 done
+# The frontier: per method and setting, summed over the hard scenes.
+python3 - "$out" >>"$out" <<'PY'
+import collections, sys
+rows = [l.split("|")[1:-1] for l in open(sys.argv[1]) if l.startswith("| ") and not l.startswith("| scene")]
+tot = collections.OrderedDict()
+for r in rows:
+    name, m, setting, ms, dis, ref = (c.strip() for c in r[:6])
+    t = tot.setdefault((m, setting), [0.0, 0, 0, 0, 0])
+    t[0] += float(ms)
+    t[1] += int(dis.split(" of ")[0])
+    t[2] += int(dis.split(" of ")[1])
+    t[3] += int(ref.split(" / ")[0])
+    t[4] += int(ref.split(" / ")[1])
+print()
+print("## Summed over the hard scenes")
+print()
+print("| method | setting | shadow ms | disagree with the shadow ray | wrong against the reference (method / ray) |")
+print("|---|---|---|---|---|")
+for (m, setting), t in tot.items():
+    print(f"| {m} | {setting} | {t[0]:.1f} | {t[1]} of {t[2]} | {t[3]} / {t[4]} |")
+PY
 {
     echo
     echo "## Random scenes against the long-double reference"

@@ -165,6 +165,15 @@ int main(int argc, char **argv)
             return EXIT_IO;
         }
         have_volumes = 1;
+        if (shadow_volumes_set_precision(&volumes, (PlanePrecision)opt.plane_precision)) {
+            fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
+            shadow_volumes_free(&volumes);
+            grid_free(&grid);
+            world_free(&world);
+            scene_free(scene);
+            free(owned_output);
+            return EXIT_IO;
+        }
         report.volumes_seconds = clock_wall() - tv;
         if (cost_model_calibrate(&cost, &world, &grid, &volumes, opt.width, opt.height) == 0)
             report.cost = &cost;

@@ -9,6 +9,7 @@
 
 #include "grid.h"
 #include "shadow.h"
+#include "shadow_volumes.h"
 
 #define MAX_DIMENSION 32768
 
@@ -62,6 +63,10 @@ void options_usage(FILE *f)
             "                         hit instead of the eye where cheaper (default on)\n"
             "      --tolerance R      margin of the shadow tests, relative to the scene's\n"
             "                         coordinates (default 1e-9; for measuring speed against error)\n"
+            "      --plane-precision double|float|float-naive  how volume and hst test the\n"
+            "                         shadow polygons' planes: double (default); float with a\n"
+            "                         margin widened for float's rounding (same decisions); float\n"
+            "                         with the double margin (for measuring the error)\n"
             "      --verify-shadows   also fire the exact shadow ray at every decision and count\n"
             "                         disagreements (--stats shows them)\n"
             "      --verify-reference as --verify-shadows, and check both against a brute-force\n"
@@ -225,6 +230,19 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 opt->nth = n;
             } else {
                 snprintf(err, (size_t)errlen, "--nth '%s': expected auto, per-point or a number from 0 to 1e9", v);
+                return -1;
+            }
+        } else if (is_long(a, "--plane-precision")) {
+            if (!(v = option_value(argc, argv, &i, "--plane-precision", err, errlen)))
+                return -1;
+            if (strcmp(v, "double") == 0)
+                opt->plane_precision = PLANES_DOUBLE;
+            else if (strcmp(v, "float") == 0)
+                opt->plane_precision = PLANES_FLOAT;
+            else if (strcmp(v, "float-naive") == 0)
+                opt->plane_precision = PLANES_FLOAT_NAIVE;
+            else {
+                snprintf(err, (size_t)errlen, "--plane-precision '%s': expected double, float or float-naive", v);
                 return -1;
             }
         } else if (is_long(a, "--tolerance")) {

@@ -25,6 +25,7 @@ typedef struct {
     int quality;                  /* POV-Ray's +Q: 0..11, default 9 */
     const char *shadows;          /* method name */
     double tolerance;             /* relative margin of the shadow tests (--tolerance) */
+    int plane_precision;          /* PlanePrecision of the shadow-polygon planes (--plane-precision) */
     double nth;                   /* hst's N_th; NTH_AUTO: eq. (7) once per scene; NTH_PER_POINT */
     int verify_shadows;        /* 1 --verify-shadows, 2 --verify-reference */
     int pixel_coherence;          /* hst: counts from the neighbouring pixel (--pixel-coherence) */

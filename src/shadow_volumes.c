@@ -3,6 +3,8 @@
  * eye's depth count. */
 #include "shadow_volumes.h"
 
+#include <float.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -568,13 +570,66 @@ void shadow_volumes_free(ShadowVolumes *sv)
     free(sv->light);
     free(sv->polygons);
     free(sv->planes);
+    free(sv->planes_f);
     memset(sv, 0, sizeof *sv);
+}
+
+int shadow_volumes_set_precision(ShadowVolumes *sv, PlanePrecision p)
+{
+    sv->precision = p;
+    if (p == PLANES_DOUBLE)
+        return 0;
+    if (!sv->planes_f) {
+        sv->planes_f = malloc(sizeof *sv->planes_f * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
+        if (!sv->planes_f)
+            return -1;
+        for (int i = 0; i < sv->npolygons; i++) {
+            const ShadowPlane *pl = &sv->planes[i];
+            sv->planes_f[i] = (ShadowPlaneF){ (float)pl->normal.x, (float)pl->normal.y, (float)pl->normal.z, (float)pl->d };
+        }
+    }
+    /* Rounding n, p and d to float and the four products and sums in float
+     * moves a distance by at most about 8 units of float's last place of
+     * |n|(|px| + |py| + |pz|) + |d| <= 3M + sqrt(3)M for points and planes
+     * in the box (largest coordinate M): 16 units of 5M, to be safe. */
+    double m = 0.0;
+    const double c[6] = { sv->box_min.x, sv->box_min.y, sv->box_min.z, sv->box_max.x, sv->box_max.y, sv->box_max.z };
+    for (int k = 0; k < 6; k++)
+        m = fmax(m, fabs(c[k]));
+    double margin = p == PLANES_FLOAT ? sv->tolerance + 16.0 * FLT_EPSILON * 5.0 * m : sv->tolerance;
+    sv->float_margin = (float)margin;
+    return 0;
+}
+
+/* The float rejection: both ends clearly on one side of plane i. */
+static inline int float_same_side(const ShadowPlaneF *pl, const float a[3], const float b[3], float m)
+{
+    float s1 = pl->nx * a[0] + pl->ny * a[1] + pl->nz * a[2] - pl->d;
+    float s2 = pl->nx * b[0] + pl->ny * b[1] + pl->nz * b[2] - pl->d;
+    return (s1 > m && s2 > m) || (s1 < -m && s2 < -m);
 }
 
 int shadow_bucket_crossings(const ShadowVolumes *sv, const uint32_t *bucket, int n, Vec3 p1, Vec3 p2, int *opaque,
                             int *transparent)
 {
     double tol = sv->tolerance;
+    if (sv->precision != PLANES_DOUBLE) {
+        const float a[3] = { (float)p1.x, (float)p1.y, (float)p1.z }, b[3] = { (float)p2.x, (float)p2.y, (float)p2.z };
+        for (int i = 0; i < n; i++) {
+            if (float_same_side(&sv->planes_f[bucket[i]], a, b, sv->float_margin))
+                continue;
+            const ShadowPolygon *sp = &sv->polygons[bucket[i]];
+            int sign = 0;
+            CrossResult r = shadow_polygon_cross(sp, p1, p2, tol, &sign);
+            if (r == CROSS_UNSURE)
+                return 0;
+            if (r == CROSS_YES) {
+                *opaque += sign * sp->weight_opaque;
+                *transparent += sign * sp->weight_transparent;
+            }
+        }
+        return 1;
+    }
     for (int i = 0; i < n; i++) {
         /* Both ends clearly on one side of the plane: no crossing. */
         const ShadowPlane *pl = &sv->planes[bucket[i]];

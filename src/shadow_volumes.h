@@ -78,12 +78,28 @@ typedef struct {
     double d;
 } ShadowPlane;
 
+/* The same in single precision, for --plane-precision float. */
+typedef struct {
+    float nx, ny, nz, d;
+} ShadowPlaneF;
+
+/* How the packed planes are tested (--plane-precision): the rejection
+ * "both ends clearly on one side" is most of the work. */
+typedef enum {
+    PLANES_DOUBLE,      /* in double, with the margin */
+    PLANES_FLOAT,       /* in float, with the margin widened by float's rounding: the same decisions */
+    PLANES_FLOAT_NAIVE  /* in float with the double margin: what that costs in wrong decisions */
+} PlanePrecision;
+
 typedef struct ShadowVolumes {
     int nlights;
     LightVolumes *light;
     int npolygons;
     ShadowPolygon *polygons;
     ShadowPlane *planes;  /* planes[i] is polygons[i]'s plane */
+    PlanePrecision precision;
+    ShadowPlaneF *planes_f; /* with float precisions */
+    float float_margin;     /* their rejection margin */
     int nwelded_vertices;
     double tolerance;     /* distances below this are undecidable: fall back to the ray */
     Vec3 box_min, box_max; /* the grid box: points outside have no valid count */
@@ -95,6 +111,10 @@ typedef struct ShadowVolumes {
  * or -1 when out of memory. */
 int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye);
 void shadow_volumes_free(ShadowVolumes *sv);
+
+/* Chooses how the planes are tested (PLANES_DOUBLE after a build). Returns
+ * 0, or -1 when out of memory. */
+int shadow_volumes_set_precision(ShadowVolumes *sv, PlanePrecision p);
 
 /* Outcome of one segment/shadow polygon test. */
 typedef enum { CROSS_NONE = 0, CROSS_YES = 1, CROSS_UNSURE = 2 } CrossResult;

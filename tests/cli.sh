@@ -51,6 +51,9 @@ check "bad --pixel-coherence value: exit status 1, says what is valid" \
     '[ $status -eq 1 ] && grep -q "expected on or off" "$work/err"'
 run "$srcdir/scenes/holes.pov" --tolerance 1
 check "bad --tolerance value: exit status 1, says the range" '[ $status -eq 1 ] && grep -q "from 0 to 1e-3" "$work/err"'
+run "$srcdir/scenes/holes.pov" --plane-precision half
+check "bad --plane-precision value: exit status 1, names the valid ones" \
+    '[ $status -eq 1 ] && grep -q "expected double, float or float-naive" "$work/err"'
 run "$srcdir/scenes/holes.pov" --nth lots
 check "bad --nth value: exit status 1, says what is valid" '[ $status -eq 1 ] && grep -q "per-point" "$work/err"'
 run "$srcdir/scenes/holes.pov" -o "$work/no/such/folder/x.png" --width 16 --height 12
