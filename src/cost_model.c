@@ -12,7 +12,8 @@
 
 #define SAMPLE_GRID 24      /* camera rays per axis whose hits are the sample points */
 #define SAMPLES (SAMPLE_GRID * SAMPLE_GRID)
-#define MIN_TIMING 0.0008   /* seconds each cost is timed for, at least */
+#define MIN_TIMING 0.0005   /* seconds each round of a cost is timed for, at least */
+#define ROUNDS 5            /* rounds per cost; the fastest counts */
 
 typedef struct {
     uint64_t s;
@@ -202,56 +203,69 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Shad
     m->p = ntests > 0 ? (double)hits / (double)ntests : 0.0;
     m->n_o = m->alpha * m->n_c;
 
+    /* Each cost is the fastest of ROUNDS timings on the thread's CPU clock:
+     * on a shared machine a timing can only be slowed down (preempted,
+     * caches flushed by others), never sped up, and eq. 7 turns a C_o
+     * inflated by one preemption into an N_th off by a factor of ten. */
     volatile double sink = 0.0;
     /* C_o: ray/polygon tests on the pairs the walks met. */
     if (nkeep > 0) {
-        long n = 0;
-        double t0 = clock_wall(), t;
-        do {
-            for (int i = 0; i < nkeep; i++)
-                sink += intersect_polygon(w, &w->polygons[tests[i].polygon], tests[i].ray.org, tests[i].ray.dir);
-            n += nkeep;
-        } while ((t = clock_wall() - t0) < MIN_TIMING);
-        m->c_o = t / (double)n;
+        m->c_o = HUGE_VAL;
+        for (int round = 0; round < ROUNDS; round++) {
+            long n = 0;
+            double t0 = clock_thread_cpu(), t;
+            do {
+                for (int i = 0; i < nkeep; i++)
+                    sink += intersect_polygon(w, &w->polygons[tests[i].polygon], tests[i].ray.org, tests[i].ray.dir);
+                n += nkeep;
+            } while ((t = clock_thread_cpu() - t0) < MIN_TIMING);
+            m->c_o = fmin(m->c_o, t / (double)n);
+        }
     }
     /* C_i and C_c: walk set-ups, then whole walks; C_c is the difference
      * per cell step, both timed in alternation so drifts cancel. */
     if (nrays > 0) {
-        long n = 0, steps = 0;
-        double t_begin = 0.0, t_walk = 0.0;
-        GridWalk walk;
-        do {
-            double t0 = clock_wall();
-            for (int i = 0; i < nrays; i++)
-                sink += grid_walk_begin(g, rays[i].org, rays[i].dir, 0.0, rays[i].tmax, &walk);
-            double t1 = clock_wall();
-            for (int i = 0; i < nrays; i++) {
-                if (!grid_walk_begin(g, rays[i].org, rays[i].dir, 0.0, rays[i].tmax, &walk))
-                    continue;
-                while (grid_walk_next(g, &walk))
-                    steps++;
-                sink += walk.cell[0];
-            }
-            t_walk += clock_wall() - t1;
-            t_begin += t1 - t0;
-            n += nrays;
-        } while (t_begin + t_walk < 2 * MIN_TIMING);
-        m->c_i = t_begin / (double)n;
-        m->c_c = steps > 0 ? fmax(t_walk - t_begin, 0.0) / (double)steps : 0.0;
+        m->c_i = m->c_c = HUGE_VAL;
+        for (int round = 0; round < ROUNDS; round++) {
+            long n = 0, steps = 0;
+            double t_begin = 0.0, t_walk = 0.0;
+            GridWalk walk;
+            do {
+                double t0 = clock_thread_cpu();
+                for (int i = 0; i < nrays; i++)
+                    sink += grid_walk_begin(g, rays[i].org, rays[i].dir, 0.0, rays[i].tmax, &walk);
+                double t1 = clock_thread_cpu();
+                for (int i = 0; i < nrays; i++) {
+                    if (!grid_walk_begin(g, rays[i].org, rays[i].dir, 0.0, rays[i].tmax, &walk))
+                        continue;
+                    while (grid_walk_next(g, &walk))
+                        steps++;
+                    sink += walk.cell[0];
+                }
+                t_walk += clock_thread_cpu() - t1;
+                t_begin += t1 - t0;
+                n += nrays;
+            } while (t_begin + t_walk < 2 * MIN_TIMING);
+            m->c_i = fmin(m->c_i, t_begin / (double)n);
+            m->c_c = fmin(m->c_c, steps > 0 ? fmax(t_walk - t_begin, 0.0) / (double)steps : 0.0);
+        }
     }
     /* C_s: segment/shadow polygon tests on the scene's shadow polygons. */
     if (sv && sv->npolygons > 0 && nrays > 1) {
-        long n = 0;
-        double t0 = clock_wall(), t;
+        m->c_s = HUGE_VAL;
         int sign = 0;
-        do {
-            for (int i = 0; i + 1 < nrays; i++) {
-                const ShadowPolygon *sp = &sv->polygons[(size_t)i * 7919u % (size_t)sv->npolygons];
-                sink += shadow_polygon_cross(sp, rays[i].org, rays[i + 1].org, sv->tolerance, &sign) + sign;
-            }
-            n += nrays - 1;
-        } while ((t = clock_wall() - t0) < MIN_TIMING);
-        m->c_s = t / (double)n;
+        for (int round = 0; round < ROUNDS; round++) {
+            long n = 0;
+            double t0 = clock_thread_cpu(), t;
+            do {
+                for (int i = 0; i + 1 < nrays; i++) {
+                    const ShadowPolygon *sp = &sv->polygons[(size_t)i * 7919u % (size_t)sv->npolygons];
+                    sink += shadow_polygon_cross(sp, rays[i].org, rays[i + 1].org, sv->tolerance, &sign) + sign;
+                }
+                n += nrays - 1;
+            } while ((t = clock_thread_cpu() - t0) < MIN_TIMING);
+            m->c_s = fmin(m->c_s, t / (double)n);
+        }
     }
     (void)sink;
     free(rays);
