@@ -228,8 +228,6 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             double n = strtod(v, &end);
             if (strcmp(v, "auto") == 0) {
                 opt->nth = NTH_AUTO;
-    opt->pixel_coherence = 1;
-    opt->tolerance = GRID_TOLERANCE;
             } else if (strcmp(v, "per-point") == 0) {
                 opt->nth = NTH_PER_POINT;
             } else if (end != v && *end == '\0' && n >= 0.0 && n <= 1e9) {
