@@ -20,7 +20,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/.." && pwd)
 build=$(cd "${1:-.}" && pwd)
 command -v python3 >/dev/null || { echo "hard: python3 not found (Debian package: python3)" >&2; exit 3; }
-[ -x "$build/tests/compare_images" ] && [ -x "$build/tests/test_agreement" ] ||
+[ -x "$build/hstrace" ] && [ -x "$build/tests/test_agreement" ] ||
     { echo "hard: build the test programs first (make check)" >&2; exit 3; }
 work=$(mktemp -d "${TMPDIR:-/tmp}/hsthard.XXXXXX")
 trap 'rm -rf "$work"' EXIT
@@ -55,7 +55,7 @@ for scene in "$src"/scenes/hard/*.pov; do
     name=$(basename "$scene" .pov)
     ref="$src/reference/hard/$name"
     leaks=""
-    grep -q '^// hstrace-regress: povray-leaks' "$scene" && leaks="--pov-leaks-ok 1"
+    grep -q '^// hstrace-regress: povray-leaks' "$scene" && leaks="--allow-a-leaks"
     "$build/hstrace" "$scene" $size +Q3 -o "$work/$name.q3.exr"
     for m in $methods; do
         for setting in $settings; do
@@ -72,22 +72,23 @@ for scene in "$src"/scenes/hard/*.pov; do
                 --stats-json "$work/$name.$m.ref.json" -o "$work/x.exr"
             # shellcheck disable=SC2086
             "$build/hstrace" "$scene" $size +Q4 --shadows "$m" $opts -o "$work/$name.q4.exr"
-            # shellcheck disable=SC2086 # $leaks is one option and its value, or nothing
-            mask=$("$build/tests/compare_images" mask "$ref.q3.exr" "$ref.q4.exr" "$work/$name.q3.exr" \
-                   "$work/$name.q4.exr" --share 1 $leaks || true)
+            # shellcheck disable=SC2086 # $leaks is one option, or nothing
+            mask=$("$build/hstrace" compare "$ref.q4.exr" "$work/$name.q4.exr" --json \
+                   --mask-a "$ref.q3.exr" "$ref.q4.exr" --mask-b "$work/$name.q3.exr" "$work/$name.q4.exr" $leaks || true)
             python3 - "$work" "$name" "$m" "$label" "$mask" >>"$out" <<'PY'
-import json, re, statistics, sys
+import json, statistics, sys
 work, name, m, label, mask = sys.argv[1:6]
 runs = [json.load(open(f"{work}/{name}.{m}.{i}.json")) for i in (1, 2, 3)]
 ref = json.load(open(f"{work}/{name}.{m}.ref.json"))["shadows"]
 sh = runs[0]["shadows"]
 ms = 1000 * statistics.median(r["time"]["shadow_testing"] for r in runs)
 to_ray = sum(sh.get(k, 0) for k in ("unsure", "touching", "in_plane"))
-num = lambda pat: (re.search(pat, mask) or [None, "?"])[1]
-edges, elsewhere = num(r"(\d+) at shadow edges"), num(r"(\d+) elsewhere")
-sil = num(r"(\d+) at silhouettes")
-leaks = num(r"(\d+) away from edges where POV-Ray") if "POV-Ray lets" in mask else "-"
-edge_total = int(edges) + int(sil) if edges != "?" and sil != "?" else "?"
+try:
+    mk = json.loads(mask)["masks"]
+    edge_total, elsewhere = mk["shadow_edge"] + mk["silhouette"], mk["interior"]
+    leaks = mk["a_leaks"] if mk["allow_a_leaks"] else "-"
+except (ValueError, KeyError, TypeError):
+    edge_total = elsewhere = leaks = "?"
 reference = f"{ref['reference_wrong']} / {ref['reference_ray_wrong']} / {ref['reference_ties']}"
 print(f"| {name} | {m} | {label} | {ms:.1f} | {sh['disagreements']} of {sh['verified']} | {reference} | {to_ray} | {edge_total} | {elsewhere} | {leaks} |")
 PY

@@ -1,4 +1,5 @@
-/* hstrace: scene file -> description -> polygons and grid -> rays -> image. */
+/* hstrace: scene file -> description -> polygons and grid -> rays -> image;
+ * `hstrace compare` compares images (compare.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,6 +7,7 @@
 #include <unistd.h>
 
 #include "config.h"
+#include "compare.h"
 #include "grid.h"
 #include "image.h"
 #include "options.h"
@@ -61,6 +63,8 @@ static int online_cpus(void)
 
 int main(int argc, char **argv)
 {
+    if (argc > 1 && strcmp(argv[1], "compare") == 0)
+        return compare_main(argc - 1, argv + 1);
     double wall0 = clock_wall();
     Options opt;
     char err[1024];

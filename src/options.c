@@ -50,8 +50,10 @@ void options_usage(FILE *f)
 {
     fprintf(f,
             "usage: hstrace SCENE.pov [options]\n"
+            "       hstrace compare A B [options]   (see hstrace compare --help)\n"
             "\n"
-            "Renders a POV-Ray scene made of polygons, with hybrid shadow testing.\n"
+            "Renders a POV-Ray scene made of polygons, with hybrid shadow testing, or compares\n"
+            "two images and two renderers' shadow masks.\n"
             "\n"
             "  -o, --output FILE      image to write (.exr, .png or .ppm; default SCENE.png)\n"
             "      --width N          image width in pixels (default 320)\n"
@@ -106,6 +108,17 @@ static int is_long(const char *arg, const char *name)
 {
     size_t n = strlen(name);
     return strncmp(arg, name, n) == 0 && (arg[n] == '\0' || arg[n] == '=');
+}
+
+/* The same two helpers for the subcommands' parsers (compare_options.c). */
+const char *options_value(int argc, char **argv, int *i, const char *name, char *err, int errlen)
+{
+    return option_value(argc, argv, i, name, err, errlen);
+}
+
+int options_is_long(const char *arg, const char *name)
+{
+    return is_long(arg, name);
 }
 
 static int add_include(Options *opt, const char *dir, char *err, int errlen)
@@ -222,8 +235,6 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             double n = strtod(v, &end);
             if (strcmp(v, "auto") == 0) {
                 opt->nth = NTH_AUTO;
-    opt->pixel_coherence = 1;
-    opt->tolerance = GRID_TOLERANCE;
             } else if (strcmp(v, "per-point") == 0) {
                 opt->nth = NTH_PER_POINT;
             } else if (end != v && *end == '\0' && n >= 0.0 && n <= 1e9) {

@@ -43,4 +43,10 @@ typedef struct {
 int options_parse(int argc, char **argv, Options *opt, char *err, int errlen);
 void options_usage(FILE *f);
 
+/* For subcommands' parsers: is arg the long option name, alone or as
+ * "name=value"? And its value ("--name=value" or "--name value", advancing
+ * *i), or NULL with a message in err. */
+int options_is_long(const char *arg, const char *name);
+const char *options_value(int argc, char **argv, int *i, const char *name, char *err, int errlen);
+
 #endif

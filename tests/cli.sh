@@ -79,4 +79,10 @@ run "$srcdir/scenes/desk.pov" --width 32 --height 24 -o "$work/s.ppm" --stats --
 check "--stats prints the Table 2 rows" 'grep -q "shadow testing" "$work/err" && grep -q preprocessing "$work/err"'
 check "--stats-json writes JSON with the time split" 'grep -q "\"shadow_testing\"" "$work/s.json"'
 check "PPM output is binary P6" '[ "$(head -c 2 "$work/s.ppm")" = P6 ]'
+
+# Options keep their values whatever follows them.
+run "$srcdir/scenes/desk.pov" --width 32 --height 24 -o "$work/o.png" --pixel-coherence off --tolerance 0 --nth auto \
+    --stats-json "$work/o.json"
+check "--pixel-coherence off and --tolerance 0 stay set after --nth auto" \
+    '[ $status -eq 0 ] && grep -q "\"coherent\": 0," "$work/o.json" && grep -q "\"tolerance\": 0," "$work/o.json"'
 echo "1..$n"

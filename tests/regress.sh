@@ -4,24 +4,25 @@
 # reference/hard/NAME*.exr): hstrace's full render against POV-Ray's
 # (RMSE <= 0.01, pixels off by > 0.02 <= 1%), and hstrace's shadow mask
 # (+Q3 vs +Q4) against POV-Ray's (<= 0.1% of the pixels disagree, and only
-# at shadow edges or silhouettes; see tests/compare_images.c for the exact
-# rules). The hard cases are held to the rule of the hard-case issue: the
+# at shadow edges or silhouettes), both by `hstrace compare` with POV-Ray's
+# renders as A and hstrace's as B (src/mask_compare.h has the exact rules
+# of the masks). The hard cases are held to the rule of the hard-case issue: the
 # masks agree except at edges, however many edge pixels there are (they are
 # built to put ties on pixel centres); their full-image figures are printed
 # as comments. A hard scene marked "// hstrace-regress: povray-leaks" aims
 # shadow rays at shared mesh edges, where POV-Ray's ray/triangle test lets
-# light through: pixels shadowed by hstrace only are counted as its leaks. With povray installed
+# light through: pixels shadowed by hstrace only are counted as its leaks
+# (--allow-a-leaks). With povray installed
 # ($POVRAY) the references are re-rendered first, so they cannot go stale;
 # otherwise the committed ones in reference/ are used.
 #
 # Environment: top_srcdir, top_builddir (default .), POVRAY (path or name of
 # povray, may be empty), HST_REGRESS_KEEP=1 keeps the renders and the mask
-# maps (compare_images --map) and prints where.
+# maps (hstrace compare --mask-map) and prints where.
 set -u
 srcdir=${top_srcdir:-.}
 builddir=${top_builddir:-.}
 hstrace="$builddir/hstrace"
-compare="$builddir/tests/compare_images"
 width=320
 height=240
 work=$(mktemp -d "${TMPDIR:-/tmp}/hstregress.XXXXXX") || { echo "Bail out! cannot make a temporary folder"; exit 1; }
@@ -36,9 +37,20 @@ n=0
 ok() { n=$((n + 1)); echo "ok $n - $*"; }
 not_ok() { n=$((n + 1)); echo "not ok $n - $*"; }
 
-for tool in "$hstrace" "$compare"; do
-    [ -x "$tool" ] || { echo "Bail out! $tool is not built"; exit 1; }
-done
+[ -x "$hstrace" ] || { echo "Bail out! $hstrace is not built"; exit 1; }
+
+# compare A B [options]: runs hstrace compare; $status is its exit status and
+# $report its report on one line, without the line naming the files and, when
+# it compares shadow masks, without the figures of A and B themselves.
+compare() {
+    report=$("$hstrace" compare "$@" 2>&1)
+    status=$?
+    report=$(printf '%s\n' "$report" | awk '
+        NR == 1 && / vs .*, linear RGB$/ { next }
+        /^ *shadow masks:/ { out = "" }
+        { sub(/^ +/, ""); out = out (out == "" ? "" : "; ") $0 }
+        END { print out }')
+}
 
 refs="$srcdir/reference"
 povray=""
@@ -68,8 +80,8 @@ for scene in "$srcdir"/scenes/*.pov "$srcdir"/scenes/hard/*.pov; do
             not_ok "$name: hstrace renders at +Q$q"; sed 's/^/# /' "$work/err"
         fi
     done
-    full=$("$compare" full "$refs/$name.exr" "$work/$name.exr" --rmse 0.01 --threshold 0.02 --share 0.01 2>&1)
-    full_status=$?
+    compare "$refs/$name.exr" "$work/$name.exr" --threshold 0.02 --max-rmse 0.01 --max-share 0.01
+    full=$report full_status=$status
     share=0.001 leaks=""
     case $name in
         hard/*)
@@ -79,17 +91,20 @@ for scene in "$srcdir"/scenes/*.pov "$srcdir"/scenes/hard/*.pov; do
             # but at edges (any number of edge pixels), and the full image
             # is reported, not asserted.
             share=1
-            grep -q '^// hstrace-regress: povray-leaks' "$scene" && leaks="--pov-leaks-ok 1"
+            grep -q '^// hstrace-regress: povray-leaks' "$scene" && leaks="--allow-a-leaks"
             echo "# $name: full image against POV-Ray (not asserted): $full" ;;
         *)
             if [ $full_status -eq 0 ]; then ok "$name: image matches POV-Ray: $full"; else not_ok "$name: image matches POV-Ray: $full"; fi ;;
     esac
-    # shellcheck disable=SC2086 # $leaks is one option and its value, or nothing
-    if out=$("$compare" mask "$refs/$name.q3.exr" "$refs/$name.q4.exr" "$work/$name.q3.exr" "$work/$name.q4.exr" \
-             --share $share $leaks --map "$work/$name.mask-map.png" 2>&1); then
-        ok "$name: shadow mask matches POV-Ray: $out"
+    # A and B are the +Q4 renders; the masks come from the +Q3/+Q4 pairs.
+    # shellcheck disable=SC2086 # $leaks is one option, or nothing
+    compare "$refs/$name.q4.exr" "$work/$name.q4.exr" --threshold 0.02 \
+        --mask-a "$refs/$name.q3.exr" "$refs/$name.q4.exr" --mask-b "$work/$name.q3.exr" "$work/$name.q4.exr" \
+        --max-mask-share $share --max-interior 0 $leaks --mask-map "$work/$name.mask-map.png"
+    if [ $status -eq 0 ]; then
+        ok "$name: shadow mask matches POV-Ray: $report"
     else
-        not_ok "$name: shadow mask matches POV-Ray: $out"
+        not_ok "$name: shadow mask matches POV-Ray: $report"
     fi
 done
 echo "1..$n"

@@ -1,0 +1,103 @@
+/* `hstrace compare`: read the images, compare them, report, write the maps,
+ * and say by the exit status whether the limits were met. */
+#include "compare.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "compare_options.h"
+#include "compare_report.h"
+#include "image.h"
+#include "image_compare.h"
+#include "mask_compare.h"
+
+#define PROGRAM "hstrace compare"
+
+/* The image module's messages read "cannot read 'PATH': reason"; this
+ * command names the file first, as "PATH: reason", so the reason alone. */
+static const char *reason(const char *err, const char *verb, const char *path)
+{
+    size_t nv = strlen(verb), np = strlen(path);
+    if (strncmp(err, verb, nv) == 0 && strncmp(err + nv, " '", 2) == 0 && strncmp(err + nv + 2, path, np) == 0 &&
+        strncmp(err + nv + 2 + np, "': ", 3) == 0)
+        return err + nv + 2 + np + 3;
+    return err;
+}
+
+static int write_image(const char *path, const Image *img)
+{
+    ImageWriteOptions wo;
+    char err[1024];
+    memset(&wo, 0, sizeof wo); /* half-float EXR, 8-bit sRGB PNG and PPM */
+    if (image_write(path, img, &wo, err, sizeof err) == 0)
+        return 0;
+    fprintf(stderr, PROGRAM ": %s: cannot write: %s\n", path, reason(err, "cannot write", path));
+    return -1;
+}
+
+int compare_main(int argc, char **argv)
+{
+    CompareOptions opt;
+    char err[1024];
+    if (compare_options_parse(argc, argv, &opt, err, sizeof err)) {
+        fprintf(stderr, PROGRAM ": %s\n", err);
+        return COMPARE_EXIT_TROUBLE;
+    }
+    if (opt.help) {
+        compare_options_usage(stdout);
+        return COMPARE_EXIT_WITHIN;
+    }
+
+    /* A, B, then A's +Q3 and +Q4, B's +Q3 and +Q4. */
+    const char *path[6] = {opt.a, opt.b, opt.mask_a[0], opt.mask_a[1], opt.mask_b[0], opt.mask_b[1]};
+    int nimages = opt.mask_a[0] ? 6 : 2;
+    Image img[6], diff, map;
+    memset(img, 0, sizeof img);
+    memset(&diff, 0, sizeof diff);
+    memset(&map, 0, sizeof map);
+    int status = COMPARE_EXIT_TROUBLE;
+    for (int k = 0; k < nimages; k++)
+        if (image_read(path[k], &img[k], 0.0, err, sizeof err)) {
+            fprintf(stderr, PROGRAM ": %s: %s\n", path[k], reason(err, "cannot read", path[k]));
+            goto done;
+        }
+    for (int k = 1; k < nimages; k++)
+        if (img[k].width != img[0].width || img[k].height != img[0].height) {
+            fprintf(stderr, PROGRAM ": %s: %dx%d pixels, but %s has %dx%d\n", path[k], img[k].width, img[k].height,
+                    path[0], img[0].width, img[0].height);
+            goto done;
+        }
+
+    CompareResult r;
+    memset(&r, 0, sizeof r);
+    if (image_compare(&img[0], &img[1], opt.threshold, &r.image) ||
+        (opt.diff && image_compare_heat_map(&img[0], &img[1], opt.threshold, &diff))) {
+        fprintf(stderr, PROGRAM ": out of memory\n");
+        goto done;
+    }
+    if (nimages == 6) {
+        MaskCompareOptions mo = {.loss_tolerance = opt.threshold, .allow_a_leaks = opt.allow_a_leaks};
+        if (mask_compare(&img[2], &img[3], &img[4], &img[5], &mo, &r.masks, opt.mask_map ? &map : NULL)) {
+            fprintf(stderr, PROGRAM ": out of memory\n");
+            goto done;
+        }
+        r.has_masks = 1;
+    }
+    compare_judge(&opt, &r);
+    if (opt.json)
+        compare_report_json(stdout, &opt, &r);
+    else
+        compare_report_text(stdout, &opt, &r);
+    fflush(stdout);
+    status = r.within ? COMPARE_EXIT_WITHIN : COMPARE_EXIT_OUTSIDE;
+    if (opt.diff && write_image(opt.diff, &diff))
+        status = COMPARE_EXIT_TROUBLE;
+    if (opt.mask_map && write_image(opt.mask_map, &map))
+        status = COMPARE_EXIT_TROUBLE;
+done:
+    for (int k = 0; k < nimages; k++)
+        image_free(&img[k]);
+    image_free(&diff);
+    image_free(&map);
+    return status;
+}
