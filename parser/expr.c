@@ -255,7 +255,7 @@ static int is_float_keyword(int kw)
     case KW_atanh: case KW_ceil: case KW_clock: case KW_clock_on: case KW_clock_delta: case KW_cos:
     case KW_cosh: case KW_defined: case KW_degrees: case KW_div: case KW_exp: case KW_floor: case KW_int:
     case KW_ln: case KW_log: case KW_max: case KW_min: case KW_mod: case KW_pi: case KW_pow:
-    case KW_radians: case KW_select: case KW_sin: case KW_sinh: case KW_sqr: case KW_sqrt: case KW_tan:
+    case KW_radians: case KW_select: case KW_sin: case KW_sinh: case KW_sqrt: case KW_tan:
     case KW_tanh: case KW_true: case KW_false: case KW_yes: case KW_no: case KW_on: case KW_off:
     case KW_version: case KW_image_width: case KW_image_height: case KW_vdot: case KW_vlength:
     case KW_strlen: case KW_strcmp: case KW_val: case KW_asc: case KW_initial_frame: case KW_final_frame:
@@ -523,7 +523,6 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
     case KW_ln: val = log(float_param(p)); break;
     case KW_log: val = log10(float_param(p)); break;
     case KW_sqrt: val = sqrt(float_param(p)); break;
-    case KW_sqr: val = float_param(p); val *= val; break;
     case KW_pow: float_params2(p, &a, &b); val = pow(a, b); break;
     case KW_mod: float_params2(p, &a, &b); val = b == 0.0 ? HUGE_VAL : fmod(a, b); break;
     case KW_div: float_params2(p, &a, &b); val = b == 0.0 ? HUGE_VAL : trunc(a / b); break;

@@ -67,6 +67,8 @@ static _Noreturn void poison(Parser *p, const char *what, SourcePos at)
 
 void unsupported(Parser *p, const Token *t)
 {
+    if (t->kw == KW_sqr) /* a function-only keyword: POV-Ray 3.7 rejects it here too */
+        parse_fail(p, t->pos, "'sqr' is only allowed inside function { }; use pow(X, 2)");
     char buf[96];
     snprintf(buf, sizeof buf, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
     if (p->declaring)

@@ -352,6 +352,8 @@ static void test_errors(void)
     expect_error("sphere { 0, 1 }", 1, 1, "'sphere' is not supported by hstrace", "unsupported object");
     expect_error("light_source { 0, 1 spotlight }", 1, 21, "'spotlight' is not supported", "spotlight");
     expect_error("#declare I = 0;\n#while (1)\n#end\n", 2, 1, "loop iterations", "runaway #while");
+    expect_error("#declare A = sqr(3);\n", 1, 14, "'sqr' is only allowed inside function { }",
+                 "sqr outside a function, as POV-Ray 3.7 says");
     expect_error("#include \"nonexistent.inc\"\n", 1, 10, "cannot open include file 'nonexistent.inc' (searched: ",
                  "missing include file");
     tap_ok(err.is_io, "missing include file is an I/O error");
