@@ -47,6 +47,14 @@
  *       (shadowed in both, from other lights), dim when at an edge, bright
  *       when not.
  *
+ *   compare_images encoded LINEAR DISPLAY --curve srgb|povray|gamma|raw [--gamma G] [--steps N]
+ *       Checks the display encoding of a PNG or PPM: every RGB sample of
+ *       DISPLAY (read as its integer codes) against the code the curve gives
+ *       the same sample of LINEAR (an EXR): srgb is IEC 61966-2-1's formula
+ *       in double precision, povray hstrace's own POV-Ray encoder, gamma a
+ *       pure power 1/G (default 2.2), raw no curve; all clamp to 0..1 and
+ *       round. Exit 0 when no sample is more than N codes off (default 1).
+ *
  * Prints its figures on one line. Exit status 1 when outside the limits (or
  * when an image holds NaN or infinite values), 2 on bad usage, unreadable
  * files or mismatched sizes. */
@@ -56,6 +64,7 @@
 #include <string.h>
 
 #include "image.h"
+#include "image_codec.h"
 
 /* A pixel is in a shadow mask when some channel changes by more than this
  * between the +Q3 and +Q4 renders. The renders are half floats: 11
@@ -163,7 +172,8 @@ static int parse_options(int argc, char **argv, int first, const Option *opts, i
 static void usage(void)
 {
     fprintf(stderr, "usage: compare_images full A B [--rmse R] [--threshold T] [--share S]\n"
-                    "       compare_images mask POV_Q3 POV_Q4 HST_Q3 HST_Q4 [--share S] [--map FILE] [--pov-leaks-ok 1]\n");
+                    "       compare_images mask POV_Q3 POV_Q4 HST_Q3 HST_Q4 [--share S] [--map FILE] [--pov-leaks-ok 1]\n"
+                    "       compare_images encoded LINEAR DISPLAY --curve srgb|povray|gamma|raw [--gamma G] [--steps N]\n");
 }
 
 static int full(int argc, char **argv)
@@ -219,6 +229,68 @@ static int full(int argc, char **argv)
     image_free(&a);
     image_free(&b);
     return ok ? 0 : 1;
+}
+
+static double srgb_formula(double x)
+{
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1 / 2.4) - 0.055;
+}
+
+static int encoded(int argc, char **argv)
+{
+    double steps = 1, gamma = 2.2;
+    const char *curve = NULL;
+    const Option opts[] = {{"--steps", &steps, NULL}, {"--gamma", &gamma, NULL}, {"--curve", NULL, &curve}};
+    if (parse_options(argc, argv, 4, opts, 3) || curve == NULL ||
+        (strcmp(curve, "srgb") && strcmp(curve, "povray") && strcmp(curve, "gamma") && strcmp(curve, "raw")) ||
+        !(gamma > 0)) {
+        usage();
+        return 2;
+    }
+    Image lin, disp;
+    char err[512];
+    if (load(argv[2], &lin))
+        return 2;
+    /* Gamma 1 reads the codes as they are: sample = code / 255. */
+    disp.rgba = NULL;
+    if (image_read(argv[3], &disp, 1.0, err, sizeof err)) {
+        fprintf(stderr, "compare_images: %s\n", err);
+        image_free(&lin);
+        return 2;
+    }
+    if (!same_size(&lin, &disp, argv[2], argv[3])) {
+        image_free(&lin);
+        image_free(&disp);
+        return 2;
+    }
+    ImageTransfer pov;
+    image_transfer_init(&pov, 0.0);
+    long off = 0, n = (long)lin.width * lin.height;
+    double worst = 0;
+    for (long i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++) {
+            float x = lin.rgba[4 * i + k];
+            double e;
+            if (strcmp(curve, "povray") == 0)
+                e = image_transfer_encode(&pov, x);
+            else if (strcmp(curve, "srgb") == 0)
+                e = srgb_formula(x > 0 ? x : 0);
+            else if (strcmp(curve, "gamma") == 0)
+                e = pow(x > 0 ? x : 0, 1 / gamma);
+            else
+                e = x;
+            long want = (long)image_quantize((float)e, 255);
+            long got = lround(disp.rgba[4 * i + k] * 255.0);
+            double d = fabs((double)(got - want));
+            off += d > 0;
+            if (d > worst)
+                worst = d;
+        }
+    printf("curve %s: %ld of %ld samples differ, by at most %.0f codes (limit %.0f)\n", curve, off, 3 * n, worst,
+           steps);
+    image_free(&lin);
+    image_free(&disp);
+    return worst <= steps ? 0 : 1;
 }
 
 /* Is q3 brighter than q4 in some channel (brighter_only), or different? */
@@ -438,6 +510,8 @@ int main(int argc, char **argv)
         return full(argc, argv);
     if (argc >= 6 && strcmp(argv[1], "mask") == 0)
         return mask(argc, argv);
+    if (argc >= 4 && strcmp(argv[1], "encoded") == 0)
+        return encoded(argc, argv);
     usage();
     return 2;
 }
