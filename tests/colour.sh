@@ -20,7 +20,7 @@ shipped="$srcdir/data/ocio/config.ocio"
 gamma22="$srcdir/tests/ocio/gamma22.ocio"
 work=$(mktemp -d "${TMPDIR:-/tmp}/hstcolour.XXXXXX") || { echo "Bail out! cannot make a temporary folder"; exit 1; }
 trap 'rm -rf "$work"' EXIT
-unset OCIO
+unset OCIO OCIO_ACTIVE_DISPLAYS OCIO_ACTIVE_VIEWS OCIO_INACTIVE_COLORSPACES
 n=0
 check() { # description, then a shell condition
     n=$((n + 1)); d=$1; shift
