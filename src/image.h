@@ -3,6 +3,8 @@
 #ifndef HST_IMAGE_H
 #define HST_IMAGE_H
 
+#include "colour.h"
+
 typedef struct {
     int width, height;
     float *rgba; /* width*height*4, row 0 at the top, linear light; colour
@@ -24,7 +26,16 @@ typedef struct {
     /* Display encoding for PNG/PPM, as POV-Ray 3.7 does: 0 means sRGB, any
      * other value a power-law gamma (file_gamma). */
     double display_gamma;
+    /* OpenColorIO's display/view transform for PNG and PPM, replacing the
+     * curve above (display_gamma is then unused; no gAMA or sRGB chunk is
+     * written, since the view's curve is the config's to say); NULL:
+     * POV-Ray's encoding. */
+    const ColourDisplay *display;
     ImageExrCompression exr_compression; /* 0: ZIP */
+    /* The EXR's chromaticities attribute (CIE xy of red, green, blue and
+     * white), written when have_chromaticities. */
+    int have_chromaticities;
+    float chromaticities[8];
 } ImageWriteOptions;
 
 int image_alloc(Image *img, int width, int height);

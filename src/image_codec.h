@@ -37,6 +37,27 @@ unsigned image_quantize(float encoded, unsigned max);
  * survive the clamp. out[3] is set only when with_alpha. */
 void image_encode_pixel(const ImageTransfer *t, const float rgba[4], unsigned max, int with_alpha, unsigned out[4]);
 
+/* One row at a time, for the writers: POV-Ray's encoding (image_encode_pixel)
+ * or, with a display transform, the same un-premultiplied colour through
+ * OpenColorIO's display/view transform instead of the curve, then the same
+ * quantization. */
+typedef struct {
+    ImageTransfer transfer;       /* the curve, and the PNG gAMA value */
+    const ColourDisplay *display; /* NULL: the curve */
+    unsigned max;
+    int with_alpha, width;
+    unsigned *samples; /* 4 per pixel; [3] set only with alpha */
+    float *scratch;    /* 3 per pixel, for the display transform */
+} ImageRowEncoder;
+
+/* Returns 0, or -1 when out of memory. */
+int image_row_encoder_init(ImageRowEncoder *e, const ImageWriteOptions *opt, int width, unsigned max,
+                           int with_alpha);
+/* Encodes width pixels of linear premultiplied RGBA into e->samples.
+ * Returns 0, or -1 with a message when the display transform fails. */
+int image_row_encode(ImageRowEncoder *e, const float *rgba, char *err, int errlen);
+void image_row_encoder_free(ImageRowEncoder *e);
+
 /* Decoding table for integer samples 0..max (max <= 65535): linear values.
  * Returns NULL when out of memory. Free with free(). */
 float *image_transfer_decode_table(const ImageTransfer *t, unsigned max);

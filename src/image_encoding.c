@@ -1,4 +1,5 @@
-/* The display encoding of PNG and PPM files, as POV-Ray 3.7 computes it. */
+/* The display encoding of PNG and PPM files, as POV-Ray 3.7 computes it, or
+ * through an OpenColorIO display transform. */
 #include "image_codec.h"
 
 #include <math.h>
@@ -57,15 +58,16 @@ unsigned image_quantize(float e, unsigned max)
     return (unsigned)floorf(e * (float)max + 0.5f);
 }
 
-void image_encode_pixel(const ImageTransfer *t, const float rgba[4], unsigned max, int with_alpha, unsigned out[4])
+/* The colour POV-Ray encodes and the alpha it stores (see image_codec.h). */
+static float straight_colour(const float rgba[4], int with_alpha, float rgb[3])
 {
-    float r = rgba[0], g = rgba[1], b = rgba[2];
+    float r = rgba[0], g = rgba[1], b = rgba[2], a = 1.0f;
 
     if (with_alpha) {
-        float a = rgba[3];
         /* POV-Ray's greyscale() sums in double with these weights. */
         float bright = (float)(0.297 * r + 0.589 * g + 0.114 * b);
         float div;
+        a = rgba[3];
         if (bright > a)
             a = bright < 1.0f ? bright : 1.0f;
         /* Fully transparent: divide by a tiny alpha instead (POV-Ray's
@@ -74,11 +76,70 @@ void image_encode_pixel(const ImageTransfer *t, const float rgba[4], unsigned ma
         r /= div;
         g /= div;
         b /= div;
-        out[3] = image_quantize(a, max);
     }
-    out[0] = image_quantize(image_transfer_encode(t, r), max);
-    out[1] = image_quantize(image_transfer_encode(t, g), max);
-    out[2] = image_quantize(image_transfer_encode(t, b), max);
+    rgb[0] = r;
+    rgb[1] = g;
+    rgb[2] = b;
+    return a;
+}
+
+void image_encode_pixel(const ImageTransfer *t, const float rgba[4], unsigned max, int with_alpha, unsigned out[4])
+{
+    float rgb[3];
+    float a = straight_colour(rgba, with_alpha, rgb);
+
+    if (with_alpha)
+        out[3] = image_quantize(a, max);
+    out[0] = image_quantize(image_transfer_encode(t, rgb[0]), max);
+    out[1] = image_quantize(image_transfer_encode(t, rgb[1]), max);
+    out[2] = image_quantize(image_transfer_encode(t, rgb[2]), max);
+}
+
+int image_row_encoder_init(ImageRowEncoder *e, const ImageWriteOptions *opt, int width, unsigned max,
+                           int with_alpha)
+{
+    image_transfer_init(&e->transfer, opt->display_gamma);
+    e->display = opt->display;
+    e->max = max;
+    e->with_alpha = with_alpha != 0;
+    e->width = width;
+    e->samples = malloc((size_t)width * 4 * sizeof *e->samples);
+    e->scratch = e->display != NULL ? malloc((size_t)width * 3 * sizeof *e->scratch) : NULL;
+    if (e->samples == NULL || (e->display != NULL && e->scratch == NULL)) {
+        image_row_encoder_free(e);
+        return -1;
+    }
+    return 0;
+}
+
+int image_row_encode(ImageRowEncoder *e, const float *rgba, char *err, int errlen)
+{
+    unsigned *q = e->samples;
+
+    if (e->display == NULL) {
+        for (int x = 0; x < e->width; x++)
+            image_encode_pixel(&e->transfer, rgba + 4 * (size_t)x, e->max, e->with_alpha, q + 4 * (size_t)x);
+        return 0;
+    }
+    for (int x = 0; x < e->width; x++) {
+        float a = straight_colour(rgba + 4 * (size_t)x, e->with_alpha, e->scratch + 3 * (size_t)x);
+        if (e->with_alpha)
+            q[4 * (size_t)x + 3] = image_quantize(a, e->max);
+    }
+    if (colour_display_apply(e->display, e->scratch, e->width, err, errlen) != 0)
+        return -1;
+    for (int x = 0; x < e->width; x++)
+        for (int c = 0; c < 3; c++)
+            q[4 * (size_t)x + (size_t)c] = image_quantize(e->scratch[3 * (size_t)x + (size_t)c], e->max);
+    return 0;
+}
+
+void image_row_encoder_free(ImageRowEncoder *e)
+{
+    free(e->samples);
+    free(e->scratch);
+    e->samples = NULL;
+    e->scratch = NULL;
 }
 
 float *image_transfer_decode_table(const ImageTransfer *t, unsigned max)

@@ -1,5 +1,6 @@
 /* OpenEXR through the library's C API (libOpenEXRCore). Writes one scanline
- * part, channels A,B,G,R as half or float, data window = display window.
+ * part, channels A,B,G,R as half or float, data window = display window,
+ * and the working space's chromaticities when given.
  * Reads part 0 of any scanline or tiled file (level 0 of mip/rip maps),
  * channels R,G,B,A (or Y as grey); missing colour is 0, missing A is 1. */
 #include <errno.h>
@@ -141,6 +142,11 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
         rv = exr_set_lineorder(ctx, part, EXR_LINEORDER_INCREASING_Y);
     if (rv == EXR_ERR_SUCCESS)
         rv = exr_attr_set_string(ctx, part, "software", "hstrace");
+    if (rv == EXR_ERR_SUCCESS && opt->have_chromaticities) {
+        const float *c = opt->chromaticities;
+        exr_attr_chromaticities_t chroma = { c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7] };
+        rv = exr_attr_set_chromaticities(ctx, part, "chromaticities", &chroma);
+    }
     if (rv == EXR_ERR_SUCCESS)
         rv = exr_write_header(ctx);
     if (rv == EXR_ERR_SUCCESS)

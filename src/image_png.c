@@ -1,5 +1,6 @@
 /* PNG through libpng: 8 or 16 bits, RGB or RGBA, encoded like POV-Ray 3.7
- * (see image_codec.h) with gAMA, sRGB (for the sRGB curve) and sBIT chunks. */
+ * (see image_codec.h) with gAMA, sRGB (for the sRGB curve) and sBIT chunks,
+ * or through an OpenColorIO display transform (sBIT only). */
 #include <png.h>
 #include <setjmp.h>
 #include <stdlib.h>
@@ -28,11 +29,11 @@ static void on_png_warning(png_structp png, png_const_charp msg)
 
 /* Everything libpng does for a write, outside the function that calls
  * setjmp so that no local of that one changes after it. */
-static void png_write_body(png_structp png, png_infop info, const Image *img, const ImageTransfer *t, int depth,
-                           int alpha, unsigned char *row)
+static void png_write_body(png_structp png, png_infop info, const Image *img, ImageRowEncoder *enc, int depth,
+                           unsigned char *row)
 {
+    const int alpha = enc->with_alpha;
     const int nch = alpha ? 4 : 3;
-    const unsigned max = depth == 16 ? 65535u : 255u;
     png_color_8 sbit;
     png_text text;
 
@@ -45,10 +46,13 @@ static void png_write_body(png_structp png, png_infop info, const Image *img, co
         sbit.alpha = (png_byte)depth;
     png_set_sBIT(png, info, &sbit);
     /* As POV-Ray: gAMA 1/2.2 (45455) plus sRGB (perceptual) for the sRGB
-     * curve, gAMA 1/gamma for a power law. */
-    png_set_gAMA(png, info, t->gama);
-    if (t->srgb)
-        png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+     * curve, gAMA 1/gamma for a power law. A display transform's curve is
+     * the config's business: no chunk claims one. */
+    if (enc->display == NULL) {
+        png_set_gAMA(png, info, enc->transfer.gama);
+        if (enc->transfer.srgb)
+            png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    }
     memset(&text, 0, sizeof text);
     text.compression = PNG_TEXT_COMPRESSION_NONE;
     text.key = (png_charp) "Software";
@@ -58,11 +62,12 @@ static void png_write_body(png_structp png, png_infop info, const Image *img, co
     png_write_info(png, info);
 
     for (int y = 0; y < img->height; y++) {
-        const float *px = img->rgba + (size_t)y * (size_t)img->width * 4;
+        const unsigned *q = enc->samples;
         unsigned char *o = row;
-        for (int x = 0; x < img->width; x++, px += 4) {
-            unsigned q[4];
-            image_encode_pixel(t, px, max, alpha, q);
+        char why[256];
+        if (image_row_encode(enc, img->rgba + (size_t)y * (size_t)img->width * 4, why, (int)sizeof why) != 0)
+            png_error(png, why);
+        for (int x = 0; x < img->width; x++, q += 4) {
             for (int c = 0; c < nch; c++) {
                 if (depth == 16) {
                     *o++ = (unsigned char)(q[c] >> 8);
@@ -82,14 +87,18 @@ int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, ch
     PngErr pe = { err, errlen };
     png_structp png;
     png_infop info;
-    ImageTransfer t;
+    ImageRowEncoder enc;
     const int depth = opt->png_16bit ? 16 : 8;
     const int alpha = opt->write_alpha != 0;
     unsigned char *row;
 
-    image_transfer_init(&t, opt->display_gamma);
+    if (image_row_encoder_init(&enc, opt, img->width, depth == 16 ? 65535u : 255u, alpha) != 0) {
+        image_set_error(err, errlen, "out of memory");
+        return -1;
+    }
     row = malloc((size_t)img->width * (size_t)(alpha ? 4 : 3) * (size_t)(depth / 8));
     if (row == NULL) {
+        image_row_encoder_free(&enc);
         image_set_error(err, errlen, "out of memory");
         return -1;
     }
@@ -97,18 +106,21 @@ int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, ch
     info = png ? png_create_info_struct(png) : NULL;
     if (info == NULL) {
         png_destroy_write_struct(&png, NULL);
+        image_row_encoder_free(&enc);
         free(row);
         image_set_error(err, errlen, "out of memory");
         return -1;
     }
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
+        image_row_encoder_free(&enc);
         free(row);
         return -1;
     }
     png_init_io(png, fp);
-    png_write_body(png, info, img, &t, depth, alpha, row);
+    png_write_body(png, info, img, &enc, depth, row);
     png_destroy_write_struct(&png, &info);
+    image_row_encoder_free(&enc);
     free(row);
     return 0;
 }

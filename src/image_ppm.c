@@ -1,4 +1,5 @@
-/* PPM: writes binary P6 with maxval 255 in the display encoding; reads P6
+/* PPM: writes binary P6 with maxval 255 in the display encoding (POV-Ray's
+ * or an OpenColorIO display transform's); reads P6
  * and P3 (and the grey P5/P2) with maxval up to 65535. */
 #include <limits.h>
 #include <stdio.h>
@@ -8,36 +9,41 @@
 
 int image_ppm_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen)
 {
-    ImageTransfer t;
+    ImageRowEncoder enc;
     unsigned char *row;
     size_t rowbytes = (size_t)img->width * 3;
 
-    image_transfer_init(&t, opt->display_gamma);
-    row = malloc(rowbytes);
-    if (row == NULL) {
+    if (image_row_encoder_init(&enc, opt, img->width, 255, 0) != 0) {
         image_set_error(err, errlen, "out of memory");
         return -1;
     }
-    if (fprintf(fp, "P6\n%d %d\n255\n", img->width, img->height) < 0) {
-        free(row);
+    row = malloc(rowbytes);
+    if (row == NULL) {
+        image_row_encoder_free(&enc);
+        image_set_error(err, errlen, "out of memory");
         return -1;
     }
+    if (fprintf(fp, "P6\n%d %d\n255\n", img->width, img->height) < 0)
+        goto fail;
     for (int y = 0; y < img->height; y++) {
-        const float *px = img->rgba + (size_t)y * (size_t)img->width * 4;
-        for (int x = 0; x < img->width; x++, px += 4) {
-            unsigned q[4];
-            image_encode_pixel(&t, px, 255, 0, q);
-            row[3 * x] = (unsigned char)q[0];
-            row[3 * x + 1] = (unsigned char)q[1];
-            row[3 * x + 2] = (unsigned char)q[2];
+        if (image_row_encode(&enc, img->rgba + (size_t)y * (size_t)img->width * 4, err, errlen) != 0)
+            goto fail;
+        for (size_t i = 0; i < (size_t)img->width; i++) {
+            row[3 * i] = (unsigned char)enc.samples[4 * i];
+            row[3 * i + 1] = (unsigned char)enc.samples[4 * i + 1];
+            row[3 * i + 2] = (unsigned char)enc.samples[4 * i + 2];
         }
-        if (fwrite(row, 1, rowbytes, fp) != rowbytes) {
-            free(row);
-            return -1;
-        }
+        if (fwrite(row, 1, rowbytes, fp) != rowbytes)
+            goto fail;
     }
+    image_row_encoder_free(&enc);
     free(row);
     return 0;
+
+fail:
+    image_row_encoder_free(&enc);
+    free(row);
+    return -1;
 }
 
 /* Skips whitespace and '#' comments, then reads an unsigned decimal.

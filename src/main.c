@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "config.h"
+#include "colour.h"
 #include "compare.h"
 #include "grid.h"
 #include "image.h"
@@ -77,7 +78,7 @@ int main(int argc, char **argv)
         return EXIT_OK;
     }
     if (opt.version) {
-        printf("hstrace %s\n", PACKAGE_VERSION);
+        printf("hstrace %s (%s)\n", PACKAGE_VERSION, colour_ocio_version());
         return EXIT_OK;
     }
 
@@ -91,6 +92,25 @@ int main(int argc, char **argv)
         fprintf(stderr, "hstrace: '%s': unknown image format (use .exr, .png or .ppm)\n", output);
         free(owned_output);
         return EXIT_USAGE;
+    }
+
+    /* Colour management: OpenColorIO when an option or $OCIO asks for it,
+     * else POV-Ray's own encoding. Opened before any work, so that a bad
+     * config or name costs nothing. */
+    ColourRequest creq = { opt.ocio_config, opt.display, opt.view, opt.colorspace };
+    ColourDisplay *colour = NULL;
+    if (colour_requested(&creq)) {
+        ColourStatus cs = colour_display_open(&creq, &colour, err, sizeof err);
+        int from_env_only = !opt.ocio_config && !opt.display && !opt.view && !opt.colorspace;
+        if (cs == COLOUR_ERR_UNAVAILABLE && from_env_only) {
+            /* $OCIO is set for every program of a user; one built without
+             * the library goes on as if it were not. */
+            fprintf(stderr, "hstrace: warning: $OCIO ignored: %s\n", err);
+        } else if (cs != COLOUR_OK) {
+            fprintf(stderr, "hstrace: %s\n", err);
+            free(owned_output);
+            return cs == COLOUR_ERR_CONFIG ? EXIT_IO : EXIT_USAGE;
+        }
     }
 
     /* Include search: the scene's folder (the parser's own rule), then the
@@ -124,6 +144,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "%s:%d:%d: %s\n", perr.file, perr.line, perr.column, perr.message);
         else
             fprintf(stderr, "%s: %s\n", perr.file[0] ? perr.file : opt.scene, perr.message);
+        colour_display_free(colour);
         free(owned_output);
         return perr.is_io ? EXIT_IO : EXIT_SCENE;
     }
@@ -135,6 +156,7 @@ int main(int argc, char **argv)
     if (world_build(&world, scene, &werr)) {
         fprintf(stderr, "hstrace: %s\n", werr.message);
         scene_free(scene);
+        colour_display_free(colour);
         free(owned_output);
         return EXIT_IO;
     }
@@ -147,6 +169,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "hstrace: out of memory while building the grid\n");
         world_free(&world);
         scene_free(scene);
+        colour_display_free(colour);
         free(owned_output);
         return EXIT_IO;
     }
@@ -165,6 +188,7 @@ int main(int argc, char **argv)
             grid_free(&grid);
             world_free(&world);
             scene_free(scene);
+            colour_display_free(colour);
             free(owned_output);
             return EXIT_IO;
         }
@@ -221,6 +245,13 @@ int main(int argc, char **argv)
         wopt.exr_float = opt.exr_float;
         wopt.png_16bit = opt.png16;
         wopt.display_gamma = 0.0; /* sRGB, as POV-Ray 3.7 writes assumed_gamma 1 scenes */
+        wopt.display = colour;    /* or OpenColorIO's display/view transform */
+        if (colour != NULL) {
+            wopt.have_chromaticities = colour_display_chromaticities(colour, wopt.chromaticities) == 0;
+        } else {
+            wopt.have_chromaticities = 1;
+            memcpy(wopt.chromaticities, colour_rec709_chromaticities, sizeof wopt.chromaticities);
+        }
         if (image_write(output, &img, &wopt, err, sizeof err)) {
             fprintf(stderr, "hstrace: %s\n", err);
             status = EXIT_IO;
@@ -229,8 +260,15 @@ int main(int argc, char **argv)
         image_free(&img);
     }
     report.wall_seconds = clock_wall() - wall0;
-    if (status == EXIT_OK && opt.stats)
+    if (status == EXIT_OK && opt.stats) {
         stats_print(stderr, &report);
+        if (colour != NULL)
+            fprintf(stderr, "colour: %s, config '%s', display '%s', view '%s', working space '%s'\n",
+                    colour_ocio_version(), colour_display_config(colour), colour_display_name(colour),
+                    colour_display_view(colour), colour_display_working_space(colour));
+        else
+            fprintf(stderr, "colour: POV-Ray's sRGB encoding (no OpenColorIO config asked for)\n");
+    }
     if (status == EXIT_OK && opt.stats_json && stats_write_json(opt.stats_json, &report, err, sizeof err)) {
         fprintf(stderr, "hstrace: %s\n", err);
         status = EXIT_IO;
@@ -240,6 +278,7 @@ int main(int argc, char **argv)
     grid_free(&grid);
     world_free(&world);
     scene_free(scene);
+    colour_display_free(colour);
     free(owned_output);
     return status;
 }

@@ -78,6 +78,13 @@ void options_usage(FILE *f)
             "      --include-path DIR folder searched for #include files (repeatable)\n"
             "      --exr-float        write 32-bit float EXR channels instead of half\n"
             "      --png16            write 16-bit PNG\n"
+            "      --ocio-config FILE OpenColorIO config for PNG/PPM output (default: $OCIO, else\n"
+            "                         hstrace's own); without this, --display, --view, --colorspace\n"
+            "                         and $OCIO, PNG/PPM get POV-Ray's sRGB encoding\n"
+            "      --display NAME     OCIO display (default: the config's default display)\n"
+            "      --view NAME        OCIO view of that display (default: the display's default)\n"
+            "      --colorspace NAME  OCIO working space the render is in and the EXR is tagged\n"
+            "                         with (default: the config's scene_linear role)\n"
             "      --stats            print timings and counts on stderr\n"
             "      --stats-json FILE  write the same statistics as JSON\n"
             "      --help             show this help\n"
@@ -86,7 +93,9 @@ void options_usage(FILE *f)
             "POV-Ray switches: +Wn +Hn +Oname +Iname +Ldir +WTn +Qn (quality: <=3 no shadows,\n"
             "4-5 shadows, 6-7 also refraction, >=8 also reflection; default 9).\n"
             "\n"
-            "Exit status: 0 success, 1 bad usage, 2 scene error, 3 input/output error.\n",
+            "Exit status: 0 success, 1 bad usage (also a display, view or colour space the\n"
+            "config lacks), 2 scene error, 3 input/output error (also a missing or broken\n"
+            "colour config).\n",
             shadow_method_names());
 }
 
@@ -307,6 +316,20 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             opt->exr_float = 1;
         } else if (strcmp(a, "--png16") == 0) {
             opt->png16 = 1;
+        } else if (is_long(a, "--ocio-config") || is_long(a, "--display") || is_long(a, "--view") ||
+                   is_long(a, "--colorspace")) {
+            static const char *const names[] = { "--ocio-config", "--display", "--view", "--colorspace" };
+            const char **slots[] = { &opt->ocio_config, &opt->display, &opt->view, &opt->colorspace };
+            int k = 0;
+            while (!is_long(a, names[k]))
+                k++;
+            if (!(v = option_value(argc, argv, &i, names[k], err, errlen)))
+                return -1;
+            if (v[0] == '\0') {
+                snprintf(err, (size_t)errlen, "%s: the name is empty", names[k]);
+                return -1;
+            }
+            *slots[k] = v;
         } else if ((a[0] == '+' || a[0] == '-') && a[1] && a[1] != '-') {
             if (parse_pov_switch(a, opt, err, errlen))
                 return -1;

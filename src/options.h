@@ -10,7 +10,7 @@ enum {
     EXIT_OK = 0,
     EXIT_USAGE = 1,       /* bad command line, impossible sizes */
     EXIT_SCENE = 2,       /* the scene has an error or uses something unsupported */
-    EXIT_IO = 3,          /* a file could not be read or written */
+    EXIT_IO = 3,          /* a file could not be read or written, or the colour config is missing or broken */
 };
 
 #define MAX_INCLUDE_PATHS 32
@@ -36,6 +36,8 @@ typedef struct {
     const char *stats_json;
     int exr_float;
     int png16;
+    /* OpenColorIO (see colour.h); NULL when not given. */
+    const char *ocio_config, *display, *view, *colorspace;
     int help, version;
 } Options;
 
