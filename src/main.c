@@ -55,12 +55,6 @@ static int is_dir(const char *p)
     return stat(p, &st) == 0 && S_ISDIR(st.st_mode);
 }
 
-static int online_cpus(void)
-{
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n < 1 ? 1 : n > 1024 ? 1024 : (int)n;
-}
-
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "compare") == 0)
@@ -195,7 +189,7 @@ int main(int argc, char **argv)
     memset(&ropt, 0, sizeof ropt);
     ropt.width = opt.width;
     ropt.height = opt.height;
-    ropt.threads = opt.threads > 0 ? opt.threads : online_cpus();
+    ropt.threads = opt.threads > 0 ? opt.threads : render_default_threads();
     ropt.quality = quality_from_level(opt.quality);
     ropt.shadow = method;
     ropt.volumes = have_volumes ? &volumes : NULL;
