@@ -1,5 +1,6 @@
 /* hstrace: scene file -> description -> polygons and grid -> rays -> image;
- * `hstrace compare` compares images (compare.h). */
+ * `hstrace compare` compares images (compare.h); `hstrace vs-povray` renders
+ * a scene with POV-Ray and every shadow method and compares (vs_povray.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +18,7 @@
 #include "shadow.h"
 #include "shadow_volumes.h"
 #include "stats.h"
+#include "vs_povray.h"
 #include "world.h"
 
 #ifndef HST_DATADIR
@@ -59,6 +61,8 @@ int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "compare") == 0)
         return compare_main(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "vs-povray") == 0)
+        return vs_povray_main(argc - 1, argv + 1, argv[0]);
     double wall0 = clock_wall();
     Options opt;
     char err[1024];
