@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "json_write.h"
+
 static double figure(const CompareResult *r, CompareLimit l)
 {
     switch (l) {
@@ -106,47 +108,24 @@ void compare_report_text(FILE *f, const CompareOptions *opt, const CompareResult
         fprintf(f, "\n");
 }
 
-static void json_string(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
-        if (*c == '"' || *c == '\\')
-            fprintf(f, "\\%c", *c);
-        else if (*c < 0x20)
-            fprintf(f, "\\u%04x", *c);
-        else
-            fputc(*c, f);
-    }
-    fputc('"', f);
-}
-
-/* JSON has no infinity: an infinite figure (the PSNR of equal images) is null. */
-static void json_number(FILE *f, double v)
-{
-    if (isfinite(v))
-        fprintf(f, "%.9g", v);
-    else
-        fprintf(f, "null");
-}
-
 void compare_report_json(FILE *f, const CompareOptions *opt, const CompareResult *r)
 {
     const ImageComparison *c = &r->image;
     fprintf(f, "{\n  \"a\": ");
-    json_string(f, opt->a);
+    json_write_string(f, opt->a);
     fprintf(f, ",\n  \"b\": ");
-    json_string(f, opt->b);
+    json_write_string(f, opt->b);
     fprintf(f, ",\n  \"width\": %d,\n  \"height\": %d,\n  \"threshold\": ", c->width, c->height);
-    json_number(f, c->threshold);
+    json_write_number(f, c->threshold);
     fprintf(f, ",\n  \"rmse\": ");
-    json_number(f, c->rmse);
+    json_write_number(f, c->rmse);
     fprintf(f, ",\n  \"psnr\": ");
-    json_number(f, c->psnr);
+    json_write_number(f, c->psnr);
     fprintf(f, ",\n  \"max_error\": ");
-    json_number(f, c->max_error);
+    json_write_number(f, c->max_error);
     fprintf(f, ",\n  \"max_error_at\": [%d, %d],\n  \"pixels_over_threshold\": %ld,\n  \"share_over_threshold\": ",
             c->max_x, c->max_y, c->over);
-    json_number(f, c->share);
+    json_write_number(f, c->share);
     fprintf(f, ",\n  \"nonfinite_pixels\": %ld,\n  \"masks\": ", c->nonfinite);
     if (r->has_masks) {
         const MaskComparison *m = &r->masks;
@@ -155,12 +134,12 @@ void compare_report_json(FILE *f, const CompareOptions *opt, const CompareResult
         fprintf(f, "{\n");
         for (int k = 0; k < 4; k++) {
             fprintf(f, "    \"%s\": ", names[k]);
-            json_string(f, paths[k]);
+            json_write_string(f, paths[k]);
             fprintf(f, ",\n");
         }
         fprintf(f, "    \"a_pixels\": %ld,\n    \"b_pixels\": %ld,\n    \"disagree\": %ld,\n    \"share\": ",
                 m->a_pixels, m->b_pixels, m->disagree);
-        json_number(f, m->share);
+        json_write_number(f, m->share);
         fprintf(f, ",\n    \"other_lights\": %ld,\n    \"shadow_edge\": %ld,\n    \"silhouette\": %ld,\n"
                    "    \"interior\": %ld,\n    \"first_interior_at\": ",
                 m->other_lights, m->shadow_edge, m->silhouette, m->interior);
@@ -178,7 +157,7 @@ void compare_report_json(FILE *f, const CompareOptions *opt, const CompareResult
     for (int l = 0; l < COMPARE_NLIMITS; l++)
         if (opt->has_limit[l]) {
             fprintf(f, "%s\"%s\": ", any ? ", " : "", compare_limits[l].key);
-            json_number(f, opt->limit[l]);
+            json_write_number(f, opt->limit[l]);
             any = 1;
         }
     fprintf(f, "},\n  \"exceeded\": [");

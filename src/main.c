@@ -1,5 +1,6 @@
 /* hstrace: scene file -> description -> polygons and grid -> rays -> image;
- * `hstrace compare` compares images (compare.h). */
+ * `hstrace compare` compares images (compare.h); `hstrace vs-povray` renders
+ * a scene with POV-Ray and every shadow method and compares (vs_povray.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +19,7 @@
 #include "shadow.h"
 #include "shadow_volumes.h"
 #include "stats.h"
+#include "vs_povray.h"
 #include "world.h"
 
 #ifndef HST_DATADIR
@@ -56,16 +58,12 @@ static int is_dir(const char *p)
     return stat(p, &st) == 0 && S_ISDIR(st.st_mode);
 }
 
-static int online_cpus(void)
-{
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n < 1 ? 1 : n > 1024 ? 1024 : (int)n;
-}
-
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "compare") == 0)
         return compare_main(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "vs-povray") == 0)
+        return vs_povray_main(argc - 1, argv + 1, argv[0]);
     double wall0 = clock_wall();
     Options opt;
     char err[1024];
@@ -219,7 +217,7 @@ int main(int argc, char **argv)
     memset(&ropt, 0, sizeof ropt);
     ropt.width = opt.width;
     ropt.height = opt.height;
-    ropt.threads = opt.threads > 0 ? opt.threads : online_cpus();
+    ropt.threads = opt.threads > 0 ? opt.threads : render_default_threads();
     ropt.quality = quality_from_level(opt.quality);
     ropt.shadow = method;
     ropt.volumes = have_volumes ? &volumes : NULL;

@@ -51,9 +51,11 @@ void options_usage(FILE *f)
     fprintf(f,
             "usage: hstrace SCENE.pov [options]\n"
             "       hstrace compare A B [options]   (see hstrace compare --help)\n"
+            "       hstrace vs-povray SCENE.pov [options]   (see hstrace vs-povray --help)\n"
             "\n"
-            "Renders a POV-Ray scene made of polygons, with hybrid shadow testing, or compares\n"
-            "two images and two renderers' shadow masks.\n"
+            "Renders a POV-Ray scene made of polygons, with hybrid shadow testing; compares\n"
+            "two images and two renderers' shadow masks; or measures every shadow method\n"
+            "against POV-Ray on a scene.\n"
             "\n"
             "  -o, --output FILE      image to write (.exr, .png or .ppm; default SCENE.png)\n"
             "      --width N          image width in pixels (default 320)\n"

@@ -5,12 +5,19 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "shade.h"
 #include "shadow_coherence.h"
 #include "shadow_reference.h"
 
 #define TILE 16
+
+int render_default_threads(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > 1024 ? 1024 : (int)n;
+}
 
 void camera_ray(const Camera *cam, int width, int height, int x, int y, Vec3 *org, Vec3 *dir)
 {

@@ -26,6 +26,9 @@ typedef struct {
 /* The camera ray through the centre of pixel (x, y), row 0 at the top. */
 void camera_ray(const Camera *cam, int width, int height, int x, int y, Vec3 *org, Vec3 *dir);
 
+/* The thread count when none is given: the online cores (1 to 1024). */
+int render_default_threads(void);
+
 /* Renders into img (allocated here). Returns 0, or -1 when out of memory. */
 int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image *img, RenderStats *stats);
 
