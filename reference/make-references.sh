@@ -73,13 +73,21 @@ for scene in $list; do
     extra=$(sed -n 's|^// povray-reference-options: *||p' "$scenes/$scene.pov" | head -1)
     for q in 9 3 4; do
         suffix=$([ "$q" = 9 ] && echo "" || echo ".q$q")
-        # shellcheck disable=SC2086 # $extra holds separate options
-        (cd "$work/$sub" && "$povray" "+I$name.pov" "+O$name$suffix.exr" +FE -A -D -GA +WT2 \
-            "+W$width" "+H$height" "+Q$q" $extra >"$name$suffix.log" 2>&1) || {
-            echo "make-references: povray failed on $scene (+Q$q):" >&2
-            cat "$work/$sub$name$suffix.log" >&2
-            exit 1
-        }
+        # On a loaded machine POV-Ray 3.7 can give up before its render
+        # threads start ("Timed out waiting for worker thread startup"):
+        # that, and only that, is tried again, up to twice.
+        for attempt in 1 2 3; do
+            # shellcheck disable=SC2086 # $extra holds separate options
+            if (cd "$work/$sub" && "$povray" "+I$name.pov" "+O$name$suffix.exr" +FE -A -D -GA +WT2 \
+                "+W$width" "+H$height" "+Q$q" $extra >"$name$suffix.log" 2>&1); then
+                break
+            fi
+            if [ $attempt = 3 ] || ! grep -q "Timed out waiting for worker thread startup" "$work/$sub$name$suffix.log"; then
+                echo "make-references: povray failed on $scene (+Q$q):" >&2
+                cat "$work/$sub$name$suffix.log" >&2
+                exit 1
+            fi
+        done
         mv "$work/$sub$name$suffix.exr" "$out/$sub$name$suffix.exr"
     done
 done

@@ -449,6 +449,19 @@ static int run_hstrace(VsRun *v, const char *method, int quality, const char *ou
 /* povray +ISCENE +OOUT +FE -A -D (quiet but for warnings and errors) +Ww +Hh
  * +WTt +Qq +LDIR... DECLARED..., in the private folder: POV-Ray writes only
  * where its configuration permits, and the current folder is permitted. */
+/* Does the text file at path hold `text` on one of its lines? */
+static int file_contains(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "r");
+    char line[1024];
+    int found = 0;
+    while (f && !found && fgets(line, sizeof line, f))
+        found = strstr(line, text) != NULL;
+    if (f)
+        fclose(f);
+    return found;
+}
+
 static int run_povray(VsRun *v, int quality, const char *out, ProcessResult *r)
 {
     char *argv[16 + MAX_INCLUDE_PATHS + 2 + MAX_DECLARED];
@@ -472,8 +485,16 @@ static int run_povray(VsRun *v, int quality, const char *out, ProcessResult *r)
     argv[n] = NULL;
     char log[PATH_MAX];
     tmp_path(v, "povray.log", log, sizeof log);
-    if (process_run(&v->guard, v->povray, argv, v->tmp, log, r))
-        return spawn_failed(v, "povray");
+    /* On a loaded machine POV-Ray 3.7 can give up before its render threads
+     * start ("Timed out waiting for worker thread startup"): that, and only
+     * that, is tried again, up to twice. */
+    for (int attempt = 1;; attempt++) {
+        if (process_run(&v->guard, v->povray, argv, v->tmp, log, r))
+            return spawn_failed(v, "povray");
+        if (attempt == 3 || r->interrupted || (r->exited && r->status == 0) ||
+            !file_contains(log, "Timed out waiting for worker thread startup"))
+            break;
+    }
     char what[16];
     snprintf(what, sizeof what, "+Q%d", quality);
     int status = check_child(v, 1, what, r, log);
