@@ -252,10 +252,14 @@ static void wedge_outline(const Light *l, Vec3 a, Vec3 b, double diagonal, Vec3 
     out[3] = v3_add(a, v3_scale(la, lambda));
 }
 
+/* Room for a convex outline clipped by up to ten planes: the wedge's 4
+ * corners, one more per plane. */
+#define CLIPPED_MAX 16
+
 /* Clips a convex outline to the slab lo <= coordinate `axis` <= hi. */
 static int clip_slab(const Vec3 *in, int n, Vec3 *out, int axis, double lo, double hi)
 {
-    Vec3 tmp[12];
+    Vec3 tmp[CLIPPED_MAX];
     int m = clip_against(in, n, tmp, axis, lo, +1);
     return m > 0 ? clip_against(tmp, m, out, axis, hi, -1) : 0;
 }
@@ -276,15 +280,30 @@ static void extent(const Vec3 *pts, int n, int axis, double *lo, double *hi)
  * its own cell, to know that it is undecidable. Row by row: clipped to a
  * z-slab, then to a y-row, the outline is still convex and connected, so
  * it overlaps exactly the cells its x-extent spans. */
-static int register_shadow_polygon(RegList *regs, const Grid *g, const Vec3 q[4], uint32_t item, double tol)
+static int register_shadow_polygon(RegList *regs, const Grid *g, const Vec3 wedge[4], uint32_t item, double tol)
 {
+    /* The wedge reaches twice the grid's diagonal past its edge; clipped to
+     * the grid box first, the slab loops below visit only the rows it
+     * actually crosses (on a 10^6-triangle scene most wedges leave the box
+     * within a few cells, and the loops over empty slabs were most of the
+     * build time). */
+    Vec3 a[CLIPPED_MAX], b[CLIPPED_MAX];
+    int nq = 4;
+    memcpy(a, wedge, 4 * sizeof *a);
+    for (int axis = 0; axis < 3 && nq > 0; axis++) {
+        nq = clip_slab(a, nq, b, axis, v3_comp(g->min, axis) - tol, v3_comp(g->max, axis) + tol);
+        memcpy(a, b, (size_t)nq * sizeof *a);
+    }
+    if (nq == 0)
+        return 0;
+    const Vec3 *q = a;
     double zlo, zhi;
-    extent(q, 4, 2, &zlo, &zhi);
+    extent(q, nq, 2, &zlo, &zhi);
     int z0 = grid_cell_coord(g, zlo - tol, 2), z1 = grid_cell_coord(g, zhi + tol, 2);
     for (int z = z0; z <= z1; z++) {
-        Vec3 pz[12], pzy[16];
+        Vec3 pz[CLIPPED_MAX], pzy[CLIPPED_MAX];
         double cz = g->min.z + z * g->cell_size.z;
-        int nz = clip_slab(q, 4, pz, 2, cz - tol, cz + g->cell_size.z + tol);
+        int nz = clip_slab(q, nq, pz, 2, cz - tol, cz + g->cell_size.z + tol);
         if (nz == 0)
             continue;
         double ylo, yhi;
