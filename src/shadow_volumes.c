@@ -632,25 +632,14 @@ int shadow_bucket_crossings(const ShadowVolumes *sv, const uint32_t *bucket, int
                             int *transparent)
 {
     double tol = sv->tolerance;
-    if (sv->precision != PLANES_DOUBLE) {
-        const float a[3] = { (float)p1.x, (float)p1.y, (float)p1.z }, b[3] = { (float)p2.x, (float)p2.y, (float)p2.z };
-        for (int i = 0; i < n; i++) {
-            if (float_same_side(&sv->planes_f[bucket[i]], a, b, sv->float_margin))
-                continue;
-            const ShadowPolygon *sp = &sv->polygons[bucket[i]];
-            int sign = 0;
-            CrossResult r = shadow_polygon_cross(sp, p1, p2, tol, &sign);
-            if (r == CROSS_UNSURE)
-                return 0;
-            if (r == CROSS_YES) {
-                *opaque += sign * sp->weight_opaque;
-                *transparent += sign * sp->weight_transparent;
-            }
-        }
-        return 1;
-    }
+    int use_float = sv->precision != PLANES_DOUBLE;
+    const float a[3] = { (float)p1.x, (float)p1.y, (float)p1.z }, b[3] = { (float)p2.x, (float)p2.y, (float)p2.z };
     for (int i = 0; i < n; i++) {
-        /* Both ends clearly on one side of the plane: no crossing. */
+        /* Both ends clearly on one side of the plane: no crossing. The
+         * float test only rejects; what it lets through is decided in
+         * double, as without it. */
+        if (use_float && float_same_side(&sv->planes_f[bucket[i]], a, b, sv->float_margin))
+            continue;
         const ShadowPlane *pl = &sv->planes[bucket[i]];
         double s1 = v3_dot(pl->normal, p1) - pl->d, s2 = v3_dot(pl->normal, p2) - pl->d;
         if ((s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol))
