@@ -3,6 +3,7 @@
 #include "compare.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "compare_options.h"
@@ -35,6 +36,33 @@ static int write_image(const char *path, const Image *img)
     return -1;
 }
 
+/* B's +Q3/+Q4 pair from its shadow.loss channels; 0, or -1 with a message. */
+static int mask_pair_from_channels(const char *path, const Image *render, Image *q3, Image *q4)
+{
+    static const char *const names[3] = {"shadow.loss.R", "shadow.loss.G", "shadow.loss.B"};
+    float *loss[3];
+    int w, h;
+    char err[1024];
+    int rc = image_read_exr_channels(path, names, 3, loss, &w, &h, err, sizeof err);
+    if (rc) {
+        fprintf(stderr, PROGRAM ": %s: %s%s\n", path, reason(err, "cannot read", path),
+                rc > 0 ? ": B's shadow mask needs --mask-b B3 B4, or B rendered by hstrace with --aov shadow" : "");
+        return -1;
+    }
+    rc = 0;
+    if (w != render->width || h != render->height) {
+        fprintf(stderr, PROGRAM ": %s: shadow channels of %dx%d pixels in a %dx%d image\n", path, w, h,
+                render->width, render->height);
+        rc = -1;
+    } else if (mask_pair_from_loss(render, (const float *const *)loss, q3, q4)) {
+        fprintf(stderr, PROGRAM ": out of memory\n");
+        rc = -1;
+    }
+    for (int k = 0; k < 3; k++)
+        free(loss[k]);
+    return rc;
+}
+
 int compare_main(int argc, char **argv)
 {
     CompareOptions opt;
@@ -48,19 +76,22 @@ int compare_main(int argc, char **argv)
         return COMPARE_EXIT_WITHIN;
     }
 
-    /* A, B, then A's +Q3 and +Q4, B's +Q3 and +Q4. */
+    /* A, B, then A's +Q3 and +Q4, B's +Q3 and +Q4 (read, or made from B's
+     * shadow channels). */
     const char *path[6] = {opt.a, opt.b, opt.mask_a[0], opt.mask_a[1], opt.mask_b[0], opt.mask_b[1]};
-    int nimages = opt.mask_a[0] ? 6 : 2;
+    int nimages = opt.mask_a[0] ? 6 : 2, nread = opt.mask_b_from_aov ? 4 : nimages;
     Image img[6], diff, map;
     memset(img, 0, sizeof img);
     memset(&diff, 0, sizeof diff);
     memset(&map, 0, sizeof map);
     int status = COMPARE_EXIT_TROUBLE;
-    for (int k = 0; k < nimages; k++)
+    for (int k = 0; k < nread; k++)
         if (image_read(path[k], &img[k], 0.0, err, sizeof err)) {
             fprintf(stderr, PROGRAM ": %s: %s\n", path[k], reason(err, "cannot read", path[k]));
             goto done;
         }
+    if (opt.mask_b_from_aov && mask_pair_from_channels(opt.b, &img[1], &img[4], &img[5]))
+        goto done;
     for (int k = 1; k < nimages; k++)
         if (img[k].width != img[0].width || img[k].height != img[0].height) {
             fprintf(stderr, PROGRAM ": %s: %dx%d pixels, but %s has %dx%d\n", path[k], img[k].width, img[k].height,

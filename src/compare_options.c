@@ -29,7 +29,8 @@ void compare_options_usage(FILE *f)
             "      --threshold T      a pixel is off when a channel differs by more (default %g);\n"
             "                         also the shadow-loss tolerance of the mask comparison\n"
             "      --mask-a A3 A4     A's renders without (+Q3) and with (+Q4) shadows: the reference\n"
-            "      --mask-b B3 B4     B's renders without and with shadows: under test\n"
+            "      --mask-b B3 B4     B's renders without and with shadows: under test; without it,\n"
+            "                         B's mask comes from B's shadow channels (hstrace --aov shadow)\n"
             "      --allow-a-leaks    count interior disagreements where A lets more light through\n"
             "                         than B apart, as A's leaks, not as errors\n"
             "      --diff FILE        write a heat map of |A - B| (.exr, .png or .ppm)\n"
@@ -187,11 +188,12 @@ int compare_options_parse(int argc, char **argv, CompareOptions *opt, char *err,
         return -1;
     }
     int masks = opt->mask_a[0] != NULL;
-    if (masks != (opt->mask_b[0] != NULL)) {
-        snprintf(err, (size_t)errlen, "%s given without %s: shadow masks need both pairs of renders",
-                 masks ? "--mask-a" : "--mask-b", masks ? "--mask-b" : "--mask-a");
+    if (!masks && opt->mask_b[0]) {
+        snprintf(err, (size_t)errlen, "--mask-b given without --mask-a: shadow masks need A's pair of renders");
         return -1;
     }
+    /* B an EXR with analysis channels stands for its own pair. */
+    opt->mask_b_from_aov = masks && !opt->mask_b[0];
     const char *mask_only = NULL;
     for (int l = 0; l < COMPARE_NLIMITS; l++)
         if (opt->has_limit[l] && compare_limits[l].needs_masks)
@@ -201,7 +203,7 @@ int compare_options_parse(int argc, char **argv, CompareOptions *opt, char *err,
     if (opt->allow_a_leaks)
         mask_only = "--allow-a-leaks";
     if (mask_only && !masks) {
-        snprintf(err, (size_t)errlen, "%s needs the shadow masks: --mask-a A3 A4 --mask-b B3 B4", mask_only);
+        snprintf(err, (size_t)errlen, "%s needs the shadow masks: --mask-a A3 A4 [--mask-b B3 B4]", mask_only);
         return -1;
     }
     return 0;

@@ -33,6 +33,7 @@ extern const CompareLimitInfo compare_limits[COMPARE_NLIMITS];
 typedef struct {
     const char *a, *b;
     const char *mask_a[2], *mask_b[2]; /* +Q3 and +Q4 renders; NULL without --mask-a/--mask-b */
+    int mask_b_from_aov;               /* --mask-a without --mask-b: B's mask from B's shadow channels */
     double threshold;                  /* --threshold */
     double limit[COMPARE_NLIMITS];
     int has_limit[COMPARE_NLIMITS];

@@ -134,9 +134,13 @@ void compare_report_json(FILE *f, const CompareOptions *opt, const CompareResult
         fprintf(f, "{\n");
         for (int k = 0; k < 4; k++) {
             fprintf(f, "    \"%s\": ", names[k]);
-            json_write_string(f, paths[k]);
+            if (paths[k])
+                json_write_string(f, paths[k]);
+            else
+                fprintf(f, "null"); /* B's pair made from B's shadow channels */
             fprintf(f, ",\n");
         }
+        fprintf(f, "    \"b_from_channels\": %s,\n", opt->mask_b_from_aov ? "true" : "false");
         fprintf(f, "    \"a_pixels\": %ld,\n    \"b_pixels\": %ld,\n    \"disagree\": %ld,\n    \"share\": ",
                 m->a_pixels, m->b_pixels, m->disagree);
         json_write_number(f, m->share);

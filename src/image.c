@@ -204,3 +204,22 @@ int image_read(const char *path, Image *img, double display_gamma, char *err, in
     }
     return 0;
 }
+
+int image_read_exr_channels(const char *path, const char *const *names, int n, float **planes, int *width,
+                            int *height, char *err, int errlen)
+{
+    char why[256];
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    why[0] = '\0';
+    int rc = sniff(fd, path) == IMAGE_FORMAT_EXR
+                 ? image_exr_read_planes(fd, names, n, planes, width, height, why, (int)sizeof why)
+                 : (snprintf(why, sizeof why, "not an EXR file"), 1);
+    close(fd);
+    if (rc != 0)
+        image_set_error(err, errlen, "cannot read '%s': %s", path, why[0] ? why : "unreadable image");
+    return rc;
+}

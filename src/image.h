@@ -19,6 +19,29 @@ typedef enum {
     IMAGE_EXR_ZIP = 0, IMAGE_EXR_NONE, IMAGE_EXR_RLE, IMAGE_EXR_ZIPS, IMAGE_EXR_PIZ
 } ImageExrCompression;
 
+/* Extra EXR channels written beside R G B A (the analysis channels of
+ * aov.h), each a plane of width*height samples, row 0 at the top: floats for
+ * HALF and FLOAT channels (converted to half by the library), uint32_t for
+ * UINT ones. */
+typedef enum { IMAGE_CHANNEL_HALF, IMAGE_CHANNEL_FLOAT, IMAGE_CHANNEL_UINT } ImageChannelType;
+
+typedef struct {
+    const char *name;
+    ImageChannelType type;
+    const void *data;
+} ImageChannel;
+
+/* Extra EXR header attributes, of the standard types string, int, double. */
+typedef enum { IMAGE_ATTR_STRING, IMAGE_ATTR_INT, IMAGE_ATTR_DOUBLE } ImageAttributeType;
+
+typedef struct {
+    const char *name;
+    ImageAttributeType type;
+    const char *s;
+    int i;
+    double d;
+} ImageAttribute;
+
 typedef struct {
     int exr_float;      /* 1: 32-bit float channels; 0: half (default) */
     int png_16bit;      /* 1: 16-bit PNG; 0: 8-bit (default) */
@@ -36,6 +59,12 @@ typedef struct {
      * white), written when have_chromaticities. */
     int have_chromaticities;
     float chromaticities[8];
+    /* EXR only (PNG and PPM ignore them): channels besides R G B A, and
+     * header attributes besides the required ones. */
+    const ImageChannel *channels;
+    int nchannels;
+    const ImageAttribute *attributes;
+    int nattributes;
 } ImageWriteOptions;
 
 int image_alloc(Image *img, int width, int height);
@@ -51,5 +80,12 @@ int image_write(const char *path, const Image *img, const ImageWriteOptions *opt
 /* Read an EXR, PNG or PPM into linear RGBA (PNG/PPM are decoded from sRGB, or
  * the gamma given, back to linear). Returns 0, or -1 with a message. */
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen);
+
+/* Reads the named channels of a scanline EXR (part 0) as float planes of
+ * width*height samples (malloc'd, row 0 at the top; half and uint are
+ * converted). Returns 0; 1 when the file is readable but lacks one of them
+ * (err names it; nothing allocated); -1 with a message on any other error. */
+int image_read_exr_channels(const char *path, const char *const *names, int n, float **planes, int *width,
+                            int *height, char *err, int errlen);
 
 #endif

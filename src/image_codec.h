@@ -84,6 +84,9 @@ int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, ch
 int image_ppm_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
 
 int image_exr_read(int fd, Image *img, char *err, int errlen);
+/* Named channels as float planes: 0, 1 when one is missing, -1 on error. */
+int image_exr_read_planes(int fd, const char *const *names, int n, float **planes, int *width, int *height,
+                          char *err, int errlen);
 int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
 int image_ppm_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
 

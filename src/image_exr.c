@@ -111,9 +111,24 @@ static int exr_fail(ExrIO *io, exr_result_t rv)
     return -1;
 }
 
+static exr_pixel_type_t exr_type_of(ImageChannelType t)
+{
+    return t == IMAGE_CHANNEL_UINT ? EXR_PIXEL_UINT : t == IMAGE_CHANNEL_FLOAT ? EXR_PIXEL_FLOAT : EXR_PIXEL_HALF;
+}
+
+static exr_result_t set_attribute(exr_context_t ctx, int part, const ImageAttribute *a)
+{
+    switch (a->type) {
+    case IMAGE_ATTR_INT: return exr_attr_set_int(ctx, part, a->name, a->i);
+    case IMAGE_ATTR_DOUBLE: return exr_attr_set_double(ctx, part, a->name, a->d);
+    case IMAGE_ATTR_STRING:
+    default: return exr_attr_set_string(ctx, part, a->name, a->s ? a->s : "");
+    }
+}
+
 int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char *err, int errlen)
 {
-    /* Alphabetical, as EXR stores channels; offsets into an RGBA pixel. */
+    /* Offsets into an RGBA pixel; extra channels are planes of their own. */
     static const char *const names[4] = { "A", "B", "G", "R" };
     static const int offsets[4] = { 3, 2, 1, 0 };
     ExrIO io = { fd, err, errlen, 0 };
@@ -122,6 +137,7 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
     exr_encode_pipeline_t enc;
     exr_pixel_type_t ptype = opt->exr_float ? EXR_PIXEL_FLOAT : EXR_PIXEL_HALF;
     const int w = img->width, h = img->height;
+    const int nextra = opt->channels ? opt->nchannels : 0;
     int part, lines, started = 0;
     exr_result_t rv;
 
@@ -138,6 +154,9 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
         rv = exr_initialize_required_attr_simple(ctx, part, w, h, exr_compression_of(opt->exr_compression));
     for (int c = 0; c < 4 && rv == EXR_ERR_SUCCESS; c++)
         rv = exr_add_channel(ctx, part, names[c], ptype, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
+    for (int c = 0; c < nextra && rv == EXR_ERR_SUCCESS; c++)
+        rv = exr_add_channel(ctx, part, opt->channels[c].name, exr_type_of(opt->channels[c].type),
+                             EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
     if (rv == EXR_ERR_SUCCESS)
         rv = exr_set_lineorder(ctx, part, EXR_LINEORDER_INCREASING_Y);
     if (rv == EXR_ERR_SUCCESS)
@@ -147,6 +166,8 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
         exr_attr_chromaticities_t chroma = { c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7] };
         rv = exr_attr_set_chromaticities(ctx, part, "chromaticities", &chroma);
     }
+    for (int a = 0; opt->attributes && a < opt->nattributes && rv == EXR_ERR_SUCCESS; a++)
+        rv = set_attribute(ctx, part, &opt->attributes[a]);
     if (rv == EXR_ERR_SUCCESS)
         rv = exr_write_header(ctx);
     if (rv == EXR_ERR_SUCCESS)
@@ -172,16 +193,30 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
             int k = 0;
             while (k < 4 && strcmp(ch->channel_name, names[k]) != 0)
                 k++;
-            if (k == 4) {
+            if (k < 4) {
+                /* The library converts our float samples to the channel type. */
+                ch->user_data_type = EXR_PIXEL_FLOAT;
+                ch->user_bytes_per_element = 4;
+                ch->user_pixel_stride = 4 * (int32_t)sizeof(float);
+                ch->user_line_stride = w * 4 * (int32_t)sizeof(float);
+                ch->encode_from_ptr =
+                    (const uint8_t *)(img->rgba + (size_t)(cinfo.start_y) * (size_t)w * 4 + offsets[k]);
+                continue;
+            }
+            int e = 0;
+            while (e < nextra && strcmp(ch->channel_name, opt->channels[e].name) != 0)
+                e++;
+            if (e == nextra) {
                 rv = EXR_ERR_INVALID_ARGUMENT;
                 goto fail;
             }
-            /* The library converts our float samples to the channel type. */
-            ch->user_data_type = EXR_PIXEL_FLOAT;
+            /* A plane of 4-byte samples: floats, or uint32 for UINT. */
+            const ImageChannel *x = &opt->channels[e];
+            ch->user_data_type = x->type == IMAGE_CHANNEL_UINT ? EXR_PIXEL_UINT : EXR_PIXEL_FLOAT;
             ch->user_bytes_per_element = 4;
-            ch->user_pixel_stride = 4 * (int32_t)sizeof(float);
-            ch->user_line_stride = w * 4 * (int32_t)sizeof(float);
-            ch->encode_from_ptr = (const uint8_t *)(img->rgba + (size_t)(cinfo.start_y) * (size_t)w * 4 + offsets[k]);
+            ch->user_pixel_stride = 4;
+            ch->user_line_stride = w * 4;
+            ch->encode_from_ptr = (const uint8_t *)x->data + (size_t)cinfo.start_y * (size_t)w * 4;
         }
         if (y == 0)
             rv = exr_encoding_choose_default_routines(ctx, part, &enc);
@@ -421,4 +456,126 @@ fail_quiet:
     free(sc.buf);
     image_free(img);
     return -1;
+}
+
+/* Named channels of a scanline file as float planes (image_read_exr_channels). */
+int image_exr_read_planes(int fd, const char *const *names, int n, float **planes, int *width, int *height,
+                          char *err, int errlen)
+{
+    ExrIO io = { fd, err, errlen, 0 };
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    exr_context_t ctx = NULL;
+    exr_decode_pipeline_t dec;
+    exr_storage_t storage;
+    exr_attr_box2i_t dw;
+    const exr_attr_chlist_t *chans = NULL;
+    int nparts = 0, started = 0, lines, w = 0, h = 0, status = -1;
+    exr_result_t rv;
+
+    memset(&dec, 0, sizeof dec);
+    for (int k = 0; k < n; k++)
+        planes[k] = NULL;
+    init.user_data = &io;
+    init.read_fn = exr_fd_read;
+    init.size_fn = exr_fd_size;
+    init.error_handler_fn = on_exr_error;
+    init.max_image_width = IMAGE_MAX_DIM;
+    init.max_image_height = IMAGE_MAX_DIM;
+
+    rv = exr_start_read(&ctx, "image.exr", &init);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_count(ctx, &nparts);
+    if (rv == EXR_ERR_SUCCESS && nparts < 1)
+        rv = EXR_ERR_FILE_BAD_HEADER;
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_storage(ctx, 0, &storage);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_data_window(ctx, 0, &dw);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_channels(ctx, 0, &chans);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_scanlines_per_chunk(ctx, 0, &lines);
+    if (rv != EXR_ERR_SUCCESS)
+        goto fail;
+    if (storage != EXR_STORAGE_SCANLINE) {
+        image_set_error(err, errlen, "analysis channels are read from scanline EXR files only");
+        goto fail_quiet;
+    }
+    for (int k = 0; k < n; k++) {
+        int found = 0;
+        for (int c = 0; c < chans->num_channels && !found; c++)
+            found = strcmp(chans->entries[c].name.str, names[k]) == 0 && chans->entries[c].x_sampling == 1 &&
+                    chans->entries[c].y_sampling == 1;
+        if (!found) {
+            image_set_error(err, errlen, "no channel '%s'", names[k]);
+            status = 1;
+            goto fail_quiet;
+        }
+    }
+    {
+        int64_t lw = (int64_t)dw.max.x - dw.min.x + 1, lh = (int64_t)dw.max.y - dw.min.y + 1;
+        if (lw <= 0 || lh <= 0 || lw > IMAGE_MAX_DIM || lh > IMAGE_MAX_DIM || lw * lh > IMAGE_MAX_PIXELS) {
+            image_set_error(err, errlen, "unsupported EXR data window (%lldx%lld)", (long long)lw, (long long)lh);
+            goto fail_quiet;
+        }
+        w = (int)lw;
+        h = (int)lh;
+    }
+    for (int k = 0; k < n; k++)
+        if (!(planes[k] = calloc((size_t)w * (size_t)h, sizeof(float)))) {
+            image_set_error(err, errlen, "out of memory for a %dx%d image", w, h);
+            goto fail_quiet;
+        }
+    if (lines < 1)
+        lines = 1;
+    for (int64_t y = dw.min.y; y <= dw.max.y; y += lines) {
+        exr_chunk_info_t cinfo;
+        rv = exr_read_scanline_chunk_info(ctx, 0, (int)y, &cinfo);
+        if (rv == EXR_ERR_SUCCESS)
+            rv = started ? exr_decoding_update(ctx, 0, &cinfo, &dec) : exr_decoding_initialize(ctx, 0, &cinfo, &dec);
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+        started = 1;
+        int64_t row = cinfo.start_y - dw.min.y;
+        if (row < 0 || cinfo.height < 1 || row + cinfo.height > h || cinfo.width != w) {
+            rv = EXR_ERR_CORRUPT_CHUNK;
+            goto fail;
+        }
+        for (int c = 0; c < dec.channel_count; c++) {
+            exr_coding_channel_info_t *ch = &dec.channels[c];
+            ch->decode_to_ptr = NULL;
+            for (int k = 0; k < n; k++)
+                if (strcmp(ch->channel_name, names[k]) == 0) {
+                    ch->user_data_type = EXR_PIXEL_FLOAT;
+                    ch->user_bytes_per_element = 4;
+                    ch->user_pixel_stride = 4;
+                    ch->user_line_stride = w * 4;
+                    ch->decode_to_ptr = (uint8_t *)(planes[k] + (size_t)row * (size_t)w);
+                }
+        }
+        rv = exr_decoding_choose_default_routines(ctx, 0, &dec);
+        if (rv == EXR_ERR_SUCCESS)
+            rv = exr_decoding_run(ctx, 0, &dec);
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+    }
+    if (started)
+        exr_decoding_destroy(ctx, &dec);
+    exr_finish(&ctx);
+    *width = w;
+    *height = h;
+    return 0;
+
+fail:
+    exr_fail(&io, rv);
+fail_quiet:
+    if (started)
+        exr_decoding_destroy(ctx, &dec);
+    if (ctx != NULL)
+        exr_finish(&ctx);
+    for (int k = 0; k < n; k++) {
+        free(planes[k]);
+        planes[k] = NULL;
+    }
+    return status;
 }

@@ -8,12 +8,14 @@
 #include <unistd.h>
 
 #include "config.h"
+#include "aov.h"
 #include "colour.h"
 #include "compare.h"
 #include "grid.h"
 #include "image.h"
 #include "options.h"
 #include "parser.h"
+#include "provenance.h"
 #include "render.h"
 #include "cost_model.h"
 #include "shadow.h"
@@ -88,6 +90,11 @@ int main(int argc, char **argv)
     }
     if (image_format_from_path(output) == IMAGE_FORMAT_UNKNOWN) {
         fprintf(stderr, "hstrace: '%s': unknown image format (use .exr, .png or .ppm)\n", output);
+        free(owned_output);
+        return EXIT_USAGE;
+    }
+    if (opt.aov && image_format_from_path(output) != IMAGE_FORMAT_EXR) {
+        fprintf(stderr, "hstrace: --aov: '%s': analysis channels need an EXR output (-o FILE.exr)\n", output);
         free(owned_output);
         return EXIT_USAGE;
     }
@@ -231,8 +238,27 @@ int main(int argc, char **argv)
     ropt.progress = isatty(STDERR_FILENO);
     report.threads = ropt.threads;
 
+    AovImage aov;
+    memset(&aov, 0, sizeof aov);
+    if (opt.aov) {
+        if (aov_image_alloc(&aov, opt.aov, opt.width, opt.height, world.nlights, opt.exr_float)) {
+            fprintf(stderr, "hstrace: out of memory for the analysis channels\n");
+            if (have_volumes)
+                shadow_volumes_free(&volumes);
+            grid_free(&grid);
+            world_free(&world);
+            scene_free(scene);
+            colour_display_free(colour);
+            free(owned_output);
+            return EXIT_IO;
+        }
+        ropt.aov = &aov;
+    }
+
     Image img;
     int status = EXIT_OK;
+    Provenance prov;
+    memset(&prov, 0, sizeof prov);
     if (render_image(&world, &grid, &ropt, &img, &report.render)) {
         fprintf(stderr, "hstrace: out of memory while rendering\n");
         status = EXIT_IO;
@@ -250,13 +276,26 @@ int main(int argc, char **argv)
             wopt.have_chromaticities = 1;
             memcpy(wopt.chromaticities, colour_rec709_chromaticities, sizeof wopt.chromaticities);
         }
-        if (image_write(output, &img, &wopt, err, sizeof err)) {
+        wopt.channels = aov.channels;
+        wopt.nchannels = aov.nchannels;
+        report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */
+        if (image_format_from_path(output) == IMAGE_FORMAT_EXR) {
+            if (provenance_build(&prov, argc, argv, &opt, &report)) {
+                fprintf(stderr, "hstrace: out of memory\n");
+                status = EXIT_IO;
+            }
+            wopt.attributes = prov.attr;
+            wopt.nattributes = prov.n;
+        }
+        if (status == EXIT_OK && image_write(output, &img, &wopt, err, sizeof err)) {
             fprintf(stderr, "hstrace: %s\n", err);
             status = EXIT_IO;
         }
         report.output_seconds = clock_wall() - t;
         image_free(&img);
     }
+    provenance_free(&prov);
+    aov_image_free(&aov);
     report.wall_seconds = clock_wall() - wall0;
     if (status == EXIT_OK && opt.stats) {
         stats_print(stderr, &report);

@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "image_compare.h"
 
@@ -191,5 +192,22 @@ int mask_compare(const Image *a3, const Image *a4, const Image *b3, const Image 
     free(aloss);
     free(bloss);
     *out = c;
+    return 0;
+}
+
+int mask_pair_from_loss(const Image *render, const float *const loss[3], Image *q3, Image *q4)
+{
+    int w = render->width, h = render->height;
+    if (image_alloc(q3, w, h) || image_alloc(q4, w, h)) {
+        image_free(q3);
+        image_free(q4);
+        return -1;
+    }
+    size_t n = (size_t)w * h;
+    memcpy(q4->rgba, render->rgba, n * 4 * sizeof(float));
+    memcpy(q3->rgba, render->rgba, n * 4 * sizeof(float));
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            q3->rgba[i * 4 + k] += loss[k][i];
     return 0;
 }

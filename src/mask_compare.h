@@ -66,4 +66,13 @@ typedef struct {
 int mask_compare(const Image *a3, const Image *a4, const Image *b3, const Image *b4, const MaskCompareOptions *opt,
                  MaskComparison *out, Image *map);
 
+/* The +Q3/+Q4 pair that one hstrace render made with --aov shadow stands
+ * for: q4 is the render, q3 the render plus its shadow.loss.R/G/B channels
+ * (loss[0..2], width*height each), the light its shadows took at the
+ * primary hit. For a +Q4 render the pair is the +Q3/+Q4 pair up to float
+ * rounding; for a fuller one (+Q9) both hold the same reflected and
+ * refracted light, so the shadow losses are still exact and only q3's
+ * silhouettes include reflected edges. Returns 0, or -1 when out of memory. */
+int mask_pair_from_loss(const Image *render, const float *const loss[3], Image *q3, Image *q4);
+
 #endif

@@ -7,6 +7,7 @@
 
 #include "options.h"
 
+#include "aov.h"
 #include "grid.h"
 #include "shadow.h"
 #include "shadow_volumes.h"
@@ -79,6 +80,8 @@ void options_usage(FILE *f)
             "      --grid N|NxNxN     grid cells per axis (default: chosen from the polygon count)\n"
             "      --include-path DIR folder searched for #include files (repeatable)\n"
             "      --exr-float        write 32-bit float EXR channels instead of half\n"
+            "      --aov LIST         EXR only: add analysis channels, comma separated groups of\n"
+            "                         Z, N, P, shadow, hst, depth, cost, or all (see the man page)\n"
             "      --png16            write 16-bit PNG\n"
             "      --ocio-config FILE OpenColorIO config for PNG/PPM output (default: $OCIO, else\n"
             "                         hstrace's own); without this, --display, --view, --colorspace\n"
@@ -316,6 +319,9 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             opt->stats_json = v;
         } else if (strcmp(a, "--exr-float") == 0) {
             opt->exr_float = 1;
+        } else if (is_long(a, "--aov")) {
+            if (!(v = option_value(argc, argv, &i, "--aov", err, errlen)) || aov_parse(v, &opt->aov, err, errlen))
+                return -1;
         } else if (strcmp(a, "--png16") == 0) {
             opt->png16 = 1;
         } else if (is_long(a, "--ocio-config") || is_long(a, "--display") || is_long(a, "--view") ||

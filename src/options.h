@@ -36,6 +36,7 @@ typedef struct {
     const char *stats_json;
     int exr_float;
     int png16;
+    unsigned aov;                 /* --aov: AovGroup bits (aov.h); 0 none */
     /* OpenColorIO (see colour.h); NULL when not given. */
     const char *ocio_config, *display, *view, *colorspace;
     int help, version;

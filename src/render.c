@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "aov.h"
 #include "shade.h"
 #include "shadow_coherence.h"
 #include "shadow_reference.h"
@@ -59,6 +60,12 @@ static void render_tile(TraceContext *ctx, Job *job, int tile)
     int x0 = (tile % job->tiles_x) * TILE, y0 = (tile / job->tiles_x) * TILE;
     int x1 = x0 + TILE < opt->width ? x0 + TILE : opt->width;
     int y1 = y0 + TILE < opt->height ? y0 + TILE : opt->height;
+    /* The cache method's last blockers start empty in every tile, so that
+     * what it decides and counts for a pixel (the analysis channels, the
+     * statistics) does not depend on which tiles this thread rendered
+     * before: the same for any thread count. */
+    for (int i = 0; i < job->world->nlights; i++)
+        ctx->light_cache[i] = -1;
     for (int y = y0; y < y1; y++) {
         for (int x = x0; x < x1; x++) {
             Ray ray;
@@ -66,6 +73,8 @@ static void render_tile(TraceContext *ctx, Job *job, int tile)
             ray.from.kind = HIT_NONE;
             camera_ray(&job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
             Radiance c;
+            if (ctx->aov)
+                aov_pixel_begin(ctx->aov, &ctx->stats);
             if (ctx->coherence)
                 pixel_coherence_begin(ctx->coherence, x == x0, y == y0);
             shade_trace(ctx, &ray, 1.0, 0, &c);
@@ -74,6 +83,8 @@ static void render_tile(TraceContext *ctx, Job *job, int tile)
                                     (const LightState *)ctx->states, x == x0);
             ctx->stats.camera_rays++;
             ctx->stats.pixels++;
+            if (ctx->aov)
+                aov_pixel_end(ctx->aov, &ctx->stats, opt->aov, x, y);
             float *px = &job->img->rgba[((size_t)y * opt->width + x) * 4];
             px[0] = (float)c.r;
             px[1] = (float)c.g;
@@ -105,6 +116,18 @@ static void *worker_main(void *arg)
         }
         ctx.coherence = &coherence;
     }
+    AovPixel aov;
+    memset(&aov, 0, sizeof aov);
+    if (opt->aov) {
+        if (aov_pixel_init(&aov, job->world->nlights, strcmp(opt->shadow->name, "none") == 0)) {
+            aov_pixel_free(&aov);
+            pixel_coherence_free(&coherence);
+            trace_context_free(&ctx);
+            atomic_store(&job->failed, 1);
+            return NULL;
+        }
+        ctx.aov = &aov;
+    }
     ctx.verify = opt->verify;
     ctx.reference_eps = shadow_reference_eps(job->grid);
     ctx.nth = opt->nth;
@@ -127,6 +150,7 @@ static void *worker_main(void *arg)
     }
     ctx.stats.render_seconds = clock_thread_cpu() - t0;
     wk->stats = ctx.stats;
+    aov_pixel_free(&aov);
     pixel_coherence_free(&coherence);
     trace_context_free(&ctx);
     return NULL;

@@ -21,6 +21,7 @@ typedef struct {
     int verify;               /* 1 --verify-shadows, 2 --verify-reference too */
     int pixel_coherence;      /* hst: count from the neighbouring pixel's hit */
     int progress;             /* print a progress line on stderr */
+    struct AovImage *aov;     /* --aov: the analysis channels to fill, or NULL */
 } RenderOptions;
 
 /* The camera ray through the centre of pixel (x, y), row 0 at the top. */

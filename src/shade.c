@@ -5,6 +5,7 @@
 
 #include <string.h>
 
+#include "aov.h"
 #include "intersect.h"
 #include "shadow.h"
 #include "shadow_coherence.h"
@@ -106,23 +107,89 @@ static void verify_shadow(TraceContext *ctx, const ShadowQuery *q, RGB got)
     ctx->last_scheme = scheme;
 }
 
+/* --aov: what became of q's light at the primary hit. asked: the method's
+ * test or skip ran; through: the test's answer (NULL after a skip). */
+static void note_light(TraceContext *ctx, const ShadowQuery *q, int asked, int faces_away, const RGB *through)
+{
+    if (!ctx->aov || ctx->state_depth != 1)
+        return;
+    ShadowRecord r = { SCHEME_NONE, -1 };
+    if (asked)
+        r = shadow_record(ctx, q, through);
+    AovCode code = r.scheme != SCHEME_NONE ? aov_code_of_scheme(r.scheme)
+                   : faces_away            ? AOV_CODE_FACES_AWAY
+                                           : AOV_CODE_UNTESTED;
+    double visibility = faces_away ? 0.0 : through ? greyscale(through->r, through->g, through->b) : 1.0;
+    aov_record_light(ctx->aov, q->light, code, visibility, r.depth);
+}
+
 /* The shadow methods' states when the shading asks nothing about any light. */
 static void skip_all_lights(TraceContext *ctx, const Hit *hit, const Segment *seg)
 {
     const World *w = ctx->world;
-    if (!ctx->quality.shadows || !ctx->shadow->skip)
+    int ask = ctx->quality.shadows && ctx->shadow->skip;
+    if (!ask && !(ctx->aov && ctx->state_depth == 1))
         return;
     for (int li = 0; li < w->nlights; li++) {
         const Light *l = &w->lights[li];
-        if (l->shadowless)
-            continue;
         Vec3 to_light;
         double distance = light_direction(l, hit->point, &to_light);
         ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
-        double t0 = shadow_timer_start(ctx);
-        ctx->shadow->skip(ctx, &q, 0);
-        shadow_timer_stop(ctx, t0);
+        if (ask && !l->shadowless) {
+            double t0 = shadow_timer_start(ctx);
+            ctx->last_scheme = SCHEME_NONE;
+            ctx->shadow->skip(ctx, &q, 0);
+            shadow_timer_stop(ctx, t0);
+            note_light(ctx, &q, 1, 0, NULL);
+        } else {
+            note_light(ctx, &q, 0, 0, NULL);
+        }
     }
+}
+
+/* Light l's diffuse, phong and specular terms for light colour lc. */
+static void add_light(const Finish *f, const Light *l, Vec3 eye_dir, Vec3 normal, Vec3 to_light, RGB pigment,
+                      double attenuation, RGB lc, RGB *acc)
+{
+    if (f->diffuse > 0.0) {
+        double c = fabs(v3_dot(normal, to_light));
+        double intensity = (f->brilliance != 1.0 ? pow(c, f->brilliance) : c) * f->diffuse * attenuation;
+        acc->r += intensity * pigment.r * lc.r;
+        acc->g += intensity * pigment.g * lc.g;
+        acc->b += intensity * pigment.b * lc.b;
+    }
+    if (l->shadowless)
+        return; /* POV-Ray's fill lights give no highlights */
+    if (f->phong > 0.0) {
+        Vec3 refl = v3_madd(eye_dir, normal, -2.0 * v3_dot(eye_dir, normal));
+        double c = v3_dot(refl, to_light);
+        if (c > 0.0) {
+            double intensity = (f->phong_size < 60 || c > 0.0008) ? f->phong * pow(c, f->phong_size) : 0.0;
+            RGB cs = f->metallic > 0.0 ? metallic_colour(f->metallic, normal, to_light, lc, pigment) : lc;
+            acc->r += intensity * cs.r;
+            acc->g += intensity * cs.g;
+            acc->b += intensity * cs.b;
+        }
+    }
+    if (f->specular > 0.0) {
+        Vec3 half = v3_scale(v3_add(v3_neg(eye_dir), to_light), 0.5);
+        double hl = v3_length(half);
+        if (hl > 0.0) {
+            double c = v3_dot(half, normal) / hl;
+            if (c > 0.0) {
+                double intensity = f->specular * pow(c, f->roughness);
+                RGB cs = f->metallic > 0.0 ? metallic_colour(f->metallic, normal, to_light, lc, pigment) : lc;
+                acc->r += intensity * cs.r;
+                acc->g += intensity * cs.g;
+                acc->b += intensity * cs.b;
+            }
+        }
+    }
+}
+
+static int visible(RGB lc)
+{
+    return fabs(lc.r) > POV_EPSILON || fabs(lc.g) > POV_EPSILON || fabs(lc.b) > POV_EPSILON;
 }
 
 /* Diffuse, phong and specular from every light (ComputeDiffuseLight). */
@@ -143,11 +210,14 @@ static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, c
          * needs no shadow test; methods that carry state still see it. */
         int faces_away = !m->double_illuminate && v3_dot(normal, to_light) < POV_EPSILON;
         if (faces_away || (fabs(lc.r) < POV_EPSILON && fabs(lc.g) < POV_EPSILON && fabs(lc.b) < POV_EPSILON)) {
-            if (shadows && ctx->shadow->skip) {
+            int asked = shadows && ctx->shadow->skip;
+            if (asked) {
                 double t0 = shadow_timer_start(ctx);
+                ctx->last_scheme = SCHEME_NONE;
                 ctx->shadow->skip(ctx, &q, faces_away);
                 shadow_timer_stop(ctx, t0);
             }
+            note_light(ctx, &q, asked, faces_away, NULL);
             continue;
         }
         if (shadows) {
@@ -160,47 +230,26 @@ static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, c
             ctx->stats.shadow_queries++;
             if (ctx->verify)
                 verify_shadow(ctx, &q, through);
+            note_light(ctx, &q, 1, 0, &through);
+            RGB unshadowed = lc;
             lc.r *= through.r;
             lc.g *= through.g;
             lc.b *= through.b;
+            if (ctx->aov && ctx->state_depth == 1 && (through.r != 1.0 || through.g != 1.0 || through.b != 1.0)) {
+                /* --aov: what this shadow took, as a +Q3 render would show it. */
+                RGB u = { 0, 0, 0 }, s = { 0, 0, 0 };
+                if (visible(unshadowed))
+                    add_light(f, l, eye_dir, normal, to_light, pigment, attenuation, unshadowed, &u);
+                if (visible(lc))
+                    add_light(f, l, eye_dir, normal, to_light, pigment, attenuation, lc, &s);
+                aov_record_loss(ctx->aov, (const double[3]){ u.r, u.g, u.b }, (const double[3]){ s.r, s.g, s.b });
+            }
+        } else {
+            note_light(ctx, &q, 0, 0, NULL);
         }
-        if (!(fabs(lc.r) > POV_EPSILON || fabs(lc.g) > POV_EPSILON || fabs(lc.b) > POV_EPSILON))
+        if (!visible(lc))
             continue;
-
-        if (f->diffuse > 0.0) {
-            double c = fabs(v3_dot(normal, to_light));
-            double intensity = (f->brilliance != 1.0 ? pow(c, f->brilliance) : c) * f->diffuse * attenuation;
-            acc->r += intensity * pigment.r * lc.r;
-            acc->g += intensity * pigment.g * lc.g;
-            acc->b += intensity * pigment.b * lc.b;
-        }
-        if (l->shadowless)
-            continue; /* POV-Ray's fill lights give no highlights */
-        if (f->phong > 0.0) {
-            Vec3 refl = v3_madd(eye_dir, normal, -2.0 * v3_dot(eye_dir, normal));
-            double c = v3_dot(refl, to_light);
-            if (c > 0.0) {
-                double intensity = (f->phong_size < 60 || c > 0.0008) ? f->phong * pow(c, f->phong_size) : 0.0;
-                RGB cs = f->metallic > 0.0 ? metallic_colour(f->metallic, normal, to_light, lc, pigment) : lc;
-                acc->r += intensity * cs.r;
-                acc->g += intensity * cs.g;
-                acc->b += intensity * cs.b;
-            }
-        }
-        if (f->specular > 0.0) {
-            Vec3 half = v3_scale(v3_add(v3_neg(eye_dir), to_light), 0.5);
-            double hl = v3_length(half);
-            if (hl > 0.0) {
-                double c = v3_dot(half, normal) / hl;
-                if (c > 0.0) {
-                    double intensity = f->specular * pow(c, f->roughness);
-                    RGB cs = f->metallic > 0.0 ? metallic_colour(f->metallic, normal, to_light, lc, pigment) : lc;
-                    acc->r += intensity * cs.r;
-                    acc->g += intensity * cs.g;
-                    acc->b += intensity * cs.b;
-                }
-            }
-        }
+        add_light(f, l, eye_dir, normal, to_light, pigment, attenuation, lc, acc);
     }
 }
 
@@ -425,6 +474,8 @@ static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hitp, const 
     Vec3 normal = raw;
     const Colour *pc = &m->pigment;
     RGB pigment = { pc->r, pc->g, pc->b };
+    if (ctx->aov && ctx->state_depth == 1)
+        aov_record_hit(ctx->aov, hit.t, hit.point, normal);
 
     if (ctx->quality.full_ambient) {
         skip_all_lights(ctx, &hit, seg);

@@ -40,3 +40,18 @@ const char *shadow_method_names(void)
 {
     return "hst, conventional, cache, volume, none";
 }
+
+ShadowRecord shadow_record(const TraceContext *ctx, const ShadowQuery *q, const RGB *answer)
+{
+    ShadowRecord r = { ctx->last_scheme, -1 };
+    if (r.scheme == SCHEME_NONE)
+        return r;
+    if (q->segment->state) {
+        const LightState *s = &q->segment->state[q->light];
+        if (s->depth_known)
+            r.depth = s->depth_opaque;
+    } else if (answer && !ctx->shadow->uses_volumes && (answer->r > 0.0 || answer->g > 0.0 || answer->b > 0.0)) {
+        r.depth = 0;
+    }
+    return r;
+}

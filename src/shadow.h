@@ -45,8 +45,12 @@ typedef struct {
     Vec3 normal;         /* shading normal, facing the arriving ray */
 } ShadowQuery;
 
-/* How a decision was made (statistics, --verify-shadows). */
+/* How a decision was made (statistics, --verify-shadows, --aov). A test
+ * always sets ctx->last_scheme; a skip sets it only when it decides the
+ * state at P2 (sustain, self-shadow, volume), so callers that want to know
+ * set SCHEME_NONE before a skip. */
 typedef enum {
+    SCHEME_NONE = -1,
     SCHEME_SUSTAIN, SCHEME_SELF_SHADOW, SCHEME_VOLUME, SCHEME_CONVENTIONAL, SCHEME_CACHE_HIT,
     SCHEME_COUNT
 } ShadowScheme;
@@ -64,6 +68,20 @@ typedef struct ShadowMethod {
      * faces_away: the shading normal faces away from the light. May be NULL. */
     void (*skip)(TraceContext *ctx, const ShadowQuery *q, int faces_away);
 } ShadowMethod;
+
+/* The record of one decision, the same for every method, for the analysis
+ * channels (--aov): read right after test or skip. */
+typedef struct {
+    int scheme;  /* ctx->last_scheme: ShadowScheme, or SCHEME_NONE */
+    int depth;   /* opaque polygons between the point and the light (the
+                  * depth count), -1 where the method does not know it */
+} ShadowRecord;
+
+/* Methods that keep states report their depth count where it is known;
+ * the others know it is 0 where some light got through (the shadow ray met
+ * no opaque polygon on its way), and nothing where it was blocked (the ray
+ * stops at the first blocker). answer: the test's answer, NULL after a skip. */
+ShadowRecord shadow_record(const TraceContext *ctx, const ShadowQuery *q, const RGB *answer);
 
 /* NULL when no method has that name. */
 const ShadowMethod *shadow_method_find(const char *name);

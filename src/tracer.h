@@ -13,6 +13,7 @@
 struct ShadowMethod;
 struct ShadowVolumes;
 struct PixelCoherence;
+struct AovPixel;
 
 /* What a surface hit is: a grid polygon or an infinite plane. */
 typedef enum { HIT_NONE, HIT_POLYGON, HIT_PLANE } HitKind;
@@ -71,6 +72,8 @@ typedef struct {
     /* Light states along the ray tree: one row of nlights per recursion depth. */
     void *states;
     int state_depth, state_capacity;
+    /* --aov: the current pixel's analysis record, or NULL when off. */
+    struct AovPixel *aov;
 } TraceContext;
 
 /* volumes: the shadow volumes when the method uses them, else NULL. */

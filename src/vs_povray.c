@@ -398,14 +398,14 @@ static int spawn_failed(VsRun *v, const char *name)
  * --width W --height H --threads T, in the current folder (the render
  * options may name files relative to it). */
 static int run_hstrace(VsRun *v, const char *method, int quality, const char *out, const char *json,
-                       ProcessResult *r)
+                       int with_shadow_channels, ProcessResult *r)
 {
     const VsPovrayOptions *opt = v->opt;
-    char **argv = calloc((size_t)opt->nrender_args + 24, sizeof *argv);
+    char **argv = calloc((size_t)opt->nrender_args + 26, sizeof *argv);
     if (!argv)
         return spawn_failed(v, "hstrace");
     char prog[] = "hstrace", shadows[] = "--shadows", o[] = "-o", sj[] = "--stats-json", w[] = "--width",
-         h[] = "--height", t[] = "--threads";
+         h[] = "--height", t[] = "--threads", aov[] = "--aov", aov_groups[] = "shadow";
     char q[16], ws[16], hs[16], ts[16], outp[PATH_MAX], jsonp[PATH_MAX], meth[32];
     snprintf(q, sizeof q, "+Q%d", quality);
     snprintf(ws, sizeof ws, "%d", v->width);
@@ -427,6 +427,10 @@ static int run_hstrace(VsRun *v, const char *method, int quality, const char *ou
         tmp_path(v, json, jsonp, sizeof jsonp);
         argv[n++] = sj;
         argv[n++] = jsonp;
+    }
+    if (with_shadow_channels) {
+        argv[n++] = aov;
+        argv[n++] = aov_groups;
     }
     argv[n++] = w;
     argv[n++] = ws;
@@ -534,33 +538,30 @@ static double read_shadow_seconds(const char *path)
     return end == s ? NAN : t;
 }
 
-/* All renders: the +Q3/+Q4 pairs, then the timed full renders, run after
- * run, POV-Ray first in each. Returns 0, -1 when interrupted, or an exit
- * status. */
+/* All renders: POV-Ray's +Q3/+Q4 pair and each method's +Q4 render with
+ * its shadow channels (--aov shadow: the render and its shadow losses stand
+ * for hstrace's own pair), then the timed full renders, run after run,
+ * POV-Ray first in each. Returns 0, -1 when interrupted, or an exit status. */
 static int render_all(VsRun *v, Timings *pov, Timings *methods)
 {
     const VsPovrayOptions *opt = v->opt;
     ProcessResult r;
     char name[FILE_NAME], json[FILE_NAME];
     int status;
-    /* hstrace first: its message names the line of a scene error. No
-     * shadows at +Q3, whatever the method. */
-    progress(v, "hstrace", "+Q3", 0);
-    if ((status = run_hstrace(v, "conventional", 3, "hstrace.q3.exr", NULL, &r)))
-        return status;
+    /* hstrace first: its message names the line of a scene error. */
+    for (int m = 0; m < opt->nmethods; m++) {
+        const char *method = opt->methods[m]->name;
+        snprintf(name, sizeof name, "%s.q4.exr", method);
+        progress(v, method, "+Q4", 0);
+        if ((status = run_hstrace(v, method, 4, name, NULL, 1, &r)))
+            return status;
+    }
     progress(v, "POV-Ray", "+Q3", 0);
     if ((status = run_povray(v, 3, "povray.q3.exr", &r)))
         return status;
     progress(v, "POV-Ray", "+Q4", 0);
     if ((status = run_povray(v, 4, "povray.q4.exr", &r)))
         return status;
-    for (int m = 0; m < opt->nmethods; m++) {
-        const char *method = opt->methods[m]->name;
-        snprintf(name, sizeof name, "%s.q4.exr", method);
-        progress(v, method, "+Q4", 0);
-        if ((status = run_hstrace(v, method, 4, name, NULL, &r)))
-            return status;
-    }
     for (int run = 0; run < opt->runs; run++) {
         progress(v, "POV-Ray", "+Q9", run + 1);
         if ((status = run_povray(v, 9, "povray.exr", &r)))
@@ -573,7 +574,7 @@ static int render_all(VsRun *v, Timings *pov, Timings *methods)
             snprintf(name, sizeof name, "%s.exr", method);
             snprintf(json, sizeof json, "%s.json", method);
             progress(v, method, "+Q9", run + 1);
-            if ((status = run_hstrace(v, method, 9, name, json, &r)))
+            if ((status = run_hstrace(v, method, 9, name, json, 0, &r)))
                 return status;
             char path[PATH_MAX];
             tmp_path(v, json, path, sizeof path);
@@ -604,6 +605,37 @@ static int read_render(const VsRun *v, const char *name, const char *who, Image 
         return VS_EXIT_IO;
     }
     return 0;
+}
+
+/* The +Q3/+Q4 pair a method's +Q4 render stands for: the render (*q4,
+ * replaced) and the render plus its shadow.loss channels (*q3). */
+static int pair_from_channels(const VsRun *v, const char *name, Image *q3, Image *q4)
+{
+    static const char *const names[3] = {"shadow.loss.R", "shadow.loss.G", "shadow.loss.B"};
+    char path[PATH_MAX], err[1024];
+    float *loss[3];
+    int w, h;
+    tmp_path(v, name, path, sizeof path);
+    if (image_read_exr_channels(path, names, 3, loss, &w, &h, err, sizeof err)) {
+        fprintf(stderr, PROGRAM ": hstrace's render %s: %s\n", name, err);
+        return VS_EXIT_IO;
+    }
+    Image render = *q4;
+    int status = 0;
+    if (w != render.width || h != render.height) {
+        fprintf(stderr, PROGRAM ": hstrace's render %s: shadow channels of another size\n", name);
+        render.rgba = NULL; /* still *q4's */
+        status = VS_EXIT_IO;
+    } else if (mask_pair_from_loss(&render, (const float *const *)loss, q3, q4)) {
+        fprintf(stderr, PROGRAM ": out of memory\n");
+        *q4 = render; /* still the caller's to free */
+        render.rgba = NULL;
+        status = VS_EXIT_IO;
+    }
+    image_free(&render);
+    for (int k = 0; k < 3; k++)
+        free(loss[k]);
+    return status;
 }
 
 /* One PNG of the report (8-bit sRGB, written to a temporary and renamed). */
@@ -659,8 +691,7 @@ static int compare_all(VsRun *v, const Timings *pov, const Timings *methods, VsR
     int status = 0, report_status = 0;
     if ((status = read_render(v, "povray.exr", "POV-Ray", &ref)) ||
         (status = read_render(v, "povray.q3.exr", "POV-Ray", &ref3)) ||
-        (status = read_render(v, "povray.q4.exr", "POV-Ray", &ref4)) ||
-        (status = read_render(v, "hstrace.q3.exr", "hstrace", &hst3)))
+        (status = read_render(v, "povray.q4.exr", "POV-Ray", &ref4)))
         goto done;
     res->povray.name = "povray";
     res->povray.wall = median(pov->wall, opt->runs);
@@ -690,7 +721,7 @@ static int compare_all(VsRun *v, const Timings *pov, const Timings *methods, VsR
         if ((status = read_render(v, name, "hstrace", &img)))
             goto done;
         snprintf(name, sizeof name, "%s.q4.exr", method);
-        if ((status = read_render(v, name, "hstrace", &q4)))
+        if ((status = read_render(v, name, "hstrace", &q4)) || (status = pair_from_channels(v, name, &hst3, &q4)))
             goto done;
         int want_maps = opt->report && !report_status;
         if (image_compare(&ref, &img, res->threshold, &row->image) ||
@@ -719,6 +750,7 @@ static int compare_all(VsRun *v, const Timings *pov, const Timings *methods, VsR
         }
         image_free(&img);
         image_free(&q4);
+        image_free(&hst3);
     }
     status = report_status;
 done:

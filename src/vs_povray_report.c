@@ -282,7 +282,8 @@ static void html_about(FILE *f, const VsResult *r)
         fprintf(f, "</code></dd>\n");
     }
     fprintf(f, "<dt>Renders</dt><dd>%dx%d pixels, %d thread%s for both programs, no anti-aliasing, linear "
-               "half-float OpenEXR compared; full renders at +Q9, shadow masks from +Q3 and +Q4 renders; "
+               "half-float OpenEXR compared; full renders at +Q9; POV-Ray's shadow mask from +Q3 and +Q4 renders, "
+               "hstrace's from a +Q4 render with its shadow channels (--aov shadow); "
                "times are medians of %d run%s</dd>\n",
             r->width, r->height, r->threads, r->threads == 1 ? "" : "s", r->runs, r->runs == 1 ? "" : "s");
     fprintf(f, "<dt>Date</dt><dd>");
@@ -353,7 +354,8 @@ void vs_report_html(FILE *f, const VsResult *r)
     fprintf(f, "</div>\n");
 
     fprintf(f, "<h2>Shadow masks against POV-Ray's</h2>\n<p>Which pixels are shadowed at the first hit, from "
-               "renders without (+Q3) and with (+Q4) shadows:</p>\n<p>\n");
+               "renders without (+Q3) and with (+Q4) shadows (hstrace: a +Q4 render and its shadow.loss "
+               "channels):</p>\n<p>\n");
     html_swatch(f, "#000", "lit in both");
     html_swatch(f, "#7c7c7c", "shadowed in both");
     html_swatch(f, "#00006c", "silhouette");

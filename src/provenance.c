@@ -1,0 +1,185 @@
+/* The EXR header's account of how an image was made. */
+#include "provenance.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "aov.h"
+#include "config.h"
+#include "cost_model.h"
+
+int provenance_hash_file(const char *path, uint64_t *hash)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return -1;
+    uint64_t h = 0xcbf29ce484222325ULL; /* FNV-1a offset basis and prime */
+    unsigned char buf[8192];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        for (size_t i = 0; i < n; i++) {
+            h ^= buf[i];
+            h *= 0x100000001b3ULL;
+        }
+    int bad = ferror(f);
+    fclose(f);
+    if (bad)
+        return -1;
+    *hash = h;
+    return 0;
+}
+
+/* The command line, each word quoted for a POSIX shell where needed. */
+static char *quote_words(int argc, char **argv)
+{
+    size_t len = 1;
+    for (int i = 0; i < argc; i++)
+        len += 4 * strlen(argv[i]) + 3;
+    char *out = malloc(len), *o = out;
+    if (!out)
+        return NULL;
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        if (i > 0)
+            *o++ = ' ';
+        int plain = *a != '\0';
+        for (const char *c = a; *c; c++)
+            if (!strchr("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_+-=,./:@%^", *c))
+                plain = 0;
+        if (!plain)
+            *o++ = '\'';
+        for (const char *c = a; *c; c++) {
+            if (*c == '\'') {
+                memcpy(o, "'\\''", 4);
+                o += 4;
+            } else {
+                *o++ = *c;
+            }
+        }
+        if (!plain)
+            *o++ = '\'';
+    }
+    *o = '\0';
+    return out;
+}
+
+static const char *const aov_group_list[AOV_NGROUPS] = { "Z", "N", "P", "shadow", "hst", "depth", "cost" };
+static const char *const precision_names[] = { "double", "float", "float-naive" };
+
+/* The shortest %g form that reads back as the same double. */
+static void shortest(char *buf, size_t len, double v)
+{
+    for (int digits = 6; digits <= 17; digits++) {
+        snprintf(buf, len, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v)
+            return;
+    }
+}
+
+/* Every option in force, defaults included, as one line. */
+static char *resolved_options(const Options *opt, const StatsReport *r)
+{
+    char nth[64], aov[64] = "", tolerance[32];
+    shortest(tolerance, sizeof tolerance, opt->tolerance);
+    if (opt->nth == NTH_AUTO)
+        snprintf(nth, sizeof nth, "auto");
+    else if (opt->nth == NTH_PER_POINT)
+        snprintf(nth, sizeof nth, "per-point");
+    else
+        shortest(nth, sizeof nth, opt->nth);
+    for (int g = 0; g < AOV_NGROUPS; g++)
+        if (opt->aov & (1u << g))
+            snprintf(aov + strlen(aov), sizeof aov - strlen(aov), "%s%s", aov[0] ? "," : "", aov_group_list[g]);
+    size_t len = 1024;
+    char *s = malloc(len);
+    if (!s)
+        return NULL;
+    int pp = opt->plane_precision >= 0 && opt->plane_precision < 3 ? opt->plane_precision : 0;
+    snprintf(s, len,
+             "--width %d --height %d +Q%d --shadows %s --nth %s --pixel-coherence %s --tolerance %s "
+             "--plane-precision %s --grid %dx%dx%d --threads %d%s%s%s%s",
+             opt->width, opt->height, opt->quality, opt->shadows, nth, opt->pixel_coherence ? "on" : "off",
+             tolerance, precision_names[pp], r->grid[0], r->grid[1], r->grid[2], r->threads,
+             opt->exr_float ? " --exr-float" : "",
+             opt->verify_shadows == 2 ? " --verify-reference" : opt->verify_shadows ? " --verify-shadows" : "",
+             aov[0] ? " --aov " : "", aov);
+    return s;
+}
+
+static void add_string(Provenance *p, const char *name, const char *value)
+{
+    if (p->n < PROVENANCE_MAX_ATTRIBUTES)
+        p->attr[p->n++] = (ImageAttribute){ name, IMAGE_ATTR_STRING, value, 0, 0.0 };
+}
+
+static void add_int(Provenance *p, const char *name, int value)
+{
+    if (p->n < PROVENANCE_MAX_ATTRIBUTES)
+        p->attr[p->n++] = (ImageAttribute){ name, IMAGE_ATTR_INT, NULL, value, 0.0 };
+}
+
+static void add_double(Provenance *p, const char *name, double value)
+{
+    if (p->n < PROVENANCE_MAX_ATTRIBUTES)
+        p->attr[p->n++] = (ImageAttribute){ name, IMAGE_ATTR_DOUBLE, NULL, 0, value };
+}
+
+int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, const StatsReport *r)
+{
+    memset(p, 0, sizeof *p);
+    p->command_line = quote_words(argc, argv);
+    p->options = resolved_options(opt, r);
+    if (!p->command_line || !p->options) {
+        provenance_free(p);
+        return -1;
+    }
+    uint64_t h;
+    if (provenance_hash_file(opt->scene, &h) == 0)
+        snprintf(p->scene_hash, sizeof p->scene_hash, "fnv1a64:%016llx", (unsigned long long)h);
+    else
+        snprintf(p->scene_hash, sizeof p->scene_hash, "unreadable");
+    add_string(p, "hstrace.version", PACKAGE_VERSION);
+    add_string(p, "hstrace.commandLine", p->command_line);
+    add_string(p, "hstrace.options", p->options);
+    add_string(p, "hstrace.scene", opt->scene);
+    add_string(p, "hstrace.sceneHash", p->scene_hash);
+    add_string(p, "hstrace.shadows", opt->shadows);
+    add_int(p, "hstrace.threads", r->threads);
+    add_int(p, "hstrace.lights", r->nlights);
+    add_int(p, "hstrace.polygons", r->npolygons);
+    if (r->cost) {
+        const CostModel *c = r->cost;
+        add_double(p, "hstrace.nth", r->nth); /* negative: per shading point */
+        add_string(p, "hstrace.nthMode", r->nth_mode);
+        add_double(p, "hstrace.nthEq7", c->nth);
+        add_double(p, "hstrace.cost.Cs", c->c_s);
+        add_double(p, "hstrace.cost.Ci", c->c_i);
+        add_double(p, "hstrace.cost.Cc", c->c_c);
+        add_double(p, "hstrace.cost.Co", c->c_o);
+        add_double(p, "hstrace.cost.p", c->p);
+        add_double(p, "hstrace.cost.alpha", c->alpha);
+        add_double(p, "hstrace.cost.Nc", c->n_c);
+    }
+    add_double(p, "hstrace.time.parse", r->parse_seconds);
+    add_double(p, "hstrace.time.preprocess", r->preprocess_seconds);
+    add_double(p, "hstrace.time.shadowCpu", r->render.shadow_seconds);
+    add_double(p, "hstrace.time.renderCpu", r->render.render_seconds);
+    add_double(p, "hstrace.time.wall", r->wall_seconds);
+    if (opt->aov & (1u << AOV_HST))
+        add_string(p, "hstrace.aov.hstCodes", aov_code_legend);
+    if (opt->aov)
+        add_string(p, "hstrace.aov.conventions",
+                   "lights L1.. in scene order; at the primary hit; Z +inf and hst 0 where no hit; "
+                   "shadow 0 where the surface faces away, 1 where untested; depth -1 where unknown; "
+                   "cost over the whole pixel");
+    return 0;
+}
+
+void provenance_free(Provenance *p)
+{
+    free(p->command_line);
+    free(p->options);
+    p->command_line = p->options = NULL;
+    p->n = 0;
+}

@@ -1,0 +1,32 @@
+/* What is needed to reproduce and judge an image, written into its EXR
+ * header: the scene and a hash of its text, the command line and the
+ * options in force, the version, the shadow method, N_th and the calibrated
+ * costs, the timings, and (with --aov) how to read the analysis channels.
+ * Attribute names and types are listed in the man page (EXR HEADER). */
+#ifndef HST_PROVENANCE_H
+#define HST_PROVENANCE_H
+
+#include <stdint.h>
+
+#include "image.h"
+#include "options.h"
+#include "stats.h"
+
+#define PROVENANCE_MAX_ATTRIBUTES 32
+
+typedef struct {
+    ImageAttribute attr[PROVENANCE_MAX_ATTRIBUTES];
+    int n;
+    char *command_line, *options;
+    char scene_hash[32];
+} Provenance;
+
+/* FNV-1a, 64 bits, of a file's bytes. Returns 0, or -1 when unreadable. */
+int provenance_hash_file(const char *path, uint64_t *hash);
+
+/* Fills p from the command line, the options and the report (timings so
+ * far; writing the image comes after). Returns 0, or -1 when out of memory. */
+int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, const StatsReport *r);
+void provenance_free(Provenance *p);
+
+#endif
