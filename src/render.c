@@ -138,7 +138,16 @@ static void *worker_main(void *arg)
         int tile = atomic_fetch_add(&job->next_tile, 1);
         if (tile >= job->ntiles)
             break;
+        /* Shadow time is sampled on the wall clock (src/shade.c), which
+         * also counts the time the thread spent preempted on a busy
+         * machine. Scaling each tile's share by the tile's CPU time over
+         * its wall time takes that out (no change on an idle machine). */
+        double tile_wall = clock_wall(), tile_cpu = clock_thread_cpu(), shadow_before = ctx.stats.shadow_seconds;
         render_tile(&ctx, job, tile);
+        tile_wall = clock_wall() - tile_wall;
+        tile_cpu = clock_thread_cpu() - tile_cpu;
+        if (tile_wall > 0.0 && tile_cpu < tile_wall)
+            ctx.stats.shadow_seconds = shadow_before + (ctx.stats.shadow_seconds - shadow_before) * (tile_cpu / tile_wall);
         int done = atomic_fetch_add(&job->done_tiles, 1) + 1;
         if (job->opt->progress && wk->index == 0) {
             double now = clock_wall() - job->start;
