@@ -21,15 +21,16 @@ const char *dir_of(Parser *p, const char *path)
 
 void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at)
 {
-    if (p->depth >= MAX_INCLUDE_DEPTH) {
+    if (p->include_depth >= MAX_INCLUDE_DEPTH || p->depth >= MAX_SOURCE_FRAMES) {
         /* Name the cycle when there is one: that is the usual cause. */
         for (int i = 0; i < p->depth; i++)
-            if (strcmp(p->files[i].name, name) == 0)
+            if (!p->files[i].macro && strcmp(p->files[i].name, name) == 0)
                 parse_fail(p, at, "#include nested more than %d deep: '%s' includes itself", MAX_INCLUDE_DEPTH,
                            name);
         parse_fail(p, at, "#include nested more than %d deep", MAX_INCLUDE_DEPTH);
     }
     SourceFile *f = &p->files[p->depth++];
+    p->include_depth++;
     memset(f, 0, sizeof *f);
     f->name = arena_strdup(p->arena, name);
     if (!f->name)
@@ -40,6 +41,26 @@ void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, 
     f->line = 1;
     f->col = 1;
     f->controls_at_entry = p->controls.n;
+}
+
+void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)
+{
+    if (p->macro_depth >= MAX_MACRO_DEPTH || p->depth >= MAX_SOURCE_FRAMES)
+        parse_fail(p, called_at, "macro '%s' called more than %d levels deep: is its recursion endless?", m->name,
+                   MAX_MACRO_DEPTH);
+    SourceFile *f = &p->files[p->depth++];
+    p->macro_depth++;
+    memset(f, 0, sizeof *f);
+    f->name = m->file;
+    f->dir = m->dir;
+    f->buf = m->buf;
+    f->size = m->size;
+    f->offset = m->body_offset;
+    f->line = m->body_line;
+    f->col = m->body_col;
+    f->controls_at_entry = p->controls.n;
+    f->macro = m;
+    f->called_at = called_at;
 }
 
 /* Returns 0 when the file cannot be opened (the caller words the message);
@@ -154,6 +175,18 @@ static void skip_space(Parser *p, SourceFile *f)
             return;
         }
     }
+}
+
+int lex_peek_char(Parser *p)
+{
+    SourceFile *f = &p->files[p->depth - 1];
+    skip_space(p, f);
+    return peek_char(f, 0);
+}
+
+size_t lex_offset(Parser *p)
+{
+    return p->files[p->depth - 1].offset;
 }
 
 int lex_skip_semicolon(Parser *p)
