@@ -607,8 +607,10 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
         break;
     }
     case KW_rand: {
+        expect_punct(p, '(', "'rand'");
         Token at = *peek(p);
-        double v = float_param(p);
+        double v = parse_float_full(p);
+        expect_punct(p, ')', "the stream");
         if (!(v >= 0.0) || v >= (double)p->rand_streams.n)
             parse_fail(p, at.pos, "rand needs a stream made by seed(), not %g", v);
         /* POV-Ray's POV_rand(): a 32-bit linear congruential generator,
