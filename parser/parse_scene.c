@@ -182,7 +182,9 @@ void *tvec_push(Parser *p, TempVec *v)
         if (v->cap > (1 << 28))
             out_of_memory(p);
         int cap = v->cap ? v->cap * 2 : 16;
-        void *d = tmp_alloc(p, v->elem * (size_t)cap);
+        void *d = arena_alloc_uninit(p->temp, v->elem * (size_t)cap); /* each slot is zeroed when pushed */
+        if (!d)
+            out_of_memory(p);
         if (v->n)
             memcpy(d, v->data, v->elem * (size_t)v->n);
         v->data = d;

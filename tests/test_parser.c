@@ -487,6 +487,37 @@ static void test_arrays(void)
     expect_error("#declare A = 1;\n#declare A[0] = 1;\n", 2, 11, "'A' is not an array", "indexing a float");
 }
 
+/* Numbers are read to the same double strtod() gives (the lexer has a fast
+ * path for short decimals): many random spellings, compared exactly. */
+static void test_number_lexing(void)
+{
+    unsigned seed = 2024;
+    int bad = 0, tried = 0;
+    char text[512], num[64];
+    for (int i = 0; i < 3000; i++) {
+        seed = seed * 1103515245u + 12345u;
+        unsigned r = seed >> 4;
+        double v = (double)(r % 100000007u) / (double)(1u << (r % 23));
+        int digits = (int)(r % 19);
+        switch (i % 4) {
+        case 0: snprintf(num, sizeof num, "%.*f", digits, v); break;
+        case 1: snprintf(num, sizeof num, "%.*e", digits, v); break;
+        case 2: snprintf(num, sizeof num, "%.*g", digits + 1, v * 1e-7); break;
+        default: snprintf(num, sizeof num, "%u", r); break;
+        }
+        snprintf(text, sizeof text, "box { 0, <%s, 1, 1> }", num);
+        Scene *s = parse_scene_string("t.pov", text, &opts, &err);
+        tried++;
+        if (!s || s->objects[0]->u.box.corner2.x != strtod(num, NULL)) {
+            if (bad++ < 5)
+                tap_diag("%s read as %.17g, strtod gives %.17g", num, s ? s->objects[0]->u.box.corner2.x : NAN,
+                         strtod(num, NULL));
+        }
+        scene_free(s);
+    }
+    tap_ok(bad == 0, "%d numbers read exactly as strtod reads them (%d differ)", tried, bad);
+}
+
 static void test_switch(void)
 {
     const char *scene = "#switch (V)\n"
@@ -740,6 +771,7 @@ int main(void)
     test_macros();
     test_arrays();
     test_switch();
+    test_number_lexing();
     test_strings_and_functions();
     test_errors();
     test_macro_files();
