@@ -264,8 +264,9 @@ static double parse_condition(Parser *p, const char *after)
     return e[0];
 }
 
-/* A condition is true when it is not (nearly) zero, as POV-Ray's ftrue(). */
-static int truthy(double v) { return fabs(v) > 1e-5; }
+/* A condition is true when it is not (nearly) zero, as POV-Ray's ftrue(),
+ * whose EPSILON is 1e-10. */
+static int truthy(double v) { return fabs(v) > 1e-10; }
 
 static void run_if(Parser *p, const Token *hash, int cond)
 {

@@ -41,8 +41,9 @@ static void balance(double a[5], int *ta, double b[5], int *tb)
         promote(b, tb, *ta);
 }
 
-/* POV-Ray's ftrue(): "not zero" with a small tolerance. */
-static int ftrue(double v) { return fabs(v) > 1e-5; }
+/* POV-Ray 3.7's ftrue(): "not zero" beyond its EPSILON, 1e-10 (checked with
+ * povray: #if (1e-7) is true, #if (1e-11) false, 1 = 1 + 1e-9 is false). */
+static int ftrue(double v) { return fabs(v) > 1e-10; }
 
 static void parse_num_term(Parser *p, double e[5], int *terms)
 {

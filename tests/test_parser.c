@@ -544,7 +544,15 @@ static void test_switch(void)
         tap_ok(ok, "#switch with V = %g: %d objects", cases[i].v, cases[i].n);
         scene_free(s);
     }
-    Scene *s = parse("#switch (3) #case (1) box { 0, 1 } #end plane { y, 0 }\n");
+    /* POV-Ray 3.7's tolerance, as povray shows it: 1e-10 */
+    Scene *s = parse("#if (1e-7) box { 0, 1 } #end\n#if (1e-11) box { 0, 2 } #end\n"
+                     "#if (1 = 1 + 1e-9) box { 0, 3 } #end\n#if (1 = 1 + 1e-11) box { 0, 4 } #end\n"
+                     "#switch (1 + 1e-7) #case (1) box { 0, 5 } #end\n#switch (1 + 1e-11) #case (1) box { 0, 6 } #end\n");
+    tap_ok(s && s->nobjects == 3 && near(s->objects[0]->u.box.corner2.x, 1) && near(s->objects[1]->u.box.corner2.x, 4) &&
+               near(s->objects[2]->u.box.corner2.x, 6),
+           "conditions, = and #case compare within POV-Ray's 1e-10");
+    scene_free(s);
+    s = parse("#switch (3) #case (1) box { 0, 1 } #end plane { y, 0 }\n");
     tap_ok(s && s->nobjects == 1, "no #case matches and there is no #else");
     scene_free(s);
     s = parse("#switch (1)\n#case (1)\n #switch (2) #case (2) box { 0, 2 } #break #case (3) box { 0, 3 } #end\n"
