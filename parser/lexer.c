@@ -21,6 +21,22 @@ const char *dir_of(Parser *p, const char *path)
     return tmp_strndup(p, path, (size_t)(slash - path));
 }
 
+/* Room for one more frame. Frame pointers are not kept across an open, so
+ * the array may move. */
+static void reserve_frame(Parser *p)
+{
+    if (p->depth < p->files_cap)
+        return;
+    int cap = p->files_cap ? p->files_cap * 2 : 16;
+    if (cap > MAX_SOURCE_FRAMES)
+        cap = MAX_SOURCE_FRAMES;
+    SourceFile *bigger = tmp_alloc(p, sizeof *bigger * (size_t)cap);
+    if (p->depth)
+        memcpy(bigger, p->files, sizeof *bigger * (size_t)p->depth);
+    p->files = bigger;
+    p->files_cap = cap;
+}
+
 void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at)
 {
     if (p->include_depth >= MAX_INCLUDE_DEPTH || p->depth >= MAX_SOURCE_FRAMES) {
@@ -31,6 +47,7 @@ void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, 
                            name);
         parse_fail(p, at, "#include nested more than %d deep", MAX_INCLUDE_DEPTH);
     }
+    reserve_frame(p);
     SourceFile *f = &p->files[p->depth++];
     p->include_depth++;
     memset(f, 0, sizeof *f);
@@ -50,6 +67,7 @@ void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)
     if (p->macro_depth >= MAX_MACRO_DEPTH || p->depth >= MAX_SOURCE_FRAMES)
         parse_fail(p, called_at, "macro '%s' called more than %d levels deep: is its recursion endless?", m->name,
                    MAX_MACRO_DEPTH);
+    reserve_frame(p);
     SourceFile *f = &p->files[p->depth++];
     p->macro_depth++;
     memset(f, 0, sizeof *f);

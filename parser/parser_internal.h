@@ -154,7 +154,7 @@ typedef struct Symbol {
     Value value;
 } Symbol;
 
-#define SYMBOL_BUCKETS 4096
+#define SYMBOL_BUCKETS 2048
 #define MAX_SCOPE_LEVELS MAX_SOURCE_FRAMES
 
 typedef struct {
@@ -202,8 +202,9 @@ typedef struct Parser {
     ParseError *err;
     jmp_buf fail;
 
-    SourceFile files[MAX_SOURCE_FRAMES];
-    int depth; /* number of open frames (files and macro bodies) */
+    SourceFile *files; /* grown on demand up to MAX_SOURCE_FRAMES */
+    int depth;         /* number of open frames (files and macro bodies) */
+    int files_cap;
     int include_depth, macro_depth;
     int no_macro_calls; /* >0: identifiers are names (#declare X, #ifdef (X)) */
 

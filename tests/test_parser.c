@@ -766,6 +766,46 @@ static void test_robustness(void)
     }
     tap_ok(scenes + errors == 3000, "every mutation returns (%d scenes, %d errors)", scenes, errors);
     free(buf);
+
+    /* the same for the directive language: macros, arrays, #switch */
+    const char *lang = "#macro Tri(P, S) triangle { P, P + S * x, P + S * y } #end\n"
+                       "#macro Twice(A) #declare A = A * 2; #end\n"
+                       "#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N - 1) #end #end\n"
+                       "#declare Arr = array[2][2] { {1, 2}, {3, 4} }\n#declare V = 1;\nTwice(V)\n"
+                       "#declare R = seed(3);\n#switch (V)\n #case (1) Tri(0, 1)\n #case (2) Tri(x, Arr[1][0]) #break\n"
+                       " #range (3, 5) Tri(y, rand(R))\n #else union { Tri(z, Fact(4)) }\n#end\n"
+                       "#for (I, 0, 1) #declare Arr[I][1] = strlen(concat(\"ab\", str(I, 0, 0))); #end\n";
+    n = strlen(lang);
+    buf = malloc(n + 1);
+    scenes = errors = 0;
+    for (size_t cut = 0; cut <= n; cut++) {
+        memcpy(buf, lang, cut);
+        buf[cut] = '\0';
+        Scene *s = parse_scene_string("t.pov", buf, &opts, &err);
+        scenes += s != NULL;
+        errors += s == NULL;
+        scene_free(s);
+    }
+    Scene *whole = parse_scene_string("t.pov", lang, &opts, &err);
+    tap_ok(whole && whole->nobjects == 1, "the directive-language scene parses whole (%d objects)", whole ? whole->nobjects : -1);
+    scene_free(whole);
+    for (int round = 0; round < 3000; round++) {
+        memcpy(buf, lang, n + 1);
+        for (int k = 0; k < 1 + round % 4; k++) {
+            seed = seed * 1103515245u + 12345u;
+            size_t at = (seed >> 8) % n;
+            seed = seed * 1103515245u + 12345u;
+            buf[at] = (seed >> 9) % 3 ? junk[(seed >> 12) % (sizeof junk - 1)] : (char)((seed >> 12) & 0xff);
+        }
+        buf[n] = '\0';
+        Scene *s = parse_scene_string("t.pov", buf, &opts, &err);
+        scenes += s != NULL;
+        errors += s == NULL;
+        scene_free(s);
+    }
+    tap_ok(scenes + errors == (int)n + 1 + 3000, "macros, arrays, #switch: every truncation and mutation returns (%d scenes, %d errors)",
+           scenes, errors);
+    free(buf);
 }
 
 int main(void)
