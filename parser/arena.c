@@ -23,6 +23,14 @@ Arena *arena_new(void)
 
 void *arena_alloc(Arena *a, size_t size)
 {
+    void *p = arena_alloc_uninit(a, size);
+    if (p)
+        memset(p, 0, size);
+    return p;
+}
+
+void *arena_alloc_uninit(Arena *a, size_t size)
+{
     const size_t align = sizeof(max_align_t);
     size = (size + align - 1) / align * align;
     if (size == 0)
@@ -40,7 +48,6 @@ void *arena_alloc(Arena *a, size_t size)
     }
     void *p = (char *)b->data + b->used;
     b->used += size;
-    memset(p, 0, size);
     return p;
 }
 

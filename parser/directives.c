@@ -30,17 +30,36 @@ static void count_braces(Parser *p, const Token *t, int dir)
 static int close_file(Parser *p, const Token *eof)
 {
     SourceFile *f = &p->files[p->depth - 1];
+    if (f->macro) /* its #end was taken by a directive of the body: unbalanced */
+        parse_fail(p, eof->pos, "the body of macro '%s' (declared at %s:%d) ends without its #end", f->macro->name,
+                   f->macro->declared_at.file, f->macro->declared_at.line);
     if (p->controls.n > f->controls_at_entry) {
         Control *c = (Control *)p->controls.data + p->controls.n - 1;
         parse_fail(p, c->pos, "this directive has no matching #end before the end of '%s'", f->name);
     }
-    if (p->depth == 1) {
-        (void)eof;
+    if (p->depth == 1)
         return 0;
-    }
     p->depth--;
+    p->include_depth--;
     symbols_pop_scope(p);
     return 1;
+}
+
+/* An identifier just read into p->tok: a macro call is carried out (1), an
+ * array element gets its indices read. */
+static int expand_identifier(Parser *p)
+{
+    Symbol *s = symbol_find(p, p->tok.text, p->tok.len);
+    if (!s)
+        return 0;
+    if (s->value.kind == VAL_MACRO && !p->no_macro_calls) {
+        Token call = p->tok;
+        macro_invoke(p, &call, s->value.macro);
+        return 1;
+    }
+    if (s->value.kind == VAL_ARRAY && lex_peek_char(p) == '[')
+        read_array_element(p, s);
+    return 0;
 }
 
 Token *next(Parser *p)
@@ -68,11 +87,21 @@ Token *next(Parser *p)
             }
             continue;
         }
+        if (p->tok.type == TK_WORD && p->tok.kw < 0 && expand_identifier(p))
+            continue;
         break;
     }
     p->last_pos = p->tok.pos;
     count_braces(p, &p->tok, +1);
     return &p->tok;
+}
+
+Token *next_name(Parser *p)
+{
+    p->no_macro_calls++;
+    Token *t = next(p);
+    p->no_macro_calls--;
+    return t;
 }
 
 void unget(Parser *p)
@@ -144,8 +173,8 @@ void skip_balanced_group(Parser *p, const Token *open)
 
 /* ---- skipping text ------------------------------------------------------ */
 
-typedef enum { SKIP_TO_END, SKIP_TO_ELSE } SkipMode;
-typedef enum { STOP_END, STOP_ELSE, STOP_ELSEIF } SkipStop;
+typedef enum { SKIP_TO_END, SKIP_TO_ELSE, SKIP_TO_CASE } SkipMode;
+typedef enum { STOP_END, STOP_ELSE, STOP_ELSEIF, STOP_CASE, STOP_RANGE } SkipStop;
 
 static int opens_block(int kw)
 {
@@ -179,8 +208,20 @@ static SkipStop skip_text(Parser *p, SkipMode mode, SourcePos from, const char *
                 return STOP_ELSE;
             if (t.kw == KW_elseif)
                 return STOP_ELSEIF;
+        } else if (level == 0 && mode == SKIP_TO_CASE) {
+            if (t.kw == KW_else)
+                return STOP_ELSE;
+            if (t.kw == KW_case)
+                return STOP_CASE;
+            if (t.kw == KW_range)
+                return STOP_RANGE;
         }
     }
+}
+
+void macro_skip_body(Parser *p, SourcePos from)
+{
+    skip_text(p, SKIP_TO_END, from, "#macro");
 }
 
 /* ---- the control stack ---------------------------------------------------- */
@@ -223,8 +264,9 @@ static double parse_condition(Parser *p, const char *after)
     return e[0];
 }
 
-/* A condition is true when it is not (nearly) zero, as POV-Ray's ftrue(). */
-static int truthy(double v) { return fabs(v) > 1e-5; }
+/* A condition is true when it is not (nearly) zero, as POV-Ray's ftrue(),
+ * whose EPSILON is 1e-10. */
+static int truthy(double v) { return fabs(v) > 1e-10; }
 
 static void run_if(Parser *p, const Token *hash, int cond)
 {
@@ -255,9 +297,14 @@ static Token read_identifier(Parser *p, const char *after)
 static void directive_end(Parser *p, const Token *hash)
 {
     Control *c = top_control(p);
-    if (!c)
-        parse_fail(p, hash->pos, "#end without a matching #if, #while or #for");
-    if (c->kind == CTL_IF || c->kind == CTL_ELSE) {
+    if (!c) {
+        if (p->files[p->depth - 1].macro) {
+            macro_return(p);
+            return;
+        }
+        parse_fail(p, hash->pos, "#end without a matching #if, #while, #for, #switch or #macro");
+    }
+    if (c->kind == CTL_IF || c->kind == CTL_ELSE || c->kind == CTL_SWITCH) {
         p->controls.n--;
         return;
     }
@@ -287,7 +334,9 @@ static void directive_end(Parser *p, const Token *hash)
 static void directive_for(Parser *p, const Token *hash)
 {
     expect_punct(p, '(', "#for");
+    p->no_macro_calls++;
     Token var = read_identifier(p, "#for (");
+    p->no_macro_calls--;
     if (var.kw >= 0)
         parse_fail(p, var.pos, "'%s' is a reserved word and cannot be a #for variable", keyword_name(var.kw));
     expect_punct(p, ',', "the #for variable");
@@ -316,6 +365,87 @@ static void directive_for(Parser *p, const Token *hash)
     c->for_var = tmp_strndup(p, var.text, (size_t)var.len);
     c->for_end = end;
     c->for_step = step;
+}
+
+/* ---- #switch ------------------------------------------------------------ */
+
+/* POV-Ray compares a #case value with the #switch value to within 1e-10. */
+static int case_matches(Parser *p, double value, int is_range)
+{
+    if (!is_range)
+        return fabs(parse_condition(p, "#case") - value) < 1e-10;
+    expect_punct(p, '(', "#range");
+    double lo = parse_float_full(p);
+    expect_punct(p, ',', "the lower end of the range");
+    double hi = parse_float_full(p);
+    expect_punct(p, ')', "the upper end of the range");
+    return value >= lo && value <= hi;
+}
+
+/* From the #switch line (or a #case that did not match): skip to the next
+ * #case or #range that matches, or #else, and read the text after it; or
+ * to #end, which closes the #switch. */
+static void find_matching_case(Parser *p, SourcePos switch_pos, double value)
+{
+    for (;;) {
+        SkipStop s = skip_text(p, SKIP_TO_CASE, switch_pos, "#switch");
+        if (s == STOP_END)
+            return;
+        if (s == STOP_ELSE || case_matches(p, value, s == STOP_RANGE))
+            break;
+    }
+    Control *c = push_control(p, CTL_SWITCH, switch_pos);
+    c->switch_value = value;
+}
+
+static void directive_switch(Parser *p, const Token *hash)
+{
+    double value = parse_condition(p, "#switch");
+    /* Only blanks and comments may come before the first #case: POV-Ray
+     * reports anything else. */
+    LexMark m = lex_mark(p);
+    Token t;
+    lex_raw(p, &t);
+    if (is_punct(&t, '#'))
+        lex_raw(p, &t);
+    if (!is_kw(&t, KW_case) && !is_kw(&t, KW_range) && !is_kw(&t, KW_else) && !is_kw(&t, KW_end))
+        parse_fail(p, t.pos, "#switch must be followed by #case, #range, #else or #end");
+    lex_seek(p, m);
+    find_matching_case(p, hash->pos, value);
+}
+
+/* #case, #range or #else reached while reading a matching case: POV-Ray
+ * falls through (the condition is read and ignored) until #break. */
+static int switch_fall_through(Parser *p, const Token *t)
+{
+    Control *c = top_control(p);
+    if (!c || c->kind != CTL_SWITCH)
+        return 0;
+    if (t->kw != KW_else)
+        (void)case_matches(p, c->switch_value, t->kw == KW_range);
+    return 1;
+}
+
+/* #break: leave the innermost #switch, #while or #for (skipping to its
+ * #end, any #if inside closed on the way), or return from the macro. */
+static void directive_break(Parser *p, const Token *hash)
+{
+    for (;;) {
+        Control *c = top_control(p);
+        if (!c) {
+            if (p->files[p->depth - 1].macro) {
+                macro_return(p);
+                return;
+            }
+            parse_fail(p, hash->pos, "#break outside #switch, #while, #for and #macro");
+        }
+        ControlKind kind = c->kind;
+        SourcePos at = c->pos;
+        p->controls.n--;
+        skip_text(p, SKIP_TO_END, at, kind == CTL_SWITCH ? "#switch" : kind == CTL_WHILE ? "#while" : kind == CTL_FOR ? "#for" : "#if");
+        if (kind == CTL_SWITCH || kind == CTL_WHILE || kind == CTL_FOR)
+            return;
+    }
 }
 
 static void directive_include(Parser *p, const Token *hash)
@@ -365,8 +495,11 @@ static void handle_directive(Parser *p, const Token *hash)
     Token t;
     lex_raw(p, &t);
     if (t.type != TK_WORD || t.kw < 0) {
-        if (t.type == TK_WORD && symbol_find(p, t.text, t.len))
-            parse_fail(p, t.pos, "macro calls are not supported by hstrace");
+        Symbol *s = t.type == TK_WORD ? symbol_find(p, t.text, t.len) : NULL;
+        if (s && s->value.kind == VAL_MACRO) { /* `#Name(...)`, as older scenes write it */
+            macro_invoke(p, &t, s->value.macro);
+            return;
+        }
         fail_expected(p, &t, "a directive after '#'");
     }
     switch (t.kw) {
@@ -378,7 +511,11 @@ static void handle_directive(Parser *p, const Token *hash)
         parse_declare(p, hash, t.kw == KW_local);
         return;
     case KW_undef: {
+        p->no_macro_calls++;
         Token id = read_identifier(p, "#undef");
+        p->no_macro_calls--;
+        if (id.elem)
+            parse_fail(p, id.pos, "#undef cannot remove an array element");
         symbol_undef(p, id.text, id.len);
         return;
     }
@@ -388,13 +525,18 @@ static void handle_directive(Parser *p, const Token *hash)
     case KW_ifdef:
     case KW_ifndef: {
         expect_punct(p, '(', t.kw == KW_ifdef ? "#ifdef" : "#ifndef");
+        p->no_macro_calls++;
         Token id = read_identifier(p, "'('");
+        p->no_macro_calls--;
         expect_punct(p, ')', "the identifier");
-        int defined = id.kw < 0 && symbol_find(p, id.text, id.len) != NULL;
+        int defined = id.elem ? id.elem->value.kind != VAL_NONE : id.kw < 0 && symbol_find(p, id.text, id.len) != NULL;
         run_if(p, hash, t.kw == KW_ifdef ? defined : !defined);
         return;
     }
     case KW_else:
+        if (switch_fall_through(p, &t))
+            return;
+        /* fall through */
     case KW_elseif: {
         Control *c = top_control(p);
         if (!c || c->kind != CTL_IF)
@@ -421,18 +563,9 @@ static void handle_directive(Parser *p, const Token *hash)
     case KW_for:
         directive_for(p, hash);
         return;
-    case KW_macro: {
-        Token name = read_identifier(p, "#macro");
-        skip_text(p, SKIP_TO_END, hash->pos, "#macro");
-        Value v = { .kind = VAL_UNSUPPORTED };
-        char *what = tmp_alloc(p, (size_t)name.len + 16);
-        snprintf(what, (size_t)name.len + 16, "macro '%.*s'", name.len, name.text);
-        v.what = what;
-        v.declared_at = name.pos;
-        if (name.kw < 0)
-            symbol_set(p, name.text, name.len, 0, &v);
+    case KW_macro:
+        macro_define(p, hash);
         return;
-    }
     case KW_version: {
         double v = parse_float(p);
         if (!is_punct(next(p), ';'))
@@ -440,10 +573,18 @@ static void handle_directive(Parser *p, const Token *hash)
         p->version = v;
         return;
     }
-    case KW_debug:
-    case KW_warning:
-        (void)parse_string(p);
+    case KW_debug: {
+        /* POV-Ray's debug stream: the text as it is, newlines from "\n" */
+        char *msg = parse_string(p);
+        fputs(msg, stderr);
+        fflush(stderr);
         return;
+    }
+    case KW_warning: {
+        char *msg = parse_string(p);
+        fprintf(stderr, "%s:%d:%d: warning: %s\n", hash->pos.file, hash->pos.line, hash->pos.column, msg);
+        return;
+    }
     case KW_error: {
         char *msg = parse_string(p);
         parse_fail(p, hash->pos, "#error: %s", msg);
@@ -452,9 +593,16 @@ static void handle_directive(Parser *p, const Token *hash)
         parse_default_directive(p);
         return;
     case KW_switch:
+        directive_switch(p, hash);
+        return;
     case KW_case:
     case KW_range:
+        if (switch_fall_through(p, &t))
+            return;
+        parse_fail(p, t.pos, "#%s without a matching #switch", keyword_name(t.kw));
     case KW_break:
+        directive_break(p, hash);
+        return;
     case KW_fopen:
     case KW_fclose:
     case KW_read:

@@ -41,8 +41,9 @@ static void balance(double a[5], int *ta, double b[5], int *tb)
         promote(b, tb, *ta);
 }
 
-/* POV-Ray's ftrue(): "not zero" with a small tolerance. */
-static int ftrue(double v) { return fabs(v) > 1e-5; }
+/* POV-Ray 3.7's ftrue(): "not zero" beyond its EPSILON, 1e-10 (checked with
+ * povray: #if (1e-7) is true, #if (1e-11) false, 1 = 1 + 1e-9 is false). */
+static int ftrue(double v) { return fabs(v) > 1e-10; }
 
 static void parse_num_term(Parser *p, double e[5], int *terms)
 {
@@ -171,8 +172,63 @@ double parse_float(Parser *p)
     return e[0];
 }
 
+/* A signed number read raw, or 0. */
+static int raw_number(Parser *p, double *v)
+{
+    Token t;
+    lex_raw(p, &t);
+    double sign = 1.0;
+    if (is_punct(&t, '-') || is_punct(&t, '+')) {
+        sign = t.punct == '-' ? -1.0 : 1.0;
+        lex_raw(p, &t);
+    }
+    if (t.type != TK_NUMBER)
+        return 0;
+    *v = sign * t.number;
+    return 1;
+}
+
+/* The common case of big scenes (mesh2 lists): a vector written as three
+ * plain numbers, `<1, -2.5, 3e2>`, not followed by an operator. Read from the
+ * raw text it skips the expression machinery; anything else (identifiers,
+ * operators, directives, two or four components) is left to the general
+ * path, as if nothing had been read. */
+static int plain_vector(Parser *p, Vec3 *out)
+{
+    int had_angle = p->ungot && is_punct(&p->tok, '<');
+    if (p->ungot && !had_angle)
+        return 0;
+    LexMark m = lex_mark(p);
+    Token t;
+    double c[3];
+    if (!had_angle) {
+        lex_raw(p, &t);
+        if (!is_punct(&t, '<'))
+            goto no;
+    }
+    for (int i = 0; i < 3; i++) {
+        if (!raw_number(p, &c[i]))
+            goto no;
+        lex_raw(p, &t);
+        if (!is_punct(&t, i < 2 ? ',' : '>'))
+            goto no;
+    }
+    int after = lex_peek_char(p);
+    if (after == '+' || after == '-' || after == '*' || after == '/' || after == '.' || after == '#')
+        goto no; /* an operator, or a directive (a macro's #end) that may lead to one */
+    p->ungot = 0;
+    *out = v3(c[0], c[1], c[2]);
+    return 1;
+no:
+    lex_seek(p, m);
+    return 0;
+}
+
 Vec3 parse_vector(Parser *p)
 {
+    Vec3 fast;
+    if (plain_vector(p, &fast))
+        return fast;
     Token first = *peek(p);
     double e[5] = { 0 };
     int terms = 3;
@@ -260,7 +316,8 @@ static int is_float_keyword(int kw)
     case KW_version: case KW_image_width: case KW_image_height: case KW_vdot: case KW_vlength:
     case KW_strlen: case KW_strcmp: case KW_val: case KW_asc: case KW_initial_frame: case KW_final_frame:
     case KW_frame_number: case KW_initial_clock: case KW_final_clock: case KW_bitwise_and:
-    case KW_bitwise_or: case KW_bitwise_xor:
+    case KW_bitwise_or: case KW_bitwise_xor: case KW_seed: case KW_rand: case KW_dimensions:
+    case KW_dimension_size:
         return 1;
     default:
         return 0;
@@ -282,7 +339,7 @@ static Symbol *numeric_symbol(Parser *p, const Token *t)
 {
     if (t->type != TK_WORD || t->kw >= 0)
         return NULL;
-    Symbol *s = symbol_find(p, t->text, t->len);
+    Symbol *s = token_symbol(p, t);
     return s && s->value.kind == VAL_NUMERIC ? s : NULL;
 }
 
@@ -331,7 +388,7 @@ int token_starts_string(Parser *p, const Token *t)
     case KW_concat: case KW_str: case KW_chr: case KW_substr: case KW_strupr: case KW_strlwr: case KW_vstr:
         return 1;
     case -1: {
-        Symbol *s = symbol_find(p, t->text, t->len);
+        Symbol *s = token_symbol(p, t);
         return s && s->value.kind == VAL_STRING;
     }
     default:
@@ -339,7 +396,7 @@ int token_starts_string(Parser *p, const Token *t)
     }
 }
 
-static const char *kind_name(ValueKind k)
+const char *value_kind_name(ValueKind k)
 {
     switch (k) {
     case VAL_NUMERIC: return "a number";
@@ -353,6 +410,8 @@ static const char *kind_name(ValueKind k)
     case VAL_CAMERA: return "a camera";
     case VAL_TRANSFORM: return "a transform";
     case VAL_NORMAL: return "a normal";
+    case VAL_MACRO: return "a macro";
+    case VAL_ARRAY: return "an array";
     default: return "something else";
     }
 }
@@ -360,14 +419,19 @@ static const char *kind_name(ValueKind k)
 /* An identifier in a numeric expression. */
 static void identifier_factor(Parser *p, const Token *t, double e[5], int *terms)
 {
-    Symbol *s = symbol_find(p, t->text, t->len);
+    Symbol *s = token_symbol(p, t);
     if (!s)
         parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
     const Value *v = &s->value;
-    if (v->kind == VAL_UNSUPPORTED)
+    if (v->kind == VAL_UNSUPPORTED) {
+        if (defer_unsupported(p, v->what, v->declared_at)) {
+            fill(e, *terms, 0.0);
+            return;
+        }
         use_unsupported(p, t, v);
+    }
     if (v->kind != VAL_NUMERIC)
-        parse_fail(p, t->pos, "numeric expression expected but '%.*s' is %s", t->len, t->text, kind_name(v->kind));
+        parse_fail(p, t->pos, "numeric expression expected but '%.*s' is %s", t->len, t->text, value_kind_name(v->kind));
     if (v->terms == 1) {
         fill(e, *terms, v->v[0]);
     } else {
@@ -553,10 +617,10 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
     }
     case KW_defined: {
         expect_punct(p, '(', "'defined'");
-        Token *id = next(p);
+        Token *id = next_name(p);
         if (id->type != TK_WORD)
             fail_expected(p, id, "an identifier in 'defined'");
-        val = id->kw < 0 && symbol_find(p, id->text, id->len) != NULL;
+        val = id->elem ? id->elem->value.kind != VAL_NONE : id->kw < 0 && symbol_find(p, id->text, id->len) != NULL;
         expect_punct(p, ')', "the identifier");
         break;
     }
@@ -588,6 +652,34 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
         expect_punct(p, ')', "the string");
         break;
     }
+    case KW_seed: {
+        /* A new random stream, as POV-Ray's: seed() answers its number. */
+        double v = float_param(p);
+        if (p->rand_streams.n >= 1000000)
+            parse_fail(p, t->pos, "more than a million random streams (seed)");
+        long long iv = (long long)fmax(-2147483648.0, fmin(2147483647.0, v));
+        *(unsigned *)tvec_push(p, &p->rand_streams) = (unsigned)(int)iv;
+        val = p->rand_streams.n - 1;
+        break;
+    }
+    case KW_rand: {
+        expect_punct(p, '(', "'rand'");
+        Token at = *peek(p);
+        double v = parse_float_full(p);
+        expect_punct(p, ')', "the stream");
+        if (!(v >= 0.0) || v >= (double)p->rand_streams.n)
+            parse_fail(p, at.pos, "rand needs a stream made by seed(), not %g", v);
+        /* POV-Ray's POV_rand(): a 32-bit linear congruential generator,
+         * so that scenes draw the same numbers as in POV-Ray. */
+        unsigned *state = (unsigned *)p->rand_streams.data + (int)v;
+        *state = *state * 1812433253u + 12345u;
+        val = (double)*state / 4294967295.0;
+        break;
+    }
+    case KW_dimensions:
+    case KW_dimension_size:
+        val = array_function(p, t);
+        break;
     case KW_pi: val = M_PI; break;
     case KW_true: case KW_yes: case KW_on: val = 1.0; break;
     case KW_false: case KW_no: case KW_off: val = 0.0; break;
@@ -612,6 +704,19 @@ vector:
     e[1] = va.y;
     e[2] = va.z;
     return 1;
+}
+
+/* Functions of POV-Ray's expressions that need what hstrace does not model
+ * (object geometry, patterns, noise). */
+static int is_unsupported_function(int kw)
+{
+    switch (kw) {
+    case KW_trace: case KW_inside: case KW_min_extent: case KW_max_extent: case KW_vturbulence:
+    case KW_function:
+        return 1;
+    default:
+        return 0;
+    }
 }
 
 static void parse_num_factor(Parser *p, double e[5], int *terms)
@@ -641,6 +746,12 @@ static void parse_num_factor(Parser *p, double e[5], int *terms)
         parse_colour(p, &c, 1);
         e[0] = c.r; e[1] = c.g; e[2] = c.b; e[3] = c.filter; e[4] = c.transmit;
         *terms = 5;
+    } else if (t.type == TK_WORD && is_unsupported_function(t.kw)) {
+        char what[64];
+        snprintf(what, sizeof what, "'%s'", keyword_name(t.kw));
+        if (!defer_unsupported(p, tmp_strndup(p, what, strlen(what)), t.pos))
+            unsupported(p, &t);
+        fill(e, *terms, 0.0);
     } else if (t.type != TK_WORD || !keyword_factor(p, &t, e, terms)) {
         fail_expected(p, &t, "a numeric expression");
     }
@@ -758,7 +869,7 @@ void parse_colour(Parser *p, Colour *out, int expect_ft)
             continue;
         }
         if (t->type == TK_WORD && t->kw < 0 && !started) {
-            Symbol *s = symbol_find(p, t->text, t->len);
+            Symbol *s = token_symbol(p, t);
             if (!s)
                 parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
             if (s->value.kind == VAL_UNSUPPORTED)
@@ -790,7 +901,7 @@ char *parse_string(Parser *p)
     if (t.type == TK_STRING)
         return t.string;
     if (t.type == TK_WORD && t.kw < 0) {
-        Symbol *s = symbol_find(p, t.text, t.len);
+        Symbol *s = token_symbol(p, &t);
         if (s && s->value.kind == VAL_STRING)
             return s->value.string;
         if (s && s->value.kind == VAL_UNSUPPORTED)
@@ -838,7 +949,7 @@ char *parse_string(Parser *p)
     }
     case KW_vstr: {
         expect_punct(p, '(', "'vstr'");
-        int n = (int)fmax(1, fmin(5, parse_float_full(p)));
+        int n = (int)fmax(2, fmin(5, parse_float_full(p)));
         expect_punct(p, ',', "the component count");
         double e[5] = { 0 };
         int terms = n;
@@ -852,13 +963,17 @@ char *parse_string(Parser *p)
         expect_punct(p, ')', "the precision");
         if (prec < 0)
             prec = 6;
+        /* as str(): a negative width pads with zeros */
         size_t used = 0;
         buf[0] = '\0';
         for (int i = 0; i < n && used < sizeof buf - 1; i++) {
-            int k = snprintf(buf + used, sizeof buf - used, "%s%*.*f", i ? sep : "", w < 0 ? -w : w, prec, e[i]);
+            int k = w < 0 ? snprintf(buf + used, sizeof buf - used, "%s%0*.*f", i ? sep : "", -w, prec, e[i])
+                          : snprintf(buf + used, sizeof buf - used, "%s%*.*f", i ? sep : "", w, prec, e[i]);
             if (k < 0)
                 break;
             used += (size_t)k;
+            if (used >= sizeof buf)
+                used = sizeof buf - 1;
         }
         return tmp_strndup(p, buf, strlen(buf));
     }
@@ -953,13 +1068,13 @@ static int transform_identifier(Parser *p, const Token *t, Transform *out)
 {
     if (t->type != TK_WORD || t->kw >= 0)
         return 0;
-    Symbol *s = symbol_find(p, t->text, t->len);
+    Symbol *s = token_symbol(p, t);
     if (!s)
         parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
     if (s->value.kind == VAL_UNSUPPORTED)
         use_unsupported(p, t, &s->value);
     if (s->value.kind != VAL_TRANSFORM)
-        parse_fail(p, t->pos, "'%.*s' is %s, not a transform", t->len, t->text, kind_name(s->value.kind));
+        parse_fail(p, t->pos, "'%.*s' is %s, not a transform", t->len, t->text, value_kind_name(s->value.kind));
     *out = *s->value.transform;
     return 1;
 }

@@ -6,6 +6,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdint.h>
+#include <sys/stat.h>
 
 #include "parser_internal.h"
 
@@ -19,17 +21,35 @@ const char *dir_of(Parser *p, const char *path)
     return tmp_strndup(p, path, (size_t)(slash - path));
 }
 
+/* Room for one more frame. Frame pointers are not kept across an open, so
+ * the array may move. */
+static void reserve_frame(Parser *p)
+{
+    if (p->depth < p->files_cap)
+        return;
+    int cap = p->files_cap ? p->files_cap * 2 : 16;
+    if (cap > MAX_SOURCE_FRAMES)
+        cap = MAX_SOURCE_FRAMES;
+    SourceFile *bigger = tmp_alloc(p, sizeof *bigger * (size_t)cap);
+    if (p->depth)
+        memcpy(bigger, p->files, sizeof *bigger * (size_t)p->depth);
+    p->files = bigger;
+    p->files_cap = cap;
+}
+
 void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at)
 {
-    if (p->depth >= MAX_INCLUDE_DEPTH) {
+    if (p->include_depth >= MAX_INCLUDE_DEPTH || p->depth >= MAX_SOURCE_FRAMES) {
         /* Name the cycle when there is one: that is the usual cause. */
         for (int i = 0; i < p->depth; i++)
-            if (strcmp(p->files[i].name, name) == 0)
+            if (!p->files[i].macro && strcmp(p->files[i].name, name) == 0)
                 parse_fail(p, at, "#include nested more than %d deep: '%s' includes itself", MAX_INCLUDE_DEPTH,
                            name);
         parse_fail(p, at, "#include nested more than %d deep", MAX_INCLUDE_DEPTH);
     }
+    reserve_frame(p);
     SourceFile *f = &p->files[p->depth++];
+    p->include_depth++;
     memset(f, 0, sizeof *f);
     f->name = arena_strdup(p->arena, name);
     if (!f->name)
@@ -42,13 +62,53 @@ void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, 
     f->controls_at_entry = p->controls.n;
 }
 
+void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)
+{
+    if (p->macro_depth >= MAX_MACRO_DEPTH || p->depth >= MAX_SOURCE_FRAMES)
+        parse_fail(p, called_at, "macro '%s' called more than %d levels deep: is its recursion endless?", m->name,
+                   MAX_MACRO_DEPTH);
+    reserve_frame(p);
+    SourceFile *f = &p->files[p->depth++];
+    p->macro_depth++;
+    memset(f, 0, sizeof *f);
+    f->name = m->file;
+    f->dir = m->dir;
+    f->buf = m->buf;
+    f->size = m->size;
+    f->offset = m->body_offset;
+    f->line = m->body_line;
+    f->col = m->body_col;
+    f->controls_at_entry = p->controls.n;
+    f->macro = m;
+    f->called_at = called_at;
+}
+
 /* Returns 0 when the file cannot be opened (the caller words the message);
- * read errors after opening are reported here. */
+ * read errors after opening are reported here. The file is read straight
+ * into the temporary arena (no copy, and an error longjmp cannot leak it):
+ * its size is known for a regular file, and pipes grow a malloc'd buffer. */
 int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at)
 {
     FILE *fp = fopen(path, "rb");
     if (!fp)
         return 0;
+    struct stat st;
+    if (fstat(fileno(fp), &st) == 0 && S_ISREG(st.st_mode) && (uintmax_t)st.st_size < ((uintmax_t)1 << 40)) {
+        size_t size = (size_t)st.st_size;
+        char *kept = arena_alloc_uninit(p->temp, size + 1);
+        if (!kept) {
+            fclose(fp);
+            parse_fail(p, at, "out of memory reading '%s'", shown_name);
+        }
+        size_t n = fread(kept, 1, size, fp);
+        int failed = ferror(fp);
+        fclose(fp);
+        if (failed)
+            parse_fail_io(p, at, "cannot read '%s'", shown_name);
+        kept[n] = '\0';
+        lex_open_buffer(p, shown_name, kept, n, at);
+        return 1;
+    }
     size_t cap = 65536, n = 0;
     char *buf = malloc(cap);
     for (;;) {
@@ -74,13 +134,13 @@ int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos
         free(buf);
         parse_fail_io(p, at, "cannot read '%s'", shown_name);
     }
-    /* Move into the arena so an error longjmp cannot leak it. */
-    char *kept = arena_alloc(p->temp, n + 1);
+    char *kept = arena_alloc_uninit(p->temp, n + 1);
     if (!kept) {
         free(buf);
         parse_fail(p, at, "out of memory reading '%s'", shown_name);
     }
     memcpy(kept, buf, n);
+    kept[n] = '\0';
     free(buf);
     lex_open_buffer(p, shown_name, kept, n, at);
     return 1;
@@ -129,10 +189,27 @@ static SourcePos here(const SourceFile *f)
 static void skip_space(Parser *p, SourceFile *f)
 {
     for (;;) {
+        /* blanks, the common case, with a local index */
+        size_t i = f->offset, size = f->size;
+        const char *b = f->buf;
+        int line = f->line, col = f->col;
+        while (i < size) {
+            char c = b[i];
+            if (c == '\n') {
+                line++;
+                col = 1;
+            } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+                col++;
+            } else {
+                break;
+            }
+            i++;
+        }
+        f->offset = i;
+        f->line = line;
+        f->col = col;
         int c = peek_char(f, 0);
-        if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
-            advance(f);
-        } else if (c == '/' && peek_char(f, 1) == '/') {
+        if (c == '/' && peek_char(f, 1) == '/') {
             while (f->offset < f->size && f->buf[f->offset] != '\n')
                 advance(f);
         } else if (c == '/' && peek_char(f, 1) == '*') {
@@ -156,6 +233,18 @@ static void skip_space(Parser *p, SourceFile *f)
     }
 }
 
+int lex_peek_char(Parser *p)
+{
+    SourceFile *f = &p->files[p->depth - 1];
+    skip_space(p, f);
+    return peek_char(f, 0);
+}
+
+size_t lex_offset(Parser *p)
+{
+    return p->files[p->depth - 1].offset;
+}
+
 int lex_skip_semicolon(Parser *p)
 {
     SourceFile *f = &p->files[p->depth - 1];
@@ -170,37 +259,93 @@ int lex_skip_semicolon(Parser *p)
 static int is_ident_start(int c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 static int is_digit(int c) { return c >= '0' && c <= '9'; }
 
-static void lex_number(Parser *p, SourceFile *f, Token *t)
+/* Most numbers in big scenes (mesh2 lists) have few digits: with at most
+ * 15 significant digits m and a power of ten 10^k, k <= 22, both are exact
+ * doubles, so m / 10^k (or m * 10^k) is one correctly rounded operation:
+ * the same double strtod() gives, at a fraction of its cost. Anything else
+ * goes to strtod(). */
+static int decimal_fast(const char *s, size_t len, double *out)
 {
-    size_t start = f->offset;
-    while (is_digit(peek_char(f, 0)))
-        advance(f);
-    if (peek_char(f, 0) == '.') {
-        advance(f);
-        while (is_digit(peek_char(f, 0)))
-            advance(f);
-    }
-    int c = peek_char(f, 0);
-    if (c == 'e' || c == 'E') {
-        int k = 1, s = peek_char(f, 1);
-        if (s == '+' || s == '-')
-            k = 2;
-        if (is_digit(peek_char(f, (size_t)k))) {
-            for (int i = 0; i < k; i++)
-                advance(f);
-            while (is_digit(peek_char(f, 0)))
-                advance(f);
+    static const double pow10[] = { 1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22 };
+    unsigned long long m = 0;
+    int digits = 0, frac = 0, seen_point = 0;
+    size_t i = 0;
+    for (; i < len; i++) {
+        char c = s[i];
+        if (c >= '0' && c <= '9') {
+            if (m == 0 && c == '0') {
+                if (seen_point)
+                    frac++;
+                continue; /* leading zeros do not count as digits */
+            }
+            if (++digits > 15)
+                return 0;
+            m = m * 10 + (unsigned long long)(c - '0');
+            if (seen_point)
+                frac++;
+        } else if (c == '.' && !seen_point) {
+            seen_point = 1;
+        } else {
+            break;
         }
     }
+    int exp10 = 0;
+    if (i < len) { /* an exponent */
+        i++;
+        int neg = 0;
+        if (i < len && (s[i] == '+' || s[i] == '-'))
+            neg = s[i++] == '-';
+        if (i >= len || len - i > 3)
+            return 0;
+        for (; i < len; i++)
+            exp10 = exp10 * 10 + (s[i] - '0');
+        if (neg)
+            exp10 = -exp10;
+    }
+    int scale = exp10 - frac;
+    if (scale < -22 || scale > 22)
+        return 0;
+    *out = scale < 0 ? (double)m / pow10[-scale] : (double)m * pow10[scale];
+    return 1;
+}
+
+static void lex_number(Parser *p, SourceFile *f, Token *t)
+{
+    /* A number holds no newline: scan it with a local index, then move the
+     * column once. */
+    size_t start = f->offset, i = start, size = f->size;
+    const char *b = f->buf;
+    while (i < size && is_digit((unsigned char)b[i]))
+        i++;
+    if (i < size && b[i] == '.') {
+        i++;
+        while (i < size && is_digit((unsigned char)b[i]))
+            i++;
+    }
+    if (i < size && (b[i] == 'e' || b[i] == 'E')) {
+        size_t k = i + 1;
+        if (k < size && (b[k] == '+' || b[k] == '-'))
+            k++;
+        if (k < size && is_digit((unsigned char)b[k])) {
+            i = k;
+            while (i < size && is_digit((unsigned char)b[i]))
+                i++;
+        }
+    }
+    f->col += (int)(i - start);
+    f->offset = i;
     size_t len = f->offset - start;
+    t->type = TK_NUMBER;
+    t->len = (int)len;
+    if (decimal_fast(f->buf + start, len, &t->number))
+        return;
     char tmp[128];
     if (len >= sizeof tmp)
         parse_fail(p, t->pos, "number too long");
     memcpy(tmp, f->buf + start, len);
     tmp[len] = '\0';
-    t->type = TK_NUMBER;
     t->number = strtod(tmp, NULL);
-    t->len = (int)len;
 }
 
 static void lex_string(Parser *p, SourceFile *f, Token *t)
@@ -290,7 +435,13 @@ void lex_raw(Parser *p, Token *t)
         t->len = 2;
         advance(f);
     }
-    if (!strchr("{}()[]<>,;=+-*/.?:!&|#", c) || c == '\0') {
+    /* the characters POV-Ray's language uses as punctuation */
+    static const unsigned char is_punctuation[256] = {
+        ['{'] = 1, ['}'] = 1, ['('] = 1, [')'] = 1, ['['] = 1, [']'] = 1, ['<'] = 1, ['>'] = 1,
+        [','] = 1, [';'] = 1, ['='] = 1, ['+'] = 1, ['-'] = 1, ['*'] = 1, ['/'] = 1, ['.'] = 1,
+        ['?'] = 1, [':'] = 1, ['!'] = 1, ['&'] = 1, ['|'] = 1, ['#'] = 1,
+    };
+    if (!is_punctuation[(unsigned char)c]) {
         if (c >= 32 && c < 127)
             parse_fail(p, t->pos, "unexpected character '%c'", c);
         parse_fail(p, t->pos, "unexpected byte 0x%02x", (unsigned)c);

@@ -38,7 +38,7 @@ void parse_camera(Parser *p, const Token *kw, SceneCamera *cam)
     /* `camera { Declared transforms }`: only transforms may follow. */
     Token *t = next(p);
     if (t->type == TK_WORD && t->kw < 0) {
-        Symbol *s = symbol_find(p, t->text, t->len);
+        Symbol *s = token_symbol(p, t);
         if (!s)
             parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
         if (s->value.kind == VAL_UNSUPPORTED)

@@ -565,7 +565,7 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
     begin_block(p, "object");
     Token t = *next(p);
     if (t.type == TK_WORD && t.kw < 0) {
-        Symbol *s = symbol_find(p, t.text, t.len);
+        Symbol *s = token_symbol(p, &t);
         if (!s)
             parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
         const Value *v = &s->value;

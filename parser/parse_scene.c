@@ -18,6 +18,31 @@ static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt
     e->column = pos.column;
     e->is_io = is_io;
     vsnprintf(e->message, sizeof e->message, fmt, ap);
+    /* Inside macros: where each was called, innermost first, so that an
+     * error in a macro's body can be traced to the line that caused it. */
+    e->notes[0] = '\0';
+    size_t used = 0;
+    int shown = 0, hidden = 0;
+    for (int i = p->depth - 1; i >= 0; i--) {
+        const SourceFile *f = &p->files[i];
+        if (!f->macro)
+            continue;
+        if (shown == 8) {
+            hidden++;
+            continue;
+        }
+        int n = snprintf(e->notes + used, sizeof e->notes - used, "%s:%d:%d: note: in macro '%s' called here\n",
+                         f->called_at.file, f->called_at.line, f->called_at.column, f->macro->name);
+        if (n < 0 || (size_t)n >= sizeof e->notes - used) {
+            e->notes[used] = '\0';
+            hidden++;
+            continue;
+        }
+        used += (size_t)n;
+        shown++;
+    }
+    if (hidden)
+        snprintf(e->notes + used, sizeof e->notes - used, "note: and %d more macro calls\n", hidden);
     longjmp(p->fail, 1);
 }
 
@@ -84,6 +109,24 @@ void use_unsupported(Parser *p, const Token *t, const Value *v)
                v->declared_at.line);
 }
 
+int defer_unsupported(Parser *p, const char *what, SourcePos at)
+{
+    if (!p->declaring)
+        return 0;
+    if (!p->deferred_what) {
+        p->deferred_what = what;
+        p->deferred_at = at;
+    }
+    Token *t = next(p);
+    if (is_punct(t, '(')) {
+        Token open = *t;
+        skip_balanced_group(p, &open);
+    } else {
+        unget(p);
+    }
+    return 1;
+}
+
 int nesting_enter(Parser *p, const Token *t)
 {
     if (++p->nesting > MAX_NESTING)
@@ -139,7 +182,9 @@ void *tvec_push(Parser *p, TempVec *v)
         if (v->cap > (1 << 28))
             out_of_memory(p);
         int cap = v->cap ? v->cap * 2 : 16;
-        void *d = tmp_alloc(p, v->elem * (size_t)cap);
+        void *d = arena_alloc_uninit(p->temp, v->elem * (size_t)cap); /* each slot is zeroed when pushed */
+        if (!d)
+            out_of_memory(p);
         if (v->n)
             memcpy(d, v->data, v->elem * (size_t)v->n);
         v->data = d;
@@ -155,7 +200,7 @@ void *tvec_push(Parser *p, TempVec *v)
 static int is_unsupported_value_keyword(int kw)
 {
     switch (kw) {
-    case KW_function: case KW_spline: case KW_array: case KW_pattern: case KW_media: case KW_density:
+    case KW_function: case KW_spline: case KW_pattern: case KW_media: case KW_density:
     case KW_fog: case KW_rainbow: case KW_sky_sphere: case KW_color_map: case KW_colour_map:
     case KW_pigment_map: case KW_normal_map: case KW_slope_map: case KW_texture_map: case KW_material_map:
     case KW_density_map: case KW_photons: case KW_radiosity: case KW_material: case KW_interior_texture:
@@ -214,6 +259,8 @@ static Value parse_rvalue(Parser *p)
             transform_identity(v.transform);
             parse_transform_block(p, v.transform);
             return v;
+        case KW_array:
+            return parse_array(p, &t);
         default:
             break;
         }
@@ -227,13 +274,13 @@ static Value parse_rvalue(Parser *p)
             unsupported(p, &t);
     }
     if (t.type == TK_WORD && t.kw < 0) {
-        Symbol *s = symbol_find(p, t.text, t.len);
+        Symbol *s = token_symbol(p, &t);
         if (!s)
             parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
         if (s->value.kind == VAL_UNSUPPORTED)
             use_unsupported(p, &t, &s->value);
         if (s->value.kind != VAL_NUMERIC && s->value.kind != VAL_STRING)
-            return s->value; /* a copy of a declared object, texture, ... */
+            return copy_value(p, &s->value); /* a copy of a declared object, texture, array ... */
     }
     unget(p);
     if (token_starts_string(p, &t)) {
@@ -285,40 +332,43 @@ static void skip_poisoned_value(Parser *p, int start_depth)
     }
 }
 
-void parse_declare(Parser *p, const Token *hash, int local)
+Value copy_value(Parser *p, const Value *v)
 {
-    Token name = *next(p);
-    if (is_kw(&name, KW_deprecated)) {
-        /* #declare deprecated [once] "message" Name = ...: the warning is dropped */
-        if (!is_kw(next(p), KW_once))
-            unget(p);
-        (void)parse_string(p);
-        name = *next(p);
+    Value c = *v;
+    if (v->kind == VAL_ARRAY) {
+        /* POV-Ray copies arrays on assignment: `#declare B = A` and then
+         * `#declare B[0] = ...` leaves A as it was. */
+        ArrayValue *a = tmp_alloc(p, sizeof *a);
+        *a = *v->array;
+        a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)a->count);
+        for (long i = 0; i < a->count; i++)
+            a->elems[i].value = copy_value(p, &v->array->elems[i].value);
+        c.array = a;
     }
-    if (name.type != TK_WORD)
-        fail_expected(p, &name, "an identifier after #declare");
-    if (name.kw >= 0)
-        parse_fail(p, name.pos, "'%s' is a reserved word and cannot be declared", keyword_name(name.kw));
-    Token *t = next(p);
-    if (is_punct(t, '['))
-        parse_fail(p, t->pos, "arrays are not supported by hstrace");
-    if (!is_punct(t, '=')) {
-        char what[120];
-        snprintf(what, sizeof what, "'=' after '#declare %.*s'", name.len > 60 ? 60 : name.len, name.text);
-        fail_expected(p, t, what);
-    }
-    Token first = *peek(p);
+    return c;
+}
 
+Value parse_value_lenient(Parser *p)
+{
     /* Catch "unsupported" from anywhere inside the value. */
     jmp_buf here;
     jmp_buf *volatile outer = p->poison_jmp;
     volatile int saved_nesting = p->nesting, saved_declaring = p->declaring;
     volatile int start_depth = p->brace_depth;
+    const char *volatile outer_deferred = p->deferred_what;
+    volatile SourcePos outer_deferred_at = p->deferred_at;
     Value v;
     p->poison_jmp = &here;
     p->declaring++;
+    p->deferred_what = NULL;
     if (setjmp(here) == 0) {
         v = parse_rvalue(p);
+        if (p->deferred_what) {
+            memset(&v, 0, sizeof v);
+            v.kind = VAL_UNSUPPORTED;
+            v.what = p->deferred_what;
+            v.declared_at = p->deferred_at;
+        }
     } else {
         p->nesting = saved_nesting;
         memset(&v, 0, sizeof v);
@@ -329,6 +379,41 @@ void parse_declare(Parser *p, const Token *hash, int local)
     }
     p->declaring = saved_declaring;
     p->poison_jmp = outer;
+    p->deferred_what = outer_deferred;
+    p->deferred_at = outer_deferred_at;
+    return v;
+}
+
+void parse_declare(Parser *p, const Token *hash, int local)
+{
+    Token name = *next_name(p);
+    if (is_kw(&name, KW_deprecated)) {
+        /* #declare deprecated [once] "message" Name = ...: the warning is dropped */
+        if (!is_kw(next(p), KW_once))
+            unget(p);
+        (void)parse_string(p);
+        name = *next_name(p);
+    }
+    if (name.type != TK_WORD)
+        fail_expected(p, &name, "an identifier after #declare");
+    if (name.kw >= 0)
+        parse_fail(p, name.pos, "'%s' is a reserved word and cannot be declared", keyword_name(name.kw));
+    if (!name.elem) {
+        Symbol *old = symbol_find(p, name.text, name.len);
+        if (old && old->value.kind == VAL_MACRO)
+            parse_fail(p, name.pos, "'%.*s' is a macro (declared at %s:%d) and cannot be redeclared", name.len,
+                       name.text, old->value.declared_at.file, old->value.declared_at.line);
+    }
+    Token *t = next(p);
+    if (is_punct(t, '['))
+        parse_fail(p, t->pos, "'%.*s' is not an array", name.len, name.text);
+    if (!is_punct(t, '=')) {
+        char what[120];
+        snprintf(what, sizeof what, "'=' after '#declare %.*s'", name.len > 60 ? 60 : name.len, name.text);
+        fail_expected(p, t, what);
+    }
+    Token first = *peek(p);
+    Value v = parse_value_lenient(p);
     (void)hash;
 
     /* `texture {...} texture {...}`: POV-Ray layers the textures. */
@@ -346,22 +431,22 @@ void parse_declare(Parser *p, const Token *hash, int local)
         }
     }
 
+    /* Stored before looking for the ';': that lookahead carries out the
+     * directives that follow, which may use the new value (or, at the end of
+     * a macro's body, close the level a #local belongs to). */
+    if (name.elem)
+        name.elem->value = v;
+    else
+        symbol_set(p, name.text, name.len, local, &v);
+
     /* POV-Ray 3.5+ wants ';' after float, vector, colour and string values;
      * after a block it is optional. */
-    if (v.kind == VAL_NUMERIC || v.kind == VAL_STRING) {
-        Token *s = next(p);
-        if (!is_punct(s, ';')) {
-            if (p->version >= 3.5)
-                fail_expected(p, s, "';' after the declared value");
-            unget(p);
-        }
-    } else if (p->ungot && is_punct(&p->tok, ';')) {
-        next(p);
-    } else if (!p->ungot) {
-        lex_skip_semicolon(p);
+    Token *s = next(p);
+    if (!is_punct(s, ';')) {
+        if ((v.kind == VAL_NUMERIC || v.kind == VAL_STRING) && p->version >= 3.5)
+            fail_expected(p, s, "';' after the declared value");
+        unget(p);
     }
-    (void)first;
-    symbol_set(p, name.text, name.len, local, &v);
 }
 
 /* #default { texture {...} | pigment {...} | finish {...} | normal {...} } */
@@ -492,7 +577,7 @@ static void parse_statements(Parser *p)
             if (t.type == TK_WORD && t.kw >= 0)
                 unsupported(p, &t); /* fog, sky_sphere, rainbow, media, ... */
             if (t.type == TK_WORD) {
-                Symbol *s = symbol_find(p, t.text, t.len);
+                Symbol *s = token_symbol(p, &t);
                 if (s && s->value.kind == VAL_UNSUPPORTED)
                     use_unsupported(p, &t, &s->value);
                 if (!s)
@@ -579,6 +664,7 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     tvec_init(&p->controls, sizeof(Control));
     tvec_init(&p->objects, sizeof(SceneObject *));
     tvec_init(&p->lights, sizeof(SceneLight));
+    tvec_init(&p->rand_streams, sizeof(unsigned));
     symbols_init(p);
     init_scene(scene);
 

@@ -20,7 +20,7 @@ static const Value *block_identifier(Parser *p, const Token *t, ValueKind kind, 
 {
     if (t->type != TK_WORD || t->kw >= 0)
         return NULL;
-    Symbol *s = symbol_find(p, t->text, t->len);
+    Symbol *s = token_symbol(p, t);
     if (!s)
         parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
     if (s->value.kind == VAL_UNSUPPORTED)

@@ -23,6 +23,10 @@ typedef struct {
     int line, column;
     char message[512];
     int is_io; /* 1 when the error is an unreadable file rather than bad text */
+    /* Where the error's macro was called from, innermost first: lines of
+     * "FILE:LINE:COLUMN: note: in macro 'Name' called here\n"; empty when
+     * the error is not inside a macro. */
+    char notes[1024];
 } ParseError;
 
 /* Returns NULL and fills err on failure; never exits, never crashes. */

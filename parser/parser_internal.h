@@ -37,12 +37,26 @@ typedef struct {
     int len;
     char *string;     /* TK_STRING: contents with escapes resolved */
     SourcePos pos;
+    /* An array element `A[i][j]` (next() reads the indices): the element,
+     * which may still hold no value. text/len span the whole `A[i][j]`. */
+    struct Symbol *elem;
 } Token;
 
 /* ---- the include stack --------------------------------------------------- */
 
 #define MAX_INCLUDE_DEPTH 64
+/* Macro invocations active at once (recursion included). Expanding a macro
+ * pushes a source frame, not a C stack frame, so the limit is generous; it
+ * turns endless recursion into an error. */
+#define MAX_MACRO_DEPTH 1000
+#define MAX_SOURCE_FRAMES (MAX_INCLUDE_DEPTH + MAX_MACRO_DEPTH + 1)
 
+struct Macro;
+
+/* One frame of the source stack: an open file, or the body of an invoked
+ * macro being replayed from the buffer of the file that defined it (file
+ * buffers live until the parse ends, so a macro defined in an include file
+ * that has been closed can still be called). */
 typedef struct {
     const char *name; /* as shown in messages (scene arena) */
     const char *dir;  /* folder searched first for its #includes */
@@ -50,6 +64,8 @@ typedef struct {
     size_t size, offset;
     int line, col;
     int controls_at_entry; /* control stack height when the file started */
+    const struct Macro *macro; /* a macro body: the macro, else NULL */
+    SourcePos called_at;       /* a macro body: the call's position */
 } SourceFile;
 
 /* A point in the input to come back to (#while, #for). */
@@ -75,7 +91,34 @@ typedef enum {
     VAL_TRANSFORM,
     VAL_NORMAL,      /* parsed and forgotten: normals are not modelled */
     VAL_UNSUPPORTED, /* a declaration of something hstrace cannot render */
+    VAL_MACRO,
+    VAL_ARRAY,
 } ValueKind;
+
+struct Symbol;
+
+/* #macro Name(P1, P2, ...): where its body starts in its file's buffer. */
+typedef struct Macro {
+    const char *name;
+    const char *file, *dir; /* the defining file, as in SourceFile */
+    const char *buf;
+    size_t size, body_offset;
+    int body_line, body_col;
+    int nparams;
+    char **params;
+    SourcePos declared_at;
+} Macro;
+
+/* array[N][M]...: elements are symbols so that a token can refer to one;
+ * an element not yet given a value has kind VAL_NONE. */
+#define MAX_ARRAY_DIMS 5
+typedef struct {
+    int ndims;
+    int size[MAX_ARRAY_DIMS];
+    long count;
+    struct Symbol *elems;
+    SourcePos declared_at;
+} ArrayValue;
 
 typedef struct {
     ValueKind kind;
@@ -90,6 +133,8 @@ typedef struct {
     Interior *interior;
     SceneCamera *camera;
     Transform *transform;
+    Macro *macro;
+    ArrayValue *array;
     /* VAL_UNSUPPORTED: what it is ("'sphere'", "macro 'Foo'") and where the
      * unsupported thing was first written. */
     const char *what;
@@ -97,23 +142,31 @@ typedef struct {
 } Value;
 
 typedef struct Symbol {
-    struct Symbol *next;
+    struct Symbol *next;       /* in its hash bucket */
+    struct Symbol *scope_next; /* the symbols of the same level */
     char *name;
-    int level; /* 0: global; each include file opens one more */
+    int level; /* 0: global; each include file and macro call opens one more */
+    unsigned serial; /* changes when the symbol is freed, so aliases notice */
+    /* A macro parameter passed by reference: the caller's symbol, which
+     * reads and #declare go to. */
+    struct Symbol *alias;
+    unsigned alias_serial;
     Value value;
 } Symbol;
 
-#define SYMBOL_BUCKETS 1024
+#define SYMBOL_BUCKETS 2048
+#define MAX_SCOPE_LEVELS MAX_SOURCE_FRAMES
 
 typedef struct {
     Symbol *buckets[SYMBOL_BUCKETS];
+    Symbol *scopes[MAX_SCOPE_LEVELS]; /* per level, its symbols */
     int level;
     Symbol *free_list;
 } SymbolTable;
 
 /* ---- #if / #while / #for ---------------------------------------------------- */
 
-typedef enum { CTL_IF, CTL_ELSE, CTL_WHILE, CTL_FOR } ControlKind;
+typedef enum { CTL_IF, CTL_ELSE, CTL_WHILE, CTL_FOR, CTL_SWITCH } ControlKind;
 
 typedef struct {
     ControlKind kind;
@@ -122,6 +175,7 @@ typedef struct {
     LexMark loop;   /* #while: start of the condition; #for: start of the body */
     char *for_var;
     double for_end, for_step;
+    double switch_value; /* CTL_SWITCH: a #case matched, text is being read */
 } Control;
 
 /* A growable array in the temporary arena. */
@@ -148,8 +202,11 @@ typedef struct Parser {
     ParseError *err;
     jmp_buf fail;
 
-    SourceFile files[MAX_INCLUDE_DEPTH];
-    int depth; /* number of open files */
+    SourceFile *files; /* grown on demand up to MAX_SOURCE_FRAMES */
+    int depth;         /* number of open frames (files and macro bodies) */
+    int files_cap;
+    int include_depth, macro_depth;
+    int no_macro_calls; /* >0: identifiers are names (#declare X, #ifdef (X)) */
 
     Token tok;      /* the last token next() returned */
     int ungot;      /* next() returns tok again */
@@ -173,6 +230,12 @@ typedef struct Parser {
     jmp_buf *poison_jmp;
     const char *poison_what;
     SourcePos poison_at;
+    /* An unsupported identifier or function inside a declared expression:
+     * the expression is read to its end (its value is then unsupported). */
+    const char *deferred_what;
+    SourcePos deferred_at;
+
+    TempVec rand_streams; /* of unsigned: seed() makes one, rand() draws */
 
     TempVec objects; /* of SceneObject *, top level */
     TempVec lights;  /* of SceneLight */
@@ -192,6 +255,9 @@ _Noreturn void fail_expected(Parser *p, const Token *found, const char *what);
 _Noreturn void unsupported(Parser *p, const Token *t);
 /* Use of an identifier holding an unsupported declaration. */
 _Noreturn void use_unsupported(Parser *p, const Token *t, const Value *v);
+/* In a declaration: remember the first unsupported thing of an expression
+ * and skip its `(arguments)`; returns 0 outside declarations. */
+int defer_unsupported(Parser *p, const char *what, SourcePos at);
 void *palloc(Parser *p, size_t size);       /* scene arena, checked */
 void *tmp_alloc(Parser *p, size_t size);    /* temporary arena, checked */
 char *tmp_strndup(Parser *p, const char *s, size_t n);
@@ -203,6 +269,9 @@ void nesting_leave(Parser *p);
 
 /* lexer.c */
 void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at);
+void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at);
+int lex_peek_char(Parser *p); /* the next character after blanks, or -1 */
+size_t lex_offset(Parser *p);
 int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at);
 void lex_raw(Parser *p, Token *t); /* TK_EOF at the end of the current file */
 LexMark lex_mark(Parser *p);
@@ -223,11 +292,24 @@ void expect_punct(Parser *p, int c, const char *after);
 void begin_block(Parser *p, const char *after); /* '{' after `after` */
 void skip_block_body(Parser *p);                /* after '{': to its '}' */
 void skip_balanced_group(Parser *p, const Token *open);
+/* A name, not expanded as a macro call: #declare X, #ifdef (X), ... */
+Token *next_name(Parser *p);
 
 /* symbols.c */
 void symbols_init(Parser *p);
+/* The innermost visible symbol (an alias resolved to its target). */
 Symbol *symbol_find(Parser *p, const char *name, int len);
+/* The symbol a token names: an array element, else symbol_find(); fails on
+ * an element that has no value yet. NULL when the name is undeclared. */
+Symbol *token_symbol(Parser *p, const Token *t);
+/* #declare (local 0) / #local (1) as POV-Ray does it: an existing visible
+ * identifier (#local: of the current level) is overwritten in place, through
+ * a by-reference macro parameter to the caller's; else a new one is made at
+ * the global (#declare) or current (#local) level. */
 void symbol_set(Parser *p, const char *name, int len, int local, const Value *v);
+/* A new symbol at the current level, hiding outer ones (macro parameters). */
+Symbol *symbol_add_local(Parser *p, const char *name, int len, const Value *v);
+void symbol_define_global(Parser *p, const char *name, int len, const Value *v);
 void symbol_undef(Parser *p, const char *name, int len);
 void symbols_push_scope(Parser *p);
 void symbols_pop_scope(Parser *p);
@@ -271,8 +353,27 @@ void default_camera(SceneCamera *cam);
 SceneLight *parse_light_source(Parser *p, const Token *t);
 void transform_light(SceneLight *l, const Transform *tr);
 
+/* macros.c */
+void macro_define(Parser *p, const Token *hash); /* after '#macro' */
+void macro_invoke(Parser *p, const Token *call, const Macro *m); /* after the name */
+void macro_return(Parser *p);
+void macro_skip_body(Parser *p, SourcePos from); /* directives.c: to the #end */
+
+/* arrays.c */
+Value parse_array(Parser *p, const Token *kw); /* after 'array' */
+/* next() read the name of array s and '[' follows: read the indices and
+ * make p->tok that element. */
+void read_array_element(Parser *p, Symbol *s);
+double array_function(Parser *p, const Token *t); /* dimensions, dimension_size */
+
 /* parse_scene.c */
 void parse_declare(Parser *p, const Token *hash, int local);
+/* Any value (a #declare's right side, a macro argument): unsupported things
+ * become VAL_UNSUPPORTED instead of errors. */
+Value parse_value_lenient(Parser *p);
+/* A copy that does not share an array's elements. */
+Value copy_value(Parser *p, const Value *v);
+const char *value_kind_name(ValueKind k);
 void parse_default_directive(Parser *p);
 
 #endif

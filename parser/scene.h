@@ -189,6 +189,8 @@ Interior scene_default_interior(void);
 /* Arena allocation: zeroed memory that lives as long as the scene. */
 Arena *arena_new(void);
 void *arena_alloc(Arena *a, size_t size);
+/* As arena_alloc, without zeroing (for memory about to be overwritten). */
+void *arena_alloc_uninit(Arena *a, size_t size);
 char *arena_strdup(Arena *a, const char *s);
 void arena_free(Arena *a);
 

@@ -1,6 +1,8 @@
 /* Identifiers and their values, with POV-Ray's scoping: each include file
- * opens a level for its #local identifiers; #declare writes the global level;
- * a name resolves to its innermost definition. */
+ * and each macro call opens a level for its #local identifiers (and a macro's
+ * parameters); a name resolves to its innermost definition. Each level keeps
+ * a list of its symbols so that closing it costs what it holds, not the
+ * table's size (macros open and close levels very often). */
 #include <string.h>
 
 #include "parser_internal.h"
@@ -23,70 +25,143 @@ void symbols_init(Parser *p)
     memset(&p->symbols, 0, sizeof p->symbols);
 }
 
-Symbol *symbol_find(Parser *p, const char *name, int len)
+/* The innermost symbol of that name, aliases not followed. */
+static Symbol *find_own(Parser *p, const char *name, int len)
 {
     Symbol *best = NULL;
     for (Symbol *s = p->symbols.buckets[hash_name(name, len)]; s; s = s->next)
-        if (same_name(s, name, len) && (!best || s->level > best->level))
+        if ((!best || s->level > best->level) && same_name(s, name, len))
             best = s;
     return best;
 }
 
-void symbol_set(Parser *p, const char *name, int len, int local, const Value *v)
+/* A by-reference parameter leads to the caller's symbol, if that still
+ * exists (the macro may have #undef'd it). */
+static Symbol *follow(Symbol *s)
 {
-    int level = local ? p->symbols.level : 0;
-    unsigned h = hash_name(name, len);
-    for (Symbol *s = p->symbols.buckets[h]; s; s = s->next)
-        if (s->level == level && same_name(s, name, len)) {
-            s->value = *v;
-            return;
-        }
+    for (int hops = 0; s && s->alias && hops < MAX_SCOPE_LEVELS; hops++)
+        s = s->alias->serial == s->alias_serial ? s->alias : NULL;
+    return s;
+}
+
+Symbol *symbol_find(Parser *p, const char *name, int len)
+{
+    return follow(find_own(p, name, len));
+}
+
+Symbol *token_symbol(Parser *p, const Token *t)
+{
+    if (!t->elem)
+        return symbol_find(p, t->text, t->len);
+    if (t->elem->value.kind == VAL_NONE)
+        parse_fail(p, t->pos, "array element '%.*s' is used before it is given a value", t->len, t->text);
+    return t->elem;
+}
+
+static Symbol *new_symbol(Parser *p, const char *name, int len, int level)
+{
     Symbol *s = p->symbols.free_list;
-    if (s)
+    unsigned serial = 0;
+    if (s) {
         p->symbols.free_list = s->next;
-    else
+        serial = s->serial;
+        memset(s, 0, sizeof *s);
+        s->serial = serial;
+    } else {
         s = tmp_alloc(p, sizeof *s);
+    }
     s->name = tmp_strndup(p, name, (size_t)len);
     s->level = level;
-    s->value = *v;
+    unsigned h = hash_name(name, len);
     s->next = p->symbols.buckets[h];
     p->symbols.buckets[h] = s;
+    s->scope_next = p->symbols.scopes[level];
+    p->symbols.scopes[level] = s;
+    return s;
+}
+
+void symbol_set(Parser *p, const char *name, int len, int local, const Value *v)
+{
+    Symbol *s = find_own(p, name, len);
+    if (s && (!local || s->level == p->symbols.level)) {
+        Symbol *target = follow(s);
+        if (target) {
+            target->value = *v;
+            return;
+        }
+    }
+    new_symbol(p, name, len, local ? p->symbols.level : 0)->value = *v;
+}
+
+Symbol *symbol_add_local(Parser *p, const char *name, int len, const Value *v)
+{
+    Symbol *s = new_symbol(p, name, len, p->symbols.level);
+    if (v)
+        s->value = *v;
+    return s;
+}
+
+void symbol_define_global(Parser *p, const char *name, int len, const Value *v)
+{
+    for (Symbol *s = p->symbols.buckets[hash_name(name, len)]; s; s = s->next)
+        if (s->level == 0 && same_name(s, name, len)) {
+            s->value = *v;
+            s->alias = NULL;
+            return;
+        }
+    new_symbol(p, name, len, 0)->value = *v;
+}
+
+static void unlink_from_bucket(Parser *p, Symbol *target)
+{
+    Symbol **link = &p->symbols.buckets[hash_name(target->name, (int)strlen(target->name))];
+    while (*link && *link != target)
+        link = &(*link)->next;
+    if (*link)
+        *link = target->next;
+}
+
+static void release(Parser *p, Symbol *s)
+{
+    s->serial++;
+    s->next = p->symbols.free_list;
+    p->symbols.free_list = s;
 }
 
 void symbol_undef(Parser *p, const char *name, int len)
 {
-    Symbol *target = symbol_find(p, name, len);
+    Symbol *target = find_own(p, name, len);
     if (!target)
         return;
-    Symbol **link = &p->symbols.buckets[hash_name(name, len)];
-    while (*link != target)
-        link = &(*link)->next;
-    *link = target->next;
-    target->next = p->symbols.free_list;
-    p->symbols.free_list = target;
+    unlink_from_bucket(p, target);
+    Symbol **link = &p->symbols.scopes[target->level];
+    while (*link && *link != target)
+        link = &(*link)->scope_next;
+    if (*link)
+        *link = target->scope_next;
+    release(p, target);
 }
 
 void symbols_push_scope(Parser *p)
 {
+    if (p->symbols.level + 1 >= MAX_SCOPE_LEVELS)
+        parse_fail(p, p->last_pos, "too many nested include files and macro calls");
     p->symbols.level++;
+    p->symbols.scopes[p->symbols.level] = NULL;
 }
 
 void symbols_pop_scope(Parser *p)
 {
     int level = p->symbols.level;
-    for (int b = 0; b < SYMBOL_BUCKETS; b++) {
-        Symbol **link = &p->symbols.buckets[b];
-        while (*link) {
-            Symbol *s = *link;
-            if (s->level >= level) {
-                *link = s->next;
-                s->next = p->symbols.free_list;
-                p->symbols.free_list = s;
-            } else {
-                link = &s->next;
-            }
-        }
+    if (level == 0)
+        return;
+    Symbol *s = p->symbols.scopes[level];
+    while (s) {
+        Symbol *next_in_scope = s->scope_next;
+        unlink_from_bucket(p, s);
+        release(p, s);
+        s = next_in_scope;
     }
-    if (level > 0)
-        p->symbols.level--;
+    p->symbols.scopes[level] = NULL;
+    p->symbols.level--;
 }

@@ -149,6 +149,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "%s:%d:%d: %s\n", perr.file, perr.line, perr.column, perr.message);
         else
             fprintf(stderr, "%s: %s\n", perr.file[0] ? perr.file : opt.scene, perr.message);
+        fputs(perr.notes, stderr);
         colour_display_free(colour);
         free(owned_output);
         return perr.is_io ? EXIT_IO : EXIT_SCENE;

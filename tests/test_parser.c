@@ -25,6 +25,10 @@ static Scene *parse(const char *text)
 static int near(double a, double b) { return fabs(a - b) < 1e-9; }
 static int near_tol(double a, double b, double tol) { return fabs(a - b) < tol; }
 static int vnear(Vec3 a, double x, double y, double z) { return near(a.x, x) && near(a.y, y) && near(a.z, z); }
+static int vnear_tol(Vec3 a, double x, double y, double z, double tol)
+{
+    return near_tol(a.x, x, tol) && near_tol(a.y, y, tol) && near_tol(a.z, z, tol);
+}
 
 /* The box corner2.x of the first object: tests evaluate expressions there. */
 static double value_of(const char *expr)
@@ -344,6 +348,267 @@ static void write_file(const char *path, const char *text)
     }
 }
 
+
+/* The scene `prelude` then checks that string expression `expr` equals
+ * `want`: a mismatch stops the parse with #error, whose message shows what
+ * the expression gave. */
+static void string_is(const char *prelude, const char *expr, const char *want, const char *what)
+{
+    char buf[1024];
+    snprintf(buf, sizeof buf,
+             "%s\n#declare Got = %s;\n#if (strcmp(Got, \"%s\") != 0) #error concat(\"got [\", Got, \"]\") #end\n"
+             "box { 0, 1 }\n",
+             prelude, expr, want);
+    Scene *s = parse(buf);
+    tap_ok(s != NULL, "%s: %s is \"%s\"", what, expr, want);
+    scene_free(s);
+}
+
+/* The first box's corner2.x after `text` (which ends in a box using the
+ * value), or NAN. */
+static double box_x(const char *text)
+{
+    Scene *s = parse(text);
+    double v = s && s->nobjects > 0 ? s->objects[0]->u.box.corner2.x : NAN;
+    scene_free(s);
+    return v;
+}
+
+static void test_macros(void)
+{
+    /* expands to an object, at top level and inside an object's body */
+    Scene *s = parse("#macro Tri(P, S) triangle { P, P + S * x, P + S * y } #end\n"
+                     "Tri(<1, 0, 0>, 2)\n"
+                     "union { Tri(0, 1) Tri(y, 1) }\n");
+    tap_ok(s && s->nobjects == 2 && s->objects[0]->kind == OBJ_TRIANGLE && vnear(s->objects[0]->u.triangle.v[1], 3, 0, 0),
+           "a macro expands to an object, at top level and in a union");
+    scene_free(s);
+
+    /* expands to a value and to a partial token stream */
+    tap_ok(near(box_x("#macro Sq(A) (A) * (A) #end\nbox { 0, <Sq(2 + 1), 1, 1> }"), 9), "a macro as a value: Sq(2 + 1) = 9");
+    tap_ok(near(box_x("#macro Corners() 0, <4, 1, 1> #end\nbox { Corners() }"), 4),
+           "a macro expanding to part of an object's body");
+    tap_ok(near(box_x("#macro Plus() + 1 #end\n#declare V = 2 Plus() Plus();\nbox { 0, V }"), 4),
+           "a macro expanding to the rest of an expression");
+
+    /* a plain identifier is passed by reference, anything else by value */
+    tap_ok(near(box_x("#macro Twice(A) #declare A = A * 2; #end\n#declare V = 3;\nTwice(V)\nbox { 0, V }"), 6),
+           "#declare of a parameter passed as an identifier changes the caller's variable");
+    tap_ok(near(box_x("#macro Twice(A) #local A = A * 2; #end\n#declare V = 3;\nTwice(V)\nbox { 0, V }"), 6),
+           "#local of a by-reference parameter also writes the caller's variable, as in POV-Ray");
+    tap_ok(near(box_x("#macro Twice(A) #declare A = A * 2; #end\n#declare V = 3;\nTwice(V + 0)\nbox { 0, V }"), 3),
+           "an expression argument is passed by value");
+    tap_ok(near(box_x("#macro Set(A) #declare A = 5; #end\n#macro Outer(B) Set(B) #end\n#declare V = 1;\nOuter(V)\nbox { 0, V }"), 5),
+           "a reference passed on through two macros");
+
+    /* scope */
+    s = parse("#declare L = 1;\n#macro M() #local L = 2; #local Only = 3; box { 0, L } #end\nM()\n"
+              "#ifdef (Only) plane { y, 0 } #end\nbox { 0, L }\n");
+    tap_ok(s && s->nobjects == 2 && near(s->objects[0]->u.box.corner2.x, 2) && near(s->objects[1]->u.box.corner2.x, 1),
+           "#local in a macro is local to the call; the caller's L is untouched");
+    scene_free(s);
+    tap_ok(near(box_x("#macro M() #declare G = 7; #end\nM()\nbox { 0, G }"), 7), "#declare in a macro makes a global");
+    tap_ok(near(box_x("#macro Get() Cv #end\n#declare Cv = 4;\nbox { 0, Get() }"), 4),
+           "a macro body sees the identifiers of its caller");
+
+    /* recursion and nesting */
+    tap_ok(near(box_x("#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N - 1) #end #end\nbox { 0, Fact(5) }"), 120),
+           "recursion: Fact(5) = 120");
+    s = parse("#macro Row(N) #if (N > 0) triangle { 0, x, y translate N * x } Row(N - 1) #end #end\nRow(300)\n");
+    tap_ok(s && s->nobjects == 300, "a macro recursing 300 deep");
+    scene_free(s);
+    tap_ok(near(box_x("#macro Add(A, B) (A + B) #end\nbox { 0, Add(Add(1, 2), Add(3, Add(4, 5))) }"), 15),
+           "nested calls in arguments");
+    expect_error("#macro Loop(N) Loop(N + 1) #end\nLoop(0)\n", 1, 16,
+                 "macro 'Loop' called more than 1000 levels deep: is its recursion endless?", "endless recursion");
+
+    /* wrong calls */
+    expect_error("#macro M(A, B) box { A, B } #end\nM(1)\n", 2, 4, "macro 'M' takes 2 parameters but 1 was given",
+                 "too few arguments");
+    expect_error("#macro M(A) box { 0, A } #end\nM(1, 2)\n", 2, 4, "macro 'M' takes 1 parameter but more were given",
+                 "too many arguments");
+    expect_error("#macro M(A) box { 0, A } #end\nM(Nope)\n", 2, 3,
+                 "undeclared identifier 'Nope' passed as parameter 'A' of macro 'M'", "undeclared argument");
+    expect_error("#macro M(A) box { 0, A } #end\n#declare M = 1;\n", 2, 10, "'M' is a macro (declared at t.pov:1) and cannot be redeclared",
+                 "redeclaring a macro");
+    expect_error("#macro M(A) box { 0, A }\n", 1, 1, "#macro has no matching #end", "#macro without #end");
+
+    /* unsupported things inside macros and arguments stay lazy */
+    s = parse("#macro Ball(R) sphere { 0, R } #end\n#declare B = Ball(1);\n#macro Id(X) X #end\n"
+              "#declare S = Id(sphere { 0, 1 });\nbox { 0, 1 }\n");
+    tap_ok(s && s->nobjects == 1, "a macro declaring an unsupported object, and one as an argument, are parsed past");
+    scene_free(s);
+
+    /* error positions: in the macro's file, and a note for each call */
+    expect_error("#macro Inner(A)\n  box { 0, A Oops }\n#end\n#macro Outer()\n  Inner(1)\n#end\nOuter()\n", 2, 14,
+                 "expected", "an error inside a macro body is at the body's token");
+    tap_ok(strcmp(err.notes, "t.pov:5:3: note: in macro 'Inner' called here\nt.pov:7:1: note: in macro 'Outer' called here\n") == 0,
+           "the notes name each macro call, innermost first");
+    if (strcmp(err.notes, "t.pov:5:3: note: in macro 'Inner' called here\nt.pov:7:1: note: in macro 'Outer' called here\n") != 0)
+        tap_diag("notes: [%s]", err.notes);
+}
+
+static void test_arrays(void)
+{
+    tap_ok(near(box_x("#declare A = array[3] {10, 20, 30};\nbox { 0, A[1] + A[2] }"), 50), "array with initialiser");
+    tap_ok(near(box_x("#declare A = array[2][3] { {1, 2, 3}, {4, 5, 6} }\nbox { 0, A[1][2] * 10 + A[0][1] }"), 62),
+           "two-dimensional array");
+    tap_ok(near(box_x("#declare A = array[4];\n#for (I, 0, 3) #declare A[I] = I * I; #end\nbox { 0, A[3] }"), 9),
+           "#declare A[i] in a loop");
+    tap_ok(near(box_x("#declare A = array[2][5][7];\nbox { 0, dimensions(A) * 100 + dimension_size(A, 2) * 10 + dimension_size(A, 3) }"),
+                357),
+           "dimensions and dimension_size");
+    tap_ok(near(box_x("#declare A = array[2] {1, 2}\n#declare B = A;\n#declare B[0] = 9;\nbox { 0, A[0] }"), 1),
+           "#declare B = A copies the array");
+    tap_ok(near(box_x("#declare A = array[2] {1, 2}\n#macro Put(Arr) #declare Arr[1] = 8; #end\nPut(A)\nbox { 0, A[1] }"), 8),
+           "an array passed by reference to a macro");
+    Scene *s = parse("#declare Objs = array[2] { box { 0, 1 }, triangle { 0, x, y } }\nobject { Objs[1] }\n"
+                     "#declare Names = array[2] {\"a\", \"bc\"}\nbox { 0, strlen(Names[1]) }\n");
+    tap_ok(s && s->nobjects == 2 && s->objects[0]->kind == OBJ_TRIANGLE && near(s->objects[1]->u.box.corner2.x, 2),
+           "arrays of objects and of strings");
+    scene_free(s);
+    s = parse("#declare A = array[3];\n#declare A[1] = 1;\n#ifdef (A[1]) box { 0, 1 } #end\n#ifndef (A[2]) box { 0, 2 } #end\n"
+              "#if (defined(A[0])) plane { y, 0 } #end\n");
+    tap_ok(s && s->nobjects == 2, "#ifdef, #ifndef and defined() of array elements");
+    scene_free(s);
+    string_is("#declare A = array[3] {\"x\", \"y\", \"z\"}", "concat(A[2], A[0])", "zx", "string elements");
+
+    expect_error("#declare A = array[3];\n#declare A[0] = 1;\nbox { 0, A[1] }\n", 3, 10,
+                 "array element 'A[1]' is used before it is given a value", "uninitialised element");
+    expect_error("#declare A = array[3];\nbox { 0, A[3] }\n", 2, 12, "index 3 is out of range for 'A' (array[3]: 0 to 2)",
+                 "index out of range");
+    expect_error("#declare A = array[2][2];\n#declare A[0][-1] = 1;\n", 2, 15,
+                 "index -1 is out of range for dimension 2 of 'A' (0 to 1)", "negative index");
+    expect_error("#declare A = array[3] {1, 2};\n", 1, 28, "this array initialiser has 2 elements where 3 are needed",
+                 "short initialiser");
+    expect_error("#declare A = array[2] {1, 2, 3};\n", 1, 30, "expected '}' after the 2 elements of the array initialiser",
+                 "long initialiser");
+    expect_error("#declare A = array[0];\n", 1, 20, "invalid array size 0", "zero size");
+    expect_error("#declare A = 1;\n#declare A[0] = 1;\n", 2, 11, "'A' is not an array", "indexing a float");
+}
+
+/* Numbers are read to the same double strtod() gives (the lexer has a fast
+ * path for short decimals): many random spellings, compared exactly. */
+static void test_number_lexing(void)
+{
+    unsigned seed = 2024;
+    int bad = 0, tried = 0;
+    char text[512], num[64];
+    for (int i = 0; i < 3000; i++) {
+        seed = seed * 1103515245u + 12345u;
+        unsigned r = seed >> 4;
+        double v = (double)(r % 100000007u) / (double)(1u << (r % 23));
+        int digits = (int)(r % 19);
+        switch (i % 4) {
+        case 0: snprintf(num, sizeof num, "%.*f", digits, v); break;
+        case 1: snprintf(num, sizeof num, "%.*e", digits, v); break;
+        case 2: snprintf(num, sizeof num, "%.*g", digits + 1, v * 1e-7); break;
+        default: snprintf(num, sizeof num, "%u", r); break;
+        }
+        snprintf(text, sizeof text, "box { 0, <%s, 1, 1> }", num);
+        Scene *s = parse_scene_string("t.pov", text, &opts, &err);
+        tried++;
+        if (!s || s->objects[0]->u.box.corner2.x != strtod(num, NULL)) {
+            if (bad++ < 5)
+                tap_diag("%s read as %.17g, strtod gives %.17g", num, s ? s->objects[0]->u.box.corner2.x : NAN,
+                         strtod(num, NULL));
+        }
+        scene_free(s);
+    }
+    tap_ok(bad == 0, "%d numbers read exactly as strtod reads them (%d differ)", tried, bad);
+}
+
+static void test_switch(void)
+{
+    const char *scene = "#switch (V)\n"
+                        "  #case (1) box { 0, 1 }\n"
+                        "  #case (2) box { 0, 2 } #break\n"
+                        "  #range (3, 5) box { 0, 3 }\n"
+                        "  #case (6) box { 0, 6 } #break\n"
+                        "  #else box { 0, 9 }\n"
+                        "#end\n"
+                        "plane { y, 0 }\n";
+    static const struct { double v; int n; double first, second; } cases[] = {
+        { 1, 3, 1, 2 }, /* falls through into #case (2), stops at #break */
+        { 2, 2, 2, 0 },
+        { 4, 3, 3, 6 }, /* a #range, falling through into #case (6) */
+        { 6, 2, 6, 0 },
+        { 7, 2, 9, 0 }, /* #else */
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char buf[600];
+        snprintf(buf, sizeof buf, "#declare V = %g;\n%s", cases[i].v, scene);
+        Scene *s = parse(buf);
+        int ok = s && s->nobjects == cases[i].n && near(s->objects[0]->u.box.corner2.x, cases[i].first) &&
+                 (cases[i].n < 3 || near(s->objects[1]->u.box.corner2.x, cases[i].second));
+        tap_ok(ok, "#switch with V = %g: %d objects", cases[i].v, cases[i].n);
+        scene_free(s);
+    }
+    /* POV-Ray 3.7's tolerance, as povray shows it: 1e-10 */
+    Scene *s = parse("#if (1e-7) box { 0, 1 } #end\n#if (1e-11) box { 0, 2 } #end\n"
+                     "#if (1 = 1 + 1e-9) box { 0, 3 } #end\n#if (1 = 1 + 1e-11) box { 0, 4 } #end\n"
+                     "#switch (1 + 1e-7) #case (1) box { 0, 5 } #end\n#switch (1 + 1e-11) #case (1) box { 0, 6 } #end\n");
+    tap_ok(s && s->nobjects == 3 && near(s->objects[0]->u.box.corner2.x, 1) && near(s->objects[1]->u.box.corner2.x, 4) &&
+               near(s->objects[2]->u.box.corner2.x, 6),
+           "conditions, = and #case compare within POV-Ray's 1e-10");
+    scene_free(s);
+    s = parse("#switch (3) #case (1) box { 0, 1 } #end plane { y, 0 }\n");
+    tap_ok(s && s->nobjects == 1, "no #case matches and there is no #else");
+    scene_free(s);
+    s = parse("#switch (1)\n#case (1)\n #switch (2) #case (2) box { 0, 2 } #break #case (3) box { 0, 3 } #end\n"
+              " #if (1) box { 0, 1 } #break box { 0, 5 } #end\n box { 0, 7 }\n#end\n");
+    tap_ok(s && s->nobjects == 2 && near(s->objects[1]->u.box.corner2.x, 1),
+           "nested #switch; #break inside an #if leaves the #switch");
+    scene_free(s);
+    s = parse("#declare I = 0;\n#while (1) #declare I = I + 1; #if (I = 4) #break #end #end\nbox { 0, I }\n");
+    tap_ok(s && near(s->objects[0]->u.box.corner2.x, 4), "#break leaves a #while");
+    scene_free(s);
+    expect_error("#case (1)\n", 1, 2, "#case without a matching #switch", "#case alone");
+    expect_error("#switch (1) box { 0, 1 } #case (1) #end\n", 1, 13, "#switch must be followed by #case, #range, #else or #end",
+                 "text before the first #case");
+    expect_error("box { 0, 1 }\n#break\n", 2, 1, "#break outside #switch, #while, #for and #macro", "stray #break");
+}
+
+static void test_strings_and_functions(void)
+{
+    string_is("", "concat(\"a\", \"bc\", str(1.5, 0, 2))", "abc1.50", "concat, str");
+    string_is("", "str(3.14159, -8, 3)", "0003.142", "str with a zero-padded width");
+    string_is("", "str(2, 5, 0)", "    2", "str with a width");
+    string_is("", "str(0.1, 0, -1)", "0.100000", "str with the default precision");
+    string_is("", "chr(65)", "A", "chr");
+    string_is("", "substr(\"abcdef\", 2, 3)", "bcd", "substr");
+    string_is("", "strupr(\"MiXed\")", "MIXED", "strupr");
+    string_is("", "strlwr(\"MiXed\")", "mixed", "strlwr");
+    string_is("", "vstr(3, <1, 2, 3>, \", \", 0, 1)", "1.0, 2.0, 3.0", "vstr");
+    string_is("", "vstr(2, <1, 2, 3>, \"/\", -4, 0)", "0001/0002", "vstr pads with zeros, two components at least");
+    string_is("#declare S = \"x\";\n#macro Add(T) #declare S = concat(S, T); #end\nAdd(\"y\") Add(\"z\")", "S", "xyz",
+              "a string passed by reference");
+    tap_ok(near(value_of("strlen(\"hello\") + asc(\"A\") + val(\"2.5\")"), 5 + 65 + 2.5), "strlen asc val");
+    tap_ok(near(value_of("strcmp(\"a\", \"b\") * 10 + strcmp(\"b\", \"b\")"), -10), "strcmp");
+    tap_ok(near(value_of("vlength(vnormalize(<3, 4, 0>)) + vdot(vcross(x, y), z)"), 2), "vnormalize vcross vdot");
+    tap_ok(near(value_of("vrotate(x, <0, 0, 90>).y"), 1), "vrotate");
+    tap_ok(near(value_of("div(7, 2) + mod(-7, 2) + pow(2, 10)"), 3 - 1 + 1024), "div mod pow");
+
+    /* POV-Ray 3.7's numbers for the same scene (printed with #debug):
+     * seed(42) gives 0.7235829112 then 0.3299792596; rand.inc with seed(7)
+     * gives VRand <0.95393288, 0.61046628, 0.16685214>, then
+     * RRand(2, 5) 2.10460125, then Rand_Normal(0, 1) -0.27153477. */
+    tap_ok(near_tol(value_of("rand(seed(42))"), 0.7235829112, 1e-10), "rand: POV-Ray's first number for seed 42");
+    tap_ok(near_tol(box_x("#declare R = seed(42);\n#declare A = rand(R);\nbox { 0, rand(R) }"), 0.3299792596, 1e-10),
+           "rand: POV-Ray's second number for seed 42");
+    tap_ok(near_tol(box_x("#declare R1 = seed(42);\n#declare R2 = seed(42);\n#declare A = rand(R1);\nbox { 0, rand(R2) }"),
+                    0.7235829112, 1e-10),
+           "streams are independent");
+    Scene *s = parse("#include \"rand.inc\"\n#declare S = seed(7);\n#declare V = VRand(S);\n#declare F = RRand(2, 5, S);\n"
+                     "#declare N = Rand_Normal(0, 1, S);\nbox { V, <F, N, 0> }\n");
+    tap_ok(s && vnear_tol(s->objects[0]->u.box.corner1, 0.95393288, 0.61046628, 0.16685214, 1e-8) &&
+               near_tol(s->objects[0]->u.box.corner2.x, 2.10460125, 1e-8) &&
+               near_tol(s->objects[0]->u.box.corner2.y, -0.27153477, 1e-8),
+           "rand.inc's VRand, RRand, Rand_Normal give POV-Ray's numbers");
+    scene_free(s);
+    expect_error("#declare A = rand(3);\n", 1, 19, "rand needs a stream made by seed(), not 3", "rand without seed");
+}
+
 static void test_errors(void)
 {
     expect_error("polygon foo", 1, 9, "expected '{' after 'polygon', found 'foo'", "missing brace");
@@ -410,6 +675,40 @@ static void test_errors(void)
     rmdir(dir);
 }
 
+/* A macro defined in an include file, called after that file has closed;
+ * an error in its body names the include file's line and the call. */
+static void test_macro_files(void)
+{
+    char dir[] = "/tmp/hst_macro_testXXXXXX";
+    if (!mkdtemp(dir)) {
+        tap_ok(0, "temporary folder");
+        return;
+    }
+    char inc[300], main_file[300], want[600];
+    snprintf(inc, sizeof inc, "%s/tiles.inc", dir);
+    snprintf(main_file, sizeof main_file, "%s/main.pov", dir);
+    write_file(inc, "// tiles\n#macro Tile(P)\n  triangle { P, P + x, P + y }\n#end\n"
+                    "#macro Bad(P)\n  triangle { P, P + x, Nope }\n#end\n");
+    write_file(main_file, "#include \"tiles.inc\"\nTile(<1, 0, 0>)\n#for (I, 0, 2)\n  Tile(I * y)\n#end\n");
+    Scene *s = parse_scene_file(main_file, &opts, &err);
+    tap_ok(s && s->nobjects == 4 && vnear(s->objects[0]->u.triangle.v[2], 1, 1, 0),
+           "a macro from an include file, called after the file closed");
+    scene_free(s);
+
+    write_file(main_file, "#include \"tiles.inc\"\nTile(0)\n  Bad(y)\n");
+    s = parse_scene_file(main_file, &opts, &err);
+    snprintf(want, sizeof want, "%s:3:3: note: in macro 'Bad' called here\n", main_file);
+    tap_ok(!s && strcmp(err.file, inc) == 0 && err.line == 6 && err.column == 24 &&
+               strcmp(err.message, "undeclared identifier 'Nope'") == 0 && strcmp(err.notes, want) == 0,
+           "an error in an included macro: at the macro's line, with a note at the call");
+    if (s || strcmp(err.notes, want) != 0 || err.line != 6 || err.column != 24)
+        tap_diag("got %s:%d:%d: %s / %s", err.file, err.line, err.column, err.message, err.notes);
+    scene_free(s);
+    remove(inc);
+    remove(main_file);
+    rmdir(dir);
+}
+
 static void test_includes(void)
 {
     Scene *s = parse("#include \"colors.inc\"\n#include \"finish.inc\"\n#include \"colors.inc\"\n"
@@ -467,6 +766,46 @@ static void test_robustness(void)
     }
     tap_ok(scenes + errors == 3000, "every mutation returns (%d scenes, %d errors)", scenes, errors);
     free(buf);
+
+    /* the same for the directive language: macros, arrays, #switch */
+    const char *lang = "#macro Tri(P, S) triangle { P, P + S * x, P + S * y } #end\n"
+                       "#macro Twice(A) #declare A = A * 2; #end\n"
+                       "#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N - 1) #end #end\n"
+                       "#declare Arr = array[2][2] { {1, 2}, {3, 4} }\n#declare V = 1;\nTwice(V)\n"
+                       "#declare R = seed(3);\n#switch (V)\n #case (1) Tri(0, 1)\n #case (2) Tri(x, Arr[1][0]) #break\n"
+                       " #range (3, 5) Tri(y, rand(R))\n #else union { Tri(z, Fact(4)) }\n#end\n"
+                       "#for (I, 0, 1) #declare Arr[I][1] = strlen(concat(\"ab\", str(I, 0, 0))); #end\n";
+    n = strlen(lang);
+    buf = malloc(n + 1);
+    scenes = errors = 0;
+    for (size_t cut = 0; cut <= n; cut++) {
+        memcpy(buf, lang, cut);
+        buf[cut] = '\0';
+        Scene *s = parse_scene_string("t.pov", buf, &opts, &err);
+        scenes += s != NULL;
+        errors += s == NULL;
+        scene_free(s);
+    }
+    Scene *whole = parse_scene_string("t.pov", lang, &opts, &err);
+    tap_ok(whole && whole->nobjects == 1, "the directive-language scene parses whole (%d objects)", whole ? whole->nobjects : -1);
+    scene_free(whole);
+    for (int round = 0; round < 3000; round++) {
+        memcpy(buf, lang, n + 1);
+        for (int k = 0; k < 1 + round % 4; k++) {
+            seed = seed * 1103515245u + 12345u;
+            size_t at = (seed >> 8) % n;
+            seed = seed * 1103515245u + 12345u;
+            buf[at] = (seed >> 9) % 3 ? junk[(seed >> 12) % (sizeof junk - 1)] : (char)((seed >> 12) & 0xff);
+        }
+        buf[n] = '\0';
+        Scene *s = parse_scene_string("t.pov", buf, &opts, &err);
+        scenes += s != NULL;
+        errors += s == NULL;
+        scene_free(s);
+    }
+    tap_ok(scenes + errors == (int)n + 1 + 3000, "macros, arrays, #switch: every truncation and mutation returns (%d scenes, %d errors)",
+           scenes, errors);
+    free(buf);
 }
 
 int main(void)
@@ -477,7 +816,13 @@ int main(void)
     test_directives();
     test_objects();
     test_camera_lights();
+    test_macros();
+    test_arrays();
+    test_switch();
+    test_number_lexing();
+    test_strings_and_functions();
     test_errors();
+    test_macro_files();
     test_includes();
     test_robustness();
     return tap_done();

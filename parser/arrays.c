@@ -1,0 +1,162 @@
+/* POV-Ray 3.7 arrays: `array[N][M]...` with an optional initialiser
+ * `{ {a, b}, {c, d} }`, elements read as `A[i][j]` (next() reads the
+ * indices, so an element can stand wherever an identifier can) and set by
+ * `#declare A[i] = ...`; dimensions(A) and dimension_size(A, D). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+/* Elements at most: a bound that keeps a typo such as array[1e9] from
+ * exhausting memory (POV-Ray would try). */
+#define MAX_ARRAY_ELEMENTS 100000000L
+
+static void parse_initialiser(Parser *p, ArrayValue *a, int dim, long base)
+{
+    long stride = 1;
+    for (int d = dim + 1; d < a->ndims; d++)
+        stride *= a->size[d];
+    begin_block(p, "the array size or ','");
+    for (int i = 0; i < a->size[dim]; i++) {
+        if (i > 0) {
+            Token *t = next(p);
+            if (is_punct(t, '}'))
+                parse_fail(p, t->pos, "this array initialiser has %d element%s where %d are needed", i,
+                           i == 1 ? "" : "s", a->size[dim]);
+            if (!is_punct(t, ','))
+                unget(p); /* POV-Ray accepts a missing ',' */
+        }
+        if (dim + 1 < a->ndims) {
+            parse_initialiser(p, a, dim + 1, base + i * stride);
+        } else {
+            Token *t = peek(p);
+            if (is_punct(t, '}'))
+                parse_fail(p, t->pos, "this array initialiser has %d element%s where %d are needed", i,
+                           i == 1 ? "" : "s", a->size[dim]);
+            a->elems[base + i].value = parse_value_lenient(p);
+        }
+    }
+    Token *t = next(p);
+    if (is_punct(t, ','))
+        t = next(p); /* a trailing ',' */
+    if (!is_punct(t, '}')) {
+        char what[96];
+        snprintf(what, sizeof what, "'}' after the %d elements of the array initialiser", a->size[dim]);
+        fail_expected(p, t, what);
+    }
+}
+
+Value parse_array(Parser *p, const Token *kw)
+{
+    ArrayValue *a = tmp_alloc(p, sizeof *a);
+    a->declared_at = kw->pos;
+    a->count = 1;
+    for (;;) {
+        Token *t = next(p);
+        if (!is_punct(t, '[')) {
+            if (a->ndims == 0)
+                fail_expected(p, t, "'[' and the array size after 'array'");
+            unget(p);
+            break;
+        }
+        if (a->ndims == MAX_ARRAY_DIMS)
+            parse_fail(p, t->pos, "arrays have at most %d dimensions", MAX_ARRAY_DIMS);
+        Token at = *peek(p);
+        double n = parse_float_full(p);
+        expect_punct(p, ']', "the array size");
+        if (!(n >= 1.0 - 1e-10) || n > (double)MAX_ARRAY_ELEMENTS)
+            parse_fail(p, at.pos, "invalid array size %g (1 to %ld)", n, MAX_ARRAY_ELEMENTS);
+        int size = (int)(n + 1e-10);
+        a->size[a->ndims++] = size;
+        a->count *= size;
+        if (a->count > MAX_ARRAY_ELEMENTS)
+            parse_fail(p, at.pos, "array of more than %ld elements", MAX_ARRAY_ELEMENTS);
+    }
+    a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)a->count);
+    if (is_punct(peek(p), '{'))
+        parse_initialiser(p, a, 0, 0);
+    Value v;
+    memset(&v, 0, sizeof v);
+    v.kind = VAL_ARRAY;
+    v.array = a;
+    return v;
+}
+
+void read_array_element(Parser *p, Symbol *s)
+{
+    Token t = p->tok;
+    const ArrayValue *a = s->value.array;
+    int depth = p->depth;
+    const char *buf = p->files[depth - 1].buf;
+    int saved = p->no_macro_calls;
+    p->no_macro_calls = 0; /* the indices are ordinary expressions */
+    long index = 0;
+    for (int d = 0; d < a->ndims; d++) {
+        Token *open = next(p);
+        if (!is_punct(open, '[')) {
+            char what[120];
+            snprintf(what, sizeof what, "'[': '%.*s' has %d dimensions", t.len > 60 ? 60 : t.len, t.text, a->ndims);
+            fail_expected(p, open, what);
+        }
+        Token at = *peek(p);
+        double v = parse_float_full(p);
+        expect_punct(p, ']', "the array index");
+        if (!(v > -1.0) || v >= (double)a->size[d]) {
+            if (a->ndims == 1)
+                parse_fail(p, at.pos, "index %g is out of range for '%.*s' (array[%d]: 0 to %d)", v, t.len, t.text,
+                           a->size[0], a->size[0] - 1);
+            parse_fail(p, at.pos, "index %g is out of range for dimension %d of '%.*s' (0 to %d)", v, d + 1, t.len,
+                       t.text, a->size[d] - 1);
+        }
+        index = index * a->size[d] + (long)v;
+    }
+    p->no_macro_calls = saved;
+    /* Let messages show `A[i][j]` when it was written on one stretch. */
+    const SourceFile *f = &p->files[p->depth - 1];
+    if (p->depth == depth && f->buf == buf && !p->ungot) {
+        size_t start = (size_t)(t.text - buf);
+        if (f->offset > start && f->offset - start <= 80 && memchr(t.text, '\n', f->offset - start) == NULL)
+            t.len = (int)(f->offset - start);
+    }
+    t.elem = &a->elems[index];
+    p->tok = t;
+}
+
+static const ArrayValue *array_argument(Parser *p, const char *function)
+{
+    Token t = *next(p);
+    if (t.type == TK_WORD && t.kw < 0 && !t.elem) {
+        Symbol *s = symbol_find(p, t.text, t.len);
+        if (!s)
+            parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+        if (s->value.kind == VAL_ARRAY)
+            return s->value.array;
+        parse_fail(p, t.pos, "'%s' needs an array, but '%.*s' is %s", function, t.len, t.text,
+                   value_kind_name(s->value.kind));
+    }
+    char what[64];
+    snprintf(what, sizeof what, "an array identifier in '%s'", function);
+    fail_expected(p, &t, what);
+}
+
+double array_function(Parser *p, const Token *t)
+{
+    const char *name = keyword_name(t->kw);
+    char after[64];
+    snprintf(after, sizeof after, "'%s'", name);
+    expect_punct(p, '(', after);
+    const ArrayValue *a = array_argument(p, name);
+    double v;
+    if (t->kw == KW_dimensions) {
+        v = a->ndims;
+    } else {
+        expect_punct(p, ',', "the array");
+        double d = parse_float_full(p);
+        int i = (int)d - 1;
+        /* POV-Ray warns and answers 0 for a dimension the array lacks */
+        v = (i >= 0 && i < a->ndims) ? a->size[i] : 0.0;
+    }
+    expect_punct(p, ')', "the arguments");
+    return v;
+}
