@@ -94,6 +94,7 @@ typedef struct {
      * unsupported thing was first written. */
     const char *what;
     SourcePos declared_at;
+    int strict_only; /* approximated, and unsupported only because of --strict */
 } Value;
 
 typedef struct Symbol {
@@ -173,7 +174,9 @@ typedef struct Parser {
     jmp_buf *poison_jmp;
     const char *poison_what;
     SourcePos poison_at;
+    int poison_strict;
 
+    const ApproxNote *global_approx; /* global_settings: radiosity, photons */
     TempVec objects; /* of SceneObject *, top level */
     TempVec lights;  /* of SceneLight */
 } Parser;
@@ -190,6 +193,9 @@ _Noreturn void parse_fail_io(Parser *p, SourcePos pos, const char *fmt, ...) HST
 _Noreturn void fail_expected(Parser *p, const Token *found, const char *what);
 /* An unsupported keyword at `t`: an error, or VAL_UNSUPPORTED in a #declare. */
 _Noreturn void unsupported(Parser *p, const Token *t);
+/* A feature at `t` that hstrace approximates (an ApproxKind): a note added
+ * to *notes; with --strict an error (in a #declare: a poisoned value). */
+void approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes);
 /* Use of an identifier holding an unsupported declaration. */
 _Noreturn void use_unsupported(Parser *p, const Token *t, const Value *v);
 void *palloc(Parser *p, size_t size);       /* scene arena, checked */
@@ -258,6 +264,10 @@ void parse_pigment(Parser *p, Pigment *pig); /* after 'pigment' */
 void parse_finish(Parser *p, Finish *f);  /* after 'finish' */
 void parse_interior(Parser *p, Interior *in); /* after 'interior' */
 void skip_normal(Parser *p);              /* after 'normal' */
+/* A layer `top` over `below` (both copied): one texture, see parse_texture.c. */
+SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at);
+/* sky_sphere { pigment {...} ... transforms } after 'sky_sphere'. */
+void parse_sky_sphere(Parser *p, SkySphere *sky);
 
 /* parse_objects.c */
 int is_object_keyword(int kw);
@@ -270,6 +280,9 @@ void parse_camera(Parser *p, const Token *t, SceneCamera *cam);
 void default_camera(SceneCamera *cam);
 SceneLight *parse_light_source(Parser *p, const Token *t);
 void transform_light(SceneLight *l, const Transform *tr);
+
+/* approximations.c: the report of what the instantiated scene approximates */
+void collect_approximations(Parser *p);
 
 /* parse_scene.c */
 void parse_declare(Parser *p, const Token *hash, int local);

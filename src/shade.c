@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "intersect.h"
+#include "pigment.h"
 #include "shadow.h"
 #include "shadow_coherence.h"
 #include "shadow_reference.h"
@@ -15,13 +16,20 @@
 /* POV-Ray's greyscale weights (base/types.h). */
 static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589 * g + 0.114 * b; }
 
-static void background(const World *w, Radiance *out)
+static void background(const World *w, Vec3 dir, Radiance *out)
 {
     /* Without an alpha channel POV-Ray ignores the background's filter and
      * transmit, so it is opaque and the pixel's transmittance is 0. */
-    out->r = w->background.r;
-    out->g = w->background.g;
-    out->b = w->background.b;
+    if (w->sky) {
+        RGB c = sky_colour(w, dir);
+        out->r = c.r;
+        out->g = c.g;
+        out->b = c.b;
+    } else {
+        out->r = w->background.r;
+        out->g = w->background.g;
+        out->b = w->background.b;
+    }
     out->transmit = 0.0;
 }
 
@@ -388,7 +396,7 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
         return;
     Hit hit;
     if (!trace_nearest(ctx, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit)) {
-        background(w, out);
+        background(w, ray->dir, out);
         return;
     }
     if (ctx->coherence && ctx->state_depth == 0 && ray->from.kind == HIT_NONE) {
@@ -423,7 +431,8 @@ static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hitp, const 
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
     Vec3 normal = raw;
-    const Colour *pc = &m->pigment;
+    const Colour surface = material_colour_at(m, hit.point); /* the pigment here */
+    const Colour *pc = &surface;
     RGB pigment = { pc->r, pc->g, pc->b };
 
     if (ctx->quality.full_ambient) {
