@@ -200,9 +200,7 @@ static void skip_arguments(Parser *p)
         } else {
             parse_express(p, e, &terms);
         }
-        if (!is_punct(peek(p), ','))
-            return;
-        next(p);
+        parse_comma(p); /* `julia <.3, .44> 30`: commas are optional */
     }
 }
 
@@ -631,6 +629,12 @@ void parse_sky_sphere(Parser *p, SkySphere *sky)
             pig->approx = NULL;
             parse_pigment(p, pig);
             continue;
+        }
+        if (t->type == TK_WORD && t->kw < 0) {
+            Symbol *sym = symbol_find(p, t->text, t->len);
+            if (sym && sym->value.kind == VAL_UNSUPPORTED) /* skies.inc's S_Cloud1 ... */
+                use_unsupported(p, t, &sym->value);
+            parse_fail(p, t->pos, "sky_sphere identifiers are not supported by hstrace");
         }
         if (is_kw(t, KW_emission)) { /* 3.7.1: scales the sky; 1 is the default */
             Colour c;
