@@ -6,7 +6,9 @@
  * values, against POV-Ray's definitions worked by hand. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "parser.h"
 #include "pigment.h"
@@ -307,6 +309,52 @@ static void test_flags(void)
     scene_free(s);
 }
 
+/* hstrace's own colors.inc (data/include) against POV-Ray's: every name it
+ * declares has POV-Ray's value. */
+static void test_fallback_colors(void)
+{
+    const char *top = getenv("top_srcdir");
+    char own_dir[1024], path[1100];
+    snprintf(own_dir, sizeof own_dir, "%s/data/include", top && top[0] ? top : ".");
+    snprintf(path, sizeof path, "%s/colors.inc", own_dir);
+    FILE *f = fopen(path, "r");
+    tap_ok(f != NULL, "hstrace's colors.inc is at %s", path);
+    if (!f)
+        return;
+    static char scene[65536];
+    int len = snprintf(scene, sizeof scene, "#include \"colors.inc\"\n"), names = 0;
+    char line[256];
+    while (fgets(line, sizeof line, f)) {
+        char name[64];
+        if (sscanf(line, "#declare %63[A-Za-z0-9_] =", name) == 1 && strcmp(name, "Colors_Inc_Temp") != 0) {
+            len += snprintf(scene + len, sizeof scene - (size_t)len, "box { 0, 1 pigment { %s } }\n", name);
+            names++;
+        }
+    }
+    fclose(f);
+    const char *own[] = { own_dir };
+    ParseOptions o = { .include_dirs = own, .ninclude_dirs = 1 };
+    Scene *mine = parse_with(scene, &o);
+    tap_ok(mine && mine->nobjects == names && names > 100, "hstrace's colors.inc alone: %d colour names", names);
+    if (access("/usr/share/povray-3.7/include/colors.inc", R_OK) != 0) {
+        tap_diag("POV-Ray's colors.inc is not installed: values not compared");
+    } else {
+        Scene *pov = parse(scene);
+        int differ = 0;
+        for (int i = 0; mine && pov && i < names && i < pov->nobjects; i++) {
+            Colour a = mine->objects[i]->texture->pigment.colour, b = pov->objects[i]->texture->pigment.colour;
+            if (fabs(a.r - b.r) > 1e-6 || fabs(a.g - b.g) > 1e-6 || fabs(a.b - b.b) > 1e-6 ||
+                fabs(a.filter - b.filter) > 1e-6 || fabs(a.transmit - b.transmit) > 1e-6) {
+                differ++;
+                tap_diag("colour %d differs", i);
+            }
+        }
+        tap_ok(pov && mine && differ == 0, "every colour equals POV-Ray's colors.inc value");
+        scene_free(pov);
+    }
+    scene_free(mine);
+}
+
 int main(void)
 {
     test_pattern_values();
@@ -318,5 +366,6 @@ int main(void)
     test_strict();
     test_unsupported();
     test_flags();
+    test_fallback_colors();
     return tap_done();
 }
