@@ -133,9 +133,9 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             break;
         }
         case KW_material: parse_material(p, o); break;
-        case KW_no_shadow: o->no_shadow = 1; break;
-        case KW_no_image: o->no_image = 1; break;
-        case KW_no_reflection: o->no_reflection = 1; break;
+        case KW_no_shadow: o->no_shadow = optional_bool(p) ? 1u : 0u; break;
+        case KW_no_image: o->no_image = optional_bool(p) ? 1u : 0u; break;
+        case KW_no_reflection: o->no_reflection = optional_bool(p) ? 1u : 0u; break;
         case KW_no_radiosity: break; /* no radiosity in hstrace */
         case KW_hollow: o->hollow = optional_bool(p) ? 1u : 0u; break;
         case KW_inverse: o->inverse = !o->inverse; break;

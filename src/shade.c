@@ -325,6 +325,8 @@ static void trace_reflection(TraceContext *ctx, const Ray *ray, const Hit *hit, 
     r.state = state;
     r.inside = ray->inside;
     r.org = hit->point;
+    r.not_image = 1;
+    r.reflection = 1;
     Vec3 d = v3_madd(ray->dir, normal, -2.0 * v3_dot(ray->dir, normal));
     /* POV-Ray's fix for reflected rays that point into the surface. */
     double n = v3_dot(d, raw_normal);
@@ -347,6 +349,8 @@ static int trace_refraction(TraceContext *ctx, const Ray *ray, const Hit *hit, c
     r.from = *hit;
     r.state = state;
     r.org = hit->point;
+    r.not_image = ray->not_image;
+    r.reflection = ray->reflection;
     double ior = refraction_ratio(&ray->inside, m, &r.inside);
     if (fabs(ior - 1.0) < POV_EPSILON) {
         /* Same ior on both sides: the ray goes straight on, and POV-Ray
@@ -395,7 +399,10 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
     if (level >= w->max_trace_level || weight < w->adc_bailout)
         return;
     Hit hit;
-    if (!trace_nearest(ctx, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit)) {
+    ctx->hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);
+    int found = trace_nearest(ctx, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);
+    ctx->hide = 0;
+    if (!found) {
         background(w, ray->dir, out);
         return;
     }
