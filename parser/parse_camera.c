@@ -106,7 +106,25 @@ void parse_camera(Parser *p, const Token *kw, SceneCamera *cam)
         case KW_omnimax: case KW_panoramic: case KW_spherical: case KW_cylinder:
             parse_fail(p, t->pos, "the camera type must come first in 'camera'");
         case KW_aperture: case KW_blur_samples: case KW_focal_point: case KW_confidence: case KW_variance:
-        case KW_bokeh: case KW_normal:
+            /* focal blur: a pinhole camera stands for it */
+            approximate(p, t, APPROX_FOCAL_BLUR, &c.approx);
+            if (t->kw == KW_blur_samples) { /* one count, or min, max */
+                (void)parse_float(p);
+                if (is_punct(peek(p), ',')) {
+                    next(p);
+                    (void)parse_float(p);
+                }
+            } else if (t->kw == KW_focal_point) {
+                (void)parse_vector(p);
+            } else {
+                (void)parse_float(p);
+            }
+            break;
+        case KW_normal: /* camera ray perturbation: ignored */
+            approximate(p, t, APPROX_FOCAL_BLUR, &c.approx);
+            skip_normal(p);
+            break;
+        case KW_bokeh:
             unsupported(p, t);
         default:
             fail_expected(p, t, "a camera item or '}' in 'camera'");
@@ -167,6 +185,7 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
     l->location = parse_vector(p);
     parse_comma(p);
     parse_colour(p, &l->colour, 0);
+    int area = 0;
     for (;;) {
         Token *t = next(p);
         if (is_punct(t, '}'))
@@ -191,8 +210,29 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
                 (void)parse_float(p);
             break;
         case KW_photons: /* photon settings: parsed past, not modelled */
+            approximate(p, t, APPROX_PHOTONS, &l->approx);
             begin_block(p, "photons");
             skip_block_body(p);
+            break;
+        case KW_area_light: { /* a point light at its centre, where POV-Ray puts the grid's middle */
+            approximate(p, t, APPROX_AREA_LIGHT, &l->approx);
+            area = 1;
+            (void)parse_vector(p);
+            parse_comma(p);
+            (void)parse_vector(p);
+            parse_comma(p);
+            (void)parse_float(p);
+            parse_comma(p);
+            (void)parse_float(p);
+            break;
+        }
+        case KW_adaptive: case KW_jitter: case KW_circular: case KW_orient: case KW_area_illumination:
+            if (!area) /* area_light's modifiers */
+                unsupported(p, t);
+            if (t->kw == KW_adaptive)
+                (void)parse_float(p);
+            else if (t->kw == KW_area_illumination && token_starts_float(p, peek(p)))
+                (void)parse_float(p);
             break;
         default:
             if (t->type == TK_WORD && t->kw >= 0)

@@ -34,6 +34,7 @@ static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
     o->kind = kind;
     o->pos = t->pos;
     transform_identity(&o->transform);
+    transform_identity(&o->texture_bind);
     return o;
 }
 
@@ -47,6 +48,7 @@ static SceneTexture *own_texture(Parser *p, SceneObject *o, const Token *t)
     } else {
         tex = new_default_texture(p);
         tex->pos = t->pos;
+        o->texture_bind = o->transform; /* a new texture: later transforms move it */
     }
     o->texture = tex;
     return tex;
@@ -67,11 +69,9 @@ static int optional_bool(Parser *p)
 
 static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const Token *at)
 {
-    /* A second texture is a layer on top of the first: only an opaque top
-     * layer, which hides the rest, is supported. */
-    if (o->texture && (tex->pigment.colour.filter != 0.0 || tex->pigment.colour.transmit != 0.0))
-        parse_fail(p, at->pos, "layered textures are not supported by hstrace");
-    o->texture = tex;
+    /* A second texture is a layer on top of the first (layer_textures). */
+    o->texture = o->texture ? layer_textures(p, tex, o->texture, at) : tex;
+    o->texture_bind = o->transform; /* transforms after the texture move it, those before do not */
 }
 
 static void parse_material(Parser *p, SceneObject *o)
@@ -113,15 +113,18 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             break;
         case KW_pigment:
             parse_pigment(p, &own_texture(p, o, &at)->pigment);
+            o->texture_bind = o->transform;
             break;
         case KW_finish:
             parse_finish(p, &own_texture(p, o, &at)->finish);
             break;
-        case KW_normal:
+        case KW_normal: {
             /* not modelled, but as in POV-Ray it gives the object a texture */
-            (void)own_texture(p, o, &at);
+            SceneTexture *tex = own_texture(p, o, &at);
+            approximate(p, &at, APPROX_NORMAL, &tex->approx);
             skip_normal(p);
             break;
+        }
         case KW_interior: {
             Interior *in = palloc(p, sizeof *in);
             *in = o->interior ? *o->interior : scene_default_interior();
@@ -130,17 +133,26 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             break;
         }
         case KW_material: parse_material(p, o); break;
-        case KW_no_shadow: o->no_shadow = 1; break;
-        case KW_no_image: o->no_image = 1; break;
-        case KW_no_reflection: o->no_reflection = 1; break;
+        case KW_no_shadow: o->no_shadow = optional_bool(p) ? 1u : 0u; break;
+        case KW_no_image: o->no_image = optional_bool(p) ? 1u : 0u; break;
+        case KW_no_reflection: o->no_reflection = optional_bool(p) ? 1u : 0u; break;
         case KW_no_radiosity: break; /* no radiosity in hstrace */
         case KW_hollow: o->hollow = optional_bool(p) ? 1u : 0u; break;
         case KW_inverse: o->inverse = !o->inverse; break;
         case KW_double_illuminate: o->double_illuminate = 1; break;
         case KW_sturm: case KW_split_union: skip_optional_float(p); break;
         case KW_uv_mapping: case KW_cutaway_textures: break; /* no effect on solid colours */
-        case KW_photons: case KW_radiosity: /* parsed past: hstrace has neither */
-            begin_block(p, keyword_name(at.kw));
+        case KW_photons: /* parsed past: hstrace has no photon mapping */
+            approximate(p, &at, APPROX_PHOTONS, &o->approx);
+            begin_block(p, "photons");
+            skip_block_body(p);
+            break;
+        case KW_radiosity: /* per-object radiosity settings: nothing without radiosity */
+            begin_block(p, "radiosity");
+            skip_block_body(p);
+            break;
+        case KW_bounded_by: /* a hint for POV-Ray's bounding: no effect on the image */
+            begin_block(p, "bounded_by");
             skip_block_body(p);
             break;
         default:

@@ -83,11 +83,32 @@ void fail_expected(Parser *p, const Token *found, const char *what)
 
 /* Inside a #declare an unsupported thing only poisons the declaration: the
  * error comes when (if ever) the scene uses it. */
-static _Noreturn void poison(Parser *p, const char *what, SourcePos at)
+static _Noreturn void poison(Parser *p, const char *what, SourcePos at, int strict_only)
 {
     p->poison_what = what;
     p->poison_at = at;
+    p->poison_strict = strict_only;
     longjmp(*p->poison_jmp, 1);
+}
+
+void approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes)
+{
+    char what[96];
+    snprintf(what, sizeof what, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
+    if (p->opts->strict) {
+        if (p->declaring)
+            poison(p, tmp_strndup(p, what, strlen(what)), t->pos, 1);
+        parse_fail(p, t->pos, "%s is only approximated by hstrace (%s); --strict makes it an error", what,
+                   approx_kind_effect(kind));
+    }
+    ApproxNote *n = palloc(p, sizeof *n);
+    n->kind = kind;
+    n->pos = t->pos;
+    char *w = palloc(p, strlen(what) + 1);
+    memcpy(w, what, strlen(what) + 1);
+    n->what = w;
+    n->next = *notes;
+    *notes = n;
 }
 
 void unsupported(Parser *p, const Token *t)
@@ -97,14 +118,17 @@ void unsupported(Parser *p, const Token *t)
     char buf[96];
     snprintf(buf, sizeof buf, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
     if (p->declaring)
-        poison(p, tmp_strndup(p, buf, strlen(buf)), t->pos);
+        poison(p, tmp_strndup(p, buf, strlen(buf)), t->pos, 0);
     parse_fail(p, t->pos, "%s is not supported by hstrace", buf);
 }
 
 void use_unsupported(Parser *p, const Token *t, const Value *v)
 {
     if (p->declaring)
-        poison(p, v->what, v->declared_at);
+        poison(p, v->what, v->declared_at, v->strict_only);
+    if (v->strict_only)
+        parse_fail(p, t->pos, "%s is only approximated by hstrace; --strict makes it an error (declared at %s:%d)",
+                   v->what, v->declared_at.file, v->declared_at.line);
     parse_fail(p, t->pos, "%s is not supported by hstrace (declared at %s:%d)", v->what, v->declared_at.file,
                v->declared_at.line);
 }
@@ -201,7 +225,7 @@ static int is_unsupported_value_keyword(int kw)
 {
     switch (kw) {
     case KW_function: case KW_spline: case KW_pattern: case KW_media: case KW_density:
-    case KW_fog: case KW_rainbow: case KW_sky_sphere: case KW_color_map: case KW_colour_map:
+    case KW_fog: case KW_rainbow: case KW_color_map: case KW_colour_map:
     case KW_pigment_map: case KW_normal_map: case KW_slope_map: case KW_texture_map: case KW_material_map:
     case KW_density_map: case KW_photons: case KW_radiosity: case KW_material: case KW_interior_texture:
     case KW_trace: case KW_min_extent: case KW_max_extent: case KW_vturbulence: case KW_file_exists:
@@ -248,6 +272,8 @@ static Value parse_rvalue(Parser *p)
             v.kind = VAL_NORMAL;
             skip_normal(p);
             return v;
+        case KW_sky_sphere: /* declared sky spheres: not kept (rarely declared) */
+            unsupported(p, &t);
         case KW_camera:
             v.kind = VAL_CAMERA;
             v.camera = palloc(p, sizeof *v.camera);
@@ -375,6 +401,7 @@ Value parse_value_lenient(Parser *p)
         v.kind = VAL_UNSUPPORTED;
         v.what = p->poison_what;
         v.declared_at = p->poison_at;
+        v.strict_only = p->poison_strict;
         skip_poisoned_value(p, start_depth);
     }
     p->declaring = saved_declaring;
@@ -382,6 +409,47 @@ Value parse_value_lenient(Parser *p)
     p->deferred_what = outer_deferred;
     p->deferred_at = outer_deferred_at;
     return v;
+}
+
+/* One more `texture {...}` of a declaration, layered on top of the
+ * texture v (layer_textures); something unsupported inside makes the
+ * declared value unsupported, as in parse_value_lenient. */
+static Value add_layer_lenient(Parser *p, Value v, const Token *layer)
+{
+    jmp_buf here;
+    jmp_buf *volatile outer = p->poison_jmp;
+    volatile int saved_nesting = p->nesting, saved_declaring = p->declaring;
+    volatile int start_depth = p->brace_depth;
+    const char *volatile outer_deferred = p->deferred_what;
+    volatile SourcePos outer_deferred_at = p->deferred_at;
+    Value out;
+    p->poison_jmp = &here;
+    p->declaring++;
+    p->deferred_what = NULL;
+    if (setjmp(here) == 0) {
+        SceneTexture *top = parse_texture(p);
+        out = v;
+        out.texture = layer_textures(p, top, v.texture, layer);
+        if (p->deferred_what) {
+            memset(&out, 0, sizeof out);
+            out.kind = VAL_UNSUPPORTED;
+            out.what = p->deferred_what;
+            out.declared_at = p->deferred_at;
+        }
+    } else {
+        p->nesting = saved_nesting;
+        memset(&out, 0, sizeof out);
+        out.kind = VAL_UNSUPPORTED;
+        out.what = p->poison_what;
+        out.declared_at = p->poison_at;
+        out.strict_only = p->poison_strict;
+        skip_poisoned_value(p, start_depth);
+    }
+    p->declaring = saved_declaring;
+    p->poison_jmp = outer;
+    p->deferred_what = outer_deferred;
+    p->deferred_at = outer_deferred_at;
+    return out;
 }
 
 void parse_declare(Parser *p, const Token *hash, int local)
@@ -416,18 +484,17 @@ void parse_declare(Parser *p, const Token *hash, int local)
     Value v = parse_value_lenient(p);
     (void)hash;
 
-    /* `texture {...} texture {...}`: POV-Ray layers the textures. */
+    /* `texture {...} texture {...}`: POV-Ray layers the textures, the
+     * later on top (layer_textures). */
     if (is_kw(&first, KW_texture)) {
         while (lex_next_is_keyword(p, KW_texture)) {
             Token layer = *next(p);
-            begin_block(p, "texture");
-            skip_block_body(p);
-            if (v.kind != VAL_UNSUPPORTED) {
-                memset(&v, 0, sizeof v);
-                v.kind = VAL_UNSUPPORTED;
-                v.what = "a layered texture";
-                v.declared_at = layer.pos;
+            if (v.kind != VAL_TEXTURE) {
+                begin_block(p, "texture");
+                skip_block_body(p);
+                continue;
             }
+            v = add_layer_lenient(p, v, &layer);
         }
     }
 
@@ -517,6 +584,7 @@ static void parse_global_settings(Parser *p)
         case KW_radiosity: case KW_photons: case KW_subsurface:
             /* Not modelled: parsed past and ignored, so scenes written for
              * POV-Ray still load (their lighting will differ). */
+            approximate(p, &t, t.kw == KW_photons ? APPROX_PHOTONS : APPROX_RADIOSITY, &p->global_approx);
             begin_block(p, keyword_name(t.kw));
             skip_block_body(p);
             break;
@@ -573,6 +641,9 @@ static void parse_statements(Parser *p)
         case KW_global_settings:
             parse_global_settings(p);
             break;
+        case KW_sky_sphere:
+            parse_sky_sphere(p, &p->scene->sky);
+            break;
         default:
             if (t.type == TK_WORD && t.kw >= 0)
                 unsupported(p, &t); /* fog, sky_sphere, rainbow, media, ... */
@@ -619,6 +690,7 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
         parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
     }
     parse_statements(p);
+    collect_approximations(p);
 
     scene->version = p->version;
     scene->nobjects = p->objects.n;

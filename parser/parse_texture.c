@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "parser_internal.h"
+#include "pigment.h"
 
 SceneTexture *new_default_texture(Parser *p)
 {
@@ -38,34 +39,302 @@ void skip_normal(Parser *p)
     skip_block_body(p);
 }
 
-void parse_pigment(Parser *p, Pigment *pig)
+/* ---- pigments ------------------------------------------------------------ */
+
+/* How hstrace treats a pattern keyword in a pigment. */
+typedef enum { PAT_NONE, PAT_EVALUATED, PAT_APPROXIMATED, PAT_UNSUPPORTED } PatternSupport;
+
+static PatternSupport pattern_support(int kw)
 {
-    begin_block(p, "pigment");
+    switch (kw) {
+    case KW_checker: case KW_hexagon: case KW_gradient:
+        return PAT_EVALUATED;
+    /* POV-Ray 3.7's other patterns: one colour stands for them */
+    case KW_agate: case KW_aoi: case KW_average: case KW_boxed: case KW_bozo: case KW_brick: case KW_bumps:
+    case KW_cells: case KW_crackle: case KW_cubic: case KW_cylindrical: case KW_dents: case KW_facets:
+    case KW_function: case KW_granite: case KW_julia: case KW_leopard: case KW_magnet: case KW_mandel:
+    case KW_marble: case KW_object: case KW_onion: case KW_pavement: case KW_pigment_pattern: case KW_planar:
+    case KW_quilted: case KW_radial: case KW_ripples: case KW_spherical: case KW_spiral1: case KW_spiral2:
+    case KW_spotted: case KW_square: case KW_tiling: case KW_triangular: case KW_waves: case KW_wood:
+    case KW_wrinkles: case KW_slope:
+        return PAT_APPROXIMATED;
+    case KW_image_map: case KW_image_pattern: case KW_density_file:
+        return PAT_UNSUPPORTED; /* they need an image or a density file */
+    default:
+        return PAT_NONE;
+    }
+}
+
+/* POV-Ray's default colours for checker (blue, green) and hexagon (blue,
+ * green, red), and the black-to-white map of patterns given no colour_map. */
+static const Colour default_list_colours[3] = { { 0, 0, 1, 0, 0 }, { 0, 1, 0, 0, 0 }, { 1, 0, 0, 0, 0 } };
+
+static void set_map(Parser *p, Pigment *pig, const ColourMapEntry *entries, int n)
+{
+    ColourMapEntry *m = palloc(p, sizeof *m * (size_t)(n ? n : 1));
+    for (int i = 0; i < n; i++)
+        m[i] = entries[i];
+    pig->map = m;
+    pig->nmap = n;
+}
+
+static void set_grey_map(Parser *p, Pigment *pig)
+{
+    ColourMapEntry e[2] = { { 0.0, { 0, 0, 0, 0, 0 } }, { 1.0, { 1, 1, 1, 0, 0 } } };
+    set_map(p, pig, e, 2);
+}
+
+/* The colours after checker / hexagon (POV-Ray's Parse_Blend_List): up to
+ * `count` colours, or `pigment {}` items, commas optional; the missing ones
+ * are POV-Ray's defaults. A pigment item that is itself a pattern is
+ * approximated by its representative colour. */
+static void parse_colour_list(Parser *p, Pigment *pig, int count)
+{
+    ColourMapEntry e[3];
+    int i = 0;
+    int pigments = is_kw(peek(p), KW_pigment);
+    while (i < count) {
+        Token *t = peek(p);
+        if (pigments) {
+            if (!is_kw(t, KW_pigment))
+                break;
+            Token at = *next(p);
+            Pigment item = p->scene->default_texture.pigment;
+            item.approx = NULL;
+            parse_pigment(p, &item);
+            if (item.kind != PIGMENT_SOLID)
+                approximate(p, &at, APPROX_PATTERN, &pig->approx);
+            for (const ApproxNote *n = item.approx; n; n = n->next) { /* the item's notes join the list's */
+                ApproxNote *c = palloc(p, sizeof *c);
+                *c = *n;
+                c->next = pig->approx;
+                pig->approx = c;
+            }
+            e[i].colour = item.colour;
+        } else {
+            if (!token_starts_expression(p, t))
+                break;
+            parse_colour(p, &e[i].colour, 1);
+        }
+        e[i].value = i;
+        i++;
+        parse_comma(p);
+    }
+    for (; i < count; i++) {
+        e[i].value = i;
+        e[i].colour = default_list_colours[i];
+    }
+    set_map(p, pig, e, count);
+}
+
+/* color_map { [value colour] ... }, also the old [v1 v2 colour c1 colour c2]
+ * form (POV-Ray's Parse_Colour_Map); equal neighbours are merged as there. */
+static void parse_colour_map(Parser *p, Pigment *pig)
+{
+    begin_block(p, "color_map");
+    TempVec entries;
+    tvec_init(&entries, sizeof(ColourMapEntry));
     for (;;) {
         Token *t = next(p);
         if (is_punct(t, '}'))
+            break;
+        if (t->type == TK_WORD && t->kw < 0) {
+            Symbol *s = symbol_find(p, t->text, t->len);
+            if (s && s->value.kind == VAL_UNSUPPORTED)
+                use_unsupported(p, t, &s->value);
+            parse_fail(p, t->pos, "color_map identifiers are not supported by hstrace");
+        }
+        if (!is_punct(t, '['))
+            fail_expected(p, t, "'[' or '}' in 'color_map'");
+        if (entries.n >= 256)
+            parse_fail(p, t->pos, "Blend_Map too long (more than 256 entries)");
+        double v = parse_float(p);
+        parse_comma(p);
+        Token *c = peek(p);
+        if (token_starts_float(p, c)) { /* old style: a second value, then two colours */
+            double v2 = parse_float(p);
+            ColourMapEntry *a = tvec_push(p, &entries);
+            a->value = v;
+            parse_colour(p, &a->colour, 1);
+            ColourMapEntry *b = tvec_push(p, &entries);
+            b->value = v2;
+            parse_colour(p, &b->colour, 1);
+        } else {
+            ColourMapEntry *a = tvec_push(p, &entries);
+            a->value = v;
+            parse_colour(p, &a->colour, 1);
+        }
+        expect_punct(p, ']', "a color_map entry");
+    }
+    if (entries.n < 1)
+        parse_fail(p, p->tok.pos, "Must have at least one color in color map.");
+    ColourMapEntry *e = entries.data;
+    int n = 1;
+    for (int i = 1; i < entries.n; i++) {
+        if (memcmp(&e[i], &e[n - 1], sizeof e[i]) == 0)
+            continue;
+        e[n++] = e[i];
+    }
+    set_map(p, pig, e, n);
+}
+
+/* A keyword's arguments when hstrace does not use them: expressions (with
+ * commas between) and blocks, so that `spiral2 8`, `warp { ... }` or
+ * `brick colour A, colour B` are read past. */
+static void skip_arguments(Parser *p)
+{
+    for (;;) {
+        Token *t = peek(p);
+        if (is_punct(t, '{')) {
+            next(p);
+            skip_block_body(p);
             return;
+        }
+        if (!token_starts_expression(p, t))
+            return;
+        double e[5];
+        int terms = 5;
+        if (token_starts_colour(p, t)) {
+            Colour ignored;
+            parse_colour(p, &ignored, 1);
+        } else {
+            parse_express(p, e, &terms);
+        }
+        parse_comma(p); /* `julia <.3, .44> 30`: commas are optional */
+    }
+}
+
+static int pattern_modifier(int kw)
+{
+    switch (kw) {
+    case KW_turbulence: case KW_octaves: case KW_omega: case KW_lambda: case KW_warp: case KW_noise_generator:
+    case KW_agate_turb: case KW_brick_size: case KW_mortar: case KW_form: case KW_metric: case KW_offset:
+    case KW_solid: case KW_control0: case KW_control1: case KW_exponent: case KW_max_iteration:
+    case KW_interior: case KW_exterior: case KW_orientation: case KW_accuracy:
+    case KW_number_of_sides: case KW_number_of_tiles: case KW_pattern: case KW_type: case KW_repeat:
+    case KW_map_type: case KW_interpolate: case KW_once: case KW_altitude:
+    case KW_pigment_map: case KW_density_map: case KW_coords:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+/* The representative colour of a patterned pigment: its map at 0.5. */
+static void set_representative(Pigment *pig)
+{
+    if (pig->nmap > 0)
+        pig->colour = colour_map_at(pig->map, pig->nmap, 0.5);
+}
+
+void parse_pigment(Parser *p, Pigment *pig)
+{
+    begin_block(p, "pigment");
+    int approximated = 0; /* the pattern is not evaluated: colour map at 0.5 */
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, '}'))
+            break;
+        Token at = *t;
         const Value *id = block_identifier(p, t, VAL_PIGMENT, "pigment");
         if (id) {
             *pig = *id->pigment;
+            approximated = 0;
             continue;
         }
         if (token_starts_colour(p, t)) {
             unget(p);
             parse_colour(p, &pig->colour, 1);
             pig->kind = PIGMENT_SOLID;
+            pig->nmap = 0;
+            approximated = 0;
             continue;
         }
         if (parse_transform_item(p, t, &pig->transform))
             continue;
-        if (is_kw(t, KW_quick_color) || is_kw(t, KW_quick_colour)) {
+        int kw = t->type == TK_WORD ? t->kw : -1;
+        if (kw == KW_quick_color || kw == KW_quick_colour) {
             Colour ignored;
             parse_colour(p, &ignored, 1);
             continue;
         }
-        if (t->type == TK_WORD && t->kw >= 0)
-            unsupported(p, t); /* a pattern, warp, turbulence, ... */
-        fail_expected(p, t, "a colour, a transform or '}' in 'pigment'");
+        switch (pattern_support(kw)) {
+        case PAT_EVALUATED:
+            approximated = 0;
+            pig->frequency = 1.0;
+            pig->phase = 0.0;
+            pig->wave = WAVE_RAMP;
+            if (kw == KW_gradient) {
+                Token vt = *peek(p);
+                Vec3 g = parse_vector(p);
+                if (v3_length(g) == 0.0)
+                    parse_fail(p, vt.pos, "the gradient vector must not be zero");
+                pig->gradient = v3_normalize(g);
+                pig->kind = PIGMENT_GRADIENT;
+                if (pig->nmap == 0)
+                    set_grey_map(p, pig);
+            } else {
+                pig->kind = kw == KW_checker ? PIGMENT_CHECKER : PIGMENT_HEXAGON;
+                pig->frequency = 0.0; /* as POV-Ray: the value is the colour's index */
+                parse_colour_list(p, pig, kw == KW_checker ? 2 : 3);
+            }
+            continue;
+        case PAT_APPROXIMATED:
+            approximate(p, &at, APPROX_PATTERN, &pig->approx);
+            approximated = 1;
+            pig->kind = PIGMENT_SOLID;
+            pig->nmap = 0;
+            if (kw == KW_brick)
+                parse_colour_list(p, pig, 2); /* brick's colours, then its modifiers */
+            else
+                skip_arguments(p); /* `spiral2 8`, `function { ... }`, ... */
+            if (pig->nmap == 0)
+                set_grey_map(p, pig);
+            continue;
+        case PAT_UNSUPPORTED:
+            unsupported(p, &at);
+        case PAT_NONE:
+            break;
+        }
+        switch (kw) {
+        case KW_color_map:
+        case KW_colour_map:
+            parse_colour_map(p, pig);
+            continue;
+        case KW_frequency: pig->frequency = parse_float(p); continue;
+        case KW_phase: pig->phase = parse_float(p); continue;
+        case KW_ramp_wave: pig->wave = WAVE_RAMP; continue;
+        case KW_sine_wave: pig->wave = WAVE_SINE; continue;
+        case KW_triangle_wave: pig->wave = WAVE_TRIANGLE; continue;
+        case KW_scallop_wave: pig->wave = WAVE_SCALLOP; continue;
+        case KW_cubic_wave: pig->wave = WAVE_CUBIC; continue;
+        case KW_poly_wave:
+            pig->wave = WAVE_POLY;
+            pig->wave_exponent = token_starts_float(p, peek(p)) ? parse_float(p) : 1.0;
+            continue;
+        case KW_uv_mapping:
+            if (pig->kind != PIGMENT_SOLID && !approximated) /* uv coordinates: not modelled */
+                approximate(p, &at, APPROX_PATTERN, &pig->approx);
+            continue;
+        default:
+            break;
+        }
+        if (kw >= 0 && pattern_modifier(kw)) {
+            if (pig->kind != PIGMENT_SOLID && !approximated)
+                approximate(p, &at, APPROX_WARP, &pig->approx);
+            skip_arguments(p);
+            continue;
+        }
+        if (kw >= 0)
+            unsupported(p, t);
+        fail_expected(p, t, "a colour, a pattern, a transform or '}' in 'pigment'");
+    }
+    if (pig->kind != PIGMENT_SOLID || approximated)
+        set_representative(pig);
+    if (approximated) {
+        pig->kind = PIGMENT_SOLID;
+        pig->nmap = 0;
+        pig->map = NULL;
     }
 }
 
@@ -160,14 +429,19 @@ void parse_finish(Parser *p, Finish *f)
             diffuse_albedo = allow_albedo(p);
             f->diffuse = parse_float(p);
             if (is_punct(next(p), ',')) {
-                if (parse_float(p) != 0.0)
-                    parse_fail(p, t->pos, "'diffuse' with a backside value is not supported by hstrace");
+                Token back = *peek(p);
+                if (parse_float(p) != 0.0) /* light through the back: not modelled */
+                    approximate(p, &back, APPROX_FINISH, &f->approx);
             } else {
                 unget(p);
             }
             break;
         case KW_brilliance: f->brilliance = parse_float(p); break;
-        case KW_crand: f->crand = parse_float(p); break;
+        case KW_crand:
+            f->crand = parse_float(p);
+            if (f->crand != 0.0)
+                approximate(p, t, APPROX_FINISH, &f->approx);
+            break;
         case KW_phong:
             phong_albedo = allow_albedo(p);
             f->phong = parse_float(p);
@@ -185,6 +459,7 @@ void parse_finish(Parser *p, Finish *f)
         case KW_reflection_exponent: (void)parse_float(p); break;
         case KW_conserve_energy: f->conserve_energy = 1; break;
         case KW_irid: /* iridescence: parsed past, not modelled */
+            approximate(p, t, APPROX_FINISH, &f->approx);
             begin_block(p, "irid");
             skip_block_body(p);
             break;
@@ -226,9 +501,14 @@ void parse_interior(Parser *p, Interior *in)
         case KW_fade_power: in->fade_power = parse_float(p); break;
         case KW_fade_color:
         case KW_fade_colour: parse_colour(p, &in->fade_colour, 0); break;
-        case KW_caustics: case KW_dispersion: case KW_dispersion_samples:
-            (void)parse_float(p); /* photon and dispersion settings: not modelled */
+        case KW_caustics: case KW_dispersion: case KW_dispersion_samples: {
+            /* fake caustics and dispersion: not modelled */
+            Token at = *t;
+            double v = parse_float(p);
+            if ((at.kw == KW_caustics && v != 0.0) || (at.kw == KW_dispersion && v != 1.0))
+                approximate(p, &at, APPROX_CAUSTICS, &in->approx);
             break;
+        }
         default:
             if (t->type == TK_WORD && t->kw >= 0)
                 unsupported(p, t);
@@ -256,7 +536,10 @@ SceneTexture *parse_texture(Parser *p)
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_pigment: parse_pigment(p, &tex->pigment); break;
         case KW_finish: parse_finish(p, &tex->finish); break;
-        case KW_normal: skip_normal(p); break;
+        case KW_normal:
+            approximate(p, t, APPROX_NORMAL, &tex->approx);
+            skip_normal(p);
+            break;
         default:
             if (parse_transform_item(p, t, &tex->pigment.transform))
                 break;
@@ -265,4 +548,110 @@ SceneTexture *parse_texture(Parser *p)
             fail_expected(p, t, "pigment, normal, finish, a transform or '}' in 'texture'");
         }
     }
+}
+
+/* ---- layered textures ------------------------------------------------------ */
+
+/* POV-Ray's greyscale weights (base/types.h). */
+static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589 * g + 0.114 * b; }
+
+/* `texture { B } texture { T }`: T lies on B. An opaque top layer hides
+ * everything under it (POV-Ray stops at the first layer that lets no light
+ * through), so that is exact. Otherwise the layers are blended as POV-Ray's
+ * ComputeLightedTexture weighs them for ambient and diffuse light -- each
+ * layer's colour times its opacity times what the layers above let through
+ * -- into one colour, with the top layer's finish: an approximation (the
+ * lower layers' finishes and filter colours are lost), and patterns in
+ * the layers stand by their representative colour. */
+SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at)
+{
+    SceneTexture *r = palloc(p, sizeof *r);
+    *r = *top;
+    if (pigment_is_opaque(&top->pigment))
+        return r;
+    const SceneTexture *layers[2] = { top, below };
+    double lit[3] = { 0, 0, 0 }, fil[3] = { 1, 1, 1 };
+    for (int i = 0; i < 2; i++) {
+        const Colour *c = &layers[i]->pigment.colour;
+        if (fmin(1.0, fabs(greyscale(fil[0], fil[1], fil[2]))) <= 1.0 / 255.0)
+            break; /* POV-Ray's adc_bailout default: the rest cannot show */
+        double rgb[3] = { c->r, c->g, c->b }, opacity = 1.0 - c->filter - c->transmit;
+        for (int k = 0; k < 3; k++) {
+            lit[k] += rgb[k] * opacity * fil[k];
+            fil[k] *= rgb[k] * c->filter + c->transmit;
+        }
+    }
+    double t = fmin(1.0, fmax(0.0, greyscale(fil[0], fil[1], fil[2])));
+    Pigment *pig = &r->pigment;
+    pig->kind = PIGMENT_SOLID;
+    pig->nmap = 0;
+    pig->map = NULL;
+    pig->colour.r = t < 1.0 ? lit[0] / (1.0 - t) : 0.0;
+    pig->colour.g = t < 1.0 ? lit[1] / (1.0 - t) : 0.0;
+    pig->colour.b = t < 1.0 ? lit[2] / (1.0 - t) : 0.0;
+    pig->colour.filter = 0.0;
+    pig->colour.transmit = t;
+    /* the notes of both layers, then the blend's own */
+    for (const ApproxNote *n = below->approx; n; n = n->next) {
+        ApproxNote *c = palloc(p, sizeof *c);
+        *c = *n;
+        c->next = r->approx;
+        r->approx = c;
+    }
+    for (const ApproxNote *n = below->pigment.approx; n; n = n->next) {
+        ApproxNote *c = palloc(p, sizeof *c);
+        *c = *n;
+        c->next = pig->approx;
+        pig->approx = c;
+    }
+    approximate(p, at, APPROX_LAYERS, &r->approx);
+    return r;
+}
+
+/* ---- sky_sphere ------------------------------------------------------------ */
+
+void parse_sky_sphere(Parser *p, SkySphere *sky)
+{
+    begin_block(p, "sky_sphere");
+    TempVec pigments;
+    tvec_init(&pigments, sizeof(Pigment));
+    Transform tr;
+    transform_identity(&tr);
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, '}'))
+            break;
+        if (parse_transform_item(p, t, &tr))
+            continue;
+        if (is_kw(t, KW_pigment)) {
+            Pigment *pig = tvec_push(p, &pigments);
+            *pig = p->scene->default_texture.pigment;
+            pig->approx = NULL;
+            parse_pigment(p, pig);
+            continue;
+        }
+        if (t->type == TK_WORD && t->kw < 0) {
+            Symbol *sym = symbol_find(p, t->text, t->len);
+            if (sym && sym->value.kind == VAL_UNSUPPORTED) /* skies.inc's S_Cloud1 ... */
+                use_unsupported(p, t, &sym->value);
+            parse_fail(p, t->pos, "sky_sphere identifiers are not supported by hstrace");
+        }
+        if (is_kw(t, KW_emission)) { /* 3.7.1: scales the sky; 1 is the default */
+            Colour c;
+            Token at = *t;
+            parse_colour(p, &c, 0);
+            if (c.r != 1.0 || c.g != 1.0 || c.b != 1.0)
+                unsupported(p, &at);
+            continue;
+        }
+        if (t->type == TK_WORD && t->kw >= 0)
+            unsupported(p, t);
+        fail_expected(p, t, "pigment, a transform or '}' in 'sky_sphere'");
+    }
+    /* A second sky_sphere replaces the first, as in POV-Ray. */
+    sky->npigments = pigments.n;
+    sky->pigments = palloc(p, sizeof(Pigment) * (size_t)(pigments.n ? pigments.n : 1));
+    if (pigments.n)
+        memcpy(sky->pigments, pigments.data, sizeof(Pigment) * (size_t)pigments.n);
+    sky->transform = tr;
 }

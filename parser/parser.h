@@ -15,6 +15,8 @@ typedef struct {
     /* Total #while/#for iterations allowed before the parse fails as a
      * runaway loop; 0 means the default, 10 million. */
     long max_loop_iterations;
+    /* --strict: what hstrace would approximate (ApproxKind) is an error. */
+    int strict;
 } ParseOptions;
 
 /* A parse error: "FILE:LINE:COLUMN: message". */

@@ -139,6 +139,7 @@ typedef struct {
      * unsupported thing was first written. */
     const char *what;
     SourcePos declared_at;
+    int strict_only; /* approximated, and unsupported only because of --strict */
 } Value;
 
 typedef struct Symbol {
@@ -236,7 +237,9 @@ typedef struct Parser {
     SourcePos deferred_at;
 
     TempVec rand_streams; /* of unsigned: seed() makes one, rand() draws */
+    int poison_strict;
 
+    const ApproxNote *global_approx; /* global_settings: radiosity, photons */
     TempVec objects; /* of SceneObject *, top level */
     TempVec lights;  /* of SceneLight */
 } Parser;
@@ -253,6 +256,9 @@ _Noreturn void parse_fail_io(Parser *p, SourcePos pos, const char *fmt, ...) HST
 _Noreturn void fail_expected(Parser *p, const Token *found, const char *what);
 /* An unsupported keyword at `t`: an error, or VAL_UNSUPPORTED in a #declare. */
 _Noreturn void unsupported(Parser *p, const Token *t);
+/* A feature at `t` that hstrace approximates (an ApproxKind): a note added
+ * to *notes; with --strict an error (in a #declare: a poisoned value). */
+void approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes);
 /* Use of an identifier holding an unsupported declaration. */
 _Noreturn void use_unsupported(Parser *p, const Token *t, const Value *v);
 /* In a declaration: remember the first unsupported thing of an expression
@@ -340,6 +346,10 @@ void parse_pigment(Parser *p, Pigment *pig); /* after 'pigment' */
 void parse_finish(Parser *p, Finish *f);  /* after 'finish' */
 void parse_interior(Parser *p, Interior *in); /* after 'interior' */
 void skip_normal(Parser *p);              /* after 'normal' */
+/* A layer `top` over `below` (both copied): one texture, see parse_texture.c. */
+SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at);
+/* sky_sphere { pigment {...} ... transforms } after 'sky_sphere'. */
+void parse_sky_sphere(Parser *p, SkySphere *sky);
 
 /* parse_objects.c */
 int is_object_keyword(int kw);
@@ -365,6 +375,8 @@ Value parse_array(Parser *p, const Token *kw); /* after 'array' */
  * make p->tok that element. */
 void read_array_element(Parser *p, Symbol *s);
 double array_function(Parser *p, const Token *t); /* dimensions, dimension_size */
+/* approximations.c: the report of what the instantiated scene approximates */
+void collect_approximations(Parser *p);
 
 /* parse_scene.c */
 void parse_declare(Parser *p, const Token *hash, int local);

@@ -25,14 +25,76 @@ typedef struct {
     double r, g, b, filter, transmit;
 } Colour;
 
+/* Something hstrace renders only approximately (see APPROXIMATIONS in the
+ * man page). Notes hang off the description where they were written; only
+ * those reachable from what the scene instantiates are reported
+ * (Scene.approximations), so a declaration in an include file that is never
+ * used reports nothing. */
 typedef enum {
-    PIGMENT_SOLID, /* one colour; the only kind the foundation needs */
+    APPROX_NORMAL,        /* normal { } perturbation: ignored */
+    APPROX_PATTERN,       /* a pigment pattern hstrace does not evaluate: one colour */
+    APPROX_WARP,          /* turbulence / warp on checker, hexagon or gradient: ignored */
+    APPROX_LAYERS,        /* layered textures blended into one */
+    APPROX_FINISH,        /* irid, crand, diffuse backside: ignored */
+    APPROX_CAUSTICS,      /* interior caustics, dispersion: ignored */
+    APPROX_PHOTONS,       /* photons { } blocks: ignored */
+    APPROX_RADIOSITY,     /* global radiosity / subsurface: ignored */
+    APPROX_AREA_LIGHT,    /* area_light: a point light at its centre */
+    APPROX_FOCAL_BLUR,    /* camera aperture / normal: a pinhole camera */
+    APPROX_KINDS
+} ApproxKind;
+
+typedef struct ApproxNote {
+    ApproxKind kind;
+    SourcePos pos;
+    const char *what;             /* the keyword as written, e.g. "bozo" */
+    const struct ApproxNote *next; /* notes are shared, never changed */
+} ApproxNote;
+
+/* One line of the report: how many places of a kind, and the first. */
+typedef struct {
+    ApproxKind kind;
+    int count;
+    SourcePos first;
+    const char *what;
+} SceneApproximation;
+
+/* "normal perturbation ignored", ... for messages and statistics. */
+const char *approx_kind_name(ApproxKind k);
+const char *approx_kind_effect(ApproxKind k);
+
+typedef enum {
+    PIGMENT_SOLID,    /* one colour */
+    PIGMENT_CHECKER,  /* two colours (POV-Ray's checker) */
+    PIGMENT_HEXAGON,  /* three colours (POV-Ray's hexagon) */
+    PIGMENT_GRADIENT, /* a colour map along a direction */
 } PigmentKind;
+
+/* One [value colour] entry of a colour_map, sorted by value as written. */
+typedef struct {
+    double value;
+    Colour colour;
+} ColourMapEntry;
+
+/* POV-Ray's wave types, which reshape a pattern's value before the map. */
+typedef enum { WAVE_RAMP, WAVE_SINE, WAVE_TRIANGLE, WAVE_SCALLOP, WAVE_CUBIC, WAVE_POLY } WaveKind;
 
 typedef struct {
     PigmentKind kind;
+    /* Solid: the colour (also that of a pattern hstrace only approximates:
+     * its colour map at 0.5). Evaluated patterns: their map at 0.5, a
+     * representative colour for where one colour must stand for all. */
     Colour colour;
-    Transform transform; /* pattern space; identity for solid colours */
+    /* checker and hexagon: the 2 or 3 colours; gradient: the colour map
+     * (POV-Ray's default black to white when none is given). */
+    int nmap;
+    const ColourMapEntry *map;
+    Vec3 gradient;        /* normalised, as POV-Ray stores it */
+    double frequency, phase; /* POV-Ray's defaults 1 and 0; checker and hexagon set 0 */
+    WaveKind wave;
+    double wave_exponent;    /* poly_wave */
+    Transform transform;  /* pattern space to texture space */
+    const ApproxNote *approx;
 } Pigment;
 
 /* POV-Ray 3.7 finish, with its defaults (see scene_default_finish). */
@@ -54,10 +116,12 @@ typedef struct {
     int reflection_fresnel;     /* `reflection { ... fresnel }` */
     double reflection_metallic; /* `reflection { ... metallic }` */
     int conserve_energy;
+    const ApproxNote *approx;
 } Finish;
 
 typedef struct {
     double ior;           /* default 1 */
+    const ApproxNote *approx;
     double fade_distance; /* 0: none */
     double fade_power;
     Colour fade_colour;
@@ -67,6 +131,7 @@ typedef struct SceneTexture {
     Pigment pigment;
     Finish finish;
     SourcePos pos;
+    const ApproxNote *approx; /* the texture's own: normal, layering */
 } SceneTexture;
 
 typedef enum {
@@ -95,6 +160,12 @@ struct SceneObject {
     /* NULL: inherit from the enclosing union, else the scene's default. */
     const SceneTexture *texture;
     const Interior *interior; /* NULL: default interior (ior 1) */
+    /* The object's transform when its texture was given: as in POV-Ray,
+     * transforms written before the texture do not move its pattern, those
+     * after it do (pattern to world = pigment transform, then the inverse of
+     * this, then the object's transform, then its parents'). */
+    Transform texture_bind;
+    const ApproxNote *approx; /* photons { } on the object */
     unsigned no_shadow : 1, no_image : 1, no_reflection : 1, hollow : 1, inverse : 1;
     int double_illuminate;
     union {
@@ -143,6 +214,7 @@ typedef struct {
     int shadowless;
     double fade_distance; /* 0: no fading */
     double fade_power;
+    const ApproxNote *approx; /* area_light, photons */
 } SceneLight;
 
 typedef enum {
@@ -156,6 +228,7 @@ typedef struct {
     CameraKind kind;
     SourcePos pos;
     Vec3 location, direction, up, right;
+    const ApproxNote *approx; /* focal blur, camera normal */
 } SceneCamera;
 
 typedef struct {
@@ -167,6 +240,14 @@ typedef struct {
     int assumed_gamma_srgb; /* `assumed_gamma srgb` (assumed_gamma is then 0) */
 } GlobalSettings;
 
+/* sky_sphere: pigments on the unit sphere of directions, the last written
+ * on top (POV-Ray 3.7's ComputeSky). */
+typedef struct {
+    int npigments;        /* 0: no sky sphere */
+    Pigment *pigments;
+    Transform transform;  /* the sky sphere's own transforms */
+} SkySphere;
+
 typedef struct Arena Arena;
 
 typedef struct {
@@ -175,12 +256,17 @@ typedef struct {
     SceneCamera camera;
     int has_camera;
     Colour background;         /* default black, transmit 1 when unspecified in 3.7 */
+    SkySphere sky;
     GlobalSettings globals;
     SceneTexture default_texture;
     int nlights;
     SceneLight *lights;
     int nobjects;
     SceneObject **objects;     /* top-level objects in file order */
+    /* What the scene uses that hstrace only approximates, one entry per
+     * kind used, in ApproxKind order (empty with ParseOptions.strict). */
+    int napproximations;
+    SceneApproximation *approximations;
 } Scene;
 
 Finish scene_default_finish(void);

@@ -4,6 +4,8 @@
  * and are kept apart (they cannot go into a finite grid). */
 #include "world.h"
 
+#include "pigment.h"
+
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
 #include <stdio.h>
@@ -44,11 +46,14 @@ typedef struct {
     const Interior *interior;
     int no_shadow, no_image, no_reflection, double_illuminate;
     const void *top_object; /* the top-level object: owner of the default interior */
+    Transform texture_space; /* the texture's space to world (SceneObject.texture_bind) */
 } Inherited;
 
 static RGB rgb_of(const Colour *c) { RGB r = { c->r, c->g, c->b }; return r; }
 
-static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex, SourcePos pos)
+/* texture_space: the texture's own space to world. */
+static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex, const Transform *texture_space,
+                        SourcePos pos)
 {
     World *w = b->w;
     if (GROW(b, materials, cap_materials, w->nmaterials))
@@ -56,6 +61,11 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     Material *m = &w->materials[w->nmaterials];
     memset(m, 0, sizeof *m);
     m->pigment = tex->pigment.colour;
+    if (tex->pigment.kind != PIGMENT_SOLID) {
+        m->pattern = tex->pigment;
+        m->pattern_to_world = tex->pigment.transform;
+        transform_compose(&m->pattern_to_world, texture_space);
+    }
     m->finish = tex->finish;
     /* POV-Ray keeps 1/roughness internally; so do we. */
     m->finish.roughness = tex->finish.roughness != 0.0 ? 1.0 / tex->finish.roughness : 0.0;
@@ -66,7 +76,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->fade_distance = it->fade_distance;
     m->fade_power = it->fade_power;
     m->fade_colour = rgb_of(&it->fade_colour);
-    m->opaque = tex->pigment.colour.filter == 0.0 && tex->pigment.colour.transmit == 0.0;
+    m->opaque = pigment_is_opaque(&tex->pigment);
     m->no_shadow = in->no_shadow;
     m->no_image = in->no_image;
     m->no_reflection = in->no_reflection;
@@ -316,7 +326,8 @@ static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, i
         }
         for (int i = 0; i < nt; i++) {
             const SceneTexture *t = o->u.mesh.textures[i];
-            face_material[i] = t ? add_material(b, in, t, o->pos) : material;
+            /* face textures are written before the mesh's transforms: they all move them */
+            face_material[i] = t ? add_material(b, in, t, &in->transform, o->pos) : material;
             if (face_material[i] < 0) {
                 free(face_material);
                 return -1;
@@ -389,8 +400,15 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
         in.top_object = o;
     in.transform = o->transform;
     transform_compose(&in.transform, &parent->transform);
-    if (o->texture)
+    if (o->texture) {
         in.texture = o->texture;
+        /* transforms written after the texture move it; those before do not */
+        Transform bind_inverse;
+        memcpy(bind_inverse.m, o->texture_bind.inv, sizeof bind_inverse.m);
+        memcpy(bind_inverse.inv, o->texture_bind.m, sizeof bind_inverse.inv);
+        in.texture_space = bind_inverse;
+        transform_compose(&in.texture_space, &in.transform);
+    }
     if (o->interior)
         in.interior = o->interior;
     in.no_shadow |= o->no_shadow;
@@ -405,7 +423,7 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
         return 0;
     }
     const SceneTexture *tex = in.texture ? in.texture : &scene->default_texture;
-    int material = add_material(b, &in, tex, o->pos);
+    int material = add_material(b, &in, tex, &in.texture_space, o->pos);
     if (material < 0)
         return -1;
     switch (o->kind) {
@@ -444,6 +462,7 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     Inherited root;
     memset(&root, 0, sizeof root);
     transform_identity(&root.transform);
+    transform_identity(&root.texture_space);
     for (int i = 0; i < scene->nobjects; i++) {
         if (flatten_object(&b, scene->objects[i], &root, scene, 0) || b.failed) {
             snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
@@ -466,6 +485,7 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     w->camera.up = scene->camera.up;
     w->camera.right = scene->camera.right;
     w->background = rgb_of(&scene->background);
+    w->sky = scene->sky.npigments > 0 ? &scene->sky : NULL;
     w->ambient_light = rgb_of(&scene->globals.ambient_light);
     w->max_trace_level = scene->globals.max_trace_level > 0 ? scene->globals.max_trace_level : 5;
     w->adc_bailout = scene->globals.adc_bailout > 0 ? scene->globals.adc_bailout : 1.0 / 255.0;

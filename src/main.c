@@ -1,6 +1,7 @@
 /* hstrace: scene file -> description -> polygons and grid -> rays -> image;
  * `hstrace compare` compares images (compare.h); `hstrace vs-povray` renders
  * a scene with POV-Ray and every shadow method and compares (vs_povray.h). */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,7 @@
 #include "aov.h"
 #include "colour.h"
 #include "compare.h"
+#include "datadir.h"
 #include "grid.h"
 #include "image.h"
 #include "options.h"
@@ -23,10 +25,6 @@
 #include "stats.h"
 #include "vs_povray.h"
 #include "world.h"
-
-#ifndef HST_DATADIR
-#define HST_DATADIR "/usr/local/share/hstrace"
-#endif
 
 static Quality quality_from_level(int q)
 {
@@ -52,12 +50,6 @@ static char *default_output(const char *scene)
         memcpy(out + n, ".png", 5);
     }
     return out;
-}
-
-static int is_dir(const char *p)
-{
-    struct stat st;
-    return stat(p, &st) == 0 && S_ISDIR(st.st_mode);
 }
 
 int main(int argc, char **argv)
@@ -119,20 +111,25 @@ int main(int argc, char **argv)
     }
 
     /* Include search: the scene's folder (the parser's own rule), then the
-     * user's folders, the project's, and POV-Ray's when installed. */
+     * user's folders, POV-Ray's when installed, and last hstrace's own
+     * (its colors.inc for systems without POV-Ray's). */
     const char *dirs[MAX_INCLUDE_PATHS + 2];
     int ndirs = 0;
     for (int i = 0; i < opt.ninclude_paths; i++)
         dirs[ndirs++] = opt.include_paths[i];
-    dirs[ndirs++] = HST_DATADIR "/include";
-    if (is_dir(POVRAY_INCLUDE_DIR))
-        dirs[ndirs++] = POVRAY_INCLUDE_DIR;
+    const char *povray_dir = povray_include_folder();
+    if (povray_dir)
+        dirs[ndirs++] = povray_dir;
+    char own_include[PATH_MAX];
+    if (data_folder("include", own_include, (int)sizeof own_include))
+        dirs[ndirs++] = own_include;
     ParseOptions popt;
     memset(&popt, 0, sizeof popt);
     popt.include_dirs = dirs;
     popt.ninclude_dirs = ndirs;
     popt.image_width = opt.width;
     popt.image_height = opt.height;
+    popt.strict = opt.strict;
 
     StatsReport report;
     memset(&report, 0, sizeof report);
@@ -155,6 +152,15 @@ int main(int argc, char **argv)
         return perr.is_io ? EXIT_IO : EXIT_SCENE;
     }
     report.parse_seconds = clock_wall() - t;
+    report.napproximations = scene->napproximations;
+    report.approximations = scene->approximations;
+    /* Like POV-Ray's warnings: the image is not what POV-Ray would make. */
+    for (int i = 0; i < scene->napproximations; i++) {
+        const SceneApproximation *a = &scene->approximations[i];
+        fprintf(stderr, "%s:%d:%d: warning: %s approximated: %s (%d place%s; --strict refuses it)\n", a->first.file,
+                a->first.line, a->first.column, a->what, approx_kind_effect(a->kind), a->count,
+                a->count == 1 ? "" : "s");
+    }
 
     t = clock_wall();
     World world;

@@ -79,6 +79,8 @@ void options_usage(FILE *f)
             "      --threads N        render threads (default: all cores); the image does not depend on N\n"
             "      --grid N|NxNxN     grid cells per axis (default: chosen from the polygon count)\n"
             "      --include-path DIR folder searched for #include files (repeatable)\n"
+            "      --strict           refuse what hstrace only approximates (normal, patterns other\n"
+            "                         than checker/hexagon/gradient, area_light, ...: see the man page)\n"
             "      --exr-float        write 32-bit float EXR channels instead of half\n"
             "      --aov LIST         EXR only: add analysis channels, comma separated groups of\n"
             "                         Z, N, P, shadow, hst, depth, cost, or all (see the man page)\n"
@@ -313,6 +315,8 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 return -1;
         } else if (strcmp(a, "--stats") == 0) {
             opt->stats = 1;
+        } else if (strcmp(a, "--strict") == 0) {
+            opt->strict = 1;
         } else if (is_long(a, "--stats-json")) {
             if (!(v = option_value(argc, argv, &i, "--stats-json", err, errlen)))
                 return -1;

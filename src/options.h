@@ -33,6 +33,7 @@ typedef struct {
     const char *include_paths[MAX_INCLUDE_PATHS];
     int ninclude_paths;
     int stats;
+    int strict;       /* --strict: approximations are errors */
     const char *stats_json;
     int exr_float;
     int png16;

@@ -7,6 +7,7 @@
 
 #include "aov.h"
 #include "intersect.h"
+#include "pigment.h"
 #include "shadow.h"
 #include "shadow_coherence.h"
 #include "shadow_reference.h"
@@ -16,13 +17,20 @@
 /* POV-Ray's greyscale weights (base/types.h). */
 static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589 * g + 0.114 * b; }
 
-static void background(const World *w, Radiance *out)
+static void background(const World *w, Vec3 dir, Radiance *out)
 {
     /* Without an alpha channel POV-Ray ignores the background's filter and
      * transmit, so it is opaque and the pixel's transmittance is 0. */
-    out->r = w->background.r;
-    out->g = w->background.g;
-    out->b = w->background.b;
+    if (w->sky) {
+        RGB c = sky_colour(w, dir);
+        out->r = c.r;
+        out->g = c.g;
+        out->b = c.b;
+    } else {
+        out->r = w->background.r;
+        out->g = w->background.g;
+        out->b = w->background.b;
+    }
     out->transmit = 0.0;
 }
 
@@ -366,6 +374,8 @@ static void trace_reflection(TraceContext *ctx, const Ray *ray, const Hit *hit, 
     r.state = state;
     r.inside = ray->inside;
     r.org = hit->point;
+    r.not_image = 1;
+    r.reflection = 1;
     Vec3 d = v3_madd(ray->dir, normal, -2.0 * v3_dot(ray->dir, normal));
     /* POV-Ray's fix for reflected rays that point into the surface. */
     double n = v3_dot(d, raw_normal);
@@ -388,6 +398,8 @@ static int trace_refraction(TraceContext *ctx, const Ray *ray, const Hit *hit, c
     r.from = *hit;
     r.state = state;
     r.org = hit->point;
+    r.not_image = ray->not_image;
+    r.reflection = ray->reflection;
     double ior = refraction_ratio(&ray->inside, m, &r.inside);
     if (fabs(ior - 1.0) < POV_EPSILON) {
         /* Same ior on both sides: the ray goes straight on, and POV-Ray
@@ -436,8 +448,11 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
     if (level >= w->max_trace_level || weight < w->adc_bailout)
         return;
     Hit hit;
-    if (!trace_nearest(ctx, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit)) {
-        background(w, out);
+    ctx->hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);
+    int found = trace_nearest(ctx, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);
+    ctx->hide = 0;
+    if (!found) {
+        background(w, ray->dir, out);
         return;
     }
     if (ctx->coherence && ctx->state_depth == 0 && ray->from.kind == HIT_NONE) {
@@ -472,7 +487,8 @@ static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hitp, const 
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
     Vec3 normal = raw;
-    const Colour *pc = &m->pigment;
+    const Colour surface = material_colour_at(m, hit.point); /* the pigment here */
+    const Colour *pc = &surface;
     RGB pigment = { pc->r, pc->g, pc->b };
     if (ctx->aov && ctx->state_depth == 1)
         aov_record_hit(ctx->aov, hit.t, hit.point, normal);

@@ -21,6 +21,10 @@ typedef struct {
     Hit from;           /* surface the ray leaves (kind HIT_NONE for camera rays) */
     InteriorList inside;
     const LightState *state;   /* shadow methods' state per light at org; NULL: the eye */
+    /* POV-Ray's ray kinds for no_image / no_reflection: an image ray is a
+     * camera ray or refracted from one; a reflection ray is reflected, or
+     * refracted from one. Zero for camera rays. */
+    unsigned not_image : 1, reflection : 1;
 } Ray;
 
 /* Colour seen along a ray: rgb plus transmittance (for the alpha channel). */

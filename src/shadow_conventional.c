@@ -5,17 +5,19 @@
 #include "shadow.h"
 
 #include "intersect.h"
+#include "pigment.h"
 #include "shadow_volumes.h"
 
-/* Folds one blocker into the light that gets through; returns 1 when the
- * light is now fully blocked. */
-static int pass_through(const Material *m, RGB *light)
+/* Folds one blocker, hit at `at`, into the light that gets through; returns
+ * 1 when the light is now fully blocked. */
+static int pass_through(const Material *m, const ShadowQuery *q, double t, RGB *light)
 {
-    if (m->opaque) {
+    Colour here = m->opaque ? m->pigment : material_colour_at(m, v3_add(q->point, v3_scale(q->to_light, t)));
+    if (m->opaque || (here.filter == 0.0 && here.transmit == 0.0)) {
         light->r = light->g = light->b = 0.0;
         return 1;
     }
-    const Colour *c = &m->pigment;
+    const Colour *c = &here;
     light->r *= c->r * c->filter + c->transmit;
     light->g *= c->g * c->filter + c->transmit;
     light->b *= c->b * c->filter + c->transmit;
@@ -33,7 +35,7 @@ int shadow_planes_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
         if (w->materials[pl->material].no_shadow)
             continue;
         double t = intersect_plane(pl, q->point, q->to_light);
-        if (t > tmin && t < q->distance && pass_through(&w->materials[pl->material], light))
+        if (t > tmin && t < q->distance && pass_through(&w->materials[pl->material], q, t, light))
             return 1;
     }
     return 0;
@@ -71,8 +73,10 @@ int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
                  * the light itself. The same rule as the shadow volumes'. */
                 if (shadow_light_side(p, &w->lights[q->light], grid_tolerance(g)) == 0)
                     continue;
-                if (pass_through(m, light)) {
-                    ctx->last_blocker = (int)pi;
+                if (pass_through(m, q, t, light)) {
+                    /* a patterned see-through polygon blocks only where it is opaque:
+                     * not one for the cache, which takes a hit anywhere as blocked */
+                    ctx->last_blocker = m->opaque ? (int)pi : -1;
                     return 1;
                 }
                 ctx->last_filtered++;

@@ -1,6 +1,8 @@
 /* Statistics: summing per-thread counters and printing the report. */
 #include "stats.h"
 
+#include "json_write.h"
+
 #include <errno.h>
 #include <string.h>
 #include <time.h>
@@ -77,6 +79,12 @@ void stats_print(FILE *f, const StatsReport *r)
             r->threads, r->threads == 1 ? "" : "s", r->shadow_method);
     fprintf(f, "  scene       %d polygons (%d degenerate dropped), %d infinite planes, %d lights\n", r->npolygons,
             r->ndegenerate, r->nplanes, r->nlights);
+    for (int i = 0; i < r->napproximations; i++) {
+        const SceneApproximation *a = &r->approximations[i];
+        fprintf(f, "  %-11s %s: %d place%s, first %s at %s:%d:%d\n", i == 0 ? "approximated" : "",
+                approx_kind_effect(a->kind), a->count, a->count == 1 ? "" : "s", a->what, a->first.file,
+                a->first.line, a->first.column);
+    }
     fprintf(f, "  grid        %dx%dx%d cells, %llu registrations\n", r->grid[0], r->grid[1], r->grid[2],
             (unsigned long long)r->grid_registrations);
     fprintf(f, "  time (s)    parse %.3f  preprocessing %.3f  shadow testing %.3f  others %.3f  total %.3f  (wall %.3f)\n",
@@ -174,6 +182,22 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
             r->shadow_method, r->width, r->height, r->threads);
     fprintf(f, "  \"polygons\": %d,\n  \"degenerate_dropped\": %d,\n  \"planes\": %d,\n  \"lights\": %d,\n", r->npolygons,
             r->ndegenerate, r->nplanes, r->nlights);
+    fprintf(f, "  \"approximations\": [");
+    for (int i = 0; i < r->napproximations; i++) {
+        const SceneApproximation *a = &r->approximations[i];
+        char at[600];
+        snprintf(at, sizeof at, "%s:%d:%d", a->first.file, a->first.line, a->first.column);
+        fprintf(f, "%s\n    {\"kind\": ", i ? "," : "");
+        json_write_string(f, approx_kind_name(a->kind));
+        fprintf(f, ", \"count\": %d, \"first\": ", a->count);
+        json_write_string(f, at);
+        fprintf(f, ", \"what\": ");
+        json_write_string(f, a->what);
+        fprintf(f, ", \"effect\": ");
+        json_write_string(f, approx_kind_effect(a->kind));
+        fprintf(f, "}");
+    }
+    fprintf(f, "%s],\n", r->napproximations ? "\n  " : "");
     fprintf(f, "  \"grid\": [%d, %d, %d],\n  \"grid_registrations\": %llu,\n", r->grid[0], r->grid[1], r->grid[2],
             (unsigned long long)r->grid_registrations);
     fprintf(f, "  \"time\": {\"parse\": %.6f, \"preprocessing\": %.6f, \"shadow_testing\": %.6f, \"others\": %.6f, "

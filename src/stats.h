@@ -6,6 +6,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "scene.h"
+
 #define STATS_SCHEMES 5
 
 typedef struct {
@@ -53,6 +55,8 @@ typedef struct {
     uint64_t grid_registrations;
     int npolygons, nplanes, nlights;
     int ndegenerate;             /* polygons dropped at build: no area up to rounding */
+    int napproximations;         /* what the scene uses that hstrace approximates */
+    const SceneApproximation *approximations;
     double parse_seconds, preprocess_seconds, output_seconds, wall_seconds;
     double volumes_seconds;           /* silhouettes and shadow polygon registration (in preprocessing) */
     const struct ShadowVolumes *volumes; /* NULL unless the method uses them */

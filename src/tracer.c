@@ -161,6 +161,11 @@ static int inside_box(const ShadowVolumes *sv, Vec3 p)
            p.z >= sv->box_min.z && p.z <= sv->box_max.z;
 }
 
+static int material_hidden(const Material *m, unsigned hide)
+{
+    return ((hide & HIDE_NO_IMAGE) && m->no_image) || ((hide & HIDE_NO_REFLECTION) && m->no_reflection);
+}
+
 int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit)
 {
     const World *w = ctx->world;
@@ -175,6 +180,8 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
     int plane = -1;
     for (int i = 0; i < w->nplanes; i++) {
         if (from && from->kind == HIT_PLANE && from->index == i)
+            continue;
+        if (ctx->hide && material_hidden(&w->materials[w->planes[i].material], ctx->hide))
             continue;
         ctx->stats.plane_tests++;
         double t = intersect_plane(&w->planes[i], org, dir);
@@ -207,6 +214,8 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
             for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
                 uint32_t pi = g->items[k];
                 if (!bucket_admit(ctx, id, pi))
+                    continue;
+                if (ctx->hide && material_hidden(&w->materials[w->polygons[pi].material], ctx->hide))
                     continue;
                 ctx->stats.polygon_tests++;
                 /* Only hits before the best so far are looked at. */

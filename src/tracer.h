@@ -33,9 +33,14 @@ typedef struct {
     int full_ambient;   /* Q <= 1: pigment colour only */
 } Quality;
 
+/* Objects a ray passes through (TraceContext.hide): no_image ones for
+ * image rays, no_reflection ones for reflection rays. */
+enum { HIDE_NO_IMAGE = 1u, HIDE_NO_REFLECTION = 2u };
+
 typedef struct {
     const World *world;
     const Grid *grid;
+    unsigned hide;             /* HIDE_* for the next trace_nearest, 0 otherwise */
     const struct ShadowMethod *shadow;
     Quality quality;
     /* The bucket: stamp[i] == ray_id marks polygon i as already tested by

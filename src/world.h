@@ -14,7 +14,11 @@ typedef struct {
 
 /* Surface properties shared by all polygons of one object. */
 typedef struct {
-    Colour pigment;       /* solid colour (filter/transmit included) */
+    Colour pigment;       /* solid colour (filter/transmit included); a pattern's representative */
+    /* A patterned pigment (kind != PIGMENT_SOLID), evaluated at each hit:
+     * material_colour_at (pigment.h). */
+    Pigment pattern;
+    Transform pattern_to_world;
     Finish finish;        /* roughness already inverted, as POV-Ray uses it */
     double ior;
     /* Identity of the interior: POV-Ray gives each top-level object one,
@@ -23,7 +27,7 @@ typedef struct {
     const void *interior_key;
     double fade_distance, fade_power;
     RGB fade_colour;
-    int opaque;           /* filter == transmit == 0: blocks light fully */
+    int opaque;           /* filter == transmit == 0 everywhere: blocks light fully */
     int no_shadow, no_image, no_reflection, double_illuminate;
     SourcePos pos;        /* the object, for messages */
 } Material;
@@ -80,6 +84,7 @@ typedef struct {
     Light *lights;
     Camera camera;
     RGB background;
+    const SkySphere *sky; /* NULL: the background colour alone (the scene's, read-only) */
     RGB ambient_light;
     int max_trace_level;
     double adc_bailout;

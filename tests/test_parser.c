@@ -625,8 +625,9 @@ static void test_errors(void)
     expect_error("#if (1)\nbox { 0, 1 }\n", 1, 1, "no matching #end", "#if without #end");
     expect_error("#declare X = 1\nbox { 0, X }", 2, 1, "expected ';'", "missing semicolon after a float");
     expect_error("box { 0, 1 } }", 1, 14, "expected an object", "stray brace");
-    expect_error("box { 0, 1 bounded_by { box { 0, 1 } } }", 1, 12, "'bounded_by' is not supported", "bounded_by");
-    expect_error("box { 0, 1 texture { pigment { checker } } }", 1, 32, "'checker' is not supported", "pattern");
+    expect_error("box { 0, 1 clipped_by { box { 0, 1 } } }", 1, 12, "'clipped_by' is not supported", "clipped_by");
+    expect_error("box { 0, 1 texture { pigment { image_map { png \"a.png\" } } } }", 1, 32,
+                 "'image_map' is not supported", "image pattern");
     expect_error("#error \"stop here\"\n", 1, 1, "#error: stop here", "#error");
     expect_error("box { 0, <1, 2, 3 }", 1, 19, "expected", "unclosed vector");
     expect_error("box { 0, ((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((("

@@ -1,0 +1,169 @@
+/* What hstrace approximates, and the report of it.
+ *
+ * The parser hangs an ApproxNote on the description wherever it approximates
+ * (a pigment's bozo, a texture's normal, a light's area_light ...). After
+ * parsing, the notes reachable from what the scene instantiates are counted
+ * here, once per place in the files, so that an include file's unused
+ * declarations report nothing. */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+static const struct {
+    const char *name, *effect;
+} kinds[APPROX_KINDS] = {
+    [APPROX_NORMAL] = { "normal", "surface normal perturbation ignored" },
+    [APPROX_PATTERN] = { "pattern", "pattern shown as one colour, its colour map at 0.5" },
+    [APPROX_WARP] = { "warp", "turbulence and warps of the pattern ignored" },
+    [APPROX_LAYERS] = { "layers", "texture layers blended into one, with the top layer's finish" },
+    [APPROX_FINISH] = { "finish", "finish item ignored" },
+    [APPROX_CAUSTICS] = { "caustics", "interior caustics and dispersion ignored" },
+    [APPROX_PHOTONS] = { "photons", "photon mapping ignored" },
+    [APPROX_RADIOSITY] = { "radiosity", "radiosity and subsurface light transport ignored" },
+    [APPROX_AREA_LIGHT] = { "area_light", "area light rendered as a point light at its centre" },
+    [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
+};
+
+const char *approx_kind_name(ApproxKind k)
+{
+    return k >= 0 && k < APPROX_KINDS ? kinds[k].name : "?";
+}
+
+const char *approx_kind_effect(ApproxKind k)
+{
+    return k >= 0 && k < APPROX_KINDS ? kinds[k].effect : "?";
+}
+
+/* Places seen so far, by kind and position (a hash set: scenes with a
+ * million textured faces share a handful of notes, visited many times). */
+typedef struct {
+    const ApproxNote **slots;
+    size_t cap, n;
+    SceneApproximation per_kind[APPROX_KINDS];
+    int failed;
+} Tally;
+
+static size_t note_hash(const ApproxNote *n)
+{
+    size_t h = (size_t)(uintptr_t)n->pos.file;
+    h = h * 31u + (size_t)n->pos.line;
+    h = h * 31u + (size_t)n->pos.column;
+    return h * 31u + (size_t)n->kind;
+}
+
+static int same_place(const ApproxNote *a, const ApproxNote *b)
+{
+    return a->kind == b->kind && a->pos.line == b->pos.line && a->pos.column == b->pos.column &&
+           (a->pos.file == b->pos.file || (a->pos.file && b->pos.file && strcmp(a->pos.file, b->pos.file) == 0));
+}
+
+static int tally_grow(Tally *t)
+{
+    size_t cap = t->cap ? t->cap * 2 : 64;
+    const ApproxNote **slots = calloc(cap, sizeof *slots);
+    if (!slots)
+        return -1;
+    for (size_t i = 0; i < t->cap; i++) {
+        if (!t->slots[i])
+            continue;
+        size_t j = note_hash(t->slots[i]) & (cap - 1);
+        while (slots[j])
+            j = (j + 1) & (cap - 1);
+        slots[j] = t->slots[i];
+    }
+    free(t->slots);
+    t->slots = slots;
+    t->cap = cap;
+    return 0;
+}
+
+static void tally_notes(Tally *t, const ApproxNote *n)
+{
+    for (; n && !t->failed; n = n->next) {
+        if ((t->n + 1) * 2 > t->cap && tally_grow(t)) {
+            t->failed = 1;
+            return;
+        }
+        size_t j = note_hash(n) & (t->cap - 1);
+        int seen = 0;
+        while (t->slots[j]) {
+            if (t->slots[j] == n || same_place(t->slots[j], n)) {
+                seen = 1;
+                break;
+            }
+            j = (j + 1) & (t->cap - 1);
+        }
+        if (seen)
+            continue;
+        t->slots[j] = n;
+        t->n++;
+        SceneApproximation *a = &t->per_kind[n->kind];
+        if (a->count == 0) { /* objects are walked in file order, so this is the first use */
+            a->first = n->pos;
+            a->what = n->what;
+        }
+        a->count++;
+    }
+}
+
+static void tally_pigment(Tally *t, const Pigment *pig)
+{
+    tally_notes(t, pig->approx);
+}
+
+static void tally_texture(Tally *t, const SceneTexture *tex)
+{
+    if (!tex)
+        return;
+    tally_notes(t, tex->approx);
+    tally_pigment(t, &tex->pigment);
+    tally_notes(t, tex->finish.approx);
+}
+
+static void tally_object(Tally *t, const SceneObject *o, int depth)
+{
+    if (depth > 1000)
+        return;
+    tally_notes(t, o->approx);
+    tally_texture(t, o->texture);
+    if (o->interior)
+        tally_notes(t, o->interior->approx);
+    if (o->kind == OBJ_UNION)
+        for (int i = 0; i < o->u.csg.nchildren; i++)
+            tally_object(t, o->u.csg.children[i], depth + 1);
+    if (o->kind == OBJ_MESH)
+        for (int i = 0; i < o->u.mesh.ntextures; i++)
+            tally_texture(t, o->u.mesh.textures[i]);
+}
+
+void collect_approximations(Parser *p)
+{
+    Scene *s = p->scene;
+    Tally t;
+    memset(&t, 0, sizeof t);
+    for (int i = 0; i < p->objects.n; i++)
+        tally_object(&t, ((SceneObject **)p->objects.data)[i], 0);
+    for (int i = 0; i < p->lights.n; i++)
+        tally_notes(&t, ((SceneLight *)p->lights.data)[i].approx);
+    tally_notes(&t, s->camera.approx);
+    tally_texture(&t, &s->default_texture);
+    for (int i = 0; i < s->sky.npigments; i++)
+        tally_pigment(&t, &s->sky.pigments[i]);
+    tally_notes(&t, p->global_approx);
+    free(t.slots);
+    if (t.failed)
+        parse_fail(p, p->last_pos, "out of memory");
+    int n = 0;
+    for (int k = 0; k < APPROX_KINDS; k++)
+        n += t.per_kind[k].count > 0;
+    s->approximations = palloc(p, sizeof *s->approximations * (size_t)(n ? n : 1));
+    s->napproximations = 0;
+    for (int k = 0; k < APPROX_KINDS; k++) {
+        if (t.per_kind[k].count == 0)
+            continue;
+        t.per_kind[k].kind = (ApproxKind)k;
+        s->approximations[s->napproximations++] = t.per_kind[k];
+    }
+}

@@ -1,0 +1,371 @@
+/* Modelling what scenes commonly need: pigment patterns (checker, hexagon,
+ * gradient, colour maps), texture binding, layered textures, sky_sphere,
+ * the approximations hstrace makes (reported only for what the scene uses,
+ * refused by --strict) and the "not supported" errors. Images against
+ * POV-Ray are in tests/modelling.sh; here the description and the pattern
+ * values, against POV-Ray's definitions worked by hand. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "parser.h"
+#include "pigment.h"
+#include "tap.h"
+#include "world.h"
+
+static const char *const pov_dirs[] = { "/usr/share/povray-3.7/include" };
+static ParseOptions opts = { .include_dirs = pov_dirs, .ninclude_dirs = 1, .image_width = 320, .image_height = 240 };
+static ParseOptions strict_opts = { .include_dirs = pov_dirs, .ninclude_dirs = 1, .image_width = 320,
+                                    .image_height = 240, .strict = 1 };
+static ParseError err;
+
+static Scene *parse_with(const char *text, const ParseOptions *o)
+{
+    Scene *s = parse_scene_string("t.pov", text, o, &err);
+    if (!s)
+        tap_diag("parse error: %s:%d:%d: %s", err.file, err.line, err.column, err.message);
+    return s;
+}
+
+static Scene *parse(const char *text) { return parse_with(text, &opts); }
+
+static int near(double a, double b) { return fabs(a - b) < 1e-9; }
+static int colour_is(Colour c, double r, double g, double b, double f, double t)
+{
+    return near(c.r, r) && near(c.g, g) && near(c.b, b) && near(c.filter, f) && near(c.transmit, t);
+}
+
+static void expect_error_with(const ParseOptions *o, const char *text, int line, int col, const char *msg,
+                              const char *what)
+{
+    Scene *s = parse_scene_string("t.pov", text, o, &err);
+    int ok = !s && err.line == line && err.column == col && strstr(err.message, msg) != NULL;
+    tap_ok(ok, "error: %s", what);
+    if (!ok)
+        tap_diag("got %s -> %s:%d:%d: %s", s ? "a scene" : "error", err.file, err.line, err.column, err.message);
+    scene_free(s);
+}
+
+static void expect_error(const char *text, int line, int col, const char *msg, const char *what)
+{
+    expect_error_with(&opts, text, line, col, msg, what);
+}
+
+static void test_pattern_values(void)
+{
+    Pigment checker = { .kind = PIGMENT_CHECKER };
+    /* POV-Ray adds EPSILON (1e-10) before each floor: a point a hair below
+     * a cell face (rounding on a floor at y = 0) counts as above it. */
+    tap_ok(pattern_value(&checker, v3(0.5, 0.0, 0.5)) == 0.0 && pattern_value(&checker, v3(1.5, 0.0, 0.5)) == 1.0 &&
+               pattern_value(&checker, v3(1.5, 0.0, 1.5)) == 0.0 && pattern_value(&checker, v3(-0.5, 0.0, 0.5)) == 1.0,
+           "checker alternates by unit cells, negative cells too");
+    tap_ok(pattern_value(&checker, v3(0.5, -1e-11, 0.5)) == 0.0 && pattern_value(&checker, v3(0.5, -1e-9, 0.5)) == 1.0,
+           "checker: EPSILON 1e-10 below a face still counts as above it, 1e-9 does not");
+    Pigment hex = { .kind = PIGMENT_HEXAGON };
+    /* Hand-worked from hexagon_pattern: x/0.5, z/(sqrt(3)/2) index a 6x6
+     * grid of blocks; (0.1, 0.1): block (0,0) -> 0; (0.1, 1.0): block
+     * (0,1) -> 1; (0.1, 2.7): block (0,3) -> 2; (1.1, 0.1): block (2,0) -> 2;
+     * (0.6, 0.05): block (1,0), xl 0.2, zl 0.058, below the diagonal -> 0;
+     * (0.6, 0.8): block (1,0), zl 0.92 above -> 2; negative x mirrors. */
+    tap_ok(pattern_value(&hex, v3(0.1, 0, 0.1)) == 0.0 && pattern_value(&hex, v3(0.1, 0, 1.0)) == 1.0 &&
+               pattern_value(&hex, v3(0.1, 0, 2.7)) == 2.0 && pattern_value(&hex, v3(1.1, 0, 0.1)) == 2.0,
+           "hexagon: the straight blocks of POV-Ray's grid");
+    tap_ok(pattern_value(&hex, v3(0.6, 0, 0.05)) == 0.0 && pattern_value(&hex, v3(0.6, 0, 0.8)) == 2.0 &&
+               pattern_value(&hex, v3(-0.6, 0, 0.8)) == 2.0,
+           "hexagon: split blocks on either side of the diagonal, mirrored in x");
+    Pigment grad = { .kind = PIGMENT_GRADIENT, .gradient = { 0, 1, 0 }, .frequency = 1.0 };
+    tap_ok(near(pattern_value(&grad, v3(0, 0.25, 0)), 0.25) && near(pattern_value(&grad, v3(0, 1.75, 0)), 0.75) &&
+               near(pattern_value(&grad, v3(0, -0.25, 0)), 0.75),
+           "gradient: fractional part, negative values wrap");
+    ColourMapEntry map[3] = { { 0.0, { 0, 0, 0, 0, 0 } }, { 0.5, { 1, 0, 0, 0, 0 } }, { 0.5, { 0, 0, 1, 0, 0 } } };
+    tap_ok(colour_is(colour_map_at(map, 3, 0.25), 0.5, 0, 0, 0, 0) && colour_is(colour_map_at(map, 3, 0.5), 0, 0, 1, 0, 0) &&
+               colour_is(colour_map_at(map, 3, 0.75), 0, 0, 1, 0, 0) && colour_is(colour_map_at(map, 3, -1), 0, 0, 0, 0, 0),
+           "colour map: interpolation; at or past the last value the last entry, as Search_Blend_Map; clamped ends");
+    ColourMapEntry step[3] = { { 0.5, { 1, 0, 0, 0, 0 } }, { 0.5, { 0, 0, 1, 0, 0 } }, { 1.0, { 0, 1, 0, 0, 0 } } };
+    tap_ok(colour_is(colour_map_at(step, 3, 0.5), 1, 0, 0, 0, 0),
+           "colour map: a sharp step before the last value takes its first entry at the step");
+}
+
+static void test_pigments(void)
+{
+    Scene *s = parse("box { 0, 1 pigment { checker } }\n"
+                     "box { 0, 1 pigment { checker rgb 1 } }\n"
+                     "box { 0, 1 pigment { hexagon color rgb <1,0,0>, rgb <0,1,1> } }\n"
+                     "box { 0, 1 pigment { hexagon pigment { rgb 1 } pigment { rgb 0.5 } pigment { rgb 0.25 } } }\n"
+                     "box { 0, 1 pigment { gradient <0, 2, 0> color_map { [0 rgb 0] [1 rgb 1] } scale 2 } }\n"
+                     "box { 0, 1 pigment { gradient x color_map { [0.2 0.6 color rgb 1 color rgb 0] } } }\n");
+    tap_ok(s && s->nobjects == 6, "checker, hexagon and gradient pigments parse");
+    if (s && s->nobjects == 6) {
+        const Pigment *p0 = &s->objects[0]->texture->pigment, *p1 = &s->objects[1]->texture->pigment;
+        tap_ok(p0->kind == PIGMENT_CHECKER && p0->nmap == 2 && colour_is(p0->map[0].colour, 0, 0, 1, 0, 0) &&
+                   colour_is(p0->map[1].colour, 0, 1, 0, 0, 0),
+               "checker without colours: POV-Ray's blue and green");
+        tap_ok(colour_is(p1->map[0].colour, 1, 1, 1, 0, 0) && colour_is(p1->map[1].colour, 0, 1, 0, 0, 0),
+               "checker with one colour: the second is the default green");
+        const Pigment *h = &s->objects[2]->texture->pigment;
+        tap_ok(h->kind == PIGMENT_HEXAGON && h->nmap == 3 && colour_is(h->map[0].colour, 1, 0, 0, 0, 0) &&
+                   colour_is(h->map[1].colour, 0, 1, 1, 0, 0) && colour_is(h->map[2].colour, 1, 0, 0, 0, 0),
+               "hexagon: two colours, the third is the default red");
+        const Pigment *h2 = &s->objects[3]->texture->pigment;
+        tap_ok(h2->nmap == 3 && near(h2->map[2].colour.r, 0.25), "hexagon with three pigment items");
+        const Pigment *g = &s->objects[4]->texture->pigment;
+        tap_ok(g->kind == PIGMENT_GRADIENT && near(g->gradient.y, 1.0) && g->nmap == 2 &&
+                   near(transform_point(&g->transform, v3(0, 1, 0)).y, 2.0),
+               "gradient: vector normalised, colour map, pattern transform kept");
+        const Pigment *o = &s->objects[5]->texture->pigment;
+        tap_ok(o->nmap == 2 && near(o->map[0].value, 0.2) && near(o->map[1].value, 0.6) &&
+                   colour_is(o->map[1].colour, 0, 0, 0, 0, 0),
+               "old-style colour map entry [v1 v2 colour c1 colour c2]");
+        tap_ok(s->napproximations == 0, "evaluated patterns are no approximation");
+    }
+    scene_free(s);
+}
+
+/* POV-Ray moves a texture with the transforms written after it, not with
+ * those before it; a union's transform moves its children's textures. */
+static void test_texture_binding(void)
+{
+    Scene *s = parse("box { 0, 1 translate x*5 pigment { checker } }\n"
+                     "box { 0, 1 pigment { checker } translate x*5 }\n"
+                     "#declare B = box { 0, 1 pigment { checker } translate y*2 }\n"
+                     "union { object { B translate z*3 } scale 2 }\n");
+    World w;
+    WorldError we;
+    int built = s && world_build(&w, s, &we) == 0;
+    tap_ok(built && w.nmaterials == 3, "three patterned materials");
+    if (built && w.nmaterials == 3) {
+        Vec3 a = inverse_transform_point(&w.materials[0].pattern_to_world, v3(5.5, 0.5, 0.5));
+        Vec3 b = inverse_transform_point(&w.materials[1].pattern_to_world, v3(5.5, 0.5, 0.5));
+        Vec3 c = inverse_transform_point(&w.materials[2].pattern_to_world, v3(1, 4 + 1, 6 + 1));
+        tap_ok(near(a.x, 5.5), "transform before the texture leaves the pattern in place (%g)", a.x);
+        tap_ok(near(b.x, 0.5), "transform after the texture moves the pattern (%g)", b.x);
+        tap_ok(near(c.x, 0.5) && near(c.y, 0.5) && near(c.z, 0.5),
+               "declared, copied and unioned: every later transform moves it (%g %g %g)", c.x, c.y, c.z);
+        Colour at = material_colour_at(&w.materials[1], v3(6.5, 0.5, 0.5));
+        tap_ok(colour_is(at, 0, 1, 0, 0, 0), "material colour at a point follows the moved pattern");
+        world_free(&w);
+    }
+    scene_free(s);
+}
+
+static void test_layers(void)
+{
+    /* Worked by hand from ComputeLightedTexture: top rgbt <0,0,1,0.5> has
+     * opacity 0.5, lets 0.5 through; bottom rgb <1,0,0> opaque: lit colour
+     * 0.5*<0,0,1> + 0.5*<1,0,0>, nothing through. */
+    Scene *s = parse("triangle { 0, x, y texture { pigment { rgb <1,0,0> } } texture { pigment { rgbt <0,0,1,0.5> } } }\n"
+                     "triangle { 0, x, y texture { pigment { rgbt <0,0,1,0.5> } } texture { pigment { rgb <0,1,0> } } }\n"
+                     "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbf <1,0,0,1> } }\n"
+                     "triangle { 0, x, y texture { T } }\n");
+    tap_ok(s && s->nobjects == 3, "layered textures parse (objects and #declare)");
+    if (s && s->nobjects == 3) {
+        tap_ok(colour_is(s->objects[0]->texture->pigment.colour, 0.5, 0, 0.5, 0, 0),
+               "see-through layer over an opaque one: blended colour, opaque");
+        tap_ok(colour_is(s->objects[1]->texture->pigment.colour, 0, 1, 0, 0, 0), "an opaque top layer hides the rest");
+        /* a red filter over white: the white seen through it, red; opaque */
+        tap_ok(colour_is(s->objects[2]->texture->pigment.colour, 1, 0, 0, 0, 0),
+               "a filtering top layer colours the layer under it");
+        tap_ok(s->napproximations == 1 && s->approximations[0].kind == APPROX_LAYERS &&
+                   s->approximations[0].count == 2,
+               "blended layers are reported as an approximation (2 places), the hidden one is not");
+    }
+    scene_free(s);
+}
+
+static void test_sky(void)
+{
+    Scene *s = parse("background { rgb <0, 0, 1> }\n"
+                     "sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb <1,1,0>] } }\n"
+                     "             pigment { rgbt <1, 0, 0, 0.5> } }\n");
+    World w;
+    WorldError we;
+    int built = s && world_build(&w, s, &we) == 0;
+    tap_ok(built && w.sky && w.sky->npigments == 2, "sky_sphere with two pigments");
+    if (built) {
+        /* Straight up (value 1 -> <1,1,0>) under the half-transparent red on
+         * top: 0.5 red + 0.5 * <1,1,0>; the background does not show. */
+        RGB up = sky_colour(&w, v3(0, 1, 0));
+        tap_ok(near(up.r, 1.0) && near(up.g, 0.5) && near(up.b, 0.0), "sky straight up: layers as POV-Ray 3.7 adds them");
+        RGB half = sky_colour(&w, v3(0, 0.5, sqrt(0.75)));
+        tap_ok(near(half.r, 0.75) && near(half.g, 0.25) && near(half.b, 0.0), "sky at 30 degrees: colour map at 0.5");
+        world_free(&w);
+    }
+    scene_free(s);
+}
+
+static void test_approximations(void)
+{
+    /* Declared but unused: nothing to report (include files declare much). */
+    Scene *s = parse("#declare P = pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } }\n"
+                     "#declare T = texture { pigment { rgb 1 } normal { bumps 0.5 } }\n"
+                     "box { 0, 1 }\n");
+    tap_ok(s && s->napproximations == 0, "approximations declared but unused are not reported");
+    scene_free(s);
+    s = parse("#include \"colors.inc\"\n#include \"textures.inc\"\n#include \"stones.inc\"\n#include \"skies.inc\"\nbox { 0, 1 }\n");
+    tap_ok(s && s->napproximations == 0, "textures.inc, stones.inc, skies.inc: nothing reported when unused");
+    scene_free(s);
+    s = parse("#declare P = pigment { bozo color_map { [0 rgb 0] [1 rgb <1,0,0>] } }\n"
+              "box { 0, 1 pigment { P } }\nbox { 0, 1 pigment { P } }\n"
+              "box { 0, 1 normal { bumps 0.5 } }\n"
+              "light_source { 0, 1 area_light x, y, 3, 3 adaptive 1 jitter }\n"
+              "global_settings { radiosity { } }\n");
+    tap_ok(s != NULL, "approximated features parse");
+    if (s) {
+        int pattern = -1, normal = -1, area = -1, rad = -1;
+        for (int i = 0; i < s->napproximations; i++) {
+            const SceneApproximation *a = &s->approximations[i];
+            if (a->kind == APPROX_PATTERN) pattern = i;
+            if (a->kind == APPROX_NORMAL) normal = i;
+            if (a->kind == APPROX_AREA_LIGHT) area = i;
+            if (a->kind == APPROX_RADIOSITY) rad = i;
+        }
+        tap_ok(s->napproximations == 4, "four kinds reported (%d)", s->napproximations);
+        tap_ok(pattern >= 0 && s->approximations[pattern].count == 1 && s->approximations[pattern].first.line == 1 &&
+                   s->approximations[pattern].first.column == 24 && strcmp(s->approximations[pattern].what, "'bozo'") == 0,
+               "a declared pattern used twice: one place, at its declaration 1:24");
+        tap_ok(normal >= 0 && s->approximations[normal].first.line == 4, "object normal at line 4");
+        tap_ok(area >= 0 && rad >= 0, "area_light and radiosity reported");
+        tap_ok(colour_is(s->objects[0]->texture->pigment.colour, 0.5, 0, 0, 0, 0) &&
+                   s->objects[0]->texture->pigment.kind == PIGMENT_SOLID,
+               "an approximated pattern shows its colour map at 0.5");
+        tap_ok(s->nlights == 1 && near(s->lights[0].location.x, 0), "area light: a point light at its centre");
+    }
+    scene_free(s);
+    s = parse("box { 0, 1 pigment { mandel 30 interior 1, 1 color_map { [0 rgb 1] [1 rgb 0] } } }\n"
+              "box { 0, 1 pigment { julia <.3, .44> 30 } }\n"
+              "box { 0, 1 pigment { brick color rgb 1, color rgb 0 brick_size <1, 0.5, 0.5> mortar 0.1 } }\n"
+              "box { 0, 1 pigment { checker rgb 1, rgb 0 turbulence 0.5 octaves 3 warp { turbulence 1 } } }\n"
+              "box { 0, 1 pigment { uv_mapping spiral2 8 color_map { [0.5 rgb 1] [0.5 rgb 0] } scale 0.8 } }\n");
+    tap_ok(s && s->nobjects == 5, "pattern arguments and modifiers are read past");
+    if (s && s->nobjects == 5) {
+        tap_ok(s->objects[3]->texture->pigment.kind == PIGMENT_CHECKER, "checker with turbulence stays a checker");
+        int warp = 0;
+        for (int i = 0; i < s->napproximations; i++)
+            warp |= s->approximations[i].kind == APPROX_WARP;
+        tap_ok(warp, "its turbulence is reported as ignored");
+    }
+    scene_free(s);
+}
+
+static void test_strict(void)
+{
+    expect_error_with(&strict_opts, "box { 0, 1 pigment { bozo } }", 1, 22,
+                      "'bozo' is only approximated by hstrace (pattern shown as one colour", "--strict: pattern");
+    expect_error_with(&strict_opts, "box { 0, 1\n  normal { bumps 0.4 } }", 2, 3, "'normal' is only approximated",
+                      "--strict: normal");
+    expect_error_with(&strict_opts, "light_source { 0, 1 area_light x, y, 2, 2 }", 1, 21,
+                      "'area_light' is only approximated", "--strict: area_light");
+    expect_error_with(&strict_opts, "global_settings { photons { count 100 } }", 1, 19, "'photons' is only approximated",
+                      "--strict: photons");
+    expect_error_with(&strict_opts, "camera { location -z aperture 0.4 focal_point 0 }", 1, 22,
+                      "'aperture' is only approximated", "--strict: focal blur");
+    expect_error_with(&strict_opts, "#declare T = texture { normal { bumps 1 } }\n\nbox { 0, 1 texture { T } }", 3, 22,
+                      "'normal' is only approximated by hstrace; --strict makes it an error (declared at t.pov:1)",
+                      "--strict: a declared approximation fails at its use, naming the declaration");
+    Scene *s = parse_with("#declare T = texture { normal { bumps 1 } }\n#include \"textures.inc\"\nbox { 0, 1 }", &strict_opts);
+    tap_ok(s != NULL, "--strict: unused approximations in declarations and include files are fine");
+    scene_free(s);
+    s = parse_with("#include \"colors.inc\"\n#include \"metals.inc\"\n#include \"finish.inc\"\n"
+                   "#include \"textures.inc\"\n"
+                   "box { 0, 1 texture { T_Gold_1A } }\n"
+                   "box { 0, 1 texture { pigment { Red } finish { Shiny } } }\n"
+                   "box { 0, 1 texture { Polished_Chrome } }\n",
+                   &strict_opts);
+    tap_ok(s && s->nobjects == 3, "--strict: plain-colour textures of metals.inc, textures.inc, finish.inc render exactly");
+    scene_free(s);
+}
+
+static void test_unsupported(void)
+{
+    expect_error("#declare I = isosurface { function { x } }\n\nobject { I }", 3, 10,
+                 "'isosurface' is not supported by hstrace (declared at t.pov:1)", "declared isosurface, used");
+    expect_error("sphere { 0, 1 }", 1, 1, "'sphere' is not supported by hstrace", "sphere");
+    expect_error("camera { fisheye }", 1, 10, "'fisheye' is not supported by hstrace", "fisheye camera");
+    expect_error("camera { panoramic }", 1, 10, "'panoramic' is not supported by hstrace", "panoramic camera");
+    expect_error("light_source { 0, 1 spotlight }", 1, 21, "'spotlight' is not supported by hstrace", "spotlight");
+    expect_error("light_source { 0, 1 cylinder }", 1, 21, "'cylinder' is not supported by hstrace", "cylinder light");
+    expect_error("box { 0, 1 interior { media { } } }", 1, 23, "'media' is not supported by hstrace", "media");
+    expect_error("fog { distance 5 }", 1, 1, "'fog' is not supported by hstrace", "fog");
+    expect_error("box { 0, 1 pigment { image_map { png \"x.png\" } } }", 1, 22, "'image_map' is not supported",
+                 "image_map");
+    expect_error("box { 0, 1 texture { material_map { png \"x.png\" } } }", 1, 22, "'material_map' is not supported",
+                 "material_map");
+    expect_error("#include \"colors.inc\"\n#include \"skies.inc\"\nsky_sphere { S_Cloud1 }", 3, 14, "is not supported by hstrace (declared at",
+                 "a declared sky_sphere from skies.inc");
+    expect_error("light_source { 0, 1 jitter }", 1, 21, "'jitter' is not supported", "jitter without area_light");
+}
+
+static void test_flags(void)
+{
+    Scene *s = parse("polygon { 4, <0,0>, <1,0>, <1,1>, <0,1> inverse hollow no_shadow no_image }\n"
+                     "mesh { triangle { 0, x, y } inside_vector z }\n"
+                     "mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0,1,2> } inside_vector <0,0,1> }\n"
+                     "camera { orthographic location <0,0,-5> look_at 0 }\n");
+    tap_ok(s && s->nobjects == 3 && s->objects[0]->inverse && s->objects[0]->hollow && s->objects[0]->no_shadow &&
+               s->objects[0]->no_image && s->camera.kind == CAMERA_ORTHOGRAPHIC,
+           "inverse, hollow, no_shadow, no_image, inside_vector and the orthographic camera parse");
+    scene_free(s);
+}
+
+/* hstrace's own colors.inc (data/include) against POV-Ray's: every name it
+ * declares has POV-Ray's value. */
+static void test_fallback_colors(void)
+{
+    const char *top = getenv("top_srcdir");
+    char own_dir[1024], path[1100];
+    snprintf(own_dir, sizeof own_dir, "%s/data/include", top && top[0] ? top : ".");
+    snprintf(path, sizeof path, "%s/colors.inc", own_dir);
+    FILE *f = fopen(path, "r");
+    tap_ok(f != NULL, "hstrace's colors.inc is at %s", path);
+    if (!f)
+        return;
+    static char scene[65536];
+    int len = snprintf(scene, sizeof scene, "#include \"colors.inc\"\n"), names = 0;
+    char line[256];
+    while (fgets(line, sizeof line, f)) {
+        char name[64];
+        if (sscanf(line, "#declare %63[A-Za-z0-9_] =", name) == 1 && strcmp(name, "Colors_Inc_Temp") != 0) {
+            len += snprintf(scene + len, sizeof scene - (size_t)len, "box { 0, 1 pigment { %s } }\n", name);
+            names++;
+        }
+    }
+    fclose(f);
+    const char *own[] = { own_dir };
+    ParseOptions o = { .include_dirs = own, .ninclude_dirs = 1 };
+    Scene *mine = parse_with(scene, &o);
+    tap_ok(mine && mine->nobjects == names && names > 100, "hstrace's colors.inc alone: %d colour names", names);
+    if (access("/usr/share/povray-3.7/include/colors.inc", R_OK) != 0) {
+        tap_diag("POV-Ray's colors.inc is not installed: values not compared");
+    } else {
+        Scene *pov = parse(scene);
+        int differ = 0;
+        for (int i = 0; mine && pov && i < names && i < pov->nobjects; i++) {
+            Colour a = mine->objects[i]->texture->pigment.colour, b = pov->objects[i]->texture->pigment.colour;
+            if (fabs(a.r - b.r) > 1e-6 || fabs(a.g - b.g) > 1e-6 || fabs(a.b - b.b) > 1e-6 ||
+                fabs(a.filter - b.filter) > 1e-6 || fabs(a.transmit - b.transmit) > 1e-6) {
+                differ++;
+                tap_diag("colour %d differs", i);
+            }
+        }
+        tap_ok(pov && mine && differ == 0, "every colour equals POV-Ray's colors.inc value");
+        scene_free(pov);
+    }
+    scene_free(mine);
+}
+
+int main(void)
+{
+    test_pattern_values();
+    test_pigments();
+    test_texture_binding();
+    test_layers();
+    test_sky();
+    test_approximations();
+    test_strict();
+    test_unsupported();
+    test_flags();
+    test_fallback_colors();
+    return tap_done();
+}
