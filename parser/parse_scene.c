@@ -506,11 +506,12 @@ void parse_declare(Parser *p, const Token *hash, int local)
     else
         symbol_set(p, name.text, name.len, local, &v);
 
-    /* POV-Ray 3.5+ wants ';' after float, vector, colour and string values;
-     * after a block it is optional. */
+    /* POV-Ray 3.5+ wants ';' after float, vector and colour values (a parse
+     * error in POV-Ray 3.7 too); after a string or a block it is optional:
+     * POV-Ray 3.7 renders `#declare S = "x"` followed by anything. */
     Token *s = next(p);
     if (!is_punct(s, ';')) {
-        if ((v.kind == VAL_NUMERIC || v.kind == VAL_STRING) && p->version >= 3.5)
+        if (v.kind == VAL_NUMERIC && p->version >= 3.5)
             fail_expected(p, s, "';' after the declared value");
         unget(p);
     }

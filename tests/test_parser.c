@@ -624,6 +624,13 @@ static void test_errors(void)
     tap_ok(err.is_io, "missing include file is an I/O error");
     expect_error("#if (1)\nbox { 0, 1 }\n", 1, 1, "no matching #end", "#if without #end");
     expect_error("#declare X = 1\nbox { 0, X }", 2, 1, "expected ';'", "missing semicolon after a float");
+    {
+        /* POV-Ray 3.7 accepts a string declaration without ';' (checked
+         * with povray: the scene renders). */
+        Scene *s = parse("#version 3.7;\n#declare S = \"x\"\nbox { 0, strlen(S) }");
+        tap_ok(s && s->nobjects == 1, "a string declaration needs no ';' (as in POV-Ray 3.7)");
+        scene_free(s);
+    }
     expect_error("box { 0, 1 } }", 1, 14, "expected an object", "stray brace");
     expect_error("box { 0, 1 clipped_by { box { 0, 1 } } }", 1, 12, "'clipped_by' is not supported", "clipped_by");
     expect_error("box { 0, 1 texture { pigment { image_map { png \"a.png\" } } } }", 1, 32,
