@@ -8,7 +8,7 @@
 # good when the time at N_th,c (a run with --nth auto) is within 10% of the
 # measured minimum: the paper's claim, and issue 4's figure.
 #
-# 640x480, 1 thread; every time is the median of 3 runs, all runs of a
+# 640x480, 1 thread; every time is the median of 5 runs, all runs of a
 # scene interleaved round by round so that drifts of the shared machine
 # spread over all points. Plots with gnuplot (Debian: gnuplot-nox) as SVG
 # and PNG. Writes bench/nth.md and bench/nth-SCENE.{svg,png}.
@@ -25,12 +25,12 @@ trap 'rm -rf "$work"' EXIT
 out="$here/nth.md"
 size="--width 640 --height 480 --threads 1"
 nths=${NTH_VALUES:-"0 1 2 4 8 16 32 64 128 256 512 1024 4096 1e9"}
-runs=${NTH_RUNS:-"1 2 3"}   # both overridable, for a quick look
+runs=${NTH_RUNS:-"1 2 3 4 5"}   # both overridable, for a quick look
 {
     echo "# Fig. 3: shadow-testing time against N_th"
     echo
     echo "Made by \`make bench\` (\`bench/nth-sweep.sh\`) on $(date -u +%Y-%m-%d), $(nproc) cores, $(uname -m)."
-    echo "640x480, 1 thread; medians of 3 runs, interleaved. *N_th,c*: eq. (7)'s optimum from the cost model"
+    echo "640x480, 1 thread; medians of $(echo $runs | wc -w) runs, interleaved. *N_th,c*: eq. (7)'s optimum from the cost model"
     echo "(median over the runs with \`--nth auto\`); *N_th,m*: the measured optimum of the sweep. *At N_th,c*: the"
     echo "shadow time of the \`--nth auto\` runs against the sweep's minimum; within 10% is the paper's claim."
     echo
