@@ -779,7 +779,10 @@ static void parse_num_factor(Parser *p, double e[5], int *terms)
     default:
         fail_expected(p, c, "x, y, z, t, u, v or a colour component after '.'");
     }
-    if (i >= *terms)
+    /* In a declaration already known to be unsupported (deferred), the
+     * placeholder 0 stands for a value of unknown shape: any component of
+     * it is fine, and the declaration's use reports the real reason. */
+    if (i >= *terms && !(p->declaring && p->deferred_what))
         parse_fail(p, c->pos, "'.%s' asks for a component the expression does not have", keyword_name(c->kw));
     double v = e[i];
     fill(e, 5, v);

@@ -624,6 +624,12 @@ static void test_errors(void)
     tap_ok(err.is_io, "missing include file is an I/O error");
     expect_error("#if (1)\nbox { 0, 1 }\n", 1, 1, "no matching #end", "#if without #end");
     expect_error("#declare X = 1\nbox { 0, X }", 2, 1, "expected ';'", "missing semicolon after a float");
+    /* Components of a value that is already unsupported (math.inc's
+     * vGradient of a user function): the use names the function. */
+    expect_error("#declare F = function { x }\n#declare V = <F(1,2,3), 2, 3>;\n#declare W = <V.x, V.y, 0>;\n"
+                 "triangle { 0, x, y translate W }",
+                 4, 30, "'function' is not supported by hstrace (declared at t.pov:1)",
+                 "a component of an unsupported value: error at the use, naming the function");
     {
         /* POV-Ray 3.7 accepts a string declaration without ';' (checked
          * with povray: the scene renders). */
