@@ -571,6 +571,7 @@ static void handle_directive(Parser *p, const Token *hash)
         if (!is_punct(next(p), ';'))
             unget(p); /* POV-Ray wants the ';'; hstrace does not insist */
         p->version = v;
+        p->version_given = 1;
         return;
     }
     case KW_debug: {

@@ -645,6 +645,11 @@ static void parse_statements(Parser *p)
         case KW_sky_sphere:
             parse_sky_sphere(p, &p->scene->sky);
             break;
+        case KW_default:
+            /* `default { ... }` without '#': the older spelling, which POV-Ray
+             * 3.7 still reads as #default (several of its sample scenes use it). */
+            parse_default_directive(p);
+            break;
         default:
             if (t.type == TK_WORD && t.kw >= 0)
                 unsupported(p, &t); /* fog, sky_sphere, rainbow, media, ... */
@@ -694,6 +699,7 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
     collect_approximations(p);
 
     scene->version = p->version;
+    scene->version_given = p->version_given;
     scene->nobjects = p->objects.n;
     scene->objects = palloc(p, sizeof(SceneObject *) * (size_t)(p->objects.n ? p->objects.n : 1));
     if (p->objects.n)

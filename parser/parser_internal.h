@@ -219,6 +219,7 @@ typedef struct Parser {
     long loop_iterations;
 
     double version;
+    int version_given;
     int gamma_set;
     double assumed_gamma; /* 0 with gamma_set: srgb */
     int default_changed;  /* #default was used */

@@ -35,3 +35,11 @@ void scene_free(Scene *scene)
     free(scene);
     arena_free(a);
 }
+
+double scene_working_gamma(const Scene *s)
+{
+    const GlobalSettings *g = &s->globals;
+    if (g->has_assumed_gamma)
+        return g->assumed_gamma_srgb ? 0.0 : g->assumed_gamma;
+    return s->version_given && s->version >= 3.7 ? 1.0 : 0.0;
+}

@@ -253,6 +253,7 @@ typedef struct Arena Arena;
 typedef struct {
     Arena *arena;
     double version;            /* from #version, default 3.7 */
+    int version_given;         /* the scene has a #version */
     SceneCamera camera;
     int has_camera;
     Colour background;         /* default black, transmit 1 when unspecified in 3.7 */
@@ -281,5 +282,14 @@ char *arena_strdup(Arena *a, const char *s);
 void arena_free(Arena *a);
 
 void scene_free(Scene *scene);
+
+/* The scene's working gamma, as POV-Ray 3.7 decides it: the colours it
+ * computes are linear light raised to 1/gamma. 1: linear (assumed_gamma 1,
+ * and the default of #version 3.7 scenes); 0: the sRGB curve (assumed_gamma
+ * srgb); else that power. A scene older than 3.7, or with no #version, that
+ * sets no assumed_gamma has "gamma correction off": its colours are taken
+ * as encoded for POV-Ray's default display gamma, which is sRGB (measured:
+ * POV-Ray 3.7 renders such a scene exactly as with assumed_gamma srgb). */
+double scene_working_gamma(const Scene *s);
 
 #endif

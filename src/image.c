@@ -2,6 +2,7 @@
 #include "image.h"
 
 #include <errno.h>
+#include <math.h>
 #include <fcntl.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -38,6 +39,30 @@ void image_free(Image *img)
     img->rgba = NULL;
     img->width = 0;
     img->height = 0;
+}
+
+static double decode_working(double c, double gamma)
+{
+    if (c <= 0.0)
+        return c;
+    if (gamma == 0.0)
+        return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+    return pow(c, gamma);
+}
+
+void image_decode_working_gamma(Image *img, double gamma)
+{
+    if (gamma == 1.0)
+        return;
+    size_t n = (size_t)img->width * (size_t)img->height;
+    for (size_t i = 0; i < n; i++) {
+        float *px = &img->rgba[4 * i];
+        double a = px[3];
+        if (a <= 0.0)
+            continue;
+        for (int k = 0; k < 3; k++)
+            px[k] = (float)(a * decode_working(px[k] / a, gamma));
+    }
 }
 
 ImageFormat image_format_from_path(const char *path)

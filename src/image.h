@@ -70,6 +70,12 @@ typedef struct {
 int image_alloc(Image *img, int width, int height);
 void image_free(Image *img);
 
+/* Turns colours encoded with a working gamma (scene_working_gamma: 1
+ * linear, 0 the sRGB curve, else a power) into linear light, in place; alpha
+ * stays, premultiplied colour is decoded unpremultiplied. POV-Ray writes
+ * its files from linear light in the same way. */
+void image_decode_working_gamma(Image *img, double gamma);
+
 ImageFormat image_format_from_path(const char *path);
 
 /* Write to a temporary file beside `path` and rename it into place, so an

@@ -163,6 +163,7 @@ int main(int argc, char **argv)
     }
 
     t = clock_wall();
+    double working_gamma = scene_working_gamma(scene);
     World world;
     WorldError werr;
     if (world_build(&world, scene, &werr)) {
@@ -271,6 +272,7 @@ int main(int argc, char **argv)
         status = EXIT_IO;
     } else {
         t = clock_wall();
+        image_decode_working_gamma(&img, working_gamma);
         ImageWriteOptions wopt;
         memset(&wopt, 0, sizeof wopt);
         wopt.exr_float = opt.exr_float;
