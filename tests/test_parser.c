@@ -636,6 +636,10 @@ static void test_errors(void)
         Scene *s = parse("#version 3.7;\n#declare S = \"x\"\nbox { 0, strlen(S) }");
         tap_ok(s && s->nobjects == 1, "a string declaration needs no ';' (as in POV-Ray 3.7)");
         scene_free(s);
+        /* The older spelling of #default, which POV-Ray 3.7 still reads. */
+        s = parse("default { finish { ambient 0.3 } }\ntriangle { 0, x, y }");
+        tap_ok(s && near(s->default_texture.finish.ambient[0], 0.3), "'default { }' without '#' is #default");
+        scene_free(s);
     }
     expect_error("box { 0, 1 } }", 1, 14, "expected an object", "stray brace");
     expect_error("box { 0, 1 clipped_by { box { 0, 1 } } }", 1, 12, "'clipped_by' is not supported", "clipped_by");
