@@ -52,7 +52,11 @@ textures/patterns/fractals3.pov|
 textures/patterns/quilt2.pov|
 textures/patterns/slopemt_dat_36.pov|
 textures/patterns/slopemt_dat_37.pov|
-animations/raddem/raddem.pov|"
+animations/raddem/raddem.pov|
+animations/fractalzoom/fractalzoom.pov|
+camera/mesh_camera/baking_repair_seams.pov|
+incdemo/strings.pov|
+textures/pigments/blkhole.pov|"
 
 while IFS='|' read -r scene todo; do
     dir="$examples/$(dirname "$scene")"
