@@ -374,9 +374,18 @@ Value copy_value(Parser *p, const Value *v)
     return c;
 }
 
-Value parse_value_lenient(Parser *p)
+/* What a lenient parse reads: a whole right-hand value, or one more
+ * `texture {...}` layered on top of the declared texture. */
+typedef struct {
+    const Token *layer; /* NULL: a value; else the layer's 'texture' */
+    Value below;        /* with layer: the texture it goes on top of */
+} LenientWhat;
+
+/* Reads what `what` says, turning "unsupported" from anywhere inside it
+ * (an error, or a deferred unsupported identifier) into a VAL_UNSUPPORTED
+ * value that remembers what and where, instead of failing. */
+static Value parse_lenient(Parser *p, const LenientWhat *what)
 {
-    /* Catch "unsupported" from anywhere inside the value. */
     jmp_buf here;
     jmp_buf *volatile outer = p->poison_jmp;
     volatile int saved_nesting = p->nesting, saved_declaring = p->declaring;
@@ -388,7 +397,13 @@ Value parse_value_lenient(Parser *p)
     p->declaring++;
     p->deferred_what = NULL;
     if (setjmp(here) == 0) {
-        v = parse_rvalue(p);
+        if (what->layer) {
+            SceneTexture *top = parse_texture(p);
+            v = what->below;
+            v.texture = layer_textures(p, top, what->below.texture, what->layer);
+        } else {
+            v = parse_rvalue(p);
+        }
         if (p->deferred_what) {
             memset(&v, 0, sizeof v);
             v.kind = VAL_UNSUPPORTED;
@@ -411,45 +426,10 @@ Value parse_value_lenient(Parser *p)
     return v;
 }
 
-/* One more `texture {...}` of a declaration, layered on top of the
- * texture v (layer_textures); something unsupported inside makes the
- * declared value unsupported, as in parse_value_lenient. */
-static Value add_layer_lenient(Parser *p, Value v, const Token *layer)
+Value parse_value_lenient(Parser *p)
 {
-    jmp_buf here;
-    jmp_buf *volatile outer = p->poison_jmp;
-    volatile int saved_nesting = p->nesting, saved_declaring = p->declaring;
-    volatile int start_depth = p->brace_depth;
-    const char *volatile outer_deferred = p->deferred_what;
-    volatile SourcePos outer_deferred_at = p->deferred_at;
-    Value out;
-    p->poison_jmp = &here;
-    p->declaring++;
-    p->deferred_what = NULL;
-    if (setjmp(here) == 0) {
-        SceneTexture *top = parse_texture(p);
-        out = v;
-        out.texture = layer_textures(p, top, v.texture, layer);
-        if (p->deferred_what) {
-            memset(&out, 0, sizeof out);
-            out.kind = VAL_UNSUPPORTED;
-            out.what = p->deferred_what;
-            out.declared_at = p->deferred_at;
-        }
-    } else {
-        p->nesting = saved_nesting;
-        memset(&out, 0, sizeof out);
-        out.kind = VAL_UNSUPPORTED;
-        out.what = p->poison_what;
-        out.declared_at = p->poison_at;
-        out.strict_only = p->poison_strict;
-        skip_poisoned_value(p, start_depth);
-    }
-    p->declaring = saved_declaring;
-    p->poison_jmp = outer;
-    p->deferred_what = outer_deferred;
-    p->deferred_at = outer_deferred_at;
-    return out;
+    LenientWhat what = { NULL, { 0 } };
+    return parse_lenient(p, &what);
 }
 
 void parse_declare(Parser *p, const Token *hash, int local)
@@ -494,7 +474,8 @@ void parse_declare(Parser *p, const Token *hash, int local)
                 skip_block_body(p);
                 continue;
             }
-            v = add_layer_lenient(p, v, &layer);
+            LenientWhat what = { &layer, v };
+            v = parse_lenient(p, &what);
         }
     }
 
