@@ -130,6 +130,8 @@ static float at(const Channels *c, const char *name, int x, int y)
 /* ---- the scene computed by hand ------------------------------------------ */
 
 static const char scene_text[] =
+    "#version 3.7;\n"
+    "global_settings { assumed_gamma 1 }\n" /* linear: the values below are light */
     "camera { location <0,0,0> direction <0,0,1> up <0,1,0> right <1,0,0> }\n"
     "light_source { <0,0,-10> color rgb 1 }\n"   /* L1, behind the camera */
     "light_source { <0,0,20> color rgb 1 }\n"    /* L2, behind the quad */
