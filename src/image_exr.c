@@ -326,21 +326,13 @@ static exr_result_t decode_chunk(exr_const_context_t ctx, int part, const exr_ch
     return EXR_ERR_SUCCESS;
 }
 
-int image_exr_read(int fd, Image *img, char *err, int errlen)
+/* Starts reading the file behind io and reads the first part's layout:
+ * what both readers below need before they decode anything. */
+static exr_result_t start_read_part0(exr_context_t *ctx, ExrIO *io, exr_storage_t *storage, exr_attr_box2i_t *dw,
+                                     const exr_attr_chlist_t **chans)
 {
-    ExrIO io = { fd, err, errlen, 0 };
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    exr_context_t ctx = NULL;
-    exr_decode_pipeline_t dec;
-    Scratch sc = { NULL, 0 };
-    exr_storage_t storage;
-    exr_attr_box2i_t dw;
-    const exr_attr_chlist_t *chans = NULL;
-    int nparts = 0, started = 0, have_rgb = 0, have_y = 0, grey_only, w, h;
-    exr_result_t rv;
-
-    memset(&dec, 0, sizeof dec);
-    init.user_data = &io;
+    init.user_data = io;
     init.read_fn = exr_fd_read;
     init.size_fn = exr_fd_size;
     init.error_handler_fn = on_exr_error;
@@ -348,18 +340,35 @@ int image_exr_read(int fd, Image *img, char *err, int errlen)
     init.max_image_height = IMAGE_MAX_DIM;
     init.max_tile_width = IMAGE_MAX_DIM;
     init.max_tile_height = IMAGE_MAX_DIM;
-
-    rv = exr_start_read(&ctx, "image.exr", &init);
+    int nparts = 0;
+    exr_result_t rv = exr_start_read(ctx, "image.exr", &init);
     if (rv == EXR_ERR_SUCCESS)
-        rv = exr_get_count(ctx, &nparts);
+        rv = exr_get_count(*ctx, &nparts);
     if (rv == EXR_ERR_SUCCESS && nparts < 1)
         rv = EXR_ERR_FILE_BAD_HEADER;
     if (rv == EXR_ERR_SUCCESS)
-        rv = exr_get_storage(ctx, 0, &storage);
+        rv = exr_get_storage(*ctx, 0, storage);
     if (rv == EXR_ERR_SUCCESS)
-        rv = exr_get_data_window(ctx, 0, &dw);
+        rv = exr_get_data_window(*ctx, 0, dw);
     if (rv == EXR_ERR_SUCCESS)
-        rv = exr_get_channels(ctx, 0, &chans);
+        rv = exr_get_channels(*ctx, 0, chans);
+    return rv;
+}
+
+int image_exr_read(int fd, Image *img, char *err, int errlen)
+{
+    ExrIO io = { fd, err, errlen, 0 };
+    exr_context_t ctx = NULL;
+    exr_decode_pipeline_t dec;
+    Scratch sc = { NULL, 0 };
+    exr_storage_t storage;
+    exr_attr_box2i_t dw;
+    const exr_attr_chlist_t *chans = NULL;
+    int started = 0, have_rgb = 0, have_y = 0, grey_only, w, h;
+    exr_result_t rv;
+
+    memset(&dec, 0, sizeof dec);
+    rv = start_read_part0(&ctx, &io, &storage, &dw, &chans);
     if (rv != EXR_ERR_SUCCESS)
         goto fail;
     if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED) {
@@ -463,36 +472,18 @@ int image_exr_read_planes(int fd, const char *const *names, int n, float **plane
                           char *err, int errlen)
 {
     ExrIO io = { fd, err, errlen, 0 };
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_context_t ctx = NULL;
     exr_decode_pipeline_t dec;
     exr_storage_t storage;
     exr_attr_box2i_t dw;
     const exr_attr_chlist_t *chans = NULL;
-    int nparts = 0, started = 0, lines, w = 0, h = 0, status = -1;
+    int started = 0, lines, w = 0, h = 0, status = -1;
     exr_result_t rv;
 
     memset(&dec, 0, sizeof dec);
     for (int k = 0; k < n; k++)
         planes[k] = NULL;
-    init.user_data = &io;
-    init.read_fn = exr_fd_read;
-    init.size_fn = exr_fd_size;
-    init.error_handler_fn = on_exr_error;
-    init.max_image_width = IMAGE_MAX_DIM;
-    init.max_image_height = IMAGE_MAX_DIM;
-
-    rv = exr_start_read(&ctx, "image.exr", &init);
-    if (rv == EXR_ERR_SUCCESS)
-        rv = exr_get_count(ctx, &nparts);
-    if (rv == EXR_ERR_SUCCESS && nparts < 1)
-        rv = EXR_ERR_FILE_BAD_HEADER;
-    if (rv == EXR_ERR_SUCCESS)
-        rv = exr_get_storage(ctx, 0, &storage);
-    if (rv == EXR_ERR_SUCCESS)
-        rv = exr_get_data_window(ctx, 0, &dw);
-    if (rv == EXR_ERR_SUCCESS)
-        rv = exr_get_channels(ctx, 0, &chans);
+    rv = start_read_part0(&ctx, &io, &storage, &dw, &chans);
     if (rv == EXR_ERR_SUCCESS)
         rv = exr_get_scanlines_per_chunk(ctx, 0, &lines);
     if (rv != EXR_ERR_SUCCESS)
