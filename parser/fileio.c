@@ -138,6 +138,11 @@ static UserFile *file_of(Parser *p, const char *directive, int reading)
     Token t = *next(p);
     p->no_macro_calls--;
     Symbol *s = t.type == TK_WORD && t.kw < 0 && !t.elem ? symbol_find(p, t.text, t.len) : NULL;
+    if (!s && t.type == TK_WORD && t.kw < 0 && !t.elem)
+        parse_fail(p, t.pos,
+                   "'%.*s' is not an open file: no #fopen declared it, or it was closed (by #fclose, or when "
+                   "a #read reached the end of its data)",
+                   t.len, t.text);
     if (!s || s->value.kind != VAL_FILE) {
         char what[80];
         snprintf(what, sizeof what, "a file identifier opened by #fopen after '%s ('", directive);
