@@ -605,10 +605,17 @@ static void handle_directive(Parser *p, const Token *hash)
         directive_break(p, hash);
         return;
     case KW_fopen:
+        directive_fopen(p, hash);
+        return;
     case KW_fclose:
+        directive_fclose(p);
+        return;
     case KW_read:
+        directive_read(p);
+        return;
     case KW_write:
-        parse_fail(p, t.pos, "'#%s' is not supported by hstrace", keyword_name(t.kw));
+        directive_write(p);
+        return;
     default:
         fail_expected(p, &t, "a directive after '#'");
     }

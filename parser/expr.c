@@ -412,6 +412,7 @@ const char *value_kind_name(ValueKind k)
     case VAL_NORMAL: return "a normal";
     case VAL_MACRO: return "a macro";
     case VAL_ARRAY: return "an array";
+    case VAL_FILE: return "a file identifier";
     default: return "something else";
     }
 }

@@ -677,6 +677,7 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
         parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
     }
     parse_statements(p);
+    user_files_close_all(p, 1);
     collect_approximations(p);
 
     scene->version = p->version;
@@ -725,10 +726,12 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     tvec_init(&p->objects, sizeof(SceneObject *));
     tvec_init(&p->lights, sizeof(SceneLight));
     tvec_init(&p->rand_streams, sizeof(unsigned));
+    tvec_init(&p->user_files, sizeof(struct UserFile *));
     symbols_init(p);
     init_scene(scene);
 
     if (setjmp(p->fail)) {
+        user_files_close_all(p, 0);
         scene_free(p->scene);
         arena_free(p->temp);
         free(p);

@@ -93,9 +93,11 @@ typedef enum {
     VAL_UNSUPPORTED, /* a declaration of something hstrace cannot render */
     VAL_MACRO,
     VAL_ARRAY,
+    VAL_FILE, /* a #fopen file identifier */
 } ValueKind;
 
 struct Symbol;
+struct UserFile;
 
 /* #macro Name(P1, P2, ...): where its body starts in its file's buffer. */
 typedef struct Macro {
@@ -135,6 +137,7 @@ typedef struct {
     Transform *transform;
     Macro *macro;
     ArrayValue *array;
+    struct UserFile *file;
     /* VAL_UNSUPPORTED: what it is ("'sphere'", "macro 'Foo'") and where the
      * unsupported thing was first written. */
     const char *what;
@@ -238,6 +241,7 @@ typedef struct Parser {
     SourcePos deferred_at;
 
     TempVec rand_streams; /* of unsigned: seed() makes one, rand() draws */
+    TempVec user_files;   /* of struct UserFile *: every #fopen, closed or not */
     int poison_strict;
 
     const ApproxNote *global_approx; /* global_settings: radiosity, photons */
@@ -376,6 +380,16 @@ Value parse_array(Parser *p, const Token *kw); /* after 'array' */
  * make p->tok that element. */
 void read_array_element(Parser *p, Symbol *s);
 double array_function(Parser *p, const Token *t); /* dimensions, dimension_size */
+/* fileio.c: #fopen, #fclose, #read, #write (after the keyword) */
+void directive_fopen(Parser *p, const Token *hash);
+void directive_fclose(Parser *p);
+void directive_read(Parser *p);
+void directive_write(Parser *p);
+/* Closes every file still open. With `report`, a failed close (a write
+ * error, e.g. a full disk) is an I/O error; without, errors are ignored
+ * (the parse is already failing). */
+void user_files_close_all(Parser *p, int report);
+
 /* approximations.c: the report of what the instantiated scene approximates */
 void collect_approximations(Parser *p);
 

@@ -826,6 +826,144 @@ static void test_robustness(void)
     free(buf);
 }
 
+/* The whole of a small file, or "" (static buffer). */
+static const char *file_text(const char *path)
+{
+    static char buf[4096];
+    buf[0] = '\0';
+    FILE *f = fopen(path, "rb");
+    if (f) {
+        size_t n = fread(buf, 1, sizeof buf - 1, f);
+        buf[n] = '\0';
+        fclose(f);
+    }
+    return buf;
+}
+
+static void test_file_io(void)
+{
+    char dir[] = "/tmp/hst_fileio_testXXXXXX";
+    if (!mkdtemp(dir)) {
+        tap_ok(0, "temporary folder");
+        return;
+    }
+    char data[300], text[2048];
+    snprintf(data, sizeof data, "%s/data.txt", dir);
+
+    /* #write: strings as they are, numbers with %g, vectors as "<x,y,z> "
+     * (the bytes POV-Ray 3.7 writes for the same directives) */
+    snprintf(text, sizeof text,
+             "#declare S = \"two\";\n#fopen F \"%s\" write\n"
+             "#write (F, \"\\\"one\\\",\", 1/3, \",\", <1, 2.5, 123456789>, \",\" S, \",\", -2.5e-7, \",\", <1,2>, \"\\n\")\n"
+             "#fclose F\nbox { 0, 1 }\n",
+             data);
+    Scene *s = parse(text);
+    const char *want = "\"one\",0.333333,<1,2.5,1.23457e+08> ,two,-2.5e-07,<1,2> \n";
+    tap_ok(s && strcmp(file_text(data), want) == 0, "#write: strings, floats and vectors as POV-Ray writes them");
+    if (strcmp(file_text(data), want) != 0)
+        tap_diag("file holds [%s]", file_text(data));
+    scene_free(s);
+
+    /* append, then binary integers rounded and clamped */
+    snprintf(text, sizeof text,
+             "#fopen F \"%s\" append\n#write (F, concat(\"x\", str(2, 0, 1)), uint8 <65.6, 300, -4>, sint16be 258, sint16le -2)\n"
+             "box { 0, 1 }\n",
+             data);
+    s = parse(text);
+    char want2[200];
+    snprintf(want2, sizeof want2, "%sx2.0B\xff%c\x01\x02\xfe\xff", want, 0);
+    tap_ok(s && memcmp(file_text(data), want2, strlen(want) + 10) == 0,
+           "#fopen append adds to the file; uint8, sint16be, sint16le write binary integers");
+    scene_free(s);
+
+    /* #read: a string, floats and vectors back into variables */
+    write_file(data, "\"one\", 0.5, <1, -2.5, 3>,\n// a comment\n-4 \"two\" <1,2,3,4,5>\n");
+    snprintf(text, sizeof text,
+             "#declare V = 7;\n#fopen F \"%s\" read\n#read (F, S, A, V, B, T, C)\n"
+             "#if (strcmp(S, \"one\") != 0 | strcmp(T, \"two\") != 0) #error \"strings\" #end\n"
+             "box { <A, B, C.t>, V }\n#if (defined(F)) #error \"F still open\" #end\n",
+             data);
+    s = parse(text);
+    tap_ok(s && vnear(s->objects[0]->u.box.corner1, 0.5, -4, 4) && vnear(s->objects[0]->u.box.corner2, 1, -2.5, 3),
+           "#read: strings, signed floats and 3- and 5-component vectors, with comments and optional commas; the "
+           "file closes at its end");
+    scene_free(s);
+
+    /* #while (defined(F)): every value once; a trailing comma gives one
+     * more round in which the variable keeps its value, as in POV-Ray */
+    write_file(data, "1, 2,\n3");
+    snprintf(text, sizeof text,
+             "#declare N = 0; #declare Sum = 0;\n#fopen F \"%s\" read\n"
+             "#while (defined(F))\n  #read (F, X)\n  #declare N = N + 1; #declare Sum = Sum + X;\n#end\n"
+             "box { 0, <N, Sum, 1> }\n",
+             data);
+    s = parse(text);
+    tap_ok(s && vnear(s->objects[0]->u.box.corner2, 3, 6, 1), "#while (defined(F)) #read reads each value once");
+    scene_free(s);
+    write_file(data, "1, 2,\n3,\n");
+    s = parse(text);
+    tap_ok(s && vnear(s->objects[0]->u.box.corner2, 4, 9, 1), "a trailing comma: one more round, value unchanged");
+    scene_free(s);
+
+    /* #fclose twice, and of a file closed at its end, is accepted */
+    snprintf(text, sizeof text,
+             "#fopen F \"%s\" read\n#read (F, A, B, C, D)\n#fclose F\n#fclose F\n#fclose Never\nbox { 0, A }\n", data);
+    s = parse(text);
+    tap_ok(s && near(s->objects[0]->u.box.corner2.x, 1), "#fclose of an already closed file is accepted");
+    scene_free(s);
+
+    /* errors */
+    char missing[300];
+    snprintf(missing, sizeof missing, "%s/none/x.txt", dir);
+    snprintf(text, sizeof text, "box { 0, 1 }\n  #fopen F \"%s\" read\n", missing);
+    s = parse_scene_string("t.pov", text, &opts, &err);
+    tap_ok(!s && err.is_io && err.line == 2 && err.column == 12 && strstr(err.message, "cannot open") &&
+               strstr(err.message, "for reading"),
+           "error: a missing file to read is an I/O error at its name");
+    scene_free(s);
+    snprintf(text, sizeof text, "#fopen F \"%s\" write\n", missing);
+    s = parse_scene_string("t.pov", text, &opts, &err);
+    tap_ok(!s && err.is_io && err.line == 1 && err.column == 10 && strstr(err.message, "for writing"),
+           "error: a file that cannot be created is an I/O error at its name");
+    scene_free(s);
+
+    snprintf(text, sizeof text, "#fopen F \"%s\" write\n#read (F, X)\n", data);
+    expect_error(text, 2, 8, "cannot read from 'F'", "#read from a file open for writing");
+    snprintf(text, sizeof text, "#fopen F \"%s\" read\n\n #write (F, 1)\n", data);
+    expect_error(text, 3, 10, "cannot write to 'F'", "#write to a file open for reading");
+    expect_error("#declare X = 1;\n#read (Nope, X)\n", 2, 8, "'Nope' is not an open file", "#read of an undeclared file");
+    expect_error("#declare G = 1;\n#write (G, 1)\n", 2, 9, "expected a file identifier", "#write to a float");
+    write_file(data, "1");
+    snprintf(text, sizeof text, "#fopen F \"%s\" read\n#read (F, A)\n#read (F, B)\n", data);
+    expect_error(text, 3, 8, "'F' is not an open file", "#read past the end of the file");
+    snprintf(text, sizeof text, "#fopen F \"%s\" update\n", data);
+    expect_error(text, 1, 10 + (int)strlen(data) + 3, "'read', 'write' or 'append'", "#fopen with a wrong mode");
+    expect_error("#declare F = 1;\n#fopen F \"x\" read\n", 2, 8, "already declared", "#fopen of a declared name");
+
+    /* bad data: FILE:LINE:COLUMN in the data file */
+    write_file(data, "1,\n  <1, 2, oops>\n");
+    snprintf(text, sizeof text, "#fopen F \"%s\" read\n#read (F, A, B)\n", data);
+    s = parse_scene_string("t.pov", text, &opts, &err);
+    tap_ok(!s && !err.is_io && strcmp(err.file, data) == 0 && err.line == 2 && err.column == 10 &&
+               strstr(err.message, "expected a vector component or '>'"),
+           "error: bad data is reported at its place in the data file");
+    if (s || err.line != 2 || err.column != 10)
+        tap_diag("got %s:%d:%d: %s", err.file, err.line, err.column, err.message);
+    scene_free(s);
+
+    /* a parse error while a file is open for writing: the file is closed
+     * (ASan's leak check in the sanitizer build) and what was written is
+     * in it */
+    snprintf(text, sizeof text, "#fopen F \"%s\" write\n#write (F, \"partial\")\nbox { 0, Nope }\n", data);
+    s = parse_scene_string("t.pov", text, &opts, &err);
+    tap_ok(!s && err.line == 3 && strcmp(file_text(data), "partial") == 0,
+           "an error with a file open for writing closes it, its text written");
+    scene_free(s);
+
+    remove(data);
+    rmdir(dir);
+}
+
 int main(void)
 {
     test_expressions();
@@ -842,6 +980,7 @@ int main(void)
     test_errors();
     test_macro_files();
     test_includes();
+    test_file_io();
     test_robustness();
     return tap_done();
 }

@@ -1,0 +1,526 @@
+/* POV-Ray's user file directives: #fopen, #fclose, #read, #write.
+ *
+ * A file opened for reading is read whole into the temporary arena at #fopen
+ * and tokenised from there, so no FILE* stays open for it. A file opened for
+ * writing keeps its FILE* until #fclose or the end of the parse, where
+ * user_files_close_all() closes it whether the parse succeeded or not.
+ *
+ * As in POV-Ray: the file identifier is global; #read declares (globally)
+ * or overwrites its variables; when a #read reaches the end of the data the
+ * file is closed and its identifier undefined, so that
+ * `#while (defined(F)) #read (F, V) ... #end` reads every value. Numbers are
+ * written with C's "%g" (six significant digits), vectors as "<x,y,z> ". */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+typedef struct UserFile {
+    const char *name;  /* as written in #fopen, for messages (scene arena) */
+    SourcePos opened_at;
+    FILE *out;         /* write / append, until closed */
+    int reading;
+    /* reading: the data, and where the next token starts */
+    const char *buf;
+    size_t size, offset;
+    int line, col;
+} UserFile;
+
+/* ---- files --------------------------------------------------------------- */
+
+static UserFile *new_user_file(Parser *p, const char *name, SourcePos at)
+{
+    UserFile *f = tmp_alloc(p, sizeof *f);
+    memset(f, 0, sizeof *f);
+    f->name = arena_strdup(p->arena, name);
+    if (!f->name)
+        parse_fail(p, at, "out of memory");
+    f->opened_at = at;
+    f->line = 1;
+    f->col = 1;
+    *(UserFile **)tvec_push(p, &p->user_files) = f;
+    return f;
+}
+
+/* Closes f's output; a write error is reported at `at` when report is set. */
+static void close_output(Parser *p, UserFile *f, SourcePos at, int report)
+{
+    FILE *out = f->out;
+    if (!out)
+        return;
+    f->out = NULL; /* before any error: the error path closes the others */
+    int failed = ferror(out);
+    if (fclose(out) != 0)
+        failed = 1;
+    if (failed && report)
+        parse_fail_io(p, at, "error writing '%s'", f->name);
+}
+
+void user_files_close_all(Parser *p, int report)
+{
+    UserFile **files = p->user_files.data;
+    for (int i = 0; i < p->user_files.n; i++)
+        close_output(p, files[i], files[i]->opened_at, report);
+}
+
+/* The whole of an open stream into the temporary arena (closes fp). */
+static void slurp(Parser *p, UserFile *f, FILE *fp)
+{
+    size_t cap = 4096, n = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        n += fread(buf + n, 1, cap - n, fp);
+        if (n < cap)
+            break;
+        char *bigger = cap > ((size_t)1 << 31) ? NULL : realloc(buf, cap * 2);
+        if (!bigger) {
+            free(buf);
+            buf = NULL;
+            break;
+        }
+        buf = bigger;
+        cap *= 2;
+    }
+    int failed = ferror(fp);
+    fclose(fp);
+    if (!buf)
+        parse_fail(p, f->opened_at, "out of memory reading '%s'", f->name);
+    if (failed) {
+        free(buf);
+        parse_fail_io(p, f->opened_at, "cannot read '%s'", f->name);
+    }
+    char *kept = arena_alloc_uninit(p->temp, n + 1);
+    if (kept) {
+        memcpy(kept, buf, n);
+        kept[n] = '\0';
+    }
+    free(buf);
+    if (!kept)
+        parse_fail(p, f->opened_at, "out of memory reading '%s'", f->name);
+    f->buf = kept;
+    f->size = n;
+}
+
+/* POV-Ray looks for a file to read in the current folder, then in its
+ * library paths; hstrace also looks in the scene's folder first among the
+ * latter, as #include does. */
+static FILE *open_for_reading(Parser *p, const char *name)
+{
+    FILE *fp = fopen(name, "rb");
+    if (fp || name[0] == '/')
+        return fp;
+    const char *dirs[130];
+    int nd = 0;
+    dirs[nd++] = p->files[p->depth - 1].dir;
+    for (int i = 0; i < p->opts->ninclude_dirs && nd < 128; i++)
+        if (p->opts->include_dirs[i])
+            dirs[nd++] = p->opts->include_dirs[i];
+    for (int i = 0; i < nd; i++) {
+        if (strcmp(dirs[i], ".") == 0)
+            continue;
+        size_t n = strlen(dirs[i]) + strlen(name) + 2;
+        char *path = tmp_alloc(p, n);
+        snprintf(path, n, "%s%s%s", dirs[i], dirs[i][strlen(dirs[i]) - 1] == '/' ? "" : "/", name);
+        fp = fopen(path, "rb");
+        if (fp)
+            return fp;
+    }
+    return NULL;
+}
+
+/* The file a token names, checked to be open in the wanted mode. */
+static UserFile *file_of(Parser *p, const char *directive, int reading)
+{
+    p->no_macro_calls++;
+    Token t = *next(p);
+    p->no_macro_calls--;
+    Symbol *s = t.type == TK_WORD && t.kw < 0 && !t.elem ? symbol_find(p, t.text, t.len) : NULL;
+    if (!s && t.type == TK_WORD && t.kw < 0 && !t.elem)
+        parse_fail(p, t.pos,
+                   "'%.*s' is not an open file: no #fopen declared it, or it was closed (by #fclose, or when "
+                   "a #read reached the end of its data)",
+                   t.len, t.text);
+    if (!s || s->value.kind != VAL_FILE) {
+        char what[80];
+        snprintf(what, sizeof what, "a file identifier opened by #fopen after '%s ('", directive);
+        fail_expected(p, &t, what);
+    }
+    UserFile *f = s->value.file;
+    if (reading && !f->reading)
+        parse_fail(p, t.pos, "cannot read from '%.*s': file '%s' is open for writing", t.len, t.text, f->name);
+    if (!reading && f->reading)
+        parse_fail(p, t.pos, "cannot write to '%.*s': file '%s' is open for reading", t.len, t.text, f->name);
+    return f;
+}
+
+/* ---- #fopen / #fclose -------------------------------------------------------- */
+
+void directive_fopen(Parser *p, const Token *hash)
+{
+    (void)hash;
+    p->no_macro_calls++;
+    Token id = *next(p);
+    p->no_macro_calls--;
+    if (id.type != TK_WORD || id.kw >= 0 || id.elem)
+        fail_expected(p, &id, "a new identifier after '#fopen'");
+    Symbol *old = symbol_find(p, id.text, id.len);
+    if (old && old->value.kind != VAL_FILE)
+        parse_fail(p, id.pos, "#fopen needs a new identifier: '%.*s' is already declared as %s", id.len, id.text,
+                   value_kind_name(old->value.kind));
+    SourcePos name_at = peek(p)->pos;
+    char *name = parse_string(p);
+    Token mode = *next(p);
+    if (!is_kw(&mode, KW_read) && !is_kw(&mode, KW_write) && !is_kw(&mode, KW_append))
+        fail_expected(p, &mode, "'read', 'write' or 'append' after the file name of '#fopen'");
+    if (old) /* POV-Ray lets an open file's identifier be reused */
+        close_output(p, old->value.file, id.pos, 1);
+    UserFile *f = new_user_file(p, name, name_at);
+    if (mode.kw == KW_read) {
+        FILE *fp = open_for_reading(p, name);
+        if (!fp)
+            parse_fail_io(p, name_at, "cannot open '%s' for reading: %s", name, strerror(errno));
+        f->reading = 1;
+        slurp(p, f, fp);
+    } else {
+        f->out = fopen(name, mode.kw == KW_write ? "w" : "a");
+        if (!f->out)
+            parse_fail_io(p, name_at, "cannot open '%s' for %s: %s", name,
+                          mode.kw == KW_write ? "writing" : "appending", strerror(errno));
+    }
+    Value v = { .kind = VAL_FILE, .file = f };
+    symbol_define_global(p, id.text, id.len, &v);
+}
+
+/* POV-Ray accepts #fclose of an identifier that is no longer (or never
+ * was) an open file: a file closed at the end of its data may be closed
+ * again by the scene. */
+void directive_fclose(Parser *p)
+{
+    p->no_macro_calls++;
+    Token id = *next(p);
+    p->no_macro_calls--;
+    if (id.type != TK_WORD || id.kw >= 0)
+        fail_expected(p, &id, "a file identifier after '#fclose'");
+    Symbol *s = id.elem ? NULL : symbol_find(p, id.text, id.len);
+    if (!s || s->value.kind != VAL_FILE)
+        return;
+    close_output(p, s->value.file, id.pos, 1);
+    symbol_undef(p, id.text, id.len);
+}
+
+/* ---- reading data ---------------------------------------------------------- */
+
+typedef enum { DT_EOF, DT_NUMBER, DT_STRING, DT_PUNCT } DataTokenType;
+
+typedef struct {
+    DataTokenType type;
+    int punct;
+    double number;
+    char *string;
+    SourcePos pos;
+    size_t offset; /* where it starts, to unread it */
+    int line, col;
+} DataToken;
+
+static int data_char(const UserFile *f, size_t ahead)
+{
+    return f->offset + ahead < f->size ? (unsigned char)f->buf[f->offset + ahead] : -1;
+}
+
+static void data_advance(UserFile *f)
+{
+    if (f->offset >= f->size)
+        return;
+    if (f->buf[f->offset] == '\n') {
+        f->line++;
+        f->col = 1;
+    } else {
+        f->col++;
+    }
+    f->offset++;
+}
+
+static int is_digit(int c) { return c >= '0' && c <= '9'; }
+
+/* The data of a #read file is written in the scene language's own tokens
+ * (POV-Ray tokenises it with its scene tokeniser): blanks and comments
+ * between them. */
+static void data_next(Parser *p, UserFile *f, DataToken *t)
+{
+    for (;;) {
+        int c = data_char(f, 0);
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
+            data_advance(f);
+        } else if (c == '/' && data_char(f, 1) == '/') {
+            while (f->offset < f->size && f->buf[f->offset] != '\n')
+                data_advance(f);
+        } else if (c == '/' && data_char(f, 1) == '*') {
+            SourcePos start = { f->name, f->line, f->col };
+            data_advance(f);
+            data_advance(f);
+            while (!(data_char(f, 0) == '*' && data_char(f, 1) == '/')) {
+                if (f->offset >= f->size)
+                    parse_fail(p, start, "comment starting here has no closing '*/'");
+                data_advance(f);
+            }
+            data_advance(f);
+            data_advance(f);
+        } else {
+            break;
+        }
+    }
+    memset(t, 0, sizeof *t);
+    t->pos = (SourcePos){ f->name, f->line, f->col };
+    t->offset = f->offset;
+    t->line = f->line;
+    t->col = f->col;
+    int c = data_char(f, 0);
+    if (c < 0) {
+        t->type = DT_EOF;
+        return;
+    }
+    if (is_digit(c) || (c == '.' && is_digit(data_char(f, 1)))) {
+        char *end;
+        t->type = DT_NUMBER;
+        t->number = strtod(f->buf + f->offset, &end);
+        /* strtod accepts more than a POV-Ray number (hex, "inf"); only a
+         * decimal number can start with a digit or '.', so this is the
+         * number's extent */
+        while (f->buf + f->offset < end)
+            data_advance(f);
+        return;
+    }
+    if (c == '"') {
+        data_advance(f);
+        size_t start = f->offset;
+        while (data_char(f, 0) != '"') {
+            if (f->offset >= f->size)
+                parse_fail(p, t->pos, "string starting here has no closing '\"'");
+            if (data_char(f, 0) == '\\' && f->offset + 1 < f->size)
+                data_advance(f); /* \" does not end the string; kept as written */
+            data_advance(f);
+        }
+        t->type = DT_STRING;
+        t->string = tmp_strndup(p, f->buf + start, f->offset - start);
+        data_advance(f);
+        return;
+    }
+    t->type = DT_PUNCT;
+    t->punct = c;
+    data_advance(f);
+}
+
+static void data_unread(UserFile *f, const DataToken *t)
+{
+    f->offset = t->offset;
+    f->line = t->line;
+    f->col = t->col;
+}
+
+/* A float, with an optional sign; 0 (nothing read) when none comes next. */
+static int data_float(Parser *p, UserFile *f, double *val)
+{
+    DataToken t;
+    data_next(p, f, &t);
+    double sign = 1;
+    if (t.type == DT_PUNCT && (t.punct == '-' || t.punct == '+')) {
+        sign = t.punct == '-' ? -1 : 1;
+        data_next(p, f, &t);
+        if (t.type != DT_NUMBER)
+            parse_fail(p, t.pos, "expected a number after the sign");
+    }
+    if (t.type != DT_NUMBER) {
+        data_unread(f, &t);
+        return 0;
+    }
+    *val = sign * t.number;
+    return 1;
+}
+
+/* One value into *v; returns 1 when the data ended (before or just after
+ * it): then v is set only if a value was read (*got). */
+static int read_value(Parser *p, UserFile *f, Value *v, int *got)
+{
+    *got = 0;
+    DataToken t;
+    data_next(p, f, &t);
+    if (t.type == DT_EOF)
+        return 1;
+    memset(v, 0, sizeof *v);
+    if (t.type == DT_NUMBER || (t.type == DT_PUNCT && (t.punct == '-' || t.punct == '+'))) {
+        data_unread(f, &t);
+        v->kind = VAL_NUMERIC;
+        v->terms = 1;
+        (void)data_float(p, f, &v->v[0]);
+    } else if (t.type == DT_PUNCT && t.punct == '<') {
+        int n = 0;
+        double x;
+        while (data_float(p, f, &x)) {
+            DataToken c;
+            if (n == 5)
+                parse_fail(p, t.pos, "more than 5 components in this vector");
+            v->v[n++] = x;
+            data_next(p, f, &c);
+            if (c.type == DT_EOF)
+                parse_fail(p, t.pos, "this vector has no closing '>'");
+            if (!(c.type == DT_PUNCT && c.punct == ','))
+                data_unread(f, &c);
+        }
+        DataToken close;
+        data_next(p, f, &close);
+        if (!(close.type == DT_PUNCT && close.punct == '>'))
+            parse_fail(p, close.pos, "expected a vector component or '>'");
+        if (n < 2)
+            parse_fail(p, t.pos, "a vector needs at least 2 components");
+        v->kind = VAL_NUMERIC;
+        v->terms = n;
+    } else if (t.type == DT_STRING) {
+        v->kind = VAL_STRING;
+        v->string = t.string;
+    } else {
+        parse_fail(p, t.pos, "expected a float, a vector or a string");
+    }
+    *got = 1;
+    DataToken after;
+    data_next(p, f, &after);
+    if (after.type == DT_EOF)
+        return 1;
+    if (!(after.type == DT_PUNCT && after.punct == ','))
+        data_unread(f, &after);
+    return 0;
+}
+
+/* Where a value read goes: a new global, an existing variable (POV-Ray
+ * overwrites a float, vector or string wherever it is visible), or an
+ * array element. */
+static void store(Parser *p, const Token *t, const Value *v)
+{
+    if (t->elem) {
+        t->elem->value = *v;
+        return;
+    }
+    symbol_set(p, t->text, t->len, 0, v);
+}
+
+void directive_read(Parser *p)
+{
+    expect_punct(p, '(', "'#read'");
+    Token file_tok = *peek(p);
+    UserFile *f = file_of(p, "#read", 1);
+    int ended = 0;
+    if (!is_punct(next(p), ','))
+        unget(p);
+    for (;;) {
+        Token *t;
+        p->no_macro_calls++;
+        t = next(p);
+        p->no_macro_calls--;
+        if (is_punct(t, ')'))
+            break;
+        if (t->type != TK_WORD || t->kw >= 0)
+            fail_expected(p, t, "a variable or ')' in '#read'");
+        Token var = *t;
+        if (!var.elem) {
+            Symbol *old = symbol_find(p, var.text, var.len);
+            if (old && old->value.kind != VAL_NUMERIC && old->value.kind != VAL_STRING)
+                parse_fail(p, var.pos, "'#read' cannot store into '%.*s', which is %s", var.len, var.text,
+                           value_kind_name(old->value.kind));
+        }
+        if (!ended) {
+            Value v;
+            int got;
+            ended = read_value(p, f, &v, &got);
+            if (got)
+                store(p, &var, &v);
+        }
+        t = next(p);
+        if (!is_punct(t, ','))
+            unget(p);
+    }
+    if (ended) /* POV-Ray closes the file and forgets its identifier */
+        symbol_undef(p, file_tok.text, file_tok.len);
+}
+
+/* ---- writing ------------------------------------------------------------- */
+
+/* uint8 ... sint32le: the following values as binary integers, rounded and
+ * clamped to the type's range. */
+static int binary_type(int kw, long *lo, long *hi, int *bytes, int *big_endian)
+{
+    *big_endian = 0;
+    switch (kw) {
+    case KW_uint8: *lo = 0; *hi = 255; *bytes = 1; return 1;
+    case KW_sint8: *lo = -128; *hi = 127; *bytes = 1; return 1;
+    case KW_uint16be: *big_endian = 1; /* fall through */
+    case KW_uint16le: *lo = 0; *hi = 65535; *bytes = 2; return 1;
+    case KW_sint16be: *big_endian = 1; /* fall through */
+    case KW_sint16le: *lo = -32768; *hi = 32767; *bytes = 2; return 1;
+    case KW_sint32be: *big_endian = 1; /* fall through */
+    case KW_sint32le: *lo = -2147483647L - 1; *hi = 2147483647L; *bytes = 4; return 1;
+    default: return 0;
+    }
+}
+
+static void write_binary(Parser *p, UserFile *f, long lo, long hi, int bytes, int big_endian)
+{
+    for (;;) {
+        Token *t = peek(p);
+        if (is_punct(t, ',') || is_punct(t, ')'))
+            return;
+        if (!token_starts_expression(p, t))
+            fail_expected(p, next(p), "a number after the binary type in '#write'");
+        double e[5] = { 0 };
+        int terms = 1;
+        parse_express(p, e, &terms);
+        for (int i = 0; i < terms; i++) {
+            long val = e[i] <= (double)lo ? lo : e[i] >= (double)hi ? hi : (long)floor(e[i] + 0.5);
+            unsigned long u = (unsigned long)val;
+            for (int j = 0; j < bytes; j++) {
+                int shift = (big_endian ? bytes - 1 - j : j) * 8;
+                fputc((int)((u >> shift) & 0xff), f->out);
+            }
+        }
+    }
+}
+
+void directive_write(Parser *p)
+{
+    expect_punct(p, '(', "'#write'");
+    UserFile *f = file_of(p, "#write", 0);
+    for (;;) {
+        Token *t = peek(p);
+        if (is_punct(t, ')')) {
+            next(p);
+            break;
+        }
+        if (is_punct(t, ',')) {
+            next(p);
+            continue;
+        }
+        long lo, hi;
+        int bytes, big_endian;
+        if (t->type == TK_WORD && binary_type(t->kw, &lo, &hi, &bytes, &big_endian)) {
+            next(p);
+            write_binary(p, f, lo, hi, bytes, big_endian);
+        } else if (token_starts_string(p, t)) {
+            fputs(parse_string(p), f->out);
+        } else if (token_starts_expression(p, t)) {
+            double e[5] = { 0 };
+            int terms = 1;
+            parse_express(p, e, &terms);
+            if (terms == 1) {
+                fprintf(f->out, "%g", e[0]);
+            } else {
+                fputc('<', f->out);
+                for (int i = 0; i < terms; i++)
+                    fprintf(f->out, i ? ",%g" : "%g", e[i]);
+                fputs("> ", f->out);
+            }
+        } else {
+            fail_expected(p, next(p), "a string or an expression in '#write'");
+        }
+    }
+}
