@@ -53,13 +53,14 @@ Value parse_array(Parser *p, const Token *kw)
     a->declared_at = kw->pos;
     a->count = 1;
     for (;;) {
-        Token *t = next(p);
-        if (!is_punct(t, '[')) {
-            if (a->ndims == 0)
-                fail_expected(p, t, "'[' and the array size after 'array'");
-            unget(p);
+        /* After the first size, look at the raw text: `#local A = array[N]`
+         * with no ';' may be followed by a directive that uses A, which
+         * must not be carried out before A is stored. */
+        if (a->ndims > 0 && !lex_next_is_punct(p, '['))
             break;
-        }
+        Token *t = next(p);
+        if (!is_punct(t, '['))
+            fail_expected(p, t, "'[' and the array size after 'array'");
         if (a->ndims == MAX_ARRAY_DIMS)
             parse_fail(p, t->pos, "arrays have at most %d dimensions", MAX_ARRAY_DIMS);
         Token at = *peek(p);
@@ -74,7 +75,7 @@ Value parse_array(Parser *p, const Token *kw)
             parse_fail(p, at.pos, "array of more than %ld elements", MAX_ARRAY_ELEMENTS);
     }
     a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)a->count);
-    if (is_punct(peek(p), '{'))
+    if (lex_next_is_punct(p, '{'))
         parse_initialiser(p, a, 0, 0);
     Value v;
     memset(&v, 0, sizeof v);

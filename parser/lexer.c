@@ -449,6 +449,17 @@ void lex_raw(Parser *p, Token *t)
     advance(f);
 }
 
+int lex_next_is_punct(Parser *p, int c)
+{
+    if (p->ungot)
+        return is_punct(&p->tok, c);
+    LexMark m = lex_mark(p);
+    Token t;
+    lex_raw(p, &t);
+    lex_seek(p, m);
+    return is_punct(&t, c);
+}
+
 int lex_next_is_keyword(Parser *p, int kw)
 {
     if (p->ungot)

@@ -291,6 +291,7 @@ int lex_skip_semicolon(Parser *p); /* consume a ';' if it comes next */
 /* Whether the next token is keyword kw, looking at the raw text so that no
  * directive is carried out early (the current #declare is not stored yet). */
 int lex_next_is_keyword(Parser *p, int kw);
+int lex_next_is_punct(Parser *p, int c); /* the same for punctuation */
 const char *dir_of(Parser *p, const char *path);
 
 /* directives.c: the token stream after #directives */

@@ -636,6 +636,12 @@ static void test_errors(void)
         Scene *s = parse("#version 3.7;\n#declare S = \"x\"\nbox { 0, strlen(S) }");
         tap_ok(s && s->nobjects == 1, "a string declaration needs no ';' (as in POV-Ray 3.7)");
         scene_free(s);
+        /* An array declared without ';', then a directive using it (as
+         * POV-Ray's portfolio/html_gen.inc does). */
+        s = parse("#declare N = 3;\n#local A = array[N]\n#local A[0] = 1;\n#local A[2] = A[0] + 1;\n"
+                  "triangle { 0, x, y translate A[2] * x }");
+        tap_ok(s && s->nobjects == 1, "an array declared without ';' is stored before the next directive runs");
+        scene_free(s);
         /* The older spelling of #default, which POV-Ray 3.7 still reads. */
         s = parse("default { finish { ambient 0.3 } }\ntriangle { 0, x, y }");
         tap_ok(s && near(s->default_texture.finish.ambient[0], 0.3), "'default { }' without '#' is #default");
