@@ -23,10 +23,7 @@ typedef struct UserFile {
     SourcePos opened_at;
     FILE *out;         /* write / append, until closed */
     int reading;
-    /* reading: the data, and where the next token starts */
-    const char *buf;
-    size_t size, offset;
-    int line, col;
+    SourceFile data; /* reading: the data, tokenised by the scene lexer */
 } UserFile;
 
 /* ---- files --------------------------------------------------------------- */
@@ -39,8 +36,6 @@ static UserFile *new_user_file(Parser *p, const char *name, SourcePos at)
     if (!f->name)
         parse_fail(p, at, "out of memory");
     f->opened_at = at;
-    f->line = 1;
-    f->col = 1;
     *(UserFile **)tvec_push(p, &p->user_files) = f;
     return f;
 }
@@ -67,43 +62,6 @@ void user_files_close_all(Parser *p, int report)
 }
 
 /* The whole of an open stream into the temporary arena (closes fp). */
-static void slurp(Parser *p, UserFile *f, FILE *fp)
-{
-    size_t cap = 4096, n = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        n += fread(buf + n, 1, cap - n, fp);
-        if (n < cap)
-            break;
-        char *bigger = cap > ((size_t)1 << 31) ? NULL : realloc(buf, cap * 2);
-        if (!bigger) {
-            free(buf);
-            buf = NULL;
-            break;
-        }
-        buf = bigger;
-        cap *= 2;
-    }
-    int failed = ferror(fp);
-    fclose(fp);
-    if (!buf)
-        parse_fail(p, f->opened_at, "out of memory reading '%s'", f->name);
-    if (failed) {
-        free(buf);
-        parse_fail_io(p, f->opened_at, "cannot read '%s'", f->name);
-    }
-    char *kept = arena_alloc_uninit(p->temp, n + 1);
-    if (kept) {
-        memcpy(kept, buf, n);
-        kept[n] = '\0';
-    }
-    free(buf);
-    if (!kept)
-        parse_fail(p, f->opened_at, "out of memory reading '%s'", f->name);
-    f->buf = kept;
-    f->size = n;
-}
-
 /* POV-Ray looks for a file to read in the current folder, then in its
  * library paths; hstrace also looks in the scene's folder first among the
  * latter, as #include does. */
@@ -183,7 +141,9 @@ void directive_fopen(Parser *p, const Token *hash)
         if (!fp)
             parse_fail_io(p, name_at, "cannot open '%s' for reading: %s", name, strerror(errno));
         f->reading = 1;
-        slurp(p, f, fp);
+        f->data.name = f->name;
+        f->data.buf = lex_read_file(p, fp, f->name, name_at, &f->data.size);
+        f->data.line = f->data.col = 1;
     } else {
         f->out = fopen(name, mode.kw == KW_write ? "w" : "a");
         if (!f->out)
@@ -213,126 +173,37 @@ void directive_fclose(Parser *p)
 
 /* ---- reading data ---------------------------------------------------------- */
 
-typedef enum { DT_EOF, DT_NUMBER, DT_STRING, DT_PUNCT } DataTokenType;
-
-typedef struct {
-    DataTokenType type;
-    int punct;
-    double number;
-    char *string;
-    SourcePos pos;
-    size_t offset; /* where it starts, to unread it */
-    int line, col;
-} DataToken;
-
-static int data_char(const UserFile *f, size_t ahead)
+/* The data is written in the scene language's own tokens (POV-Ray reads it
+ * with its scene tokeniser: comments, escapes in strings), so the lexer
+ * reads it too, from the file's own cursor. */
+static void data_next(Parser *p, UserFile *f, Token *t)
 {
-    return f->offset + ahead < f->size ? (unsigned char)f->buf[f->offset + ahead] : -1;
+    lex_token(p, &f->data, t);
 }
 
-static void data_advance(UserFile *f)
+/* Puts t back; at the end of the data there is nothing to put back. */
+static void data_unread(UserFile *f, const Token *t)
 {
-    if (f->offset >= f->size)
+    if (t->type == TK_EOF)
         return;
-    if (f->buf[f->offset] == '\n') {
-        f->line++;
-        f->col = 1;
-    } else {
-        f->col++;
-    }
-    f->offset++;
-}
-
-static int is_digit(int c) { return c >= '0' && c <= '9'; }
-
-/* The data of a #read file is written in the scene language's own tokens
- * (POV-Ray tokenises it with its scene tokeniser): blanks and comments
- * between them. */
-static void data_next(Parser *p, UserFile *f, DataToken *t)
-{
-    for (;;) {
-        int c = data_char(f, 0);
-        if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
-            data_advance(f);
-        } else if (c == '/' && data_char(f, 1) == '/') {
-            while (f->offset < f->size && f->buf[f->offset] != '\n')
-                data_advance(f);
-        } else if (c == '/' && data_char(f, 1) == '*') {
-            SourcePos start = { f->name, f->line, f->col };
-            data_advance(f);
-            data_advance(f);
-            while (!(data_char(f, 0) == '*' && data_char(f, 1) == '/')) {
-                if (f->offset >= f->size)
-                    parse_fail(p, start, "comment starting here has no closing '*/'");
-                data_advance(f);
-            }
-            data_advance(f);
-            data_advance(f);
-        } else {
-            break;
-        }
-    }
-    memset(t, 0, sizeof *t);
-    t->pos = (SourcePos){ f->name, f->line, f->col };
-    t->offset = f->offset;
-    t->line = f->line;
-    t->col = f->col;
-    int c = data_char(f, 0);
-    if (c < 0) {
-        t->type = DT_EOF;
-        return;
-    }
-    if (is_digit(c) || (c == '.' && is_digit(data_char(f, 1)))) {
-        char *end;
-        t->type = DT_NUMBER;
-        t->number = strtod(f->buf + f->offset, &end);
-        /* strtod accepts more than a POV-Ray number (hex, "inf"); only a
-         * decimal number can start with a digit or '.', so this is the
-         * number's extent */
-        while (f->buf + f->offset < end)
-            data_advance(f);
-        return;
-    }
-    if (c == '"') {
-        data_advance(f);
-        size_t start = f->offset;
-        while (data_char(f, 0) != '"') {
-            if (f->offset >= f->size)
-                parse_fail(p, t->pos, "string starting here has no closing '\"'");
-            if (data_char(f, 0) == '\\' && f->offset + 1 < f->size)
-                data_advance(f); /* \" does not end the string; kept as written */
-            data_advance(f);
-        }
-        t->type = DT_STRING;
-        t->string = tmp_strndup(p, f->buf + start, f->offset - start);
-        data_advance(f);
-        return;
-    }
-    t->type = DT_PUNCT;
-    t->punct = c;
-    data_advance(f);
-}
-
-static void data_unread(UserFile *f, const DataToken *t)
-{
-    f->offset = t->offset;
-    f->line = t->line;
-    f->col = t->col;
+    f->data.offset = (size_t)(t->text - f->data.buf);
+    f->data.line = t->pos.line;
+    f->data.col = t->pos.column;
 }
 
 /* A float, with an optional sign; 0 (nothing read) when none comes next. */
 static int data_float(Parser *p, UserFile *f, double *val)
 {
-    DataToken t;
+    Token t;
     data_next(p, f, &t);
     double sign = 1;
-    if (t.type == DT_PUNCT && (t.punct == '-' || t.punct == '+')) {
+    if (t.type == TK_PUNCT && (t.punct == '-' || t.punct == '+')) {
         sign = t.punct == '-' ? -1 : 1;
         data_next(p, f, &t);
-        if (t.type != DT_NUMBER)
+        if (t.type != TK_NUMBER)
             parse_fail(p, t.pos, "expected a number after the sign");
     }
-    if (t.type != DT_NUMBER) {
+    if (t.type != TK_NUMBER) {
         data_unread(f, &t);
         return 0;
     }
@@ -345,50 +216,50 @@ static int data_float(Parser *p, UserFile *f, double *val)
 static int read_value(Parser *p, UserFile *f, Value *v, int *got)
 {
     *got = 0;
-    DataToken t;
+    Token t;
     data_next(p, f, &t);
-    if (t.type == DT_EOF)
+    if (t.type == TK_EOF)
         return 1;
     memset(v, 0, sizeof *v);
-    if (t.type == DT_NUMBER || (t.type == DT_PUNCT && (t.punct == '-' || t.punct == '+'))) {
+    if (t.type == TK_NUMBER || (t.type == TK_PUNCT && (t.punct == '-' || t.punct == '+'))) {
         data_unread(f, &t);
         v->kind = VAL_NUMERIC;
         v->terms = 1;
         (void)data_float(p, f, &v->v[0]);
-    } else if (t.type == DT_PUNCT && t.punct == '<') {
+    } else if (t.type == TK_PUNCT && t.punct == '<') {
         int n = 0;
         double x;
         while (data_float(p, f, &x)) {
-            DataToken c;
+            Token c;
             if (n == 5)
                 parse_fail(p, t.pos, "more than 5 components in this vector");
             v->v[n++] = x;
             data_next(p, f, &c);
-            if (c.type == DT_EOF)
+            if (c.type == TK_EOF)
                 parse_fail(p, t.pos, "this vector has no closing '>'");
-            if (!(c.type == DT_PUNCT && c.punct == ','))
+            if (!(c.type == TK_PUNCT && c.punct == ','))
                 data_unread(f, &c);
         }
-        DataToken close;
+        Token close;
         data_next(p, f, &close);
-        if (!(close.type == DT_PUNCT && close.punct == '>'))
+        if (!(close.type == TK_PUNCT && close.punct == '>'))
             parse_fail(p, close.pos, "expected a vector component or '>'");
         if (n < 2)
             parse_fail(p, t.pos, "a vector needs at least 2 components");
         v->kind = VAL_NUMERIC;
         v->terms = n;
-    } else if (t.type == DT_STRING) {
+    } else if (t.type == TK_STRING) {
         v->kind = VAL_STRING;
         v->string = t.string;
     } else {
         parse_fail(p, t.pos, "expected a float, a vector or a string");
     }
     *got = 1;
-    DataToken after;
+    Token after;
     data_next(p, f, &after);
-    if (after.type == DT_EOF)
+    if (after.type == TK_EOF)
         return 1;
-    if (!(after.type == DT_PUNCT && after.punct == ','))
+    if (!(after.type == TK_PUNCT && after.punct == ','))
         data_unread(f, &after);
     return 0;
 }

@@ -83,15 +83,11 @@ void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)
     f->called_at = called_at;
 }
 
-/* Returns 0 when the file cannot be opened (the caller words the message);
- * read errors after opening are reported here. The file is read straight
- * into the temporary arena (no copy, and an error longjmp cannot leak it):
- * its size is known for a regular file, and pipes grow a malloc'd buffer. */
-int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at)
+/* The file is read straight into the temporary arena (no copy, and an
+ * error longjmp cannot leak it): its size is known for a regular file, and
+ * pipes grow a malloc'd buffer. */
+const char *lex_read_file(Parser *p, FILE *fp, const char *shown_name, SourcePos at, size_t *size_out)
 {
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return 0;
     struct stat st;
     if (fstat(fileno(fp), &st) == 0 && S_ISREG(st.st_mode) && (uintmax_t)st.st_size < ((uintmax_t)1 << 40)) {
         size_t size = (size_t)st.st_size;
@@ -106,8 +102,8 @@ int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos
         if (failed)
             parse_fail_io(p, at, "cannot read '%s'", shown_name);
         kept[n] = '\0';
-        lex_open_buffer(p, shown_name, kept, n, at);
-        return 1;
+        *size_out = n;
+        return kept;
     }
     size_t cap = 65536, n = 0;
     char *buf = malloc(cap);
@@ -142,7 +138,20 @@ int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos
     memcpy(kept, buf, n);
     kept[n] = '\0';
     free(buf);
-    lex_open_buffer(p, shown_name, kept, n, at);
+    *size_out = n;
+    return kept;
+}
+
+/* Returns 0 when the file cannot be opened (the caller words the message);
+ * read errors after opening are reported here. */
+int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return 0;
+    size_t size;
+    const char *buf = lex_read_file(p, fp, shown_name, at, &size);
+    lex_open_buffer(p, shown_name, buf, size, at);
     return 1;
 }
 
@@ -389,7 +398,11 @@ static void lex_string(Parser *p, SourceFile *f, Token *t)
 
 void lex_raw(Parser *p, Token *t)
 {
-    SourceFile *f = &p->files[p->depth - 1];
+    lex_token(p, &p->files[p->depth - 1], t);
+}
+
+void lex_token(Parser *p, SourceFile *f, Token *t)
+{
     skip_space(p, f);
     memset(t, 0, sizeof *t);
     t->kw = -1;

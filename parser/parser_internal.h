@@ -10,6 +10,7 @@
 #define HST_PARSER_INTERNAL_H
 
 #include <setjmp.h>
+#include <stdio.h>
 #include <stddef.h>
 
 #include "keywords.h"
@@ -285,6 +286,11 @@ int lex_peek_char(Parser *p); /* the next character after blanks, or -1 */
 size_t lex_offset(Parser *p);
 int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at);
 void lex_raw(Parser *p, Token *t); /* TK_EOF at the end of the current file */
+/* The next token of f, which need not be on the include stack (#read's
+ * data is written in the scene language's tokens). */
+void lex_token(Parser *p, SourceFile *f, Token *t);
+/* fp's whole contents in the temporary arena, NUL-terminated; closes fp. */
+const char *lex_read_file(Parser *p, FILE *fp, const char *shown_name, SourcePos at, size_t *size);
 LexMark lex_mark(Parser *p);
 void lex_seek(Parser *p, LexMark m);
 int lex_skip_semicolon(Parser *p); /* consume a ';' if it comes next */

@@ -895,6 +895,14 @@ static void test_file_io(void)
            "file closes at its end");
     scene_free(s);
 
+    /* Escapes in a string read back are resolved, as POV-Ray's scene
+     * tokeniser does (povray: "a\tb\"c" reads as 5 characters). */
+    write_file(data, "\"a\\tb\\\"c\"\n");
+    snprintf(text, sizeof text, "#fopen F \"%s\" read\n#read (F, S)\nbox { 0, strlen(S) }\n", data);
+    s = parse(text);
+    tap_ok(s && vnear(s->objects[0]->u.box.corner2, 5, 5, 5), "#read: escapes in strings are resolved, as in POV-Ray");
+    scene_free(s);
+
     /* #while (defined(F)): every value once; a trailing comma gives one
      * more round in which the variable keeps its value, as in POV-Ray */
     write_file(data, "1, 2,\n3");
