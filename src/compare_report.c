@@ -108,6 +108,33 @@ void compare_report_text(FILE *f, const CompareOptions *opt, const CompareResult
         fprintf(f, "\n");
 }
 
+void compare_json_image_fields(FILE *f, const char *indent, const ImageComparison *c)
+{
+    json_key_number(f, indent, "rmse", c->rmse, 0);
+    json_key_number(f, indent, "psnr", c->psnr, 0);
+    json_key_number(f, indent, "max_error", c->max_error, 0);
+    fprintf(f, "%s\"max_error_at\": [%d, %d],\n", indent, c->max_x, c->max_y);
+    json_key_count(f, indent, "pixels_over_threshold", c->over, 0);
+}
+
+void compare_json_mask_fields(FILE *f, const char *indent, const MaskComparison *m, const char *a_key,
+                              const char *b_key)
+{
+    json_key_count(f, indent, a_key, m->a_pixels, 0);
+    json_key_count(f, indent, b_key, m->b_pixels, 0);
+    json_key_count(f, indent, "disagree", m->disagree, 0);
+    json_key_number(f, indent, "share", m->share, 0);
+    json_key_count(f, indent, "other_lights", m->other_lights, 0);
+    json_key_count(f, indent, "shadow_edge", m->shadow_edge, 0);
+    json_key_count(f, indent, "silhouette", m->silhouette, 0);
+    json_key_count(f, indent, "interior", m->interior, 0);
+    if (m->interior)
+        fprintf(f, "%s\"first_interior_at\": [%d, %d],\n", indent, m->interior_x, m->interior_y);
+    else
+        fprintf(f, "%s\"first_interior_at\": null,\n", indent);
+    json_key_count(f, indent, "nonfinite_pixels", m->nonfinite, 0);
+}
+
 void compare_report_json(FILE *f, const CompareOptions *opt, const CompareResult *r)
 {
     const ImageComparison *c = &r->image;
@@ -115,18 +142,14 @@ void compare_report_json(FILE *f, const CompareOptions *opt, const CompareResult
     json_write_string(f, opt->a);
     fprintf(f, ",\n  \"b\": ");
     json_write_string(f, opt->b);
-    fprintf(f, ",\n  \"width\": %d,\n  \"height\": %d,\n  \"threshold\": ", c->width, c->height);
-    json_write_number(f, c->threshold);
-    fprintf(f, ",\n  \"rmse\": ");
-    json_write_number(f, c->rmse);
-    fprintf(f, ",\n  \"psnr\": ");
-    json_write_number(f, c->psnr);
-    fprintf(f, ",\n  \"max_error\": ");
-    json_write_number(f, c->max_error);
-    fprintf(f, ",\n  \"max_error_at\": [%d, %d],\n  \"pixels_over_threshold\": %ld,\n  \"share_over_threshold\": ",
-            c->max_x, c->max_y, c->over);
-    json_write_number(f, c->share);
-    fprintf(f, ",\n  \"nonfinite_pixels\": %ld,\n  \"masks\": ", c->nonfinite);
+    fprintf(f, ",\n");
+    json_key_count(f, "  ", "width", c->width, 0);
+    json_key_count(f, "  ", "height", c->height, 0);
+    json_key_number(f, "  ", "threshold", c->threshold, 0);
+    compare_json_image_fields(f, "  ", c);
+    json_key_number(f, "  ", "share_over_threshold", c->share, 0);
+    json_key_count(f, "  ", "nonfinite_pixels", c->nonfinite, 0);
+    fprintf(f, "  \"masks\": ");
     if (r->has_masks) {
         const MaskComparison *m = &r->masks;
         const char *names[4] = {"a3", "a4", "b3", "b4"};
@@ -141,18 +164,10 @@ void compare_report_json(FILE *f, const CompareOptions *opt, const CompareResult
             fprintf(f, ",\n");
         }
         fprintf(f, "    \"b_from_channels\": %s,\n", opt->mask_b_from_aov ? "true" : "false");
-        fprintf(f, "    \"a_pixels\": %ld,\n    \"b_pixels\": %ld,\n    \"disagree\": %ld,\n    \"share\": ",
-                m->a_pixels, m->b_pixels, m->disagree);
-        json_write_number(f, m->share);
-        fprintf(f, ",\n    \"other_lights\": %ld,\n    \"shadow_edge\": %ld,\n    \"silhouette\": %ld,\n"
-                   "    \"interior\": %ld,\n    \"first_interior_at\": ",
-                m->other_lights, m->shadow_edge, m->silhouette, m->interior);
-        if (m->interior)
-            fprintf(f, "[%d, %d]", m->interior_x, m->interior_y);
-        else
-            fprintf(f, "null");
-        fprintf(f, ",\n    \"allow_a_leaks\": %s,\n    \"a_leaks\": %ld,\n    \"nonfinite_pixels\": %ld\n  }",
-                opt->allow_a_leaks ? "true" : "false", m->a_leaks, m->nonfinite);
+        compare_json_mask_fields(f, "    ", m, "a_pixels", "b_pixels");
+        fprintf(f, "    \"allow_a_leaks\": %s,\n", opt->allow_a_leaks ? "true" : "false");
+        json_key_count(f, "    ", "a_leaks", m->a_leaks, 1);
+        fprintf(f, "  }");
     } else {
         fprintf(f, "null");
     }

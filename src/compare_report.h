@@ -24,6 +24,16 @@ void compare_judge(const CompareOptions *opt, CompareResult *r);
 
 /* A few lines for people (stdout), or one JSON object. */
 void compare_report_text(FILE *f, const CompareOptions *opt, const CompareResult *r);
+/* The members of an image comparison (rmse, psnr, max_error, max_error_at,
+ * pixels_over_threshold) and of a mask comparison (a_key, b_key: the two
+ * renderers' shadowed pixels; disagree, share, other_lights, shadow_edge,
+ * silhouette, interior, first_interior_at, nonfinite_pixels), one per line,
+ * each followed by a comma: the JSON of `hstrace compare` and of
+ * `hstrace vs-povray` share them. */
+void compare_json_image_fields(FILE *f, const char *indent, const ImageComparison *c);
+void compare_json_mask_fields(FILE *f, const char *indent, const MaskComparison *m, const char *a_key,
+                              const char *b_key);
+
 void compare_report_json(FILE *f, const CompareOptions *opt, const CompareResult *r);
 
 #endif

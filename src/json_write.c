@@ -24,3 +24,22 @@ void json_write_number(FILE *f, double v)
     else
         fprintf(f, "null");
 }
+
+void json_key_string(FILE *f, const char *indent, const char *key, const char *v, int last)
+{
+    fprintf(f, "%s\"%s\": ", indent, key);
+    json_write_string(f, v);
+    fputs(last ? "\n" : ",\n", f);
+}
+
+void json_key_number(FILE *f, const char *indent, const char *key, double v, int last)
+{
+    fprintf(f, "%s\"%s\": ", indent, key);
+    json_write_number(f, v);
+    fputs(last ? "\n" : ",\n", f);
+}
+
+void json_key_count(FILE *f, const char *indent, const char *key, long v, int last)
+{
+    fprintf(f, "%s\"%s\": %ld%s", indent, key, v, last ? "\n" : ",\n");
+}

@@ -13,4 +13,10 @@ void json_write_string(FILE *f, const char *s);
  * null (the PSNR of equal images, a time not measured). */
 void json_write_number(FILE *f, double v);
 
+/* One member on its own line, `indent"key": value`, followed by ",\n"
+ * (or "\n" for the last member of an object, last != 0). */
+void json_key_string(FILE *f, const char *indent, const char *key, const char *v, int last);
+void json_key_number(FILE *f, const char *indent, const char *key, double v, int last);
+void json_key_count(FILE *f, const char *indent, const char *key, long v, int last);
+
 #endif

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "compare_report.h"
 #include "json_write.h"
 
 enum { COL_METHOD, COL_WALL, COL_CPU, COL_SHADOW, COL_SPEEDUP, COL_RMSE, COL_EDGE, COL_INTERIOR, NCOLS };
@@ -111,34 +112,20 @@ void vs_report_text(FILE *f, const VsResult *r)
         fprintf(f, "%-13s  %s\n", heading[c], meaning[c]);
 }
 
-static void json_key_number(FILE *f, const char *indent, const char *key, double v, int last)
-{
-    fprintf(f, "%s\"%s\": ", indent, key);
-    json_write_number(f, v);
-    fprintf(f, last ? "\n" : ",\n");
-}
-
-static void json_key_string(FILE *f, const char *indent, const char *key, const char *v)
-{
-    fprintf(f, "%s\"%s\": ", indent, key);
-    json_write_string(f, v);
-    fprintf(f, ",\n");
-}
-
 void vs_report_json(FILE *f, const VsResult *r)
 {
     fprintf(f, "{\n");
-    json_key_string(f, "  ", "scene", r->scene);
+    json_key_string(f, "  ", "scene", r->scene, 0);
     fprintf(f, "  \"width\": %d,\n  \"height\": %d,\n  \"threads\": %d,\n  \"runs\": %d,\n", r->width, r->height,
             r->threads, r->runs);
     json_key_number(f, "  ", "threshold", r->threshold, 0);
-    json_key_string(f, "  ", "command", r->command);
-    json_key_string(f, "  ", "hstrace_version", r->hstrace_version);
-    json_key_string(f, "  ", "povray_version", r->povray_version);
-    json_key_string(f, "  ", "povray_path", r->povray_path);
-    json_key_string(f, "  ", "povray_options", r->povray_options);
-    json_key_string(f, "  ", "date", r->date);
-    json_key_string(f, "  ", "machine", r->machine);
+    json_key_string(f, "  ", "command", r->command, 0);
+    json_key_string(f, "  ", "hstrace_version", r->hstrace_version, 0);
+    json_key_string(f, "  ", "povray_version", r->povray_version, 0);
+    json_key_string(f, "  ", "povray_path", r->povray_path, 0);
+    json_key_string(f, "  ", "povray_options", r->povray_options, 0);
+    json_key_string(f, "  ", "date", r->date, 0);
+    json_key_string(f, "  ", "machine", r->machine, 0);
     fprintf(f, "  \"povray\": {\"wall\": ");
     json_write_number(f, r->povray.wall);
     fprintf(f, ", \"cpu\": ");
@@ -152,28 +139,17 @@ void vs_report_json(FILE *f, const VsResult *r)
         const VsRow *w = &r->rows[i];
         const MaskComparison *m = &w->mask;
         fprintf(f, "%s\n    {\n", i ? "," : "");
-        json_key_string(f, "      ", "method", w->name);
+        json_key_string(f, "      ", "method", w->name, 0);
         json_key_number(f, "      ", "wall", w->wall, 0);
         json_key_number(f, "      ", "cpu", w->cpu, 0);
         json_key_number(f, "      ", "shadow_testing", w->shadow, 0);
         json_key_number(f, "      ", "speedup", w->speedup, 0);
-        json_key_number(f, "      ", "rmse", w->image.rmse, 0);
-        json_key_number(f, "      ", "psnr", w->image.psnr, 0);
-        json_key_number(f, "      ", "max_error", w->image.max_error, 0);
-        fprintf(f, "      \"max_error_at\": [%d, %d],\n      \"pixels_over_threshold\": %ld,\n"
-                   "      \"nonfinite_pixels\": %ld,\n",
-                w->image.max_x, w->image.max_y, w->image.over, w->image.nonfinite);
-        fprintf(f, "      \"mask\": {\"povray_pixels\": %ld, \"hstrace_pixels\": %ld, \"disagree\": %ld, \"share\": ",
-                m->a_pixels, m->b_pixels, m->disagree);
-        json_write_number(f, m->share);
-        fprintf(f, ", \"edge\": %ld, \"shadow_edge\": %ld, \"silhouette\": %ld, \"interior\": %ld, "
-                   "\"other_lights\": %ld, \"first_interior_at\": ",
-                m->shadow_edge + m->silhouette, m->shadow_edge, m->silhouette, m->interior, m->other_lights);
-        if (m->interior)
-            fprintf(f, "[%d, %d]", m->interior_x, m->interior_y);
-        else
-            fprintf(f, "null");
-        fprintf(f, ", \"nonfinite_pixels\": %ld}", m->nonfinite);
+        compare_json_image_fields(f, "      ", &w->image);
+        json_key_count(f, "      ", "nonfinite_pixels", w->image.nonfinite, 0);
+        fprintf(f, "      \"mask\": {\n");
+        compare_json_mask_fields(f, "        ", m, "povray_pixels", "hstrace_pixels");
+        json_key_count(f, "        ", "edge", m->shadow_edge + m->silhouette, 1);
+        fprintf(f, "      }");
         if (w->render_png[0]) {
             fprintf(f, ",\n      \"render_png\": ");
             json_write_string(f, w->render_png);
