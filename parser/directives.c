@@ -458,19 +458,14 @@ static void directive_include(Parser *p, const Token *hash)
             parse_fail_io(p, at, "cannot open include file '%s'", name);
     } else {
         const char *dirs[130];
-        int nd = 0;
-        dirs[nd++] = p->files[p->depth - 1].dir;
-        for (int i = 0; i < p->opts->ninclude_dirs && nd < 128; i++)
-            if (p->opts->include_dirs[i])
-                dirs[nd++] = p->opts->include_dirs[i];
+        int nd = lex_search_dirs(p, dirs, 128);
         for (int i = 0; i < nd; i++) {
-            size_t n = strlen(dirs[i]) + strlen(name) + 2;
-            char *path = tmp_alloc(p, n);
-            if (strcmp(dirs[i], ".") == 0)
-                snprintf(path, n, "%s", name);
-            else
-                snprintf(path, n, "%s%s%s", dirs[i], dirs[i][strlen(dirs[i]) - 1] == '/' ? "" : "/", name);
-            if (lex_open_file(p, path, path, at)) {
+            const char *path;
+            FILE *fp = lex_open_in_dir(p, dirs[i], name, &path);
+            if (fp) {
+                size_t size;
+                const char *buf = lex_read_file(p, fp, path, at, &size);
+                lex_open_buffer(p, path, buf, size, at);
                 symbols_push_scope(p);
                 return;
             }

@@ -71,22 +71,12 @@ static FILE *open_for_reading(Parser *p, const char *name)
     if (fp || name[0] == '/')
         return fp;
     const char *dirs[130];
-    int nd = 0;
-    dirs[nd++] = p->files[p->depth - 1].dir;
-    for (int i = 0; i < p->opts->ninclude_dirs && nd < 128; i++)
-        if (p->opts->include_dirs[i])
-            dirs[nd++] = p->opts->include_dirs[i];
-    for (int i = 0; i < nd; i++) {
-        if (strcmp(dirs[i], ".") == 0)
-            continue;
-        size_t n = strlen(dirs[i]) + strlen(name) + 2;
-        char *path = tmp_alloc(p, n);
-        snprintf(path, n, "%s%s%s", dirs[i], dirs[i][strlen(dirs[i]) - 1] == '/' ? "" : "/", name);
-        fp = fopen(path, "rb");
-        if (fp)
-            return fp;
+    int nd = lex_search_dirs(p, dirs, 128);
+    for (int i = 0; i < nd && !fp; i++) {
+        const char *path;
+        fp = lex_open_in_dir(p, dirs[i], name, &path);
     }
-    return NULL;
+    return fp;
 }
 
 /* The file a token names, checked to be open in the wanted mode. */

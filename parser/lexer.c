@@ -142,6 +142,28 @@ const char *lex_read_file(Parser *p, FILE *fp, const char *shown_name, SourcePos
     return kept;
 }
 
+int lex_search_dirs(Parser *p, const char **dirs, int cap)
+{
+    int nd = 0;
+    dirs[nd++] = p->files[p->depth - 1].dir;
+    for (int i = 0; i < p->opts->ninclude_dirs && nd < cap; i++)
+        if (p->opts->include_dirs[i])
+            dirs[nd++] = p->opts->include_dirs[i];
+    return nd;
+}
+
+FILE *lex_open_in_dir(Parser *p, const char *dir, const char *name, const char **path)
+{
+    size_t n = strlen(dir) + strlen(name) + 2;
+    char *joined = tmp_alloc(p, n);
+    if (strcmp(dir, ".") == 0)
+        snprintf(joined, n, "%s", name);
+    else
+        snprintf(joined, n, "%s%s%s", dir, dir[strlen(dir) - 1] == '/' ? "" : "/", name);
+    *path = joined;
+    return fopen(joined, "rb");
+}
+
 /* Returns 0 when the file cannot be opened (the caller words the message);
  * read errors after opening are reported here. */
 int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at)

@@ -285,6 +285,11 @@ void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at);
 int lex_peek_char(Parser *p); /* the next character after blanks, or -1 */
 size_t lex_offset(Parser *p);
 int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at);
+/* The folders a relative #include (and #fopen ... read) name is looked
+ * for in, in order: the current file's, then each include folder. */
+int lex_search_dirs(Parser *p, const char **dirs, int cap);
+/* Opens dir/name ("." : name as it is) for reading; *path is the name used. */
+FILE *lex_open_in_dir(Parser *p, const char *dir, const char *name, const char **path);
 void lex_raw(Parser *p, Token *t); /* TK_EOF at the end of the current file */
 /* The next token of f, which need not be on the include stack (#read's
  * data is written in the scene language's tokens). */
