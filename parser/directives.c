@@ -17,6 +17,13 @@ int is_kw(const Token *t, int kw) { return t->type == TK_WORD && t->kw == kw; }
 
 static void handle_directive(Parser *p, const Token *hash);
 
+void debug_end_line(Parser *p)
+{
+    if (p->debug_line_open)
+        fputc('\n', stderr);
+    p->debug_line_open = 0;
+}
+
 static void count_braces(Parser *p, const Token *t, int dir)
 {
     if (is_punct(t, '{'))
@@ -574,10 +581,13 @@ static void handle_directive(Parser *p, const Token *hash)
         char *msg = parse_string(p);
         fputs(msg, stderr);
         fflush(stderr);
+        if (*msg)
+            p->debug_line_open = msg[strlen(msg) - 1] != '\n';
         return;
     }
     case KW_warning: {
         char *msg = parse_string(p);
+        debug_end_line(p);
         fprintf(stderr, "%s:%d:%d: warning: %s\n", hash->pos.file, hash->pos.line, hash->pos.column, msg);
         return;
     }

@@ -677,6 +677,7 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
         parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
     }
     parse_statements(p);
+    debug_end_line(p);
     user_files_close_all(p, 1);
     collect_approximations(p);
 
@@ -731,6 +732,7 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     init_scene(scene);
 
     if (setjmp(p->fail)) {
+        debug_end_line(p);
         user_files_close_all(p, 0);
         scene_free(p->scene);
         arena_free(p->temp);

@@ -224,6 +224,7 @@ typedef struct Parser {
 
     double version;
     int version_given;
+    int debug_line_open; /* #debug text on stderr does not end in a newline */
     int gamma_set;
     double assumed_gamma; /* 0 with gamma_set: srgb */
     int default_changed;  /* #default was used */
@@ -257,6 +258,9 @@ typedef struct Parser {
 #define HST_PRINTF(a, b)
 #endif
 _Noreturn void parse_fail(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
+/* Ends the line of #debug text on stderr, if the scene left one open, so
+ * that the next message (a warning, the error) starts a line of its own. */
+void debug_end_line(Parser *p);
 _Noreturn void parse_fail_io(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
 /* "expected X after Y, found Z" at the found token. */
 _Noreturn void fail_expected(Parser *p, const Token *found, const char *what);

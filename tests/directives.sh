@@ -84,6 +84,26 @@ $work/msg.pov:2:1: warning: careful
 $work/msg.pov:4:1: #error: stop here" ] && [ ! -e "$work/out.png" ]'
 [ $status -eq 2 ] || cat "$work/err" | sed 's/^/# /'
 
+# #debug text without a final newline (POV-Ray's sample portfolio scenes
+# print "Generated the file: X" so) must not swallow the start of the next
+# message: a warning or the error starts a line of its own.
+cat >"$work/open.pov" <<'POV'
+#debug "one"
+#warning "careful"
+#debug "two"
+#error "stop"
+POV
+render "$work/open.pov"
+check "a message after #debug text without a newline starts a line of its own" \
+    '[ $status -eq 2 ] && [ "$(cat "$work/err")" = "one
+$work/open.pov:2:1: warning: careful
+two
+$work/open.pov:4:1: #error: stop" ]'
+printf '#debug "last"\ntriangle { 0, x, y }\n' >"$work/open2.pov"
+render "$work/open2.pov"
+check "#debug text without a newline at the end of the scene: the line is ended" \
+    '[ $status -eq 0 ] && [ "$(od -c "$work/err" | head -1 | tr -s " ")" = "0000000 l a s t \\n" ]'
+
 # An error inside a macro: the offending token in the macro, then the call.
 cat >"$work/mac.pov" <<'POV'
 #macro Leg(H)
