@@ -182,6 +182,7 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
     SceneLight *l = palloc(p, sizeof *l);
     l->kind = LIGHT_POINT;
     l->pos = kw->pos;
+    l->point_at = (Vec3){ 0.0, 0.0, 1.0 }; /* POV-Ray's default */
     l->location = parse_vector(p);
     parse_comma(p);
     parse_colour(p, &l->colour, 0);
@@ -201,6 +202,35 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_shadowless: l->shadowless = 1; break;
         case KW_parallel: l->kind = LIGHT_PARALLEL; break;
+        case KW_spotlight: /* POV-Ray's defaults, reset each time the keyword is written */
+            l->beam = BEAM_SPOT;
+            l->beam_radius = cos(30.0 * M_PI / 180.0);
+            l->beam_falloff = cos(45.0 * M_PI / 180.0);
+            l->beam_tightness = 0.0;
+            break;
+        case KW_cylinder:
+            l->beam = BEAM_CYLINDER;
+            l->kind = LIGHT_PARALLEL;
+            l->beam_radius = 0.75;
+            l->beam_falloff = 1.0;
+            l->beam_tightness = 0.0;
+            break;
+        case KW_tightness:
+        case KW_radius:
+        case KW_falloff: {
+            if (l->beam == BEAM_NONE)
+                parse_fail(p, t->pos, "'%s' needs 'spotlight' or 'cylinder' before it in 'light_source'",
+                           keyword_name(t->kw));
+            int item = t->kw; /* t is the parser's current token: parse_float moves it */
+            double v = parse_float(p);
+            if (item == KW_tightness)
+                l->beam_tightness = v;
+            else if (item == KW_radius)
+                l->beam_radius = l->beam == BEAM_SPOT ? cos(v * M_PI / 180.0) : v;
+            else
+                l->beam_falloff = l->beam == BEAM_SPOT ? cos(v * M_PI / 180.0) : v;
+            break;
+        }
         case KW_point_at: l->point_at = parse_vector(p); break;
         case KW_fade_distance: l->fade_distance = parse_float(p); break;
         case KW_fade_power: l->fade_power = parse_float(p); break;
@@ -236,7 +266,7 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
             break;
         default:
             if (t->type == TK_WORD && t->kw >= 0)
-                unsupported(p, t); /* spotlight, area_light, cylinder, looks_like, ... */
+                unsupported(p, t); /* looks_like, projected_through, fill_light, ... */
             fail_expected(p, t, "a light_source item or '}' in 'light_source'");
         }
     }

@@ -205,11 +205,23 @@ typedef enum {
     LIGHT_PARALLEL,
 } LightKind;
 
+/* How a light's intensity falls off across its beam (POV-Ray's
+ * Attenuate_Light): everywhere the same, a spotlight's cone around the
+ * line from location to point_at, or a cylinder light's cylinder around it. */
+typedef enum {
+    BEAM_NONE,
+    BEAM_SPOT,     /* radius, falloff: cosines of the angles, as POV-Ray keeps them */
+    BEAM_CYLINDER, /* radius, falloff: distances from the axis; the light is parallel */
+} LightBeam;
+
 typedef struct {
     LightKind kind;
     SourcePos pos;
     Vec3 location;  /* world space, transforms applied */
-    Vec3 point_at;  /* parallel lights: direction is location - point_at */
+    Vec3 point_at;  /* parallel lights: direction is location - point_at; spotlights and
+                     * cylinder lights: the beam's axis */
+    LightBeam beam;
+    double beam_radius, beam_falloff, beam_tightness;
     Colour colour;
     int shadowless;
     double fade_distance; /* 0: no fading */

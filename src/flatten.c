@@ -449,6 +449,11 @@ static void build_lights(World *w, const Scene *scene)
         l->fade_distance = sl->fade_distance;
         l->fade_power = sl->fade_power;
         l->direction = v3_normalize(v3_sub(sl->location, sl->point_at));
+        l->beam = sl->beam;
+        l->beam_axis = v3_scale(l->direction, -1.0);
+        l->beam_radius = sl->beam_radius;
+        l->beam_falloff = sl->beam_falloff;
+        l->beam_tightness = sl->beam_tightness;
     }
 }
 

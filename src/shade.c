@@ -34,12 +34,55 @@ static void background(const World *w, Vec3 dir, Radiance *out)
     out->transmit = 0.0;
 }
 
-/* Light colour after distance fading (POV-Ray's Attenuate_Light). */
-static double light_attenuation(const Light *l, double distance)
+/* POV-Ray's smooth step across a beam's edge: 0 below low, 1 from high on,
+ * with zero slope at both ends. */
+static double beam_edge(double low, double high, double x)
 {
-    if (l->fade_power > 0.0 && fabs(l->fade_distance) > POV_EPSILON)
-        return 2.0 / (1.0 + pow(distance / l->fade_distance, l->fade_power));
-    return 1.0;
+    if (x < low)
+        return 0.0;
+    if (x >= high)
+        return 1.0;
+    x = (x - low) / (high - low);
+    return (3.0 - 2.0 * x) * x * x;
+}
+
+/* The share of a spotlight's or cylinder light's intensity that reaches p
+ * (to_light: unit direction from p toward the light), as POV-Ray's
+ * Attenuate_Light computes it. */
+static double beam_attenuation(const Light *l, Vec3 p, Vec3 to_light)
+{
+    if (l->beam == BEAM_SPOT) {
+        double cos_angle = -v3_dot(to_light, l->beam_axis);
+        if (cos_angle <= 0.0)
+            return 0.0;
+        double a = pow(cos_angle, l->beam_tightness);
+        if (l->beam_radius > 0.0 && cos_angle < l->beam_radius)
+            a *= beam_edge(l->beam_falloff, l->beam_radius, cos_angle);
+        return a;
+    }
+    /* cylinder: by the distance of p from the axis, in front of the light only */
+    Vec3 from_centre = v3_sub(p, l->location);
+    double along = v3_dot(from_centre, l->beam_axis);
+    if (along <= 0.0)
+        return 0.0;
+    double off_axis = v3_length(v3_sub(from_centre, v3_scale(l->beam_axis, along)));
+    if (off_axis >= l->beam_falloff)
+        return 0.0;
+    double inside = 1.0 - off_axis / l->beam_falloff;
+    double a = pow(inside, l->beam_tightness);
+    if (l->beam_radius > 0.0 && off_axis > l->beam_radius)
+        a *= beam_edge(0.0, 1.0 - l->beam_radius / l->beam_falloff, inside);
+    return a;
+}
+
+/* The share of the light's colour that reaches p: the beam, then distance
+ * fading (POV-Ray's Attenuate_Light). */
+static double light_attenuation(const Light *l, Vec3 p, Vec3 to_light, double distance)
+{
+    double a = l->beam == BEAM_NONE ? 1.0 : beam_attenuation(l, p, to_light);
+    if (a > 0.0 && l->fade_power > 0.0 && fabs(l->fade_distance) > POV_EPSILON)
+        a *= 2.0 / (1.0 + pow(distance / l->fade_distance, l->fade_power));
+    return a;
 }
 
 /* POV-Ray's empirical Fresnel term for metallic highlights. */
@@ -210,7 +253,7 @@ static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, c
         const Light *l = &w->lights[li];
         Vec3 to_light;
         double distance = light_direction(l, hit->point, &to_light);
-        double fade = light_attenuation(l, distance);
+        double fade = light_attenuation(l, hit->point, to_light, distance);
         RGB lc = { l->colour.r * fade, l->colour.g * fade, l->colour.b * fade };
         int shadows = ctx->quality.shadows && !l->shadowless;
         ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, normal };

@@ -60,6 +60,9 @@ typedef struct {
     RGB colour;
     int shadowless;
     double fade_distance, fade_power;
+    LightBeam beam;       /* spotlight or cylinder: intensity across the beam */
+    Vec3 beam_axis;       /* unit, from location toward point_at */
+    double beam_radius, beam_falloff, beam_tightness; /* as in SceneLight */
 } Light;
 
 typedef struct {

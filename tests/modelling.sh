@@ -1,8 +1,8 @@
 #!/bin/sh
 # Modelling against POV-Ray, in TAP: small scenes using checker, hexagon and
 # gradient pigments, a sky_sphere, texture binding through transforms and
-# unions, layered textures, no_shadow and no_image and the orthographic
-# camera, rendered by hstrace and (when installed) POV-Ray, compared by
+# unions, layered textures, no_shadow and no_image, the orthographic
+# camera, and spotlights and cylinder lights, rendered by hstrace and (when installed) POV-Ray, compared by
 # `hstrace compare` with regress.sh's limits for scenes/ (RMSE <= 0.01,
 # pixels off by > 0.02 <= 1%; shadow masks <= 0.1% and none interior).
 # Then the command line: --strict, the approximation report of --stats and
@@ -59,10 +59,27 @@ box { <-2,0,-0.5>, <-1,1,0.5> pigment { rgb <1,0.2,0.2> } no_shadow }
 box { <0,0,-0.5>, <1,1,0.5> pigment { rgb <0.2,1,0.2> } no_image }
 polygon { 4, <0,0>, <1,0>, <1,1>, <0,1> pigment { rgb <0.2,0.2,1> } inverse hollow translate <1.5,0.5,-1> }
 POV
+# Spotlights (default cone, radius/falloff/tightness, moved by transforms
+# after point_at), a cylinder light, and a parallel light with POV-Ray's
+# default point_at <0,0,1>, over boxes that cast shadows into the beams.
+cat >"$work/lights.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 9, -7> look_at <0, 0, 0.5> right x*4/3 }
+light_source { <-3, 6, -1> rgb <1, 0.7, 0.7> spotlight point_at <-3, 0, 1> }
+light_source { <0, 5, 0> rgb <0.6, 1, 0.6> spotlight radius 12 falloff 25 tightness 10 point_at <0, 0, 1>
+  translate x*3 }
+light_source { <0, 4, -6> rgb <0.5, 0.5, 1> cylinder radius 0.8 falloff 1.6 point_at <0, 0, 3> rotate y*10 }
+light_source { <3, 1, -2> rgb 0.15 parallel }
+plane { y, 0 pigment { rgb 0.9 } }
+box { <-3.4, 0, 0.3>, <-2.6, 1, 1.1> pigment { rgb 1 } }
+box { <2.7, 0, -0.3>, <3.3, 1.2, 0.3> pigment { rgb 1 } rotate y*30 translate <0.2, 0, 0.8> }
+box { <-0.4, 0, -1.4>, <0.4, 0.8, -0.6> pigment { rgb 1 } }
+POV
 
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-for name in patterns binding flags; do
+for name in patterns binding flags lights; do
     for q in 9 3 4; do
         if ! "$hstrace" "$work/$name.pov" --width 240 --height 180 "+Q$q" -o "$work/$name.h$q.exr" 2>"$work/err"; then
             not_ok "$name: hstrace renders at +Q$q"; sed 's/^/# /' "$work/err"
@@ -83,6 +100,13 @@ for name in patterns binding flags; do
         --mask-b "$work/$name.h3.exr" "$work/$name.h4.exr" --max-mask-share 0.001 --max-interior 0 2>&1)
     check $? "$name: shadow mask matches POV-Ray: $(echo "$report" | grep -i 'disagree' | tr -s ' \n' ' ')"
 done
+
+printf '#version 3.7;\nlight_source { <0, 5, 0> rgb 1 radius 12 spotlight }\n' >"$work/radius.pov"
+"$hstrace" "$work/radius.pov" --width 8 --height 6 -o "$work/r.png" 2>"$work/err"
+status=$?
+[ $status -eq 2 ] && [ "$(cat "$work/err")" = "$work/radius.pov:2:32: 'radius' needs 'spotlight' or 'cylinder' before it in 'light_source'" ] &&
+    [ ! -e "$work/r.png" ]
+check $? "radius on a point light: an error at FILE:LINE:COLUMN, status 2, no image (status $status: $(cat "$work/err"))"
 
 # --strict and the approximation report.
 cat >"$work/approx.pov" <<'POV'
