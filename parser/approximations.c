@@ -24,6 +24,7 @@ static const struct {
     [APPROX_RADIOSITY] = { "radiosity", "radiosity and subsurface light transport ignored" },
     [APPROX_AREA_LIGHT] = { "area_light", "area light rendered as a point light at its centre" },
     [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
+    [APPROX_FOG] = { "fog", "fog turbulence, and fog between lights and surfaces (media_attenuation), ignored" },
 };
 
 const char *approx_kind_name(ApproxKind k)

@@ -234,8 +234,16 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
         case KW_point_at: l->point_at = parse_vector(p); break;
         case KW_fade_distance: l->fade_distance = parse_float(p); break;
         case KW_fade_power: l->fade_power = parse_float(p); break;
-        case KW_media_attenuation:
-        case KW_media_interaction: /* only matter with media, which is unsupported */
+        case KW_media_attenuation: { /* fog on the light's rays: not modelled */
+            Token at = *t;
+            if (!token_starts_float(p, peek(p)) || parse_float(p) > 0.0) {
+                p->media_attenuation_seen = 1;
+                if (p->fogs.n > 0) /* else the fog, when it comes, reports it */
+                    approximate(p, &at, APPROX_FOG, &l->approx);
+            }
+            break;
+        }
+        case KW_media_interaction: /* only matters with media, which is unsupported */
             if (token_starts_float(p, peek(p)))
                 (void)parse_float(p);
             break;

@@ -626,6 +626,9 @@ static void parse_statements(Parser *p)
         case KW_sky_sphere:
             parse_sky_sphere(p, &p->scene->sky);
             break;
+        case KW_fog:
+            parse_fog(p, &t, tvec_push(p, &p->fogs));
+            break;
         case KW_default:
             /* `default { ... }` without '#': the older spelling, which POV-Ray
              * 3.7 still reads as #default (several of its sample scenes use it). */
@@ -691,6 +694,10 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
     scene->lights = palloc(p, sizeof(SceneLight) * (size_t)(p->lights.n ? p->lights.n : 1));
     if (p->lights.n)
         memcpy(scene->lights, p->lights.data, sizeof(SceneLight) * (size_t)p->lights.n);
+    scene->nfogs = p->fogs.n;
+    scene->fogs = palloc(p, sizeof(SceneFog) * (size_t)(p->fogs.n ? p->fogs.n : 1));
+    if (p->fogs.n)
+        memcpy(scene->fogs, p->fogs.data, sizeof(SceneFog) * (size_t)p->fogs.n);
     arena_free(p->temp);
     free(p);
     return scene;
@@ -726,6 +733,7 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     tvec_init(&p->controls, sizeof(Control));
     tvec_init(&p->objects, sizeof(SceneObject *));
     tvec_init(&p->lights, sizeof(SceneLight));
+    tvec_init(&p->fogs, sizeof(SceneFog));
     tvec_init(&p->rand_streams, sizeof(unsigned));
     tvec_init(&p->user_files, sizeof(struct UserFile *));
     symbols_init(p);

@@ -220,6 +220,8 @@ typedef struct Parser {
 
     SymbolTable symbols;
     TempVec controls; /* of Control */
+    TempVec fogs;     /* of SceneFog, in file order */
+    int media_attenuation_seen; /* a light_source asked for media_attenuation */
     long loop_iterations;
 
     double version;
@@ -371,6 +373,9 @@ void skip_normal(Parser *p);              /* after 'normal' */
 SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at);
 /* sky_sphere { pigment {...} ... transforms } after 'sky_sphere'. */
 void parse_sky_sphere(Parser *p, SkySphere *sky);
+
+/* parse_fog.c: fog { ... } after 'fog' */
+void parse_fog(Parser *p, const Token *kw, SceneFog *fog);
 
 /* parse_objects.c */
 int is_object_keyword(int kw);

@@ -41,6 +41,7 @@ typedef enum {
     APPROX_RADIOSITY,     /* global radiosity / subsurface: ignored */
     APPROX_AREA_LIGHT,    /* area_light: a point light at its centre */
     APPROX_FOCAL_BLUR,    /* camera aperture / normal: a pinhole camera */
+    APPROX_FOG,           /* fog turbulence; fog on light rays (media_attenuation) */
     APPROX_KINDS
 } ApproxKind;
 
@@ -260,6 +261,23 @@ typedef struct {
     Transform transform;  /* the sky sphere's own transforms */
 } SkySphere;
 
+/* fog: POV-Ray's constant fog (fog_type 1) or ground fog (2), applied to
+ * rays through the atmosphere at +Q9 (POV-Ray's ComputeFog). */
+typedef struct {
+    int type;             /* 1 constant, 2 ground; other numbers act as 1, as in POV-Ray */
+    double distance;      /* where the fog lets 1/e through; 0: no fog */
+    Colour colour;        /* with filter and transmit */
+    double alt, offset;   /* ground fog: height scale, and where full density ends */
+    Vec3 up;              /* ground fog: unit, "up" for alt and offset */
+    /* Turbulence (any of turbulence, octaves, omega, lambda given): how far
+     * it thins the fog, the noise's scale and its octaves. */
+    int turbulent;
+    double turb_depth;
+    Vec3 turbulence;
+    int octaves;
+    double omega, lambda;
+} SceneFog;
+
 typedef struct Arena Arena;
 
 typedef struct {
@@ -270,6 +288,8 @@ typedef struct {
     int has_camera;
     Colour background;         /* default black, transmit 1 when unspecified in 3.7 */
     SkySphere sky;
+    int nfogs;
+    SceneFog *fogs;
     GlobalSettings globals;
     SceneTexture default_texture;
     int nlights;

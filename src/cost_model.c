@@ -151,7 +151,7 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Shad
      * pixels land: shadow rays start where the render's will. */
     Rng rng = { 0x9E3779B97F4A7C15ull };
     TraceContext tc;
-    if (trace_context_init(&tc, w, g, NULL, (Quality){ 0, 0, 0, 0 }, NULL)) {
+    if (trace_context_init(&tc, w, g, NULL, (Quality){ 0, 0, 0, 0, 0 }, NULL)) {
         trace_context_free(&tc);
         free(rays);
         free(tests);

@@ -44,7 +44,7 @@ typedef struct {
     Transform transform;
     const SceneTexture *texture;
     const Interior *interior;
-    int no_shadow, no_image, no_reflection, double_illuminate;
+    int no_shadow, no_image, no_reflection, double_illuminate, hollow;
     const void *top_object; /* the top-level object: owner of the default interior */
     Transform texture_space; /* the texture's space to world (SceneObject.texture_bind) */
 } Inherited;
@@ -81,6 +81,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->no_image = in->no_image;
     m->no_reflection = in->no_reflection;
     m->double_illuminate = in->double_illuminate;
+    m->hollow = in->hollow;
     m->pos = pos;
     return w->nmaterials++;
 }
@@ -415,6 +416,7 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
     in.no_image |= o->no_image;
     in.no_reflection |= o->no_reflection;
     in.double_illuminate |= o->double_illuminate;
+    in.hollow |= o->hollow;
 
     if (o->kind == OBJ_UNION) {
         for (int i = 0; i < o->u.csg.nchildren; i++)
@@ -491,6 +493,8 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     w->camera.right = scene->camera.right;
     w->background = rgb_of(&scene->background);
     w->sky = scene->sky.npigments > 0 ? &scene->sky : NULL;
+    w->nfogs = scene->nfogs;
+    w->fogs = scene->fogs;
     w->ambient_light = rgb_of(&scene->globals.ambient_light);
     w->max_trace_level = scene->globals.max_trace_level > 0 ? scene->globals.max_trace_level : 5;
     w->adc_bailout = scene->globals.adc_bailout > 0 ? scene->globals.adc_bailout : 1.0 / 255.0;

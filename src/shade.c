@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "aov.h"
+#include "fog.h"
 #include "intersect.h"
 #include "pigment.h"
 #include "shadow.h"
@@ -355,11 +356,22 @@ static int interior_index(const InteriorList *l, const void *key)
     return -1;
 }
 
+/* Fog acts on a ray only where every interior it is inside is hollow
+ * (POV-Ray's IsHollowRay). */
+static int in_atmosphere(const InteriorList *l)
+{
+    for (int i = 0; i < l->n; i++)
+        if (!l->hollow[i])
+            return 0;
+    return 1;
+}
+
 static void interior_remove(InteriorList *l, int i)
 {
     for (; i + 1 < l->n; i++) {
         l->key[i] = l->key[i + 1];
         l->ior[i] = l->ior[i + 1];
+        l->hollow[i] = l->hollow[i + 1];
     }
     l->n--;
 }
@@ -372,6 +384,7 @@ static double refraction_ratio(const InteriorList *inside, const Material *m, In
     if (beyond->n == 0) {
         if (beyond->n < MAX_INTERIOR_NESTING) {
             beyond->key[beyond->n] = m->interior_key;
+            beyond->hollow[beyond->n] = (unsigned char)m->hollow;
             beyond->ior[beyond->n++] = m->ior;
         }
         return 1.0 / m->ior;
@@ -388,6 +401,7 @@ static double refraction_ratio(const InteriorList *inside, const Material *m, In
     double outer = beyond->ior[beyond->n - 1];
     if (beyond->n < MAX_INTERIOR_NESTING) {
         beyond->key[beyond->n] = m->interior_key;
+        beyond->hollow[beyond->n] = (unsigned char)m->hollow;
         beyond->ior[beyond->n++] = m->ior;
     }
     return outer / m->ior;
@@ -496,6 +510,8 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
     ctx->hide = 0;
     if (!found) {
         background(w, ray->dir, out);
+        if (ctx->quality.volume && w->nfogs && in_atmosphere(&ray->inside))
+            fog_apply(w, ray->org, ray->dir, HUGE_VAL, out);
         return;
     }
     if (ctx->coherence && ctx->state_depth == 0 && ray->from.kind == HIT_NONE) {
@@ -515,6 +531,8 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
     ctx->state_depth++;
     shade_hit(ctx, ray, &hit, &seg, weight, level, out);
     ctx->state_depth--;
+    if (ctx->quality.volume && w->nfogs && in_atmosphere(&ray->inside))
+        fog_apply(w, ray->org, ray->dir, hit.t, out);
 }
 
 static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hitp, const Segment *seg, double weight,

@@ -9,11 +9,13 @@
 
 #define MAX_INTERIOR_NESTING 16
 
-/* The interiors a ray is inside, innermost last (for ior ratios). */
+/* The interiors a ray is inside, innermost last (for ior ratios; fog only
+ * where all of them are hollow). */
 typedef struct {
     int n;
     const void *key[MAX_INTERIOR_NESTING];
     double ior[MAX_INTERIOR_NESTING];
+    unsigned char hollow[MAX_INTERIOR_NESTING];
 } InteriorList;
 
 typedef struct {

@@ -31,6 +31,7 @@ typedef struct {
     int refraction;     /* Q >= 6 */
     int reflection;     /* Q >= 8 */
     int full_ambient;   /* Q <= 1: pigment colour only */
+    int volume;         /* Q >= 9: fog */
 } Quality;
 
 /* Objects a ray passes through (TraceContext.hide): no_image ones for

@@ -29,6 +29,7 @@ typedef struct {
     RGB fade_colour;
     int opaque;           /* filter == transmit == 0 everywhere: blocks light fully */
     int no_shadow, no_image, no_reflection, double_illuminate;
+    int hollow;           /* fog goes on inside it (POV-Ray's hollow) */
     SourcePos pos;        /* the object, for messages */
 } Material;
 
@@ -88,6 +89,8 @@ typedef struct {
     Camera camera;
     RGB background;
     const SkySphere *sky; /* NULL: the background colour alone (the scene's, read-only) */
+    int nfogs;
+    const SceneFog *fogs; /* the scene's, read-only */
     RGB ambient_light;
     int max_trace_level;
     double adc_bailout;

@@ -149,7 +149,7 @@ static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, 
                         Decisions *dec, int vi, Hit hits[PROBES][2])
 {
     const ShadowMethod *m = shadow_method_find(v->method);
-    Quality quality = { 1, 0, 0, 0 };
+    Quality quality = { 1, 0, 0, 0, 0 };
     TraceContext ctx;
     PixelCoherence pc;
     memset(&pc, 0, sizeof pc);

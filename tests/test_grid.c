@@ -80,7 +80,7 @@ int main(void)
 
     /* The walk finds the same nearest hit as testing every polygon. */
     TraceContext ctx;
-    tap_ok(trace_context_init(&ctx, &w, &g, NULL, (Quality){ 1, 1, 1, 0 }, NULL) == 0, "trace context");
+    tap_ok(trace_context_init(&ctx, &w, &g, NULL, (Quality){ 1, 1, 1, 0, 0 }, NULL) == 0, "trace context");
     int mismatches = 0, hits = 0;
     const int nrays = 20000;
     for (int i = 0; i < nrays; i++) {

@@ -1,0 +1,100 @@
+/* fog { ... }: POV-Ray 3.7's Parse_Fog. Items come in any order; a bare
+ * number is the distance (POV-Ray warns that `distance` should be written);
+ * transforms turn only the up vector, and a translate is ignored with a
+ * warning, as in POV-Ray. */
+#include <math.h>
+#include <stdio.h>
+
+#include "parser_internal.h"
+
+static void warn(const Token *t, const char *msg)
+{
+    fprintf(stderr, "%s:%d:%d: warning: %s\n", t->pos.file, t->pos.line, t->pos.column, msg);
+}
+
+/* The turbulence settings start from POV-Ray's classic turbulence warp. */
+static void begin_turbulence(SceneFog *fog)
+{
+    if (fog->turbulent)
+        return;
+    fog->turbulent = 1;
+    fog->turbulence = (Vec3){ 0.0, 0.0, 0.0 };
+    fog->octaves = 6;
+    fog->omega = 0.5;
+    fog->lambda = 2.0;
+}
+
+void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
+{
+    begin_block(p, "fog");
+    fog->type = 1;
+    fog->up = (Vec3){ 0.0, 1.0, 0.0 };
+    fog->turb_depth = 0.5;
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, '}'))
+            break;
+        Token at = *t;
+        Transform tr;
+        transform_identity(&tr);
+        if (is_kw(t, KW_translate)) {
+            (void)parse_vector(p);
+            debug_end_line(p);
+            warn(&at, "a fog's up vector can't be translated");
+            continue;
+        }
+        if (parse_transform_item(p, t, &tr)) {
+            fog->up = transform_direction(&tr, fog->up);
+            continue;
+        }
+        if (token_starts_colour(p, t)) {
+            unget(p);
+            parse_colour(p, &fog->colour, 1);
+            continue;
+        }
+        switch (t->type == TK_WORD ? t->kw : -1) {
+        case KW_distance: fog->distance = parse_float(p); continue;
+        case KW_fog_type: {
+            double type = parse_float(p);
+            fog->type = (int)type;
+            if (fog->type < 1 || fog->type > 2) {
+                debug_end_line(p);
+                warn(&at, "unknown fog type");
+            }
+            continue;
+        }
+        case KW_fog_alt: fog->alt = parse_float(p); continue;
+        case KW_fog_offset: fog->offset = parse_float(p); continue;
+        case KW_turb_depth: fog->turb_depth = parse_float(p); continue;
+        case KW_up: fog->up = parse_vector(p); continue;
+        case KW_turbulence:
+            begin_turbulence(fog);
+            fog->turbulence = parse_vector(p);
+            continue;
+        case KW_octaves: {
+            begin_turbulence(fog);
+            double octaves = parse_float(p);
+            fog->octaves = octaves < 1.0 ? 1 : octaves > 10.0 ? 10 : (int)octaves;
+            continue;
+        }
+        case KW_omega: begin_turbulence(fog); fog->omega = parse_float(p); continue;
+        case KW_lambda: begin_turbulence(fog); fog->lambda = parse_float(p); continue;
+        default: break;
+        }
+        if (token_starts_float(p, t)) {
+            unget(p);
+            fog->distance = parse_float(p);
+            debug_end_line(p);
+            warn(&at, "should use distance keyword");
+            continue;
+        }
+        if (t->type == TK_WORD && t->kw >= 0)
+            unsupported(p, t);
+        fail_expected(p, t, "a fog item or '}' in 'fog'");
+    }
+    double len = sqrt(fog->up.x * fog->up.x + fog->up.y * fog->up.y + fog->up.z * fog->up.z);
+    if (len > 0.0)
+        fog->up = (Vec3){ fog->up.x / len, fog->up.y / len, fog->up.z / len };
+    if (fog->turbulent || p->media_attenuation_seen)
+        approximate(p, kw, APPROX_FOG, &p->global_approx);
+}
