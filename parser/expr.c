@@ -408,6 +408,7 @@ const char *value_kind_name(ValueKind k)
     case VAL_FINISH: return "a finish";
     case VAL_INTERIOR: return "an interior";
     case VAL_CAMERA: return "a camera";
+    case VAL_SKY_SPHERE: return "a sky_sphere";
     case VAL_TRANSFORM: return "a transform";
     case VAL_NORMAL: return "a normal";
     case VAL_MACRO: return "a macro";

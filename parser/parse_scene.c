@@ -272,8 +272,11 @@ static Value parse_rvalue(Parser *p)
             v.kind = VAL_NORMAL;
             skip_normal(p);
             return v;
-        case KW_sky_sphere: /* declared sky spheres: not kept (rarely declared) */
-            unsupported(p, &t);
+        case KW_sky_sphere: /* skies.inc declares its skies */
+            v.kind = VAL_SKY_SPHERE;
+            v.sky = palloc(p, sizeof *v.sky);
+            parse_sky_sphere(p, v.sky);
+            return v;
         case KW_camera:
             v.kind = VAL_CAMERA;
             v.camera = palloc(p, sizeof *v.camera);

@@ -631,10 +631,23 @@ void parse_sky_sphere(Parser *p, SkySphere *sky)
             continue;
         }
         if (t->type == TK_WORD && t->kw < 0) {
-            Symbol *sym = symbol_find(p, t->text, t->len);
-            if (sym && sym->value.kind == VAL_UNSUPPORTED) /* skies.inc's S_Cloud1 ... */
+            /* A declared sky sphere (skies.inc's S_Cloud1 ...), as POV-Ray
+             * only as the first item: its pigments and transform, then more. */
+            Symbol *sym = token_symbol(p, t);
+            if (!sym)
+                parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+            if (sym->value.kind == VAL_UNSUPPORTED)
                 use_unsupported(p, t, &sym->value);
-            parse_fail(p, t->pos, "sky_sphere identifiers are not supported by hstrace");
+            if (sym->value.kind != VAL_SKY_SPHERE)
+                parse_fail(p, t->pos, "'%.*s' is %s, not a sky_sphere", t->len, t->text,
+                           value_kind_name(sym->value.kind));
+            if (pigments.n > 0 || !transform_is_identity(&tr))
+                parse_fail(p, t->pos, "a sky_sphere identifier must come first in 'sky_sphere'");
+            const SkySphere *from = sym->value.sky;
+            for (int i = 0; i < from->npigments; i++)
+                *(Pigment *)tvec_push(p, &pigments) = from->pigments[i];
+            tr = from->transform;
+            continue;
         }
         if (is_kw(t, KW_emission)) { /* 3.7.1: scales the sky; 1 is the default */
             Colour c;

@@ -89,6 +89,7 @@ typedef enum {
     VAL_FINISH,
     VAL_INTERIOR,
     VAL_CAMERA,
+    VAL_SKY_SPHERE,
     VAL_TRANSFORM,
     VAL_NORMAL,      /* parsed and forgotten: normals are not modelled */
     VAL_UNSUPPORTED, /* a declaration of something hstrace cannot render */
@@ -135,6 +136,7 @@ typedef struct {
     Finish *finish;
     Interior *interior;
     SceneCamera *camera;
+    SkySphere *sky;
     Transform *transform;
     Macro *macro;
     ArrayValue *array;

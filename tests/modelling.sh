@@ -2,7 +2,7 @@
 # Modelling against POV-Ray, in TAP: small scenes using checker, hexagon and
 # gradient pigments, a sky_sphere, texture binding through transforms and
 # unions, layered textures, no_shadow and no_image, the orthographic
-# camera, spotlights and cylinder lights, and fog, rendered by hstrace and (when installed) POV-Ray, compared by
+# camera, spotlights and cylinder lights, fog, and a declared sky_sphere, rendered by hstrace and (when installed) POV-Ray, compared by
 # `hstrace compare` with regress.sh's limits for scenes/ (RMSE <= 0.01,
 # pixels off by > 0.02 <= 1%; shadow masks <= 0.1% and none interior).
 # Then the command line: --strict, the approximation report of --stats and
@@ -92,10 +92,23 @@ box { <-2.5, 0, 0>, <-1, 2, 1> pigment { rgbf <1, 1, 1, 0.9> } hollow }
 box { <1, 0, 0>, <2.5, 2, 1> pigment { rgbf <1, 1, 1, 0.9> } }
 polygon { 4, <-1, 0>, <1, 0>, <1, 3>, <-1, 3> pigment { rgb <1, 0.2, 0.2> } translate z*8 }
 POV
+# A declared sky_sphere (as skies.inc declares its skies), used with more
+# transforms and a second pigment on top.
+cat >"$work/declsky.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 1, -5> look_at <0, 1.5, 0> right x*4/3 angle 90 }
+light_source { <4, 8, -3> rgb 1 }
+#declare Sky = sky_sphere { pigment { gradient y color_map { [0 rgb <1, 0.9, 0.8>] [0.6 rgb <0.2, 0.3, 0.9>] } }
+  scale 0.8 }
+sky_sphere { Sky rotate x*-15 pigment { checker rgbt <1, 1, 1, 0.7>, rgbt 1 scale 0.2 } }
+plane { y, 0 pigment { rgb 0.7 } }
+triangle { <-1, 0, 1>, <1, 0, 1>, <0, 2, 1> pigment { rgb <1, 0.3, 0.2> } }
+POV
 
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-for name in patterns binding flags lights fog; do
+for name in patterns binding flags lights fog declsky; do
     for q in 9 3 4; do
         if ! "$hstrace" "$work/$name.pov" --width 240 --height 180 "+Q$q" -o "$work/$name.h$q.exr" 2>"$work/err"; then
             not_ok "$name: hstrace renders at +Q$q"; sed 's/^/# /' "$work/err"
