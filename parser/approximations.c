@@ -16,7 +16,7 @@ static const struct {
 } kinds[APPROX_KINDS] = {
     [APPROX_NORMAL] = { "normal", "surface normal perturbation ignored" },
     [APPROX_PATTERN] = { "pattern", "pattern shown as one colour, its colour map at 0.5" },
-    [APPROX_WARP] = { "warp", "turbulence and warps of the pattern ignored" },
+    [APPROX_WARP] = { "warp", "pattern warps other than turbulence ignored" },
     [APPROX_LAYERS] = { "layers", "texture layers blended into one, with the top layer's finish" },
     [APPROX_FINISH] = { "finish", "finish item ignored" },
     [APPROX_CAUSTICS] = { "caustics", "interior caustics and dispersion ignored" },
