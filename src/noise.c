@@ -6,8 +6,8 @@
  *   random numbers, which give it a value and a gradient; the eight
  *   corners around a point are blended with the cubic s-curve. The
  *   permutation comes from POV-Ray's linear congruential generator; the
- *   random numbers are POV-Ray's fixed table (data only: they were typed
- *   into POV-Ray, no generator makes them).
+ *   random numbers from the CRC-16 generator that once made POV-Ray's
+ *   fixed table (see random_value).
  * - Perlin's gradient noise of generator 3: 2048 random unit gradients and
  *   a permutation, both from the same generator seeded with 1.
  *
@@ -18,47 +18,47 @@
 #include "noise.h"
 
 #include <pthread.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
-/* The lattice noise's random numbers, in POV-Ray's order. Row k of the
- * table it indexes holds value k and half of it (see build_tables). */
-static const double random_values[267] = {
-    -1, 0.604974, -0.937102, 0.414115, 0.576226, -0.0161593, 0.432334, 0.103685,
-    0.590539, 0.0286412, 0.46981, -0.84622, -0.0734112, -0.304097, -0.40206, -0.210132,
-    -0.919127, 0.652033, -0.83151, -0.183948, -0.671107, 0.852476, 0.043595, -0.404532,
-    0.75494, -0.335653, 0.618433, 0.605707, 0.708583, -0.477195, 0.899474, 0.490623,
-    0.221729, -0.400381, -0.853727, -0.932586, 0.659113, 0.961303, 0.325948, -0.750851,
-    0.842466, 0.734401, -0.649866, 0.394491, -0.466056, -0.434073, 0.109026, 0.0847028,
-    -0.738857, 0.241505, 0.16228, -0.71426, -0.883665, -0.150408, -0.90396, -0.686549,
-    -0.785214, 0.488548, 0.0246433, 0.142473, -0.602136, 0.375845, -0.00779736, 0.498955,
-    -0.268147, 0.856382, -0.386007, -0.596094, -0.867735, -0.570977, -0.914366, 0.28896,
-    0.672206, -0.233783, 0.94815, 0.895262, 0.343252, -0.173388, -0.767971, -0.314748,
-    0.824308, -0.342092, 0.721431, -0.24004, -0.63653, 0.553277, 0.376272, 0.158984,
-    -0.452659, 0.396323, -0.420676, -0.454154, 0.122179, 0.295857, 0.0664225, -0.202075,
-    -0.724788, 0.453513, 0.224567, -0.908812, 0.176349, -0.320516, -0.697139, 0.742702,
-    -0.900786, 0.471489, -0.133532, 0.119127, -0.889769, -0.23183, -0.669673, -0.046891,
-    -0.803433, -0.966735, 0.475578, -0.652644, 0.0112459, -0.730007, 0.128283, 0.145647,
-    -0.619318, 0.272023, 0.392966, 0.646418, -0.0207675, -0.315908, 0.480797, 0.535668,
-    -0.250172, -0.83093, -0.653773, -0.443809, 0.119982, -0.897642, 0.89453, 0.165789,
-    0.633875, -0.886839, 0.930877, -0.537194, 0.587732, 0.722011, -0.209461, -0.0424659,
-    -0.814267, -0.919432, 0.280262, -0.66302, -0.558099, -0.537469, -0.598779, 0.929656,
-    -0.170794, -0.537163, 0.312581, 0.959442, 0.722652, 0.499931, 0.175616, -0.534874,
-    -0.685115, 0.444999, 0.17171, 0.108202, -0.768704, -0.463828, 0.254231, 0.546014,
-    0.869474, 0.875212, -0.944427, 0.130724, -0.110185, 0.312184, -0.33138, -0.629206,
-    0.0606546, 0.722866, -0.0979477, 0.821561, 0.0931258, -0.972808, 0.0318151, -0.867033,
-    -0.387228, 0.280995, -0.218189, -0.539178, -0.427359, -0.602075, 0.311971, 0.277974,
-    0.773159, 0.592493, -0.0331884, -0.630854, -0.269947, 0.339132, 0.581079, 0.209461,
-    -0.317433, -0.284993, 0.181323, 0.341634, 0.804959, -0.229572, -0.758907, -0.336721,
-    0.605463, -0.991272, -0.0188754, -0.300191, 0.368307, -0.176135, -0.3832, -0.749569,
-    0.62356, -0.573938, 0.278309, -0.971313, 0.839994, -0.830686, 0.439078, 0.66128,
-    0.694514, 0.0565042, 0.54342, -0.438804, -0.0228428, -0.687068, 0.857267, 0.301991,
-    -0.494255, -0.941039, 0.775509, 0.410575, -0.362081, -0.671534, -0.348379, 0.932433,
-    0.886442, 0.868681, -0.225666, -0.062211, -0.0976425, -0.641444, -0.848112, 0.724697,
-    0.473503, 0.998749, 0.174701, 0.559625, -0.029099, -0.337392, -0.958129, -0.659785,
-    0.236042, -0.246937, 0.659449, -0.027512, 0.821897, -0.226215, 0.0181735, 0.500481,
-    -0.420127, -0.427878, 0.566186,
-};
+enum { RANDOM_VALUES = 267 };
+
+/* CRC-16 (the reflected polynomial 0xA001, starting from 0) of bytes. */
+static unsigned crc16(const unsigned char *bytes, int n)
+{
+    unsigned crc = 0;
+    for (int i = 0; i < n; i++) {
+        crc ^= bytes[i];
+        for (int bit = 0; bit < 8; bit++)
+            crc = (crc & 1u) ? (crc >> 1) ^ 0xA001u : crc >> 1;
+    }
+    return crc;
+}
+
+/* The lattice noise's random number k, as POV-Ray has it. POV-Ray keeps
+ * these 267 numbers as a typed-in table; they are what its old generator
+ * (POV-Ray 3.0's InitRTable) made on a big-endian machine: the CRC-16 of the
+ * point (k, k, k) * 0.12345 as three big-endian doubles, scaled to [-1, 1],
+ * then printed to 6 significant digits (%g). The same steps here give the
+ * same doubles, bit for bit. */
+static double random_value(int k)
+{
+    double v = (double)k * 0.12345;
+    uint64_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    unsigned char point[24];
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < 8; i++)
+            point[8 * c + i] = (unsigned char)(bits >> (56 - 8 * i));
+    double r = (double)crc16(point, 24) * (2.0 / 65535.0) - 1.0;
+    char printed[32];
+    snprintf(printed, sizeof printed, "%g", r);
+    return strtod(printed, NULL);
+}
 
 enum {
     HASH_SIZE = 4096,        /* lattice coordinates are taken modulo this */
@@ -67,7 +67,7 @@ enum {
 
 static struct {
     unsigned short hash[2 * HASH_SIZE]; /* a permutation of 0..4095, twice */
-    double rtable[2 * 267];            /* value k at 2k, half of it at 2k+1 */
+    double rtable[2 * RANDOM_VALUES];  /* value k at 2k, half of it at 2k+1 */
     int perm[2 * (GRADIENTS + 1)];     /* generator 3: permutation, twice */
     Vec3 gradients[2 * (GRADIENTS + 1)];
 } tables;
@@ -95,9 +95,9 @@ static void build_tables(void)
     }
     for (int i = 0; i < HASH_SIZE; i++)
         tables.hash[HASH_SIZE + i] = tables.hash[i];
-    for (int i = 0; i < 267; i++) {
-        tables.rtable[2 * i] = random_values[i];
-        tables.rtable[2 * i + 1] = random_values[i] * 0.5;
+    for (int i = 0; i < RANDOM_VALUES; i++) {
+        tables.rtable[2 * i] = random_value(i);
+        tables.rtable[2 * i + 1] = tables.rtable[2 * i] * 0.5;
     }
 
     /* Generator 3: gradients uniform on the unit sphere (rejection from the
