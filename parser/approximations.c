@@ -16,7 +16,7 @@ static const struct {
 } kinds[APPROX_KINDS] = {
     [APPROX_NORMAL] = { "normal", "surface normal perturbation ignored" },
     [APPROX_PATTERN] = { "pattern", "pattern shown as one colour, its colour map at 0.5" },
-    [APPROX_WARP] = { "warp", "turbulence and warps of the pattern ignored" },
+    [APPROX_WARP] = { "warp", "pattern warps other than turbulence ignored" },
     [APPROX_LAYERS] = { "layers", "texture layers blended into one, with the top layer's finish" },
     [APPROX_FINISH] = { "finish", "finish item ignored" },
     [APPROX_CAUSTICS] = { "caustics", "interior caustics and dispersion ignored" },
@@ -24,7 +24,7 @@ static const struct {
     [APPROX_RADIOSITY] = { "radiosity", "radiosity and subsurface light transport ignored" },
     [APPROX_AREA_LIGHT] = { "area_light", "area light rendered as a point light at its centre" },
     [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
-    [APPROX_FOG] = { "fog", "fog turbulence, and fog between lights and surfaces (media_attenuation), ignored" },
+    [APPROX_FOG] = { "fog", "fog between lights and surfaces (media_attenuation) ignored" },
 };
 
 const char *approx_kind_name(ApproxKind k)

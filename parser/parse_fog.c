@@ -65,7 +65,7 @@ void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
         }
         case KW_fog_alt: fog->alt = parse_float(p); continue;
         case KW_fog_offset: fog->offset = parse_float(p); continue;
-        case KW_turb_depth: fog->turb_depth = parse_float(p); continue;
+        case KW_turb_depth: fog->turb_depth = (float)parse_float(p); continue;
         case KW_up: fog->up = parse_vector(p); continue;
         case KW_turbulence:
             begin_turbulence(fog);
@@ -77,8 +77,8 @@ void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
             fog->octaves = octaves < 1.0 ? 1 : octaves > 10.0 ? 10 : (int)octaves;
             continue;
         }
-        case KW_omega: begin_turbulence(fog); fog->omega = parse_float(p); continue;
-        case KW_lambda: begin_turbulence(fog); fog->lambda = parse_float(p); continue;
+        case KW_omega: begin_turbulence(fog); fog->omega = (float)parse_float(p); continue;
+        case KW_lambda: begin_turbulence(fog); fog->lambda = (float)parse_float(p); continue;
         default: break;
         }
         if (token_starts_float(p, t)) {
@@ -95,6 +95,6 @@ void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
     double len = sqrt(fog->up.x * fog->up.x + fog->up.y * fog->up.y + fog->up.z * fog->up.z);
     if (len > 0.0)
         fog->up = (Vec3){ fog->up.x / len, fog->up.y / len, fog->up.z / len };
-    if (fog->turbulent || p->media_attenuation_seen)
+    if (p->media_attenuation_seen)
         approximate(p, kw, APPROX_FOG, &p->global_approx);
 }

@@ -299,7 +299,7 @@ static SceneObject *parse_plane(Parser *p, const Token *kw)
 /* ---- meshes ------------------------------------------------------------ */
 
 typedef struct {
-    TempVec vertices, normals, faces, textures;
+    TempVec vertices, normals, faces, textures, uvs;
 } MeshBuilder;
 
 static int add_mesh_texture(Parser *p, MeshBuilder *mb, const SceneTexture *t)
@@ -321,6 +321,8 @@ static void finish_mesh(Parser *p, SceneObject *o, MeshBuilder *mb)
     o->u.mesh.faces = palloc(p, sizeof(MeshFace) * (size_t)(mb->faces.n ? mb->faces.n : 1));
     if (mb->faces.n)
         memcpy(o->u.mesh.faces, mb->faces.data, sizeof(MeshFace) * (size_t)mb->faces.n);
+    o->u.mesh.nuvs = mb->uvs.n;
+    o->u.mesh.uvs = vec3_array(p, &mb->uvs);
     o->u.mesh.ntextures = mb->textures.n;
     o->u.mesh.textures = palloc(p, sizeof(SceneTexture *) * (size_t)(mb->textures.n ? mb->textures.n : 1));
     if (mb->textures.n)
@@ -333,6 +335,7 @@ static void init_mesh_builder(MeshBuilder *mb)
     tvec_init(&mb->normals, sizeof(Vec3));
     tvec_init(&mb->faces, sizeof(MeshFace));
     tvec_init(&mb->textures, sizeof(SceneTexture *));
+    tvec_init(&mb->uvs, sizeof(Vec3));
 }
 
 static SceneObject *parse_mesh(Parser *p, const Token *kw)
@@ -351,6 +354,7 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
             parse_triangle_points(p, &tri, smooth);
             MeshFace *f = tvec_push(p, &mb.faces);
             for (int i = 0; i < 3; i++) {
+                f->uv[i] = -1; /* uv (0, 0) unless given */
                 f->v[i] = mb.vertices.n;
                 *(Vec3 *)tvec_push(p, &mb.vertices) = tri.u.triangle.v[i];
                 f->n[i] = -1;
@@ -368,10 +372,13 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
                     int idx = add_mesh_texture(p, &mb, parse_texture(p));
                     ((MeshFace *)mb.faces.data)[mb.faces.n - 1].texture = idx;
                 } else if (is_kw(t, KW_uv_vectors)) {
+                    MeshFace *face = (MeshFace *)mb.faces.data + mb.faces.n - 1;
                     for (int i = 0; i < 3; i++) {
                         if (i)
                             parse_comma(p);
-                        (void)parse_vector(p);
+                        Vec3 uv = parse_vector(p);
+                        face->uv[i] = mb.uvs.n;
+                        *(Vec3 *)tvec_push(p, &mb.uvs) = v3(uv.x, uv.y, 0.0);
                     }
                 } else {
                     if (t->type == TK_WORD && t->kw >= 0)
@@ -413,9 +420,7 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
     SceneObject *o = new_object(p, OBJ_MESH, kw);
     MeshBuilder mb;
     init_mesh_builder(&mb);
-    TempVec uvs;
-    tvec_init(&uvs, sizeof(Vec3));
-    int have_faces = 0, have_normal_indices = 0;
+    int have_faces = 0, have_normal_indices = 0, have_uv_indices = 0;
     for (;;) {
         Token *t = next(p);
         Token at = *t;
@@ -433,9 +438,11 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                     *nv = v3(1, 0, 0); /* as POV-Ray, with its warning */
             }
             continue;
-        case KW_uv_vectors: /* uv mapping: parsed, not needed for solid colours */
-            uvs.n = 0;
-            parse_vector_list(p, &uvs, "uv_vectors");
+        case KW_uv_vectors: /* for uv_mapping */
+            mb.uvs.n = 0;
+            parse_vector_list(p, &mb.uvs, "uv_vectors");
+            for (int i = 0; i < mb.uvs.n; i++)
+                ((Vec3 *)mb.uvs.data)[i].z = 0.0;
             continue;
         case KW_texture_list: {
             begin_block(p, "texture_list");
@@ -468,6 +475,7 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                 f->v[1] = (int)idx.y;
                 f->v[2] = (int)idx.z;
                 f->n[0] = f->n[1] = f->n[2] = -1;
+                f->uv[0] = f->uv[1] = f->uv[2] = -1;
                 f->texture = -1;
                 /* one texture index, or three (per vertex: hstrace uses the first) */
                 for (int k = 0; k < 3; k++) {
@@ -512,10 +520,31 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
             have_normal_indices = 1;
             continue;
         }
-        case KW_uv_indices: /* parsed past like uv_vectors */
+        case KW_uv_indices: {
+            if (!have_faces)
+                parse_fail(p, at.pos, "uv_indices must follow face_indices in mesh2");
             begin_block(p, "uv_indices");
-            skip_block_body(p);
+            Token ct = *peek(p);
+            int n = parse_count(p, "uv_indices", 0);
+            if (n != mb.faces.n)
+                parse_fail(p, ct.pos, "number of uv indices must equal number of faces");
+            for (int i = 0; i < n; i++) {
+                parse_comma(p);
+                Token vt = *peek(p);
+                Vec3 idx = parse_vector(p);
+                if (!index_in_range(idx.x, mb.uvs.n) || !index_in_range(idx.y, mb.uvs.n) ||
+                    !index_in_range(idx.z, mb.uvs.n))
+                    parse_fail(p, vt.pos, "mesh2 uv index out of range (%d uv vectors)", mb.uvs.n);
+                MeshFace *f = (MeshFace *)mb.faces.data + i;
+                f->uv[0] = (int)idx.x;
+                f->uv[1] = (int)idx.y;
+                f->uv[2] = (int)idx.z;
+            }
+            parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
+            expect_punct(p, '}', "uv_indices");
+            have_uv_indices = 1;
             continue;
+        }
         case KW_inside_vector:
             (void)parse_vector(p);
             continue;
@@ -538,6 +567,19 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
             MeshFace *f = (MeshFace *)mb.faces.data + i;
             memcpy(f->n, f->v, sizeof f->n);
         }
+    }
+    if (!have_uv_indices && mb.uvs.n > 1) {
+        /* POV-Ray: as many uv vectors as vertices means "same indices";
+         * one (or none: uv 0, 0) serves every corner */
+        if (mb.uvs.n != mb.vertices.n)
+            parse_fail(p, end.pos, "uv_indices missing in mesh2");
+        for (int i = 0; i < mb.faces.n; i++) {
+            MeshFace *f = (MeshFace *)mb.faces.data + i;
+            memcpy(f->uv, f->v, sizeof f->uv);
+        }
+    } else if (!have_uv_indices && mb.uvs.n == 1) {
+        for (int i = 0; i < mb.faces.n; i++)
+            memset(((MeshFace *)mb.faces.data)[i].uv, 0, sizeof(int) * 3);
     }
     finish_mesh(p, o, &mb);
     parse_object_mods(p, o, "mesh2");

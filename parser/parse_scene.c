@@ -576,7 +576,15 @@ static void parse_global_settings(Parser *p)
         case KW_irid_wavelength:
             parse_colour(p, &c, 0);
             break;
-        case KW_number_of_waves: case KW_noise_generator: case KW_max_intersections: case KW_hf_gray_16:
+        case KW_noise_generator: {
+            Token at = *peek(p);
+            double v = parse_float(p);
+            if (v < 1.0 || v >= 4.0)
+                parse_fail(p, at.pos, "Value for noise_generator in global_settings must be 1, 2, or 3.");
+            g->noise_generator = (int)v;
+            break;
+        }
+        case KW_number_of_waves: case KW_max_intersections: case KW_hf_gray_16:
         case KW_mm_per_unit:
             if (token_starts_float(p, peek(p)))
                 (void)parse_float(p);

@@ -2,7 +2,9 @@
  *
  * Each block starts from its identifier when one comes first, otherwise
  * from the default (POV-Ray copies the default texture), then applies what
- * is written. Only solid pigments are modelled; a pattern is "not supported". */
+ * is written. Pigments hstrace evaluates: solid colours, checker, hexagon,
+ * gradient, the noise patterns (bozo ... wood) and the spirals, with
+ * turbulence and uv_mapping; other patterns are approximated by one colour. */
 #include <math.h>
 #include <string.h>
 
@@ -41,6 +43,10 @@ void skip_normal(Parser *p)
 
 /* ---- pigments ------------------------------------------------------------ */
 
+/* A value as POV-Ray stores it in a float (SNGL): colour map values,
+ * frequency, phase, omega, lambda ... land where POV-Ray's do. */
+static double single(double v) { return (double)(float)v; }
+
 /* How hstrace treats a pattern keyword in a pigment. */
 typedef enum { PAT_NONE, PAT_EVALUATED, PAT_APPROXIMATED, PAT_UNSUPPORTED } PatternSupport;
 
@@ -48,15 +54,17 @@ static PatternSupport pattern_support(int kw)
 {
     switch (kw) {
     case KW_checker: case KW_hexagon: case KW_gradient:
+    case KW_bozo: case KW_spotted: case KW_bumps: case KW_granite: case KW_wrinkles:
+    case KW_agate: case KW_marble: case KW_wood: case KW_spiral1: case KW_spiral2:
         return PAT_EVALUATED;
     /* POV-Ray 3.7's other patterns: one colour stands for them */
-    case KW_agate: case KW_aoi: case KW_average: case KW_boxed: case KW_bozo: case KW_brick: case KW_bumps:
+    case KW_aoi: case KW_average: case KW_boxed: case KW_brick:
     case KW_cells: case KW_crackle: case KW_cubic: case KW_cylindrical: case KW_dents: case KW_facets:
-    case KW_function: case KW_granite: case KW_julia: case KW_leopard: case KW_magnet: case KW_mandel:
-    case KW_marble: case KW_object: case KW_onion: case KW_pavement: case KW_pigment_pattern: case KW_planar:
-    case KW_quilted: case KW_radial: case KW_ripples: case KW_spherical: case KW_spiral1: case KW_spiral2:
-    case KW_spotted: case KW_square: case KW_tiling: case KW_triangular: case KW_waves: case KW_wood:
-    case KW_wrinkles: case KW_slope:
+    case KW_function: case KW_julia: case KW_leopard: case KW_magnet: case KW_mandel:
+    case KW_object: case KW_onion: case KW_pavement: case KW_pigment_pattern: case KW_planar:
+    case KW_quilted: case KW_radial: case KW_ripples: case KW_spherical:
+    case KW_square: case KW_tiling: case KW_triangular: case KW_waves:
+    case KW_slope:
         return PAT_APPROXIMATED;
     case KW_image_map: case KW_image_pattern: case KW_density_file:
         return PAT_UNSUPPORTED; /* they need an image or a density file */
@@ -82,6 +90,95 @@ static void set_grey_map(Parser *p, Pigment *pig)
 {
     ColourMapEntry e[2] = { { 0.0, { 0, 0, 0, 0, 0 } }, { 1.0, { 1, 1, 1, 0, 0 } } };
     set_map(p, pig, e, 2);
+}
+
+/* POV-Ray's default colour maps of the patterns that have their own
+ * (pigment.cpp there); the others default to black to white. */
+static void set_default_map(Parser *p, Pigment *pig, int kw)
+{
+    static const ColourMapEntry bozo[6] = {
+        { 0.4, { 1, 1, 1, 0, 0 } }, { 0.4, { 0, 1, 0, 0, 0 } }, { 0.6, { 0, 1, 0, 0, 0 } },
+        { 0.6, { 0, 0, 1, 0, 0 } }, { 0.8, { 0, 0, 1, 0, 0 } }, { 0.8, { 1, 0, 0, 0, 0 } },
+    };
+    static const ColourMapEntry wood[2] = { { 0.6, { 0.666, 0.312, 0.2, 0, 0 } },
+                                            { 0.6, { 0.4, 0.1333, 0.066, 0, 0 } } };
+    static const ColourMapEntry agate[6] = {
+        { 0.0, { 1.0, 1.0, 1.0, 0, 0 } }, { 0.5, { 0.95, 0.75, 0.5, 0, 0 } }, { 0.5, { 0.9, 0.7, 0.5, 0, 0 } },
+        { 0.6, { 0.9, 0.7, 0.4, 0, 0 } }, { 0.6, { 1.0, 0.7, 0.4, 0, 0 } }, { 1.0, { 0.6, 0.3, 0.0, 0, 0 } },
+    };
+    static const ColourMapEntry marble[3] = { { 0.0, { 0.9, 0.8, 0.8, 0, 0 } },
+                                              { 0.9, { 0.9, 0.08, 0.08, 0, 0 } },
+                                              { 0.9, { 0.0, 0.0, 0.0, 0, 0 } } };
+    switch (kw) {
+    case KW_bozo: set_map(p, pig, bozo, 6); break;
+    case KW_wood: set_map(p, pig, wood, 2); break;
+    case KW_agate: set_map(p, pig, agate, 6); break;
+    case KW_marble: set_map(p, pig, marble, 3); break;
+    default: set_grey_map(p, pig); break;
+    }
+}
+
+/* POV-Ray's Check_Turb: the turbulence that `turbulence`, `octaves`,
+ * `omega` and `lambda` written in the pigment change -- the last warp when
+ * it is such a classic one, else a new one appended. Warp lists are shared
+ * between copies of a pigment, so the list is copied before any change. */
+static PatternTurbulence *classic_turbulence(Parser *p, Pigment *pig)
+{
+    int n = pig->nturbulence;
+    int append = n == 0 || !pig->turbulence[n - 1].classic;
+    PatternTurbulence *list = palloc(p, sizeof *list * (size_t)(n + append));
+    for (int i = 0; i < n; i++)
+        list[i] = pig->turbulence[i];
+    if (append) {
+        PatternTurbulence *t = &list[n];
+        t->classic = 1;
+        t->amount = v3(0, 0, 0);
+        t->octaves = 6;
+        t->omega = 0.5;
+        t->lambda = 2.0;
+        n++;
+    }
+    pig->turbulence = list;
+    pig->nturbulence = n;
+    return &list[n - 1];
+}
+
+static int octaves_value(double v)
+{
+    return v < 1.0 ? 1 : v > 10.0 ? 10 : (int)v; /* POV-Ray's limits */
+}
+
+/* warp { ... }: turbulence is modelled, the other warps are approximated
+ * (ignored). */
+static void parse_warp(Parser *p, Pigment *pig, const Token *at)
+{
+    begin_block(p, "warp");
+    Token *t = next(p);
+    if (!is_kw(t, KW_turbulence)) {
+        approximate(p, at, APPROX_WARP, &pig->approx);
+        skip_block_body(p);
+        return;
+    }
+    PatternTurbulence w = { 0, parse_vector(p), 6, 0.5, 2.0 };
+    for (;;) {
+        t = next(p);
+        if (is_kw(t, KW_octaves))
+            w.octaves = octaves_value(parse_float(p));
+        else if (is_kw(t, KW_omega))
+            w.omega = single(parse_float(p));
+        else if (is_kw(t, KW_lambda))
+            w.lambda = single(parse_float(p));
+        else if (is_punct(t, '}'))
+            break;
+        else
+            fail_expected(p, t, "octaves, omega, lambda or '}' in 'warp { turbulence }'");
+    }
+    PatternTurbulence *list = palloc(p, sizeof *list * (size_t)(pig->nturbulence + 1));
+    for (int i = 0; i < pig->nturbulence; i++)
+        list[i] = pig->turbulence[i];
+    list[pig->nturbulence] = w;
+    pig->turbulence = list;
+    pig->nturbulence++;
 }
 
 /* The colours after checker / hexagon (POV-Ray's Parse_Blend_List): up to
@@ -148,11 +245,11 @@ static void parse_colour_map(Parser *p, Pigment *pig)
             fail_expected(p, t, "'[' or '}' in 'color_map'");
         if (entries.n >= 256)
             parse_fail(p, t->pos, "Blend_Map too long (more than 256 entries)");
-        double v = parse_float(p);
+        double v = single(parse_float(p)); /* POV-Ray keeps map values in single precision */
         parse_comma(p);
         Token *c = peek(p);
         if (token_starts_float(p, c)) { /* old style: a second value, then two colours */
-            double v2 = parse_float(p);
+            double v2 = single(parse_float(p));
             ColourMapEntry *a = tvec_push(p, &entries);
             a->value = v;
             parse_colour(p, &a->colour, 1);
@@ -207,8 +304,7 @@ static void skip_arguments(Parser *p)
 static int pattern_modifier(int kw)
 {
     switch (kw) {
-    case KW_turbulence: case KW_octaves: case KW_omega: case KW_lambda: case KW_warp: case KW_noise_generator:
-    case KW_agate_turb: case KW_brick_size: case KW_mortar: case KW_form: case KW_metric: case KW_offset:
+    case KW_brick_size: case KW_mortar: case KW_form: case KW_metric: case KW_offset:
     case KW_solid: case KW_control0: case KW_control1: case KW_exponent: case KW_max_iteration:
     case KW_interior: case KW_exterior: case KW_orientation: case KW_accuracy:
     case KW_number_of_sides: case KW_number_of_tiles: case KW_pattern: case KW_type: case KW_repeat:
@@ -264,20 +360,39 @@ void parse_pigment(Parser *p, Pigment *pig)
             pig->frequency = 1.0;
             pig->phase = 0.0;
             pig->wave = WAVE_RAMP;
-            if (kw == KW_gradient) {
+            switch (kw) {
+            case KW_gradient: {
                 Token vt = *peek(p);
                 Vec3 g = parse_vector(p);
                 if (v3_length(g) == 0.0)
                     parse_fail(p, vt.pos, "the gradient vector must not be zero");
                 pig->gradient = v3_normalize(g);
                 pig->kind = PIGMENT_GRADIENT;
-                if (pig->nmap == 0)
-                    set_grey_map(p, pig);
-            } else {
+                break;
+            }
+            case KW_checker: case KW_hexagon:
                 pig->kind = kw == KW_checker ? PIGMENT_CHECKER : PIGMENT_HEXAGON;
                 pig->frequency = 0.0; /* as POV-Ray: the value is the colour's index */
                 parse_colour_list(p, pig, kw == KW_checker ? 2 : 3);
+                break;
+            case KW_bozo: case KW_spotted: case KW_bumps: pig->kind = PIGMENT_BOZO; break;
+            case KW_granite: pig->kind = PIGMENT_GRANITE; break;
+            case KW_wrinkles: pig->kind = PIGMENT_WRINKLES; break;
+            case KW_marble: pig->kind = PIGMENT_MARBLE; pig->wave = WAVE_TRIANGLE; break;
+            case KW_wood: pig->kind = PIGMENT_WOOD; pig->wave = WAVE_TRIANGLE; break;
+            case KW_agate:
+                pig->kind = PIGMENT_AGATE;
+                pig->agate_turb = 1.0;
+                (void)classic_turbulence(p, pig); /* agate's own turbulence */
+                break;
+            case KW_spiral1: case KW_spiral2:
+                pig->kind = kw == KW_spiral1 ? PIGMENT_SPIRAL1 : PIGMENT_SPIRAL2;
+                pig->arms = (short)parse_float(p); /* POV-Ray keeps a short */
+                pig->wave = WAVE_TRIANGLE;
+                break;
             }
+            if (pig->nmap == 0)
+                set_default_map(p, pig, kw);
             continue;
         case PAT_APPROXIMATED:
             approximate(p, &at, APPROX_PATTERN, &pig->approx);
@@ -301,8 +416,9 @@ void parse_pigment(Parser *p, Pigment *pig)
         case KW_colour_map:
             parse_colour_map(p, pig);
             continue;
-        case KW_frequency: pig->frequency = parse_float(p); continue;
-        case KW_phase: pig->phase = parse_float(p); continue;
+        /* POV-Ray keeps these in single precision (SNGL): so do the values */
+        case KW_frequency: pig->frequency = single(parse_float(p)); continue;
+        case KW_phase: pig->phase = single(parse_float(p)); continue;
         case KW_ramp_wave: pig->wave = WAVE_RAMP; continue;
         case KW_sine_wave: pig->wave = WAVE_SINE; continue;
         case KW_triangle_wave: pig->wave = WAVE_TRIANGLE; continue;
@@ -310,18 +426,45 @@ void parse_pigment(Parser *p, Pigment *pig)
         case KW_cubic_wave: pig->wave = WAVE_CUBIC; continue;
         case KW_poly_wave:
             pig->wave = WAVE_POLY;
-            pig->wave_exponent = token_starts_float(p, peek(p)) ? parse_float(p) : 1.0;
+            pig->wave_exponent = token_starts_float(p, peek(p)) ? single(parse_float(p)) : 1.0;
             continue;
-        case KW_uv_mapping:
-            if (pig->kind != PIGMENT_SOLID && !approximated) /* uv coordinates: not modelled */
-                approximate(p, &at, APPROX_PATTERN, &pig->approx);
+        case KW_uv_mapping: {
+            /* POV-Ray: a new pigment, made of the rest of this block, seen
+             * at the surface's (u, v, 0); what came before is dropped. */
+            const ApproxNote *notes = pig->approx;
+            *pig = p->scene->default_texture.pigment;
+            pig->approx = notes;
+            transform_identity(&pig->transform);
+            pig->uv_mapping = 1;
+            approximated = 0;
+            continue;
+        }
+        case KW_turbulence: {
+            PatternTurbulence *turb = classic_turbulence(p, pig);
+            turb->amount = parse_vector(p);
+            continue;
+        }
+        case KW_octaves: classic_turbulence(p, pig)->octaves = octaves_value(parse_float(p)); continue;
+        case KW_omega: classic_turbulence(p, pig)->omega = single(parse_float(p)); continue;
+        case KW_lambda: classic_turbulence(p, pig)->lambda = single(parse_float(p)); continue;
+        case KW_warp: parse_warp(p, pig, &at); continue;
+        case KW_noise_generator: {
+            Token vt = *peek(p);
+            double g = parse_float(p);
+            if (g < 0.0 || g >= 4.0)
+                parse_fail(p, vt.pos, "Value for noise_generator must be 0, 1, 2, or 3.");
+            pig->noise_generator = (int)g;
+            continue;
+        }
+        case KW_agate_turb:
+            pig->agate_turb = single(parse_float(p));
+            (void)classic_turbulence(p, pig);
             continue;
         default:
             break;
         }
         if (kw >= 0 && pattern_modifier(kw)) {
-            if (pig->kind != PIGMENT_SOLID && !approximated)
-                approximate(p, &at, APPROX_WARP, &pig->approx);
+            /* modifiers of patterns hstrace does not evaluate */
             skip_arguments(p);
             continue;
         }
@@ -540,12 +683,16 @@ SceneTexture *parse_texture(Parser *p)
             approximate(p, t, APPROX_NORMAL, &tex->approx);
             skip_normal(p);
             break;
-        default:
-            if (parse_transform_item(p, t, &tex->pigment.transform))
+        default: {
+            /* a uv-mapped pigment is not moved by the texture's transforms */
+            Transform ignored;
+            transform_identity(&ignored);
+            if (parse_transform_item(p, t, tex->pigment.uv_mapping ? &ignored : &tex->pigment.transform))
                 break;
             if (t->type == TK_WORD && t->kw >= 0)
                 unsupported(p, t);
             fail_expected(p, t, "pigment, normal, finish, a transform or '}' in 'texture'");
+        }
         }
     }
 }
@@ -627,7 +774,10 @@ void parse_sky_sphere(Parser *p, SkySphere *sky)
             Pigment *pig = tvec_push(p, &pigments);
             *pig = p->scene->default_texture.pigment;
             pig->approx = NULL;
+            Token at = *t;
             parse_pigment(p, pig);
+            if (pig->uv_mapping && pig->kind != PIGMENT_SOLID) /* as POV-Ray: a sky has no uv */
+                parse_fail(p, at.pos, "uv_mapping cannot be used in a sky_sphere pigment");
             continue;
         }
         if (t->type == TK_WORD && t->kw < 0) {

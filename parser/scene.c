@@ -43,3 +43,12 @@ double scene_working_gamma(const Scene *s)
         return g->assumed_gamma_srgb ? 0.0 : g->assumed_gamma;
     return s->version_given && s->version >= 3.7 ? 1.0 : 0.0;
 }
+
+int scene_noise_generator(const Scene *s)
+{
+    if (s->globals.noise_generator)
+        return s->globals.noise_generator;
+    /* POV-Ray's default follows the language version (an explicit
+     * global_settings value stays). */
+    return (int)(s->version * 100.0 + 0.5) < 350 ? 1 : 2;
+}

@@ -33,7 +33,7 @@ typedef struct {
 typedef enum {
     APPROX_NORMAL,        /* normal { } perturbation: ignored */
     APPROX_PATTERN,       /* a pigment pattern hstrace does not evaluate: one colour */
-    APPROX_WARP,          /* turbulence / warp on checker, hexagon or gradient: ignored */
+    APPROX_WARP,          /* warps other than turbulence, turbulence on checker/hexagon/gradient: ignored */
     APPROX_LAYERS,        /* layered textures blended into one */
     APPROX_FINISH,        /* irid, crand, diffuse backside: ignored */
     APPROX_CAUSTICS,      /* interior caustics, dispersion: ignored */
@@ -41,7 +41,7 @@ typedef enum {
     APPROX_RADIOSITY,     /* global radiosity / subsurface: ignored */
     APPROX_AREA_LIGHT,    /* area_light: a point light at its centre */
     APPROX_FOCAL_BLUR,    /* camera aperture / normal: a pinhole camera */
-    APPROX_FOG,           /* fog turbulence; fog on light rays (media_attenuation) */
+    APPROX_FOG,           /* fog on light rays (media_attenuation) */
     APPROX_KINDS
 } ApproxKind;
 
@@ -69,7 +69,28 @@ typedef enum {
     PIGMENT_CHECKER,  /* two colours (POV-Ray's checker) */
     PIGMENT_HEXAGON,  /* three colours (POV-Ray's hexagon) */
     PIGMENT_GRADIENT, /* a colour map along a direction */
+    PIGMENT_BOZO,     /* solid noise (also spotted and bumps) */
+    PIGMENT_GRANITE,  /* 6 octaves of |noise| */
+    PIGMENT_WRINKLES, /* 10 octaves of noise */
+    PIGMENT_AGATE,    /* a sine of turbulence and z */
+    PIGMENT_MARBLE,   /* x plus turbulence, triangle wave */
+    PIGMENT_WOOD,     /* distance from the z axis, turbulence, triangle wave */
+    PIGMENT_SPIRAL1,  /* arms around the z axis, triangle wave */
+    PIGMENT_SPIRAL2,  /* two sets of arms crossing */
 } PigmentKind;
+
+/* Turbulence of a pattern (POV-Ray's TURB warp): `turbulence` written in
+ * the pigment (classic: marble, wood, agate and the spirals also add its
+ * scalar value to theirs) or `warp { turbulence ... }`. Both displace the
+ * point by the vector turbulence times `amount`, in the order written,
+ * after the pigment's transforms (POV-Ray keeps all of those at the head
+ * of the warp list). */
+typedef struct {
+    int classic;          /* `turbulence` (or octaves, omega, lambda) outside a warp */
+    Vec3 amount;          /* default 0 */
+    int octaves;          /* default 6, held to 1..10 */
+    double omega, lambda; /* defaults 0.5 and 2 */
+} PatternTurbulence;
 
 /* One [value colour] entry of a colour_map, sorted by value as written. */
 typedef struct {
@@ -94,6 +115,15 @@ typedef struct {
     double frequency, phase; /* POV-Ray's defaults 1 and 0; checker and hexagon set 0 */
     WaveKind wave;
     double wave_exponent;    /* poly_wave */
+    int arms;                /* spiral1, spiral2 */
+    double agate_turb;       /* agate_turb, default 1 */
+    int noise_generator;     /* 1..3, or 0: the scene's (GlobalSettings) */
+    int nturbulence;         /* warps, in POV-Ray's order (shared, never changed) */
+    const PatternTurbulence *turbulence;
+    /* uv_mapping: the pattern is evaluated at (u, v, 0) of the surface
+     * (mesh uv coordinates, POV-Ray's default world x, y elsewhere), and
+     * `transform` is its own, not moved by the texture or the object. */
+    int uv_mapping;
     Transform transform;  /* pattern space to texture space */
     const ApproxNote *approx;
 } Pigment;
@@ -147,6 +177,7 @@ typedef enum {
 typedef struct {
     int v[3];       /* vertex indices */
     int n[3];       /* normal indices, or -1 for a flat triangle */
+    int uv[3];      /* uv coordinate indices (mesh.uvs), or -1: uv (0, 0) */
     int texture;    /* index into the mesh's textures, or -1 for the object's */
 } MeshFace;
 
@@ -182,8 +213,9 @@ struct SceneObject {
             int has_normals; /* smooth_triangle */
         } triangle;
         struct {
-            int nvertices, nnormals, nfaces, ntextures;
+            int nvertices, nnormals, nfaces, ntextures, nuvs;
             Vec3 *vertices, *normals;
+            Vec3 *uvs;           /* uv_vectors (z = 0), for uv_mapping */
             MeshFace *faces;
             const SceneTexture **textures;
         } mesh;
@@ -251,6 +283,7 @@ typedef struct {
     Colour ambient_light;   /* default 1,1,1 */
     int has_assumed_gamma;
     int assumed_gamma_srgb; /* `assumed_gamma srgb` (assumed_gamma is then 0) */
+    int noise_generator;    /* 0 when not given: 2, or 1 before #version 3.5 */
 } GlobalSettings;
 
 /* sky_sphere: pigments on the unit sphere of directions, the last written
@@ -270,7 +303,8 @@ typedef struct {
     double alt, offset;   /* ground fog: height scale, and where full density ends */
     Vec3 up;              /* ground fog: unit, "up" for alt and offset */
     /* Turbulence (any of turbulence, octaves, omega, lambda given): how far
-     * it thins the fog, the noise's scale and its octaves. */
+     * it thins the fog, the noise's scale and its octaves (omega, lambda
+     * and turb_depth rounded to single precision, as POV-Ray keeps them). */
     int turbulent;
     double turb_depth;
     Vec3 turbulence;
@@ -323,5 +357,9 @@ void scene_free(Scene *scene);
  * as encoded for POV-Ray's default display gamma, which is sRGB (measured:
  * POV-Ray 3.7 renders such a scene exactly as with assumed_gamma srgb). */
 double scene_working_gamma(const Scene *s);
+
+/* The noise generator of patterns that name none (POV-Ray 3.7: the one of
+ * global_settings, else 2, or 1 for a scene whose #version is below 3.5). */
+int scene_noise_generator(const Scene *s);
 
 #endif

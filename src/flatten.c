@@ -14,8 +14,9 @@
 
 typedef struct {
     World *w;
-    int cap_polygons, cap_points, cap_outlines, cap_normals, cap_planes, cap_materials;
+    int cap_polygons, cap_points, cap_outlines, cap_normals, cap_planes, cap_materials, cap_uvs;
     int failed;
+    int noise_generator; /* the scene's, for patterns that name none */
 } Builder;
 
 /* Grows *array (of `size`-byte items) so that index `need` fits. */
@@ -63,8 +64,11 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->pigment = tex->pigment.colour;
     if (tex->pigment.kind != PIGMENT_SOLID) {
         m->pattern = tex->pigment;
+        if (m->pattern.noise_generator == 0)
+            m->pattern.noise_generator = b->noise_generator;
         m->pattern_to_world = tex->pigment.transform;
-        transform_compose(&m->pattern_to_world, texture_space);
+        if (!tex->pigment.uv_mapping) /* uv space is the surface's own: nothing moves it */
+            transform_compose(&m->pattern_to_world, texture_space);
     }
     m->finish = tex->finish;
     /* POV-Ray keeps 1/roughness internally; so do we. */
@@ -149,6 +153,7 @@ static int add_triangle(Builder *b, Vec3 a, Vec3 c1, Vec3 c2, const Vec3 *normal
     p->first_outline = -1;
     p->noutlines = 1;
     p->smooth_normals = -1;
+    p->uv = -1;
     p->material = material;
     w->points[w->npoints++] = a;
     w->points[w->npoints++] = c1;
@@ -211,6 +216,7 @@ static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, in
     p->first_outline = w->noutline_starts;
     p->noutlines = noutlines;
     p->smooth_normals = -1;
+    p->uv = -1;
     p->material = material;
     for (int k = 0; k <= noutlines; k++)
         w->outline_start[w->noutline_starts++] = w->npoints + starts[k];
@@ -218,6 +224,27 @@ static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, in
     w->npoints += n;
     finish_polygon_bounds(w, p);
     w->npolygons++;
+    return 0;
+}
+
+static int uses_uv(const World *w, int material)
+{
+    const Material *m = &w->materials[material];
+    return m->pattern.kind != PIGMENT_SOLID && m->pattern.uv_mapping;
+}
+
+/* Gives the polygon added last the uv coordinates of its first 3 points
+ * (when it was added: degenerate ones are dropped). */
+static int attach_uv(Builder *b, int npolygons_before, const Vec3 uv[3])
+{
+    World *w = b->w;
+    if (w->npolygons == npolygons_before)
+        return 0;
+    if (GROW(b, uvs, cap_uvs, w->nuvs + 3))
+        return -1;
+    w->polygons[w->npolygons - 1].uv = w->nuvs;
+    for (int i = 0; i < 3; i++)
+        w->uvs[w->nuvs++] = uv[i];
     return 0;
 }
 
@@ -255,6 +282,23 @@ static int flatten_polygon(Builder *b, const SceneObject *o, const Inherited *in
     return rc;
 }
 
+/* POV-Ray's uv mapping of a box (Box::UVCoord): the unfolded cube, each
+ * face in its own cell of a 4 x 3 grid, from the corner's place in the box
+ * (0 or 1 along each axis). Face order as flatten_box's: x lo, x hi, y lo,
+ * y hi, z lo, z hi. */
+static Vec3 box_corner_uv(int corner, int face)
+{
+    double x = corner & 1 ? 1.0 : 0.0, y = corner & 2 ? 1.0 : 0.0, z = corner & 4 ? 1.0 : 0.0;
+    switch (face) {
+    case 0: return v3(z / 4.0, 1.0 / 3.0 + y / 3.0, 0);
+    case 1: return v3(3.0 / 4.0 - z / 4.0, 1.0 / 3.0 + y / 3.0, 0);
+    case 2: return v3(1.0 / 4.0 + x / 4.0, z / 3.0, 0);
+    case 3: return v3(1.0 / 4.0 + x / 4.0, 3.0 / 3.0 - z / 3.0, 0);
+    case 4: return v3(1.0 - x / 4.0, 1.0 / 3.0 + y / 3.0, 0);
+    default: return v3(1.0 / 4.0 + x / 4.0, 1.0 / 3.0 + y / 3.0, 0);
+    }
+}
+
 static int flatten_box(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
     Vec3 lo = v3_min(o->u.box.corner1, o->u.box.corner2);
@@ -267,11 +311,20 @@ static int flatten_box(Builder *b, const SceneObject *o, const Inherited *in, in
         { 0, 4, 5, 1 }, { 2, 3, 7, 6 }, /* y = lo, y = hi */
         { 0, 1, 3, 2 }, { 4, 6, 7, 5 }, /* z = lo, z = hi */
     };
+    int uv_mapped = uses_uv(b->w, material);
     for (int f = 0; f < 6; f++) {
         Vec3 q[4] = { c[faces[f][0]], c[faces[f][1]], c[faces[f][2]], c[faces[f][3]] };
         int starts[2] = { 0, 4 };
+        int before = b->w->npolygons;
         if (add_polygon(b, q, 4, starts, 1, material))
             return -1;
+        if (uv_mapped) {
+            Vec3 uv[3];
+            for (int k = 0; k < 3; k++)
+                uv[k] = box_corner_uv(faces[f][k], f);
+            if (attach_uv(b, before, uv))
+                return -1;
+        }
     }
     return 0;
 }
@@ -365,7 +418,16 @@ static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, i
                 n[i] = world_normal(in, on[i]);
         }
         int m = (face->texture >= 0 && face->texture < nt) ? face_material[face->texture] : material;
+        int before = b->w->npolygons;
         rc = add_triangle(b, v[0], v[1], v[2], smooth ? n : NULL, m);
+        if (rc == 0 && uses_uv(b->w, m)) {
+            Vec3 uv[3];
+            for (int i = 0; i < 3; i++) {
+                int k = face->uv[i];
+                uv[i] = k >= 0 && k < o->u.mesh.nuvs ? o->u.mesh.uvs[k] : v3(0, 0, 0); /* POV-Ray's default */
+            }
+            rc = attach_uv(b, before, uv);
+        }
     }
     free(face_material);
     return rc;
@@ -465,7 +527,7 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     memset(err, 0, sizeof *err);
     w->bounds_min = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
     w->bounds_max = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
-    Builder b = { .w = w };
+    Builder b = { .w = w, .noise_generator = scene_noise_generator(scene) };
     Inherited root;
     memset(&root, 0, sizeof root);
     transform_identity(&root.transform);
@@ -498,6 +560,7 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     w->ambient_light = rgb_of(&scene->globals.ambient_light);
     w->max_trace_level = scene->globals.max_trace_level > 0 ? scene->globals.max_trace_level : 5;
     w->adc_bailout = scene->globals.adc_bailout > 0 ? scene->globals.adc_bailout : 1.0 / 255.0;
+    w->noise_generator = b.noise_generator;
     return 0;
 }
 
@@ -507,6 +570,7 @@ void world_free(World *w)
     free(w->points);
     free(w->outline_start);
     free(w->vertex_normals);
+    free(w->uvs);
     free(w->planes);
     free(w->materials);
     free(w->lights);

@@ -1,28 +1,42 @@
 /* Fog along a ray, as POV-Ray 3.7 computes it (Trace::ComputeFog and its
- * constant and ground fog colours). Fog turbulence is not modelled: the
- * parser reports it as an approximation. */
+ * constant and ground fog colours, with turbulence). */
 #include <math.h>
 
 #include "fog.h"
+#include "noise.h"
 
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 #define POV_BOUND_HUGE 2.0e10 /* POV-Ray's depth of a ray that hits nothing */
 
 static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589 * g + 0.114 * b; }
 
-/* Transmittance of a constant fog over `width`. */
-static double constant_fog(const SceneFog *f, double width)
+/* Turbulence thins the fog along a ray: the fog's width shrinks by the
+ * turbulence at `at` (scaled by the fog's turbulence vector), the less the
+ * longer the ray. */
+static double turbulent_width(const World *w, const SceneFog *f, Vec3 at, double width)
 {
+    if (!f->turbulent)
+        return width;
+    Vec3 p = v3(at.x * f->turbulence.x, at.y * f->turbulence.y, at.z * f->turbulence.z);
+    double k = exp(-width / f->distance);
+    double t = noise_turbulence(p, f->octaves, f->omega, f->lambda, w->noise_generator) * f->turb_depth;
+    return width * (1.0 - k * fmin(1.0, t));
+}
+
+/* Transmittance of a constant fog over `width` from org. */
+static double constant_fog(const World *w, const SceneFog *f, Vec3 org, Vec3 dir, double width)
+{
+    width = turbulent_width(w, f, v3_add(org, v3_scale(dir, width / 2.0)), width);
     return exp(-width / f->distance);
 }
 
 /* Transmittance of a ground fog over `width` from org: the density is 1
  * below the offset and 1 / (1 + h^2) at h alts above it, averaged along the
  * ray by its integral (atan). */
-static double ground_fog(const SceneFog *f, Vec3 org, Vec3 dir, double width)
+static double ground_fog(const World *w, const SceneFog *f, Vec3 org, Vec3 dir, double width)
 {
     if (f->alt == 0.0) /* POV-Ray divides by it; hstrace takes a fog without height falloff */
-        return constant_fog(f, width);
+        return constant_fog(w, f, org, dir, width);
     Vec3 end_point = v3_add(org, v3_scale(dir, width));
     double start = (v3_dot(org, f->up) - f->offset) / f->alt;
     double end = (v3_dot(end_point, f->up) - f->offset) / f->alt;
@@ -35,6 +49,8 @@ static double ground_fog(const SceneFog *f, Vec3 org, Vec3 dir, double width)
         double delta = start - end;
         density = fabs(delta) > POV_EPSILON ? (atan(start) - atan(end)) / delta : 1.0 / (start * start + 1.0);
     }
+    Vec3 middle = v3_scale(v3_add(org, end_point), 0.5);
+    width = turbulent_width(w, f, middle, width);
     return exp(-width * density / f->distance);
 }
 
@@ -47,7 +63,7 @@ void fog_apply(const World *w, Vec3 org, Vec3 dir, double depth, Radiance *seen)
         const SceneFog *f = &w->fogs[i];
         if (fabs(f->distance) <= POV_EPSILON)
             continue;
-        double att = f->type == 2 ? ground_fog(f, org, dir, width) : constant_fog(f, width);
+        double att = f->type == 2 ? ground_fog(w, f, org, dir, width) : constant_fog(w, f, org, dir, width);
         const Colour *c = &f->colour;
         if (att < c->transmit) /* a transmitting fog colour lets at least that much through */
             att = c->transmit;

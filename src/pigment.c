@@ -1,10 +1,14 @@
 /* Pigment patterns, written from POV-Ray 3.7's definitions (checker_pattern,
- * hexagon_pattern, gradient_pattern, Evaluate_TPat's frequency/phase/wave,
- * Search_Blend_Map): the same small offsets, so that pattern borders fall
- * where POV-Ray puts them. */
+ * hexagon_pattern, gradient_pattern, the noise patterns, spiral1/2_pattern,
+ * Warp_EPoint's turbulence, Evaluate_TPat's frequency/phase/wave,
+ * Search_Blend_Map, the uv coordinates of UVCoord): the same small offsets
+ * and the same order of operations, so that pattern borders fall where
+ * POV-Ray puts them. */
 #include "pigment.h"
 
 #include <math.h>
+
+#include "noise.h"
 
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
@@ -59,16 +63,145 @@ static double gradient_value(const Pigment *pig, Vec3 p)
     return v > 1.0 ? fmod(v, 1.0) : v;
 }
 
+/* POV-Ray's cycloidal(): a sine of period 1, through the fraction. */
+static double cycloidal(double v)
+{
+    if (v >= 0.0)
+        return sin((v - floor(v)) * 50000.0 / 50000.0 * (2.0 * M_PI));
+    return 0.0 - sin((0.0 - (v + floor(0.0 - v))) * 50000.0 / 50000.0 * (2.0 * M_PI));
+}
+
+/* POV-Ray's Triangle_Wave(): 0 at whole numbers, 1 halfway. */
+static double triangle_wave(double v)
+{
+    double offset = v >= 0.0 ? v - floor(v) : v + 1.0 + floor(fabs(v));
+    return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
+}
+
+/* POV-Ray's Search_For_Turb: the turbulence a pattern uses itself (marble,
+ * wood, agate, the spirals) is the last warp, if written as `turbulence`. */
+static const PatternTurbulence *own_turbulence(const Pigment *pig)
+{
+    if (pig->nturbulence > 0 && pig->turbulence[pig->nturbulence - 1].classic)
+        return &pig->turbulence[pig->nturbulence - 1];
+    return NULL;
+}
+
+static double turbulence_at(const PatternTurbulence *t, Vec3 p, int generator)
+{
+    return noise_turbulence(p, t->octaves, t->omega, t->lambda, generator);
+}
+
+/* The warps in order (Warp_EPoint): each turbulence displaces the point by
+ * its vector noise times its amount; marble and wood use a `turbulence`
+ * written in the pigment in their own way instead. */
+static Vec3 warp_point(const Pigment *pig, Vec3 p)
+{
+    for (int i = 0; i < pig->nturbulence; i++) {
+        const PatternTurbulence *t = &pig->turbulence[i];
+        if (t->classic && (pig->kind == PIGMENT_MARBLE || pig->kind == PIGMENT_WOOD))
+            continue;
+        Vec3 d = noise_vector_turbulence(p, t->octaves, t->omega, t->lambda);
+        p.x += d.x * t->amount.x;
+        p.y += d.y * t->amount.y;
+        p.z += d.z * t->amount.z;
+    }
+    return p;
+}
+
+static double granite_value(Vec3 p, int generator)
+{
+    double noise = 0.0, freq = 1.0;
+    Vec3 q = v3(p.x * 4.0, p.y * 4.0, p.z * 4.0);
+    for (int i = 0; i < 6; freq *= 2.0, i++) {
+        double n = noise_value(v3(q.x * freq, q.y * freq, q.z * freq), generator), t;
+        if (generator == NOISE_ORIGINAL) {
+            t = fabs(0.5 - n);
+        } else {
+            t = fabs(1.0 - 2.0 * n);
+            if (t > 0.5)
+                t = 0.5;
+        }
+        noise += t / freq;
+    }
+    return noise;
+}
+
+static double wrinkles_value(Vec3 p, int generator)
+{
+    double lambda = 2.0, omega = 0.5, value;
+    if (generator > 1)
+        value = fmin(fmax(noise_value(p, generator) * 2.0 - 0.5, 0.0), 1.0);
+    else
+        value = noise_value(p, generator);
+    for (int i = 1; i < 10; i++) {
+        Vec3 q = v3(p.x * lambda, p.y * lambda, p.z * lambda);
+        if (generator > 1)
+            value += omega * fmin(fmax(noise_value(q, generator) * 2.0 - 0.5, 0.0), 1.0);
+        else
+            value += omega * noise_value(q, generator);
+        lambda *= 2.0;
+        omega *= 0.5;
+    }
+    return value / 2.0;
+}
+
+static double agate_value(const Pigment *pig, Vec3 p, int generator)
+{
+    static const PatternTurbulence plain = { 1, { 0, 0, 0 }, 6, 0.5, 2.0 };
+    const PatternTurbulence *t = own_turbulence(pig);
+    double turb = pig->agate_turb * turbulence_at(t ? t : &plain, p, generator);
+    double noise = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
+    if (noise < 0.0)
+        return 0.0;
+    return pow(fmin(1.0, noise), 0.77);
+}
+
+static double marble_value(const Pigment *pig, Vec3 p, int generator)
+{
+    const PatternTurbulence *t = own_turbulence(pig);
+    return p.x + (t ? t->amount.x * turbulence_at(t, p, generator) : 0.0);
+}
+
+static double wood_value(const Pigment *pig, Vec3 p)
+{
+    const PatternTurbulence *t = own_turbulence(pig);
+    double x = 0.0, y = 0.0;
+    if (t) {
+        Vec3 d = noise_vector_turbulence(p, t->octaves, t->omega, t->lambda);
+        x = cycloidal((p.x + d.x) * t->amount.x);
+        y = cycloidal((p.y + d.y) * t->amount.y);
+    }
+    x += p.x;
+    y += p.y;
+    return sqrt(x * x + y * y + 0.0 * 0.0);
+}
+
+/* Both spirals: arms around the z axis, rising with z and the distance. */
+static double spiral_value(const Pigment *pig, Vec3 p, int generator)
+{
+    const PatternTurbulence *t = own_turbulence(pig);
+    double turb = t ? t->amount.x * turbulence_at(t, p, generator) : 0.0;
+    double rad = sqrt(p.x * p.x + p.y * p.y), phi;
+    if (rad == 0.0)
+        phi = 0.0;
+    else if (p.x < 0.0)
+        phi = 3.0 * (M_PI / 2.0) - asin(p.y / rad);
+    else
+        phi = (M_PI / 2.0) + asin(p.y / rad);
+    double v = p.z + rad + (double)pig->arms * phi / (2.0 * M_PI) + turb;
+    if (pig->kind == PIGMENT_SPIRAL1)
+        return v;
+    return triangle_wave(rad) + triangle_wave(v);
+}
+
 static double wave(const Pigment *pig, double v)
 {
     switch (pig->wave) {
     case WAVE_RAMP: return v;
-    case WAVE_SINE: return (1.0 + sin(v * 2.0 * M_PI)) * 0.5;
-    case WAVE_TRIANGLE: {
-        double o = v - floor(v);
-        return o >= 0.5 ? 2.0 * (1.0 - o) : 2.0 * o;
-    }
-    case WAVE_SCALLOP: return fabs(sin(v * 0.5 * 2.0 * M_PI));
+    case WAVE_SINE: return (1.0 + cycloidal(v)) * 0.5;
+    case WAVE_TRIANGLE: return triangle_wave(v);
+    case WAVE_SCALLOP: return fabs(cycloidal(v * 0.5));
     case WAVE_CUBIC: return v * v * (-2.0 * v + 3.0);
     case WAVE_POLY: return pow(v, pig->wave_exponent);
     }
@@ -77,11 +210,20 @@ static double wave(const Pigment *pig, double v)
 
 double pattern_value(const Pigment *pig, Vec3 p)
 {
+    int generator = pig->noise_generator ? pig->noise_generator : NOISE_RANGE_CORRECTED;
+    p = warp_point(pig, p);
     double v;
     switch (pig->kind) {
     case PIGMENT_CHECKER: v = checker_value(p); break;
     case PIGMENT_HEXAGON: v = hexagon_value(p); break;
     case PIGMENT_GRADIENT: v = gradient_value(pig, p); break;
+    case PIGMENT_BOZO: v = noise_value(p, generator); break;
+    case PIGMENT_GRANITE: v = granite_value(p, generator); break;
+    case PIGMENT_WRINKLES: v = wrinkles_value(p, generator); break;
+    case PIGMENT_AGATE: v = agate_value(pig, p, generator); break;
+    case PIGMENT_MARBLE: v = marble_value(pig, p, generator); break;
+    case PIGMENT_WOOD: v = wood_value(pig, p); break;
+    case PIGMENT_SPIRAL1: case PIGMENT_SPIRAL2: v = spiral_value(pig, p, generator); break;
     default: return 0.0;
     }
     if (pig->frequency != 0.0)
@@ -133,11 +275,45 @@ int pigment_is_opaque(const Pigment *pig)
     return 1;
 }
 
-Colour material_colour_at(const Material *m, Vec3 world_point)
+/* Barycentric weights of q (in the polygon's plane) with respect to the
+ * polygon's first three points, from areas in its projection: they extend
+ * affinely beyond the triangle, which suits the four-point box faces. */
+static void first_three_weights(const World *w, const Polygon *p, Vec3 q, double b[3])
+{
+    const Vec3 *v = &w->points[p->first_point];
+    int iu = p->axis_u, iv = p->axis_v;
+    double u0 = v3_comp(v[0], iu), w0 = v3_comp(v[0], iv), u1 = v3_comp(v[1], iu), w1 = v3_comp(v[1], iv);
+    double u2 = v3_comp(v[2], iu), w2 = v3_comp(v[2], iv), qu = v3_comp(q, iu), qv = v3_comp(q, iv);
+    double area = (u1 - u0) * (w2 - w0) - (w1 - w0) * (u2 - u0);
+    if (area == 0.0) {
+        b[0] = 1.0;
+        b[1] = b[2] = 0.0;
+        return;
+    }
+    b[0] = ((u2 - u1) * (qv - w1) - (w2 - w1) * (qu - u1)) / area;
+    b[1] = ((u0 - u2) * (qv - w2) - (w0 - w2) * (qu - u2)) / area;
+    b[2] = 1.0 - b[0] - b[1];
+}
+
+Vec3 surface_uv(const World *w, int polygon, Vec3 world_point)
+{
+    if (polygon >= 0 && w->polygons[polygon].uv >= 0) {
+        const Polygon *p = &w->polygons[polygon];
+        const Vec3 *uv = &w->uvs[p->uv];
+        double b[3];
+        first_three_weights(w, p, world_point, b);
+        return v3(b[0] * uv[0].x + b[1] * uv[1].x + b[2] * uv[2].x, b[0] * uv[0].y + b[1] * uv[1].y + b[2] * uv[2].y,
+                  0.0);
+    }
+    return v3(world_point.x, world_point.y, 0.0); /* POV-Ray's default UVCoord */
+}
+
+Colour material_colour_at(const World *w, const Material *m, int polygon, Vec3 world_point)
 {
     if (m->pattern.kind == PIGMENT_SOLID)
         return m->pigment;
-    return pigment_at(&m->pattern, inverse_transform_point(&m->pattern_to_world, world_point));
+    Vec3 at = m->pattern.uv_mapping ? surface_uv(w, polygon, world_point) : world_point;
+    return pigment_at(&m->pattern, inverse_transform_point(&m->pattern_to_world, at));
 }
 
 RGB sky_colour(const World *w, Vec3 dir)
@@ -148,8 +324,10 @@ RGB sky_colour(const World *w, Vec3 dir)
         /* POV-Ray transforms the direction as a point (MInvTransPoint) */
         Vec3 p = inverse_transform_point(&sky->transform, dir);
         for (int i = sky->npigments - 1; i >= 0; i--) { /* the last written is on top */
-            const Pigment *pig = &sky->pigments[i];
-            Colour c = pigment_at(pig, inverse_transform_point(&pig->transform, p));
+            Pigment pig = sky->pigments[i];
+            if (pig.noise_generator == 0)
+                pig.noise_generator = w->noise_generator;
+            Colour c = pigment_at(&pig, inverse_transform_point(&pig.transform, p));
             double opacity = 1.0 - c.filter - c.transmit;
             col.r += c.r * opacity * fil.r;
             col.g += c.g * opacity * fil.g;

@@ -1,5 +1,7 @@
-/* Pigments: POV-Ray 3.7's checker, hexagon and gradient patterns and colour
- * maps, evaluated at a point (pattern.cpp and pigment.cpp there). */
+/* Pigments: POV-Ray 3.7's checker, hexagon, gradient, noise (bozo, granite,
+ * wrinkles, agate, marble, wood) and spiral patterns with turbulence and
+ * colour maps, evaluated at a point (pattern.cpp, warps.cpp and pigment.cpp
+ * there). */
 #ifndef HST_PIGMENT_H
 #define HST_PIGMENT_H
 
@@ -10,8 +12,10 @@
  * interpolation between the two entries around the value). */
 Colour colour_map_at(const ColourMapEntry *map, int n, double value);
 
-/* The pattern's value at a point in pattern space, after frequency, phase
- * and wave: checker 0 or 1, hexagon 0, 1 or 2, gradient in [0, 1]. */
+/* The pattern's value at a point in pattern space (after the pigment's
+ * transforms, before its turbulence), after frequency, phase and wave:
+ * checker 0 or 1, hexagon 0, 1 or 2, the others in [0, 1]. A noise
+ * generator of 0 stands for POV-Ray's default, 2. */
 double pattern_value(const Pigment *pig, Vec3 p);
 
 /* The colour at a point in pattern space (solid pigments: their colour). */
@@ -21,8 +25,14 @@ Colour pigment_at(const Pigment *pig, Vec3 p);
  * transmit): then it blocks light fully wherever it is hit. */
 int pigment_is_opaque(const Pigment *pig);
 
-/* A material's colour at a world-space point on it. */
-Colour material_colour_at(const Material *m, Vec3 world_point);
+/* The uv coordinates (u, v, 0) of a world-space point on a polygon (its
+ * mesh uv vectors or box mapping), or, for a polygon without them (-1) and
+ * for planes, POV-Ray's default: the point's world x and y. */
+Vec3 surface_uv(const World *w, int polygon, Vec3 world_point);
+
+/* A material's colour at a world-space point on polygon `polygon` (-1: an
+ * infinite plane). */
+Colour material_colour_at(const World *w, const Material *m, int polygon, Vec3 world_point);
 
 /* What a sky sphere and the background show in direction `dir` (unit),
  * without an alpha channel (POV-Ray 3.7's ComputeSky, version >= 3.7). */

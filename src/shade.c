@@ -548,7 +548,7 @@ static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hitp, const 
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
     Vec3 normal = raw;
-    const Colour surface = material_colour_at(m, hit.point); /* the pigment here */
+    const Colour surface = material_colour_at(w, m, hit.kind == HIT_POLYGON ? hit.index : -1, hit.point);
     const Colour *pc = &surface;
     RGB pigment = { pc->r, pc->g, pc->b };
     if (ctx->aov && ctx->state_depth == 1)

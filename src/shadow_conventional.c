@@ -10,9 +10,10 @@
 
 /* Folds one blocker, hit at `at`, into the light that gets through; returns
  * 1 when the light is now fully blocked. */
-static int pass_through(const Material *m, const ShadowQuery *q, double t, RGB *light)
+static int pass_through(const World *w, const Material *m, int polygon, const ShadowQuery *q, double t, RGB *light)
 {
-    Colour here = m->opaque ? m->pigment : material_colour_at(m, v3_add(q->point, v3_scale(q->to_light, t)));
+    Colour here = m->opaque ? m->pigment
+                            : material_colour_at(w, m, polygon, v3_add(q->point, v3_scale(q->to_light, t)));
     if (m->opaque || (here.filter == 0.0 && here.transmit == 0.0)) {
         light->r = light->g = light->b = 0.0;
         return 1;
@@ -35,7 +36,7 @@ int shadow_planes_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
         if (w->materials[pl->material].no_shadow)
             continue;
         double t = intersect_plane(pl, q->point, q->to_light);
-        if (t > tmin && t < q->distance && pass_through(&w->materials[pl->material], q, t, light))
+        if (t > tmin && t < q->distance && pass_through(w, &w->materials[pl->material], -1, q, t, light))
             return 1;
     }
     return 0;
@@ -73,7 +74,7 @@ int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
                  * the light itself. The same rule as the shadow volumes'. */
                 if (shadow_light_side(p, &w->lights[q->light], grid_tolerance(g)) == 0)
                     continue;
-                if (pass_through(m, q, t, light)) {
+                if (pass_through(w, m, (int)pi, q, t, light)) {
                     /* a patterned see-through polygon blocks only where it is opaque:
                      * not one for the cache, which takes a hit anywhere as blocked */
                     ctx->last_blocker = m->opaque ? (int)pi : -1;

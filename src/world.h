@@ -44,6 +44,8 @@ typedef struct {
     int first_outline;    /* index in World.outline_start; -1 for a triangle */
     int noutlines;
     int smooth_normals;   /* index of 3 normals in World.vertex_normals, or -1 */
+    int uv;               /* index of the uv of its first 3 points in World.uvs, or -1
+                             (kept only where a uv_mapping pigment needs it) */
     int material;
     Vec3 bbox_min, bbox_max;
 } Polygon;
@@ -80,6 +82,8 @@ typedef struct {
     int *outline_start;   /* per polygon with outlines: noutlines+1 indices into points */
     int nvertex_normals;
     Vec3 *vertex_normals;
+    int nuvs;
+    Vec3 *uvs;            /* (u, v, 0) */
     int nplanes;
     InfinitePlane *planes;
     int nmaterials;
@@ -94,6 +98,7 @@ typedef struct {
     RGB ambient_light;
     int max_trace_level;
     double adc_bailout;
+    int noise_generator;  /* of patterns that name none (scene_noise_generator) */
     Vec3 bounds_min, bounds_max; /* of all polygons; empty when min > max */
     int ndegenerate;      /* polygons dropped at build: no area, up to rounding */
 } World;

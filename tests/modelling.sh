@@ -1,8 +1,10 @@
 #!/bin/sh
-# Modelling against POV-Ray, in TAP: small scenes using checker, hexagon and
-# gradient pigments, a sky_sphere, texture binding through transforms and
-# unions, layered textures, no_shadow and no_image, the orthographic
-# camera, spotlights and cylinder lights, fog, and a declared sky_sphere, rendered by hstrace and (when installed) POV-Ray, compared by
+# Modelling against POV-Ray, in TAP: small scenes using checker, hexagon,
+# gradient, noise and spiral pigments (turbulence, uv_mapping), a
+# sky_sphere, texture binding through transforms and unions, layered
+# textures, no_shadow and no_image, the orthographic camera, spotlights and
+# cylinder lights, fog, and a declared sky_sphere, rendered by hstrace and
+# (when installed) POV-Ray, compared by
 # `hstrace compare` with regress.sh's limits for scenes/ (RMSE <= 0.01,
 # pixels off by > 0.02 <= 1%; shadow masks <= 0.1% and none interior).
 # Then the command line: --strict, the approximation report of --stats and
@@ -76,8 +78,8 @@ box { <-3.4, 0, 0.3>, <-2.6, 1, 1.1> pigment { rgb 1 } }
 box { <2.7, 0, -0.3>, <3.3, 1.2, 0.3> pigment { rgb 1 } rotate y*30 translate <0.2, 0, 0.8> }
 box { <-0.4, 0, -1.4>, <0.4, 0.8, -0.6> pigment { rgb 1 } }
 POV
-# Two fogs at once: constant (filtering colour) and ground fog (offset,
-# alt, a tilted up, transmitting colour), seen through a hollow and a
+# Two fogs at once, both turbulent: constant (filtering colour) and ground
+# fog (offset, alt, a tilted up, transmitting colour), seen through a hollow and a
 # non-hollow transparent box (fog stops inside the latter, as in POV-Ray).
 cat >"$work/fog.pov" <<'POV'
 #version 3.7;
@@ -85,8 +87,8 @@ global_settings { assumed_gamma 1 }
 camera { location <0, 1.5, -6> look_at <0, 1, 4> right x*4/3 }
 light_source { <4, 8, -3> rgb 1 }
 background { rgb <0.2, 0.3, 0.8> }
-fog { distance 40 color rgbf <0.5, 0.6, 1, 0.3> }
-fog { fog_type 2 distance 4 fog_offset 0.2 fog_alt 0.3 colour rgbt <1, 0.8, 0.6, 0.2> up <0.1, 1, 0> }
+fog { distance 40 color rgbf <0.5, 0.6, 1, 0.3> turbulence <0.5, 0.3, 0.5> turb_depth 0.6 octaves 4 omega 0.6 lambda 2.2 }
+fog { fog_type 2 distance 4 fog_offset 0.2 fog_alt 0.3 colour rgbt <1, 0.8, 0.6, 0.2> up <0.1, 1, 0> turbulence 0.8 }
 plane { y, 0 pigment { checker rgb 0.9, rgb 0.3 } }
 box { <-2.5, 0, 0>, <-1, 2, 1> pigment { rgbf <1, 1, 1, 0.9> } hollow }
 box { <1, 0, 0>, <2.5, 2, 1> pigment { rgbf <1, 1, 1, 0.9> } }
@@ -106,9 +108,33 @@ plane { y, 0 pigment { rgb 0.7 } }
 triangle { <-1, 0, 1>, <1, 0, 1>, <0, 2, 1> pigment { rgb <1, 0.3, 0.2> } }
 POV
 
+# Noise patterns with turbulence, spirals, and uv_mapping on a mesh2 (its
+# uv vectors), a mesh triangle (uv_vectors), a box (POV-Ray's unfolded
+# cube) and a polygon (world x, y: POV-Ray's default uv).
+cat >"$work/noise.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 4, -7> look_at <0, 0.6, 0> right x*4/3 }
+light_source { <5, 9, -4> rgb 1.2 }
+background { rgb <0.5, 0.6, 0.9> }
+plane { y, 0 pigment { bozo warp { turbulence 0.6 } color_map { [0 rgb 0.2] [0.45 rgb <0.8,0.6,0.5>] [0.45 rgb 0.1] [1 rgb 0.9] } scale 0.7 } }
+box { <-3.2,0,-0.5>, <-2.2,1,0.5> pigment { uv_mapping spiral2 8 color_map { [0.5 rgb <0.2,0,0>] [0.5 rgb 1] } scale 0.2 } rotate y*30 }
+mesh2 { vertex_vectors { 4, <-1.8,0,0>, <-0.4,0,0>, <-0.4,1.5,0>, <-1.8,1.5,0> }
+  uv_vectors { 4, <0,0>, <1,0>, <1,1>, <0,1> }
+  face_indices { 2, <0,1,2>, <0,2,3> }
+  pigment { uv_mapping spiral1 5 color_map { [0.5 rgb <0,0,0.3>] [0.5 rgb 1] } scale 0.5 translate <0.5,0.5,0> } }
+mesh { triangle { <-0.2,0,0>, <1.2,0,0>, <0.5,1.6,0> uv_vectors <0,0>, <4,0>, <2,3> }
+  pigment { uv_mapping checker rgb <1,0.5,0>, rgb 0.2 } }
+polygon { 4, <1.4,0>, <2.6,0>, <2.6,1.4>, <1.4,1.4> pigment { uv_mapping marble turbulence 0.5 scale 0.3 } }
+box { <2.8,0,-0.5>, <3.6,1.2,0.5> pigment { granite scale 2 color_map { [0.3 rgb 0.1] [0.3 rgb <0.9,0.9,0.6>] } } }
+box { <-0.8,0,-2>, <0.2,0.6,-1.2> pigment { wood turbulence 0.1 scale 0.1 } }
+box { <0.6,0,-2>, <1.6,0.6,-1.2> pigment { agate scale 0.5 } }
+box { <-2.4,0,-2>, <-1.4,0.6,-1.2> pigment { wrinkles color_map { [0.5 rgb 0] [0.5 rgb 1] } noise_generator 3 } }
+POV
+
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-for name in patterns binding flags lights fog declsky; do
+for name in patterns binding flags noise lights fog declsky; do
     for q in 9 3 4; do
         if ! "$hstrace" "$work/$name.pov" --width 240 --height 180 "+Q$q" -o "$work/$name.h$q.exr" 2>"$work/err"; then
             not_ok "$name: hstrace renders at +Q$q"; sed 's/^/# /' "$work/err"
@@ -137,12 +163,12 @@ status=$?
     [ ! -e "$work/r.png" ]
 check $? "radius on a point light: an error at FILE:LINE:COLUMN, status 2, no image (status $status: $(cat "$work/err"))"
 
-printf '#version 3.7;\nfog { distance 5 rgb 1 turbulence 0.3 translate y }\ntriangle { 0, x, y }\n' >"$work/fogturb.pov"
-"$hstrace" "$work/fogturb.pov" --width 8 --height 6 -o "$work/f.png" 2>"$work/err"
+printf '#version 3.7;\nlight_source { y, 1 media_attenuation on }\nfog { distance 5 rgb 1 translate y }\ntriangle { 0, x, y }\n' >"$work/fogatt.pov"
+"$hstrace" "$work/fogatt.pov" --width 8 --height 6 -o "$work/f.png" 2>"$work/err"
 status=$?
-[ $status -eq 0 ] && [ "$(cat "$work/err")" = "$work/fogturb.pov:2:39: warning: a fog's up vector can't be translated
-$work/fogturb.pov:2:1: warning: 'fog' approximated: fog turbulence, and fog between lights and surfaces (media_attenuation), ignored (1 place; --strict refuses it)" ]
-check $? "fog turbulence is reported as approximated, a translated fog warned about as in POV-Ray (status $status: $(cat "$work/err"))"
+[ $status -eq 0 ] && [ "$(cat "$work/err")" = "$work/fogatt.pov:3:24: warning: a fog's up vector can't be translated
+$work/fogatt.pov:3:1: warning: 'fog' approximated: fog between lights and surfaces (media_attenuation) ignored (1 place; --strict refuses it)" ]
+check $? "a light's media_attenuation with fog is reported as approximated, a translated fog warned about as in POV-Ray (status $status: $(cat "$work/err"))"
 
 # --strict and the approximation report.
 cat >"$work/approx.pov" <<'POV'
@@ -150,12 +176,12 @@ cat >"$work/approx.pov" <<'POV'
 #declare Bumpy = texture { pigment { rgb 1 } normal { bumps 0.5 scale 0.1 } }
 camera { location <0, 1, -4> look_at 0 }
 light_source { <2, 4, -3> rgb 1 area_light x, y, 2, 2 }
-plane { y, -1 pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } } }
+plane { y, -1 pigment { crackle color_map { [0 rgb 0] [1 rgb 1] } } }
 triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> texture { Bumpy } }
 POV
 "$hstrace" "$work/approx.pov" --width 40 --height 30 -o "$work/a.png" --stats --stats-json "$work/a.json" 2>"$work/err"
 check $? "approximated features render by default"
-grep -q "approx.pov:5:25: warning: 'bozo' approximated: pattern shown as one colour" "$work/err"
+grep -q "approx.pov:5:25: warning: 'crackle' approximated: pattern shown as one colour" "$work/err"
 check $? "a warning names the approximated pattern at FILE:LINE:COLUMN"
 grep -q "area light rendered as a point light at its centre: 1 place, first 'area_light' at .*approx.pov:4:33" "$work/err"
 check $? "--stats lists the area_light approximation with its position"
