@@ -321,7 +321,10 @@ static Value parse_rvalue(Parser *p)
     }
     v.kind = VAL_NUMERIC;
     v.terms = 1;
-    parse_express(p, v.v, &v.terms);
+    /* As POV-Ray's Parse_RValue: sums and products only. Comparisons, '&',
+     * '|' and '?:' need parentheses, so in `array[2] {<1,2> <3,4>}` the second
+     * '<' starts the next element, not a comparison. */
+    parse_rel_factor(p, v.v, &v.terms);
     if (v.terms > 5)
         v.terms = 5;
     return v;

@@ -483,6 +483,13 @@ static void test_arrays(void)
                  "short initialiser");
     expect_error("#declare A = array[2] {1, 2, 3};\n", 1, 30, "expected '}' after the 2 elements of the array initialiser",
                  "long initialiser");
+    /* POV-Ray reads a declared value as sums and products only (its
+     * Parse_RValue): a '<' after a vector element starts the next element,
+     * so a line end without ',' is accepted (grenadine/lemon.inc; povray
+     * prints A[1] = <3, 4>). */
+    s = parse("#declare A = array[3] {\n <1, 2>, <5, 6>\n <3, 4>\n}\nbox { 0, <A[2].u, A[2].v, A[1].u> }");
+    tap_ok(s && vnear(s->objects[0]->u.box.corner2, 3, 4, 5), "array elements '<1, 2> <3, 4>' without a comma, as POV-Ray");
+    scene_free(s);
     expect_error("#declare A = array[0];\n", 1, 20, "invalid array size 0", "zero size");
     expect_error("#declare A = 1;\n#declare A[0] = 1;\n", 2, 11, "'A' is not an array", "indexing a float");
 }
@@ -624,6 +631,17 @@ static void test_errors(void)
     tap_ok(err.is_io, "missing include file is an I/O error");
     expect_error("#if (1)\nbox { 0, 1 }\n", 1, 1, "no matching #end", "#if without #end");
     expect_error("#declare X = 1\nbox { 0, X }", 2, 1, "expected ';'", "missing semicolon after a float");
+    /* povray: "All #declares of float, vector, and color require semi-colon"
+     * for each of these; comparisons, logic and '?:' need parentheses in a
+     * declared value. */
+    expect_error("#version 3.7;\n#declare C = 1 < 3;\n", 2, 16, "expected ';' after the declared value, found '<'",
+                 "a comparison outside parentheses in #declare, as POV-Ray");
+    expect_error("#declare C = <1, 2> <3, 4>;\n", 1, 21, "expected ';' after the declared value, found '<'",
+                 "two vectors in #declare, as POV-Ray");
+    expect_error("#declare C = 1 & 0;\n", 1, 16, "found '&'", "'&' outside parentheses in #declare, as POV-Ray");
+    expect_error("#declare C = 1 ? 2 : 3;\n", 1, 16, "found '?'", "'?:' outside parentheses in #declare, as POV-Ray");
+    tap_ok(near(box_x("#declare C = (1 < 3) + (1 & 0) + (0 ? 2 : 3);\nbox { 0, C }"), 4),
+           "comparison, logic and '?:' in parentheses in #declare");
     /* Components of a value that is already unsupported (math.inc's
      * vGradient of a user function): the use names the function. */
     expect_error("#declare F = function { x }\n#declare V = <F(1,2,3), 2, 3>;\n#declare W = <V.x, V.y, 0>;\n"
