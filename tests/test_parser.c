@@ -636,6 +636,22 @@ static void test_errors(void)
      * declared value. */
     expect_error("#version 3.7;\n#declare C = 1 < 3;\n", 2, 16, "expected ';' after the declared value, found '<'",
                  "a comparison outside parentheses in #declare, as POV-Ray");
+    {
+        /* A '#' before a token that is not a directive is dropped, silently,
+         * by POV-Ray 3.7 (language/image_size.pov: `look_at <0,2,0>#` then
+         * '}'); povray renders this scene with both objects and no warning. */
+        Scene *s = parse("camera { location -3 * z look_at 0 #}\n#box { -1, 1 }\n#declare V = <1, 2, 3>;\n"
+                         "triangle { 0, x, #V }\n#");
+        tap_ok(s && s->nobjects == 2 && s->objects[0]->kind == OBJ_BOX && vnear(s->objects[1]->u.triangle.v[2], 1, 2, 3),
+               "a stray '#' before '}', an object, a vector identifier or the end of the file is dropped, as POV-Ray");
+        scene_free(s);
+    }
+    /* but before a float identifier or function povray stops: "Expected
+     * 'object or directive.', float function 'sin' found instead" */
+    expect_error("#declare X = 1;\n#X\n", 2, 2, "expected a directive after '#', found 'X'",
+                 "'#' before a float identifier, as POV-Ray");
+    expect_error("box { 0, 1 }\n# sin(1)\n", 2, 3, "expected a directive after '#', found 'sin'",
+                 "'#' before a float function, as POV-Ray");
     expect_error("#declare C = <1, 2> <3, 4>;\n", 1, 21, "expected ';' after the declared value, found '<'",
                  "two vectors in #declare, as POV-Ray");
     expect_error("#declare C = 1 & 0;\n", 1, 16, "found '&'", "'&' outside parentheses in #declare, as POV-Ray");
