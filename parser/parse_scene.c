@@ -597,6 +597,9 @@ static void add_object(Parser *p, SceneObject *o, SceneLight *l)
     }
     if (!o->texture && p->default_changed)
         o->texture = new_default_texture(p); /* POV-Ray binds the default at this point */
+    Transform world;
+    transform_identity(&world);
+    instantiate_union_lights(p, o, &world, 0);
     *(SceneObject **)tvec_push(p, &p->objects) = o;
 }
 

@@ -383,6 +383,9 @@ void parse_camera(Parser *p, const Token *t, SceneCamera *cam);
 void default_camera(SceneCamera *cam);
 SceneLight *parse_light_source(Parser *p, const Token *t);
 void transform_light(SceneLight *l, const Transform *tr);
+/* A top-level union: its light_sources (and its inner unions') go to the
+ * scene's lights with the transforms above them applied. */
+void instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth);
 
 /* macros.c */
 void macro_define(Parser *p, const Token *hash); /* after '#macro' */

@@ -332,6 +332,24 @@ static void test_camera_lights(void)
               "#declare C = camera { location <1, 2, 3> }\ncamera { C translate x }\n");
     tap_ok(s && vnear(s->camera.location, 2, 2, 3), "declared camera with transform");
     scene_free(s);
+    /* A light_source in a union moves with the union's transforms and its
+     * parents'; each copy of a declared union brings its own lights; lights
+     * come in POV-Ray's order (depth first, as written, after the lights
+     * written before the union). tests/modelling.sh renders this against
+     * POV-Ray. */
+    s = parse("#declare U = union { light_source { <1, 0, 0> rgb 1 } box { 0, 1 }\n"
+              "  union { light_source { <0, 2, 0> rgb 0.5 } translate z } light_source { <0, 0, 3> rgb 1 } translate x }\n"
+              "light_source { <9, 9, 9> rgb 1 }\nobject { U scale 2 }\nobject { U }\n"
+              "object { light_source { <0, 1, 0>, rgb 1 } translate <0, 0, 5> }\n");
+    tap_ok(s && s->nobjects == 2 && s->nlights == 8 && vnear(s->lights[0].location, 9, 9, 9) &&
+               vnear(s->lights[1].location, 4, 0, 0) && vnear(s->lights[2].location, 2, 4, 2) &&
+               near(s->lights[2].colour.r, 0.5) && vnear(s->lights[3].location, 2, 0, 6) &&
+               vnear(s->lights[4].location, 2, 0, 0) && vnear(s->lights[5].location, 1, 2, 1) &&
+               vnear(s->lights[6].location, 1, 0, 3) && vnear(s->lights[7].location, 0, 1, 5),
+           "light_sources in unions and object { }: moved by the transforms around them, one set per copy");
+    if (s && s->nlights != 8)
+        tap_diag("%d lights", s->nlights);
+    scene_free(s);
     s = parse("camera { orthographic location <0, 0, -10> look_at 0 }");
     tap_ok(s && s->camera.kind == CAMERA_ORTHOGRAPHIC && vnear(s->camera.right, 13.3, 0, 0) &&
                vnear(s->camera.up, 0, 10, 0),
