@@ -641,6 +641,19 @@ static void test_errors(void)
     expect_error("box { 0, Nope }", 1, 10, "undeclared identifier 'Nope'", "unknown identifier");
     expect_error("sphere { 0, 1 }", 1, 1, "'sphere' is not supported by hstrace", "unsupported object");
     expect_error("light_source { 0, 1 spotlight }", 1, 21, "'spotlight' is not supported", "spotlight");
+    {
+        /* POV-Ray ignores area_light's modifiers on a point light (orient
+         * and area_illumination with a warning; advanced/diffract.pov writes
+         * jitter outside its #if (Area_Light)), and takes them before the
+         * area_light too; circular without one it refuses. */
+        Scene *s = parse("light_source { 0, 1 jitter adaptive 1 orient area_illumination on }\n"
+                         "light_source { x, 1 circular orient area_light x, y, 3, 3 }\n");
+        tap_ok(s && s->nlights == 2 && vnear(s->lights[1].location, 1, 0, 0),
+               "jitter, adaptive, orient, area_illumination without an area_light, and before it, as POV-Ray");
+        scene_free(s);
+    }
+    expect_error("light_source { 0, 1 circular jitter }", 1, 21, "'circular' without an area_light",
+                 "circular without an area_light, as POV-Ray");
     expect_error("#declare I = 0;\n#while (1)\n#end\n", 2, 1, "loop iterations", "runaway #while");
     expect_error("#declare A = sqr(3);\n", 1, 14, "'sqr' is only allowed inside function { }",
                  "sqr outside a function, as POV-Ray 3.7 says");
