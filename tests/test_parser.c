@@ -640,7 +640,8 @@ static void test_errors(void)
     expect_error("box { 0, 1\n", 2, 1, "found the end of the file", "unclosed block");
     expect_error("box { 0, Nope }", 1, 10, "undeclared identifier 'Nope'", "unknown identifier");
     expect_error("sphere { 0, 1 }", 1, 1, "'sphere' is not supported by hstrace", "unsupported object");
-    expect_error("light_source { 0, 1 spotlight }", 1, 21, "'spotlight' is not supported", "spotlight");
+    expect_error("light_source { 0, 1 looks_like { box { 0, 1 } } }", 1, 21, "'looks_like' is not supported",
+                 "looks_like");
     {
         /* POV-Ray ignores area_light's modifiers on a point light (orient
          * and area_illumination with a warning; advanced/diffract.pov writes
