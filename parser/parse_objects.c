@@ -663,6 +663,20 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
     *obj = inner;
 }
 
+/* After an object keyword: '{' then the name of a declared object or light
+ * (or of something unsupported, whose use is then the error). */
+static int object_id_follows(Parser *p)
+{
+    Token word;
+    if (!lex_next_is_brace_and_word(p, &word) || word.kw >= 0)
+        return 0;
+    Symbol *s = symbol_find(p, word.text, word.len);
+    if (!s)
+        return 0;
+    ValueKind k = s->value.kind;
+    return k == VAL_OBJECT || k == VAL_LIGHT || k == VAL_UNSUPPORTED;
+}
+
 int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
 {
     *obj = NULL;
@@ -671,6 +685,14 @@ int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **ligh
         return 0;
     Token kw = *t;
     nesting_enter(p, &kw);
+    if (kw.kw != KW_object && object_id_follows(p)) {
+        /* `light_source { SubPatch translate ... }`, `union { U ... }`:
+         * POV-Ray's Parse_Object_Id takes a declared object or light after
+         * any object keyword's '{' as `object { ID ... }` */
+        parse_object_statement(p, &kw, obj, light);
+        nesting_leave(p);
+        return 1;
+    }
     switch (kw.kw) {
     case KW_polygon: *obj = parse_polygon(p, &kw); break;
     case KW_triangle: *obj = parse_triangle(p, &kw, 0); break;

@@ -307,6 +307,9 @@ int lex_skip_semicolon(Parser *p); /* consume a ';' if it comes next */
  * directive is carried out early (the current #declare is not stored yet). */
 int lex_next_is_keyword(Parser *p, int kw);
 int lex_next_is_punct(Parser *p, int c); /* the same for punctuation */
+/* Whether the raw text goes on with '{' and a word (keyword or identifier),
+ * which is then in `word`; nothing is consumed. */
+int lex_next_is_brace_and_word(Parser *p, Token *word);
 const char *dir_of(Parser *p, const char *path);
 
 /* directives.c: the token stream after #directives */

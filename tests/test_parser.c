@@ -350,6 +350,20 @@ static void test_camera_lights(void)
     if (s && s->nlights != 8)
         tap_diag("%d lights", s->nlights);
     scene_free(s);
+    /* After any object keyword's '{', a declared object or light is a copy,
+     * as `object { ID ... }` (POV-Ray's Parse_Object_Id; radiosity/cornell.pov
+     * writes `light_source { SubPatch translate ... }`). povray renders this
+     * scene and the one with `object` in place of `light_source` and `union`
+     * identically. */
+    s = parse("#declare L = light_source { <0, 4, -1> rgb 1 }\n"
+              "#declare U = union { light_source { <0, 3, 0> rgb 1 } box { 0, 1 } }\n"
+              "light_source { L translate x * -2 }\nunion { U translate <1.5, 0, 0.5> }\n");
+    tap_ok(s && s->nlights == 2 && vnear(s->lights[0].location, -2, 4, -1) && vnear(s->lights[1].location, 1.5, 3, 0.5) &&
+               s->nobjects == 1 && s->objects[0]->kind == OBJ_UNION && s->objects[0]->u.csg.nchildren == 1,
+           "light_source { L ... } and union { U ... } copy the declared light and union");
+    scene_free(s);
+    expect_error("#declare S = sphere { 0, 1 }\nunion { S }\n", 2, 9, "'sphere' is not supported by hstrace (declared at t.pov:1)",
+                 "union { DeclaredSphere }: the error names the use and the declaration");
     s = parse("camera { orthographic location <0, 0, -10> look_at 0 }");
     tap_ok(s && s->camera.kind == CAMERA_ORTHOGRAPHIC && vnear(s->camera.right, 13.3, 0, 0) &&
                vnear(s->camera.up, 0, 10, 0),
