@@ -663,9 +663,11 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
     *obj = inner;
 }
 
-/* After an object keyword: '{' then the name of a declared object or light
- * (or of something unsupported, whose use is then the error). */
-static int object_id_follows(Parser *p)
+/* After object keyword `kw`: '{' then the name of a declared object or
+ * light. An unsupported value counts only after 'union', whose body cannot
+ * start with a number: elsewhere it may be a float or vector (a function's,
+ * trace's), which the object's own parse reports. */
+static int object_id_follows(Parser *p, int kw)
 {
     Token word;
     if (!lex_next_is_brace_and_word(p, &word) || word.kw >= 0)
@@ -674,7 +676,7 @@ static int object_id_follows(Parser *p)
     if (!s)
         return 0;
     ValueKind k = s->value.kind;
-    return k == VAL_OBJECT || k == VAL_LIGHT || k == VAL_UNSUPPORTED;
+    return k == VAL_OBJECT || k == VAL_LIGHT || (k == VAL_UNSUPPORTED && kw == KW_union);
 }
 
 int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
@@ -685,7 +687,7 @@ int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **ligh
         return 0;
     Token kw = *t;
     nesting_enter(p, &kw);
-    if (kw.kw != KW_object && object_id_follows(p)) {
+    if (kw.kw != KW_object && object_id_follows(p, kw.kw)) {
         /* `light_source { SubPatch translate ... }`, `union { U ... }`:
          * POV-Ray's Parse_Object_Id takes a declared object or light after
          * any object keyword's '{' as `object { ID ... }` */

@@ -364,6 +364,10 @@ static void test_camera_lights(void)
     scene_free(s);
     expect_error("#declare S = sphere { 0, 1 }\nunion { S }\n", 2, 9, "'sphere' is not supported by hstrace (declared at t.pov:1)",
                  "union { DeclaredSphere }: the error names the use and the declaration");
+    /* but an unsupported float or vector after '{' is the object's own
+     * first item: the unsupported object keyword is named first */
+    expect_error("#declare F = function { x }\n#declare V = <F(1, 2, 3), 0, 0>;\nsphere { V, 1 }\n", 3, 1,
+                 "'sphere' is not supported by hstrace", "sphere { UnsupportedVector, 1 }: the sphere is the error");
     s = parse("camera { orthographic location <0, 0, -10> look_at 0 }");
     tap_ok(s && s->camera.kind == CAMERA_ORTHOGRAPHIC && vnear(s->camera.right, 13.3, 0, 0) &&
                vnear(s->camera.up, 0, 10, 0),
