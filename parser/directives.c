@@ -492,9 +492,22 @@ static void directive_include(Parser *p, const Token *hash)
     symbols_push_scope(p);
 }
 
+/* '#' before something that is not a directive: POV-Ray 3.7 drops the '#'
+ * without a word and reads on from the token after it (image_size.pov's
+ * `look_at <0,2,0>#`, then '}'), except before a float identifier or a float
+ * function, where it stops with "Expected 'object or directive.'" (its
+ * Parse_Directive; checked with povray). */
+static void stray_hash(Parser *p, const Token *t, LexMark before)
+{
+    if (t->type == TK_WORD && token_starts_float(p, t))
+        fail_expected(p, t, "a directive after '#'");
+    lex_seek(p, before);
+}
+
 static void handle_directive(Parser *p, const Token *hash)
 {
     Token t;
+    LexMark before = lex_mark(p);
     lex_raw(p, &t);
     if (t.type != TK_WORD || t.kw < 0) {
         Symbol *s = t.type == TK_WORD ? symbol_find(p, t.text, t.len) : NULL;
@@ -502,7 +515,8 @@ static void handle_directive(Parser *p, const Token *hash)
             macro_invoke(p, &t, s->value.macro);
             return;
         }
-        fail_expected(p, &t, "a directive after '#'");
+        stray_hash(p, &t, before);
+        return;
     }
     switch (t.kw) {
     case KW_include:
@@ -622,6 +636,6 @@ static void handle_directive(Parser *p, const Token *hash)
         directive_write(p);
         return;
     default:
-        fail_expected(p, &t, "a directive after '#'");
+        stray_hash(p, &t, before);
     }
 }

@@ -495,6 +495,22 @@ int lex_next_is_punct(Parser *p, int c)
     return is_punct(&t, c);
 }
 
+int lex_next_is_brace_and_word(Parser *p, Token *word)
+{
+    if (p->ungot)
+        return 0;
+    LexMark m = lex_mark(p);
+    Token brace;
+    lex_raw(p, &brace);
+    int found = is_punct(&brace, '{');
+    if (found) {
+        lex_raw(p, word);
+        found = word->type == TK_WORD;
+    }
+    lex_seek(p, m);
+    return found;
+}
+
 int lex_next_is_keyword(Parser *p, int kw)
 {
     if (p->ungot)

@@ -186,7 +186,8 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
     l->location = parse_vector(p);
     parse_comma(p);
     parse_colour(p, &l->colour, 0);
-    int area = 0;
+    int area = 0, circular = 0;
+    SourcePos circular_at = { 0 };
     for (;;) {
         Token *t = next(p);
         if (is_punct(t, '}'))
@@ -265,8 +266,13 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
             break;
         }
         case KW_adaptive: case KW_jitter: case KW_circular: case KW_orient: case KW_area_illumination:
-            if (!area) /* area_light's modifiers */
-                unsupported(p, t);
+            /* area_light's modifiers, in any order around it. Without an
+             * area_light POV-Ray ignores them (orient and area_illumination
+             * with a warning), except circular, which it refuses. */
+            if (t->kw == KW_circular && !circular) {
+                circular = 1;
+                circular_at = t->pos;
+            }
             if (t->kw == KW_adaptive)
                 (void)parse_float(p);
             else if (t->kw == KW_area_illumination && token_starts_float(p, peek(p)))
@@ -278,5 +284,8 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
             fail_expected(p, t, "a light_source item or '}' in 'light_source'");
         }
     }
+    if (circular && !area)
+        parse_fail(p, circular_at, "'circular' without an area_light (POV-Ray: \"Circular area light must have more "
+                                   "than 1 point per axis\")");
     return l;
 }

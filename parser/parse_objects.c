@@ -592,8 +592,10 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
 {
     begin_block(p, "union");
     SceneObject *o = new_object(p, OBJ_UNION, kw);
-    TempVec children;
+    TempVec children, lights, slots;
     tvec_init(&children, sizeof(SceneObject *));
+    tvec_init(&lights, sizeof(SceneLight));
+    tvec_init(&slots, sizeof(int));
     for (;;) {
         Token t = *next(p);
         SceneObject *child = NULL;
@@ -602,16 +604,64 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
             unget(p);
             break;
         }
-        if (light)
-            parse_fail(p, t.pos, "a light_source inside a union is not supported by hstrace");
+        if (light) {
+            *(SceneLight *)tvec_push(p, &lights) = *light;
+            *(int *)tvec_push(p, &slots) = children.n;
+            continue;
+        }
         *(SceneObject **)tvec_push(p, &children) = child;
     }
     o->u.csg.nchildren = children.n;
     o->u.csg.children = palloc(p, sizeof(SceneObject *) * (size_t)(children.n ? children.n : 1));
     if (children.n)
         memcpy(o->u.csg.children, children.data, sizeof(SceneObject *) * (size_t)children.n);
+    if (lights.n) {
+        SceneLight *l = palloc(p, sizeof(SceneLight) * (size_t)lights.n);
+        int *slot = palloc(p, sizeof(int) * (size_t)lights.n);
+        memcpy(l, lights.data, sizeof(SceneLight) * (size_t)lights.n);
+        memcpy(slot, slots.data, sizeof(int) * (size_t)lights.n);
+        o->u.csg.nlights = lights.n;
+        o->u.csg.lights = l;
+        o->u.csg.light_slot = slot;
+    }
     parse_object_mods(p, o, "union");
     return o;
+}
+
+/* `object { LIGHT transforms }`: a light takes only transforms. */
+static void parse_light_object_mods(Parser *p, SceneLight *l)
+{
+    for (;;) {
+        Token *m = next(p);
+        if (is_punct(m, '}'))
+            return;
+        Transform tr;
+        transform_identity(&tr);
+        if (!parse_transform_item(p, m, &tr))
+            fail_expected(p, m, "a transform or '}' after a light_source in 'object'");
+        transform_light(l, &tr);
+    }
+}
+
+/* Appends the light_sources of union `o` and of the unions inside it to the
+ * scene's lights, in world space: `outer` is the transform of o's parents.
+ * Order as POV-Ray's Post_Process: depth first, as written. */
+void instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth)
+{
+    if (o->kind != OBJ_UNION || depth > MAX_NESTING)
+        return;
+    Transform world = o->transform;
+    transform_compose(&world, outer);
+    int next_light = 0;
+    for (int c = 0; c <= o->u.csg.nchildren; c++) {
+        for (; next_light < o->u.csg.nlights && o->u.csg.light_slot[next_light] == c; next_light++) {
+            SceneLight *l = tvec_push(p, &p->lights);
+            *l = o->u.csg.lights[next_light];
+            transform_light(l, &world);
+        }
+        if (c < o->u.csg.nchildren)
+            instantiate_union_lights(p, o->u.csg.children[c], &world, depth + 1);
+    }
 }
 
 static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj, SceneLight **light)
@@ -629,16 +679,7 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
             SceneLight *l = palloc(p, sizeof *l);
             *l = *v->light;
             l->pos = kw->pos;
-            for (;;) {
-                Token *m = next(p);
-                if (is_punct(m, '}'))
-                    break;
-                Transform tr;
-                transform_identity(&tr);
-                if (!parse_transform_item(p, m, &tr))
-                    fail_expected(p, m, "a transform or '}' after a light_source identifier");
-                transform_light(l, &tr);
-            }
+            parse_light_object_mods(p, l);
             *light = l;
             return;
         }
@@ -655,10 +696,29 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
     SceneLight *inner_light = NULL;
     if (!parse_object(p, &t, &inner, &inner_light))
         fail_expected(p, &t, "an object or object identifier after 'object {'");
-    if (inner_light)
-        parse_fail(p, t.pos, "a light_source inside 'object' is not supported by hstrace");
+    if (inner_light) {
+        parse_light_object_mods(p, inner_light);
+        *light = inner_light;
+        return;
+    }
     parse_object_mods(p, inner, "object");
     *obj = inner;
+}
+
+/* After object keyword `kw`: '{' then the name of a declared object or
+ * light. An unsupported value counts only after 'union', whose body cannot
+ * start with a number: elsewhere it may be a float or vector (a function's,
+ * trace's), which the object's own parse reports. */
+static int object_id_follows(Parser *p, int kw)
+{
+    Token word;
+    if (!lex_next_is_brace_and_word(p, &word) || word.kw >= 0)
+        return 0;
+    Symbol *s = symbol_find(p, word.text, word.len);
+    if (!s)
+        return 0;
+    ValueKind k = s->value.kind;
+    return k == VAL_OBJECT || k == VAL_LIGHT || (k == VAL_UNSUPPORTED && kw == KW_union);
 }
 
 int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
@@ -669,6 +729,14 @@ int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **ligh
         return 0;
     Token kw = *t;
     nesting_enter(p, &kw);
+    if (kw.kw != KW_object && object_id_follows(p, kw.kw)) {
+        /* `light_source { SubPatch translate ... }`, `union { U ... }`:
+         * POV-Ray's Parse_Object_Id takes a declared object or light after
+         * any object keyword's '{' as `object { ID ... }` */
+        parse_object_statement(p, &kw, obj, light);
+        nesting_leave(p);
+        return 1;
+    }
     switch (kw.kw) {
     case KW_polygon: *obj = parse_polygon(p, &kw); break;
     case KW_triangle: *obj = parse_triangle(p, &kw, 0); break;

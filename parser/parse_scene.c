@@ -324,7 +324,10 @@ static Value parse_rvalue(Parser *p)
     }
     v.kind = VAL_NUMERIC;
     v.terms = 1;
-    parse_express(p, v.v, &v.terms);
+    /* As POV-Ray's Parse_RValue: sums and products only. Comparisons, '&',
+     * '|' and '?:' need parentheses, so in `array[2] {<1,2> <3,4>}` the second
+     * '<' starts the next element, not a comparison. */
+    parse_rel_factor(p, v.v, &v.terms);
     if (v.terms > 5)
         v.terms = 5;
     return v;
@@ -605,6 +608,9 @@ static void add_object(Parser *p, SceneObject *o, SceneLight *l)
     }
     if (!o->texture && p->default_changed)
         o->texture = new_default_texture(p); /* POV-Ray binds the default at this point */
+    Transform world;
+    transform_identity(&world);
+    instantiate_union_lights(p, o, &world, 0);
     *(SceneObject **)tvec_push(p, &p->objects) = o;
 }
 

@@ -311,6 +311,9 @@ int lex_skip_semicolon(Parser *p); /* consume a ';' if it comes next */
  * directive is carried out early (the current #declare is not stored yet). */
 int lex_next_is_keyword(Parser *p, int kw);
 int lex_next_is_punct(Parser *p, int c); /* the same for punctuation */
+/* Whether the raw text goes on with '{' and a word (keyword or identifier),
+ * which is then in `word`; nothing is consumed. */
+int lex_next_is_brace_and_word(Parser *p, Token *word);
 const char *dir_of(Parser *p, const char *path);
 
 /* directives.c: the token stream after #directives */
@@ -390,6 +393,9 @@ void parse_camera(Parser *p, const Token *t, SceneCamera *cam);
 void default_camera(SceneCamera *cam);
 SceneLight *parse_light_source(Parser *p, const Token *t);
 void transform_light(SceneLight *l, const Transform *tr);
+/* A top-level union: its light_sources (and its inner unions') go to the
+ * scene's lights with the transforms above them applied. */
+void instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth);
 
 /* macros.c */
 void macro_define(Parser *p, const Token *hash); /* after '#macro' */

@@ -229,6 +229,15 @@ struct SceneObject {
         struct {
             int nchildren;
             SceneObject **children;
+            /* light_sources written in the union, in the union's space (their
+             * own transforms applied, the union's not). They become scene
+             * lights, moved by the union's and its parents' transforms, when
+             * the union is instantiated (Scene.lights); the engine never
+             * reads them here. light_slot[i]: how many children were written
+             * before light i, so that lights keep POV-Ray's order. */
+            int nlights;
+            const struct SceneLight *lights;
+            const int *light_slot;
         } csg;
     } u;
 };
@@ -247,10 +256,10 @@ typedef enum {
     BEAM_CYLINDER, /* radius, falloff: distances from the axis; the light is parallel */
 } LightBeam;
 
-typedef struct {
+typedef struct SceneLight {
     LightKind kind;
     SourcePos pos;
-    Vec3 location;  /* world space, transforms applied */
+    Vec3 location;  /* world space, transforms applied (in a union: see csg) */
     Vec3 point_at;  /* parallel lights: direction is location - point_at; spotlights and
                      * cylinder lights: the beam's axis */
     LightBeam beam;

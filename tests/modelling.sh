@@ -3,8 +3,9 @@
 # gradient, noise and spiral pigments (turbulence, uv_mapping), a
 # sky_sphere, texture binding through transforms and unions, layered
 # textures, no_shadow and no_image, the orthographic camera, spotlights and
-# cylinder lights, fog, and a declared sky_sphere, rendered by hstrace and
-# (when installed) POV-Ray, compared by
+# cylinder lights, light_sources inside (copies of) a declared union, fog,
+# and a declared sky_sphere, rendered by hstrace and (when installed)
+# POV-Ray, compared by
 # `hstrace compare` with regress.sh's limits for scenes/ (RMSE <= 0.01,
 # pixels off by > 0.02 <= 1%; shadow masks <= 0.1% and none interior).
 # Then the command line: --strict, the approximation report of --stats and
@@ -132,9 +133,42 @@ box { <0.6,0,-2>, <1.6,0.6,-1.2> pigment { agate scale 0.5 } }
 box { <-2.4,0,-2>, <-1.4,0.6,-1.2> pigment { wrinkles color_map { [0.5 rgb 0] [0.5 rgb 1] } noise_generator 3 } }
 POV
 
+# A light_source in a union moves with the union, and every copy of a
+# declared union carries its lights, a spotlight's point_at moving too
+# (POV-Ray: 4 lights here, each lamp's shade casting a shadow on the floor).
+cat >"$work/unionlights.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 5, -7> look_at <0, 0.5, 0> right x*4/3 }
+plane { y, 0 pigment { rgb 0.8 } }
+#declare Lamp = union {
+  light_source { <0, 3, 0> rgb <0.8, 0.7, 0.6> }
+  polygon { 4, <-0.5,-0.5>, <0.5,-0.5>, <0.5,0.5>, <-0.5,0.5> rotate x*90 translate y*1.5 pigment { rgb <1,0.2,0.2> } }
+  union { light_source { <0, 3, 0> rgb <0.3, 0.4, 0.8> spotlight radius 20 falloff 35 point_at <0, 0, 0> translate x*0.7 } rotate y*90 }
+}
+object { Lamp translate <-1.5, 0, 0> }
+object { Lamp rotate z*20 scale 1.2 translate <1.8, 0, 1> }
+POV
+# The same scene with the lights written out at top level, each with the
+# transforms of the unions around it.
+sed -n 1,4p "$work/unionlights.pov" >"$work/lightsout.pov"
+cat >>"$work/lightsout.pov" <<'POV'
+#declare Shade = polygon { 4, <-0.5,-0.5>, <0.5,-0.5>, <0.5,0.5>, <-0.5,0.5> rotate x*90 translate y*1.5 pigment { rgb <1,0.2,0.2> } }
+light_source { <0, 3, 0> rgb <0.8, 0.7, 0.6> translate <-1.5, 0, 0> }
+object { Shade translate <-1.5, 0, 0> }
+light_source { <0, 3, 0> rgb <0.3, 0.4, 0.8> spotlight radius 20 falloff 35 point_at <0, 0, 0> translate x*0.7 rotate y*90 translate <-1.5, 0, 0> }
+light_source { <0, 3, 0> rgb <0.8, 0.7, 0.6> rotate z*20 scale 1.2 translate <1.8, 0, 1> }
+object { Shade rotate z*20 scale 1.2 translate <1.8, 0, 1> }
+light_source { <0, 3, 0> rgb <0.3, 0.4, 0.8> spotlight radius 20 falloff 35 point_at <0, 0, 0> translate x*0.7 rotate y*90 rotate z*20 scale 1.2 translate <1.8, 0, 1> }
+POV
+"$hstrace" "$work/unionlights.pov" --width 240 --height 180 -o "$work/ul.exr" 2>"$work/err" &&
+    "$hstrace" "$work/lightsout.pov" --width 240 --height 180 -o "$work/lo.exr" 2>>"$work/err" &&
+    report=$("$hstrace" compare "$work/ul.exr" "$work/lo.exr" --max-rmse 0.0001 --max-share 0 2>&1)
+check $? "lights in a declared union's copies render as the lights written out: $(echo "${report:-}" | sed -n 2p | tr -s ' ') $(cat "$work/err")"
+
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-for name in patterns binding flags noise lights fog declsky; do
+for name in patterns binding flags noise lights unionlights fog declsky; do
     for q in 9 3 4; do
         if ! "$hstrace" "$work/$name.pov" --width 240 --height 180 "+Q$q" -o "$work/$name.h$q.exr" 2>"$work/err"; then
             not_ok "$name: hstrace renders at +Q$q"; sed 's/^/# /' "$work/err"

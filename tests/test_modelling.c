@@ -301,8 +301,10 @@ static void test_unsupported(void)
     expect_error("sphere { 0, 1 }", 1, 1, "'sphere' is not supported by hstrace", "sphere");
     expect_error("camera { fisheye }", 1, 10, "'fisheye' is not supported by hstrace", "fisheye camera");
     expect_error("camera { panoramic }", 1, 10, "'panoramic' is not supported by hstrace", "panoramic camera");
-    expect_error("light_source { 0, 1 spotlight }", 1, 21, "'spotlight' is not supported by hstrace", "spotlight");
-    expect_error("light_source { 0, 1 cylinder }", 1, 21, "'cylinder' is not supported by hstrace", "cylinder light");
+    expect_error("light_source { 0, 1 projected_through { box { 0, 1 } } }", 1, 21,
+                 "'projected_through' is not supported by hstrace", "projected_through");
+    expect_error("light_source { 0, 1 looks_like { box { 0, 1 } } }", 1, 21, "'looks_like' is not supported by hstrace",
+                 "looks_like");
     expect_error("box { 0, 1 interior { media { } } }", 1, 23, "'media' is not supported by hstrace", "media");
     expect_error("rainbow { angle 42 width 5 distance 100 }", 1, 1, "'rainbow' is not supported by hstrace", "rainbow");
     expect_error("box { 0, 1 pigment { image_map { png \"x.png\" } } }", 1, 22, "'image_map' is not supported",
@@ -311,7 +313,9 @@ static void test_unsupported(void)
                  "material_map");
     expect_error("#declare S = sky_sphere { pigment { image_map { png \"x.png\" } } }\nsky_sphere { S }", 2, 14,
                  "'image_map' is not supported by hstrace (declared at", "a declared sky_sphere using image_map");
-    expect_error("light_source { 0, 1 jitter }", 1, 21, "'jitter' is not supported", "jitter without area_light");
+    /* POV-Ray ignores jitter without an area_light, but refuses circular */
+    expect_error("light_source { 0, 1 jitter circular }", 1, 28, "'circular' without an area_light",
+                 "circular without area_light");
 }
 
 static void test_flags(void)

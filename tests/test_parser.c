@@ -332,6 +332,42 @@ static void test_camera_lights(void)
               "#declare C = camera { location <1, 2, 3> }\ncamera { C translate x }\n");
     tap_ok(s && vnear(s->camera.location, 2, 2, 3), "declared camera with transform");
     scene_free(s);
+    /* A light_source in a union moves with the union's transforms and its
+     * parents'; each copy of a declared union brings its own lights; lights
+     * come in POV-Ray's order (depth first, as written, after the lights
+     * written before the union). tests/modelling.sh renders this against
+     * POV-Ray. */
+    s = parse("#declare U = union { light_source { <1, 0, 0> rgb 1 } box { 0, 1 }\n"
+              "  union { light_source { <0, 2, 0> rgb 0.5 } translate z } light_source { <0, 0, 3> rgb 1 } translate x }\n"
+              "light_source { <9, 9, 9> rgb 1 }\nobject { U scale 2 }\nobject { U }\n"
+              "object { light_source { <0, 1, 0>, rgb 1 } translate <0, 0, 5> }\n");
+    tap_ok(s && s->nobjects == 2 && s->nlights == 8 && vnear(s->lights[0].location, 9, 9, 9) &&
+               vnear(s->lights[1].location, 4, 0, 0) && vnear(s->lights[2].location, 2, 4, 2) &&
+               near(s->lights[2].colour.r, 0.5) && vnear(s->lights[3].location, 2, 0, 6) &&
+               vnear(s->lights[4].location, 2, 0, 0) && vnear(s->lights[5].location, 1, 2, 1) &&
+               vnear(s->lights[6].location, 1, 0, 3) && vnear(s->lights[7].location, 0, 1, 5),
+           "light_sources in unions and object { }: moved by the transforms around them, one set per copy");
+    if (s && s->nlights != 8)
+        tap_diag("%d lights", s->nlights);
+    scene_free(s);
+    /* After any object keyword's '{', a declared object or light is a copy,
+     * as `object { ID ... }` (POV-Ray's Parse_Object_Id; radiosity/cornell.pov
+     * writes `light_source { SubPatch translate ... }`). povray renders this
+     * scene and the one with `object` in place of `light_source` and `union`
+     * identically. */
+    s = parse("#declare L = light_source { <0, 4, -1> rgb 1 }\n"
+              "#declare U = union { light_source { <0, 3, 0> rgb 1 } box { 0, 1 } }\n"
+              "light_source { L translate x * -2 }\nunion { U translate <1.5, 0, 0.5> }\n");
+    tap_ok(s && s->nlights == 2 && vnear(s->lights[0].location, -2, 4, -1) && vnear(s->lights[1].location, 1.5, 3, 0.5) &&
+               s->nobjects == 1 && s->objects[0]->kind == OBJ_UNION && s->objects[0]->u.csg.nchildren == 1,
+           "light_source { L ... } and union { U ... } copy the declared light and union");
+    scene_free(s);
+    expect_error("#declare S = sphere { 0, 1 }\nunion { S }\n", 2, 9, "'sphere' is not supported by hstrace (declared at t.pov:1)",
+                 "union { DeclaredSphere }: the error names the use and the declaration");
+    /* but an unsupported float or vector after '{' is the object's own
+     * first item: the unsupported object keyword is named first */
+    expect_error("#declare F = function { x }\n#declare V = <F(1, 2, 3), 0, 0>;\nsphere { V, 1 }\n", 3, 1,
+                 "'sphere' is not supported by hstrace", "sphere { UnsupportedVector, 1 }: the sphere is the error");
     s = parse("camera { orthographic location <0, 0, -10> look_at 0 }");
     tap_ok(s && s->camera.kind == CAMERA_ORTHOGRAPHIC && vnear(s->camera.right, 13.3, 0, 0) &&
                vnear(s->camera.up, 0, 10, 0),
@@ -483,6 +519,13 @@ static void test_arrays(void)
                  "short initialiser");
     expect_error("#declare A = array[2] {1, 2, 3};\n", 1, 30, "expected '}' after the 2 elements of the array initialiser",
                  "long initialiser");
+    /* POV-Ray reads a declared value as sums and products only (its
+     * Parse_RValue): a '<' after a vector element starts the next element,
+     * so a line end without ',' is accepted (grenadine/lemon.inc; povray
+     * prints A[1] = <3, 4>). */
+    s = parse("#declare A = array[3] {\n <1, 2>, <5, 6>\n <3, 4>\n}\nbox { 0, <A[2].u, A[2].v, A[1].u> }");
+    tap_ok(s && vnear(s->objects[0]->u.box.corner2, 3, 4, 5), "array elements '<1, 2> <3, 4>' without a comma, as POV-Ray");
+    scene_free(s);
     expect_error("#declare A = array[0];\n", 1, 20, "invalid array size 0", "zero size");
     expect_error("#declare A = 1;\n#declare A[0] = 1;\n", 2, 11, "'A' is not an array", "indexing a float");
 }
@@ -615,7 +658,21 @@ static void test_errors(void)
     expect_error("box { 0, 1\n", 2, 1, "found the end of the file", "unclosed block");
     expect_error("box { 0, Nope }", 1, 10, "undeclared identifier 'Nope'", "unknown identifier");
     expect_error("sphere { 0, 1 }", 1, 1, "'sphere' is not supported by hstrace", "unsupported object");
-    expect_error("light_source { 0, 1 spotlight }", 1, 21, "'spotlight' is not supported", "spotlight");
+    expect_error("light_source { 0, 1 looks_like { box { 0, 1 } } }", 1, 21, "'looks_like' is not supported",
+                 "looks_like");
+    {
+        /* POV-Ray ignores area_light's modifiers on a point light (orient
+         * and area_illumination with a warning; advanced/diffract.pov writes
+         * jitter outside its #if (Area_Light)), and takes them before the
+         * area_light too; circular without one it refuses. */
+        Scene *s = parse("light_source { 0, 1 jitter adaptive 1 orient area_illumination on }\n"
+                         "light_source { x, 1 circular orient area_light x, y, 3, 3 }\n");
+        tap_ok(s && s->nlights == 2 && vnear(s->lights[1].location, 1, 0, 0),
+               "jitter, adaptive, orient, area_illumination without an area_light, and before it, as POV-Ray");
+        scene_free(s);
+    }
+    expect_error("light_source { 0, 1 circular jitter }", 1, 21, "'circular' without an area_light",
+                 "circular without an area_light, as POV-Ray");
     expect_error("#declare I = 0;\n#while (1)\n#end\n", 2, 1, "loop iterations", "runaway #while");
     expect_error("#declare A = sqr(3);\n", 1, 14, "'sqr' is only allowed inside function { }",
                  "sqr outside a function, as POV-Ray 3.7 says");
@@ -624,6 +681,33 @@ static void test_errors(void)
     tap_ok(err.is_io, "missing include file is an I/O error");
     expect_error("#if (1)\nbox { 0, 1 }\n", 1, 1, "no matching #end", "#if without #end");
     expect_error("#declare X = 1\nbox { 0, X }", 2, 1, "expected ';'", "missing semicolon after a float");
+    /* povray: "All #declares of float, vector, and color require semi-colon"
+     * for each of these; comparisons, logic and '?:' need parentheses in a
+     * declared value. */
+    expect_error("#version 3.7;\n#declare C = 1 < 3;\n", 2, 16, "expected ';' after the declared value, found '<'",
+                 "a comparison outside parentheses in #declare, as POV-Ray");
+    {
+        /* A '#' before a token that is not a directive is dropped, silently,
+         * by POV-Ray 3.7 (language/image_size.pov: `look_at <0,2,0>#` then
+         * '}'); povray renders this scene with both objects and no warning. */
+        Scene *s = parse("camera { location -3 * z look_at 0 #}\n#box { -1, 1 }\n#declare V = <1, 2, 3>;\n"
+                         "triangle { 0, x, #V }\n#");
+        tap_ok(s && s->nobjects == 2 && s->objects[0]->kind == OBJ_BOX && vnear(s->objects[1]->u.triangle.v[2], 1, 2, 3),
+               "a stray '#' before '}', an object, a vector identifier or the end of the file is dropped, as POV-Ray");
+        scene_free(s);
+    }
+    /* but before a float identifier or function povray stops: "Expected
+     * 'object or directive.', float function 'sin' found instead" */
+    expect_error("#declare X = 1;\n#X\n", 2, 2, "expected a directive after '#', found 'X'",
+                 "'#' before a float identifier, as POV-Ray");
+    expect_error("box { 0, 1 }\n# sin(1)\n", 2, 3, "expected a directive after '#', found 'sin'",
+                 "'#' before a float function, as POV-Ray");
+    expect_error("#declare C = <1, 2> <3, 4>;\n", 1, 21, "expected ';' after the declared value, found '<'",
+                 "two vectors in #declare, as POV-Ray");
+    expect_error("#declare C = 1 & 0;\n", 1, 16, "found '&'", "'&' outside parentheses in #declare, as POV-Ray");
+    expect_error("#declare C = 1 ? 2 : 3;\n", 1, 16, "found '?'", "'?:' outside parentheses in #declare, as POV-Ray");
+    tap_ok(near(box_x("#declare C = (1 < 3) + (1 & 0) + (0 ? 2 : 3);\nbox { 0, C }"), 4),
+           "comparison, logic and '?:' in parentheses in #declare");
     /* Components of a value that is already unsupported (math.inc's
      * vGradient of a user function): the use names the function. */
     expect_error("#declare F = function { x }\n#declare V = <F(1,2,3), 2, 3>;\n#declare W = <V.x, V.y, 0>;\n"
