@@ -309,7 +309,7 @@ static int pattern_modifier(int kw)
     case KW_interior: case KW_exterior: case KW_orientation: case KW_accuracy:
     case KW_number_of_sides: case KW_number_of_tiles: case KW_pattern: case KW_type: case KW_repeat:
     case KW_map_type: case KW_interpolate: case KW_once: case KW_altitude:
-    case KW_pigment_map: case KW_density_map: case KW_coords:
+    case KW_density_map: case KW_coords:
         return 1;
     default:
         return 0;
@@ -323,13 +323,75 @@ static void set_representative(Pigment *pig)
         pig->colour = colour_map_at(pig->map, pig->nmap, 0.5);
 }
 
-void parse_pigment(Parser *p, Pigment *pig)
+static void pigment_items(Parser *p, Pigment *pig, int close);
+
+/* pigment_map { [value pigment] ... }: each entry's pigment is read in
+ * full, and the map blends the entries' colours. That is POV-Ray's result
+ * wherever the entries are plain colours; an entry with a pattern of its
+ * own is shown as its representative colour, reported as an approximation. */
+static void parse_pigment_map(Parser *p, Pigment *pig, const Token *at)
 {
-    begin_block(p, "pigment");
-    int approximated = 0; /* the pattern is not evaluated: colour map at 0.5 */
+    begin_block(p, "pigment_map");
+    TempVec entries;
+    tvec_init(&entries, sizeof(ColourMapEntry));
+    int patterned = 0;
     for (;;) {
         Token *t = next(p);
         if (is_punct(t, '}'))
+            break;
+        if (t->type == TK_WORD && t->kw < 0) {
+            Symbol *s = symbol_find(p, t->text, t->len);
+            if (s && s->value.kind == VAL_UNSUPPORTED)
+                use_unsupported(p, t, &s->value);
+            parse_fail(p, t->pos, "pigment_map identifiers are not supported by hstrace");
+        }
+        if (!is_punct(t, '['))
+            fail_expected(p, t, "'[' or '}' in 'pigment_map'");
+        if (entries.n >= 256)
+            parse_fail(p, t->pos, "Blend_Map too long (more than 256 entries)");
+        double v = single(parse_float(p));
+        parse_comma(p);
+        Pigment entry = p->scene->default_texture.pigment;
+        entry.approx = NULL;
+        if (token_starts_colour(p, peek(p))) {
+            parse_colour(p, &entry.colour, 1);
+            expect_punct(p, ']', "a pigment_map entry");
+        } else {
+            pigment_items(p, &entry, ']');
+        }
+        if (entry.kind != PIGMENT_SOLID)
+            patterned = 1;
+        for (const ApproxNote *n = entry.approx; n; n = n->next) {
+            ApproxNote *c = palloc(p, sizeof *c);
+            *c = *n;
+            c->next = pig->approx;
+            pig->approx = c;
+        }
+        ColourMapEntry *e = tvec_push(p, &entries);
+        e->value = v;
+        e->colour = entry.colour;
+    }
+    if (entries.n < 1)
+        parse_fail(p, p->tok.pos, "Must have at least one entry in pigment_map.");
+    set_map(p, pig, entries.data, entries.n);
+    if (patterned)
+        approximate(p, at, APPROX_PATTERN, &pig->approx);
+}
+
+void parse_pigment(Parser *p, Pigment *pig)
+{
+    begin_block(p, "pigment");
+    pigment_items(p, pig, '}');
+}
+
+/* The items of a pigment up to `close` ('}' of a block, ']' of a
+ * pigment_map entry). */
+static void pigment_items(Parser *p, Pigment *pig, int close)
+{
+    int approximated = 0; /* the pattern is not evaluated: colour map at 0.5 */
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, close))
             break;
         Token at = *t;
         const Value *id = block_identifier(p, t, VAL_PIGMENT, "pigment");
@@ -415,6 +477,9 @@ void parse_pigment(Parser *p, Pigment *pig)
         case KW_color_map:
         case KW_colour_map:
             parse_colour_map(p, pig);
+            continue;
+        case KW_pigment_map:
+            parse_pigment_map(p, pig, &at);
             continue;
         /* POV-Ray keeps these in single precision (SNGL): so do the values */
         case KW_frequency: pig->frequency = single(parse_float(p)); continue;

@@ -555,6 +555,7 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     w->camera.right = scene->camera.right;
     w->background = rgb_of(&scene->background);
     w->sky = scene->sky.npigments > 0 ? &scene->sky : NULL;
+    w->legacy_sky = scene->version < 3.7;
     w->nfogs = scene->nfogs;
     w->fogs = scene->fogs;
     w->ambient_light = rgb_of(&scene->globals.ambient_light);

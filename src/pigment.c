@@ -316,18 +316,54 @@ Colour material_colour_at(const World *w, const Material *m, int polygon, Vec3 w
     return pigment_at(&m->pattern, inverse_transform_point(&m->pattern_to_world, at));
 }
 
+/* The sky's pigment i at the unit direction's point p. */
+static Colour sky_pigment_at(const World *w, int i, Vec3 p)
+{
+    Pigment pig = w->sky->pigments[i];
+    if (pig.noise_generator == 0)
+        pig.noise_generator = w->noise_generator;
+    return pigment_at(&pig, inverse_transform_point(&pig.transform, p));
+}
+
+/* Scenes before #version 3.7: POV-Ray 3.6's layering, kept by 3.7 for
+ * them. Opacity is weighed by the filter and transmit gathered so far,
+ * and the background shows through by the layers' combined filter and
+ * transmit. */
+static RGB legacy_sky_colour(const World *w, Vec3 p)
+{
+    RGB col = { 0, 0, 0 };
+    double fr = 1, fg = 1, fb = 1, ff = 1, ft = 1; /* the product of the layers' colours */
+    double trans = 1.0;
+    for (int i = w->sky->npigments - 1; i >= 0; i--) {
+        Colour c = sky_pigment_at(w, i, p);
+        double att = trans * (1.0 - c.filter - c.transmit);
+        col.r += c.r * att;
+        col.g += c.g * att;
+        col.b += c.b * att;
+        fr *= c.r;
+        fg *= c.g;
+        fb *= c.b;
+        ff *= c.filter;
+        ft *= c.transmit;
+        trans = fabs(ff) + fabs(ft);
+    }
+    col.r += w->background.r * (fr * ff + ft);
+    col.g += w->background.g * (fg * ff + ft);
+    col.b += w->background.b * (fb * ff + ft);
+    return col;
+}
+
 RGB sky_colour(const World *w, Vec3 dir)
 {
     RGB col = { 0, 0, 0 }, fil = { 1, 1, 1 };
     const SkySphere *sky = w->sky;
+    if (sky && w->legacy_sky)
+        return legacy_sky_colour(w, inverse_transform_point(&sky->transform, dir));
     if (sky) {
         /* POV-Ray transforms the direction as a point (MInvTransPoint) */
         Vec3 p = inverse_transform_point(&sky->transform, dir);
         for (int i = sky->npigments - 1; i >= 0; i--) { /* the last written is on top */
-            Pigment pig = sky->pigments[i];
-            if (pig.noise_generator == 0)
-                pig.noise_generator = w->noise_generator;
-            Colour c = pigment_at(&pig, inverse_transform_point(&pig.transform, p));
+            Colour c = sky_pigment_at(w, i, p);
             double opacity = 1.0 - c.filter - c.transmit;
             col.r += c.r * opacity * fil.r;
             col.g += c.g * opacity * fil.g;

@@ -93,6 +93,7 @@ typedef struct {
     Camera camera;
     RGB background;
     const SkySphere *sky; /* NULL: the background colour alone (the scene's, read-only) */
+    int legacy_sky;       /* #version below 3.7: POV-Ray 3.6's layering of the sky's filter */
     int nfogs;
     const SceneFog *fogs; /* the scene's, read-only */
     RGB ambient_light;

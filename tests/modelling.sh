@@ -165,10 +165,28 @@ POV
     "$hstrace" "$work/lightsout.pov" --width 240 --height 180 -o "$work/lo.exr" 2>>"$work/err" &&
     report=$("$hstrace" compare "$work/ul.exr" "$work/lo.exr" --max-rmse 0.0001 --max-share 0 2>&1)
 check $? "lights in a declared union's copies render as the lights written out: $(echo "${report:-}" | sed -n 2p | tr -s ' ') $(cat "$work/err")"
+# A #version 3.6 scene: POV-Ray 3.6's layering of a sky's filtering
+# pigments over the background; and pigment_maps whose entries are plain
+# colours (identifiers, rgb, and a pigment identifier), which hstrace blends
+# exactly as POV-Ray does.
+cat >"$work/legacy.pov" <<'POV'
+#version 3.6;
+global_settings { assumed_gamma 1 }
+camera { location <0, 1, -5> look_at <0, 1.5, 0> right x*4/3 angle 90 }
+light_source { <4, 8, -3> rgb 1 }
+background { rgb <0.3, 0.5, 0.9> }
+#declare Red = pigment { rgb <1, 0.2, 0.1> }
+sky_sphere {
+  pigment { gradient y color_map { [0.3 rgbf <0.8, 0.8, 1, 0.6>] [0.9 rgbt <0.1, 0.1, 0.4, 0.3>] } }
+  pigment { bozo scale 0.3 color_map { [0.4 rgbt 1] [0.7 rgbf <1, 1, 1, 0.2>] } }
+}
+plane { y, 0 pigment { gradient x pigment_map { [0 Red] [0.5 rgb <0.1, 0.8, 0.2>] [1 Red] } scale 2 } }
+triangle { <-1, 0, 1>, <1, 0, 1>, <0, 2, 1> pigment { rgb 0.9 } }
+POV
 
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-for name in patterns binding flags noise lights unionlights fog declsky; do
+for name in patterns binding flags noise lights unionlights fog declsky legacy; do
     for q in 9 3 4; do
         if ! "$hstrace" "$work/$name.pov" --width 240 --height 180 "+Q$q" -o "$work/$name.h$q.exr" 2>"$work/err"; then
             not_ok "$name: hstrace renders at +Q$q"; sed 's/^/# /' "$work/err"
@@ -203,6 +221,12 @@ status=$?
 [ $status -eq 0 ] && [ "$(cat "$work/err")" = "$work/fogatt.pov:3:24: warning: a fog's up vector can't be translated
 $work/fogatt.pov:3:1: warning: 'fog' approximated: fog between lights and surfaces (media_attenuation) ignored (1 place; --strict refuses it)" ]
 check $? "a light's media_attenuation with fog is reported as approximated, a translated fog warned about as in POV-Ray (status $status: $(cat "$work/err"))"
+
+printf '#version 3.7;\nplane { y, 0 pigment { gradient x pigment_map { [0 rgb 1] [1 bozo] } } }\n' >"$work/pigmap.pov"
+"$hstrace" "$work/pigmap.pov" --width 8 --height 6 -o "$work/pm.png" 2>"$work/err"
+status=$?
+[ $status -eq 0 ] && [ "$(cat "$work/err")" = "$work/pigmap.pov:2:35: warning: 'pigment_map' approximated: pattern shown as one colour, its colour map at 0.5 (1 place; --strict refuses it)" ]
+check $? "a pigment_map entry with a pattern of its own is reported as approximated (status $status: $(cat "$work/err"))"
 
 # --strict and the approximation report.
 cat >"$work/approx.pov" <<'POV'
