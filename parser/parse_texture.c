@@ -349,7 +349,8 @@ static void parse_pigment_map(Parser *p, Pigment *pig, const Token *at)
             fail_expected(p, t, "'[' or '}' in 'pigment_map'");
         if (entries.n >= 256)
             parse_fail(p, t->pos, "Blend_Map too long (more than 256 entries)");
-        double v = single(parse_float(p));
+        /* average's entries may leave out their weight (1) */
+        double v = token_starts_float(p, peek(p)) ? single(parse_float(p)) : 1.0;
         parse_comma(p);
         Pigment entry = p->scene->default_texture.pigment;
         entry.approx = NULL;
