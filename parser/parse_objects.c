@@ -3,6 +3,7 @@
  * transform, composed from the transforms written on it in order; a union's
  * children keep theirs (the engine applies child, then parent). */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -329,6 +330,36 @@ static void finish_mesh(Parser *p, SceneObject *o, MeshBuilder *mb)
         memcpy(o->u.mesh.textures, mb->textures.data, sizeof(SceneTexture *) * (size_t)mb->textures.n);
 }
 
+static int index_in_range(double v, int n) { return v >= 0 && v < n; }
+
+/* mesh2's normal_indices or uv_indices (after the keyword): one index
+ * triple per face, into the `range` normals or uv vectors, stored in each
+ * face's int[3] at `field`. */
+static void parse_face_index_block(Parser *p, MeshBuilder *mb, const char *kind, int range, const char *range_what,
+                                   size_t field)
+{
+    char block[32];
+    snprintf(block, sizeof block, "%s_indices", kind);
+    begin_block(p, block);
+    Token ct = *peek(p);
+    int n = parse_count(p, block, 0);
+    if (n != mb->faces.n)
+        parse_fail(p, ct.pos, "number of %s indices must equal number of faces", kind);
+    for (int i = 0; i < n; i++) {
+        parse_comma(p);
+        Token vt = *peek(p);
+        Vec3 idx = parse_vector(p);
+        if (!index_in_range(idx.x, range) || !index_in_range(idx.y, range) || !index_in_range(idx.z, range))
+            parse_fail(p, vt.pos, "mesh2 %s index out of range (%d %s)", kind, range, range_what);
+        int *slot = (int *)(void *)((char *)((MeshFace *)mb->faces.data + i) + field);
+        slot[0] = (int)idx.x;
+        slot[1] = (int)idx.y;
+        slot[2] = (int)idx.z;
+    }
+    parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
+    expect_punct(p, '}', block);
+}
+
 static void init_mesh_builder(MeshBuilder *mb)
 {
     tvec_init(&mb->vertices, sizeof(Vec3));
@@ -412,8 +443,6 @@ static void parse_vector_list(Parser *p, TempVec *out, const char *what)
     expect_punct(p, '}', what);
 }
 
-static int index_in_range(double v, int n) { return v >= 0 && v < n; }
-
 static SceneObject *parse_mesh2(Parser *p, const Token *kw)
 {
     begin_block(p, "mesh2");
@@ -495,56 +524,18 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
             have_faces = 1;
             continue;
         }
-        case KW_normal_indices: {
+        case KW_normal_indices:
             if (!have_faces)
                 parse_fail(p, at.pos, "normal_indices must follow face_indices in mesh2");
-            begin_block(p, "normal_indices");
-            Token ct = *peek(p);
-            int n = parse_count(p, "normal_indices", 0);
-            if (n != mb.faces.n)
-                parse_fail(p, ct.pos, "number of normal indices must equal number of faces");
-            for (int i = 0; i < n; i++) {
-                parse_comma(p);
-                Token vt = *peek(p);
-                Vec3 idx = parse_vector(p);
-                if (!index_in_range(idx.x, mb.normals.n) || !index_in_range(idx.y, mb.normals.n) ||
-                    !index_in_range(idx.z, mb.normals.n))
-                    parse_fail(p, vt.pos, "mesh2 normal index out of range (%d normals)", mb.normals.n);
-                MeshFace *f = (MeshFace *)mb.faces.data + i;
-                f->n[0] = (int)idx.x;
-                f->n[1] = (int)idx.y;
-                f->n[2] = (int)idx.z;
-            }
-            parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
-            expect_punct(p, '}', "normal_indices");
+            parse_face_index_block(p, &mb, "normal", mb.normals.n, "normals", offsetof(MeshFace, n));
             have_normal_indices = 1;
             continue;
-        }
-        case KW_uv_indices: {
+        case KW_uv_indices:
             if (!have_faces)
                 parse_fail(p, at.pos, "uv_indices must follow face_indices in mesh2");
-            begin_block(p, "uv_indices");
-            Token ct = *peek(p);
-            int n = parse_count(p, "uv_indices", 0);
-            if (n != mb.faces.n)
-                parse_fail(p, ct.pos, "number of uv indices must equal number of faces");
-            for (int i = 0; i < n; i++) {
-                parse_comma(p);
-                Token vt = *peek(p);
-                Vec3 idx = parse_vector(p);
-                if (!index_in_range(idx.x, mb.uvs.n) || !index_in_range(idx.y, mb.uvs.n) ||
-                    !index_in_range(idx.z, mb.uvs.n))
-                    parse_fail(p, vt.pos, "mesh2 uv index out of range (%d uv vectors)", mb.uvs.n);
-                MeshFace *f = (MeshFace *)mb.faces.data + i;
-                f->uv[0] = (int)idx.x;
-                f->uv[1] = (int)idx.y;
-                f->uv[2] = (int)idx.z;
-            }
-            parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
-            expect_punct(p, '}', "uv_indices");
+            parse_face_index_block(p, &mb, "uv", mb.uvs.n, "uv vectors", offsetof(MeshFace, uv));
             have_uv_indices = 1;
             continue;
-        }
         case KW_inside_vector:
             (void)parse_vector(p);
             continue;

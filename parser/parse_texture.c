@@ -226,27 +226,40 @@ static void parse_colour_list(Parser *p, Pigment *pig, int count)
 
 /* color_map { [value colour] ... }, also the old [v1 v2 colour c1 colour c2]
  * form (POV-Ray's Parse_Colour_Map); equal neighbours are merged as there. */
+/* The start of a blend map's next entry (color_map, pigment_map): returns 0
+ * at the map's closing '}', else reads '[' and the entry's value (POV-Ray
+ * keeps it in single precision; `optional`: 1 when left out, as average's
+ * entries may). */
+static int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int optional, double *value)
+{
+    Token *t = next(p);
+    if (is_punct(t, '}'))
+        return 0;
+    if (t->type == TK_WORD && t->kw < 0) {
+        Symbol *s = symbol_find(p, t->text, t->len);
+        if (s && s->value.kind == VAL_UNSUPPORTED)
+            use_unsupported(p, t, &s->value);
+        parse_fail(p, t->pos, "%s identifiers are not supported by hstrace", map);
+    }
+    if (!is_punct(t, '[')) {
+        char what[48];
+        snprintf(what, sizeof what, "'[' or '}' in '%s'", map);
+        fail_expected(p, t, what);
+    }
+    if (entries->n >= 256)
+        parse_fail(p, t->pos, "Blend_Map too long (more than 256 entries)");
+    *value = optional && !token_starts_float(p, peek(p)) ? 1.0 : single(parse_float(p));
+    parse_comma(p);
+    return 1;
+}
+
 static void parse_colour_map(Parser *p, Pigment *pig)
 {
     begin_block(p, "color_map");
     TempVec entries;
     tvec_init(&entries, sizeof(ColourMapEntry));
-    for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
-            break;
-        if (t->type == TK_WORD && t->kw < 0) {
-            Symbol *s = symbol_find(p, t->text, t->len);
-            if (s && s->value.kind == VAL_UNSUPPORTED)
-                use_unsupported(p, t, &s->value);
-            parse_fail(p, t->pos, "color_map identifiers are not supported by hstrace");
-        }
-        if (!is_punct(t, '['))
-            fail_expected(p, t, "'[' or '}' in 'color_map'");
-        if (entries.n >= 256)
-            parse_fail(p, t->pos, "Blend_Map too long (more than 256 entries)");
-        double v = single(parse_float(p)); /* POV-Ray keeps map values in single precision */
-        parse_comma(p);
+    double v;
+    while (blend_map_entry(p, "color_map", &entries, 0, &v)) {
         Token *c = peek(p);
         if (token_starts_float(p, c)) { /* old style: a second value, then two colours */
             double v2 = single(parse_float(p));
@@ -335,23 +348,8 @@ static void parse_pigment_map(Parser *p, Pigment *pig, const Token *at)
     TempVec entries;
     tvec_init(&entries, sizeof(ColourMapEntry));
     int patterned = 0;
-    for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
-            break;
-        if (t->type == TK_WORD && t->kw < 0) {
-            Symbol *s = symbol_find(p, t->text, t->len);
-            if (s && s->value.kind == VAL_UNSUPPORTED)
-                use_unsupported(p, t, &s->value);
-            parse_fail(p, t->pos, "pigment_map identifiers are not supported by hstrace");
-        }
-        if (!is_punct(t, '['))
-            fail_expected(p, t, "'[' or '}' in 'pigment_map'");
-        if (entries.n >= 256)
-            parse_fail(p, t->pos, "Blend_Map too long (more than 256 entries)");
-        /* average's entries may leave out their weight (1) */
-        double v = token_starts_float(p, peek(p)) ? single(parse_float(p)) : 1.0;
-        parse_comma(p);
+    double v;
+    while (blend_map_entry(p, "pigment_map", &entries, 1, &v)) {
         Pigment entry = p->scene->default_texture.pigment;
         entry.approx = NULL;
         if (token_starts_colour(p, peek(p))) {

@@ -178,16 +178,39 @@ static double corner(const double *m, double weight, double x, double y, double 
     return weight * (m[1] + m[2] * x + m[4] * y + m[6] * z);
 }
 
-static double lattice_noise(Vec3 p)
+/* The lattice cell around a point: the offsets from its corners, the
+ * s-curve weights and the hashes of its four (x, y) columns, shared by the
+ * scalar and the vector noise. */
+typedef struct {
+    int iz;
+    double x0, y0, z0, x1, y1, z1;
+    double sz, tz, txty, sxty, txsy, sxsy;
+    int h00, h10, h01, h11;
+} LatticeCell;
+
+static LatticeCell lattice_cell(Vec3 p)
 {
     LatticeCoord cx = lattice_coord(p.x), cy = lattice_coord(p.y), cz = lattice_coord(p.z);
-    int ix = cx.index, iy = cy.index, iz = cz.index;
-    double x0 = cx.frac, y0 = cy.frac, z0 = cz.frac;
-    double x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
-    double sx = s_curve(x0), sy = s_curve(y0), sz = s_curve(z0);
-    double tx = 1 - sx, ty = 1 - sy, tz = 1 - sz;
-    double txty = tx * ty, sxty = sx * ty, txsy = tx * sy, sxsy = sx * sy;
-    int h00 = hash2(ix, iy), h10 = hash2(ix + 1, iy), h01 = hash2(ix, iy + 1), h11 = hash2(ix + 1, iy + 1);
+    LatticeCell c;
+    int ix = cx.index, iy = cy.index;
+    c.iz = cz.index;
+    c.x0 = cx.frac, c.y0 = cy.frac, c.z0 = cz.frac;
+    c.x1 = c.x0 - 1, c.y1 = c.y0 - 1, c.z1 = c.z0 - 1;
+    double sx = s_curve(c.x0), sy = s_curve(c.y0);
+    c.sz = s_curve(c.z0);
+    double tx = 1 - sx, ty = 1 - sy;
+    c.tz = 1 - c.sz;
+    c.txty = tx * ty, c.sxty = sx * ty, c.txsy = tx * sy, c.sxsy = sx * sy;
+    c.h00 = hash2(ix, iy), c.h10 = hash2(ix + 1, iy), c.h01 = hash2(ix, iy + 1), c.h11 = hash2(ix + 1, iy + 1);
+    return c;
+}
+
+static double lattice_noise(Vec3 p)
+{
+    const LatticeCell c = lattice_cell(p);
+    const int iz = c.iz, h00 = c.h00, h10 = c.h10, h01 = c.h01, h11 = c.h11;
+    const double x0 = c.x0, y0 = c.y0, z0 = c.z0, x1 = c.x1, y1 = c.y1, z1 = c.z1;
+    const double sz = c.sz, tz = c.tz, txty = c.txty, sxty = c.sxty, txsy = c.txsy, sxsy = c.sxsy;
     /* the same eight terms in the same order as POV-Ray: sums round alike */
     double sum = corner(table_row(h00, iz), txty * tz, x0, y0, z0);
     sum += corner(table_row(h10, iz), sxty * tz, x1, y0, z0);
@@ -211,14 +234,10 @@ static void vector_corner(Vec3 *acc, const double *m, double weight, double x, d
 Vec3 noise_vector(Vec3 p)
 {
     ensure_tables();
-    LatticeCoord cx = lattice_coord(p.x), cy = lattice_coord(p.y), cz = lattice_coord(p.z);
-    int ix = cx.index, iy = cy.index, iz = cz.index;
-    double x0 = cx.frac, y0 = cy.frac, z0 = cz.frac;
-    double x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
-    double sx = s_curve(x0), sy = s_curve(y0), sz = s_curve(z0);
-    double tx = 1 - sx, ty = 1 - sy, tz = 1 - sz;
-    double txty = tx * ty, sxty = sx * ty, txsy = tx * sy, sxsy = sx * sy;
-    int h00 = hash2(ix, iy), h10 = hash2(ix + 1, iy), h01 = hash2(ix, iy + 1), h11 = hash2(ix + 1, iy + 1);
+    const LatticeCell c = lattice_cell(p);
+    const int iz = c.iz, h00 = c.h00, h10 = c.h10, h01 = c.h01, h11 = c.h11;
+    const double x0 = c.x0, y0 = c.y0, z0 = c.z0, x1 = c.x1, y1 = c.y1, z1 = c.z1;
+    const double sz = c.sz, tz = c.tz, txty = c.txty, sxty = c.sxty, txsy = c.txsy, sxsy = c.sxsy;
     const double *m = table_row(h00, iz);
     double w = txty * tz;
     Vec3 r = v3(corner(m, w, x0, y0, z0), corner(m + 8, w, x0, y0, z0), corner(m + 16, w, x0, y0, z0));
