@@ -18,6 +18,7 @@
 # Exit status: 0 done, 3 hstrace not built or the examples not installed.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+src=$(cd "$here/.." && pwd)
 build=$(cd "${1:-.}" && pwd)
 hstrace="$build/hstrace"
 [ -x "$hstrace" ] || { echo "examples: build hstrace first (make)" >&2; exit 3; }
@@ -55,7 +56,8 @@ while read -r scene; do
         line=$(error_line "$work/err")
         [ $status -eq 124 ] && line="(no answer within 120 s)"
         [ -n "$line" ] || line="(exit status $status: $(tail -1 "$work/err"))"
-        echo "$scene|$status|$(echo "$line" | sed "s|$work/examples/||g; s|$dir/||g")" >>"$failed"
+        # paths relative to the examples folder and to hstrace's source tree
+        echo "$scene|$status|$(echo "$line" | sed "s|$work/examples/||g; s|$dir/||g; s|$src/||g; s|$build/||g")" >>"$failed"
         continue
     fi
     approx=$(grep ': warning: .* approximated: ' "$work/err" | sed 's/.*warning: //; s/ approximated: .*//' |

@@ -17,8 +17,10 @@ static double turbulent_width(const World *w, const SceneFog *f, Vec3 at, double
 {
     if (!f->turbulent)
         return width;
-    Vec3 p = v3(at.x * f->turbulence.x, at.y * f->turbulence.y, at.z * f->turbulence.z);
     double k = exp(-width / f->distance);
+    if (k == 0.0) /* a ray into the distance (or to the sky): turbulence has no say */
+        return width;
+    Vec3 p = v3(at.x * f->turbulence.x, at.y * f->turbulence.y, at.z * f->turbulence.z);
     double t = noise_turbulence(p, f->octaves, f->omega, f->lambda, w->noise_generator) * f->turb_depth;
     return width * (1.0 - k * fmin(1.0, t));
 }

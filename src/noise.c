@@ -156,7 +156,7 @@ static LatticeCoord lattice_coord(double x)
     if (lowered > 2147483000.0)
         lowered = 2147483000.0;
     int whole = (int)lowered;
-    c.index = (int)((unsigned)(whole + 10000) & 0xFFFu);
+    c.index = (int)(((unsigned)whole + 10000u) & 0xFFFu); /* unsigned: no overflow near the ends */
     c.frac = x - whole;
     return c;
 }
