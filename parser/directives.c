@@ -24,6 +24,12 @@ void debug_end_line(Parser *p)
     p->debug_line_open = 0;
 }
 
+void parse_warning(Parser *p, SourcePos pos, const char *msg)
+{
+    debug_end_line(p);
+    fprintf(stderr, "%s:%d:%d: warning: %s\n", pos.file, pos.line, pos.column, msg);
+}
+
 static void count_braces(Parser *p, const Token *t, int dir)
 {
     if (is_punct(t, '{'))
@@ -600,9 +606,7 @@ static void handle_directive(Parser *p, const Token *hash)
         return;
     }
     case KW_warning: {
-        char *msg = parse_string(p);
-        debug_end_line(p);
-        fprintf(stderr, "%s:%d:%d: warning: %s\n", hash->pos.file, hash->pos.line, hash->pos.column, msg);
+        parse_warning(p, hash->pos, parse_string(p));
         return;
     }
     case KW_error: {

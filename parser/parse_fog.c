@@ -3,14 +3,8 @@
  * transforms turn only the up vector, and a translate is ignored with a
  * warning, as in POV-Ray. */
 #include <math.h>
-#include <stdio.h>
 
 #include "parser_internal.h"
-
-static void warn(const Token *t, const char *msg)
-{
-    fprintf(stderr, "%s:%d:%d: warning: %s\n", t->pos.file, t->pos.line, t->pos.column, msg);
-}
 
 /* The turbulence settings start from POV-Ray's classic turbulence warp. */
 static void begin_turbulence(SceneFog *fog)
@@ -39,8 +33,7 @@ void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
         transform_identity(&tr);
         if (is_kw(t, KW_translate)) {
             (void)parse_vector(p);
-            debug_end_line(p);
-            warn(&at, "a fog's up vector can't be translated");
+            parse_warning(p, at.pos, "a fog's up vector can't be translated");
             continue;
         }
         if (parse_transform_item(p, t, &tr)) {
@@ -58,8 +51,7 @@ void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
             double type = parse_float(p);
             fog->type = (int)type;
             if (fog->type < 1 || fog->type > 2) {
-                debug_end_line(p);
-                warn(&at, "unknown fog type");
+                parse_warning(p, at.pos, "unknown fog type");
             }
             continue;
         }
@@ -84,8 +76,7 @@ void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
         if (token_starts_float(p, t)) {
             unget(p);
             fog->distance = parse_float(p);
-            debug_end_line(p);
-            warn(&at, "should use distance keyword");
+            parse_warning(p, at.pos, "should use distance keyword");
             continue;
         }
         if (t->type == TK_WORD && t->kw >= 0)

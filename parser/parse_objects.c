@@ -3,7 +3,6 @@
  * transform, composed from the transforms written on it in order; a union's
  * children keep theirs (the engine applies child, then parent). */
 #include <math.h>
-#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -332,14 +331,13 @@ static void finish_mesh(Parser *p, SceneObject *o, MeshBuilder *mb)
 
 static int index_in_range(double v, int n) { return v >= 0 && v < n; }
 
-/* mesh2's normal_indices or uv_indices (after the keyword): one index
- * triple per face, into the `range` normals or uv vectors, stored in each
- * face's int[3] at `field`. */
-static void parse_face_index_block(Parser *p, MeshBuilder *mb, const char *kind, int range, const char *range_what,
-                                   size_t field)
+/* mesh2's normal_indices or, with `uv`, uv_indices (after the keyword):
+ * one index triple per face into the normals or uv vectors. */
+static void parse_face_index_block(Parser *p, MeshBuilder *mb, int uv)
 {
-    char block[32];
-    snprintf(block, sizeof block, "%s_indices", kind);
+    const char *kind = uv ? "uv" : "normal", *range_what = uv ? "uv vectors" : "normals";
+    const char *block = uv ? "uv_indices" : "normal_indices";
+    int range = uv ? mb->uvs.n : mb->normals.n;
     begin_block(p, block);
     Token ct = *peek(p);
     int n = parse_count(p, block, 0);
@@ -351,7 +349,8 @@ static void parse_face_index_block(Parser *p, MeshBuilder *mb, const char *kind,
         Vec3 idx = parse_vector(p);
         if (!index_in_range(idx.x, range) || !index_in_range(idx.y, range) || !index_in_range(idx.z, range))
             parse_fail(p, vt.pos, "mesh2 %s index out of range (%d %s)", kind, range, range_what);
-        int *slot = (int *)(void *)((char *)((MeshFace *)mb->faces.data + i) + field);
+        MeshFace *f = (MeshFace *)mb->faces.data + i;
+        int *slot = uv ? f->uv : f->n;
         slot[0] = (int)idx.x;
         slot[1] = (int)idx.y;
         slot[2] = (int)idx.z;
@@ -527,13 +526,13 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
         case KW_normal_indices:
             if (!have_faces)
                 parse_fail(p, at.pos, "normal_indices must follow face_indices in mesh2");
-            parse_face_index_block(p, &mb, "normal", mb.normals.n, "normals", offsetof(MeshFace, n));
+            parse_face_index_block(p, &mb, 0);
             have_normal_indices = 1;
             continue;
         case KW_uv_indices:
             if (!have_faces)
                 parse_fail(p, at.pos, "uv_indices must follow face_indices in mesh2");
-            parse_face_index_block(p, &mb, "uv", mb.uvs.n, "uv vectors", offsetof(MeshFace, uv));
+            parse_face_index_block(p, &mb, 1);
             have_uv_indices = 1;
             continue;
         case KW_inside_vector:

@@ -265,6 +265,8 @@ _Noreturn void parse_fail(Parser *p, SourcePos pos, const char *fmt, ...) HST_PR
 /* Ends the line of #debug text on stderr, if the scene left one open, so
  * that the next message (a warning, the error) starts a line of its own. */
 void debug_end_line(Parser *p);
+/* FILE:LINE:COLUMN: warning: MSG on stderr, on a line of its own. */
+void parse_warning(Parser *p, SourcePos pos, const char *msg);
 _Noreturn void parse_fail_io(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
 /* "expected X after Y, found Z" at the found token. */
 _Noreturn void fail_expected(Parser *p, const Token *found, const char *what);

@@ -16,7 +16,6 @@ typedef struct {
     World *w;
     int cap_polygons, cap_points, cap_outlines, cap_normals, cap_planes, cap_materials, cap_uvs;
     int failed;
-    int noise_generator; /* the scene's, for patterns that name none */
 } Builder;
 
 /* Grows *array (of `size`-byte items) so that index `need` fits. */
@@ -53,6 +52,13 @@ typedef struct {
 static RGB rgb_of(const Colour *c) { RGB r = { c->r, c->g, c->b }; return r; }
 
 /* texture_space: the texture's own space to world. */
+/* A pattern that names no noise_generator takes the scene's. */
+static void resolve_noise_generator(Pigment *pig, int scene_generator)
+{
+    if (pig->noise_generator == 0)
+        pig->noise_generator = scene_generator;
+}
+
 static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex, const Transform *texture_space,
                         SourcePos pos)
 {
@@ -64,8 +70,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->pigment = tex->pigment.colour;
     if (tex->pigment.kind != PIGMENT_SOLID) {
         m->pattern = tex->pigment;
-        if (m->pattern.noise_generator == 0)
-            m->pattern.noise_generator = b->noise_generator;
+        resolve_noise_generator(&m->pattern, w->noise_generator);
         m->pattern_to_world = tex->pigment.transform;
         if (!tex->pigment.uv_mapping) /* uv space is the surface's own: nothing moves it */
             transform_compose(&m->pattern_to_world, texture_space);
@@ -514,7 +519,6 @@ static void build_lights(World *w, const Scene *scene)
         l->fade_power = sl->fade_power;
         l->direction = v3_normalize(v3_sub(sl->location, sl->point_at));
         l->beam = sl->beam;
-        l->beam_axis = v3_scale(l->direction, -1.0);
         l->beam_radius = sl->beam_radius;
         l->beam_falloff = sl->beam_falloff;
         l->beam_tightness = sl->beam_tightness;
@@ -527,7 +531,8 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     memset(err, 0, sizeof *err);
     w->bounds_min = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
     w->bounds_max = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
-    Builder b = { .w = w, .noise_generator = scene_noise_generator(scene) };
+    w->noise_generator = scene_noise_generator(scene);
+    Builder b = { .w = w };
     Inherited root;
     memset(&root, 0, sizeof root);
     transform_identity(&root.transform);
@@ -554,14 +559,28 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     w->camera.up = scene->camera.up;
     w->camera.right = scene->camera.right;
     w->background = rgb_of(&scene->background);
-    w->sky = scene->sky.npigments > 0 ? &scene->sky : NULL;
+    if (scene->sky.npigments > 0) {
+        w->sky = malloc(sizeof *w->sky);
+        Pigment *pigments = malloc(sizeof *pigments * (size_t)scene->sky.npigments);
+        if (!w->sky || !pigments) {
+            free(pigments);
+            snprintf(err->message, sizeof err->message, "out of memory");
+            world_free(w);
+            return -1;
+        }
+        *w->sky = scene->sky;
+        for (int i = 0; i < scene->sky.npigments; i++) {
+            pigments[i] = scene->sky.pigments[i];
+            resolve_noise_generator(&pigments[i], w->noise_generator);
+        }
+        w->sky->pigments = pigments;
+    }
     w->legacy_sky = scene->version < 3.7;
     w->nfogs = scene->nfogs;
     w->fogs = scene->fogs;
     w->ambient_light = rgb_of(&scene->globals.ambient_light);
     w->max_trace_level = scene->globals.max_trace_level > 0 ? scene->globals.max_trace_level : 5;
     w->adc_bailout = scene->globals.adc_bailout > 0 ? scene->globals.adc_bailout : 1.0 / 255.0;
-    w->noise_generator = b.noise_generator;
     return 0;
 }
 
@@ -572,6 +591,9 @@ void world_free(World *w)
     free(w->outline_start);
     free(w->vertex_normals);
     free(w->uvs);
+    if (w->sky)
+        free(w->sky->pigments);
+    free(w->sky);
     free(w->planes);
     free(w->materials);
     free(w->lights);

@@ -319,10 +319,8 @@ Colour material_colour_at(const World *w, const Material *m, int polygon, Vec3 w
 /* The sky's pigment i at the unit direction's point p. */
 static Colour sky_pigment_at(const World *w, int i, Vec3 p)
 {
-    Pigment pig = w->sky->pigments[i];
-    if (pig.noise_generator == 0)
-        pig.noise_generator = w->noise_generator;
-    return pigment_at(&pig, inverse_transform_point(&pig.transform, p));
+    const Pigment *pig = &w->sky->pigments[i];
+    return pigment_at(pig, inverse_transform_point(&pig->transform, p));
 }
 
 /* Scenes before #version 3.7: POV-Ray 3.6's layering, kept by 3.7 for

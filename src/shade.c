@@ -52,8 +52,9 @@ static double beam_edge(double low, double high, double x)
  * Attenuate_Light computes it. */
 static double beam_attenuation(const Light *l, Vec3 p, Vec3 to_light)
 {
+    /* the beam's axis is -l->direction */
     if (l->beam == BEAM_SPOT) {
-        double cos_angle = -v3_dot(to_light, l->beam_axis);
+        double cos_angle = v3_dot(to_light, l->direction);
         if (cos_angle <= 0.0)
             return 0.0;
         double a = pow(cos_angle, l->beam_tightness);
@@ -63,10 +64,10 @@ static double beam_attenuation(const Light *l, Vec3 p, Vec3 to_light)
     }
     /* cylinder: by the distance of p from the axis, in front of the light only */
     Vec3 from_centre = v3_sub(p, l->location);
-    double along = v3_dot(from_centre, l->beam_axis);
+    double along = -v3_dot(from_centre, l->direction);
     if (along <= 0.0)
         return 0.0;
-    double off_axis = v3_length(v3_sub(from_centre, v3_scale(l->beam_axis, along)));
+    double off_axis = v3_length(v3_add(from_centre, v3_scale(l->direction, along)));
     if (off_axis >= l->beam_falloff)
         return 0.0;
     double inside = 1.0 - off_axis / l->beam_falloff;
@@ -376,17 +377,23 @@ static void interior_remove(InteriorList *l, int i)
     l->n--;
 }
 
+/* Enters m's interior (innermost), unless the list is full. */
+static void interior_push(InteriorList *l, const Material *m)
+{
+    if (l->n >= MAX_INTERIOR_NESTING)
+        return;
+    l->key[l->n] = m->interior_key;
+    l->hollow[l->n] = (unsigned char)m->hollow;
+    l->ior[l->n++] = m->ior;
+}
+
 /* The ior ratio at this surface, and the interior list beyond it
  * (POV-Ray's ComputeRefraction bookkeeping; the atmosphere has ior 1). */
 static double refraction_ratio(const InteriorList *inside, const Material *m, InteriorList *beyond)
 {
     *beyond = *inside;
     if (beyond->n == 0) {
-        if (beyond->n < MAX_INTERIOR_NESTING) {
-            beyond->key[beyond->n] = m->interior_key;
-            beyond->hollow[beyond->n] = (unsigned char)m->hollow;
-            beyond->ior[beyond->n++] = m->ior;
-        }
+        interior_push(beyond, m);
         return 1.0 / m->ior;
     }
     int at = interior_index(beyond, m->interior_key);
@@ -399,11 +406,7 @@ static double refraction_ratio(const InteriorList *inside, const Material *m, In
         return 1.0;
     }
     double outer = beyond->ior[beyond->n - 1];
-    if (beyond->n < MAX_INTERIOR_NESTING) {
-        beyond->key[beyond->n] = m->interior_key;
-        beyond->hollow[beyond->n] = (unsigned char)m->hollow;
-        beyond->ior[beyond->n++] = m->ior;
-    }
+    interior_push(beyond, m);
     return outer / m->ior;
 }
 

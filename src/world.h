@@ -63,8 +63,8 @@ typedef struct {
     RGB colour;
     int shadowless;
     double fade_distance, fade_power;
-    LightBeam beam;       /* spotlight or cylinder: intensity across the beam */
-    Vec3 beam_axis;       /* unit, from location toward point_at */
+    LightBeam beam;       /* spotlight or cylinder: intensity across the beam, whose axis
+                           * runs from location toward point_at (-direction) */
     double beam_radius, beam_falloff, beam_tightness; /* as in SceneLight */
 } Light;
 
@@ -92,7 +92,9 @@ typedef struct {
     Light *lights;
     Camera camera;
     RGB background;
-    const SkySphere *sky; /* NULL: the background colour alone (the scene's, read-only) */
+    /* NULL: the background colour alone. Else the scene's sky sphere with
+     * its own copy of the pigments, noise generators resolved (owned). */
+    SkySphere *sky;
     int legacy_sky;       /* #version below 3.7: POV-Ray 3.6's layering of the sky's filter */
     int nfogs;
     const SceneFog *fogs; /* the scene's, read-only */
