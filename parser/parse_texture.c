@@ -9,7 +9,6 @@
 #include <string.h>
 
 #include "parser_internal.h"
-#include "pigment.h"
 
 SceneTexture *new_default_texture(Parser *p)
 {

@@ -129,7 +129,7 @@ typedef struct {
     signed char scheme[NVARIANTS][PROBES][2][MAX_LIGHTS];
 } Decisions;
 
-static int decide_one(TraceContext *ctx, const World *w, const Hit *hit, const Segment *seg, int li)
+static int decide_one(ShadowContext *ctx, const World *w, const Hit *hit, const Segment *seg, int li)
 {
     const Light *l = &w->lights[li];
     Vec3 d = v3_sub(l->location, hit->point);
@@ -141,7 +141,7 @@ static int decide_one(TraceContext *ctx, const World *w, const Hit *hit, const S
     }
     ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
     RGB through;
-    ctx->shadow->test(ctx, &q, &through);
+    ctx->method->test(ctx, &q, &through);
     return through.r == 0.0 && through.g == 0.0 && through.b == 0.0;
 }
 
@@ -149,11 +149,10 @@ static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, 
                         Decisions *dec, int vi, Hit hits[PROBES][2])
 {
     const ShadowMethod *m = shadow_method_find(v->method);
-    Quality quality = { 1, 0, 0, 0, 0 };
-    TraceContext ctx;
+    ShadowContext ctx;
     PixelCoherence pc;
     memset(&pc, 0, sizeof pc);
-    if (trace_context_init(&ctx, w, g, m, quality, m->uses_volumes ? sv : NULL) ||
+    if (shadow_context_init(&ctx, w, g, m, m->uses_volumes ? sv : NULL) ||
         (v->coherence && pixel_coherence_init(&pc, w, g))) {
         fprintf(stderr, "out of memory\n");
         exit(99);
@@ -173,7 +172,7 @@ static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, 
         Hit none = { HIT_NONE, -1, 0, w->camera.location };
         Vec3 dir = v3_normalize(v3_sub(probes[k].eye_target, w->camera.location));
         Hit h1;
-        int got = trace_nearest(&ctx, w->camera.location, dir, HUGE_VAL, &none, &h1);
+        int got = trace_nearest(&ctx.tracer, w->camera.location, dir, HUGE_VAL, &none, &h1);
         if (got) {
             hits[k][0] = h1;
             if (v->coherence) {
@@ -188,7 +187,7 @@ static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, 
             }
             Hit h2;
             Vec3 d2 = probes[k].bounce_dir;
-            if (trace_nearest(&ctx, h1.point, d2, HUGE_VAL, &h1, &h2)) {
+            if (trace_nearest(&ctx.tracer, h1.point, d2, HUGE_VAL, &h1, &h2)) {
                 hits[k][1] = h2;
                 Segment seg2 = { h1.point, d2, &h1, m->uses_volumes ? row0 : NULL, m->uses_volumes ? row1 : NULL };
                 for (int li = 0; li < nl; li++)
@@ -203,7 +202,7 @@ static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, 
     }
     if (v->coherence)
         pixel_coherence_free(&pc);
-    trace_context_free(&ctx);
+    shadow_context_free(&ctx);
 }
 
 static int verbose; /* --verbose: describe the first disagreements */

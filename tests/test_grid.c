@@ -79,8 +79,8 @@ int main(void)
     tap_ok(sampled_missing == 0, "points sampled on triangles lie in cells that list them (%d missing)", sampled_missing);
 
     /* The walk finds the same nearest hit as testing every polygon. */
-    TraceContext ctx;
-    tap_ok(trace_context_init(&ctx, &w, &g, NULL, (Quality){ 1, 1, 1, 0, 0 }, NULL) == 0, "trace context");
+    Tracer tracer;
+    tap_ok(tracer_init(&tracer, &w, &g) == 0, "tracer");
     int mismatches = 0, hits = 0;
     const int nrays = 20000;
     for (int i = 0; i < nrays; i++) {
@@ -90,7 +90,7 @@ int main(void)
         if (i % 10 == 0) { o.z = 0.0; d = v3_normalize(v3(d.x, d.y, 0)); }
         if (i % 10 == 1) { d = v3(0, 0, d.z > 0 ? 1 : -1); }
         Hit h;
-        int found = trace_nearest(&ctx, o, d, HUGE_VAL, NULL, &h);
+        int found = trace_nearest(&tracer, o, d, HUGE_VAL, NULL, &h);
         double best = HUGE_VAL;
         int best_i = -1;
         double tmin = trace_min_distance(o);
@@ -104,7 +104,7 @@ int main(void)
     }
     tap_ok(mismatches == 0, "3DDDA nearest hit equals brute force on %d random rays (%d hits, %d mismatches)", nrays,
            hits, mismatches);
-    trace_context_free(&ctx);
+    tracer_free(&tracer);
 
     /* Resolution heuristic: about two cells per polygon, at least one per axis. */
     int r[3];

@@ -371,4 +371,14 @@ double scene_working_gamma(const Scene *s);
  * global_settings, else 2, or 1 for a scene whose #version is below 3.5). */
 int scene_noise_generator(const Scene *s);
 
+/* Reading a pigment description (the engine evaluates patterns, pigment.h). */
+
+/* The colour of a map at `value` (POV-Ray's Search_Blend_Map, then linear
+ * interpolation between the two entries around the value). */
+Colour colour_map_at(const ColourMapEntry *map, int n, double value);
+
+/* Whether every colour the pigment can give is opaque (no filter, no
+ * transmit): then it blocks light fully wherever it is hit. */
+int pigment_is_opaque(const Pigment *pig);
+
 #endif

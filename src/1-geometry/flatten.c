@@ -4,13 +4,11 @@
  * and are kept apart (they cannot go into a finite grid). */
 #include "world.h"
 
-#include "pigment.h"
-
-#define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
-
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
 typedef struct {
     World *w;

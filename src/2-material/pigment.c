@@ -233,46 +233,11 @@ double pattern_value(const Pigment *pig, Vec3 p)
     return wave(pig, v);
 }
 
-Colour colour_map_at(const ColourMapEntry *map, int n, double value)
-{
-    if (n <= 0) {
-        Colour black = { 0, 0, 0, 0, 0 };
-        return black;
-    }
-    if (value >= map[n - 1].value)
-        return map[n - 1].colour;
-    int c = 0;
-    while (value > map[c].value)
-        c++;
-    if (c == 0 || value == map[c].value)
-        return map[c].colour;
-    const ColourMapEntry *a = &map[c - 1], *b = &map[c];
-    double f = (value - a->value) / (b->value - a->value);
-    Colour r = {
-        a->colour.r + f * (b->colour.r - a->colour.r),
-        a->colour.g + f * (b->colour.g - a->colour.g),
-        a->colour.b + f * (b->colour.b - a->colour.b),
-        a->colour.filter + f * (b->colour.filter - a->colour.filter),
-        a->colour.transmit + f * (b->colour.transmit - a->colour.transmit),
-    };
-    return r;
-}
-
 Colour pigment_at(const Pigment *pig, Vec3 p)
 {
     if (pig->kind == PIGMENT_SOLID)
         return pig->colour;
     return colour_map_at(pig->map, pig->nmap, pattern_value(pig, p));
-}
-
-int pigment_is_opaque(const Pigment *pig)
-{
-    if (pig->kind == PIGMENT_SOLID)
-        return pig->colour.filter == 0.0 && pig->colour.transmit == 0.0;
-    for (int i = 0; i < pig->nmap; i++)
-        if (pig->map[i].colour.filter != 0.0 || pig->map[i].colour.transmit != 0.0)
-            return 0;
-    return 1;
 }
 
 /* Barycentric weights of q (in the polygon's plane) with respect to the

@@ -8,10 +8,6 @@
 #include "scene.h"
 #include "world.h"
 
-/* The colour of a map at `value` (POV-Ray's Search_Blend_Map, then linear
- * interpolation between the two entries around the value). */
-Colour colour_map_at(const ColourMapEntry *map, int n, double value);
-
 /* The pattern's value at a point in pattern space (after the pigment's
  * transforms, before its turbulence), after frequency, phase and wave:
  * checker 0 or 1, hexagon 0, 1 or 2, the others in [0, 1]. A noise
@@ -20,10 +16,6 @@ double pattern_value(const Pigment *pig, Vec3 p);
 
 /* The colour at a point in pattern space (solid pigments: their colour). */
 Colour pigment_at(const Pigment *pig, Vec3 p);
-
-/* Whether every colour the pigment can give is opaque (no filter, no
- * transmit): then it blocks light fully wherever it is hit. */
-int pigment_is_opaque(const Pigment *pig);
 
 /* The uv coordinates (u, v, 0) of a world-space point on a polygon (its
  * mesh uv vectors or box mapping), or, for a polygon without them (-1) and

@@ -5,115 +5,47 @@
 #include <string.h>
 
 #include "intersect.h"
-#include "shadow.h"
-#include "shadow_volumes.h"
 
-/* Enough for max_trace_level reflections plus continued (same-ior) rays;
- * deeper points keep no state and their methods use the shadow ray. */
-#define STATE_DEPTH 64
-
-int trace_context_init(TraceContext *ctx, const World *w, const Grid *g, const struct ShadowMethod *shadow, Quality q,
-                       const ShadowVolumes *volumes)
+void ray_counters_add(RayCounters *t, const RayCounters *p)
 {
-    memset(ctx, 0, sizeof *ctx);
-    ctx->world = w;
-    ctx->grid = g;
-    ctx->shadow = shadow;
-    ctx->quality = q;
-    ctx->last_blocker = -1;
-    ctx->stamp = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof(uint32_t));
-    int nl = w->nlights > 0 ? w->nlights : 1;
-    ctx->light_cache = malloc(sizeof(int) * (size_t)nl);
-    if (!ctx->stamp || !ctx->light_cache)
-        return -1;
-    for (int i = 0; i < nl; i++)
-        ctx->light_cache[i] = -1;
-    if (volumes) {
-        ctx->volumes = volumes;
-        int most = 1;
-        for (int i = 0; i < volumes->nlights; i++)
-            if (volumes->light[i].count > most)
-                most = volumes->light[i].count;
-        ctx->sp_stamp = calloc((size_t)(volumes->npolygons > 0 ? volumes->npolygons : 1), sizeof(uint32_t));
-        ctx->bucket = malloc(sizeof(uint32_t) * (size_t)most);
-        /* A 3DDDA walk visits at most one cell per boundary crossed. */
-        ctx->segment_cells_cap = g->n[0] + g->n[1] + g->n[2] + 3;
-        ctx->segment_cells = malloc(sizeof(uint32_t) * (size_t)ctx->segment_cells_cap);
-        ctx->states = calloc((size_t)nl * STATE_DEPTH, sizeof(LightState));
-        if (!ctx->sp_stamp || !ctx->bucket || !ctx->segment_cells || !ctx->states)
-            return -1;
-        ctx->state_capacity = STATE_DEPTH;
-    }
-    return 0;
+    t->polygon_tests += p->polygon_tests;
+    t->polygon_hits += p->polygon_hits;
+    t->plane_tests += p->plane_tests;
+    t->cells_visited += p->cells_visited;
 }
 
-void trace_context_free(TraceContext *ctx)
+int tracer_init(Tracer *t, const World *w, const Grid *g)
 {
-    free(ctx->stamp);
-    free(ctx->light_cache);
-    free(ctx->bucket);
-    free(ctx->segment_cells);
-    free(ctx->sp_stamp);
-    free(ctx->states);
-    ctx->stamp = NULL;
-    ctx->light_cache = NULL;
-    ctx->bucket = NULL;
-    ctx->segment_cells = NULL;
-    ctx->sp_stamp = NULL;
-    ctx->states = NULL;
+    memset(t, 0, sizeof *t);
+    t->world = w;
+    t->grid = g;
+    t->stamp = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof(uint32_t));
+    return t->stamp ? 0 : -1;
 }
 
-int trace_fill_shadow_bucket(TraceContext *ctx, int light, int limit)
+int tracer_record_cells(Tracer *t, Vec3 box_min, Vec3 box_max)
 {
-    return trace_fill_shadow_bucket_in(ctx, light, ctx->segment_cells, ctx->segment_ncells, limit);
+    /* A 3DDDA walk visits at most one cell per boundary crossed. */
+    t->segment_cells_cap = t->grid->n[0] + t->grid->n[1] + t->grid->n[2] + 3;
+    t->segment_cells = malloc(sizeof(uint32_t) * (size_t)t->segment_cells_cap);
+    t->record_min = box_min;
+    t->record_max = box_max;
+    return t->segment_cells ? 0 : -1;
 }
 
-uint32_t trace_shadow_registrations(const TraceContext *ctx, int light)
+void tracer_free(Tracer *t)
 {
-    return trace_shadow_registrations_in(ctx, light, ctx->segment_cells, ctx->segment_ncells);
-}
-
-int trace_fill_shadow_bucket_in(TraceContext *ctx, int light, const uint32_t *cells, int ncells, int limit)
-{
-    const LightVolumes *lv = &ctx->volumes->light[light];
-    if (!lv->cell_start)
-        return 0;
-    uint32_t id = stamp_next(ctx->sp_stamp, ctx->volumes->npolygons, &ctx->sp_id);
-    int n = 0;
-    for (int k = 0; k < ncells; k++) {
-        uint32_t c = cells[k];
-        for (uint32_t j = lv->cell_start[c]; j < lv->cell_start[c + 1]; j++) {
-            uint32_t s = lv->items[j];
-            if (ctx->sp_stamp[s] == id)
-                continue;
-            ctx->sp_stamp[s] = id;
-            ctx->bucket[n++] = s;
-        }
-        if (n > limit)
-            break; /* too many to count: the caller fires the shadow ray */
-    }
-    ctx->stats.shadow_bucket_polygons += (uint64_t)n;
-    return n;
-}
-
-uint32_t trace_shadow_registrations_in(const TraceContext *ctx, int light, const uint32_t *cells, int ncells)
-{
-    const LightVolumes *lv = &ctx->volumes->light[light];
-    if (!lv->cell_start)
-        return 0;
-    uint32_t n = 0;
-    for (int k = 0; k < ncells; k++) {
-        uint32_t c = cells[k];
-        n += lv->cell_start[c + 1] - lv->cell_start[c];
-    }
-    return n;
+    free(t->stamp);
+    free(t->segment_cells);
+    t->stamp = NULL;
+    t->segment_cells = NULL;
 }
 
 /* The uncached part of trace_point_touches_other. */
-static int touches_other(TraceContext *ctx, const Hit *hit, double tol)
+static int touches_other(Tracer *t, const Hit *hit, double tol)
 {
-    const World *w = ctx->world;
-    const Grid *g = ctx->grid;
+    const World *w = t->world;
+    const Grid *g = t->grid;
     if (hit->kind == HIT_POLYGON && polygon_classify_point(w, &w->polygons[hit->index], hit->point, tol) < 0)
         return 1; /* on its own polygon's border: on the neighbours' too */
     /* Every cell within tol of the point (usually one). */
@@ -122,9 +54,9 @@ static int touches_other(TraceContext *ctx, const Hit *hit, double tol)
         lo[a] = grid_cell_coord(g, v3_comp(hit->point, a) - tol, a);
         hi[a] = grid_cell_coord(g, v3_comp(hit->point, a) + tol, a);
     }
-    uint32_t id = trace_new_segment(ctx);
+    uint32_t id = trace_new_segment(t);
     if (hit->kind == HIT_POLYGON)
-        ctx->stamp[hit->index] = id;
+        t->stamp[hit->index] = id;
     for (int z = lo[2]; z <= hi[2]; z++)
         for (int y = lo[1]; y <= hi[1]; y++)
             for (int x = lo[0]; x <= hi[0]; x++) {
@@ -132,7 +64,7 @@ static int touches_other(TraceContext *ctx, const Hit *hit, double tol)
                 int ci = grid_cell_index(g, c);
                 for (uint32_t k = g->cell_start[ci]; k < g->cell_start[ci + 1]; k++) {
                     uint32_t pi = g->items[k];
-                    if (!bucket_admit(ctx, id, pi))
+                    if (!bucket_admit(t, id, pi))
                         continue;
                     const Polygon *p = &w->polygons[pi];
                     if (fabs(v3_dot(p->normal, hit->point) - p->d) <= tol && polygon_classify_point(w, p, hit->point, tol) != 0)
@@ -142,23 +74,22 @@ static int touches_other(TraceContext *ctx, const Hit *hit, double tol)
     return 0;
 }
 
-int trace_point_touches_other(TraceContext *ctx, const Hit *hit, double tol)
+int trace_point_touches_other(Tracer *t, const Hit *hit, double tol)
 {
-    if (ctx->touch_valid && ctx->touch_kind == (int)hit->kind && ctx->touch_index == hit->index &&
-        ctx->touch_point.x == hit->point.x && ctx->touch_point.y == hit->point.y && ctx->touch_point.z == hit->point.z)
-        return ctx->touch_result;
-    ctx->touch_valid = 1;
-    ctx->touch_kind = (int)hit->kind;
-    ctx->touch_index = hit->index;
-    ctx->touch_point = hit->point;
-    ctx->touch_result = touches_other(ctx, hit, tol);
-    return ctx->touch_result;
+    if (t->touch_valid && t->touch_kind == (int)hit->kind && t->touch_index == hit->index &&
+        t->touch_point.x == hit->point.x && t->touch_point.y == hit->point.y && t->touch_point.z == hit->point.z)
+        return t->touch_result;
+    t->touch_valid = 1;
+    t->touch_kind = (int)hit->kind;
+    t->touch_index = hit->index;
+    t->touch_point = hit->point;
+    t->touch_result = touches_other(t, hit, tol);
+    return t->touch_result;
 }
 
-static int inside_box(const ShadowVolumes *sv, Vec3 p)
+static int inside_box(Vec3 lo, Vec3 hi, Vec3 p)
 {
-    return p.x >= sv->box_min.x && p.x <= sv->box_max.x && p.y >= sv->box_min.y && p.y <= sv->box_max.y &&
-           p.z >= sv->box_min.z && p.z <= sv->box_max.z;
+    return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
 }
 
 static int material_hidden(const Material *m, unsigned hide)
@@ -166,10 +97,10 @@ static int material_hidden(const Material *m, unsigned hide)
     return ((hide & HIDE_NO_IMAGE) && m->no_image) || ((hide & HIDE_NO_REFLECTION) && m->no_reflection);
 }
 
-int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit)
+int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit)
 {
-    const World *w = ctx->world;
-    const Grid *g = ctx->grid;
+    const World *w = tr->world;
+    const Grid *g = tr->grid;
     double tmin = trace_min_distance(org);
     hit->kind = HIT_NONE;
 
@@ -181,9 +112,9 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
     for (int i = 0; i < w->nplanes; i++) {
         if (from && from->kind == HIT_PLANE && from->index == i)
             continue;
-        if (ctx->hide && material_hidden(&w->materials[w->planes[i].material], ctx->hide))
+        if (tr->hide && material_hidden(&w->materials[w->planes[i].material], tr->hide))
             continue;
-        ctx->stats.plane_tests++;
+        tr->stats.plane_tests++;
         double t = intersect_plane(&w->planes[i], org, dir);
         if (t > tmin && t < plane_t) {
             plane_t = t;
@@ -193,31 +124,31 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
 
     double best = HUGE_VAL;
     GridWalk walk;
-    int gather = ctx->volumes != NULL, overflow = 0;
+    int gather = tr->segment_cells != NULL, overflow = 0;
     if (gather)
-        ctx->segment_ncells = 0;
+        tr->segment_ncells = 0;
     if ((w->npolygons > 0 || gather) && grid_walk_begin(g, org, dir, 0.0, plane_t, &walk)) {
-        uint32_t id = trace_new_segment(ctx);
+        uint32_t id = trace_new_segment(tr);
         RayFrame frame = ray_frame(org, dir);
         int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
         if (exclude >= 0)
-            ctx->stamp[exclude] = id;
+            tr->stamp[exclude] = id;
         do {
-            ctx->stats.cells_visited++;
+            tr->stats.cells_visited++;
             int c = grid_cell_index(g, walk.cell);
             if (gather) {
-                if (ctx->segment_ncells < ctx->segment_cells_cap)
-                    ctx->segment_cells[ctx->segment_ncells++] = (uint32_t)c;
+                if (tr->segment_ncells < tr->segment_cells_cap)
+                    tr->segment_cells[tr->segment_ncells++] = (uint32_t)c;
                 else
                     overflow = 1; /* cannot happen with 3DDDA; distrust the bucket if it did */
             }
             for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
                 uint32_t pi = g->items[k];
-                if (!bucket_admit(ctx, id, pi))
+                if (!bucket_admit(tr, id, pi))
                     continue;
-                if (ctx->hide && material_hidden(&w->materials[w->polygons[pi].material], ctx->hide))
+                if (tr->hide && material_hidden(&w->materials[w->polygons[pi].material], tr->hide))
                     continue;
-                ctx->stats.polygon_tests++;
+                tr->stats.polygon_tests++;
                 /* Only hits before the best so far are looked at. */
                 double t = intersect_polygon_in(w, &w->polygons[pi], &frame, best < plane_t ? best : plane_t);
                 if (t > tmin) {
@@ -240,12 +171,13 @@ int trace_nearest(TraceContext *ctx, Vec3 org, Vec3 dir, double tmax, const Hit 
         hit->index = plane;
         best = plane_t;
     } else {
-        ctx->stats.polygon_hits++;
+        tr->stats.polygon_hits++;
     }
     hit->t = best;
     hit->point = v3_madd(org, dir, best);
     /* The walk covered the whole segment only when its end is in the box. */
     if (gather)
-        ctx->segment_in_box = !overflow && inside_box(ctx->volumes, hit->point) && inside_box(ctx->volumes, org);
+        tr->segment_in_box = !overflow && inside_box(tr->record_min, tr->record_max, hit->point) &&
+                            inside_box(tr->record_min, tr->record_max, org);
     return 1;
 }

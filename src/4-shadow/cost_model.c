@@ -5,9 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "camera.h"
+#include "clock.h"
 #include "intersect.h"
-#include "render.h"
-#include "stats.h"
 #include "tracer.h"
 
 #define SAMPLE_GRID 24      /* camera rays per axis whose hits are the sample points */
@@ -150,9 +150,9 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Shad
     /* The sample points are where camera rays through a coarse grid of
      * pixels land: shadow rays start where the render's will. */
     Rng rng = { 0x9E3779B97F4A7C15ull };
-    TraceContext tc;
-    if (trace_context_init(&tc, w, g, NULL, (Quality){ 0, 0, 0, 0, 0 }, NULL)) {
-        trace_context_free(&tc);
+    Tracer tc;
+    if (tracer_init(&tc, w, g)) {
+        tracer_free(&tc);
         free(rays);
         free(tests);
         free(stamp);
@@ -180,7 +180,7 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Shad
             s->dir = s->tmax > 0.0 ? v3_scale(d, 1.0 / s->tmax) : v3(0, 1, 0);
         }
     }
-    trace_context_free(&tc);
+    tracer_free(&tc);
     /* A view of planes only: sample points on random polygons instead. */
     for (int i = 0; nrays < SAMPLES / 4 && i < SAMPLES; i++) {
         int pi = (int)(rng_next(&rng) % (uint64_t)w->npolygons);

@@ -1,17 +1,93 @@
-/* The registry of shadow methods. */
+/* The registry of shadow methods, and a thread's shadow-testing context. */
 #include "shadow.h"
 
+#include <stdlib.h>
 #include <string.h>
 
+#include "shadow_volumes.h"
+
+/* Enough for max_trace_level reflections plus continued (same-ior) rays;
+ * deeper points keep no state and their methods use the shadow ray. */
+#define STATE_DEPTH 64
+
+int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const ShadowMethod *method,
+                        const ShadowVolumes *volumes)
+{
+    memset(ctx, 0, sizeof *ctx);
+    if (tracer_init(&ctx->tracer, w, g))
+        return -1;
+    ctx->method = method;
+    ctx->last_blocker = -1;
+    int nl = w->nlights > 0 ? w->nlights : 1;
+    ctx->light_cache = malloc(sizeof(int) * (size_t)nl);
+    if (!ctx->light_cache)
+        return -1;
+    for (int i = 0; i < nl; i++)
+        ctx->light_cache[i] = -1;
+    if (volumes) {
+        ctx->volumes = volumes;
+        int most = 1;
+        for (int i = 0; i < volumes->nlights; i++)
+            if (volumes->light[i].count > most)
+                most = volumes->light[i].count;
+        ctx->sp_stamp = calloc((size_t)(volumes->npolygons > 0 ? volumes->npolygons : 1), sizeof(uint32_t));
+        ctx->bucket = malloc(sizeof(uint32_t) * (size_t)most);
+        ctx->states = calloc((size_t)nl * STATE_DEPTH, sizeof(LightState));
+        if (tracer_record_cells(&ctx->tracer, volumes->box_min, volumes->box_max) || !ctx->sp_stamp ||
+            !ctx->bucket || !ctx->states)
+            return -1;
+        ctx->state_capacity = STATE_DEPTH;
+    }
+    return 0;
+}
+
+void shadow_context_free(ShadowContext *ctx)
+{
+    tracer_free(&ctx->tracer);
+    free(ctx->light_cache);
+    free(ctx->bucket);
+    free(ctx->sp_stamp);
+    free(ctx->states);
+    ctx->light_cache = NULL;
+    ctx->bucket = NULL;
+    ctx->sp_stamp = NULL;
+    ctx->states = NULL;
+}
+
+void shadow_counters_add(ShadowCounters *t, const ShadowCounters *p)
+{
+    t->shadow_queries += p->shadow_queries;
+    t->shadow_rays += p->shadow_rays;
+    t->shadow_blocked += p->shadow_blocked;
+    t->shadow_polygon_tests += p->shadow_polygon_tests;
+    for (int i = 0; i < SCHEME_COUNT; i++) {
+        t->shadow_schemes[i] += p->shadow_schemes[i];
+        t->shadow_disagreements_by_scheme[i] += p->shadow_disagreements_by_scheme[i];
+    }
+    t->shadow_volume_tests += p->shadow_volume_tests;
+    t->shadow_bucket_polygons += p->shadow_bucket_polygons;
+    t->shadow_unsure += p->shadow_unsure;
+    t->shadow_coherent += p->shadow_coherent;
+    t->shadow_touching += p->shadow_touching;
+    t->shadow_in_plane += p->shadow_in_plane;
+    t->shadow_coherence_unsure += p->shadow_coherence_unsure;
+    t->shadow_no_count += p->shadow_no_count;
+    t->shadow_deferred += p->shadow_deferred;
+    t->shadow_verified += p->shadow_verified;
+    t->shadow_disagreements += p->shadow_disagreements;
+    t->reference_ties += p->reference_ties;
+    t->reference_wrong += p->reference_wrong;
+    t->reference_ray_wrong += p->reference_ray_wrong;
+    t->shadow_seconds += p->shadow_seconds;
+}
+
 /* --shadows=none: every light reaches every point (POV-Ray's +Q3 look). */
-static void shadow_none_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+static void shadow_none_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     (void)q;
     ctx->last_scheme = SCHEME_CONVENTIONAL;
     light->r = light->g = light->b = 1.0;
 }
-
-_Static_assert(SCHEME_COUNT == STATS_SCHEMES, "stats.h counts every scheme");
 
 const char *const shadow_scheme_names[SCHEME_COUNT] = { "sustain", "self-shadow", "volume", "conventional",
                                                         "cache hit" };
@@ -41,7 +117,7 @@ const char *shadow_method_names(void)
     return "hst, conventional, cache, volume, none";
 }
 
-ShadowRecord shadow_record(const TraceContext *ctx, const ShadowQuery *q, const RGB *answer)
+ShadowRecord shadow_record(const ShadowContext *ctx, const ShadowQuery *q, const RGB *answer)
 {
     ShadowRecord r = { ctx->last_scheme, -1 };
     if (r.scheme == SCHEME_NONE)
@@ -50,7 +126,7 @@ ShadowRecord shadow_record(const TraceContext *ctx, const ShadowQuery *q, const 
         const LightState *s = &q->segment->state[q->light];
         if (s->depth_known)
             r.depth = s->depth_opaque;
-    } else if (answer && !ctx->shadow->uses_volumes && (answer->r > 0.0 || answer->g > 0.0 || answer->b > 0.0)) {
+    } else if (answer && !ctx->method->uses_volumes && (answer->r > 0.0 || answer->g > 0.0 || answer->b > 0.0)) {
         r.depth = 0;
     }
     return r;

@@ -57,16 +57,83 @@ typedef enum {
 
 extern const char *const shadow_scheme_names[SCHEME_COUNT];
 
+/* What the shadow methods did, for the statistics (summed over threads). */
+typedef struct {
+    uint64_t shadow_queries;      /* shading point x light pairs that needed a decision */
+    uint64_t shadow_rays;         /* conventional shadow rays walked */
+    uint64_t shadow_blocked;      /* ... of which found an opaque blocker */
+    uint64_t shadow_polygon_tests;
+    /* Decisions by sub-scheme, in the order of ShadowScheme. */
+    uint64_t shadow_schemes[SCHEME_COUNT];
+    uint64_t shadow_volume_tests;  /* segment/shadow polygon tests */
+    uint64_t shadow_bucket_polygons; /* shadow polygons gathered into segments' buckets */
+    uint64_t shadow_unsure;       /* counts abandoned for a crossing too close to call */
+    uint64_t shadow_coherent;     /* volume counts carried from the neighbouring pixel's hit */
+    uint64_t shadow_coherence_unsure; /* ... abandoned (too close to call) for the count from the eye */
+    uint64_t shadow_touching;     /* points on a second polygon: left to the shadow ray */
+    uint64_t shadow_in_plane;     /* segments in the plane of their start polygon: left to the shadow ray */
+    uint64_t shadow_no_count;     /* volume: no count possible (depth unknown, outside the box) */
+    uint64_t shadow_deferred;     /* states left unknown where nobody needed the answer */
+    uint64_t shadow_verified;     /* decisions checked against the shadow ray */
+    uint64_t shadow_disagreements;
+    uint64_t shadow_disagreements_by_scheme[SCHEME_COUNT];
+    /* --verify-reference: the same decisions against the long-double
+     * reference; ties are where it cannot tell (then only the shadow ray's
+     * answer counts, as above). */
+    uint64_t reference_ties;
+    uint64_t reference_wrong;     /* the method, on clear cases */
+    uint64_t reference_ray_wrong; /* the shadow ray itself, on clear cases */
+    double shadow_seconds;        /* time spent deciding shadows, summed over threads */
+} ShadowCounters;
+
+void shadow_counters_add(ShadowCounters *total, const ShadowCounters *part);
+
+/* A render thread's shadow testing: its tracer (the ray queries and their
+ * mailbox), the method, and the methods' per-thread state. */
+typedef struct ShadowContext {
+    Tracer tracer;
+    const struct ShadowMethod *method;
+    ShadowCounters stats;
+    int last_scheme;           /* how the last decision was made (ShadowScheme) */
+    int last_blocker;          /* polygon that blocked the last shadow ray, or -1 */
+    int last_filtered;         /* transparent polygons the last shadow ray passed */
+    unsigned shadow_timer;     /* decisions so far, for timing every 8th */
+    int *light_cache;          /* cache method: last opaque blocker per light, or -1 */
+    int verify;                /* 1: check every decision against the shadow ray (--verify-shadows);
+                                  2: and against the long-double reference (--verify-reference) */
+    long double reference_eps; /* the reference's margin of ties */
+    double nth;                /* hst: N_th; negative: per point from its own N_c */
+    const struct CostModel *cost;  /* for the per-point N_th */
+    /* Shadow buckets (volume, hst): the tracer records the cells each
+     * segment pierced; a method that needs a light's bucket (the shadow
+     * polygons registered in those cells, each once: stamps) fills it from
+     * them (shadow_bucket.h). */
+    const struct ShadowVolumes *volumes;
+    uint32_t *sp_stamp;
+    uint32_t sp_id;
+    uint32_t *bucket;          /* room for any light's shadow polygons */
+    struct PixelCoherence *coherence; /* hst's pixel coherence, or NULL when off */
+    /* Light states along the ray tree: one row of nlights per recursion depth. */
+    LightState *states;
+    int state_depth, state_capacity;
+} ShadowContext;
+
+/* volumes: the shadow volumes when the method uses them, else NULL.
+ * Returns 0, or -1 when out of memory (free it all the same). */
+int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const struct ShadowMethod *method,
+                        const struct ShadowVolumes *volumes);
+void shadow_context_free(ShadowContext *ctx);
+
 typedef struct ShadowMethod {
     const char *name;
     const char *summary;
     int uses_volumes;    /* needs shadow volumes and the shadow buckets of segments */
     /* Decides q's light; sets ctx->last_scheme. */
-    void (*test)(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
+    void (*test)(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
     /* The shading needs no answer for q's light (it faces away from the
      * point, or adds nothing there); keeps the state at P2 consistent.
      * faces_away: the shading normal faces away from the light. May be NULL. */
-    void (*skip)(TraceContext *ctx, const ShadowQuery *q, int faces_away);
+    void (*skip)(ShadowContext *ctx, const ShadowQuery *q, int faces_away);
 } ShadowMethod;
 
 /* The record of one decision, the same for every method, for the analysis
@@ -81,7 +148,7 @@ typedef struct {
  * the others know it is 0 where some light got through (the shadow ray met
  * no opaque polygon on its way), and nothing where it was blocked (the ray
  * stops at the first blocker). answer: the test's answer, NULL after a skip. */
-ShadowRecord shadow_record(const TraceContext *ctx, const ShadowQuery *q, const RGB *answer);
+ShadowRecord shadow_record(const ShadowContext *ctx, const ShadowQuery *q, const RGB *answer);
 
 /* NULL when no method has that name. */
 const ShadowMethod *shadow_method_find(const char *name);
@@ -90,18 +157,16 @@ const char *shadow_method_names(void);
 
 /* The exact test: a shadow ray walked through the grid to the light,
  * infinite planes first, then polygons. */
-void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
+void shadow_conventional_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
 /* Its two halves, so that methods sharing the plane part stay exact:
  * both multiply into *light and return 1 when it is fully blocked. */
-int shadow_planes_test(TraceContext *ctx, const ShadowQuery *q, RGB *light);
-int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light);
+int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 
-void shadow_cache_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
-void shadow_volume_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
-void shadow_volume_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away);
-void shadow_hst_test(TraceContext *ctx, const ShadowQuery *q, RGB *light_through);
-void shadow_hst_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away);
-/* The most shadow polygons a bucket may hold for a count under N_th. */
-int bucket_limit(double nth);
+void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
+void shadow_volume_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
+void shadow_volume_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away);
+void shadow_hst_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
+void shadow_hst_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away);
 
 #endif

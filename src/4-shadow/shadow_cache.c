@@ -8,12 +8,12 @@
 
 #include "intersect.h"
 
-static int cached_blocker_hits(TraceContext *ctx, const ShadowQuery *q)
+static int cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
 {
     int pi = ctx->light_cache[q->light];
     if (pi < 0 || (q->surface->kind == HIT_POLYGON && q->surface->index == pi))
         return 0;
-    const World *w = ctx->world;
+    const World *w = ctx->tracer.world;
     ctx->stats.shadow_polygon_tests++;
     const Polygon *p = &w->polygons[pi];
     double t = intersect_polygon(w, p, q->point, q->to_light);
@@ -22,10 +22,10 @@ static int cached_blocker_hits(TraceContext *ctx, const ShadowQuery *q)
     /* Only a hit clearly inside the polygon is taken: on its border the
      * shadow ray's own walk decides (it may find the neighbour instead, or
      * nothing, by the same tie rules as every other test). */
-    return polygon_classify_point(w, p, v3_madd(q->point, q->to_light, t), grid_tolerance(ctx->grid)) == 1;
+    return polygon_classify_point(w, p, v3_madd(q->point, q->to_light, t), grid_tolerance(ctx->tracer.grid)) == 1;
 }
 
-void shadow_cache_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     light->r = light->g = light->b = 1.0;
     ctx->last_scheme = SCHEME_CONVENTIONAL;

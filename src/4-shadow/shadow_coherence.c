@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "intersect.h"
+#include "shadow_bucket.h"
 #include "shadow_volumes.h"
 
 int pixel_coherence_init(PixelCoherence *pc, const World *w, const Grid *g)
@@ -162,9 +163,9 @@ static int inside_box(const ShadowVolumes *sv, Vec3 p)
 
 /* Walks N -> P2 through the grid: records the cells (for the shadow
  * buckets) and how every polygon in them meets the segment. */
-static int walk(TraceContext *ctx, PixelCoherence *pc, const Hit *from, const Hit *to)
+static int walk(ShadowContext *ctx, PixelCoherence *pc, const Hit *from, const Hit *to)
 {
-    const World *w = ctx->world;
+    const World *w = ctx->tracer.world;
     const ShadowVolumes *sv = ctx->volumes;
     Vec3 a = from->point, b = to->point;
     pc->ncells = 0;
@@ -188,23 +189,23 @@ static int walk(TraceContext *ctx, PixelCoherence *pc, const Hit *from, const Hi
         return 1;
     Vec3 dir = v3_scale(d, 1.0 / len);
     GridWalk gw;
-    if (!grid_walk_begin(ctx->grid, a, dir, 0.0, len, &gw))
+    if (!grid_walk_begin(ctx->tracer.grid, a, dir, 0.0, len, &gw))
         return 1; /* cannot happen inside the box; nothing to count then */
-    uint32_t id = trace_new_segment(ctx);
+    uint32_t id = trace_new_segment(&ctx->tracer);
     if (own_a >= 0)
-        ctx->stamp[own_a] = id;
+        ctx->tracer.stamp[own_a] = id;
     if (own_b >= 0)
-        ctx->stamp[own_b] = id;
-    const Grid *g = ctx->grid;
+        ctx->tracer.stamp[own_b] = id;
+    const Grid *g = ctx->tracer.grid;
     do {
-        ctx->stats.cells_visited++;
+        ctx->tracer.stats.cells_visited++;
         int c = grid_cell_index(g, gw.cell);
         if (pc->ncells == pc->cells_cap)
             return 0;
         pc->cells[pc->ncells++] = (uint32_t)c;
         for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
             uint32_t pi = g->items[k];
-            if (!bucket_admit(ctx, id, pi))
+            if (!bucket_admit(&ctx->tracer, id, pi))
                 continue;
             const Polygon *p = &w->polygons[pi];
             double sa = v3_dot(p->normal, a) - p->d, sb = v3_dot(p->normal, b) - p->d;
@@ -217,7 +218,7 @@ static int walk(TraceContext *ctx, PixelCoherence *pc, const Hit *from, const Hi
     return 1;
 }
 
-int pixel_coherence_count(TraceContext *ctx, const ShadowQuery *q, double nth, uint32_t eye_registrations,
+int pixel_coherence_count(ShadowContext *ctx, const ShadowQuery *q, double nth, uint32_t eye_registrations,
                           LightState *out)
 {
     PixelCoherence *pc = ctx->coherence;
@@ -229,7 +230,7 @@ int pixel_coherence_count(TraceContext *ctx, const ShadowQuery *q, double nth, u
     if (pc->walked < 0)
         return -1;
     const LightVolumes *lv = &ctx->volumes->light[q->light];
-    uint32_t registrations = trace_shadow_registrations_in(ctx, q->light, pc->cells, pc->ncells);
+    uint32_t registrations = shadow_bucket_registrations_in(ctx, q->light, pc->cells, pc->ncells);
     if (registrations + (uint32_t)pc->nmeets >= eye_registrations)
         return 0; /* counting from the eye is no dearer */
 
@@ -257,7 +258,7 @@ int pixel_coherence_count(TraceContext *ctx, const ShadowQuery *q, double nth, u
         else
             transparent += change;
     }
-    int n = trace_fill_shadow_bucket_in(ctx, q->light, pc->cells, pc->ncells, bucket_limit(nth - pc->nmeets));
+    int n = shadow_bucket_fill_in(ctx, q->light, pc->cells, pc->ncells, shadow_bucket_limit(nth - pc->nmeets));
     if (n + pc->nmeets > nth)
         return 0;
     ctx->stats.shadow_volume_tests += (uint64_t)n;

@@ -73,7 +73,7 @@ void pixel_coherence_end(PixelCoherence *pc, const Hit *hit, const LightState *s
  * starting from the neighbour's depth, into *out. Returns 1 when counted,
  * 0 when not applicable (no neighbour, its depth unknown, the count would
  * cost more than from the eye or exceed nth), -1 when undecidable. */
-int pixel_coherence_count(TraceContext *ctx, const ShadowQuery *q, double nth, uint32_t eye_registrations,
+int pixel_coherence_count(ShadowContext *ctx, const ShadowQuery *q, double nth, uint32_t eye_registrations,
                           LightState *out);
 
 #endif

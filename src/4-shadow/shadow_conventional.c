@@ -25,9 +25,9 @@ static int pass_through(const World *w, const Material *m, int polygon, const Sh
     return 0;
 }
 
-int shadow_planes_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    const World *w = ctx->world;
+    const World *w = ctx->tracer.world;
     double tmin = trace_min_distance(q->point);
     for (int i = 0; i < w->nplanes; i++) {
         if (q->surface->kind == HIT_PLANE && q->surface->index == i)
@@ -42,25 +42,25 @@ int shadow_planes_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
     return 0;
 }
 
-int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    const World *w = ctx->world;
-    const Grid *g = ctx->grid;
+    const World *w = ctx->tracer.world;
+    const Grid *g = ctx->tracer.grid;
     ctx->stats.shadow_rays++;
     double tmin = trace_min_distance(q->point);
     double tmax = q->distance;
     GridWalk walk;
     if (w->npolygons == 0 || !grid_walk_begin(g, q->point, q->to_light, 0.0, tmax, &walk))
         return 0;
-    uint32_t id = trace_new_segment(ctx);
+    uint32_t id = trace_new_segment(&ctx->tracer);
     RayFrame frame = ray_frame(q->point, q->to_light);
     if (q->surface->kind == HIT_POLYGON)
-        ctx->stamp[q->surface->index] = id;
+        ctx->tracer.stamp[q->surface->index] = id;
     do {
         int c = grid_cell_index(g, walk.cell);
         for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
             uint32_t pi = g->items[k];
-            if (!bucket_admit(ctx, id, pi))
+            if (!bucket_admit(&ctx->tracer, id, pi))
                 continue;
             const Polygon *p = &w->polygons[pi];
             const Material *m = &w->materials[p->material];
@@ -87,7 +87,7 @@ int shadow_polygons_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
     return 0;
 }
 
-void shadow_conventional_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+void shadow_conventional_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     light->r = light->g = light->b = 1.0;
     ctx->last_scheme = SCHEME_CONVENTIONAL;

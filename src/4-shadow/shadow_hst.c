@@ -18,6 +18,7 @@
 #include <limits.h>
 
 #include "cost_model.h"
+#include "shadow_bucket.h"
 #include "shadow_coherence.h"
 #include "shadow_volumes.h"
 
@@ -51,15 +52,15 @@ typedef struct {
     int countable;               /* a count can be carried from P1 to P2 */
 } SegmentView;
 
-static void view_segment(TraceContext *ctx, const ShadowQuery *q, SegmentView *v)
+static void view_segment(ShadowContext *ctx, const ShadowQuery *q, SegmentView *v)
 {
-    const World *w = ctx->world;
+    const World *w = ctx->tracer.world;
     const LightVolumes *lv = &ctx->volumes->light[q->light];
     const Segment *seg = q->segment;
     v->from = seg->from_state ? seg->from_state[q->light] : eye_state(lv);
-    v->registrations = trace_shadow_registrations(ctx, q->light);
+    v->registrations = shadow_bucket_registrations(ctx, q->light);
     v->cap_opaque = v->cap_transparent = 0;
-    v->countable = ctx->segment_in_box;
+    v->countable = ctx->tracer.segment_in_box;
     if (seg->from->kind == HIT_POLYGON) {
         const Polygon *a = &w->polygons[seg->from->index];
         /* A segment running in the plane of the polygon it starts on stays
@@ -87,7 +88,7 @@ static void view_segment(TraceContext *ctx, const ShadowQuery *q, SegmentView *v
 
 /* depth(P2) = depth(P1) + signed crossings of the n shadow polygons in
  * ctx->bucket. Returns 0 when undecidable. */
-static int count_crossings(TraceContext *ctx, const ShadowQuery *q, const SegmentView *v, int n, LightState *out)
+static int count_crossings(ShadowContext *ctx, const ShadowQuery *q, const SegmentView *v, int n, LightState *out)
 {
     int opaque = v->cap_opaque, transparent = v->cap_transparent;
     if (v->from.depth_known) {
@@ -109,7 +110,7 @@ static int count_crossings(TraceContext *ctx, const ShadowQuery *q, const Segmen
 
 /* The answer for a known polygon condition: planes are tested as the
  * shadow ray tests them, and filtered light is filtered by the ray. */
-static void answer(TraceContext *ctx, const ShadowQuery *q, int condition, RGB *light)
+static void answer(ShadowContext *ctx, const ShadowQuery *q, int condition, RGB *light)
 {
     light->r = light->g = light->b = 1.0;
     if (shadow_planes_test(ctx, q, light)) {
@@ -126,7 +127,7 @@ static void answer(TraceContext *ctx, const ShadowQuery *q, int condition, RGB *
 }
 
 /* The shadow ray, and what it tells about the polygons. */
-static void conventional(TraceContext *ctx, const ShadowQuery *q, LightState *out, RGB *light)
+static void conventional(ShadowContext *ctx, const ShadowQuery *q, LightState *out, RGB *light)
 {
     ctx->last_scheme = SCHEME_CONVENTIONAL;
     light->r = light->g = light->b = 1.0;
@@ -155,7 +156,7 @@ static void conventional(TraceContext *ctx, const ShadowQuery *q, LightState *ou
  * segments reach before they cross a shadow polygon, but only if the
  * polygon itself faces away (a smooth normal can disagree with it) and is
  * opaque; `self` records that the blocker is the point's own polygon. */
-static void self_shadow(TraceContext *ctx, const ShadowQuery *q, LightState *out)
+static void self_shadow(ShadowContext *ctx, const ShadowQuery *q, LightState *out)
 {
     ctx->last_scheme = SCHEME_SELF_SHADOW;
     ctx->stats.shadow_schemes[SCHEME_SELF_SHADOW]++;
@@ -167,14 +168,14 @@ static void self_shadow(TraceContext *ctx, const ShadowQuery *q, LightState *out
     const LightVolumes *lv = &ctx->volumes->light[q->light];
     const OccluderSide *o = &lv->occluder[q->surface->index];
     /* The ray arrived on the side away from the light. */
-    if (o->channel == 1 && toward_light(&ctx->world->polygons[q->surface->index], o, q->segment->dir) > 0.0) {
+    if (o->channel == 1 && toward_light(&ctx->tracer.world->polygons[q->surface->index], o, q->segment->dir) > 0.0) {
         out->condition = COND_BLOCKED;
         out->self = 1;
     }
 }
 
 /* A depth count decided: the shadow volume sub-scheme. */
-static void decided_by_count(TraceContext *ctx, const ShadowQuery *q, const LightState *out, RGB *light)
+static void decided_by_count(ShadowContext *ctx, const ShadowQuery *q, const LightState *out, RGB *light)
 {
     ctx->last_scheme = SCHEME_VOLUME;
     ctx->stats.shadow_schemes[SCHEME_VOLUME]++;
@@ -184,12 +185,7 @@ static void decided_by_count(TraceContext *ctx, const ShadowQuery *q, const Ligh
 
 typedef enum { MODE_VOLUME, MODE_HYBRID } Mode;
 
-int bucket_limit(double nth)
-{
-    return nth >= (double)INT_MAX ? INT_MAX : nth < 0.0 ? -1 : (int)nth;
-}
-
-static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces_away, RGB *light)
+static void decide(ShadowContext *ctx, const ShadowQuery *q, Mode mode, int faces_away, RGB *light)
 {
     LightState scratch;
     LightState *out = q->segment->state ? &q->segment->state[q->light] : &scratch;
@@ -208,7 +204,7 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
     view_segment(ctx, q, &v);
     /* A point lying on a polygon besides its own has no count the shadow
      * ray would agree with: decide it by the ray, and keep no count there. */
-    int touching = trace_point_touches_other(ctx, q->surface, ctx->volumes->tolerance);
+    int touching = trace_point_touches_other(&ctx->tracer, q->surface, ctx->volumes->tolerance);
     if (touching) {
         v.countable = 0;
         ctx->stats.shadow_touching++;
@@ -242,8 +238,8 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
     if (mode == MODE_HYBRID) {
         nth = ctx->nth;
         if (nth < 0.0)
-            nth = cost_model_threshold(ctx->cost, cost_model_cells_to_light(ctx->grid, q->point,
-                                                                           &ctx->world->lights[q->light]));
+            nth = cost_model_threshold(ctx->cost, cost_model_cells_to_light(ctx->tracer.grid, q->point,
+                                                                           &ctx->tracer.world->lights[q->light]));
         /* Pixel coherence: count from the previous pixel's hit when that
          * is cheaper than counting from the eye. */
         if (ctx->coherence && q->segment->from->kind == HIT_NONE && !touching) {
@@ -261,7 +257,7 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
      * is filled only when a count may follow. */
     int counted = 0; /* 1 counted, -1 undecidable, 0 not tried */
     if (v.countable && from_usable) {
-        int n = trace_fill_shadow_bucket(ctx, q->light, bucket_limit(nth - v.cap_opaque - v.cap_transparent));
+        int n = shadow_bucket_fill(ctx, q->light, shadow_bucket_limit(nth - v.cap_opaque - v.cap_transparent));
         if (n + v.cap_opaque + v.cap_transparent <= nth)
             counted = count_crossings(ctx, q, &v, n, out) ? 1 : -1;
     }
@@ -290,23 +286,23 @@ static void decide(TraceContext *ctx, const ShadowQuery *q, Mode mode, int faces
     ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
 }
 
-void shadow_volume_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+void shadow_volume_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     decide(ctx, q, MODE_VOLUME, 0, light);
 }
 
-void shadow_volume_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away)
+void shadow_volume_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away)
 {
     (void)faces_away; /* the pure method counts everywhere to keep its depth */
     decide(ctx, q, MODE_VOLUME, 0, NULL);
 }
 
-void shadow_hst_test(TraceContext *ctx, const ShadowQuery *q, RGB *light)
+void shadow_hst_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     decide(ctx, q, MODE_HYBRID, 0, light);
 }
 
-void shadow_hst_skip(TraceContext *ctx, const ShadowQuery *q, int faces_away)
+void shadow_hst_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away)
 {
     decide(ctx, q, MODE_HYBRID, faces_away, NULL);
 }

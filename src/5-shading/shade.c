@@ -5,13 +5,13 @@
 
 #include <string.h>
 
-#include "aov.h"
+#include "aov_pixel.h"
 #include "fog.h"
 #include "intersect.h"
 #include "pigment.h"
 #include "shadow.h"
 #include "shadow_coherence.h"
-#include "shadow_reference.h"
+#include "shadow_decide.h"
 
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
@@ -114,61 +114,15 @@ static double light_direction(const Light *l, Vec3 p, Vec3 *to_light)
     return distance;
 }
 
-/* Shadow-testing time is estimated from every 8th decision, timed and
- * scaled: reading the clock around each one would cost as much as a cheap
- * decision (sustain) itself, and would inflate every method's figure. */
-#define SHADOW_TIMING_STRIDE 8
-
-static inline double shadow_timer_start(TraceContext *ctx)
-{
-    return ctx->shadow_timer++ % SHADOW_TIMING_STRIDE == 0 ? clock_wall() : -1.0;
-}
-
-static inline void shadow_timer_stop(TraceContext *ctx, double t0)
-{
-    if (t0 >= 0.0)
-        ctx->stats.shadow_seconds += SHADOW_TIMING_STRIDE * (clock_wall() - t0);
-}
-
-/* --verify-shadows: the shadow ray's answer beside the method's;
- * --verify-reference: and the long-double reference's beside both. */
-static void verify_shadow(TraceContext *ctx, const ShadowQuery *q, RGB got)
-{
-    int scheme = ctx->last_scheme;
-    RGB want;
-    RenderStats keep = ctx->stats; /* the check's own work is not the method's */
-    shadow_conventional_test(ctx, q, &want);
-    uint64_t disagreements = keep.shadow_disagreements;
-    ctx->stats = keep;
-    ctx->stats.shadow_verified++;
-    if (want.r != got.r || want.g != got.g || want.b != got.b) {
-        ctx->stats.shadow_disagreements = disagreements + 1;
-        ctx->stats.shadow_disagreements_by_scheme[scheme]++;
-    }
-    if (ctx->verify > 1) {
-        /* The verdicts compared: is any light taken away? */
-        RefAnswer ref = shadow_reference(ctx->world, q->surface, &ctx->world->lights[q->light], ctx->reference_eps);
-        int got_blocked = got.r != 1.0 || got.g != 1.0 || got.b != 1.0;
-        int ray_blocked = want.r != 1.0 || want.g != 1.0 || want.b != 1.0;
-        if (ref == REF_TIE)
-            ctx->stats.reference_ties++;
-        else {
-            ctx->stats.reference_wrong += got_blocked != (ref == REF_BLOCKED);
-            ctx->stats.reference_ray_wrong += ray_blocked != (ref == REF_BLOCKED);
-        }
-    }
-    ctx->last_scheme = scheme;
-}
-
 /* --aov: what became of q's light at the primary hit. asked: the method's
  * test or skip ran; through: the test's answer (NULL after a skip). */
-static void note_light(TraceContext *ctx, const ShadowQuery *q, int asked, int faces_away, const RGB *through)
+static void note_light(ShadeContext *ctx, const ShadowQuery *q, int asked, int faces_away, const RGB *through)
 {
-    if (!ctx->aov || ctx->state_depth != 1)
+    if (!ctx->aov || ctx->shadow.state_depth != 1)
         return;
     ShadowRecord r = { SCHEME_NONE, -1 };
     if (asked)
-        r = shadow_record(ctx, q, through);
+        r = shadow_record(&ctx->shadow, q, through);
     AovCode code = r.scheme != SCHEME_NONE ? aov_code_of_scheme(r.scheme)
                    : faces_away            ? AOV_CODE_FACES_AWAY
                                            : AOV_CODE_UNTESTED;
@@ -177,11 +131,11 @@ static void note_light(TraceContext *ctx, const ShadowQuery *q, int asked, int f
 }
 
 /* The shadow methods' states when the shading asks nothing about any light. */
-static void skip_all_lights(TraceContext *ctx, const Hit *hit, const Segment *seg)
+static void skip_all_lights(ShadeContext *ctx, const Hit *hit, const Segment *seg)
 {
-    const World *w = ctx->world;
-    int ask = ctx->quality.shadows && ctx->shadow->skip;
-    if (!ask && !(ctx->aov && ctx->state_depth == 1))
+    const World *w = ctx->shadow.tracer.world;
+    int ask = ctx->quality.shadows && ctx->shadow.method->skip;
+    if (!ask && !(ctx->aov && ctx->shadow.state_depth == 1))
         return;
     for (int li = 0; li < w->nlights; li++) {
         const Light *l = &w->lights[li];
@@ -189,10 +143,7 @@ static void skip_all_lights(TraceContext *ctx, const Hit *hit, const Segment *se
         double distance = light_direction(l, hit->point, &to_light);
         ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
         if (ask && !l->shadowless) {
-            double t0 = shadow_timer_start(ctx);
-            ctx->last_scheme = SCHEME_NONE;
-            ctx->shadow->skip(ctx, &q, 0);
-            shadow_timer_stop(ctx, t0);
+            shadow_decide_skip(&ctx->shadow, &q, 0);
             note_light(ctx, &q, 1, 0, NULL);
         } else {
             note_light(ctx, &q, 0, 0, NULL);
@@ -246,10 +197,10 @@ static int visible(RGB lc)
 }
 
 /* Diffuse, phong and specular from every light (ComputeDiffuseLight). */
-static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, const Segment *seg, Vec3 eye_dir,
+static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, const Segment *seg, Vec3 eye_dir,
                          Vec3 normal, RGB pigment, double attenuation, RGB *acc)
 {
-    const World *w = ctx->world;
+    const World *w = ctx->shadow.tracer.world;
     const Finish *f = &m->finish;
     for (int li = 0; li < w->nlights; li++) {
         const Light *l = &w->lights[li];
@@ -263,32 +214,21 @@ static void direct_light(TraceContext *ctx, const Material *m, const Hit *hit, c
          * needs no shadow test; methods that carry state still see it. */
         int faces_away = !m->double_illuminate && v3_dot(normal, to_light) < POV_EPSILON;
         if (faces_away || (fabs(lc.r) < POV_EPSILON && fabs(lc.g) < POV_EPSILON && fabs(lc.b) < POV_EPSILON)) {
-            int asked = shadows && ctx->shadow->skip;
-            if (asked) {
-                double t0 = shadow_timer_start(ctx);
-                ctx->last_scheme = SCHEME_NONE;
-                ctx->shadow->skip(ctx, &q, faces_away);
-                shadow_timer_stop(ctx, t0);
-            }
+            int asked = shadows && ctx->shadow.method->skip;
+            if (asked)
+                shadow_decide_skip(&ctx->shadow, &q, faces_away);
             note_light(ctx, &q, asked, faces_away, NULL);
             continue;
         }
         if (shadows) {
             RGB through;
-            /* The monotonic clock is read in user space (vDSO); the thread
-             * CPU clock would be a system call. */
-            double t0 = shadow_timer_start(ctx);
-            ctx->shadow->test(ctx, &q, &through);
-            shadow_timer_stop(ctx, t0);
-            ctx->stats.shadow_queries++;
-            if (ctx->verify)
-                verify_shadow(ctx, &q, through);
+            shadow_decide(&ctx->shadow, &q, &through);
             note_light(ctx, &q, 1, 0, &through);
             RGB unshadowed = lc;
             lc.r *= through.r;
             lc.g *= through.g;
             lc.b *= through.b;
-            if (ctx->aov && ctx->state_depth == 1 && (through.r != 1.0 || through.g != 1.0 || through.b != 1.0)) {
+            if (ctx->aov && ctx->shadow.state_depth == 1 && (through.r != 1.0 || through.g != 1.0 || through.b != 1.0)) {
                 /* --aov: what this shadow took, as a +Q3 render would show it. */
                 RGB u = { 0, 0, 0 }, s = { 0, 0, 0 };
                 if (visible(unshadowed))
@@ -422,11 +362,11 @@ static double refraction_ratio_peek(const Ray *ray, const Material *m)
     return m->ior / l->ior[l->n - 1];
 }
 
-static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int level, int continued, Radiance *out);
-static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hit, const Segment *seg, double weight,
+static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int level, int continued, Radiance *out);
+static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hit, const Segment *seg, double weight,
                       int level, Radiance *out);
 
-static void trace_reflection(TraceContext *ctx, const Ray *ray, const Hit *hit, const LightState *state,
+static void trace_reflection(ShadeContext *ctx, const Ray *ray, const Hit *hit, const LightState *state,
                              Vec3 normal, Vec3 raw_normal, double weight, int level, Radiance *out)
 {
     Ray r;
@@ -451,7 +391,7 @@ static void trace_reflection(TraceContext *ctx, const Ray *ray, const Hit *hit, 
 }
 
 /* Refracted or transmitted ray; returns 1 on total internal reflection. */
-static int trace_refraction(TraceContext *ctx, const Ray *ray, const Hit *hit, const LightState *state,
+static int trace_refraction(ShadeContext *ctx, const Ray *ray, const Hit *hit, const LightState *state,
                             const Material *m, Vec3 normal, Vec3 raw_normal, double weight, int level, Radiance *out)
 {
     Ray r;
@@ -494,32 +434,32 @@ static int trace_refraction(TraceContext *ctx, const Ray *ray, const Hit *hit, c
     return 0;
 }
 
-void shade_trace(TraceContext *ctx, const Ray *ray, double weight, int level, Radiance *out)
+void shade_trace(ShadeContext *ctx, const Ray *ray, double weight, int level, Radiance *out)
 {
     trace_ray(ctx, ray, weight, level, 0, out);
 }
 
 /* POV-Ray's TraceRay: `level` is the trace level so far; a continued
  * (transmitted, same-ior) ray does not start a new level. */
-static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int level, int continued, Radiance *out)
+static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int level, int continued, Radiance *out)
 {
-    const World *w = ctx->world;
+    const World *w = ctx->shadow.tracer.world;
     memset(out, 0, sizeof *out);
     if (level >= w->max_trace_level || weight < w->adc_bailout)
         return;
     Hit hit;
-    ctx->hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);
-    int found = trace_nearest(ctx, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);
-    ctx->hide = 0;
+    ctx->shadow.tracer.hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);
+    int found = trace_nearest(&ctx->shadow.tracer, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);
+    ctx->shadow.tracer.hide = 0;
     if (!found) {
         background(w, ray->dir, out);
         if (ctx->quality.volume && w->nfogs && in_atmosphere(&ray->inside))
             fog_apply(w, ray->org, ray->dir, HUGE_VAL, out);
         return;
     }
-    if (ctx->coherence && ctx->state_depth == 0 && ray->from.kind == HIT_NONE) {
-        ctx->coherence->hit = hit; /* the next pixel's neighbour */
-        ctx->coherence->have_hit = 1;
+    if (ctx->shadow.coherence && ctx->shadow.state_depth == 0 && ray->from.kind == HIT_NONE) {
+        ctx->shadow.coherence->hit = hit; /* the next pixel's neighbour */
+        ctx->shadow.coherence->have_hit = 1;
     }
     if (!continued)
         level++;
@@ -528,20 +468,20 @@ static void trace_ray(TraceContext *ctx, const Ray *ray, double weight, int leve
      * one row per recursion depth. */
     LightState *row = NULL;
     int nl = w->nlights;
-    if (ctx->states && ctx->state_depth < ctx->state_capacity)
-        row = (LightState *)ctx->states + (size_t)ctx->state_depth * (size_t)nl;
+    if (ctx->shadow.states && ctx->shadow.state_depth < ctx->shadow.state_capacity)
+        row = (LightState *)ctx->shadow.states + (size_t)ctx->shadow.state_depth * (size_t)nl;
     Segment seg = { ray->org, ray->dir, &ray->from, ray->state, row };
-    ctx->state_depth++;
+    ctx->shadow.state_depth++;
     shade_hit(ctx, ray, &hit, &seg, weight, level, out);
-    ctx->state_depth--;
+    ctx->shadow.state_depth--;
     if (ctx->quality.volume && w->nfogs && in_atmosphere(&ray->inside))
         fog_apply(w, ray->org, ray->dir, hit.t, out);
 }
 
-static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hitp, const Segment *seg, double weight,
+static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const Segment *seg, double weight,
                       int level, Radiance *out)
 {
-    const World *w = ctx->world;
+    const World *w = ctx->shadow.tracer.world;
     const Hit hit = *hitp;
     const LightState *state = (const LightState *)seg->state;
     const Material *m = &w->materials[hit_material(w, &hit)];
@@ -554,7 +494,7 @@ static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hitp, const 
     const Colour surface = material_colour_at(w, m, hit.kind == HIT_POLYGON ? hit.index : -1, hit.point);
     const Colour *pc = &surface;
     RGB pigment = { pc->r, pc->g, pc->b };
-    if (ctx->aov && ctx->state_depth == 1)
+    if (ctx->aov && ctx->shadow.state_depth == 1)
         aov_record_hit(ctx->aov, hit.t, hit.point, normal);
 
     if (ctx->quality.full_ambient) {
@@ -652,4 +592,11 @@ static void shade_hit(TraceContext *ctx, const Ray *ray, const Hit *hitp, const 
             out->b += reflec.b * rfl.b;
         }
     }
+}
+
+void shade_counters_add(ShadeCounters *t, const ShadeCounters *p)
+{
+    t->reflected_rays += p->reflected_rays;
+    t->refracted_rays += p->refracted_rays;
+    t->transmitted_rays += p->transmitted_rays;
 }

@@ -7,6 +7,33 @@
 
 #include "shadow.h"
 
+struct AovPixel;
+
+/* Which rays and tests a render performs: POV-Ray's +Q levels. */
+typedef struct {
+    int shadows;        /* Q >= 4 */
+    int refraction;     /* Q >= 6 */
+    int reflection;     /* Q >= 8 */
+    int full_ambient;   /* Q <= 1: pigment colour only */
+    int volume;         /* Q >= 9: fog */
+} Quality;
+
+/* The secondary rays shading sent, for the statistics (summed over threads). */
+typedef struct {
+    uint64_t reflected_rays, refracted_rays, transmitted_rays;
+} ShadeCounters;
+
+void shade_counters_add(ShadeCounters *total, const ShadeCounters *part);
+
+/* A render thread's shading: its shadow testing (and, in that, its tracer),
+ * what the +Q level asks for, and the current pixel's analysis record. */
+typedef struct {
+    ShadowContext shadow;
+    Quality quality;
+    ShadeCounters stats;
+    struct AovPixel *aov;     /* --aov: the current pixel's record, or NULL when off */
+} ShadeContext;
+
 #define MAX_INTERIOR_NESTING 16
 
 /* The interiors a ray is inside, innermost last (for ior ratios; fog only
@@ -36,6 +63,6 @@ typedef struct {
 
 /* Traces `ray` and returns what it sees. `level` counts rays already on the
  * path (0 for camera rays), as POV-Ray's trace level. */
-void shade_trace(TraceContext *ctx, const Ray *ray, double weight, int level, Radiance *out);
+void shade_trace(ShadeContext *ctx, const Ray *ray, double weight, int level, Radiance *out);
 
 #endif

@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include "aov.h"
+#include "camera.h"
+#include "clock.h"
 #include "shade.h"
 #include "shadow_coherence.h"
 #include "shadow_reference.h"
@@ -18,22 +20,6 @@ int render_default_threads(void)
 {
     long n = sysconf(_SC_NPROCESSORS_ONLN);
     return n < 1 ? 1 : n > 1024 ? 1024 : (int)n;
-}
-
-void camera_ray(const Camera *cam, int width, int height, int x, int y, Vec3 *org, Vec3 *dir)
-{
-    /* POV-Ray's CreateCameraRay: x += 0.5, y -= 0.5, then
-     * x0 = x/width - 0.5 and y0 = ((height-1) - y)/height - 0.5. */
-    double px = x + 0.5, py = y - 0.5;
-    double x0 = px / width - 0.5;
-    double y0 = ((height - 1) - py) / height - 0.5;
-    if (cam->kind == CAMERA_ORTHOGRAPHIC) {
-        *org = v3_add(cam->location, v3_add(v3_scale(cam->right, x0), v3_scale(cam->up, y0)));
-        *dir = v3_normalize(cam->direction);
-        return;
-    }
-    *org = cam->location;
-    *dir = v3_normalize(v3_add(cam->direction, v3_add(v3_scale(cam->right, x0), v3_scale(cam->up, y0))));
 }
 
 typedef struct {
@@ -54,7 +40,20 @@ typedef struct {
     RenderStats stats;
 } Worker;
 
-static void render_tile(TraceContext *ctx, Job *job, int tile)
+/* The counters the analysis channels' costs are differences of. */
+static uint64_t shadow_tests(const ShadeContext *ctx)
+{
+    return ctx->shadow.stats.shadow_volume_tests + ctx->shadow.stats.shadow_polygon_tests;
+}
+
+static uint64_t rays_traced(const ShadeContext *ctx, const RenderStats *loop)
+{
+    return loop->camera_rays + ctx->stats.reflected_rays + ctx->stats.refracted_rays + ctx->stats.transmitted_rays +
+           ctx->shadow.stats.shadow_rays;
+}
+
+/* loop: the render loop's own counters (pixels, camera rays). */
+static void render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile)
 {
     const RenderOptions *opt = job->opt;
     int x0 = (tile % job->tiles_x) * TILE, y0 = (tile / job->tiles_x) * TILE;
@@ -65,7 +64,7 @@ static void render_tile(TraceContext *ctx, Job *job, int tile)
      * statistics) does not depend on which tiles this thread rendered
      * before: the same for any thread count. */
     for (int i = 0; i < job->world->nlights; i++)
-        ctx->light_cache[i] = -1;
+        ctx->shadow.light_cache[i] = -1;
     for (int y = y0; y < y1; y++) {
         for (int x = x0; x < x1; x++) {
             Ray ray;
@@ -74,17 +73,17 @@ static void render_tile(TraceContext *ctx, Job *job, int tile)
             camera_ray(&job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
             Radiance c;
             if (ctx->aov)
-                aov_pixel_begin(ctx->aov, &ctx->stats);
-            if (ctx->coherence)
-                pixel_coherence_begin(ctx->coherence, x == x0, y == y0);
+                aov_pixel_begin(ctx->aov, shadow_tests(ctx), rays_traced(ctx, loop));
+            PixelCoherence *pc = ctx->shadow.coherence;
+            if (pc)
+                pixel_coherence_begin(pc, x == x0, y == y0);
             shade_trace(ctx, &ray, 1.0, 0, &c);
-            if (ctx->coherence)
-                pixel_coherence_end(ctx->coherence, ctx->coherence->have_hit ? &ctx->coherence->hit : NULL,
-                                    (const LightState *)ctx->states, x == x0);
-            ctx->stats.camera_rays++;
-            ctx->stats.pixels++;
+            if (pc)
+                pixel_coherence_end(pc, pc->have_hit ? &pc->hit : NULL, ctx->shadow.states, x == x0);
+            loop->camera_rays++;
+            loop->pixels++;
             if (ctx->aov)
-                aov_pixel_end(ctx->aov, &ctx->stats, opt->aov, x, y);
+                aov_image_store(opt->aov, ctx->aov, shadow_tests(ctx), rays_traced(ctx, loop), x, y);
             float *px = &job->img->rgba[((size_t)y * opt->width + x) * 4];
             px[0] = (float)c.r;
             px[1] = (float)c.g;
@@ -98,10 +97,14 @@ static void *worker_main(void *arg)
 {
     Worker *wk = arg;
     Job *job = wk->job;
-    TraceContext ctx;
+    ShadeContext ctx;
+    memset(&ctx, 0, sizeof ctx);
+    RenderStats loop;
+    memset(&loop, 0, sizeof loop);
     const RenderOptions *opt = job->opt;
-    if (trace_context_init(&ctx, job->world, job->grid, opt->shadow, opt->quality, opt->volumes)) {
-        trace_context_free(&ctx);
+    ctx.quality = opt->quality;
+    if (shadow_context_init(&ctx.shadow, job->world, job->grid, opt->shadow, opt->volumes)) {
+        shadow_context_free(&ctx.shadow);
         atomic_store(&job->failed, 1);
         return NULL;
     }
@@ -110,11 +113,11 @@ static void *worker_main(void *arg)
     if (opt->pixel_coherence && opt->volumes) {
         if (pixel_coherence_init(&coherence, job->world, job->grid)) {
             pixel_coherence_free(&coherence);
-            trace_context_free(&ctx);
+            shadow_context_free(&ctx.shadow);
             atomic_store(&job->failed, 1);
             return NULL;
         }
-        ctx.coherence = &coherence;
+        ctx.shadow.coherence = &coherence;
     }
     AovPixel aov;
     memset(&aov, 0, sizeof aov);
@@ -122,32 +125,33 @@ static void *worker_main(void *arg)
         if (aov_pixel_init(&aov, job->world->nlights, strcmp(opt->shadow->name, "none") == 0)) {
             aov_pixel_free(&aov);
             pixel_coherence_free(&coherence);
-            trace_context_free(&ctx);
+            shadow_context_free(&ctx.shadow);
             atomic_store(&job->failed, 1);
             return NULL;
         }
         ctx.aov = &aov;
     }
-    ctx.verify = opt->verify;
-    ctx.reference_eps = shadow_reference_eps(job->grid);
-    ctx.nth = opt->nth;
-    ctx.cost = opt->cost;
+    ctx.shadow.verify = opt->verify;
+    ctx.shadow.reference_eps = shadow_reference_eps(job->grid);
+    ctx.shadow.nth = opt->nth;
+    ctx.shadow.cost = opt->cost;
     double t0 = clock_thread_cpu();
     double last_report = 0.0;
     for (;;) {
         int tile = atomic_fetch_add(&job->next_tile, 1);
         if (tile >= job->ntiles)
             break;
-        /* Shadow time is sampled on the wall clock (src/shade.c), which
+        /* Shadow time is sampled on the wall clock (shadow_decide.c), which
          * also counts the time the thread spent preempted on a busy
          * machine. Scaling each tile's share by the tile's CPU time over
          * its wall time takes that out (no change on an idle machine). */
-        double tile_wall = clock_wall(), tile_cpu = clock_thread_cpu(), shadow_before = ctx.stats.shadow_seconds;
-        render_tile(&ctx, job, tile);
+        double *shadow_seconds = &ctx.shadow.stats.shadow_seconds;
+        double tile_wall = clock_wall(), tile_cpu = clock_thread_cpu(), shadow_before = *shadow_seconds;
+        render_tile(&ctx, &loop, job, tile);
         tile_wall = clock_wall() - tile_wall;
         tile_cpu = clock_thread_cpu() - tile_cpu;
         if (tile_wall > 0.0 && tile_cpu < tile_wall)
-            ctx.stats.shadow_seconds = shadow_before + (ctx.stats.shadow_seconds - shadow_before) * (tile_cpu / tile_wall);
+            *shadow_seconds = shadow_before + (*shadow_seconds - shadow_before) * (tile_cpu / tile_wall);
         int done = atomic_fetch_add(&job->done_tiles, 1) + 1;
         if (job->opt->progress && wk->index == 0) {
             double now = clock_wall() - job->start;
@@ -157,11 +161,14 @@ static void *worker_main(void *arg)
             }
         }
     }
-    ctx.stats.render_seconds = clock_thread_cpu() - t0;
-    wk->stats = ctx.stats;
+    loop.render_seconds = clock_thread_cpu() - t0;
+    loop.rays = ctx.shadow.tracer.stats;
+    loop.shading = ctx.stats;
+    loop.shadow = ctx.shadow.stats;
+    wk->stats = loop;
     aov_pixel_free(&aov);
     pixel_coherence_free(&coherence);
-    trace_context_free(&ctx);
+    shadow_context_free(&ctx.shadow);
     return NULL;
 }
 

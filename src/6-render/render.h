@@ -5,8 +5,8 @@
 #define HST_RENDER_H
 
 #include "grid.h"
-#include "image.h"
-#include "shadow.h"
+#include "image_buffer.h"
+#include "shade.h"
 #include "stats.h"
 #include "world.h"
 
@@ -23,9 +23,6 @@ typedef struct {
     int progress;             /* print a progress line on stderr */
     struct AovImage *aov;     /* --aov: the analysis channels to fill, or NULL */
 } RenderOptions;
-
-/* The camera ray through the centre of pixel (x, y), row 0 at the top. */
-void camera_ray(const Camera *cam, int width, int height, int x, int y, Vec3 *org, Vec3 *dir);
 
 /* The thread count when none is given: the online cores (1 to 1024). */
 int render_default_threads(void);

@@ -5,7 +5,6 @@
 
 #include <errno.h>
 #include <string.h>
-#include <time.h>
 
 #include "cost_model.h"
 #include "shadow.h"
@@ -15,58 +14,17 @@ void stats_add(RenderStats *t, const RenderStats *p)
 {
     t->pixels += p->pixels;
     t->camera_rays += p->camera_rays;
-    t->reflected_rays += p->reflected_rays;
-    t->refracted_rays += p->refracted_rays;
-    t->transmitted_rays += p->transmitted_rays;
-    t->polygon_tests += p->polygon_tests;
-    t->polygon_hits += p->polygon_hits;
-    t->plane_tests += p->plane_tests;
-    t->cells_visited += p->cells_visited;
-    t->shadow_queries += p->shadow_queries;
-    t->shadow_rays += p->shadow_rays;
-    t->shadow_blocked += p->shadow_blocked;
-    t->shadow_polygon_tests += p->shadow_polygon_tests;
-    for (int i = 0; i < STATS_SCHEMES; i++) {
-        t->shadow_schemes[i] += p->shadow_schemes[i];
-        t->shadow_disagreements_by_scheme[i] += p->shadow_disagreements_by_scheme[i];
-    }
-    t->shadow_volume_tests += p->shadow_volume_tests;
-    t->shadow_bucket_polygons += p->shadow_bucket_polygons;
-    t->shadow_unsure += p->shadow_unsure;
-    t->shadow_coherent += p->shadow_coherent;
-    t->shadow_touching += p->shadow_touching;
-    t->shadow_in_plane += p->shadow_in_plane;
-    t->shadow_coherence_unsure += p->shadow_coherence_unsure;
-    t->shadow_no_count += p->shadow_no_count;
-    t->shadow_deferred += p->shadow_deferred;
-    t->shadow_verified += p->shadow_verified;
-    t->shadow_disagreements += p->shadow_disagreements;
-    t->reference_ties += p->reference_ties;
-    t->reference_wrong += p->reference_wrong;
-    t->reference_ray_wrong += p->reference_ray_wrong;
-    t->shadow_seconds += p->shadow_seconds;
+    ray_counters_add(&t->rays, &p->rays);
+    shade_counters_add(&t->shading, &p->shading);
+    shadow_counters_add(&t->shadow, &p->shadow);
     t->render_seconds += p->render_seconds;
-}
-
-double clock_wall(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
-double clock_thread_cpu(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
 /* "Others" is the render loop's CPU time that was not shadow testing, plus
  * writing the image: the paper's split (finding hits, shading, output). */
 static double others_seconds(const StatsReport *r)
 {
-    double o = r->render.render_seconds - r->render.shadow_seconds;
+    double o = r->render.render_seconds - r->render.shadow.shadow_seconds;
     return (o > 0 ? o : 0) + r->output_seconds;
 }
 
@@ -74,7 +32,7 @@ void stats_print(FILE *f, const StatsReport *r)
 {
     const RenderStats *s = &r->render;
     double others = others_seconds(r);
-    double total = r->parse_seconds + r->preprocess_seconds + s->shadow_seconds + others;
+    double total = r->parse_seconds + r->preprocess_seconds + s->shadow.shadow_seconds + others;
     fprintf(f, "hstrace statistics for %s (%dx%d, %d thread%s, shadows: %s)\n", r->scene, r->width, r->height,
             r->threads, r->threads == 1 ? "" : "s", r->shadow_method);
     fprintf(f, "  scene       %d polygons (%d degenerate dropped), %d infinite planes, %d lights\n", r->npolygons,
@@ -88,20 +46,20 @@ void stats_print(FILE *f, const StatsReport *r)
     fprintf(f, "  grid        %dx%dx%d cells, %llu registrations\n", r->grid[0], r->grid[1], r->grid[2],
             (unsigned long long)r->grid_registrations);
     fprintf(f, "  time (s)    parse %.3f  preprocessing %.3f  shadow testing %.3f  others %.3f  total %.3f  (wall %.3f)\n",
-            r->parse_seconds, r->preprocess_seconds, s->shadow_seconds, others, total, r->wall_seconds);
+            r->parse_seconds, r->preprocess_seconds, s->shadow.shadow_seconds, others, total, r->wall_seconds);
     fprintf(f, "              shadow testing and others are CPU time summed over threads\n");
     fprintf(f, "  rays        camera %llu  reflected %llu  refracted %llu  transmitted %llu\n",
-            (unsigned long long)s->camera_rays, (unsigned long long)s->reflected_rays,
-            (unsigned long long)s->refracted_rays, (unsigned long long)s->transmitted_rays);
+            (unsigned long long)s->camera_rays, (unsigned long long)s->shading.reflected_rays,
+            (unsigned long long)s->shading.refracted_rays, (unsigned long long)s->shading.transmitted_rays);
     fprintf(f, "  tests       ray/polygon %llu (hits %llu)  ray/plane %llu  cells visited %llu\n",
-            (unsigned long long)s->polygon_tests, (unsigned long long)s->polygon_hits,
-            (unsigned long long)s->plane_tests, (unsigned long long)s->cells_visited);
+            (unsigned long long)s->rays.polygon_tests, (unsigned long long)s->rays.polygon_hits,
+            (unsigned long long)s->rays.plane_tests, (unsigned long long)s->rays.cells_visited);
     fprintf(f, "  shadows     queries %llu  shadow rays %llu (blocked %llu)  shadow-ray/polygon tests %llu\n",
-            (unsigned long long)s->shadow_queries, (unsigned long long)s->shadow_rays,
-            (unsigned long long)s->shadow_blocked, (unsigned long long)s->shadow_polygon_tests);
+            (unsigned long long)s->shadow.shadow_queries, (unsigned long long)s->shadow.shadow_rays,
+            (unsigned long long)s->shadow.shadow_blocked, (unsigned long long)s->shadow.shadow_polygon_tests);
     fprintf(f, "  sub-schemes");
-    for (int i = 0; i < STATS_SCHEMES; i++)
-        fprintf(f, "  %s %llu", shadow_scheme_names[i], (unsigned long long)s->shadow_schemes[i]);
+    for (int i = 0; i < SCHEME_COUNT; i++)
+        fprintf(f, "  %s %llu", shadow_scheme_names[i], (unsigned long long)s->shadow.shadow_schemes[i]);
     fprintf(f, "\n");
     if (r->volumes) {
         const ShadowVolumes *sv = r->volumes;
@@ -124,15 +82,15 @@ void stats_print(FILE *f, const StatsReport *r)
         }
         fprintf(f, "  counting    segment/shadow-polygon tests %llu  shadow polygons gathered %llu  unsure %llu"
                    "  no count %llu  deferred %llu\n",
-                (unsigned long long)s->shadow_volume_tests, (unsigned long long)s->shadow_bucket_polygons,
-                (unsigned long long)s->shadow_unsure, (unsigned long long)s->shadow_no_count,
-                (unsigned long long)s->shadow_deferred);
-        if (s->shadow_touching || s->shadow_in_plane)
+                (unsigned long long)s->shadow.shadow_volume_tests, (unsigned long long)s->shadow.shadow_bucket_polygons,
+                (unsigned long long)s->shadow.shadow_unsure, (unsigned long long)s->shadow.shadow_no_count,
+                (unsigned long long)s->shadow.shadow_deferred);
+        if (s->shadow.shadow_touching || s->shadow.shadow_in_plane)
             fprintf(f, "  fallbacks   points on a second polygon %llu  segments in their start polygon's plane %llu\n",
-                    (unsigned long long)s->shadow_touching, (unsigned long long)s->shadow_in_plane);
-        if (s->shadow_coherent || s->shadow_coherence_unsure)
+                    (unsigned long long)s->shadow.shadow_touching, (unsigned long long)s->shadow.shadow_in_plane);
+        if (s->shadow.shadow_coherent || s->shadow.shadow_coherence_unsure)
             fprintf(f, "  coherence   counts from the neighbouring pixel %llu  abandoned %llu\n",
-                    (unsigned long long)s->shadow_coherent, (unsigned long long)s->shadow_coherence_unsure);
+                    (unsigned long long)s->shadow.shadow_coherent, (unsigned long long)s->shadow.shadow_coherence_unsure);
     }
     if (r->cost) {
         const CostModel *c = r->cost;
@@ -147,19 +105,19 @@ void stats_print(FILE *f, const StatsReport *r)
     }
     if (r->verify) {
         fprintf(f, "  verified    %llu decisions against the shadow ray: %llu disagreements",
-                (unsigned long long)s->shadow_verified, (unsigned long long)s->shadow_disagreements);
-        for (int i = 0; i < STATS_SCHEMES; i++)
-            if (s->shadow_disagreements_by_scheme[i])
+                (unsigned long long)s->shadow.shadow_verified, (unsigned long long)s->shadow.shadow_disagreements);
+        for (int i = 0; i < SCHEME_COUNT; i++)
+            if (s->shadow.shadow_disagreements_by_scheme[i])
                 fprintf(f, " (%s %llu)", shadow_scheme_names[i],
-                        (unsigned long long)s->shadow_disagreements_by_scheme[i]);
+                        (unsigned long long)s->shadow.shadow_disagreements_by_scheme[i]);
         fprintf(f, "\n");
     }
     if (r->verify > 1)
         fprintf(f, "  reference   long double: %llu ties; on the %llu clear decisions, the method is wrong %llu times, "
                    "the shadow ray %llu times\n",
-                (unsigned long long)s->reference_ties,
-                (unsigned long long)(s->shadow_verified - s->reference_ties), (unsigned long long)s->reference_wrong,
-                (unsigned long long)s->reference_ray_wrong);
+                (unsigned long long)s->shadow.reference_ties,
+                (unsigned long long)(s->shadow.shadow_verified - s->shadow.reference_ties), (unsigned long long)s->shadow.reference_wrong,
+                (unsigned long long)s->shadow.reference_ray_wrong);
 }
 
 int stats_write_json(const char *path, const StatsReport *r, char *err, int errlen)
@@ -202,37 +160,37 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
             (unsigned long long)r->grid_registrations);
     fprintf(f, "  \"time\": {\"parse\": %.6f, \"preprocessing\": %.6f, \"shadow_testing\": %.6f, \"others\": %.6f, "
                "\"total\": %.6f, \"wall\": %.6f},\n",
-            r->parse_seconds, r->preprocess_seconds, s->shadow_seconds, others,
-            r->parse_seconds + r->preprocess_seconds + s->shadow_seconds + others, r->wall_seconds);
+            r->parse_seconds, r->preprocess_seconds, s->shadow.shadow_seconds, others,
+            r->parse_seconds + r->preprocess_seconds + s->shadow.shadow_seconds + others, r->wall_seconds);
     fprintf(f, "  \"rays\": {\"camera\": %llu, \"reflected\": %llu, \"refracted\": %llu, \"transmitted\": %llu},\n",
-            (unsigned long long)s->camera_rays, (unsigned long long)s->reflected_rays,
-            (unsigned long long)s->refracted_rays, (unsigned long long)s->transmitted_rays);
+            (unsigned long long)s->camera_rays, (unsigned long long)s->shading.reflected_rays,
+            (unsigned long long)s->shading.refracted_rays, (unsigned long long)s->shading.transmitted_rays);
     fprintf(f, "  \"tests\": {\"ray_polygon\": %llu, \"ray_polygon_hits\": %llu, \"ray_plane\": %llu, \"cells_visited\": %llu},\n",
-            (unsigned long long)s->polygon_tests, (unsigned long long)s->polygon_hits,
-            (unsigned long long)s->plane_tests, (unsigned long long)s->cells_visited);
+            (unsigned long long)s->rays.polygon_tests, (unsigned long long)s->rays.polygon_hits,
+            (unsigned long long)s->rays.plane_tests, (unsigned long long)s->rays.cells_visited);
     fprintf(f, "  \"shadows\": {\"queries\": %llu, \"shadow_rays\": %llu, \"blocked\": %llu, \"polygon_tests\": %llu,\n",
-            (unsigned long long)s->shadow_queries, (unsigned long long)s->shadow_rays,
-            (unsigned long long)s->shadow_blocked, (unsigned long long)s->shadow_polygon_tests);
+            (unsigned long long)s->shadow.shadow_queries, (unsigned long long)s->shadow.shadow_rays,
+            (unsigned long long)s->shadow.shadow_blocked, (unsigned long long)s->shadow.shadow_polygon_tests);
     fprintf(f, "    \"schemes\": {");
-    for (int i = 0; i < STATS_SCHEMES; i++)
-        fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i], (unsigned long long)s->shadow_schemes[i]);
+    for (int i = 0; i < SCHEME_COUNT; i++)
+        fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i], (unsigned long long)s->shadow.shadow_schemes[i]);
     fprintf(f, "},\n    \"shadow_polygon_tests\": %llu, \"bucket_polygons\": %llu, \"unsure\": %llu, \"no_count\": %llu, "
                "\"deferred\": %llu, \"coherent\": %llu, \"coherence_unsure\": %llu, \"touching\": %llu, \"in_plane\": %llu,\n",
-            (unsigned long long)s->shadow_volume_tests, (unsigned long long)s->shadow_bucket_polygons,
-            (unsigned long long)s->shadow_unsure, (unsigned long long)s->shadow_no_count,
-            (unsigned long long)s->shadow_deferred, (unsigned long long)s->shadow_coherent,
-            (unsigned long long)s->shadow_coherence_unsure, (unsigned long long)s->shadow_touching,
-            (unsigned long long)s->shadow_in_plane);
+            (unsigned long long)s->shadow.shadow_volume_tests, (unsigned long long)s->shadow.shadow_bucket_polygons,
+            (unsigned long long)s->shadow.shadow_unsure, (unsigned long long)s->shadow.shadow_no_count,
+            (unsigned long long)s->shadow.shadow_deferred, (unsigned long long)s->shadow.shadow_coherent,
+            (unsigned long long)s->shadow.shadow_coherence_unsure, (unsigned long long)s->shadow.shadow_touching,
+            (unsigned long long)s->shadow.shadow_in_plane);
     fprintf(f, "    \"verified\": %llu, \"disagreements\": %llu, \"disagreements_by_scheme\": {",
-            (unsigned long long)s->shadow_verified, (unsigned long long)s->shadow_disagreements);
-    for (int i = 0; i < STATS_SCHEMES; i++)
+            (unsigned long long)s->shadow.shadow_verified, (unsigned long long)s->shadow.shadow_disagreements);
+    for (int i = 0; i < SCHEME_COUNT; i++)
         fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i],
-                (unsigned long long)s->shadow_disagreements_by_scheme[i]);
+                (unsigned long long)s->shadow.shadow_disagreements_by_scheme[i]);
     fprintf(f, "}");
     if (r->verify > 1)
         fprintf(f, ",\n    \"reference_ties\": %llu, \"reference_wrong\": %llu, \"reference_ray_wrong\": %llu",
-                (unsigned long long)s->reference_ties, (unsigned long long)s->reference_wrong,
-                (unsigned long long)s->reference_ray_wrong);
+                (unsigned long long)s->shadow.reference_ties, (unsigned long long)s->shadow.reference_wrong,
+                (unsigned long long)s->shadow.reference_ray_wrong);
     fprintf(f, "}");
     if (r->volumes) {
         const ShadowVolumes *sv = r->volumes;

@@ -1,15 +1,10 @@
-/* Images: linear RGBA float buffers, and the files they are written to and
- * read from (OpenEXR through its C API, PNG, PPM). */
+/* Image files: the buffers of image_buffer.h written to and read from
+ * OpenEXR (through its C API), PNG and PPM files. */
 #ifndef HST_IMAGE_H
 #define HST_IMAGE_H
 
 #include "colour.h"
-
-typedef struct {
-    int width, height;
-    float *rgba; /* width*height*4, row 0 at the top, linear light; colour
-                  * premultiplied by alpha, as in POV-Ray and EXR files */
-} Image;
+#include "image_buffer.h"
 
 typedef enum { IMAGE_FORMAT_UNKNOWN, IMAGE_FORMAT_EXR, IMAGE_FORMAT_PNG, IMAGE_FORMAT_PPM } ImageFormat;
 
@@ -18,18 +13,6 @@ typedef enum { IMAGE_FORMAT_UNKNOWN, IMAGE_FORMAT_EXR, IMAGE_FORMAT_PNG, IMAGE_F
 typedef enum {
     IMAGE_EXR_ZIP = 0, IMAGE_EXR_NONE, IMAGE_EXR_RLE, IMAGE_EXR_ZIPS, IMAGE_EXR_PIZ
 } ImageExrCompression;
-
-/* Extra EXR channels written beside R G B A (the analysis channels of
- * aov.h), each a plane of width*height samples, row 0 at the top: floats for
- * HALF and FLOAT channels (converted to half by the library), uint32_t for
- * UINT ones. */
-typedef enum { IMAGE_CHANNEL_HALF, IMAGE_CHANNEL_FLOAT, IMAGE_CHANNEL_UINT } ImageChannelType;
-
-typedef struct {
-    const char *name;
-    ImageChannelType type;
-    const void *data;
-} ImageChannel;
 
 /* Extra EXR header attributes, of the standard types string, int, double. */
 typedef enum { IMAGE_ATTR_STRING, IMAGE_ATTR_INT, IMAGE_ATTR_DOUBLE } ImageAttributeType;
@@ -66,9 +49,6 @@ typedef struct {
     const ImageAttribute *attributes;
     int nattributes;
 } ImageWriteOptions;
-
-int image_alloc(Image *img, int width, int height);
-void image_free(Image *img);
 
 /* Turns colours encoded with a working gamma (scene_working_gamma: 1
  * linear, 0 the sRGB curve, else a power) into linear light, in place; alpha

@@ -70,10 +70,6 @@ float *image_transfer_decode_table(const ImageTransfer *t, unsigned max);
 #endif
 void image_set_error(char *err, int errlen, const char *fmt, ...) HST_PRINTF(3, 4);
 
-/* Largest accepted width or height, and pixel count, on read and write. */
-#define IMAGE_MAX_DIM 65536
-#define IMAGE_MAX_PIXELS (1L << 28)
-
 /* ---- codecs --------------------------------------------------------------
  * Writers get the open descriptor of the temporary file (the EXR writer) or
  * a FILE wrapping it (PNG, PPM; the caller closes it), and report errors as

@@ -9,7 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "stats.h"
+#include "clock.h"
 
 static const int termination_signals[] = {SIGINT, SIGTERM, SIGHUP};
 #define NTERMINATION ((int)(sizeof termination_signals / sizeof termination_signals[0]))

@@ -10,6 +10,7 @@
 
 #include "config.h"
 #include "aov.h"
+#include "clock.h"
 #include "colour.h"
 #include "compare.h"
 #include "datadir.h"

@@ -163,7 +163,7 @@ int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, c
     }
     add_double(p, "hstrace.time.parse", r->parse_seconds);
     add_double(p, "hstrace.time.preprocess", r->preprocess_seconds);
-    add_double(p, "hstrace.time.shadowCpu", r->render.shadow_seconds);
+    add_double(p, "hstrace.time.shadowCpu", r->render.shadow.shadow_seconds);
     add_double(p, "hstrace.time.renderCpu", r->render.render_seconds);
     add_double(p, "hstrace.time.wall", r->wall_seconds);
     if (opt->aov & (1u << AOV_HST))

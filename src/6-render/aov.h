@@ -31,37 +31,18 @@
 
 #include <stdint.h>
 
-#include "image.h"
-#include "stats.h"
-#include "vecmath.h"
+#include "aov_pixel.h"
+#include "image_buffer.h"
 
 typedef enum { AOV_Z, AOV_N, AOV_P, AOV_SHADOW, AOV_HST, AOV_DEPTH, AOV_COST, AOV_NGROUPS } AovGroup;
 
 #define AOV_ALL ((1u << AOV_NGROUPS) - 1u)
 
-/* hst.L<i> codes: the shadow methods' sub-schemes, plus what happens when
- * no method is asked. */
-typedef enum {
-    AOV_CODE_NONE = 0,         /* no hit: the background */
-    AOV_CODE_SUSTAIN = 1,      /* hst */
-    AOV_CODE_SELF_SHADOW = 2,  /* hst */
-    AOV_CODE_VOLUME = 3,       /* hst, volume */
-    AOV_CODE_CONVENTIONAL = 4, /* the shadow ray: conventional, cache on a miss, hst, volume */
-    AOV_CODE_CACHE_HIT = 5,    /* cache */
-    AOV_CODE_FACES_AWAY = 6,   /* the surface faces away from the light: no method decided */
-    AOV_CODE_UNTESTED = 7,     /* no test: shadows off (+Q3 or below, --shadows none), a
-                                * shadowless light, a light adding nothing there */
-    AOV_NCODES
-} AovCode;
-
-/* The codes as one line, "0 none, 1 sustain, ...", for the EXR header. */
-extern const char aov_code_legend[];
-
 /* Parses "Z,N,shadow" or "all" into a set of groups. Returns 0, or -1 with
  * a message naming the valid groups. */
 int aov_parse(const char *list, unsigned *groups, char *err, int errlen);
 
-/* The channels of a render, as planes (image.h's ImageChannel). */
+/* The channels of a render, as planes (image_buffer.h's ImageChannel). */
 typedef struct AovImage {
     unsigned groups;
     int width, height, nlights;
@@ -77,39 +58,8 @@ typedef struct AovImage {
 int aov_image_alloc(AovImage *a, unsigned groups, int width, int height, int nlights, int exr_float);
 void aov_image_free(AovImage *a);
 
-/* What one light did at the primary hit. */
-typedef struct {
-    float visibility;
-    uint32_t code;
-    float depth;
-} AovLight;
-
-/* One pixel's record, filled while it is traced (one per render thread). */
-typedef struct AovPixel {
-    int hit;
-    double z;
-    Vec3 n, p;
-    double loss[3];
-    AovLight *light;
-    int nlights;
-    int shadows_off;            /* --shadows none: every light is untested */
-    uint64_t shadow_tests, rays; /* counters when the pixel began */
-} AovPixel;
-
-int aov_pixel_init(AovPixel *px, int nlights, int shadows_off);
-void aov_pixel_free(AovPixel *px);
-void aov_pixel_begin(AovPixel *px, const RenderStats *s);
-/* Stores the pixel (x, y) into the image; s: the counters now. */
-void aov_pixel_end(AovPixel *px, const RenderStats *s, AovImage *img, int x, int y);
-
-/* The primary hit: its distance along the camera ray, point and normal. */
-void aov_record_hit(AovPixel *px, double t, Vec3 point, Vec3 normal);
-/* A light at the primary hit. */
-void aov_record_light(AovPixel *px, int light, AovCode code, double visibility, int depth);
-/* A light's share of the shading without and with its shadow. */
-void aov_record_loss(AovPixel *px, const double unshadowed[3], const double shadowed[3]);
-
-/* The code for a shadow method's sub-scheme (ShadowScheme). */
-AovCode aov_code_of_scheme(int scheme);
+/* Stores pixel (x, y)'s record into the planes; shadow_tests and rays: the
+ * thread's counters now (aov_pixel_begin had them when the pixel began). */
+void aov_image_store(AovImage *a, const AovPixel *px, uint64_t shadow_tests, uint64_t rays, int x, int y);
 
 #endif

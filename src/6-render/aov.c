@@ -1,15 +1,10 @@
-/* Analysis channels: the groups, the planes, and one pixel's record. */
+/* Analysis channels: the groups and the planes. */
 #include "aov.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include "shadow.h"
-
-const char aov_code_legend[] = "0 none (no hit), 1 sustain, 2 self-shadow, 3 volume, 4 conventional, 5 cache hit, "
-                               "6 faces away (not tested), 7 untested (shadows off, shadowless or dark light)";
 
 static const char *const group_names[AOV_NGROUPS] = { "Z", "N", "P", "shadow", "hst", "depth", "cost" };
 
@@ -37,18 +32,6 @@ int aov_parse(const char *list, unsigned *groups, char *err, int errlen)
         if (s[n] == '\0')
             return 0;
         s += n + 1;
-    }
-}
-
-AovCode aov_code_of_scheme(int scheme)
-{
-    switch (scheme) {
-    case SCHEME_SUSTAIN: return AOV_CODE_SUSTAIN;
-    case SCHEME_SELF_SHADOW: return AOV_CODE_SELF_SHADOW;
-    case SCHEME_VOLUME: return AOV_CODE_VOLUME;
-    case SCHEME_CONVENTIONAL: return AOV_CODE_CONVENTIONAL;
-    case SCHEME_CACHE_HIT: return AOV_CODE_CACHE_HIT;
-    default: return AOV_CODE_UNTESTED;
     }
 }
 
@@ -132,76 +115,6 @@ void aov_image_free(AovImage *a)
     a->nchannels = 0;
 }
 
-/* ---- one pixel ------------------------------------------------------------ */
-
-int aov_pixel_init(AovPixel *px, int nlights, int shadows_off)
-{
-    memset(px, 0, sizeof *px);
-    px->nlights = nlights;
-    px->shadows_off = shadows_off;
-    px->light = calloc((size_t)(nlights > 0 ? nlights : 1), sizeof *px->light);
-    return px->light ? 0 : -1;
-}
-
-void aov_pixel_free(AovPixel *px)
-{
-    free(px->light);
-    px->light = NULL;
-}
-
-static uint64_t shadow_tests(const RenderStats *s)
-{
-    return s->shadow_volume_tests + s->shadow_polygon_tests;
-}
-
-static uint64_t rays(const RenderStats *s)
-{
-    return s->camera_rays + s->reflected_rays + s->refracted_rays + s->transmitted_rays + s->shadow_rays;
-}
-
-void aov_pixel_begin(AovPixel *px, const RenderStats *s)
-{
-    px->hit = 0;
-    px->z = INFINITY;
-    px->n = px->p = v3(0, 0, 0);
-    px->loss[0] = px->loss[1] = px->loss[2] = 0.0;
-    for (int i = 0; i < px->nlights; i++) {
-        px->light[i].visibility = 0.0f;
-        px->light[i].code = AOV_CODE_NONE;
-        px->light[i].depth = -1.0f;
-    }
-    px->shadow_tests = shadow_tests(s);
-    px->rays = rays(s);
-}
-
-void aov_record_hit(AovPixel *px, double t, Vec3 point, Vec3 normal)
-{
-    px->hit = 1;
-    px->z = t;
-    px->p = point;
-    px->n = normal;
-}
-
-void aov_record_light(AovPixel *px, int light, AovCode code, double visibility, int depth)
-{
-    if (light < 0 || light >= px->nlights)
-        return;
-    if (px->shadows_off && code != AOV_CODE_FACES_AWAY) {
-        code = AOV_CODE_UNTESTED;
-        visibility = 1.0;
-        depth = -1;
-    }
-    px->light[light].code = (uint32_t)code;
-    px->light[light].visibility = (float)visibility;
-    px->light[light].depth = (float)depth;
-}
-
-void aov_record_loss(AovPixel *px, const double unshadowed[3], const double shadowed[3])
-{
-    for (int k = 0; k < 3; k++)
-        px->loss[k] += unshadowed[k] - shadowed[k];
-}
-
 static void put_float(AovImage *a, int c, size_t i, double v)
 {
     ((float *)a->planes)[(size_t)c * (size_t)a->width * (size_t)a->height + i] = (float)v;
@@ -213,7 +126,7 @@ static void put_uint(AovImage *a, int c, size_t i, uint64_t v)
         v > UINT32_MAX ? UINT32_MAX : (uint32_t)v;
 }
 
-void aov_pixel_end(AovPixel *px, const RenderStats *s, AovImage *a, int x, int y)
+void aov_image_store(AovImage *a, const AovPixel *px, uint64_t shadow_tests, uint64_t rays, int x, int y)
 {
     size_t i = (size_t)y * (size_t)a->width + (size_t)x;
     if (a->z >= 0)
@@ -240,7 +153,7 @@ void aov_pixel_end(AovPixel *px, const RenderStats *s, AovImage *a, int x, int y
         for (int k = 0; k < 3; k++)
             put_float(a, a->loss + k, i, px->loss[k]);
     if (a->cost >= 0) {
-        put_uint(a, a->cost, i, shadow_tests(s) - px->shadow_tests);
-        put_uint(a, a->cost + 1, i, rays(s) - px->rays);
+        put_uint(a, a->cost, i, shadow_tests - px->shadow_tests);
+        put_uint(a, a->cost + 1, i, rays - px->rays);
     }
 }

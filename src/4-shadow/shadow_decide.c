@@ -1,0 +1,74 @@
+/* Timed, counted and verified shadow decisions (shadow_decide.h). */
+#include "shadow_decide.h"
+
+#include "clock.h"
+#include "shadow_reference.h"
+
+/* Shadow-testing time is estimated from every 8th decision, timed and
+ * scaled: reading the clock around each one would cost as much as a cheap
+ * decision (sustain) itself, and would inflate every method's figure. The
+ * monotonic clock is read in user space (vDSO); the thread CPU clock would
+ * be a system call. */
+#define SHADOW_TIMING_STRIDE 8
+
+static inline double timer_start(ShadowContext *ctx)
+{
+    return ctx->shadow_timer++ % SHADOW_TIMING_STRIDE == 0 ? clock_wall() : -1.0;
+}
+
+static inline void timer_stop(ShadowContext *ctx, double t0)
+{
+    if (t0 >= 0.0)
+        ctx->stats.shadow_seconds += SHADOW_TIMING_STRIDE * (clock_wall() - t0);
+}
+
+/* --verify-shadows: the shadow ray's answer beside the method's;
+ * --verify-reference: and the long-double reference's beside both. */
+static void verify(ShadowContext *ctx, const ShadowQuery *q, RGB got)
+{
+    int scheme = ctx->last_scheme;
+    RGB want;
+    /* The check's own work is not the method's: its counts are put back. */
+    RayCounters keep_rays = ctx->tracer.stats;
+    ShadowCounters keep = ctx->stats;
+    shadow_conventional_test(ctx, q, &want);
+    ctx->tracer.stats = keep_rays;
+    ctx->stats = keep;
+    ctx->stats.shadow_verified++;
+    if (want.r != got.r || want.g != got.g || want.b != got.b) {
+        ctx->stats.shadow_disagreements++;
+        ctx->stats.shadow_disagreements_by_scheme[scheme]++;
+    }
+    if (ctx->verify > 1) {
+        /* The verdicts compared: is any light taken away? */
+        const World *w = ctx->tracer.world;
+        RefAnswer ref = shadow_reference(w, q->surface, &w->lights[q->light], ctx->reference_eps);
+        int got_blocked = got.r != 1.0 || got.g != 1.0 || got.b != 1.0;
+        int ray_blocked = want.r != 1.0 || want.g != 1.0 || want.b != 1.0;
+        if (ref == REF_TIE)
+            ctx->stats.reference_ties++;
+        else {
+            ctx->stats.reference_wrong += got_blocked != (ref == REF_BLOCKED);
+            ctx->stats.reference_ray_wrong += ray_blocked != (ref == REF_BLOCKED);
+        }
+    }
+    ctx->last_scheme = scheme;
+}
+
+void shadow_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *through)
+{
+    double t0 = timer_start(ctx);
+    ctx->method->test(ctx, q, through);
+    timer_stop(ctx, t0);
+    ctx->stats.shadow_queries++;
+    if (ctx->verify)
+        verify(ctx, q, *through);
+}
+
+void shadow_decide_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away)
+{
+    double t0 = timer_start(ctx);
+    ctx->last_scheme = SCHEME_NONE;
+    ctx->method->skip(ctx, q, faces_away);
+    timer_stop(ctx, t0);
+}
