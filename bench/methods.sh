@@ -28,7 +28,7 @@ variants="conventional cache volume hst hst:auto:off hst:per-point"
     echo "all methods of a scene interleaved in one session; the split (preprocessing incl. silhouettes,"
     echo "shadow-polygon registration and the cost-model calibration; shadow testing incl. filling shadow"
     echo "buckets; others) is the median of 5 runs of \`--stats-json\`. Ratios are to \`conventional\`."
-    echo "Shadow-testing time is estimated by timing every 8th decision (see src/shade.c)."
+    echo "Shadow-testing time is estimated by timing every 8th decision (see src/4-shadow/shadow_decide.c)."
     echo
 } >"$out"
 for scene in "$src"/scenes/*.pov; do

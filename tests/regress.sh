@@ -5,7 +5,7 @@
 # (RMSE <= 0.01, pixels off by > 0.02 <= 1%), and hstrace's shadow mask
 # (+Q3 vs +Q4) against POV-Ray's (<= 0.1% of the pixels disagree, and only
 # at shadow edges or silhouettes), both by `hstrace compare` with POV-Ray's
-# renders as A and hstrace's as B (src/mask_compare.h has the exact rules
+# renders as A and hstrace's as B (src/8-tools/mask_compare.h has the exact rules
 # of the masks). The hard cases are held to the rule of the hard-case issue: the
 # masks agree except at edges, however many edge pixels there are (they are
 # built to put ties on pixel centres); their full-image figures are printed

@@ -145,7 +145,7 @@ static const char scene_text[] =
     "polygon { 5, <-2,-2,-4>, <2,-2,-4>, <2,0,-4>, <-2,0,-4>, <-2,-2,-4>\n"
     "  pigment { color rgb 1 transmit 0.5 } }\n";
 
-/* POV-Ray's pixel centres (render.c's camera_ray, written out again):
+/* POV-Ray's pixel centres (camera.c's camera_ray, written out again):
  * x0 = (x + 0.5)/w - 0.5, y0 = ((h - 1) - (y - 0.5))/h - 0.5. */
 static void screen(int x, int y, double *x0, double *y0)
 {
@@ -316,7 +316,7 @@ static void check_threads(const char *method)
 
 /* ---- shadow.L<i> against the +Q3/+Q4 mask method ----------------------------- */
 
-#define MASK_EPSILON 2e-3 /* src/mask_compare.c's threshold of a mask pixel */
+#define MASK_EPSILON 2e-3 /* src/8-tools/mask_compare.c's threshold of a mask pixel */
 
 static void check_masks(const char *name)
 {
