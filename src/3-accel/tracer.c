@@ -12,6 +12,7 @@ void ray_counters_add(RayCounters *t, const RayCounters *p)
     t->polygon_hits += p->polygon_hits;
     t->plane_tests += p->plane_tests;
     t->cells_visited += p->cells_visited;
+    t->nodes_visited += p->nodes_visited;
 }
 
 int tracer_init(Tracer *t, const World *w, const Grid *g)
@@ -94,18 +95,153 @@ static int inside_box(Vec3 lo, Vec3 hi, Vec3 p)
 
 static int material_hidden(const Material *m, unsigned hide)
 {
-    return ((hide & HIDE_NO_IMAGE) && m->no_image) || ((hide & HIDE_NO_REFLECTION) && m->no_reflection);
+    return ((hide & HIDE_NO_IMAGE) && m->no_image) || ((hide & HIDE_NO_REFLECTION) && m->no_reflection) ||
+           ((hide & HIDE_NO_SHADOW) && m->no_shadow);
+}
+
+void tracer_use_bvh(Tracer *t, const Bvh *bvh)
+{
+    t->bvh = bvh;
+}
+
+/* Takes polygon pi's hit at t when it is nearer than the best so far, or as
+ * near and of a lower index: the rule for exact ties, so that the answer
+ * does not depend on the order the polygons were tested in. */
+static inline void take_nearer(Hit *hit, double *best, uint32_t pi, double t)
+{
+    if (hit->kind == HIT_NONE || t < *best || (int)pi < hit->index) {
+        *best = t;
+        hit->kind = HIT_POLYGON;
+        hit->index = (int)pi;
+    }
+}
+
+/* The farthest distance a polygon test may still report: below the best so
+ * far, or at it (for a tie), and before the plane (which wins ties). */
+static inline double test_limit(const Hit *hit, double best, double plane_t)
+{
+    return hit->kind == HIT_NONE ? plane_t : nextafter(best, HUGE_VAL);
+}
+
+/* The nearest polygon by the grid: cell by cell, a hit inside a cell
+ * ending the walk. */
+static void nearest_in_grid(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double plane_t, int exclude, Hit *hit,
+                            double *best)
+{
+    const World *w = tr->world;
+    const Grid *g = tr->grid;
+    GridWalk walk;
+    if (w->npolygons == 0 || !grid_walk_begin(g, org, dir, 0.0, plane_t, &walk))
+        return;
+    uint32_t id = trace_new_segment(tr);
+    RayFrame frame = ray_frame(org, dir);
+    if (exclude >= 0)
+        tr->stamp[exclude] = id;
+    do {
+        tr->stats.cells_visited++;
+        int c = grid_cell_index(g, walk.cell);
+        for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
+            uint32_t pi = g->items[k];
+            if (!bucket_admit(tr, id, pi))
+                continue;
+            if (tr->hide && material_hidden(&w->materials[w->polygons[pi].material], tr->hide))
+                continue;
+            tr->stats.polygon_tests++;
+            double t = intersect_polygon_in(w, &w->polygons[pi], &frame, test_limit(hit, *best, plane_t));
+            if (t > tmin)
+                take_nearer(hit, best, pi, t);
+        }
+        /* A hit inside this cell cannot be beaten by later cells. */
+        if (hit->kind != HIT_NONE && *best <= grid_walk_exit(&walk))
+            break;
+        if (hit->kind != HIT_NONE && *best < walk.t_end)
+            walk.t_end = *best;
+    } while (grid_walk_next(g, &walk));
+}
+
+/* The nearest polygon by the hierarchy: nearer child first, boxes beyond
+ * the best hit so far skipped. */
+static void nearest_in_bvh(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double plane_t, int exclude, Hit *hit,
+                           double *best)
+{
+    const World *w = tr->world;
+    const Bvh *b = tr->bvh;
+    if (b->nnodes == 0)
+        return;
+    RayFrame frame = ray_frame(org, dir);
+    BvhRay br = bvh_ray(org, dir);
+    uint32_t stack[BVH_MAX_DEPTH];
+    int sp = 0;
+    uint32_t ni = 0;
+    for (;;) {
+        const BvhNode *n = &b->nodes[ni];
+        double enter;
+        tr->stats.nodes_visited++;
+        if (bvh_node_hit(n, &br, 0.0, hit->kind == HIT_NONE ? plane_t : *best, &enter)) {
+            if (n->count == 0) {
+                /* Nearer child first: the one on the side the ray comes from. */
+                uint32_t first = ni + 1, second = n->index;
+                if (br.neg[n->axis]) {
+                    uint32_t t = first;
+                    first = second;
+                    second = t;
+                }
+                stack[sp++] = second;
+                ni = first;
+                continue;
+            }
+            for (uint32_t k = n->index; k < n->index + n->count; k++) {
+                uint32_t pi = b->items[k];
+                if ((int)pi == exclude)
+                    continue;
+                if (tr->hide && material_hidden(&w->materials[w->polygons[pi].material], tr->hide))
+                    continue;
+                tr->stats.polygon_tests++;
+                double t = intersect_polygon_in(w, &w->polygons[pi], &frame, test_limit(hit, *best, plane_t));
+                if (t > tmin)
+                    take_nearer(hit, best, pi, t);
+            }
+        }
+        if (sp == 0)
+            break;
+        ni = stack[--sp];
+    }
+}
+
+/* The cells a segment pierces, recorded for the shadow buckets: those the
+ * grid's own nearest-hit walk would visit (up to the cell holding the hit). */
+static void record_cells(Tracer *tr, Vec3 org, Vec3 dir, double plane_t, const Hit *hit, double best)
+{
+    const Grid *g = tr->grid;
+    GridWalk walk;
+    tr->segment_ncells = 0;
+    int overflow = 0;
+    if (grid_walk_begin(g, org, dir, 0.0, plane_t, &walk)) {
+        int polygon = hit->kind == HIT_POLYGON;
+        if (polygon && best < walk.t_end)
+            walk.t_end = best;
+        do {
+            if (tr->segment_ncells < tr->segment_cells_cap)
+                tr->segment_cells[tr->segment_ncells++] = (uint32_t)grid_cell_index(g, walk.cell);
+            else
+                overflow = 1; /* cannot happen with 3DDDA; distrust the bucket if it did */
+            if (polygon && best <= grid_walk_exit(&walk))
+                break;
+        } while (grid_walk_next(g, &walk));
+    }
+    /* The walk covered the whole segment only when its ends are in the box. */
+    tr->segment_in_box = !overflow && hit->kind != HIT_NONE && inside_box(tr->record_min, tr->record_max, hit->point) &&
+                         inside_box(tr->record_min, tr->record_max, org);
 }
 
 int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit)
 {
     const World *w = tr->world;
-    const Grid *g = tr->grid;
     double tmin = trace_min_distance(org);
     hit->kind = HIT_NONE;
 
-    /* Planes first: they bound the grid walk, and on an exact tie (a box
-     * resting on a plane) the plane wins, as it does in POV-Ray, whose
+    /* Planes first: they bound the polygon query, and on an exact tie (a
+     * box resting on a plane) the plane wins, as it does in POV-Ray, whose
      * bounding tree meets the infinite plane before the finite object. */
     double plane_t = tmax;
     int plane = -1;
@@ -123,50 +259,17 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     }
 
     double best = HUGE_VAL;
-    GridWalk walk;
-    int gather = tr->segment_cells != NULL, overflow = 0;
-    if (gather)
-        tr->segment_ncells = 0;
-    if ((w->npolygons > 0 || gather) && grid_walk_begin(g, org, dir, 0.0, plane_t, &walk)) {
-        uint32_t id = trace_new_segment(tr);
-        RayFrame frame = ray_frame(org, dir);
-        int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
-        if (exclude >= 0)
-            tr->stamp[exclude] = id;
-        do {
-            tr->stats.cells_visited++;
-            int c = grid_cell_index(g, walk.cell);
-            if (gather) {
-                if (tr->segment_ncells < tr->segment_cells_cap)
-                    tr->segment_cells[tr->segment_ncells++] = (uint32_t)c;
-                else
-                    overflow = 1; /* cannot happen with 3DDDA; distrust the bucket if it did */
-            }
-            for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
-                uint32_t pi = g->items[k];
-                if (!bucket_admit(tr, id, pi))
-                    continue;
-                if (tr->hide && material_hidden(&w->materials[w->polygons[pi].material], tr->hide))
-                    continue;
-                tr->stats.polygon_tests++;
-                /* Only hits before the best so far are looked at. */
-                double t = intersect_polygon_in(w, &w->polygons[pi], &frame, best < plane_t ? best : plane_t);
-                if (t > tmin) {
-                    best = t;
-                    hit->kind = HIT_POLYGON;
-                    hit->index = (int)pi;
-                }
-            }
-            /* A hit inside this cell cannot be beaten by later cells. */
-            if (best <= grid_walk_exit(&walk))
-                break;
-            if (best < walk.t_end)
-                walk.t_end = best;
-        } while (grid_walk_next(g, &walk));
-    }
+    int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
+    if (tr->bvh)
+        nearest_in_bvh(tr, org, dir, tmin, plane_t, exclude, hit, &best);
+    else
+        nearest_in_grid(tr, org, dir, tmin, plane_t, exclude, hit, &best);
     if (hit->kind == HIT_NONE) {
-        if (plane < 0)
+        if (plane < 0) {
+            if (tr->segment_cells)
+                tr->segment_in_box = 0;
             return 0;
+        }
         hit->kind = HIT_PLANE;
         hit->index = plane;
         best = plane_t;
@@ -175,9 +278,75 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     }
     hit->t = best;
     hit->point = v3_madd(org, dir, best);
-    /* The walk covered the whole segment only when its end is in the box. */
-    if (gather)
-        tr->segment_in_box = !overflow && inside_box(tr->record_min, tr->record_max, hit->point) &&
-                            inside_box(tr->record_min, tr->record_max, org);
+    if (tr->segment_cells)
+        record_cells(tr, org, dir, plane_t, hit, best);
     return 1;
+}
+
+int trace_segment_hits(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double tmax, int exclude, unsigned hide,
+                       TraceHitVisitor visit, void *user, uint64_t *tests)
+{
+    const World *w = tr->world;
+    if (w->npolygons == 0)
+        return 0;
+    RayFrame frame = ray_frame(org, dir);
+    if (tr->bvh) {
+        const Bvh *b = tr->bvh;
+        BvhRay br = bvh_ray(org, dir);
+        uint32_t stack[BVH_MAX_DEPTH];
+        int sp = 0;
+        uint32_t ni = 0;
+        for (;;) {
+            const BvhNode *n = &b->nodes[ni];
+            double enter;
+            tr->stats.nodes_visited++;
+            if (bvh_node_hit(n, &br, 0.0, tmax, &enter)) {
+                if (n->count == 0) {
+                    uint32_t first = ni + 1, second = n->index;
+                    if (br.neg[n->axis]) {
+                        uint32_t t = first;
+                        first = second;
+                        second = t;
+                    }
+                    stack[sp++] = second;
+                    ni = first;
+                    continue;
+                }
+                for (uint32_t k = n->index; k < n->index + n->count; k++) {
+                    uint32_t pi = b->items[k];
+                    if ((int)pi == exclude || (hide && material_hidden(&w->materials[w->polygons[pi].material], hide)))
+                        continue;
+                    ++*tests;
+                    double t = intersect_polygon_in(w, &w->polygons[pi], &frame, tmax); /* negative at tmax or beyond */
+                    if (t > tmin && visit(user, pi, t))
+                        return 1;
+                }
+            }
+            if (sp == 0)
+                return 0;
+            ni = stack[--sp];
+        }
+    }
+    const Grid *g = tr->grid;
+    GridWalk walk;
+    if (!grid_walk_begin(g, org, dir, 0.0, tmax, &walk))
+        return 0;
+    uint32_t id = trace_new_segment(tr);
+    if (exclude >= 0)
+        tr->stamp[exclude] = id;
+    do {
+        int c = grid_cell_index(g, walk.cell);
+        for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
+            uint32_t pi = g->items[k];
+            if (!bucket_admit(tr, id, pi))
+                continue;
+            if (hide && material_hidden(&w->materials[w->polygons[pi].material], hide))
+                continue;
+            ++*tests;
+            double t = intersect_polygon_in(w, &w->polygons[pi], &frame, tmax);
+            if (t > tmin && visit(user, pi, t))
+                return 1;
+        }
+    } while (grid_walk_next(g, &walk));
+    return 0;
 }

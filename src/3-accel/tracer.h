@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "bvh.h"
 #include "grid.h"
 #include "world.h"
 
@@ -19,14 +20,16 @@ typedef struct {
     Vec3 point;
 } Hit;
 
-/* Objects a ray passes through (Tracer.hide): no_image ones for
- * image rays, no_reflection ones for reflection rays. */
-enum { HIDE_NO_IMAGE = 1u, HIDE_NO_REFLECTION = 2u };
+/* Objects a ray passes through (Tracer.hide, trace_segment_hits): no_image
+ * ones for image rays, no_reflection ones for reflection rays, no_shadow
+ * ones for shadow rays. */
+enum { HIDE_NO_IMAGE = 1u, HIDE_NO_REFLECTION = 2u, HIDE_NO_SHADOW = 4u };
 
 /* What the ray queries did, for the statistics (summed over threads). */
 typedef struct {
     uint64_t polygon_tests, polygon_hits, plane_tests;
-    uint64_t cells_visited;
+    uint64_t cells_visited;       /* grid cells walked (3DDDA) */
+    uint64_t nodes_visited;       /* hierarchy nodes whose box was tested */
 } RayCounters;
 
 void ray_counters_add(RayCounters *total, const RayCounters *part);
@@ -34,6 +37,9 @@ void ray_counters_add(RayCounters *total, const RayCounters *part);
 typedef struct {
     const World *world;
     const Grid *grid;
+    /* The hierarchy the polygon queries use, or NULL: then they walk the
+     * grid (the reference path, which tests compare the hierarchy with). */
+    const Bvh *bvh;
     unsigned hide;             /* HIDE_* for the next trace_nearest, 0 otherwise */
     /* The bucket: stamp[i] == ray_id marks polygon i as already tested by
      * the current segment, so it is tested once however many cells hold it. */
@@ -57,6 +63,8 @@ int tracer_init(Tracer *t, const World *w, const Grid *g);
 /* From now on, every trace_nearest records the cells it pierces;
  * segment_in_box tells whether both ends lay in [box_min, box_max]. */
 int tracer_record_cells(Tracer *t, Vec3 box_min, Vec3 box_max);
+/* Polygon queries through the hierarchy from now on (NULL: the grid). */
+void tracer_use_bvh(Tracer *t, const Bvh *bvh);
 void tracer_free(Tracer *t);
 
 /* The next mailbox id for a stamp array of n entries (cleared when the id
@@ -99,6 +107,15 @@ static inline double trace_min_distance(Vec3 org)
  * surface the segment starts on (excluded, as the paper's bucket rule says),
  * kind HIT_NONE for the camera. */
 int trace_nearest(Tracer *t, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit);
+
+/* Every polygon a segment meets, for the shadow ray: visit(user, polygon, t)
+ * is called for each polygon met at t in (tmin, tmax), in no particular
+ * order, `exclude` (-1: none) and the polygons `hide` names left out; it
+ * returns 1 to stop. Returns 1 when a visit stopped it. *tests counts the
+ * polygons tested. */
+typedef int (*TraceHitVisitor)(void *user, uint32_t polygon, double t);
+int trace_segment_hits(Tracer *t, Vec3 org, Vec3 dir, double tmin, double tmax, int exclude, unsigned hide,
+                       TraceHitVisitor visit, void *user, uint64_t *tests);
 
 /* Does the hit point lie (within tol) on a polygon besides its own: on the
  * border of its own (so on the neighbours sharing that edge or vertex), or

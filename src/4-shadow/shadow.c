@@ -24,6 +24,12 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
         return -1;
     for (int i = 0; i < nl; i++)
         ctx->light_cache[i] = -1;
+    int see_through = 1;
+    for (int i = 0; i < w->npolygons; i++)
+        see_through += !w->materials[w->polygons[i].material].opaque;
+    ctx->filtered = malloc(sizeof *ctx->filtered * (size_t)see_through);
+    if (!ctx->filtered)
+        return -1;
     if (volumes) {
         ctx->volumes = volumes;
         int most = 1;
@@ -45,10 +51,12 @@ void shadow_context_free(ShadowContext *ctx)
 {
     tracer_free(&ctx->tracer);
     free(ctx->light_cache);
+    free(ctx->filtered);
     free(ctx->bucket);
     free(ctx->sp_stamp);
     free(ctx->states);
     ctx->light_cache = NULL;
+    ctx->filtered = NULL;
     ctx->bucket = NULL;
     ctx->sp_stamp = NULL;
     ctx->states = NULL;

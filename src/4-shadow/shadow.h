@@ -88,6 +88,12 @@ typedef struct {
 
 void shadow_counters_add(ShadowCounters *total, const ShadowCounters *part);
 
+/* A see-through polygon a shadow ray met, at distance t. */
+typedef struct {
+    double t;
+    uint32_t polygon;
+} FilteredHit;
+
 /* A render thread's shadow testing: its tracer (the ray queries and their
  * mailbox), the method, and the methods' per-thread state. */
 typedef struct ShadowContext {
@@ -99,6 +105,8 @@ typedef struct ShadowContext {
     int last_filtered;         /* transparent polygons the last shadow ray passed */
     unsigned shadow_timer;     /* decisions so far, for timing every 8th */
     int *light_cache;          /* cache method: last opaque blocker per light, or -1 */
+    FilteredHit *filtered;     /* the shadow ray's see-through polygons, one slot for each of the world's */
+    int nfiltered;
     int verify;                /* 1: check every decision against the shadow ray (--verify-shadows);
                                   2: and against the long-double reference (--verify-reference) */
     long double reference_eps; /* the reference's margin of ties */

@@ -1,8 +1,11 @@
 /* The conventional (Whitted) shadow test: a shadow ray from the shading
- * point toward the light, walked cell by cell through the grid, stopped by
+ * point toward the light, through the hierarchy (or the grid), stopped by
  * the first opaque polygon. Transparent polygons on the way filter the light
- * (POV-Ray multiplies rgb*filter + transmit of each), in any order. */
+ * (POV-Ray multiplies rgb*filter + transmit of each), in the order the light
+ * passes them. */
 #include "shadow.h"
+
+#include <stdlib.h>
 
 #include "intersect.h"
 #include "pigment.h"
@@ -42,48 +45,74 @@ int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     return 0;
 }
 
+/* What a shadow ray has met so far: transparent polygons are kept, to be
+ * folded in the order the light passes them (by distance, then index), so
+ * that the colour does not depend on the order the query found them in. */
+typedef struct {
+    ShadowContext *ctx;
+    const ShadowQuery *q;
+    int blocker;          /* the opaque polygon that blocked, or -1 */
+} ShadowWalk;
+
+static int meet_polygon(void *user, uint32_t pi, double t)
+{
+    ShadowWalk *sw = user;
+    ShadowContext *ctx = sw->ctx;
+    const World *w = ctx->tracer.world;
+    const Polygon *p = &w->polygons[pi];
+    /* A polygon edge-on to the light (the light in its plane) casts no
+     * shadow: the ray can only graze it, or meet it at the light itself.
+     * The same rule as the shadow volumes'. */
+    if (shadow_light_side(p, &w->lights[sw->q->light], grid_tolerance(ctx->tracer.grid)) == 0)
+        return 0;
+    const Material *m = &w->materials[p->material];
+    if (m->opaque) {
+        sw->blocker = (int)pi;
+        return 1;
+    }
+    /* Room for every see-through polygon of the world (shadow_context_init),
+     * each met at most once. */
+    ctx->filtered[ctx->nfiltered].t = t;
+    ctx->filtered[ctx->nfiltered].polygon = pi;
+    ctx->nfiltered++;
+    return 0;
+}
+
+static int by_distance(const void *a, const void *b)
+{
+    const FilteredHit *x = a, *y = b;
+    if (x->t != y->t)
+        return x->t < y->t ? -1 : 1;
+    return x->polygon < y->polygon ? -1 : x->polygon > y->polygon;
+}
+
 int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->tracer.world;
-    const Grid *g = ctx->tracer.grid;
     ctx->stats.shadow_rays++;
     double tmin = trace_min_distance(q->point);
-    double tmax = q->distance;
-    GridWalk walk;
-    if (w->npolygons == 0 || !grid_walk_begin(g, q->point, q->to_light, 0.0, tmax, &walk))
-        return 0;
-    uint32_t id = trace_new_segment(&ctx->tracer);
-    RayFrame frame = ray_frame(q->point, q->to_light);
-    if (q->surface->kind == HIT_POLYGON)
-        ctx->tracer.stamp[q->surface->index] = id;
-    do {
-        int c = grid_cell_index(g, walk.cell);
-        for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
-            uint32_t pi = g->items[k];
-            if (!bucket_admit(&ctx->tracer, id, pi))
-                continue;
-            const Polygon *p = &w->polygons[pi];
-            const Material *m = &w->materials[p->material];
-            if (m->no_shadow)
-                continue;
-            ctx->stats.shadow_polygon_tests++;
-            double t = intersect_polygon_in(w, p, &frame, tmax); /* negative at tmax or beyond */
-            if (t > tmin) {
-                /* A polygon edge-on to the light (the light in its plane)
-                 * casts no shadow: the ray can only graze it, or meet it at
-                 * the light itself. The same rule as the shadow volumes'. */
-                if (shadow_light_side(p, &w->lights[q->light], grid_tolerance(g)) == 0)
-                    continue;
-                if (pass_through(w, m, (int)pi, q, t, light)) {
-                    /* a patterned see-through polygon blocks only where it is opaque:
-                     * not one for the cache, which takes a hit anywhere as blocked */
-                    ctx->last_blocker = m->opaque ? (int)pi : -1;
-                    return 1;
-                }
-                ctx->last_filtered++;
-            }
+    int exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
+    ShadowWalk sw = { ctx, q, -1 };
+    ctx->nfiltered = 0;
+    if (trace_segment_hits(&ctx->tracer, q->point, q->to_light, tmin, q->distance, exclude, HIDE_NO_SHADOW,
+                           meet_polygon, &sw, &ctx->stats.shadow_polygon_tests)) {
+        light->r = light->g = light->b = 0.0;
+        ctx->last_blocker = sw.blocker;
+        return 1;
+    }
+    if (ctx->nfiltered > 1)
+        qsort(ctx->filtered, (size_t)ctx->nfiltered, sizeof *ctx->filtered, by_distance);
+    for (int i = 0; i < ctx->nfiltered; i++) {
+        uint32_t pi = ctx->filtered[i].polygon;
+        const Material *m = &w->materials[w->polygons[pi].material];
+        if (pass_through(w, m, (int)pi, q, ctx->filtered[i].t, light)) {
+            /* a patterned see-through polygon blocks only where it is opaque:
+             * not one for the cache, which takes a hit anywhere as blocked */
+            ctx->last_blocker = -1;
+            return 1;
         }
-    } while (grid_walk_next(g, &walk));
+        ctx->last_filtered++;
+    }
     return 0;
 }
 

@@ -108,6 +108,7 @@ static void *worker_main(void *arg)
         atomic_store(&job->failed, 1);
         return NULL;
     }
+    tracer_use_bvh(&ctx.shadow.tracer, opt->bvh);
     PixelCoherence coherence;
     memset(&coherence, 0, sizeof coherence);
     if (opt->pixel_coherence && opt->volumes) {

@@ -15,6 +15,7 @@ typedef struct {
     int threads;              /* >= 1 */
     Quality quality;
     const ShadowMethod *shadow;
+    const Bvh *bvh;           /* the polygon queries' hierarchy; NULL: the grid's walk */
     const struct ShadowVolumes *volumes; /* when the method uses them */
     const struct CostModel *cost;        /* hst's per-point N_th */
     double nth;               /* hst: N_th; negative: per point */

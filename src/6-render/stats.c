@@ -51,9 +51,10 @@ void stats_print(FILE *f, const StatsReport *r)
     fprintf(f, "  rays        camera %llu  reflected %llu  refracted %llu  transmitted %llu\n",
             (unsigned long long)s->camera_rays, (unsigned long long)s->shading.reflected_rays,
             (unsigned long long)s->shading.refracted_rays, (unsigned long long)s->shading.transmitted_rays);
-    fprintf(f, "  tests       ray/polygon %llu (hits %llu)  ray/plane %llu  cells visited %llu\n",
+    fprintf(f, "  tests       ray/polygon %llu (hits %llu)  ray/plane %llu  cells visited %llu  hierarchy nodes %llu\n",
             (unsigned long long)s->rays.polygon_tests, (unsigned long long)s->rays.polygon_hits,
-            (unsigned long long)s->rays.plane_tests, (unsigned long long)s->rays.cells_visited);
+            (unsigned long long)s->rays.plane_tests, (unsigned long long)s->rays.cells_visited,
+            (unsigned long long)s->rays.nodes_visited);
     fprintf(f, "  shadows     queries %llu  shadow rays %llu (blocked %llu)  shadow-ray/polygon tests %llu\n",
             (unsigned long long)s->shadow.shadow_queries, (unsigned long long)s->shadow.shadow_rays,
             (unsigned long long)s->shadow.shadow_blocked, (unsigned long long)s->shadow.shadow_polygon_tests);
@@ -165,9 +166,10 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
     fprintf(f, "  \"rays\": {\"camera\": %llu, \"reflected\": %llu, \"refracted\": %llu, \"transmitted\": %llu},\n",
             (unsigned long long)s->camera_rays, (unsigned long long)s->shading.reflected_rays,
             (unsigned long long)s->shading.refracted_rays, (unsigned long long)s->shading.transmitted_rays);
-    fprintf(f, "  \"tests\": {\"ray_polygon\": %llu, \"ray_polygon_hits\": %llu, \"ray_plane\": %llu, \"cells_visited\": %llu},\n",
+    fprintf(f, "  \"tests\": {\"ray_polygon\": %llu, \"ray_polygon_hits\": %llu, \"ray_plane\": %llu, \"cells_visited\": %llu, \"nodes_visited\": %llu},\n",
             (unsigned long long)s->rays.polygon_tests, (unsigned long long)s->rays.polygon_hits,
-            (unsigned long long)s->rays.plane_tests, (unsigned long long)s->rays.cells_visited);
+            (unsigned long long)s->rays.plane_tests, (unsigned long long)s->rays.cells_visited,
+            (unsigned long long)s->rays.nodes_visited);
     fprintf(f, "  \"shadows\": {\"queries\": %llu, \"shadow_rays\": %llu, \"blocked\": %llu, \"polygon_tests\": %llu,\n",
             (unsigned long long)s->shadow.shadow_queries, (unsigned long long)s->shadow.shadow_rays,
             (unsigned long long)s->shadow.shadow_blocked, (unsigned long long)s->shadow.shadow_polygon_tests);

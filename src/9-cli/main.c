@@ -75,28 +75,48 @@ int main(int argc, char **argv)
         return EXIT_OK;
     }
 
+    /* Everything the render owns, released once at the end (every release
+     * is safe on what was never made). */
+    int status = EXIT_OK;
     char *owned_output = NULL;
+    ColourDisplay *colour = NULL;
+    Scene *scene = NULL;
+    World world;
+    Grid grid;
+    Bvh bvh;
+    ShadowVolumes volumes;
+    CostModel cost;
+    AovImage aov;
+    Provenance prov;
+    memset(&world, 0, sizeof world);
+    memset(&grid, 0, sizeof grid);
+    memset(&bvh, 0, sizeof bvh);
+    memset(&volumes, 0, sizeof volumes);
+    memset(&cost, 0, sizeof cost);
+    memset(&aov, 0, sizeof aov);
+    memset(&prov, 0, sizeof prov);
+
     const char *output = opt.output;
     if (!output && !(output = owned_output = default_output(opt.scene))) {
         fprintf(stderr, "hstrace: out of memory\n");
-        return EXIT_IO;
+        status = EXIT_IO;
+        goto done;
     }
     if (image_format_from_path(output) == IMAGE_FORMAT_UNKNOWN) {
         fprintf(stderr, "hstrace: '%s': unknown image format (use .exr, .png or .ppm)\n", output);
-        free(owned_output);
-        return EXIT_USAGE;
+        status = EXIT_USAGE;
+        goto done;
     }
     if (opt.aov && image_format_from_path(output) != IMAGE_FORMAT_EXR) {
         fprintf(stderr, "hstrace: --aov: '%s': analysis channels need an EXR output (-o FILE.exr)\n", output);
-        free(owned_output);
-        return EXIT_USAGE;
+        status = EXIT_USAGE;
+        goto done;
     }
 
     /* Colour management: OpenColorIO when an option or $OCIO asks for it,
      * else POV-Ray's own encoding. Opened before any work, so that a bad
      * config or name costs nothing. */
     ColourRequest creq = { opt.ocio_config, opt.display, opt.view, opt.colorspace };
-    ColourDisplay *colour = NULL;
     if (colour_requested(&creq)) {
         ColourStatus cs = colour_display_open(&creq, &colour, err, sizeof err);
         int from_env_only = !opt.ocio_config && !opt.display && !opt.view && !opt.colorspace;
@@ -106,8 +126,8 @@ int main(int argc, char **argv)
             fprintf(stderr, "hstrace: warning: $OCIO ignored: %s\n", err);
         } else if (cs != COLOUR_OK) {
             fprintf(stderr, "hstrace: %s\n", err);
-            free(owned_output);
-            return cs == COLOUR_ERR_CONFIG ? EXIT_IO : EXIT_USAGE;
+            status = cs == COLOUR_ERR_CONFIG ? EXIT_IO : EXIT_USAGE;
+            goto done;
         }
     }
 
@@ -141,16 +161,15 @@ int main(int argc, char **argv)
 
     double t = clock_wall();
     ParseError perr;
-    Scene *scene = parse_scene_file(opt.scene, &popt, &perr);
+    scene = parse_scene_file(opt.scene, &popt, &perr);
     if (!scene) {
         if (perr.line > 0)
             fprintf(stderr, "%s:%d:%d: %s\n", perr.file, perr.line, perr.column, perr.message);
         else
             fprintf(stderr, "%s: %s\n", perr.file[0] ? perr.file : opt.scene, perr.message);
         fputs(perr.notes, stderr);
-        colour_display_free(colour);
-        free(owned_output);
-        return perr.is_io ? EXIT_IO : EXIT_SCENE;
+        status = perr.is_io ? EXIT_IO : EXIT_SCENE;
+        goto done;
     }
     report.parse_seconds = clock_wall() - t;
     report.napproximations = scene->napproximations;
@@ -165,57 +184,39 @@ int main(int argc, char **argv)
 
     t = clock_wall();
     double working_gamma = scene_working_gamma(scene);
-    World world;
     WorldError werr;
     if (world_build(&world, scene, &werr)) {
         fprintf(stderr, "hstrace: %s\n", werr.message);
-        scene_free(scene);
-        colour_display_free(colour);
-        free(owned_output);
-        return EXIT_IO;
+        status = EXIT_IO;
+        goto done;
     }
     /* The grid box holds the camera (depth counts start there) and the part
      * of every infinite plane under the geometry, where shadows fall. */
     Vec3 extra[1 + 8 * 16];
     int nextra = grid_extra_points(&world, extra, (int)(sizeof extra / sizeof extra[0]));
-    Grid grid;
     if (grid_build(&grid, &world, opt.grid[0] ? opt.grid : NULL, extra, nextra)) {
         fprintf(stderr, "hstrace: out of memory while building the grid\n");
-        world_free(&world);
-        scene_free(scene);
-        colour_display_free(colour);
-        free(owned_output);
-        return EXIT_IO;
+        status = EXIT_IO;
+        goto done;
     }
     grid_set_tolerance(&grid, opt.tolerance);
+    if (bvh_build(&bvh, &world)) {
+        fprintf(stderr, "hstrace: out of memory while building the hierarchy\n");
+        status = EXIT_IO;
+        goto done;
+    }
     const ShadowMethod *method = shadow_method_find(opt.shadows);
-    ShadowVolumes volumes;
-    memset(&volumes, 0, sizeof volumes);
-    CostModel cost;
-    memset(&cost, 0, sizeof cost);
     int have_volumes = 0;
     if (method->uses_volumes && opt.quality >= 4) {
         double tv = clock_wall();
         const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
-        if (shadow_volumes_build(&volumes, &world, &grid, eye)) {
+        if (shadow_volumes_build(&volumes, &world, &grid, eye) ||
+            shadow_volumes_set_precision(&volumes, (PlanePrecision)opt.plane_precision)) {
             fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
-            grid_free(&grid);
-            world_free(&world);
-            scene_free(scene);
-            colour_display_free(colour);
-            free(owned_output);
-            return EXIT_IO;
+            status = EXIT_IO;
+            goto done;
         }
         have_volumes = 1;
-        if (shadow_volumes_set_precision(&volumes, (PlanePrecision)opt.plane_precision)) {
-            fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
-            shadow_volumes_free(&volumes);
-            grid_free(&grid);
-            world_free(&world);
-            scene_free(scene);
-            free(owned_output);
-            return EXIT_IO;
-        }
         report.volumes_seconds = clock_wall() - tv;
         if (cost_model_calibrate(&cost, &world, &grid, &volumes, opt.width, opt.height) == 0)
             report.cost = &cost;
@@ -236,6 +237,7 @@ int main(int argc, char **argv)
     ropt.threads = opt.threads > 0 ? opt.threads : render_default_threads();
     ropt.quality = quality_from_level(opt.quality);
     ropt.shadow = method;
+    ropt.bvh = &bvh;
     ropt.volumes = have_volumes ? &volumes : NULL;
     ropt.cost = &cost;
     ropt.verify = opt.verify_shadows;
@@ -247,65 +249,52 @@ int main(int argc, char **argv)
     ropt.progress = isatty(STDERR_FILENO);
     report.threads = ropt.threads;
 
-    AovImage aov;
-    memset(&aov, 0, sizeof aov);
     if (opt.aov) {
         if (aov_image_alloc(&aov, opt.aov, opt.width, opt.height, world.nlights, opt.exr_float)) {
             fprintf(stderr, "hstrace: out of memory for the analysis channels\n");
-            if (have_volumes)
-                shadow_volumes_free(&volumes);
-            grid_free(&grid);
-            world_free(&world);
-            scene_free(scene);
-            colour_display_free(colour);
-            free(owned_output);
-            return EXIT_IO;
+            status = EXIT_IO;
+            goto done;
         }
         ropt.aov = &aov;
     }
 
     Image img;
-    int status = EXIT_OK;
-    Provenance prov;
-    memset(&prov, 0, sizeof prov);
     if (render_image(&world, &grid, &ropt, &img, &report.render)) {
         fprintf(stderr, "hstrace: out of memory while rendering\n");
         status = EXIT_IO;
+        goto done;
+    }
+    t = clock_wall();
+    image_decode_working_gamma(&img, working_gamma);
+    ImageWriteOptions wopt;
+    memset(&wopt, 0, sizeof wopt);
+    wopt.exr_float = opt.exr_float;
+    wopt.png_16bit = opt.png16;
+    wopt.display_gamma = 0.0; /* sRGB, as POV-Ray 3.7 writes assumed_gamma 1 scenes */
+    wopt.display = colour;    /* or OpenColorIO's display/view transform */
+    if (colour != NULL) {
+        wopt.have_chromaticities = colour_display_chromaticities(colour, wopt.chromaticities) == 0;
     } else {
-        t = clock_wall();
-        image_decode_working_gamma(&img, working_gamma);
-        ImageWriteOptions wopt;
-        memset(&wopt, 0, sizeof wopt);
-        wopt.exr_float = opt.exr_float;
-        wopt.png_16bit = opt.png16;
-        wopt.display_gamma = 0.0; /* sRGB, as POV-Ray 3.7 writes assumed_gamma 1 scenes */
-        wopt.display = colour;    /* or OpenColorIO's display/view transform */
-        if (colour != NULL) {
-            wopt.have_chromaticities = colour_display_chromaticities(colour, wopt.chromaticities) == 0;
-        } else {
-            wopt.have_chromaticities = 1;
-            memcpy(wopt.chromaticities, colour_rec709_chromaticities, sizeof wopt.chromaticities);
-        }
-        wopt.channels = aov.channels;
-        wopt.nchannels = aov.nchannels;
-        report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */
-        if (image_format_from_path(output) == IMAGE_FORMAT_EXR) {
-            if (provenance_build(&prov, argc, argv, &opt, &report)) {
-                fprintf(stderr, "hstrace: out of memory\n");
-                status = EXIT_IO;
-            }
-            wopt.attributes = prov.attr;
-            wopt.nattributes = prov.n;
-        }
-        if (status == EXIT_OK && image_write(output, &img, &wopt, err, sizeof err)) {
-            fprintf(stderr, "hstrace: %s\n", err);
+        wopt.have_chromaticities = 1;
+        memcpy(wopt.chromaticities, colour_rec709_chromaticities, sizeof wopt.chromaticities);
+    }
+    wopt.channels = aov.channels;
+    wopt.nchannels = aov.nchannels;
+    report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */
+    if (image_format_from_path(output) == IMAGE_FORMAT_EXR) {
+        if (provenance_build(&prov, argc, argv, &opt, &report)) {
+            fprintf(stderr, "hstrace: out of memory\n");
             status = EXIT_IO;
         }
-        report.output_seconds = clock_wall() - t;
-        image_free(&img);
+        wopt.attributes = prov.attr;
+        wopt.nattributes = prov.n;
     }
-    provenance_free(&prov);
-    aov_image_free(&aov);
+    if (status == EXIT_OK && image_write(output, &img, &wopt, err, sizeof err)) {
+        fprintf(stderr, "hstrace: %s\n", err);
+        status = EXIT_IO;
+    }
+    report.output_seconds = clock_wall() - t;
+    image_free(&img);
     report.wall_seconds = clock_wall() - wall0;
     if (status == EXIT_OK && opt.stats) {
         stats_print(stderr, &report);
@@ -320,8 +309,12 @@ int main(int argc, char **argv)
         fprintf(stderr, "hstrace: %s\n", err);
         status = EXIT_IO;
     }
-    if (have_volumes)
-        shadow_volumes_free(&volumes);
+
+done:
+    provenance_free(&prov);
+    aov_image_free(&aov);
+    shadow_volumes_free(&volumes);
+    bvh_free(&bvh);
     grid_free(&grid);
     world_free(&world);
     scene_free(scene);

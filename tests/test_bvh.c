@@ -1,0 +1,361 @@
+/* The hierarchy (bvh.h) against the grid's walk, the reference path it
+ * replaced for the polygon queries: on every scene of scenes/ and
+ * scenes/hard/, and on random triangle soups, the nearest hit of camera
+ * rays, of rays from points on polygons in random directions, and of rays
+ * along the grid's axes is the same polygon at the same distance, bit for
+ * bit; and a segment meets the same polygons at the same distances. Also
+ * the hierarchy's shape: every polygon in exactly one leaf, every box
+ * holding what is below it. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bvh.h"
+#include "camera.h"
+#include "fixtures.h"
+#include "grid.h"
+#include "intersect.h"
+#include "parser.h"
+#include "tap.h"
+#include "tracer.h"
+#include "world.h"
+
+/* ---- the shape ------------------------------------------------------------ */
+
+static int box_holds(const BvhNode *n, Vec3 lo, Vec3 hi)
+{
+    return n->lo[0] <= lo.x && n->lo[1] <= lo.y && n->lo[2] <= lo.z && n->hi[0] >= hi.x && n->hi[1] >= hi.y &&
+           n->hi[2] >= hi.z;
+}
+
+static int node_holds(const BvhNode *outer, const BvhNode *inner)
+{
+    for (int a = 0; a < 3; a++)
+        if (outer->lo[a] > inner->lo[a] || outer->hi[a] < inner->hi[a])
+            return 0;
+    return 1;
+}
+
+/* Returns the problems found below node ni; counts leaf entries per polygon. */
+static int check_shape(const Bvh *b, const World *w, uint32_t ni, int depth, int *seen)
+{
+    const BvhNode *n = &b->nodes[ni];
+    if (depth > BVH_MAX_DEPTH)
+        return 1;
+    if (n->count) {
+        int bad = 0;
+        for (uint32_t k = n->index; k < n->index + n->count; k++) {
+            uint32_t p = b->items[k];
+            seen[p]++;
+            bad += !box_holds(n, w->polygons[p].bbox_min, w->polygons[p].bbox_max);
+        }
+        return bad;
+    }
+    uint32_t first = ni + 1, second = n->index;
+    int bad = !node_holds(n, &b->nodes[first]) + !node_holds(n, &b->nodes[second]);
+    return bad + check_shape(b, w, first, depth + 1, seen) + check_shape(b, w, second, depth + 1, seen);
+}
+
+/* ---- the queries ------------------------------------------------------------ */
+
+typedef struct {
+    int n, cap;
+    struct { uint32_t polygon; double t; } *hit;
+} HitList;
+
+static int collect(void *user, uint32_t polygon, double t)
+{
+    HitList *l = user;
+    if (l->n == l->cap) {
+        l->cap = l->cap ? 2 * l->cap : 64;
+        l->hit = realloc(l->hit, sizeof *l->hit * (size_t)l->cap);
+    }
+    l->hit[l->n].polygon = polygon;
+    l->hit[l->n].t = t;
+    l->n++;
+    return 0;
+}
+
+static int by_polygon(const void *a, const void *b)
+{
+    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+static int same_hits(HitList *a, HitList *b)
+{
+    if (a->n != b->n)
+        return 0;
+    qsort(a->hit, (size_t)a->n, sizeof *a->hit, by_polygon);
+    qsort(b->hit, (size_t)b->n, sizeof *b->hit, by_polygon);
+    for (int i = 0; i < a->n; i++)
+        if (a->hit[i].polygon != b->hit[i].polygon || a->hit[i].t != b->hit[i].t)
+            return 0;
+    return 1;
+}
+
+typedef struct {
+    int rays, hits, brute_wrong, grid_wrong, grid_ties, segments, segment_wrong;
+} Tally;
+
+/* The nearest hit by testing everything, written out apart from the tracer:
+ * planes first (the nearest, t beyond the start's margin), then the polygon
+ * nearest and strictly before the plane, the lowest index among exact ties. */
+static int brute_nearest(const World *w, Vec3 org, Vec3 dir, const Hit *from, Hit *hit)
+{
+    double tmin = trace_min_distance(org), plane_t = HUGE_VAL;
+    int plane = -1;
+    for (int i = 0; i < w->nplanes; i++) {
+        if (from && from->kind == HIT_PLANE && from->index == i)
+            continue;
+        double t = intersect_plane(&w->planes[i], org, dir);
+        if (t > tmin && t < plane_t) {
+            plane_t = t;
+            plane = i;
+        }
+    }
+    RayFrame f = ray_frame(org, dir);
+    double best = plane_t;
+    int poly = -1;
+    for (int i = 0; i < w->npolygons; i++) {
+        if (from && from->kind == HIT_POLYGON && from->index == i)
+            continue;
+        double t = intersect_polygon_in(w, &w->polygons[i], &f, HUGE_VAL);
+        if (t > tmin && (t < best || (poly >= 0 && t == best && i < poly))) {
+            best = t;
+            poly = i;
+        }
+    }
+    if (poly < 0 && plane < 0)
+        return 0;
+    hit->kind = poly >= 0 ? HIT_POLYGON : HIT_PLANE;
+    hit->index = poly >= 0 ? poly : plane;
+    hit->t = best;
+    return 1;
+}
+
+static int same_hit(int fa, const Hit *a, int fb, const Hit *b)
+{
+    return fa == fb && (!fa || (a->kind == b->kind && a->index == b->index && a->t == b->t));
+}
+
+static void compare_ray(Tracer *grid, Tracer *tree, Vec3 org, Vec3 dir, const Hit *from, int brute, Tally *t,
+                        HitList *a, HitList *b)
+{
+    Hit hg, hb, hx;
+    int fg = trace_nearest(grid, org, dir, HUGE_VAL, from, &hg);
+    int fb = trace_nearest(tree, org, dir, HUGE_VAL, from, &hb);
+    t->rays++;
+    t->hits += fb;
+    if (brute) {
+        int fx = brute_nearest(tree->world, org, dir, from, &hx);
+        t->brute_wrong += !same_hit(fx, &hx, fb, &hb);
+    }
+    /* The grid may pick another of polygons tied at the same distance, when
+     * the tie straddles a cell boundary (its walk stops at the first cell
+     * that holds a hit); everything else must agree. */
+    if (!same_hit(fg, &hg, fb, &hb)) {
+        int tie = fg && fb && hg.kind == HIT_POLYGON && hb.kind == HIT_POLYGON && hg.t == hb.t && hb.index < hg.index;
+        if (tie)
+            t->grid_ties++;
+        else
+            t->grid_wrong++;
+    }
+    /* The segment to the hit (or a long way), as a shadow ray sees it. */
+    double tmax = fb ? hb.t : 1e6;
+    int exclude = from && from->kind == HIT_POLYGON ? from->index : -1;
+    uint64_t tests = 0;
+    a->n = b->n = 0;
+    trace_segment_hits(grid, org, dir, trace_min_distance(org), tmax, exclude, 0, collect, a, &tests);
+    trace_segment_hits(tree, org, dir, trace_min_distance(org), tmax, exclude, 0, collect, b, &tests);
+    t->segments++;
+    t->segment_wrong += !same_hits(a, b);
+}
+
+static double unit(uint64_t *s)
+{
+    *s ^= *s << 13;
+    *s ^= *s >> 7;
+    *s ^= *s << 17;
+    return (double)(*s >> 11) * 0x1p-53;
+}
+
+static Vec3 random_dir(uint64_t *s)
+{
+    for (;;) {
+        Vec3 d = v3(2 * unit(s) - 1, 2 * unit(s) - 1, 2 * unit(s) - 1);
+        double l = v3_length(d);
+        if (l > 1e-3 && l <= 1.0)
+            return v3_scale(d, 1.0 / l);
+    }
+}
+
+/* A point inside polygon p (a vertex-weighted average of its first three). */
+static Vec3 point_on(const World *w, const Polygon *p, uint64_t *s)
+{
+    const Vec3 *v = &w->points[p->first_point];
+    double a = unit(s), b = unit(s);
+    if (a + b > 1.0) {
+        a = 1.0 - a;
+        b = 1.0 - b;
+    }
+    return v3_add(v[0], v3_add(v3_scale(v3_sub(v[1], v[0]), a), v3_scale(v3_sub(v[2], v[0]), b)));
+}
+
+static void check_world(const char *name, const World *w)
+{
+    Vec3 extra[1 + 8 * 16];
+    int nextra = grid_extra_points(w, extra, (int)(sizeof extra / sizeof extra[0]));
+    Grid g;
+    Bvh b;
+    if (grid_build(&g, w, NULL, extra, nextra) || bvh_build(&b, w)) {
+        tap_ok(0, "%s: grid and hierarchy build", name);
+        return;
+    }
+    int *seen = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof *seen);
+    int shape = b.nnodes ? check_shape(&b, w, 0, 1, seen) : 0, once = 1;
+    for (int i = 0; i < w->npolygons; i++)
+        once &= seen[i] == 1;
+    tap_ok(shape == 0 && once && b.depth <= BVH_MAX_DEPTH,
+           "%s: hierarchy of %d nodes, depth %d, holds each of %d polygons once, every box around what is below it "
+           "(%d problems)",
+           name, b.nnodes, b.depth, w->npolygons, shape);
+    free(seen);
+
+    Tracer grid, tree;
+    tracer_init(&grid, w, &g);
+    tracer_init(&tree, w, &g);
+    tracer_use_bvh(&tree, &b);
+    Tally t = { 0 };
+    HitList la = { 0 }, lb = { 0 };
+    uint64_t s = 0x9E3779B97F4A7C15ULL;
+    /* Camera rays through a grid of pixel centres. */
+    for (int y = 0; y < 48; y++)
+        for (int x = 0; x < 64; x++) {
+            Vec3 org, dir;
+            camera_ray(&w->camera, 64, 48, x, y, &org, &dir);
+            Hit none = { HIT_NONE, -1, 0.0, org };
+            compare_ray(&grid, &tree, org, dir, &none, (x + y) % 3 == 0, &t, &la, &lb);
+        }
+    /* From points on polygons, in random directions and toward vertices
+     * (through shared edges and corners, the ties). */
+    for (int i = 0; i < 3000 && w->npolygons > 0; i++) {
+        int pi = (int)(unit(&s) * w->npolygons);
+        const Polygon *p = &w->polygons[pi];
+        Vec3 org = point_on(w, p, &s);
+        Vec3 dir = random_dir(&s);
+        if (i % 3 == 0) {
+            Vec3 d = v3_sub(w->points[(int)(unit(&s) * w->npoints)], org);
+            if (v3_length(d) > 0.0)
+                dir = v3_normalize(d);
+        }
+        Hit from = { HIT_POLYGON, pi, 0.0, org };
+        compare_ray(&grid, &tree, org, dir, &from, i % 3 == 0, &t, &la, &lb);
+    }
+    /* Along the axes from inside the box: rays in cell and slab planes. */
+    for (int i = 0; i < 600; i++) {
+        Vec3 org = v3(g.min.x + unit(&s) * (g.max.x - g.min.x), g.min.y + unit(&s) * (g.max.y - g.min.y),
+                      g.min.z + unit(&s) * (g.max.z - g.min.z));
+        if (i % 2 && w->npolygons > 0)
+            org = w->points[(int)(unit(&s) * w->npoints)];
+        double sgn = i % 4 < 2 ? 1.0 : -1.0;
+        Vec3 dir = i % 3 == 0 ? v3(sgn, 0, 0) : i % 3 == 1 ? v3(0, sgn, 0) : v3(0, 0, sgn);
+        Hit none = { HIT_NONE, -1, 0.0, org };
+        compare_ray(&grid, &tree, org, dir, &none, 1, &t, &la, &lb);
+    }
+    tap_ok(t.brute_wrong == 0,
+           "%s: nearest hit by the hierarchy equals testing every polygon, exact ties to the lowest index (%d rays, "
+           "a third of them checked so, %d differ)",
+           name, t.rays, t.brute_wrong);
+    tap_ok(t.grid_wrong == 0,
+           "%s: ... and the grid's walk (%d rays, %d hits; %d ties across a cell boundary the grid gave to a higher "
+           "index; %d other differences)",
+           name, t.rays, t.hits, t.grid_ties, t.grid_wrong);
+    tap_ok(t.segment_wrong == 0, "%s: the polygons a segment meets, and where, equal the grid's on %d segments (%d differ)",
+           name, t.segments, t.segment_wrong);
+    free(la.hit);
+    free(lb.hit);
+    tracer_free(&grid);
+    tracer_free(&tree);
+    bvh_free(&b);
+    grid_free(&g);
+}
+
+static void check_scene_file(const char *srcdir, const char *rel)
+{
+    char path[1024], inc[1024];
+    snprintf(path, sizeof path, "%s/%s", srcdir, rel);
+    snprintf(inc, sizeof inc, "%s/data/include", srcdir);
+    const char *dirs[] = { "/usr/share/povray-3.7/include", inc };
+    ParseOptions po = { .include_dirs = dirs, .ninclude_dirs = 2, .image_width = 320, .image_height = 240 };
+    ParseError err;
+    Scene *sc = parse_scene_file(path, &po, &err);
+    if (!sc) {
+        tap_ok(0, "%s parses (%s:%d:%d: %s)", rel, err.file, err.line, err.column, err.message);
+        return;
+    }
+    World w;
+    WorldError we;
+    if (world_build(&w, sc, &we)) {
+        tap_ok(0, "%s: world builds (%s)", rel, we.message);
+        scene_free(sc);
+        return;
+    }
+    check_world(rel, &w);
+    world_free(&w);
+    scene_free(sc);
+}
+
+int main(void)
+{
+    const char *srcdir = getenv("top_srcdir");
+    if (!srcdir)
+        srcdir = ".";
+    static const char *const scenes[] = {
+        "scenes/desk.pov", "scenes/glasses.pov", "scenes/stars.pov", "scenes/cards.pov", "scenes/holes.pov",
+        "scenes/mesh2.pov", "scenes/hard/boundary-columns.pov", "scenes/hard/contact.pov",
+        "scenes/hard/degenerate.pov", "scenes/hard/far-coordinates.pov", "scenes/hard/grazing.pov",
+        "scenes/hard/inside-volume.pov", "scenes/hard/light-in-plane.pov", "scenes/hard/long-shadows.pov",
+        "scenes/hard/mirrors.pov", "scenes/hard/shared-edges-perspective.pov", "scenes/hard/shared-edges.pov",
+        "scenes/hard/transparent.pov",
+    };
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++)
+        check_scene_file(srcdir, scenes[i]);
+
+    /* Random soups: clusters of small triangles, many of them sharing
+     * vertices exactly (ties), and coincident copies of the same triangle. */
+    for (int soup = 0; soup < 3; soup++) {
+        uint64_t s = 0x2545F4914F6CDD1DULL + (uint64_t)soup;
+        int n = soup == 0 ? 200 : soup == 1 ? 2000 : 500;
+        Scene *sc = fixture_scene(n + 1);
+        Vec3 last[3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+        for (int i = 0; i < n; i++) {
+            Vec3 c = v3(20 * unit(&s) - 10, 20 * unit(&s) - 10, 20 * unit(&s) - 10);
+            double r = soup == 1 ? 0.3 : 2.0;
+            Vec3 v[3];
+            for (int k = 0; k < 3; k++)
+                v[k] = v3_add(c, v3(r * (2 * unit(&s) - 1), r * (2 * unit(&s) - 1), r * (2 * unit(&s) - 1)));
+            if (i % 4 == 1) { /* share an edge with the last one */
+                v[0] = last[0];
+                v[1] = last[1];
+            }
+            if (soup == 2 && i % 10 == 5) /* an exact copy: a tie everywhere */
+                memcpy(v, last, sizeof v);
+            fixture_triangle(sc, v[0], v[1], v[2]);
+            memcpy(last, v, sizeof v);
+        }
+        World w;
+        WorldError we;
+        char name[64];
+        snprintf(name, sizeof name, "soup %d (%d triangles)", soup, n);
+        if (world_build(&w, sc, &we) == 0) {
+            check_world(name, &w);
+            world_free(&w);
+        } else {
+            tap_ok(0, "%s: world builds", name);
+        }
+        fixture_scene_free(sc);
+    }
+    return tap_done();
+}
