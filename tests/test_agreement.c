@@ -11,16 +11,26 @@
  * segment's start state, the previous "pixel" for pixel coherence), and the
  * reference decides by testing every polygon in long double.
  *
+ * Every other scene has transparent objects (filter, transmit, both; a
+ * second generator paints them, so the geometry is the same as without),
+ * and a decision is the colour of the light that gets through: the
+ * reference's is written here from POV-Ray's rule, the product of
+ * rgb * filter + transmit of every polygon the reference finds in the way
+ * (black if one is opaque).
+ *
  * The reference separates clear cases from ties: a decision is a tie when
  * some polygon is met within 1e-12 of the scene's size of its border, of the
- * segment's ends, or edge-on. On clear cases every method, the shadow ray
- * included, must agree with the reference; on ties every method must agree
- * with the shadow ray (the tie rule the others fall back to). Ties are
- * counted and printed.
+ * segment's ends, or edge-on (unless a clear opaque blocker decides). On
+ * clear cases every method, the shadow ray included, must agree with the
+ * reference (colours within 1e-12); on ties every method must agree with
+ * the shadow ray (the tie rule the others fall back to). Every method's
+ * colour must also equal the shadow ray's exactly, as --verify-shadows asks.
+ * Ties are counted and printed.
  *
  * usage: test_agreement [--seed N] [--scenes N] [--verbose N] [--tolerance R]
  *        defaults: a fixed seed, 5000 scenes, the engine's margin; --verbose N
  *        describes the first N disagreements on stderr. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,6 +55,19 @@ static Vec3 lattice_point(TestRng *r, double half)
     int n = (int)(2 * half);
     return v3(0.5 * ((int)(rng_uniform(r) * (2 * n + 1)) - n), 0.5 * ((int)(rng_uniform(r) * (2 * n + 1)) - n),
               0.5 * ((int)(rng_uniform(r) * (2 * n + 1)) - n));
+}
+
+/* Some objects transparent: filter only, transmit only, or both. */
+static void paint(Scene *s, TestRng *r)
+{
+    static const double colours[4][3] = { { 1, 0.5, 0.25 }, { 0.2, 0.9, 0.6 }, { 0.75, 0.75, 0.75 }, { 0.3, 0.1, 1 } };
+    static const double ft[4][2] = { { 0.6, 0 }, { 0, 0.3 }, { 0.4, 0.2 }, { 0.9, 0.05 } };
+    for (int i = 0; i < s->nobjects; i++) {
+        if (rng_uniform(r) < 0.5)
+            continue;
+        const double *c = colours[(int)(rng_uniform(r) * 4)], *f = ft[(int)(rng_uniform(r) * 4)];
+        fixture_pigment(s, s->objects[i], c[0], c[1], c[2], f[0], f[1]);
+    }
 }
 
 static void random_scene(Scene *s, TestRng *r)
@@ -127,9 +150,10 @@ typedef struct {
     /* Per probe: hits and decisions per light (primary, secondary); -1: none. */
     signed char decision[NVARIANTS][PROBES][2][MAX_LIGHTS];
     signed char scheme[NVARIANTS][PROBES][2][MAX_LIGHTS];
+    RGB colour[NVARIANTS][PROBES][2][MAX_LIGHTS]; /* the light that gets through */
 } Decisions;
 
-static int decide_one(TraceContext *ctx, const World *w, const Hit *hit, const Segment *seg, int li)
+static int decide_one(TraceContext *ctx, const World *w, const Hit *hit, const Segment *seg, int li, RGB *through)
 {
     const Light *l = &w->lights[li];
     Vec3 d = v3_sub(l->location, hit->point);
@@ -140,9 +164,8 @@ static int decide_one(TraceContext *ctx, const World *w, const Hit *hit, const S
         to_light = l->direction;
     }
     ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
-    RGB through;
-    ctx->shadow->test(ctx, &q, &through);
-    return through.r == 0.0 && through.g == 0.0 && through.b == 0.0;
+    ctx->shadow->test(ctx, &q, through);
+    return through->r == 0.0 && through->g == 0.0 && through->b == 0.0;
 }
 
 static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, const Variant *v, const Probe *probes,
@@ -183,7 +206,8 @@ static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, 
             Segment seg = { w->camera.location, dir, &none, NULL, m->uses_volumes ? row0 : NULL };
             for (int li = 0; li < nl; li++)
             {
-                dec->decision[vi][k][0][li] = (signed char)decide_one(&ctx, w, &h1, &seg, li);
+                dec->decision[vi][k][0][li] =
+                    (signed char)decide_one(&ctx, w, &h1, &seg, li, &dec->colour[vi][k][0][li]);
                 dec->scheme[vi][k][0][li] = (signed char)ctx.last_scheme;
             }
             Hit h2;
@@ -193,7 +217,8 @@ static void run_variant(const World *w, const Grid *g, const ShadowVolumes *sv, 
                 Segment seg2 = { h1.point, d2, &h1, m->uses_volumes ? row0 : NULL, m->uses_volumes ? row1 : NULL };
                 for (int li = 0; li < nl; li++)
                 {
-                    dec->decision[vi][k][1][li] = (signed char)decide_one(&ctx, w, &h2, &seg2, li);
+                    dec->decision[vi][k][1][li] =
+                        (signed char)decide_one(&ctx, w, &h2, &seg2, li, &dec->colour[vi][k][1][li]);
                     dec->scheme[vi][k][1][li] = (signed char)ctx.last_scheme;
                 }
             }
@@ -257,14 +282,60 @@ static void explain(const World *w, const ShadowVolumes *sv, const char *what, c
 }
 
 typedef struct {
-    long decisions, ties, clear_wrong[NVARIANTS], tie_vs_ray[NVARIANTS], scenes, skipped;
+    long decisions, ties, clear_wrong[NVARIANTS], tie_vs_ray[NVARIANTS], not_ray[NVARIANTS], scenes, skipped;
     long tie_blocked, tie_lit;
+    long painted, filtered; /* scenes with transparent objects; decisions where coloured light gets through */
 } Totals;
+
+/* The reference's colour: POV-Ray's rule (each polygon the shadow ray meets
+ * multiplies the light by rgb * filter + transmit; an opaque one stops it)
+ * over the polygons the long-double reference finds in the way. REF_TIE
+ * when one is too close to call and no clear opaque blocker decides. The
+ * random scenes have no infinite planes. */
+static RefAnswer reference_colour(const World *w, const Hit *at, const Light *l, ld eps, RGB *c)
+{
+    c->r = c->g = c->b = 1;
+    int tie = 0;
+    ld tmin = trace_min_distance(at->point);
+    for (int i = 0; i < w->npolygons; i++) {
+        const Material *m = &w->materials[w->polygons[i].material];
+        if ((at->kind == HIT_POLYGON && at->index == i) || m->no_shadow)
+            continue;
+        RefAnswer a = shadow_reference_polygon(w, i, at->point, l, tmin, eps);
+        if (a == REF_TIE)
+            tie = 1;
+        if (a != REF_BLOCKED)
+            continue;
+        const Colour *p = &m->pigment;
+        if (p->filter == 0 && p->transmit == 0) {
+            c->r = c->g = c->b = 0;
+            return REF_BLOCKED;
+        }
+        c->r *= p->r * p->filter + p->transmit;
+        c->g *= p->g * p->filter + p->transmit;
+        c->b *= p->b * p->filter + p->transmit;
+    }
+    if (tie)
+        return REF_TIE;
+    return c->r == 1 && c->g == 1 && c->b == 1 ? REF_LIT : REF_BLOCKED;
+}
+
+static int same_colour(RGB a, RGB b, double tol)
+{
+    return fabs(a.r - b.r) <= tol && fabs(a.g - b.g) <= tol && fabs(a.b - b.b) <= tol;
+}
 
 static void one_scene(TestRng *rng, Totals *tot)
 {
     Scene *s = fixture_scene(64);
     random_scene(s, rng);
+    /* Every other scene transparent in part, painted by a generator of its
+     * own: the scenes' geometry is the one without transparency. */
+    if ((tot->scenes + tot->skipped) % 2) {
+        TestRng colours = { rng->s ^ 0xD1B54A32D192ED03ull };
+        paint(s, &colours);
+        tot->painted++;
+    }
     SceneLight lights[MAX_LIGHTS];
     memset(lights, 0, sizeof lights);
     int nl = 1 + (int)(rng_uniform(rng) * MAX_LIGHTS);
@@ -338,7 +409,9 @@ static void one_scene(TestRng *rng, Totals *tot)
                 if (ray < 0)
                     continue;
                 tot->decisions++;
-                RefAnswer ref = shadow_reference(&w, &hits[0][k][seg], &w.lights[li], eps);
+                RGB want, by_ray = dec.colour[0][k][seg][li];
+                RefAnswer ref = reference_colour(&w, &hits[0][k][seg], &w.lights[li], eps, &want);
+                tot->filtered += !ray && !(by_ray.r == 1 && by_ray.g == 1 && by_ray.b == 1);
                 if (ref == REF_TIE) {
                     tot->ties++;
                     if (ray)
@@ -348,18 +421,24 @@ static void one_scene(TestRng *rng, Totals *tot)
                 }
                 for (int vi = 0; vi < NVARIANTS; vi++) {
                     int got = dec.decision[vi][k][seg][li];
-                    int bad = ref == REF_TIE ? got != ray : got != (ref == REF_BLOCKED);
+                    RGB colour = dec.colour[vi][k][seg][li];
+                    int bad = ref == REF_TIE ? !same_colour(colour, by_ray, 0) : !same_colour(colour, want, 1e-12);
+                    tot->not_ray[vi] += !same_colour(colour, by_ray, 0);
                     if (ref == REF_TIE)
                         tot->tie_vs_ray[vi] += bad;
                     else
                         tot->clear_wrong[vi] += bad;
                     if (bad && verbose > 0) {
                         verbose--;
-                        char what[160];
-                        snprintf(what, sizeof what, "scene %ld: %s says %s (%s), reference %s, shadow ray %s", tot->scenes,
-                                 variants[vi].label, got ? "blocked" : "lit",
+                        char what[320];
+                        snprintf(what, sizeof what,
+                                 "scene %ld: %s says %s (%g, %g, %g) (%s), reference %s (%g, %g, %g), shadow ray %s "
+                                 "(%g, %g, %g)",
+                                 tot->scenes, variants[vi].label, got ? "blocked" : "lit", colour.r, colour.g, colour.b,
                                  shadow_scheme_names[dec.scheme[vi][k][seg][li]],
-                                 ref == REF_TIE ? "tie" : ref == REF_BLOCKED ? "blocked" : "lit", ray ? "blocked" : "lit");
+                                 ref == REF_TIE ? "tie" : ref == REF_BLOCKED ? "blocked" : "lit", want.r, want.g,
+                                 want.b,
+                                 ray ? "blocked" : "lit", by_ray.r, by_ray.g, by_ray.b);
                         explain(&w, &sv, what, hits[0][k], seg, li, k, eps);
                     }
                 }
@@ -394,16 +473,22 @@ int main(int argc, char **argv)
     memset(&tot, 0, sizeof tot);
     for (long i = 0; i < scenes; i++)
         one_scene(&rng, &tot);
-    tap_diag("seed %#llx: %ld scenes (%ld without polygons skipped), %ld decisions, %ld ties (%ld blocked, %ld lit "
-             "by the shadow ray)",
-             seed, tot.scenes, tot.skipped, tot.decisions, tot.ties, tot.tie_blocked, tot.tie_lit);
+    tap_diag("seed %#llx: %ld scenes (%ld without polygons skipped, %ld with transparent objects), %ld decisions, "
+             "%ld ties (%ld blocked, %ld lit by the shadow ray), %ld with filtered light",
+             seed, tot.scenes, tot.skipped, tot.painted, tot.decisions, tot.ties, tot.tie_blocked, tot.tie_lit,
+             tot.filtered);
     tap_ok(tot.decisions > 50 * scenes, "enough decisions checked (%ld)", tot.decisions);
+    tap_ok(tot.filtered * 20 > tot.decisions, "enough of them through transparent objects only (%ld)", tot.filtered);
     for (int vi = 0; vi < NVARIANTS; vi++) {
-        tap_ok(tot.clear_wrong[vi] == 0, "%s agrees with the long-double reference on every clear case (%ld wrong of %ld)",
+        tap_ok(tot.clear_wrong[vi] == 0,
+               "%s agrees with the long-double reference on every clear case, colours too (%ld wrong of %ld)",
                variants[vi].label, tot.clear_wrong[vi], tot.decisions - tot.ties);
-        if (vi > 0)
+        if (vi > 0) {
             tap_ok(tot.tie_vs_ray[vi] == 0, "%s agrees with the shadow ray on every tie (%ld differ of %ld)",
                    variants[vi].label, tot.tie_vs_ray[vi], tot.ties);
+            tap_ok(tot.not_ray[vi] == 0, "%s gives the shadow ray's colour exactly, everywhere (%ld differ of %ld)",
+                   variants[vi].label, tot.not_ray[vi], tot.decisions);
+        }
     }
     return tap_done();
 }
