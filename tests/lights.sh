@@ -76,8 +76,9 @@ povray=$(command -v "${POVRAY:-povray}" 2>/dev/null || true)
 # anti-aliasing, one thread), in $work, which POV-Ray may write to.
 pov() {
     # POV-Ray 3.7 can time out starting its threads on a loaded machine: one retry
-    (cd "$work" && { "$povray" "+I$1.pov" "+O$1.pov.exr" +FE +W160 +H120 -A -D -GA +WT1 ||
-        "$povray" "+I$1.pov" "+O$1.pov.exr" +FE +W160 +H120 -A -D -GA +WT1; })
+    (cd "$work" && { "$povray" "+I$1.pov" "+O$1.pov.exr" +FE +W160 +H120 -A -D -GA +WT1 >pov.log 2>&1 ||
+        "$povray" "+I$1.pov" "+O$1.pov.exr" +FE +W160 +H120 -A -D -GA +WT1 >pov.log 2>&1; }) ||
+        { tail -3 "$work/pov.log"; return 1; }
 }
 hst() { "$hstrace" "$work/$1.pov" --width 160 --height 120 -o "$work/$1.hst.exr"; }
 
