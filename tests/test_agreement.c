@@ -20,7 +20,10 @@
  *
  * The reference separates clear cases from ties: a decision is a tie when
  * some polygon is met within 1e-12 of the scene's size of its border, of the
- * segment's ends, or edge-on (unless a clear opaque blocker decides). On
+ * segment's ends, or edge-on (unless a clear opaque blocker decides), and
+ * when two transparent polygons met lie within POV-Ray's SHADOW_TOLERANCE
+ * (1e-3) of each other along the shadow ray: POV-Ray filters those once,
+ * hstrace once per polygon (a known difference, a TAP TODO). On
  * clear cases every method, the shadow ray included, must agree with the
  * reference (colours within 1e-12); on ties every method must agree with
  * the shadow ray (the tie rule the others fall back to). Every method's
@@ -285,20 +288,49 @@ typedef struct {
     long decisions, ties, clear_wrong[NVARIANTS], tie_vs_ray[NVARIANTS], not_ray[NVARIANTS], scenes, skipped;
     long tie_blocked, tie_lit;
     long painted, filtered; /* scenes with transparent objects; decisions where coloured light gets through */
+    long close, close_povray; /* transparent surfaces close along the shadow ray; and there POV-Ray's colour */
 } Totals;
 
-/* The reference's colour: POV-Ray's rule (each polygon the shadow ray meets
- * multiplies the light by rgb * filter + transmit; an opaque one stops it)
- * over the polygons the long-double reference finds in the way. REF_TIE
+/* POV-Ray's SHADOW_TOLERANCE (render/trace.cpp): after each transparent
+ * surface its shadow ray starts again from the hit, ignoring hits closer
+ * than this, so surfaces within it of each other along the ray filter once. */
+#define POV_SHADOW_TOLERANCE 1e-3
+
+typedef struct {
+    ld t;
+    RGB factor;
+} Filter;
+
+static int filter_cmp(const void *a, const void *b)
+{
+    const Filter *x = a, *y = b;
+    return x->t < y->t ? -1 : x->t > y->t;
+}
+
+/* The reference's colour: POV-Ray's rule (each surface the shadow ray
+ * meets multiplies the light by rgb * filter + transmit; an opaque one stops
+ * it) over the polygons the long-double reference finds in the way. REF_TIE
  * when one is too close to call and no clear opaque blocker decides. The
- * random scenes have no infinite planes. */
-static RefAnswer reference_colour(const World *w, const Hit *at, const Light *l, ld eps, RGB *c)
+ * random scenes have no infinite planes.
+ *
+ * *close is set when two of the transparent polygons met lie within
+ * POV_SHADOW_TOLERANCE of each other along the ray (coplanar overlapping
+ * ones, or crossed near where they meet): there POV-Ray filters once per
+ * such group (taking whichever it meets first), which the colours in
+ * alt[0 .. *nalt) list; *c multiplies every polygon, as hstrace does. */
+static RefAnswer reference_colour(const World *w, const Hit *at, const Light *l, ld eps, RGB *c, int *close,
+                                  RGB *alt, int *nalt)
 {
     c->r = c->g = c->b = 1;
-    int tie = 0;
+    *close = 0;
+    *nalt = 0;
+    int tie = 0, nf = 0;
+    Filter f[64];
     ld tmin = trace_min_distance(at->point);
+    Vec3 dir = l->kind == LIGHT_PARALLEL ? l->direction : v3_normalize(v3_sub(l->location, at->point));
     for (int i = 0; i < w->npolygons; i++) {
-        const Material *m = &w->materials[w->polygons[i].material];
+        const Polygon *poly = &w->polygons[i];
+        const Material *m = &w->materials[poly->material];
         if ((at->kind == HIT_POLYGON && at->index == i) || m->no_shadow)
             continue;
         RefAnswer a = shadow_reference_polygon(w, i, at->point, l, tmin, eps);
@@ -311,12 +343,44 @@ static RefAnswer reference_colour(const World *w, const Hit *at, const Light *l,
             c->r = c->g = c->b = 0;
             return REF_BLOCKED;
         }
-        c->r *= p->r * p->filter + p->transmit;
-        c->g *= p->g * p->filter + p->transmit;
-        c->b *= p->b * p->filter + p->transmit;
+        RGB k = { p->r * p->filter + p->transmit, p->g * p->filter + p->transmit, p->b * p->filter + p->transmit };
+        c->r *= k.r;
+        c->g *= k.g;
+        c->b *= k.b;
+        if (nf < 64) {
+            ld nd = (ld)poly->normal.x * dir.x + (ld)poly->normal.y * dir.y + (ld)poly->normal.z * dir.z;
+            ld np = (ld)poly->normal.x * at->point.x + (ld)poly->normal.y * at->point.y +
+                    (ld)poly->normal.z * at->point.z;
+            f[nf].t = ((ld)poly->d - np) / nd;
+            f[nf++].factor = k;
+        }
     }
     if (tie)
         return REF_TIE;
+    /* Groups of surfaces within the tolerance of the first of the group. */
+    qsort(f, (size_t)nf, sizeof *f, filter_cmp);
+    int start[64], ng = 0;
+    for (int i = 0; i < nf; i++)
+        if (ng == 0 || f[i].t > f[start[ng - 1]].t + POV_SHADOW_TOLERANCE)
+            start[ng++] = i;
+    start[ng] = nf;
+    int combos = 1;
+    for (int g = 0; g < ng; g++) {
+        *close |= start[g + 1] - start[g] > 1;
+        combos *= start[g + 1] - start[g];
+    }
+    for (int k = 0; *close && k < combos && k < 64; k++) {
+        RGB a = { 1, 1, 1 };
+        for (int g = 0, rest = k; g < ng; g++) {
+            int size = start[g + 1] - start[g];
+            const RGB *pick = &f[start[g] + rest % size].factor;
+            rest /= size;
+            a.r *= pick->r;
+            a.g *= pick->g;
+            a.b *= pick->b;
+        }
+        alt[(*nalt)++] = a;
+    }
     return c->r == 1 && c->g == 1 && c->b == 1 ? REF_LIT : REF_BLOCKED;
 }
 
@@ -409,8 +473,19 @@ static void one_scene(TestRng *rng, Totals *tot)
                 if (ray < 0)
                     continue;
                 tot->decisions++;
-                RGB want, by_ray = dec.colour[0][k][seg][li];
-                RefAnswer ref = reference_colour(&w, &hits[0][k][seg], &w.lights[li], eps, &want);
+                RGB want, by_ray = dec.colour[0][k][seg][li], alt[64];
+                int close, nalt;
+                RefAnswer ref = reference_colour(&w, &hits[0][k][seg], &w.lights[li], eps, &want, &close, alt, &nalt);
+                if (close && ref != REF_TIE) {
+                    /* POV-Ray's colour is ambiguous by hstrace's rule: not a clear case. */
+                    tot->close++;
+                    for (int a = 0; a < nalt; a++)
+                        if (same_colour(by_ray, alt[a], 1e-12)) {
+                            tot->close_povray++;
+                            break;
+                        }
+                    ref = REF_TIE;
+                }
                 tot->filtered += !ray && !(by_ray.r == 1 && by_ray.g == 1 && by_ray.b == 1);
                 if (ref == REF_TIE) {
                     tot->ties++;
@@ -474,11 +549,18 @@ int main(int argc, char **argv)
     for (long i = 0; i < scenes; i++)
         one_scene(&rng, &tot);
     tap_diag("seed %#llx: %ld scenes (%ld without polygons skipped, %ld with transparent objects), %ld decisions, "
-             "%ld ties (%ld blocked, %ld lit by the shadow ray), %ld with filtered light",
+             "%ld ties (%ld blocked, %ld lit by the shadow ray; %ld of them with transparent surfaces close along the "
+             "shadow ray), %ld with filtered light",
              seed, tot.scenes, tot.skipped, tot.painted, tot.decisions, tot.ties, tot.tie_blocked, tot.tie_lit,
-             tot.filtered);
+             tot.close, tot.filtered);
     tap_ok(tot.decisions > 50 * scenes, "enough decisions checked (%ld)", tot.decisions);
     tap_ok(tot.filtered * 20 > tot.decisions, "enough of them through transparent objects only (%ld)", tot.filtered);
+    tap_todo(tot.close_povray == tot.close,
+             "hstrace's shadow ray filters once per surface; POV-Ray's once per group of surfaces within its "
+             "SHADOW_TOLERANCE (1e-3) along the ray",
+             "the shadow ray gives POV-Ray's colour where transparent surfaces lie within 1e-3 of each other along "
+             "it (%ld of %ld)",
+             tot.close_povray, tot.close);
     for (int vi = 0; vi < NVARIANTS; vi++) {
         tap_ok(tot.clear_wrong[vi] == 0,
                "%s agrees with the long-double reference on every clear case, colours too (%ld wrong of %ld)",

@@ -191,8 +191,10 @@ typedef struct {
  * shadow ray passes exactly through the shared edge: POV-Ray 0.48, hstrace
  * 0.2304): the shadow ray meets both triangles at the one point and filters
  * twice. POV-Ray filters once: its shadow ray starts again from each
- * transparent hit and skips hits within SHADOW_TOLERANCE (1e-3) of it. */
-#define SHARED_EDGE_BUG "the shadow ray filters through both triangles at a shared edge (POV-Ray: once)"
+ * transparent hit and skips hits within SHADOW_TOLERANCE (1e-3) of it
+ * (test_agreement counts the same for coplanar transparent polygons). */
+#define SHARED_EDGE_BUG "the shadow ray filters through both triangles at a shared edge; POV-Ray once, as it " \
+                        "filters once per group of surfaces within its SHADOW_TOLERANCE (1e-3) along the ray"
 
 typedef struct {
     const char *method;
