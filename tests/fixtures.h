@@ -65,6 +65,22 @@ static inline SceneObject *fixture_polygon(Scene *s, const Vec3 *pts, int npts, 
     return o;
 }
 
+/* Gives object o a plain pigment of its own, filter and transmit included
+ * (POV-Ray's rgbft), with the scene's default finish. */
+static inline void fixture_pigment(Scene *s, SceneObject *o, double r, double g, double b, double filter,
+                                   double transmit)
+{
+    SceneTexture *t = arena_alloc(s->arena, sizeof *t);
+    *t = s->default_texture;
+    t->pigment.colour.r = r;
+    t->pigment.colour.g = g;
+    t->pigment.colour.b = b;
+    t->pigment.colour.filter = filter;
+    t->pigment.colour.transmit = transmit;
+    o->texture = t;
+    transform_identity(&o->texture_bind);
+}
+
 /* A small deterministic generator (xorshift), so tests do not depend on libc. */
 typedef struct { unsigned long long s; } TestRng;
 static inline double rng_uniform(TestRng *r)

@@ -11,16 +11,29 @@
  * segment's start state, the previous "pixel" for pixel coherence), and the
  * reference decides by testing every polygon in long double.
  *
+ * Every other scene has transparent objects (filter, transmit, both; a
+ * second generator paints them, so the geometry is the same as without),
+ * and a decision is the colour of the light that gets through: the
+ * reference's is written here from POV-Ray's rule, the product of
+ * rgb * filter + transmit of every polygon the reference finds in the way
+ * (black if one is opaque).
+ *
  * The reference separates clear cases from ties: a decision is a tie when
  * some polygon is met within 1e-12 of the scene's size of its border, of the
- * segment's ends, or edge-on. On clear cases every method, the shadow ray
- * included, must agree with the reference; on ties every method must agree
- * with the shadow ray (the tie rule the others fall back to). Ties are
- * counted and printed.
+ * segment's ends, or edge-on (unless a clear opaque blocker decides), and
+ * when two transparent polygons met lie within POV-Ray's SHADOW_TOLERANCE
+ * (1e-3) of each other along the shadow ray: POV-Ray filters those once,
+ * hstrace once per polygon (a known difference, a TAP TODO). On
+ * clear cases every method, the shadow ray included, must agree with the
+ * reference (colours within 1e-12); on ties every method must agree with
+ * the shadow ray (the tie rule the others fall back to). Every method's
+ * colour must also equal the shadow ray's exactly, as --verify-shadows asks.
+ * Ties are counted and printed.
  *
  * usage: test_agreement [--seed N] [--scenes N] [--verbose N] [--tolerance R]
  *        defaults: a fixed seed, 5000 scenes, the engine's margin; --verbose N
  *        describes the first N disagreements on stderr. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,6 +58,19 @@ static Vec3 lattice_point(TestRng *r, double half)
     int n = (int)(2 * half);
     return v3(0.5 * ((int)(rng_uniform(r) * (2 * n + 1)) - n), 0.5 * ((int)(rng_uniform(r) * (2 * n + 1)) - n),
               0.5 * ((int)(rng_uniform(r) * (2 * n + 1)) - n));
+}
+
+/* Some objects transparent: filter only, transmit only, or both. */
+static void paint(Scene *s, TestRng *r)
+{
+    static const double colours[4][3] = { { 1, 0.5, 0.25 }, { 0.2, 0.9, 0.6 }, { 0.75, 0.75, 0.75 }, { 0.3, 0.1, 1 } };
+    static const double ft[4][2] = { { 0.6, 0 }, { 0, 0.3 }, { 0.4, 0.2 }, { 0.9, 0.05 } };
+    for (int i = 0; i < s->nobjects; i++) {
+        if (rng_uniform(r) < 0.5)
+            continue;
+        const double *c = colours[(int)(rng_uniform(r) * 4)], *f = ft[(int)(rng_uniform(r) * 4)];
+        fixture_pigment(s, s->objects[i], c[0], c[1], c[2], f[0], f[1]);
+    }
 }
 
 static void random_scene(Scene *s, TestRng *r)
@@ -132,9 +158,10 @@ typedef struct {
     /* Per probe: hits and decisions per light (primary, secondary); -1: none. */
     signed char decision[NVARIANTS][PROBES][2][MAX_LIGHTS];
     signed char scheme[NVARIANTS][PROBES][2][MAX_LIGHTS];
+    RGB colour[NVARIANTS][PROBES][2][MAX_LIGHTS]; /* the light that gets through */
 } Decisions;
 
-static int decide_one(ShadowContext *ctx, const World *w, const Hit *hit, const Segment *seg, int li)
+static int decide_one(ShadowContext *ctx, const World *w, const Hit *hit, const Segment *seg, int li, RGB *through)
 {
     const Light *l = &w->lights[li];
     Vec3 d = v3_sub(l->location, hit->point);
@@ -145,9 +172,8 @@ static int decide_one(ShadowContext *ctx, const World *w, const Hit *hit, const 
         to_light = l->direction;
     }
     ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
-    RGB through;
-    ctx->method->test(ctx, &q, &through);
-    return through.r == 0.0 && through.g == 0.0 && through.b == 0.0;
+    ctx->method->test(ctx, &q, through);
+    return through->r == 0.0 && through->g == 0.0 && through->b == 0.0;
 }
 
 static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv, const Variant *v,
@@ -190,7 +216,8 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
             Segment seg = { w->camera.location, dir, &none, NULL, m->uses_volumes ? row0 : NULL };
             for (int li = 0; li < nl; li++)
             {
-                dec->decision[vi][k][0][li] = (signed char)decide_one(&ctx, w, &h1, &seg, li);
+                dec->decision[vi][k][0][li] =
+                    (signed char)decide_one(&ctx, w, &h1, &seg, li, &dec->colour[vi][k][0][li]);
                 dec->scheme[vi][k][0][li] = (signed char)ctx.last_scheme;
             }
             Hit h2;
@@ -200,7 +227,8 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
                 Segment seg2 = { h1.point, d2, &h1, m->uses_volumes ? row0 : NULL, m->uses_volumes ? row1 : NULL };
                 for (int li = 0; li < nl; li++)
                 {
-                    dec->decision[vi][k][1][li] = (signed char)decide_one(&ctx, w, &h2, &seg2, li);
+                    dec->decision[vi][k][1][li] =
+                        (signed char)decide_one(&ctx, w, &h2, &seg2, li, &dec->colour[vi][k][1][li]);
                     dec->scheme[vi][k][1][li] = (signed char)ctx.last_scheme;
                 }
             }
@@ -264,14 +292,146 @@ static void explain(const World *w, const ShadowVolumes *sv, const char *what, c
 }
 
 typedef struct {
-    long decisions, ties, clear_wrong[NVARIANTS], tie_vs_ray[NVARIANTS], other_path[NVARIANTS], scenes, skipped;
+    long decisions, ties, clear_wrong[NVARIANTS], tie_vs_ray[NVARIANTS], not_ray[NVARIANTS], other_path[NVARIANTS];
+    long scenes, skipped;
     long tie_blocked, tie_lit;
+    long painted, filtered; /* scenes with transparent objects; decisions where coloured light gets through */
+    long close, close_povray; /* transparent surfaces close along the shadow ray; and there POV-Ray's colour */
 } Totals;
+
+/* POV-Ray's SHADOW_TOLERANCE (render/trace.cpp): after each transparent
+ * surface its shadow ray starts again from the hit, ignoring hits closer
+ * than this, so surfaces within it of each other along the ray filter once. */
+#define POV_SHADOW_TOLERANCE 1e-3
+
+typedef struct {
+    ld t;
+    RGB factor;
+} Filter;
+
+static int filter_cmp(const void *a, const void *b)
+{
+    const Filter *x = a, *y = b;
+    return x->t < y->t ? -1 : x->t > y->t;
+}
+
+/* The reference's colour: POV-Ray's rule (each surface the shadow ray
+ * meets multiplies the light by rgb * filter + transmit; an opaque one stops
+ * it) over the polygons the long-double reference finds in the way. REF_TIE
+ * when one is too close to call and no clear opaque blocker decides. The
+ * random scenes have no infinite planes.
+ *
+ * *close is set when two of the transparent polygons met lie within
+ * POV_SHADOW_TOLERANCE of each other along the ray (coplanar overlapping
+ * ones, or crossed near where they meet): there POV-Ray filters once per
+ * such group (taking whichever it meets first), which the colours in
+ * alt[0 .. *nalt) list; *c multiplies every polygon, as hstrace does. */
+static RefAnswer reference_colour(const World *w, const Hit *at, const Light *l, ld eps, RGB *c, int *close,
+                                  RGB *alt, int *nalt)
+{
+    c->r = c->g = c->b = 1;
+    *close = 0;
+    *nalt = 0;
+    int tie = 0, nf = 0;
+    Filter f[64];
+    ld tmin = trace_min_distance(at->point);
+    Vec3 dir = l->kind == LIGHT_PARALLEL ? l->direction : v3_normalize(v3_sub(l->location, at->point));
+    for (int i = 0; i < w->npolygons; i++) {
+        const Polygon *poly = &w->polygons[i];
+        const Material *m = &w->materials[poly->material];
+        if ((at->kind == HIT_POLYGON && at->index == i) || m->no_shadow)
+            continue;
+        RefAnswer a = shadow_reference_polygon(w, i, at->point, l, tmin, eps);
+        if (a == REF_TIE)
+            tie = 1;
+        if (a != REF_BLOCKED)
+            continue;
+        const Colour *p = &m->pigment;
+        if (p->filter == 0 && p->transmit == 0) {
+            c->r = c->g = c->b = 0;
+            return REF_BLOCKED;
+        }
+        RGB k = { p->r * p->filter + p->transmit, p->g * p->filter + p->transmit, p->b * p->filter + p->transmit };
+        c->r *= k.r;
+        c->g *= k.g;
+        c->b *= k.b;
+        if (nf < 64) {
+            ld nd = (ld)poly->normal.x * dir.x + (ld)poly->normal.y * dir.y + (ld)poly->normal.z * dir.z;
+            ld np = (ld)poly->normal.x * at->point.x + (ld)poly->normal.y * at->point.y +
+                    (ld)poly->normal.z * at->point.z;
+            f[nf].t = ((ld)poly->d - np) / nd;
+            f[nf++].factor = k;
+        }
+    }
+    if (tie)
+        return REF_TIE;
+    /* Groups of surfaces within the tolerance of the first of the group. */
+    qsort(f, (size_t)nf, sizeof *f, filter_cmp);
+    int start[64], ng = 0;
+    for (int i = 0; i < nf; i++)
+        if (ng == 0 || f[i].t > f[start[ng - 1]].t + POV_SHADOW_TOLERANCE)
+            start[ng++] = i;
+    start[ng] = nf;
+    int combos = 1;
+    for (int g = 0; g < ng; g++) {
+        *close |= start[g + 1] - start[g] > 1;
+        combos *= start[g + 1] - start[g];
+    }
+    for (int k = 0; *close && k < combos && k < 64; k++) {
+        RGB a = { 1, 1, 1 };
+        for (int g = 0, rest = k; g < ng; g++) {
+            int size = start[g + 1] - start[g];
+            const RGB *pick = &f[start[g] + rest % size].factor;
+            rest /= size;
+            a.r *= pick->r;
+            a.g *= pick->g;
+            a.b *= pick->b;
+        }
+        alt[(*nalt)++] = a;
+    }
+    return c->r == 1 && c->g == 1 && c->b == 1 ? REF_LIT : REF_BLOCKED;
+}
+
+static int same_colour(RGB a, RGB b, double tol)
+{
+    return fabs(a.r - b.r) <= tol && fabs(a.g - b.g) <= tol && fabs(a.b - b.b) <= tol;
+}
+
+/* The reference's verdict and colour at a point, for a method whose shadow
+ * ray gave by_ray: where transparent surfaces lie within POV-Ray's
+ * SHADOW_TOLERANCE of each other along the ray, POV-Ray's colour is
+ * ambiguous by hstrace's rule, and the case is no clear one (a tie, held to
+ * the shadow ray); *close_povray: the shadow ray gave one of POV-Ray's. */
+static RefAnswer judge(const World *w, const Hit *at, const Light *l, ld eps, RGB by_ray, RGB *want, int *close,
+                       int *close_povray)
+{
+    RGB alt[64];
+    int nalt;
+    RefAnswer ref = reference_colour(w, at, l, eps, want, close, alt, &nalt);
+    *close_povray = 0;
+    if (*close && ref != REF_TIE) {
+        for (int a = 0; a < nalt; a++)
+            if (same_colour(by_ray, alt[a], 1e-12)) {
+                *close_povray = 1;
+                break;
+            }
+        return REF_TIE;
+    }
+    *close = 0;
+    return ref;
+}
 
 static void one_scene(TestRng *rng, Totals *tot)
 {
     Scene *s = fixture_scene(64);
     random_scene(s, rng);
+    /* Every other scene transparent in part, painted by a generator of its
+     * own: the scenes' geometry is the one without transparency. */
+    if ((tot->scenes + tot->skipped) % 2) {
+        TestRng colours = { rng->s ^ 0xD1B54A32D192ED03ull };
+        paint(s, &colours);
+        tot->painted++;
+    }
     SceneLight lights[MAX_LIGHTS];
     memset(lights, 0, sizeof lights);
     int nl = 1 + (int)(rng_uniform(rng) * MAX_LIGHTS);
@@ -343,13 +503,20 @@ static void one_scene(TestRng *rng, Totals *tot)
         for (int seg = 0; seg < 2; seg++)
             for (int li = 0; li < nl; li++) {
                 const Hit *at0 = &hits[0][k][seg];
+                int ray0 = dec.decision[0][k][seg][li];
+                RGB want0 = { 1, 1, 1 };
                 RefAnswer ref0 = REF_TIE;
-                if (dec.decision[0][k][seg][li] >= 0) {
+                if (ray0 >= 0) {
                     tot->decisions++;
-                    ref0 = shadow_reference(&w, at0, &w.lights[li], eps);
+                    RGB by_ray0 = dec.colour[0][k][seg][li];
+                    int close, close_povray;
+                    ref0 = judge(&w, at0, &w.lights[li], eps, by_ray0, &want0, &close, &close_povray);
+                    tot->close += close;
+                    tot->close_povray += close_povray;
+                    tot->filtered += !ray0 && !(by_ray0.r == 1 && by_ray0.g == 1 && by_ray0.b == 1);
                     if (ref0 == REF_TIE) {
                         tot->ties++;
-                        if (dec.decision[0][k][seg][li])
+                        if (ray0)
                             tot->tie_blocked++;
                         else
                             tot->tie_lit++;
@@ -367,25 +534,37 @@ static void one_scene(TestRng *rng, Totals *tot)
                         continue;
                     int base = variants[vi].hierarchy ? 1 : 0;
                     int ray = dec.decision[base][k][seg][li];
+                    RGB by_ray = dec.colour[base][k][seg][li];
                     const Hit *at = &hits[vi][k][seg];
-                    int same_point = at->kind == at0->kind && at->index == at0->index && at->t == at0->t &&
-                                     at->point.x == at0->point.x && at->point.y == at0->point.y &&
-                                     at->point.z == at0->point.z && dec.decision[0][k][seg][li] >= 0;
+                    int same_point = ray0 >= 0 && at->kind == at0->kind && at->index == at0->index &&
+                                     at->t == at0->t && at->point.x == at0->point.x && at->point.y == at0->point.y &&
+                                     at->point.z == at0->point.z;
                     if (!same_point && seg == 0)
                         tot->other_path[vi]++;
-                    RefAnswer ref = same_point ? ref0 : shadow_reference(&w, at, &w.lights[li], eps);
-                    int bad = ref == REF_TIE ? got != ray : got != (ref == REF_BLOCKED);
+                    RGB want = want0;
+                    RefAnswer ref = ref0;
+                    if (!same_point) {
+                        int close, close_povray;
+                        ref = judge(&w, at, &w.lights[li], eps, by_ray, &want, &close, &close_povray);
+                    }
+                    RGB colour = dec.colour[vi][k][seg][li];
+                    int bad = ref == REF_TIE ? !same_colour(colour, by_ray, 0) : !same_colour(colour, want, 1e-12);
+                    tot->not_ray[vi] += !same_colour(colour, by_ray, 0);
                     if (ref == REF_TIE)
                         tot->tie_vs_ray[vi] += bad;
                     else
                         tot->clear_wrong[vi] += bad;
                     if (bad && verbose > 0) {
                         verbose--;
-                        char what[160];
-                        snprintf(what, sizeof what, "scene %ld: %s says %s (%s), reference %s, shadow ray %s", tot->scenes,
-                                 variants[vi].label, got ? "blocked" : "lit",
+                        char what[320];
+                        snprintf(what, sizeof what,
+                                 "scene %ld: %s says %s (%g, %g, %g) (%s), reference %s (%g, %g, %g), shadow ray %s "
+                                 "(%g, %g, %g)",
+                                 tot->scenes, variants[vi].label, got ? "blocked" : "lit", colour.r, colour.g, colour.b,
                                  shadow_scheme_names[dec.scheme[vi][k][seg][li]],
-                                 ref == REF_TIE ? "tie" : ref == REF_BLOCKED ? "blocked" : "lit", ray ? "blocked" : "lit");
+                                 ref == REF_TIE ? "tie" : ref == REF_BLOCKED ? "blocked" : "lit", want.r, want.g,
+                                 want.b,
+                                 ray ? "blocked" : "lit", by_ray.r, by_ray.g, by_ray.b);
                         explain(&w, &sv, what, hits[0][k], seg, li, k, eps);
                     }
                 }
@@ -421,16 +600,31 @@ int main(int argc, char **argv)
     memset(&tot, 0, sizeof tot);
     for (long i = 0; i < scenes; i++)
         one_scene(&rng, &tot);
-    tap_diag("seed %#llx: %ld scenes (%ld without polygons skipped), %ld decisions, %ld ties (%ld blocked, %ld lit "
-             "by the shadow ray)",
-             seed, tot.scenes, tot.skipped, tot.decisions, tot.ties, tot.tie_blocked, tot.tie_lit);
+    tap_diag("seed %#llx: %ld scenes (%ld without polygons skipped, %ld with transparent objects), %ld decisions, "
+             "%ld ties (%ld blocked, %ld lit by the shadow ray; %ld of them with transparent surfaces close along the "
+             "shadow ray), %ld with filtered light",
+             seed, tot.scenes, tot.skipped, tot.painted, tot.decisions, tot.ties, tot.tie_blocked, tot.tie_lit,
+             tot.close, tot.filtered);
     tap_ok(tot.decisions > 50 * scenes, "enough decisions checked (%ld)", tot.decisions);
+    tap_ok(tot.filtered * 20 > tot.decisions, "enough of them through transparent objects only (%ld)", tot.filtered);
+    tap_todo(tot.close_povray == tot.close,
+             "hstrace's shadow ray filters once per surface; POV-Ray's once per group of surfaces within its "
+             "SHADOW_TOLERANCE (1e-3) along the ray",
+             "the shadow ray gives POV-Ray's colour where transparent surfaces lie within 1e-3 of each other along "
+             "it (%ld of %ld)",
+             tot.close_povray, tot.close);
     for (int vi = 0; vi < NVARIANTS; vi++) {
-        tap_ok(tot.clear_wrong[vi] == 0, "%s agrees with the long-double reference on every clear case (%ld wrong of %ld)",
+        tap_ok(tot.clear_wrong[vi] == 0,
+               "%s agrees with the long-double reference on every clear case, colours too (%ld wrong of %ld)",
                variants[vi].label, tot.clear_wrong[vi], tot.decisions - tot.ties);
-        if (vi > 0)
+        if (vi > 0) {
             tap_ok(tot.tie_vs_ray[vi] == 0, "%s agrees with the shadow ray on every tie (%ld differ of %ld)",
                    variants[vi].label, tot.tie_vs_ray[vi], tot.ties);
+            tap_ok(tot.not_ray[vi] == 0,
+                   "%s gives the shadow ray's colour exactly, everywhere (%ld differ of %ld; the shadow ray of the "
+                   "same polygon queries)",
+                   variants[vi].label, tot.not_ray[vi], tot.decisions);
+        }
         if (tot.other_path[vi])
             tap_diag("%s: %ld decisions at a primary hit other than the grid walk's (polygons meeting within "
                      "rounding), held to the reference at their own point",
