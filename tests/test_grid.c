@@ -35,13 +35,10 @@
  * An extra registration is one no reference asks for, even with the cell
  * grown by twice grid_build's own margin (1e-9 of a cell); triangles must
  * have none (grid.h: "registered in exactly the cells it overlaps"), holes
- * and long outlines may.
- *
- * A known bug (TOUCHING_BUG): a polygon whose box starts exactly on a cell
- * boundary can be left out of the cell below it, which it touches. Those
- * assertions are TAP TODOs (expected failures, which automake reports as
- * XFAIL); the day they pass, automake reports XPASS and fails, and the
- * TODO mark goes. Missing cells that a polygon enters are never TODO. */
+ * and long outlines may. (These checks found that a polygon whose box
+ * started exactly on a cell boundary could be left out of the cell below
+ * it, which it touches: grid_build took the candidate cells from the bare
+ * box.) */
 #include <dirent.h>
 #include <float.h>
 #include <math.h>
@@ -490,12 +487,7 @@ static void check_grid(const World *w, const Grid *g, TestRng *rng, const char *
     registrations_free(&r);
 }
 
-/* The known bug (see touching_todo): polygons that start exactly on a cell
- * boundary are left out of the cell on its other side. */
-#define TOUCHING_BUG "grid_build takes a polygon's cells from its box by grid_cell_coord, which can round a " \
-                     "boundary the box starts on into the upper cell: the lower cell, touched, is never tested"
-
-static void report(const char *what, const Tally *t, int touching_todo)
+static void report(const char *what, const Tally *t)
 {
     tap_ok(t->checked > 0 && t->missing == 0 && t->bad_index == 0,
            "%s: every polygon is listed in every cell whose interior it enters, by the separating-axis and outline "
@@ -510,10 +502,7 @@ static void report(const char *what, const Tally *t, int touching_todo)
              "%s: every polygon is listed in every cell it touches only on the cell's border (face, edge, corner) "
              "(%ld missing by the references, %ld by sampled points)%s%s",
              what, t->touching, t->sampled_touching, t->touching ? "; first: " : "", t->first_touching);
-    if (touching_todo)
-        tap_todo(t->touching == 0 && t->sampled_touching == 0, TOUCHING_BUG, "%s", line);
-    else
-        tap_ok(t->touching == 0 && t->sampled_touching == 0, "%s", line);
+    tap_ok(t->touching == 0 && t->sampled_touching == 0, "%s", line);
     tap_ok(t->extra_triangle == 0,
            "%s: no triangle is listed in a cell it does not meet (%ld extra; %ld listings within grid_build's margin)",
            what, t->extra_triangle, t->margin);
@@ -709,14 +698,13 @@ static void touching_cases(TestRng *rng)
                "placed by hand: %s is listed in each of the %d cells it enters (%d) and in some cell it touches",
                tc->what, entered, entered_listed);
     }
-    tap_todo(touched_listed == touched, TOUCHING_BUG,
-             "placed by hand: each polygon is listed in every cell it touches (%d of %d listings)", touched_listed,
-             touched);
+    tap_ok(touched_listed == touched, "placed by hand: each polygon is listed in every cell it touches (%d of %d listings)",
+           touched_listed, touched);
     registrations_free(&r);
     Tally t;
     memset(&t, 0, sizeof t);
     check_grid(&w, &g, rng, "touching cases", &t);
-    report("touching cases", &t, 1);
+    report("touching cases", &t);
     grid_free(&g);
     world_free(&w);
     scene_free(s);
@@ -773,10 +761,10 @@ static void boundary_plane_rays(void)
             scene_free(s);
         }
     tap_ok(rays > 500, "rays in cell boundary planes meet the triangles starting there, tested one by one (%d)", rays);
-    tap_todo(missed == 0, TOUCHING_BUG,
-             "the walk finds every triangle a ray in a cell boundary plane meets on its edge (%d of %d missed; first "
-             "with %d cells along x, boundary %d)",
-             missed, rays, first_n, first_k);
+    tap_ok(missed == 0,
+           "the walk finds every triangle a ray in a cell boundary plane meets on its edge (%d of %d missed; first "
+           "with %d cells along x, boundary %d)",
+           missed, rays, first_n, first_k);
 }
 
 /* The project's scenes, parsed and built as hstrace builds them. */
@@ -832,7 +820,7 @@ static void real_scenes(TestRng *rng)
     char what[64];
     snprintf(what, sizeof what, "%d scenes of scenes/ (%ld polygons)", scenes, polygons);
     tap_ok(scenes >= 10 && failed == 0, "the project's scenes build (%d, %d failed)", scenes, failed);
-    report(what, &t, 1);
+    report(what, &t);
 }
 
 int main(void)
@@ -857,7 +845,7 @@ int main(void)
     Tally tally;
     memset(&tally, 0, sizeof tally);
     check_grid(&w, &g, &rng, "random polygons, 8x8x8", &tally);
-    report("random triangles and outlines with holes, 8x8x8", &tally, 0);
+    report("random triangles and outlines with holes, 8x8x8", &tally);
     {
         static const int other[2][3] = { { 13, 7, 5 }, { 1, 1, 1 } };
         for (int k = 0; k < 2; k++) {
@@ -871,7 +859,7 @@ int main(void)
             char what[80];
             snprintf(what, sizeof what, "random polygons, %dx%dx%d", other[k][0], other[k][1], other[k][2]);
             check_grid(&w, &g2, &rng, what, &t2);
-            report(what, &t2, 0);
+            report(what, &t2);
             grid_free(&g2);
         }
     }

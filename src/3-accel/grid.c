@@ -153,24 +153,26 @@ int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int n
         grid_free(g);
         return -1;
     }
+    /* Cells are tested grown by a hair (below), so that a polygon lying on
+     * a cell face is registered on both sides of it; the candidate cells
+     * come from the polygon's box grown by the same hair, or a box starting
+     * exactly on a boundary could be rounded into the upper cell only. */
+    Vec3 hair = v3_scale(g->cell_size, 1e-9);
     for (int pi = 0; pi < w->npolygons; pi++) {
         const Polygon *p = &w->polygons[pi];
         int c0[3], c1[3];
         for (int a = 0; a < 3; a++) {
-            c0[a] = grid_cell_coord(g, v3_comp(p->bbox_min, a), a);
-            c1[a] = grid_cell_coord(g, v3_comp(p->bbox_max, a), a);
+            c0[a] = grid_cell_coord(g, v3_comp(p->bbox_min, a) - v3_comp(hair, a), a);
+            c1[a] = grid_cell_coord(g, v3_comp(p->bbox_max, a) + v3_comp(hair, a), a);
         }
         int single = c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2];
         for (int z = c0[2]; z <= c1[2]; z++)
             for (int y = c0[1]; y <= c1[1]; y++)
                 for (int x = c0[0]; x <= c1[0]; x++) {
                     if (!single) {
-                        /* The cell, grown by a hair so that a polygon lying on a
-                         * cell face is registered on both sides of it. */
                         Vec3 clo = v3(lo.x + x * g->cell_size.x, lo.y + y * g->cell_size.y, lo.z + z * g->cell_size.z);
                         Vec3 chi = v3_add(clo, g->cell_size);
-                        Vec3 eps = v3_scale(g->cell_size, 1e-9);
-                        if (!polygon_overlaps_box(w, p, v3_sub(clo, eps), v3_add(chi, eps)))
+                        if (!polygon_overlaps_box(w, p, v3_sub(clo, hair), v3_add(chi, hair)))
                             continue;
                     }
                     if (count == cap) {

@@ -11,6 +11,8 @@
 #include "pigment.h"
 #include "shadow_volumes.h"
 
+#define POV_SMALL_TOLERANCE 1.0e-3 /* POV-Ray's SMALL_TOLERANCE (and SHADOW_TOLERANCE) */
+
 /* Folds one blocker, hit at `at`, into the light that gets through; returns
  * 1 when the light is now fully blocked. */
 static int pass_through(const World *w, const Material *m, int polygon, const ShadowQuery *q, double t, RGB *light)
@@ -102,7 +104,15 @@ int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     }
     if (ctx->nfiltered > 1)
         qsort(ctx->filtered, (size_t)ctx->nfiltered, sizeof *ctx->filtered, by_distance);
+    double last = 0.0;
     for (int i = 0; i < ctx->nfiltered; i++) {
+        /* POV-Ray's shadow ray starts again at each see-through surface it
+         * filters by and takes the next only beyond SMALL_TOLERANCE of it:
+         * surfaces within that of the last one filtered (two triangles'
+         * shared edge, coplanar panes) filter once. */
+        if (i > 0 && ctx->filtered[i].t - last <= POV_SMALL_TOLERANCE)
+            continue;
+        last = ctx->filtered[i].t;
         uint32_t pi = ctx->filtered[i].polygon;
         const Material *m = &w->materials[w->polygons[pi].material];
         if (pass_through(w, m, (int)pi, q, ctx->filtered[i].t, light)) {
