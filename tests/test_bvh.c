@@ -23,17 +23,22 @@
 
 /* ---- the shape ------------------------------------------------------------ */
 
-static int box_holds(const BvhNode *n, Vec3 lo, Vec3 hi)
+static int box_holds(const BvhNode *n, int k, Vec3 lo, Vec3 hi)
 {
-    return n->lo[0] <= lo.x && n->lo[1] <= lo.y && n->lo[2] <= lo.z && n->hi[0] >= hi.x && n->hi[1] >= hi.y &&
-           n->hi[2] >= hi.z;
+    return n->lo[0][k] <= lo.x && n->lo[1][k] <= lo.y && n->lo[2][k] <= lo.z && n->hi[0][k] >= hi.x &&
+           n->hi[1][k] >= hi.y && n->hi[2][k] >= hi.z;
 }
 
-static int node_holds(const BvhNode *outer, const BvhNode *inner)
+/* Child k's box holds every box of node m. */
+static int node_holds(const BvhNode *n, int k, const BvhNode *m)
 {
-    for (int a = 0; a < 3; a++)
-        if (outer->lo[a] > inner->lo[a] || outer->hi[a] < inner->hi[a])
-            return 0;
+    for (int j = 0; j < BVH_WIDTH; j++) {
+        if (m->child[j] == BVH_EMPTY)
+            continue;
+        for (int a = 0; a < 3; a++)
+            if (n->lo[a][k] > m->lo[a][j] || n->hi[a][k] < m->hi[a][j])
+                return 0;
+    }
     return 1;
 }
 
@@ -43,18 +48,27 @@ static int check_shape(const Bvh *b, const World *w, uint32_t ni, int depth, int
     const BvhNode *n = &b->nodes[ni];
     if (depth > BVH_MAX_DEPTH)
         return 1;
-    if (n->count) {
-        int bad = 0;
-        for (uint32_t k = n->index; k < n->index + n->count; k++) {
-            uint32_t p = b->items[k];
-            seen[p]++;
-            bad += !box_holds(n, w->polygons[p].bbox_min, w->polygons[p].bbox_max);
+    int bad = 0, used = 0;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        uint32_t c = n->child[k];
+        if (c == BVH_EMPTY)
+            continue;
+        used++;
+        if (bvh_is_leaf(c)) {
+            for (uint32_t i = bvh_leaf_first(c); i < bvh_leaf_first(c) + bvh_leaf_count(c); i++) {
+                uint32_t p = b->items[i];
+                seen[p]++;
+                bad += !box_holds(n, k, w->polygons[p].bbox_min, w->polygons[p].bbox_max);
+            }
+        } else {
+            bad += (int)c <= (int)ni || (int)c >= b->nnodes; /* children come after their parent */
+            if (!bad) {
+                bad += !node_holds(n, k, &b->nodes[c]);
+                bad += check_shape(b, w, c, depth + 1, seen);
+            }
         }
-        return bad;
     }
-    uint32_t first = ni + 1, second = n->index;
-    int bad = !node_holds(n, &b->nodes[first]) + !node_holds(n, &b->nodes[second]);
-    return bad + check_shape(b, w, first, depth + 1, seen) + check_shape(b, w, second, depth + 1, seen);
+    return bad + (used == 0);
 }
 
 /* ---- the queries ------------------------------------------------------------ */
@@ -215,6 +229,30 @@ static void check_world(const char *name, const World *w)
     }
     int *seen = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof *seen);
     int shape = b.nnodes ? check_shape(&b, w, 0, 1, seen) : 0, once = 1;
+    /* The SSE2 box test and the plain one agree, bit for bit, on every node
+     * and a spread of rays (axis-parallel ones, with their NaN slabs,
+     * included). */
+    int node_tests = 0, node_differ = 0;
+    uint64_t rs = 0x853C49E6748FEA9BULL;
+    for (int i = 0; i < b.nnodes; i++)
+        for (int j = 0; j < 8; j++) {
+            Vec3 o = v3(g.min.x + unit(&rs) * (g.max.x - g.min.x), g.min.y + unit(&rs) * (g.max.y - g.min.y),
+                        g.min.z + unit(&rs) * (g.max.z - g.min.z));
+            Vec3 d = j % 4 == 0 ? v3(0, 0, j % 8 ? 1 : -1) : random_dir(&rs);
+            if (j == 5)
+                o = v3(b.nodes[i].lo[0][0], b.nodes[i].lo[1][0], o.z); /* on a slab face */
+            BvhRay r = bvh_ray(o, d);
+            double e1[BVH_WIDTH], e2[BVH_WIDTH];
+            double t1 = j % 3 ? HUGE_VAL : 10.0 * unit(&rs);
+            unsigned m1 = bvh_node_hits(&b.nodes[i], &r, 0.0, t1, e1), m2 = bvh_node_hits_plain(&b.nodes[i], &r, 0.0, t1, e2);
+            node_tests++;
+            int differ = m1 != m2;
+            for (int k = 0; k < BVH_WIDTH; k++)
+                differ |= (m1 & (1u << k)) && memcmp(&e1[k], &e2[k], sizeof e1[k]) != 0;
+            node_differ += differ;
+        }
+    tap_ok(node_differ == 0, "%s: the SSE2 and plain box tests agree on %d node tests (%d differ)", name, node_tests,
+           node_differ);
     for (int i = 0; i < w->npolygons; i++)
         once &= seen[i] == 1;
     tap_ok(shape == 0 && once && b.depth <= BVH_MAX_DEPTH,

@@ -1,7 +1,9 @@
-/* Building the hierarchy (bvh.h): top-down, binned surface area heuristic
- * over the polygons' bounding-box centres (Wald, "On fast construction of
- * SAH-based bounding volume hierarchies", 2007), nodes laid out depth
- * first so that a node's first child follows it. */
+/* Building the hierarchy (bvh.h): a binary tree, top-down by the binned
+ * surface area heuristic over the polygons' bounding-box centres (Wald, "On
+ * fast construction of SAH-based bounding volume hierarchies", 2007), then
+ * collapsed into 4-wide nodes by pulling up the grandchildren of the
+ * largest children (as Embree's BVH4 and Wald, Benthin and Boulos, "Getting
+ * rid of packets", 2008, do). */
 #include "bvh.h"
 
 #include <float.h>
@@ -17,6 +19,13 @@
 typedef struct {
     double lo[3], hi[3];
 } Box;
+
+/* A node of the binary tree the build makes first. */
+typedef struct {
+    Box box;
+    uint32_t index;       /* interior: the second child (the first follows); leaf: first item */
+    uint16_t count;       /* 0 for an interior node */
+} BinNode;
 
 static void box_empty(Box *b)
 {
@@ -62,7 +71,7 @@ typedef struct {
     Box *boxes;           /* per polygon */
     double (*centre)[3];  /* per polygon */
     uint32_t *items;
-    BvhNode *nodes;
+    BinNode *nodes;
     int nnodes, cap;
     int depth;
 } Builder;
@@ -71,7 +80,7 @@ static int new_node(Builder *bd)
 {
     if (bd->nnodes == bd->cap) {
         int cap = bd->cap ? bd->cap * 2 : 64;
-        BvhNode *n = realloc(bd->nodes, sizeof *n * (size_t)cap);
+        BinNode *n = realloc(bd->nodes, sizeof *n * (size_t)cap);
         if (!n)
             return -1;
         bd->nodes = n;
@@ -80,13 +89,6 @@ static int new_node(Builder *bd)
     return bd->nnodes++;
 }
 
-static void set_box(BvhNode *n, const Box *b)
-{
-    for (int a = 0; a < 3; a++) {
-        n->lo[a] = round_down(b->lo[a]);
-        n->hi[a] = round_up(b->hi[a]);
-    }
-}
 
 /* items[first, first + count): one subtree. Returns 0, or -1 when out of memory. */
 static int build(Builder *bd, int first, int count, int depth)
@@ -106,7 +108,7 @@ static int build(Builder *bd, int first, int count, int depth)
                   { bd->centre[p][0], bd->centre[p][1], bd->centre[p][2] } };
         box_grow(&cbounds, &c);
     }
-    set_box(&bd->nodes[ni], &bounds);
+    bd->nodes[ni].box = bounds;
 
     /* The best binned split over the three axes; below a depth that a
      * pathological scene could reach, plain halving by index keeps the
@@ -166,7 +168,6 @@ static int build(Builder *bd, int first, int count, int depth)
         if (count <= LEAF_MAX) {
             bd->nodes[ni].index = (uint32_t)first;
             bd->nodes[ni].count = (uint16_t)count;
-            bd->nodes[ni].axis = 0;
             return 0;
         }
         /* Too many for a leaf: halve along the centres' widest axis (both
@@ -209,8 +210,86 @@ static int build(Builder *bd, int first, int count, int depth)
         return -1;
     bd->nodes[ni].index = (uint32_t)second;
     bd->nodes[ni].count = 0;
-    bd->nodes[ni].axis = (uint16_t)best_axis;
     return 0;
+}
+
+/* ---- collapsing into 4-wide nodes --------------------------------------- */
+
+typedef struct {
+    const BinNode *bin;
+    BvhNode *nodes;
+    int nnodes, cap;
+    int depth;
+} Collapser;
+
+static void set_child_box(BvhNode *n, int k, const Box *b)
+{
+    for (int a = 0; a < 3; a++) {
+        n->lo[a][k] = round_down(b->lo[a]);
+        n->hi[a][k] = round_up(b->hi[a]);
+    }
+}
+
+/* The 4-wide node for binary interior node bi; returns its index, or -1
+ * when out of memory. */
+static int collapse(Collapser *c, uint32_t bi, int depth)
+{
+    if (c->nnodes == c->cap) {
+        int cap = c->cap ? c->cap * 2 : 64;
+        BvhNode *n = realloc(c->nodes, sizeof *n * (size_t)cap);
+        if (!n)
+            return -1;
+        c->nodes = n;
+        c->cap = cap;
+    }
+    int ni = c->nnodes++;
+    if (depth > c->depth)
+        c->depth = depth;
+    /* The two children, then, while there is room, the largest interior
+     * one replaced by its own two. */
+    uint32_t kids[BVH_WIDTH];
+    int n = 2;
+    kids[0] = bi + 1;
+    kids[1] = c->bin[bi].index;
+    while (n < BVH_WIDTH) {
+        int best = -1;
+        double best_area = -1.0;
+        for (int k = 0; k < n; k++) {
+            const BinNode *b = &c->bin[kids[k]];
+            double area = box_area(&b->box);
+            if (b->count == 0 && area > best_area) {
+                best = k;
+                best_area = area;
+            }
+        }
+        if (best < 0)
+            break;
+        uint32_t x = kids[best];
+        kids[best] = x + 1;
+        kids[n++] = c->bin[x].index;
+    }
+    BvhNode node;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        node.child[k] = BVH_EMPTY;
+        for (int a = 0; a < 3; a++) {
+            node.lo[a][k] = HUGE_VALF; /* an empty box: no ray meets it */
+            node.hi[a][k] = -HUGE_VALF;
+        }
+    }
+    for (int k = 0; k < n; k++) {
+        const BinNode *b = &c->bin[kids[k]];
+        set_child_box(&node, k, &b->box);
+        if (b->count) {
+            node.child[k] = BVH_LEAF | (uint32_t)(b->count - 1) << BVH_COUNT_SHIFT | b->index;
+        } else {
+            int sub = collapse(c, kids[k], depth + 1);
+            if (sub < 0)
+                return -1;
+            node.child[k] = (uint32_t)sub;
+        }
+    }
+    c->nodes[ni] = node;
+    return ni;
 }
 
 int bvh_build(Bvh *b, const World *w)
@@ -245,16 +324,44 @@ int bvh_build(Bvh *b, const World *w)
     int failed = n > 0 && build(&bd, 0, n, 1);
     free(bd.boxes);
     free(bd.centre);
+    Collapser c;
+    memset(&c, 0, sizeof c);
+    c.bin = bd.nodes;
+    if (!failed && n > 0) {
+        if (bd.nodes[0].count) {
+            /* A single leaf: a root with one child. */
+            BvhNode node;
+            for (int k = 0; k < BVH_WIDTH; k++) {
+                node.child[k] = BVH_EMPTY;
+                for (int a = 0; a < 3; a++) {
+                    node.lo[a][k] = HUGE_VALF;
+                    node.hi[a][k] = -HUGE_VALF;
+                }
+            }
+            set_child_box(&node, 0, &bd.nodes[0].box);
+            node.child[0] = BVH_LEAF | (uint32_t)(bd.nodes[0].count - 1) << BVH_COUNT_SHIFT;
+            c.nodes = malloc(sizeof *c.nodes);
+            failed = !c.nodes;
+            if (c.nodes) {
+                c.nodes[0] = node;
+                c.nnodes = 1;
+                c.depth = 1;
+            }
+        } else {
+            failed = collapse(&c, 0, 1) < 0;
+        }
+    }
+    free(bd.nodes);
     if (failed) {
         free(bd.items);
-        free(bd.nodes);
+        free(c.nodes);
         return -1;
     }
-    b->nodes = bd.nodes;
-    b->nnodes = bd.nnodes;
+    b->nodes = c.nodes;
+    b->nnodes = c.nnodes;
     b->items = bd.items;
     b->nitems = n;
-    b->depth = bd.depth;
+    b->depth = c.depth;
     return 0;
 }
 
@@ -273,6 +380,31 @@ BvhRay bvh_ray(Vec3 org, Vec3 dir)
         r.org[a] = o[a];
         r.inv[a] = 1.0 / d[a];
         r.neg[a] = signbit(r.inv[a]) != 0;
+#if defined(__SSE2__)
+        r.org2[a] = _mm_set1_pd(r.org[a]);
+        r.inv2[a] = _mm_set1_pd(r.inv[a]);
+#endif
     }
     return r;
+}
+
+unsigned bvh_node_hits_plain(const BvhNode *n, const BvhRay *r, double t0, double t1, double enter[BVH_WIDTH])
+{
+    unsigned mask = 0;
+    double limit = t1 * BVH_GROW;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        double near = t0, far = limit;
+        for (int a = 0; a < 3; a++) {
+            double lo = r->neg[a] ? n->hi[a][k] : n->lo[a][k];
+            double hi = r->neg[a] ? n->lo[a][k] : n->hi[a][k];
+            double tn = (lo - r->org[a]) * r->inv[a];
+            double tf = (hi - r->org[a]) * r->inv[a] * BVH_GROW;
+            near = tn > near ? tn : near; /* NaN: not taken */
+            far = tf < far ? tf : far;
+        }
+        enter[k] = near;
+        if (near <= far)
+            mask |= 1u << k;
+    }
+    return mask;
 }

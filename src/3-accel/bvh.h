@@ -1,10 +1,11 @@
 /* A bounding volume hierarchy over the world's polygons, for the ray queries
  * of objects (nearest hit) and the shadow ray (every hit up to the light):
- * binned SAH, 32-byte nodes in depth-first order, boxes in float rounded
- * outward, tested conservatively in double, so that no polygon the exact
- * test would hit is ever culled. The polygons themselves are still decided
- * by the watertight double test (intersect.h); the hierarchy only chooses
- * which to ask, so every decision is the exact test's.
+ * binned SAH, then 4-wide nodes whose children's boxes are kept side by side
+ * (structure of arrays) so that one step tests all four. Boxes are stored in
+ * float rounded outward and tested conservatively in double, so that no
+ * polygon the exact test would hit is ever culled; the polygons themselves
+ * are decided by the watertight double test (intersect.h), so every
+ * decision is the exact test's.
  *
  * The uniform grid (grid.h) stays: it is the home of the shadow polygons
  * and of the paper's buckets, and the reference the queries are tested
@@ -14,23 +15,36 @@
 
 #include <stdint.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "world.h"
 
+#define BVH_WIDTH 4
+
+/* A child: BVH_EMPTY, a node index, or a leaf of 1 to 8 polygons: BVH_LEAF,
+ * the count less one in bits 28-30, the first of them (in Bvh.items) below. */
+#define BVH_EMPTY 0xFFFFFFFFu
+#define BVH_LEAF 0x80000000u
+#define BVH_COUNT_SHIFT 28
+#define BVH_FIRST_MASK 0x0FFFFFFFu
+
+static inline int bvh_is_leaf(uint32_t child) { return child != BVH_EMPTY && (child & BVH_LEAF); }
+static inline uint32_t bvh_leaf_first(uint32_t child) { return child & BVH_FIRST_MASK; }
+static inline uint32_t bvh_leaf_count(uint32_t child) { return ((child >> BVH_COUNT_SHIFT) & 7u) + 1u; }
+
 typedef struct {
-    float lo[3], hi[3];
-    /* Interior: the second child's index (the first is the next node);
-     * leaf: the first of `count` entries of Bvh.items. */
-    uint32_t index;
-    uint16_t count;       /* 0 for an interior node */
-    uint16_t axis;        /* interior: the axis its children were split on */
+    float lo[3][BVH_WIDTH], hi[3][BVH_WIDTH]; /* per axis, per child; empty slots +inf..-inf */
+    uint32_t child[BVH_WIDTH];
 } BvhNode;
 
 typedef struct {
-    BvhNode *nodes;
+    BvhNode *nodes;       /* nodes[0] is the root (none when there are no polygons) */
     int nnodes;
     uint32_t *items;      /* polygon indices, leaf by leaf */
     int nitems;
-    int depth;            /* of the deepest leaf */
+    int depth;            /* of the deepest node */
 } Bvh;
 
 /* Builds over every polygon of w (an empty hierarchy for none). Returns 0,
@@ -38,42 +52,74 @@ typedef struct {
 int bvh_build(Bvh *b, const World *w);
 void bvh_free(Bvh *b);
 
-/* The deepest a traversal stack needs to be. */
+/* The deepest the binary tree is built (the 4-wide one is about half), and
+ * the room a traversal stack needs. */
 #define BVH_MAX_DEPTH 64
+#define BVH_STACK (3 * BVH_MAX_DEPTH + 1)
 
 /* A ray as the box tests want it: the origin, and per axis the inverse
  * direction and which slab face is met first. */
 typedef struct {
     double org[3], inv[3];
     int neg[3];
+#if defined(__SSE2__)
+    __m128d org2[3], inv2[3]; /* the same, in both lanes */
+#endif
 } BvhRay;
 
 BvhRay bvh_ray(Vec3 org, Vec3 dir);
 
-/* Does the ray meet the node's box for some t in [t0, t1]? Conservative:
- * true whenever an exact computation would say so (and sometimes near it).
- * *t_enter: where it enters (for ordering). */
-static inline int bvh_node_hit(const BvhNode *n, const BvhRay *r, double t0, double t1, double *t_enter)
+/* Which of node n's children the ray meets for some t in [t0, t1]: bit k for
+ * child k; enter[k] is where it enters child k's box (meaningful where the
+ * bit is set). Conservative: a child the ray meets is always reported, as
+ * an exact computation would (and sometimes one it passes close by).
+ *
+ * Slab tests in double; the far distances and t1 grow by 2 gamma(3) of
+ * rounding, as in pbrt-v4 (Pharr, Jakob and Humphreys, sec. 6.8), which
+ * covers any rounding of the subtractions and products; a zero direction
+ * component gives NaN distances for a slab the origin lies on, which are
+ * ignored (that slab does not limit the ray). bvh_node_hits is SSE2 where
+ * the compiler has it, bvh_node_hits_plain the same arithmetic one child at
+ * a time; tests/test_bvh.c checks that they agree, bit for bit. */
+#define BVH_GROW (1.0 + 2.0 * (3.0 * 0x1p-53) / (1.0 - 3.0 * 0x1p-53)) /* 1 + 2 gamma(3), u = 2^-53 */
+
+unsigned bvh_node_hits_plain(const BvhNode *n, const BvhRay *r, double t0, double t1, double enter[BVH_WIDTH]);
+
+#if defined(__SSE2__)
+/* Two children's float bounds on one axis as doubles. */
+static inline __m128d bvh_load2(const float *p)
 {
-    /* Slab test; the far distances grow by 2 gamma(3) of rounding as in
-     * pbrt-v4 (Pharr, Jakob, Humphreys, sec. 6.8), so the result is
-     * conservative for any rounding of the subtractions and products. The
-     * caller's far limit grows alike: an entry computed a few ulps beyond
-     * it may be exactly at it (a tie the caller must still see). */
-    const double grow = 1.0 + 2.0 * (3.0 * 0x1p-53) / (1.0 - 3.0 * 0x1p-53);
-    t1 *= grow;
-    for (int a = 0; a < 3; a++) {
-        double lo = r->neg[a] ? n->hi[a] : n->lo[a];
-        double hi = r->neg[a] ? n->lo[a] : n->hi[a];
-        double tn = (lo - r->org[a]) * r->inv[a];
-        double tf = (hi - r->org[a]) * r->inv[a] * grow;
-        if (tn > t0)
-            t0 = tn;
-        if (tf < t1)
-            t1 = tf;
-    }
-    *t_enter = t0;
-    return t0 <= t1;
+    return _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64((const __m128i *)p)));
 }
+
+static inline unsigned bvh_node_hits(const BvhNode *n, const BvhRay *r, double t0, double t1, double enter[BVH_WIDTH])
+{
+    const __m128d grow = _mm_set1_pd(BVH_GROW);
+    const __m128d start = _mm_set1_pd(t0), limit = _mm_set1_pd(t1 * BVH_GROW);
+    unsigned mask = 0;
+    for (int h = 0; h < BVH_WIDTH; h += 2) {
+        __m128d near = start, far = limit;
+        for (int a = 0; a < 3; a++) {
+            const float *lo = r->neg[a] ? n->hi[a] : n->lo[a];
+            const float *hi = r->neg[a] ? n->lo[a] : n->hi[a];
+            __m128d tn = _mm_mul_pd(_mm_sub_pd(bvh_load2(lo + h), r->org2[a]), r->inv2[a]);
+            __m128d tf = _mm_mul_pd(_mm_mul_pd(_mm_sub_pd(bvh_load2(hi + h), r->org2[a]), r->inv2[a]), grow);
+            /* maxpd/minpd return their second operand when either is NaN:
+             * a NaN distance leaves the bound as it was, as in the plain
+             * version. */
+            near = _mm_max_pd(tn, near);
+            far = _mm_min_pd(tf, far);
+        }
+        _mm_storeu_pd(&enter[h], near);
+        mask |= (unsigned)_mm_movemask_pd(_mm_cmple_pd(near, far)) << h;
+    }
+    return mask;
+}
+#else
+static inline unsigned bvh_node_hits(const BvhNode *n, const BvhRay *r, double t0, double t1, double enter[BVH_WIDTH])
+{
+    return bvh_node_hits_plain(n, r, t0, t1, enter);
+}
+#endif
 
 #endif

@@ -159,8 +159,37 @@ static void nearest_in_grid(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double 
     } while (grid_walk_next(g, &walk));
 }
 
-/* The nearest polygon by the hierarchy: nearer child first, boxes beyond
- * the best hit so far skipped. */
+/* A node or leaf waiting on the traversal stack, and where the ray enters it. */
+typedef struct {
+    uint32_t child;
+    double enter;
+} Pending;
+
+/* Pushes the children of node n the ray meets, nearest last so that it is
+ * taken first. */
+static inline int push_children(Pending *stack, int sp, const BvhNode *n, unsigned mask, const double *enter)
+{
+    Pending hit[BVH_WIDTH];
+    int m = 0;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        if (!(mask & (1u << k)) || n->child[k] == BVH_EMPTY)
+            continue;
+        /* Insertion by distance, farthest first. */
+        int i = m++;
+        while (i > 0 && hit[i - 1].enter < enter[k]) {
+            hit[i] = hit[i - 1];
+            i--;
+        }
+        hit[i].child = n->child[k];
+        hit[i].enter = enter[k];
+    }
+    for (int i = 0; i < m; i++)
+        stack[sp++] = hit[i];
+    return sp;
+}
+
+/* The nearest polygon by the hierarchy: nearer children first, those the
+ * ray enters beyond the best hit so far skipped. */
 static void nearest_in_bvh(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double plane_t, int exclude, Hit *hit,
                            double *best)
 {
@@ -170,41 +199,37 @@ static void nearest_in_bvh(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double p
         return;
     RayFrame frame = ray_frame(org, dir);
     BvhRay br = bvh_ray(org, dir);
-    uint32_t stack[BVH_MAX_DEPTH];
+    Pending stack[BVH_STACK];
     int sp = 0;
-    uint32_t ni = 0;
-    for (;;) {
-        const BvhNode *n = &b->nodes[ni];
-        double enter;
-        tr->stats.nodes_visited++;
-        if (bvh_node_hit(n, &br, 0.0, hit->kind == HIT_NONE ? plane_t : *best, &enter)) {
-            if (n->count == 0) {
-                /* Nearer child first: the one on the side the ray comes from. */
-                uint32_t first = ni + 1, second = n->index;
-                if (br.neg[n->axis]) {
-                    uint32_t t = first;
-                    first = second;
-                    second = t;
-                }
-                stack[sp++] = second;
-                ni = first;
-                continue;
-            }
-            for (uint32_t k = n->index; k < n->index + n->count; k++) {
-                uint32_t pi = b->items[k];
-                if ((int)pi == exclude)
-                    continue;
-                if (tr->hide && material_hidden(&w->materials[w->polygons[pi].material], tr->hide))
-                    continue;
-                tr->stats.polygon_tests++;
-                double t = intersect_polygon_in(w, &w->polygons[pi], &frame, test_limit(hit, *best, plane_t));
-                if (t > tmin)
-                    take_nearer(hit, best, pi, t);
-            }
+    stack[sp].child = 0;
+    stack[sp++].enter = 0.0;
+    while (sp > 0) {
+        Pending p = stack[--sp];
+        double limit = hit->kind == HIT_NONE ? plane_t : *best;
+        /* Entered beyond the best hit: nothing nearer inside (the test that
+         * pushed it grew the limit the same way). */
+        if (p.enter > limit * BVH_GROW)
+            continue;
+        if (!bvh_is_leaf(p.child)) {
+            const BvhNode *n = &b->nodes[p.child];
+            double enter[BVH_WIDTH];
+            tr->stats.nodes_visited++;
+            unsigned mask = bvh_node_hits(n, &br, 0.0, limit, enter);
+            sp = push_children(stack, sp, n, mask, enter);
+            continue;
         }
-        if (sp == 0)
-            break;
-        ni = stack[--sp];
+        uint32_t first = bvh_leaf_first(p.child), end = first + bvh_leaf_count(p.child);
+        for (uint32_t k = first; k < end; k++) {
+            uint32_t pi = b->items[k];
+            if ((int)pi == exclude)
+                continue;
+            if (tr->hide && material_hidden(&w->materials[w->polygons[pi].material], tr->hide))
+                continue;
+            tr->stats.polygon_tests++;
+            double t = intersect_polygon_in(w, &w->polygons[pi], &frame, test_limit(hit, *best, plane_t));
+            if (t > tmin)
+                take_nearer(hit, best, pi, t);
+        }
     }
 }
 
@@ -292,40 +317,36 @@ int trace_segment_hits(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double tmax,
     RayFrame frame = ray_frame(org, dir);
     if (tr->bvh) {
         const Bvh *b = tr->bvh;
+        if (b->nnodes == 0)
+            return 0;
         BvhRay br = bvh_ray(org, dir);
-        uint32_t stack[BVH_MAX_DEPTH];
+        uint32_t stack[BVH_STACK];
         int sp = 0;
-        uint32_t ni = 0;
-        for (;;) {
-            const BvhNode *n = &b->nodes[ni];
-            double enter;
-            tr->stats.nodes_visited++;
-            if (bvh_node_hit(n, &br, 0.0, tmax, &enter)) {
-                if (n->count == 0) {
-                    uint32_t first = ni + 1, second = n->index;
-                    if (br.neg[n->axis]) {
-                        uint32_t t = first;
-                        first = second;
-                        second = t;
-                    }
-                    stack[sp++] = second;
-                    ni = first;
-                    continue;
-                }
-                for (uint32_t k = n->index; k < n->index + n->count; k++) {
-                    uint32_t pi = b->items[k];
-                    if ((int)pi == exclude || (hide && material_hidden(&w->materials[w->polygons[pi].material], hide)))
-                        continue;
-                    ++*tests;
-                    double t = intersect_polygon_in(w, &w->polygons[pi], &frame, tmax); /* negative at tmax or beyond */
-                    if (t > tmin && visit(user, pi, t))
-                        return 1;
-                }
+        stack[sp++] = 0;
+        while (sp > 0) {
+            uint32_t c = stack[--sp];
+            if (!bvh_is_leaf(c)) {
+                const BvhNode *n = &b->nodes[c];
+                double enter[BVH_WIDTH];
+                tr->stats.nodes_visited++;
+                unsigned mask = bvh_node_hits(n, &br, 0.0, tmax, enter);
+                for (int k = BVH_WIDTH - 1; k >= 0; k--)
+                    if ((mask & (1u << k)) && n->child[k] != BVH_EMPTY)
+                        stack[sp++] = n->child[k];
+                continue;
             }
-            if (sp == 0)
-                return 0;
-            ni = stack[--sp];
+            uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
+            for (uint32_t k = first; k < end; k++) {
+                uint32_t pi = b->items[k];
+                if ((int)pi == exclude || (hide && material_hidden(&w->materials[w->polygons[pi].material], hide)))
+                    continue;
+                ++*tests;
+                double t = intersect_polygon_in(w, &w->polygons[pi], &frame, tmax); /* negative at tmax or beyond */
+                if (t > tmin && visit(user, pi, t))
+                    return 1;
+            }
         }
+        return 0;
     }
     const Grid *g = tr->grid;
     GridWalk walk;
