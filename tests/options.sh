@@ -199,8 +199,8 @@ schemes() { sed -n 's/.*"schemes": {\(.*\)}.*/\1/p' "$1"; }
 scheme() { sed -n "s/.*\"schemes\": {.*\"$2\": \\([0-9]*\\).*/\\1/p" "$1" | head -1; }
 check "--nth 7: N_th fixed at 7 (--stats-json nth $(json "$work/nth-7.json" nth))" test "$(json "$work/nth-7.json" nth)" = 7.000
 check "--nth per-point: --stats-json nth is per-point" test "$(json "$work/nth-pp.json" nth)" = per-point
-check "--nth auto: N_th is eq. 7's ($(json "$work/nth-auto.json" nth) and $(json "$work/nth-auto.json" nth_eq7))" \
-    test "$(json "$work/nth-auto.json" nth)" = "$(json "$work/nth-auto.json" nth_eq7)"
+check "--nth auto: N_th is the shadow ray's cost over counting's ($(json "$work/nth-auto.json" nth) and $(json "$work/nth-auto.json" nth_shadow_ray))" \
+    test "$(json "$work/nth-auto.json" nth)" = "$(json "$work/nth-auto.json" nth_shadow_ray)"
 threshold_moves() {
     gt "$(scheme "$work/nth-0.json" conventional)" "$(scheme "$work/nth-big.json" conventional)" &&
         gt "$(scheme "$work/nth-big.json" volume)" "$(scheme "$work/nth-0.json" volume)"

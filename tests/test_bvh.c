@@ -110,7 +110,8 @@ static int same_hits(HitList *a, HitList *b)
 }
 
 typedef struct {
-    int rays, hits, brute_wrong, grid_wrong, grid_ties, segments, segment_wrong;
+    int rays, hits, brute_wrong, grid_wrong, grid_ties, segments, segment_wrong, touch_asked, touching, touch_wrong,
+        touch_grid_wrong, touch_grid_missed;
 } Tally;
 
 /* The nearest hit by testing everything, written out apart from the tracer:
@@ -175,6 +176,25 @@ static void compare_ray(Tracer *grid, Tracer *tree, Vec3 org, Vec3 dir, const Hi
             t->grid_ties++;
         else
             t->grid_wrong++;
+    }
+    /* Whether the hit point lies on another polygon too (the shadow
+     * volumes' rule), against asking every polygon (the tracer asks those
+     * of the nearby cells). */
+    if (fb) {
+        const World *w = tree->world;
+        double tol = grid_tolerance(grid->grid) * 1e3; /* wide enough that the answer is often yes */
+        int tg = trace_point_touches_other(grid, &hb, tol), tb = trace_point_touches_other(tree, &hb, tol);
+        int want = hb.kind == HIT_POLYGON && polygon_classify_point(w, &w->polygons[hb.index], hb.point, tol) < 0;
+        for (int i = 0; i < w->npolygons && !want; i++) {
+            const Polygon *p = &w->polygons[i];
+            want = !(hb.kind == HIT_POLYGON && hb.index == i) && fabs(v3_dot(p->normal, hb.point) - p->d) <= tol &&
+                   polygon_classify_point(w, p, hb.point, tol) != 0;
+        }
+        t->touch_asked++;
+        t->touching += want;
+        t->touch_wrong += tb != want;
+        t->touch_grid_wrong += tg && !want;
+        t->touch_grid_missed += !tg && want;
     }
     /* The segment to the hit (or a long way), as a shadow ray sees it. */
     double tmax = fb ? hb.t : 1e6;
@@ -312,6 +332,10 @@ static void check_world(const char *name, const World *w)
            name, t.rays, t.hits, t.grid_ties, t.grid_wrong);
     tap_ok(t.segment_wrong == 0, "%s: the polygons a segment meets, and where, equal the grid's on %d segments (%d differ)",
            name, t.segments, t.segment_wrong);
+    tap_ok(t.touch_wrong == 0 && t.touch_grid_wrong == 0 && t.touch_grid_missed == 0,
+           "%s: whether a hit point lies on a second polygon is every polygon's answer (%d points, %d on one; %d "
+           "differ, %d wrongly, %d missed by the grid-walk tracer)",
+           name, t.touch_asked, t.touching, t.touch_wrong, t.touch_grid_wrong, t.touch_grid_missed);
     free(la.hit);
     free(lb.hit);
     tracer_free(&grid);

@@ -42,6 +42,13 @@ void tracer_free(Tracer *t)
     t->segment_cells = NULL;
 }
 
+/* Does polygon pi (not the hit's own) hold the hit point, within tol? */
+static inline int touches(const World *w, uint32_t pi, Vec3 x, double tol)
+{
+    const Polygon *p = &w->polygons[pi];
+    return fabs(v3_dot(p->normal, x) - p->d) <= tol && polygon_classify_point(w, p, x, tol) != 0;
+}
+
 /* The uncached part of trace_point_touches_other. */
 static int touches_other(Tracer *t, const Hit *hit, double tol)
 {
@@ -49,11 +56,16 @@ static int touches_other(Tracer *t, const Hit *hit, double tol)
     const Grid *g = t->grid;
     if (hit->kind == HIT_POLYGON && polygon_classify_point(w, &w->polygons[hit->index], hit->point, tol) < 0)
         return 1; /* on its own polygon's border: on the neighbours' too */
-    /* Every cell within tol of the point (usually one). */
+    /* A polygon that holds the point within tol has a point y with
+     * |y - x| <= tol on its projection's two axes and, since x is within
+     * tol of the plane and the dropped axis is the normal's largest
+     * (|n_w| >= 1/sqrt 3), |y_w - x_w| <= sqrt 3 (1 + sqrt 2) tol < 4.2 tol
+     * on the third: it is listed in a cell within 5 tol of x on every axis
+     * (usually the one cell holding x). */
     int lo[3], hi[3];
     for (int a = 0; a < 3; a++) {
-        lo[a] = grid_cell_coord(g, v3_comp(hit->point, a) - tol, a);
-        hi[a] = grid_cell_coord(g, v3_comp(hit->point, a) + tol, a);
+        lo[a] = grid_cell_coord(g, v3_comp(hit->point, a) - 5.0 * tol, a);
+        hi[a] = grid_cell_coord(g, v3_comp(hit->point, a) + 5.0 * tol, a);
     }
     uint32_t id = trace_new_segment(t);
     if (hit->kind == HIT_POLYGON)
@@ -65,10 +77,7 @@ static int touches_other(Tracer *t, const Hit *hit, double tol)
                 int ci = grid_cell_index(g, c);
                 for (uint32_t k = g->cell_start[ci]; k < g->cell_start[ci + 1]; k++) {
                     uint32_t pi = g->items[k];
-                    if (!bucket_admit(t, id, pi))
-                        continue;
-                    const Polygon *p = &w->polygons[pi];
-                    if (fabs(v3_dot(p->normal, hit->point) - p->d) <= tol && polygon_classify_point(w, p, hit->point, tol) != 0)
+                    if (bucket_admit(t, id, pi) && touches(w, pi, hit->point, tol))
                         return 1;
                 }
             }

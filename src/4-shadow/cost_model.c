@@ -5,9 +5,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <limits.h>
+
 #include "camera.h"
 #include "clock.h"
 #include "intersect.h"
+#include "shadow.h"
+#include "shadow_bucket.h"
 #include "tracer.h"
 
 #define SAMPLE_GRID 24      /* camera rays per axis whose hits are the sample points */
@@ -125,7 +129,92 @@ static void sample_walk(const World *w, const Grid *g, uint32_t *stamp, uint32_t
     } while (grid_walk_next(g, &walk));
 }
 
-int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const ShadowVolumes *sv, int width, int height)
+/* The shadow ray's stopping rule, for timing it: the first opaque polygon. */
+static int stop_at_opaque(void *user, uint32_t polygon, double t)
+{
+    const World *w = user;
+    (void)t;
+    return w->materials[w->polygons[polygon].material].opaque;
+}
+
+/* C_ray: the exact shadow ray through the hierarchy on the sample rays. */
+static double time_shadow_rays(const World *w, const Grid *g, const Bvh *bvh, const SampleRay *rays, int nrays,
+                               volatile double *sink)
+{
+    Tracer t;
+    if (tracer_init(&t, w, g)) {
+        tracer_free(&t);
+        return 0.0;
+    }
+    tracer_use_bvh(&t, bvh);
+    double best = HUGE_VAL;
+    for (int round = 0; round < ROUNDS; round++) {
+        long n = 0;
+        double t0 = clock_thread_cpu(), dt;
+        do {
+            for (int i = 0; i < nrays; i++) {
+                uint64_t tests = 0;
+                *sink += trace_segment_hits(&t, rays[i].org, rays[i].dir, trace_min_distance(rays[i].org),
+                                            rays[i].tmax, rays[i].from, HIDE_NO_SHADOW, stop_at_opaque, (void *)w,
+                                            &tests);
+            }
+            n += nrays;
+        } while ((dt = clock_thread_cpu() - t0) < MIN_TIMING);
+        best = fmin(best, dt / (double)n);
+    }
+    tracer_free(&t);
+    return best;
+}
+
+/* C_g: gathering the shadow polygons of the cells that camera segments
+ * pierce into buckets, per polygon gathered. */
+static double time_gathering(const World *w, const Grid *g, const ShadowVolumes *sv, int width, int height,
+                             const int *lights, int nlights, volatile double *sink)
+{
+    ShadowContext ctx;
+    if (shadow_context_init(&ctx, w, g, NULL, sv)) {
+        shadow_context_free(&ctx);
+        return 0.0;
+    }
+    /* The cells of camera segments through a coarse grid of pixels. */
+    enum { SEGMENTS = 64 };
+    int cap = ctx.tracer.segment_cells_cap;
+    uint32_t *cells = malloc(sizeof *cells * (size_t)cap * SEGMENTS);
+    int ncells[SEGMENTS], nseg = 0;
+    for (int i = 0; cells && i < SEGMENTS; i++) {
+        Vec3 org, dir;
+        camera_ray(&w->camera, width, height, (i % 8 * 2 + 1) * width / 16, (i / 8 * 2 + 1) * height / 16, &org,
+                   &dir);
+        Hit from = { HIT_NONE, -1, 0.0, org }, hit;
+        if (!trace_nearest(&ctx.tracer, org, dir, HUGE_VAL, &from, &hit))
+            continue;
+        memcpy(&cells[(size_t)nseg * (size_t)cap], ctx.tracer.segment_cells,
+               sizeof *cells * (size_t)ctx.tracer.segment_ncells);
+        ncells[nseg++] = ctx.tracer.segment_ncells;
+    }
+    double best = 0.0;
+    if (nseg > 0) {
+        best = HUGE_VAL;
+        for (int round = 0; round < ROUNDS; round++) {
+            long gathered = 0;
+            double t0 = clock_thread_cpu(), dt;
+            do {
+                for (int i = 0; i < nseg; i++) {
+                    int light = lights[i % nlights];
+                    gathered += shadow_bucket_fill_in(&ctx, light, &cells[(size_t)i * (size_t)cap], ncells[i], INT_MAX);
+                }
+                *sink += (double)gathered;
+            } while ((dt = clock_thread_cpu() - t0) < MIN_TIMING);
+            best = gathered > 0 ? fmin(best, dt / (double)gathered) : 0.0;
+        }
+    }
+    free(cells);
+    shadow_context_free(&ctx);
+    return best < HUGE_VAL ? best : 0.0;
+}
+
+int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv,
+                         int width, int height)
 {
     memset(m, 0, sizeof *m);
     double start = clock_wall();
@@ -267,11 +356,16 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Shad
             m->c_s = fmin(m->c_s, t / (double)n);
         }
     }
+    if (bvh && nrays > 0)
+        m->c_ray = time_shadow_rays(w, g, bvh, rays, nrays, &sink);
+    if (sv && sv->npolygons > 0)
+        m->c_g = time_gathering(w, g, sv, width, height, lights, nlights, &sink);
     (void)sink;
     free(rays);
     free(tests);
     free(stamp);
     m->nth = cost_model_threshold(m, m->n_c);
+    m->nth_ray = m->c_ray > 0.0 && m->c_s + m->c_g > 0.0 ? m->c_ray / (m->c_s + m->c_g) : m->nth;
     m->seconds = clock_wall() - start;
     return 0;
 }

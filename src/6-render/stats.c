@@ -99,8 +99,11 @@ void stats_print(FILE *f, const StatsReport *r)
                    "  (calibrated in %.1f ms)\n",
                 c->c_s * 1e9, c->c_i * 1e9, c->c_c * 1e9, c->c_o * 1e9, c->p, c->alpha, c->n_c, c->n_o,
                 c->seconds * 1e3);
+        fprintf(f, "              shadow ray through the hierarchy C_ray %.1f ns, gathering C_g %.1f ns a shadow polygon\n",
+                c->c_ray * 1e9, c->c_g * 1e9);
         if (r->nth >= 0.0)
-            fprintf(f, "  N_th        %.2f (%s; eq. 7 gives %.2f)\n", r->nth, r->nth_mode, c->nth);
+            fprintf(f, "  N_th        %.2f (%s; C_ray / (C_s + C_g) gives %.2f, eq. 7 for the grid's walk %.2f)\n",
+                    r->nth, r->nth_mode, c->nth_ray, c->nth);
         else
             fprintf(f, "  N_th        per shading point from its own N_c (eq. 7 for the mean N_c gives %.2f)\n", c->nth);
     }
@@ -213,10 +216,10 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
     if (r->cost) {
         const CostModel *c = r->cost;
         fprintf(f, ",\n  \"cost_model\": {\"c_s_ns\": %.3f, \"c_i_ns\": %.3f, \"c_c_ns\": %.3f, \"c_o_ns\": %.3f, "
-                   "\"p\": %.6f, \"alpha\": %.4f, \"n_c\": %.3f, \"n_o\": %.3f, \"nth_eq7\": %.3f, \"seconds\": %.6f, "
-                   "\"samples\": %d},\n  \"nth\": ",
+                   "\"p\": %.6f, \"alpha\": %.4f, \"n_c\": %.3f, \"n_o\": %.3f, \"nth_eq7\": %.3f, \"c_ray_ns\": %.3f, "
+                   "\"c_g_ns\": %.3f, \"nth_shadow_ray\": %.3f, \"seconds\": %.6f, \"samples\": %d},\n  \"nth\": ",
                 c->c_s * 1e9, c->c_i * 1e9, c->c_c * 1e9, c->c_o * 1e9, c->p, c->alpha, c->n_c, c->n_o, c->nth,
-                c->seconds, c->samples);
+                c->c_ray * 1e9, c->c_g * 1e9, c->nth_ray, c->seconds, c->samples);
         if (r->nth >= 0.0)
             fprintf(f, "%.3f", r->nth);
         else

@@ -218,7 +218,7 @@ int main(int argc, char **argv)
         }
         have_volumes = 1;
         report.volumes_seconds = clock_wall() - tv;
-        if (cost_model_calibrate(&cost, &world, &grid, &volumes, opt.width, opt.height) == 0)
+        if (cost_model_calibrate(&cost, &world, &grid, &bvh, &volumes, opt.width, opt.height) == 0)
             report.cost = &cost;
         report.volumes = &volumes;
     }
@@ -242,9 +242,9 @@ int main(int argc, char **argv)
     ropt.cost = &cost;
     ropt.verify = opt.verify_shadows;
     ropt.pixel_coherence = opt.pixel_coherence;
-    ropt.nth = opt.nth == NTH_PER_POINT ? -1.0 : opt.nth == NTH_AUTO ? cost.nth : opt.nth;
+    ropt.nth = opt.nth == NTH_PER_POINT ? -1.0 : opt.nth == NTH_AUTO ? cost.nth_ray : opt.nth;
     report.nth = ropt.nth;
-    report.nth_mode = opt.nth == NTH_PER_POINT ? "per-point" : opt.nth == NTH_AUTO ? "auto (eq. 7)" : "fixed";
+    report.nth_mode = opt.nth == NTH_PER_POINT ? "per-point" : opt.nth == NTH_AUTO ? "auto (C_ray / (C_s + C_g))" : "fixed";
     report.verify = opt.verify_shadows;
     ropt.progress = isatty(STDERR_FILENO);
     report.threads = ropt.threads;
