@@ -243,7 +243,7 @@ static void check_world(const char *name, const World *w)
     int nextra = grid_extra_points(w, extra, (int)(sizeof extra / sizeof extra[0]));
     Grid g;
     Bvh b;
-    if (grid_build(&g, w, NULL, extra, nextra) || bvh_build(&b, w)) {
+    if (grid_build(&g, w, NULL, extra, nextra) || bvh_build(&b, w, 1)) {
         tap_ok(0, "%s: grid and hierarchy build", name);
         return;
     }
@@ -416,6 +416,38 @@ int main(void)
             world_free(&w);
         } else {
             tap_ok(0, "%s: world builds", name);
+        }
+        fixture_scene_free(sc);
+    }
+    /* The hierarchy does not depend on the threads that built it: a soup
+     * big enough that its subtrees go to threads, built by 1, 2 and 3. */
+    {
+        uint64_t s = 0xDA942042E4DD58B5ULL;
+        int n = 120000;
+        Scene *sc = fixture_scene(n + 1);
+        for (int i = 0; i < n; i++) {
+            Vec3 c = v3(100 * unit(&s) - 50, 100 * unit(&s) - 50, 100 * unit(&s) - 50);
+            fixture_triangle(sc, c, v3_add(c, v3(unit(&s), 0, 0)), v3_add(c, v3(0, unit(&s), unit(&s))));
+        }
+        World w;
+        WorldError we;
+        int same = 0;
+        Bvh b1, b2, b3;
+        if (world_build(&w, sc, &we) == 0 && bvh_build(&b1, &w, 1) == 0 && bvh_build(&b2, &w, 2) == 0 &&
+            bvh_build(&b3, &w, 3) == 0) {
+            same = b1.nnodes == b2.nnodes && b1.nnodes == b3.nnodes &&
+                   memcmp(b1.nodes, b2.nodes, sizeof *b1.nodes * (size_t)b1.nnodes) == 0 &&
+                   memcmp(b1.nodes, b3.nodes, sizeof *b1.nodes * (size_t)b1.nnodes) == 0 &&
+                   memcmp(b1.items, b2.items, sizeof *b1.items * (size_t)b1.nitems) == 0 &&
+                   memcmp(b1.items, b3.items, sizeof *b1.items * (size_t)b1.nitems) == 0;
+            tap_ok(same, "the hierarchy of %d triangles is the same, node for node, built on 1, 2 and 3 threads (%d nodes)",
+                   n, b1.nnodes);
+            bvh_free(&b1);
+            bvh_free(&b2);
+            bvh_free(&b3);
+            world_free(&w);
+        } else {
+            tap_ok(0, "a soup of %d triangles builds", n);
         }
         fixture_scene_free(sc);
     }

@@ -219,7 +219,7 @@ static void check_cards(Scene *s, const CardProbe *probes, int nprobes, const ch
     ShadowVolumes sv;
     Bvh bvh;
     if (grid_build(&g, &w, NULL, extra, nextra) || shadow_volumes_build(&sv, &w, &g, &w.camera.location) ||
-        bvh_build(&bvh, &w)) {
+        bvh_build(&bvh, &w, 1)) {
         tap_ok(0, "%s: grid and volumes built", layout);
         world_free(&w);
         return;

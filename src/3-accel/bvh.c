@@ -6,8 +6,8 @@
  * rid of packets", 2008, do). */
 #include "bvh.h"
 
-#include <float.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,40 +16,34 @@
 #define COST_TRAVERSE 1.0 /* SAH: one box test ... */
 #define COST_INTERSECT 1.5 /* ... against one polygon test */
 
+/* A box in float, as the nodes keep them (bounds rounded outward). */
 typedef struct {
-    double lo[3], hi[3];
+    float lo[3], hi[3];
 } Box;
 
-/* A node of the binary tree the build makes first. */
-typedef struct {
-    Box box;
-    uint32_t index;       /* interior: the second child (the first follows); leaf: first item */
-    uint16_t count;       /* 0 for an interior node */
-} BinNode;
-
-static void box_empty(Box *b)
+static inline void box_empty(Box *b)
 {
     for (int a = 0; a < 3; a++) {
-        b->lo[a] = HUGE_VAL;
-        b->hi[a] = -HUGE_VAL;
+        b->lo[a] = HUGE_VALF;
+        b->hi[a] = -HUGE_VALF;
     }
 }
 
-static void box_grow(Box *b, const Box *c)
+static inline void box_grow(Box *b, const float lo[3], const float hi[3])
 {
     for (int a = 0; a < 3; a++) {
-        if (c->lo[a] < b->lo[a])
-            b->lo[a] = c->lo[a];
-        if (c->hi[a] > b->hi[a])
-            b->hi[a] = c->hi[a];
+        b->lo[a] = lo[a] < b->lo[a] ? lo[a] : b->lo[a];
+        b->hi[a] = hi[a] > b->hi[a] ? hi[a] : b->hi[a];
     }
 }
 
-static double box_area(const Box *b)
+static inline void box_join(Box *b, const Box *c) { box_grow(b, c->lo, c->hi); }
+
+static inline double box_area(const Box *b)
 {
     double e[3];
     for (int a = 0; a < 3; a++)
-        e[a] = b->hi[a] > b->lo[a] ? b->hi[a] - b->lo[a] : 0.0;
+        e[a] = b->hi[a] > b->lo[a] ? (double)b->hi[a] - (double)b->lo[a] : 0.0;
     return 2.0 * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
 }
 
@@ -66,15 +60,30 @@ static float round_up(double x)
     return (double)f < x ? nextafterf(f, HUGE_VALF) : f;
 }
 
+/* A polygon as the build moves it: its box and centre, records partitioned
+ * in place so that every pass reads memory in order. */
 typedef struct {
-    const World *w;
-    Box *boxes;           /* per polygon */
-    double (*centre)[3];  /* per polygon */
-    uint32_t *items;
+    float lo[3], hi[3], centre[3];
+    uint32_t polygon;
+} BuildItem;
+
+/* A node of the binary tree the build makes first. */
+typedef struct {
+    Box box;
+    uint32_t index;       /* interior: the second child (the first follows); leaf: first item */
+    uint16_t count;       /* 0 for an interior node */
+} BinNode;
+
+typedef struct {
+    BuildItem *items;
     BinNode *nodes;
     int nnodes, cap;
     int depth;
+    int threads;          /* this builder may hand subtrees to threads of its own, up to this many in all */
 } Builder;
+
+/* Subtrees of fewer items are built on the thread that reaches them. */
+#define PARALLEL_MIN 20000
 
 static int new_node(Builder *bd)
 {
@@ -89,51 +98,138 @@ static int new_node(Builder *bd)
     return bd->nnodes++;
 }
 
+static inline int bin_of(float c, float lo, float scale)
+{
+    int k = (int)((c - lo) * scale);
+    return k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
+}
 
-/* items[first, first + count): one subtree. Returns 0, or -1 when out of memory. */
-static int build(Builder *bd, int first, int count, int depth)
+/* items[first, first + count), whose boxes' union is `bounds` and whose
+ * centres' is `cbounds`: one subtree. Returns 0, or -1 when out of memory. */
+static int build(Builder *bd, int first, int count, int depth, const Box *bounds, const Box *cbounds);
+
+/* The second half of a split built on a thread of its own, into a builder
+ * of its own (the items are shared: the halves are disjoint). */
+typedef struct {
+    Builder sub;
+    int first, count, depth;
+    Box bounds, cbounds;
+    int failed;
+} Half;
+
+static void *build_half(void *arg)
+{
+    Half *h = arg;
+    h->failed = build(&h->sub, h->first, h->count, h->depth, &h->bounds, &h->cbounds);
+    return NULL;
+}
+
+/* Both halves of a split: the second on another thread when it is big and
+ * threads are left, its nodes then appended after the first's, so that the
+ * layout is the one a single thread makes. Returns the second's root
+ * index, or -1 when out of memory. */
+static int build_halves(Builder *bd, int first, int mid, int count, int depth, const Box *lb, const Box *lcb,
+                        const Box *rb, const Box *rcb)
+{
+    pthread_t tid;
+    Half h;
+    int spawned = 0;
+    if (bd->threads > 1 && count - mid >= PARALLEL_MIN && mid >= PARALLEL_MIN) {
+        memset(&h, 0, sizeof h);
+        h.sub.items = bd->items;
+        h.sub.threads = bd->threads / 2;
+        h.first = first + mid;
+        h.count = count - mid;
+        h.depth = depth;
+        h.bounds = *rb;
+        h.cbounds = *rcb;
+        spawned = pthread_create(&tid, NULL, build_half, &h) == 0;
+    }
+    if (!spawned) {
+        if (build(bd, first, mid, depth, lb, lcb))
+            return -1;
+        int second = bd->nnodes;
+        if (build(bd, first + mid, count - mid, depth, rb, rcb))
+            return -1;
+        return second;
+    }
+    int keep = bd->threads;
+    bd->threads -= h.sub.threads;
+    int failed = build(bd, first, mid, depth, lb, lcb);
+    bd->threads = keep;
+    pthread_join(tid, NULL);
+    int second = bd->nnodes;
+    if (!failed && !h.failed) {
+        while (bd->cap < bd->nnodes + h.sub.nnodes) {
+            int cap = bd->cap ? bd->cap * 2 : 64;
+            BinNode *n = realloc(bd->nodes, sizeof *n * (size_t)cap);
+            if (!n) {
+                failed = 1;
+                break;
+            }
+            bd->nodes = n;
+            bd->cap = cap;
+        }
+    }
+    if (failed || h.failed) {
+        free(h.sub.nodes);
+        return -1;
+    }
+    for (int i = 0; i < h.sub.nnodes; i++) {
+        BinNode node = h.sub.nodes[i];
+        if (node.count == 0)
+            node.index += (uint32_t)second; /* the second child, moved along */
+        bd->nodes[second + i] = node;
+    }
+    bd->nnodes += h.sub.nnodes;
+    if (h.sub.depth > bd->depth)
+        bd->depth = h.sub.depth;
+    free(h.sub.nodes);
+    return second;
+}
+
+static int build(Builder *bd, int first, int count, int depth, const Box *bounds, const Box *cbounds)
 {
     int ni = new_node(bd);
     if (ni < 0)
         return -1;
     if (depth > bd->depth)
         bd->depth = depth;
-    Box bounds, cbounds;
-    box_empty(&bounds);
-    box_empty(&cbounds);
-    for (int i = first; i < first + count; i++) {
-        uint32_t p = bd->items[i];
-        box_grow(&bounds, &bd->boxes[p]);
-        Box c = { { bd->centre[p][0], bd->centre[p][1], bd->centre[p][2] },
-                  { bd->centre[p][0], bd->centre[p][1], bd->centre[p][2] } };
-        box_grow(&cbounds, &c);
-    }
-    bd->nodes[ni].box = bounds;
+    bd->nodes[ni].box = *bounds;
+    BuildItem *it = bd->items + first;
 
-    /* The best binned split over the three axes; below a depth that a
-     * pathological scene could reach, plain halving by index keeps the
-     * hierarchy within BVH_MAX_DEPTH. */
+    /* The best binned split over the three axes, binned in one pass; below
+     * a depth that a pathological scene could reach, plain halving by index
+     * keeps the hierarchy within BVH_MAX_DEPTH. */
     int best_axis = -1, best_bin = 0;
     double best_cost = COST_INTERSECT * count;
     int halve_only = depth >= BVH_MAX_DEPTH - 24;
+    float scale[3];
+    int splittable[3];
+    for (int a = 0; a < 3; a++) {
+        float ext = cbounds->hi[a] - cbounds->lo[a];
+        splittable[a] = ext > 0.0f && (float)BINS / ext < HUGE_VALF;
+        scale[a] = splittable[a] ? (float)BINS / ext : 0.0f;
+    }
+    /* Per axis and bin: the items and their boxes' union. */
+    int n[3][BINS];
+    Box b[3][BINS];
     if (count > 1 && !halve_only) {
-        double leaf_area = box_area(&bounds);
-        for (int a = 0; a < 3; a++) {
-            double lo = cbounds.lo[a], ext = cbounds.hi[a] - lo;
-            if (!(ext > 0.0))
-                continue;
-            int n[BINS] = { 0 };
-            Box b[BINS];
-            for (int k = 0; k < BINS; k++)
-                box_empty(&b[k]);
-            double scale = BINS / ext;
-            for (int i = first; i < first + count; i++) {
-                uint32_t p = bd->items[i];
-                int k = (int)((bd->centre[p][a] - lo) * scale);
-                k = k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
-                n[k]++;
-                box_grow(&b[k], &bd->boxes[p]);
+        for (int a = 0; a < 3; a++)
+            for (int k = 0; k < BINS; k++) {
+                n[a][k] = 0;
+                box_empty(&b[a][k]);
             }
+        for (int i = 0; i < count; i++)
+            for (int a = 0; a < 3; a++) {
+                int k = bin_of(it[i].centre[a], cbounds->lo[a], scale[a]);
+                n[a][k]++;
+                box_grow(&b[a][k], it[i].lo, it[i].hi);
+            }
+        double leaf_area = box_area(bounds);
+        for (int a = 0; a < 3; a++) {
+            if (!splittable[a])
+                continue;
             /* Sweep: areas and counts left of each boundary, then right. */
             double left_area[BINS];
             int left_n[BINS];
@@ -141,16 +237,16 @@ static int build(Builder *bd, int first, int count, int depth)
             box_empty(&acc);
             int s = 0;
             for (int k = 0; k < BINS - 1; k++) {
-                box_grow(&acc, &b[k]);
-                s += n[k];
+                box_join(&acc, &b[a][k]);
+                s += n[a][k];
                 left_area[k] = box_area(&acc);
                 left_n[k] = s;
             }
             box_empty(&acc);
             s = 0;
             for (int k = BINS - 1; k > 0; k--) {
-                box_grow(&acc, &b[k]);
-                s += n[k];
+                box_join(&acc, &b[a][k]);
+                s += n[a][k];
                 int nl = left_n[k - 1];
                 if (nl == 0 || s == 0)
                     continue;
@@ -164,7 +260,8 @@ static int build(Builder *bd, int first, int count, int depth)
             }
         }
     }
-    if (best_axis < 0 || best_cost >= COST_INTERSECT * count) {
+    int by_sah = best_axis >= 0 && best_cost < COST_INTERSECT * count;
+    if (!by_sah) {
         if (count <= LEAF_MAX) {
             bd->nodes[ni].index = (uint32_t)first;
             bd->nodes[ni].count = (uint16_t)count;
@@ -175,38 +272,60 @@ static int build(Builder *bd, int first, int count, int depth)
          * by index where the centres coincide. */
         int a = 0;
         for (int k = 1; k < 3; k++)
-            if (cbounds.hi[k] - cbounds.lo[k] > cbounds.hi[a] - cbounds.lo[a])
+            if (cbounds->hi[k] - cbounds->lo[k] > cbounds->hi[a] - cbounds->lo[a])
                 a = k;
         best_axis = a;
-        best_bin = !halve_only && cbounds.hi[a] > cbounds.lo[a] ? BINS / 2 : -1;
+        best_bin = !halve_only && splittable[a] ? BINS / 2 : -1;
     }
 
-    /* Partition: items whose centre falls in a bin below best_bin go left. */
+    /* Partition: items whose centre falls in a bin below best_bin go left;
+     * the halves' bounds come with them. */
     int mid;
+    Box lb, lcb, rb, rcb;
+    box_empty(&lb);
+    box_empty(&lcb);
+    box_empty(&rb);
+    box_empty(&rcb);
     if (best_bin < 0) {
-        mid = first + count / 2;
+        mid = count / 2;
+        for (int i = 0; i < count; i++) {
+            box_grow(i < mid ? &lb : &rb, it[i].lo, it[i].hi);
+            box_grow(i < mid ? &lcb : &rcb, it[i].centre, it[i].centre);
+        }
     } else {
-        double lo = cbounds.lo[best_axis], scale = BINS / (cbounds.hi[best_axis] - lo);
-        int i = first, j = first + count - 1;
+        int a = best_axis;
+        int i = 0, j = count - 1;
         while (i <= j) {
-            uint32_t p = bd->items[i];
-            int k = (int)((bd->centre[p][best_axis] - lo) * scale);
-            k = k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
-            if (k < best_bin) {
+            if (bin_of(it[i].centre[a], cbounds->lo[a], scale[a]) < best_bin) {
+                box_grow(&lb, it[i].lo, it[i].hi);
+                box_grow(&lcb, it[i].centre, it[i].centre);
                 i++;
             } else {
-                bd->items[i] = bd->items[j];
-                bd->items[j--] = p;
+                BuildItem t = it[i];
+                it[i] = it[j];
+                it[j--] = t;
             }
         }
         mid = i;
-        if (mid == first || mid == first + count)
-            mid = first + count / 2; /* cannot happen with a positive-cost split; stay safe */
+        for (int k = mid; k < count; k++) {
+            box_grow(&rb, it[k].lo, it[k].hi);
+            box_grow(&rcb, it[k].centre, it[k].centre);
+        }
+        if (mid == 0 || mid == count) {
+            /* cannot happen with both halves non-empty by construction; stay safe */
+            mid = count / 2;
+            box_empty(&lb);
+            box_empty(&lcb);
+            box_empty(&rb);
+            box_empty(&rcb);
+            for (int k = 0; k < count; k++) {
+                box_grow(k < mid ? &lb : &rb, it[k].lo, it[k].hi);
+                box_grow(k < mid ? &lcb : &rcb, it[k].centre, it[k].centre);
+            }
+        }
     }
-    if (build(bd, first, mid - first, depth + 1))
-        return -1;
-    int second = bd->nnodes;
-    if (build(bd, mid, first + count - mid, depth + 1))
+    int second = build_halves(bd, first, mid, count, depth + 1, &lb, &lcb, &rb, &rcb);
+    if (second < 0)
         return -1;
     bd->nodes[ni].index = (uint32_t)second;
     bd->nodes[ni].count = 0;
@@ -225,8 +344,8 @@ typedef struct {
 static void set_child_box(BvhNode *n, int k, const Box *b)
 {
     for (int a = 0; a < 3; a++) {
-        n->lo[a][k] = round_down(b->lo[a]);
-        n->hi[a][k] = round_up(b->hi[a]);
+        n->lo[a][k] = b->lo[a];
+        n->hi[a][k] = b->hi[a];
     }
 }
 
@@ -292,38 +411,41 @@ static int collapse(Collapser *c, uint32_t bi, int depth)
     return ni;
 }
 
-int bvh_build(Bvh *b, const World *w)
+int bvh_build(Bvh *b, const World *w, int threads)
 {
     memset(b, 0, sizeof *b);
     int n = w->npolygons;
     Builder bd;
     memset(&bd, 0, sizeof bd);
-    bd.w = w;
-    bd.boxes = malloc(sizeof *bd.boxes * (size_t)(n > 0 ? n : 1));
-    bd.centre = malloc(sizeof *bd.centre * (size_t)(n > 0 ? n : 1));
+    bd.threads = threads > 1 ? threads : 1;
     bd.items = malloc(sizeof *bd.items * (size_t)(n > 0 ? n : 1));
-    if (!bd.boxes || !bd.centre || !bd.items) {
-        free(bd.boxes);
-        free(bd.centre);
+    uint32_t *order = malloc(sizeof *order * (size_t)(n > 0 ? n : 1));
+    if (!bd.items || !order) {
         free(bd.items);
+        free(order);
         return -1;
     }
+    Box bounds, cbounds;
+    box_empty(&bounds);
+    box_empty(&cbounds);
     for (int i = 0; i < n; i++) {
         const Polygon *p = &w->polygons[i];
-        Box *bx = &bd.boxes[i];
-        bx->lo[0] = p->bbox_min.x;
-        bx->lo[1] = p->bbox_min.y;
-        bx->lo[2] = p->bbox_min.z;
-        bx->hi[0] = p->bbox_max.x;
-        bx->hi[1] = p->bbox_max.y;
-        bx->hi[2] = p->bbox_max.z;
-        for (int a = 0; a < 3; a++)
-            bd.centre[i][a] = 0.5 * (bx->lo[a] + bx->hi[a]);
-        bd.items[i] = (uint32_t)i;
+        BuildItem *it = &bd.items[i];
+        double lo[3] = { p->bbox_min.x, p->bbox_min.y, p->bbox_min.z };
+        double hi[3] = { p->bbox_max.x, p->bbox_max.y, p->bbox_max.z };
+        for (int a = 0; a < 3; a++) {
+            it->lo[a] = round_down(lo[a]);
+            it->hi[a] = round_up(hi[a]);
+            it->centre[a] = (float)(0.5 * (lo[a] + hi[a]));
+        }
+        it->polygon = (uint32_t)i;
+        box_grow(&bounds, it->lo, it->hi);
+        box_grow(&cbounds, it->centre, it->centre);
     }
-    int failed = n > 0 && build(&bd, 0, n, 1);
-    free(bd.boxes);
-    free(bd.centre);
+    int failed = n > 0 && build(&bd, 0, n, 1, &bounds, &cbounds);
+    for (int i = 0; i < n && !failed; i++)
+        order[i] = bd.items[i].polygon;
+    free(bd.items);
     Collapser c;
     memset(&c, 0, sizeof c);
     c.bin = bd.nodes;
@@ -353,13 +475,13 @@ int bvh_build(Bvh *b, const World *w)
     }
     free(bd.nodes);
     if (failed) {
-        free(bd.items);
+        free(order);
         free(c.nodes);
         return -1;
     }
     b->nodes = c.nodes;
     b->nnodes = c.nnodes;
-    b->items = bd.items;
+    b->items = order;
     b->nitems = n;
     b->depth = c.depth;
     return 0;

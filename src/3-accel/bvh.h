@@ -47,9 +47,10 @@ typedef struct {
     int depth;            /* of the deepest node */
 } Bvh;
 
-/* Builds over every polygon of w (an empty hierarchy for none). Returns 0,
- * or -1 when out of memory. */
-int bvh_build(Bvh *b, const World *w);
+/* Builds over every polygon of w (an empty hierarchy for none), the big
+ * subtrees on up to `threads` threads; the hierarchy is the same for any
+ * number. Returns 0, or -1 when out of memory. */
+int bvh_build(Bvh *b, const World *w, int threads);
 void bvh_free(Bvh *b);
 
 /* The deepest the binary tree is built (the 4-wide one is about half), and

@@ -200,7 +200,8 @@ int main(int argc, char **argv)
         goto done;
     }
     grid_set_tolerance(&grid, opt.tolerance);
-    if (bvh_build(&bvh, &world)) {
+    int threads = opt.threads > 0 ? opt.threads : render_default_threads();
+    if (bvh_build(&bvh, &world, threads)) {
         fprintf(stderr, "hstrace: out of memory while building the hierarchy\n");
         status = EXIT_IO;
         goto done;
@@ -234,7 +235,7 @@ int main(int argc, char **argv)
     memset(&ropt, 0, sizeof ropt);
     ropt.width = opt.width;
     ropt.height = opt.height;
-    ropt.threads = opt.threads > 0 ? opt.threads : render_default_threads();
+    ropt.threads = threads;
     ropt.quality = quality_from_level(opt.quality);
     ropt.shadow = method;
     ropt.bvh = &bvh;
