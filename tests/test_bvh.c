@@ -101,6 +101,8 @@ static int same_hits(HitList *a, HitList *b)
 {
     if (a->n != b->n)
         return 0;
+    if (a->n == 0)
+        return 1;
     qsort(a->hit, (size_t)a->n, sizeof *a->hit, by_polygon);
     qsort(b->hit, (size_t)b->n, sizeof *b->hit, by_polygon);
     for (int i = 0; i < a->n; i++)
