@@ -32,7 +32,7 @@ fi
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
 if [ -z "$povray" ]; then
-    echo "1..0 # SKIP povray is not installed: the sample scenes' masks need POV-Ray's renders"
+    echo "1..0 # SKIP povray is not installed: the sample scenes' images and masks need POV-Ray's renders"
     exit 0
 fi
 [ -x "$hstrace" ] || bail "$hstrace is not built"
