@@ -1,15 +1,16 @@
 #!/bin/sh
 # `hstrace vs-povray` as a user meets it, in TAP. On a small scene (a floor,
 # a box, one light; 64x48) rendered by POV-Ray and hstrace: a row per shadow
-# method with a speed-up above 0, an RMSE below 0.01 and no interior
-# shadow-mask disagreement against POV-Ray; --json with its keys; --report
-# DIR writing index.html whose PNGs exist and decode and whose table holds
-# the printed figures; render options (size, threads) reaching both
-# programs. Without POV-Ray: the message and exit status 4 (PATH without
-# povray, or HSTRACE_POVRAY naming nothing), POV-Ray's failure (a stand-in
-# script) shown with status 5, a termination signal stopping the renders,
-# usage errors with status 1; the private temporary folder removed every
-# time. The checks that need POV-Ray are skipped when it is not installed.
+# method with a speed-up above 0, an RMSE of at most 1e-5 and no shadow-mask
+# disagreement against POV-Ray (the figures measured: 0); --json with its
+# keys; --report DIR writing index.html whose PNGs exist and decode and
+# whose table holds the printed figures; render options (size, threads)
+# reaching both programs. Without POV-Ray: the message and exit status 4
+# (PATH without povray, or HSTRACE_POVRAY naming nothing), POV-Ray's failure
+# (a stand-in script) shown with status 5, a termination signal stopping the
+# renders, usage errors with status 1; the private temporary folder removed
+# every time. The checks that need POV-Ray are skipped when it is not
+# installed.
 set -u
 srcdir=${top_srcdir:-.}
 builddir=${top_builddir:-.}
