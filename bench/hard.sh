@@ -20,8 +20,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/.." && pwd)
 build=$(cd "${1:-.}" && pwd)
 command -v python3 >/dev/null || { echo "hard: python3 not found (Debian package: python3)" >&2; exit 3; }
-[ -x "$build/hstrace" ] && [ -x "$build/tests/test_agreement" ] ||
-    { echo "hard: build the test programs first (make check)" >&2; exit 3; }
+if [ ! -x "$build/hstrace" ] || [ ! -x "$build/tests/test_agreement" ]; then
+    echo "hard: build the test programs first (make check)" >&2
+    exit 3
+fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/hsthard.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 out="$here/hard.md"
@@ -56,6 +58,7 @@ for scene in "$src"/scenes/hard/*.pov; do
     ref="$src/reference/hard/$name"
     leaks=""
     grep -q '^// hstrace-regress: povray-leaks' "$scene" && leaks="--allow-a-leaks"
+    # shellcheck disable=SC2086 # $size holds several options
     "$build/hstrace" "$scene" $size +Q3 -o "$work/$name.q3.exr"
     for m in $methods; do
         for setting in $settings; do
@@ -96,6 +99,7 @@ PY
     done
 done
 # The frontier: per method and setting, summed over the hard scenes.
+# shellcheck disable=SC2094 # python reads the whole table before it appends
 python3 - "$out" >>"$out" <<'PY'
 import collections, sys
 rows = [l.split("|")[1:-1] for l in open(sys.argv[1]) if l.startswith("| ") and not l.startswith("| scene")]

@@ -41,6 +41,7 @@ for scene in "$src"/scenes/*.pov; do
         opts="--shadows $m --nth $nth --pixel-coherence $coh"
         set -- "$@" "$build/hstrace $scene $size $opts -o $work/$name.exr"
         for i in 1 2 3 4 5; do
+            # shellcheck disable=SC2086 # $size and $opts hold several options
             "$build/hstrace" "$scene" $size $opts -o "$work/$name.exr" --stats-json "$work/$name.$v.$i.json"
         done
     done

@@ -30,7 +30,7 @@ runs=${NTH_RUNS:-"1 2 3 4 5"}   # both overridable, for a quick look
     echo "# Fig. 3: shadow-testing time against N_th"
     echo
     echo "Made by \`make bench\` (\`bench/nth-sweep.sh\`) on $(date -u +%Y-%m-%d), $(nproc) cores, $(uname -m)."
-    echo "640x480, 1 thread; medians of $(echo $runs | wc -w) runs, interleaved. *N_th,c*: eq. (7)'s optimum from the cost model"
+    echo "640x480, 1 thread; medians of $(echo "$runs" | wc -w) runs, interleaved. *N_th,c*: eq. (7)'s optimum from the cost model"
     echo "(median over the runs with \`--nth auto\`); *N_th,m*: the measured optimum of the sweep. *At N_th,c*: the"
     echo "shadow time of the \`--nth auto\` runs against the sweep's minimum; within 10% is the paper's claim."
     echo
@@ -40,6 +40,7 @@ runs=${NTH_RUNS:-"1 2 3 4 5"}   # both overridable, for a quick look
 for name in desk glasses stars cards; do
     scene="$src/scenes/$name.pov"
     [ -f "$scene" ] || continue
+    # shellcheck disable=SC2086 # $size holds several options
     for r in $runs; do
         "$build/hstrace" "$scene" $size --shadows conventional --stats-json "$work/$name.conv.$r.json" -o "$work/x.exr"
         "$build/hstrace" "$scene" $size --shadows volume --stats-json "$work/$name.volume.$r.json" -o "$work/x.exr"
@@ -79,8 +80,7 @@ with open(out, "a") as f:
     f.write("\n".join(rows) + "\n")
 PY
     read -r conv vol <"$work/$name.lines"
-    read -r c_on tc_on m_on tm_on <"$work/$name.on.mark"
-    read -r c_off tc_off m_off tm_off <"$work/$name.off.mark"
+    read -r c_on _ m_on _ <"$work/$name.on.mark"
     for fmt in svg png; do
         case $fmt in
             svg) term="set terminal svg size 720,480 dynamic font 'sans,12'" ;;

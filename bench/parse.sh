@@ -42,13 +42,13 @@ for n in 10000 100000 1000000; do
     sh "$src/scenes/make-mesh.sh" "$n" >"$scene"
     tris=$(sed -n 's|^// triangles: ||p' "$scene")
     mb=$(awk -v b="$(wc -c <"$scene")" 'BEGIN { printf "%.1f", b / 1e6 }')
-    h=$(for i in $(seq $runs); do
+    h=$(for _ in $(seq $runs); do
         "$build/hstrace" "$scene" --width 1 --height 1 --threads 1 --shadows none --stats -o "$work/h.png" 2>&1 |
             sed -n 's/.*time (s) *parse \([0-9.]*\).*/\1/p'
     done | median)
     p="-"
     if [ -n "$povray" ]; then
-        p=$(for i in $(seq $runs); do
+        p=$(for _ in $(seq $runs); do
             "$povray" "+I$scene" +W1 +H1 -D +WT1 -GR -GW "+O$work/p.png" 2>&1 |
                 sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p'
         done | median)

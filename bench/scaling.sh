@@ -105,6 +105,7 @@ with open(out, "w") as f:
 print(f"wrote {out}")
 PY
 if command -v gnuplot >/dev/null; then
+    # shellcheck disable=SC2086 # one positional parameter per light count
     set -- $lights
     nl=$#
     methods=$(cat "$work/methods.txt")

@@ -78,7 +78,7 @@ for scene in $list; do
         # that, and only that, is tried again, up to twice.
         for attempt in 1 2 3; do
             # shellcheck disable=SC2086 # $extra holds separate options
-            if (cd "$work/$sub" && "$povray" "+I$name.pov" "+O$name$suffix.exr" +FE -A -D -GA +WT2 \
+            if (cd "$work/$sub" && "$povray" "+I$name.pov" "+O$name$suffix.exr" +FE -A -D -GA +WT1 \
                 "+W$width" "+H$height" "+Q$q" $extra >"$name$suffix.log" 2>&1); then
                 break
             fi

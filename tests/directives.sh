@@ -4,16 +4,15 @@
 # #debug, #warning and #error reach stderr (and #error the exit status 2);
 # an error inside a macro names the macro's line and the call.
 set -u
+srcdir=${top_srcdir:-.}
 builddir=${top_builddir:-.}
 hstrace="$builddir/hstrace"
 incdir=/usr/share/povray-3.7/include
-work=$(mktemp -d "${TMPDIR:-/tmp}/hstdir.XXXXXX") || { echo "Bail out! cannot make a temporary folder"; exit 1; }
+# shellcheck source=tests/tap.sh
+. "$srcdir/tests/tap.sh"
+work=$(mktemp -d "${TMPDIR:-/tmp}/hstdir.XXXXXX") || bail "cannot make a temporary folder"
 trap 'rm -rf "$work"' EXIT
-n=0
-check() { # description, then a shell condition
-    n=$((n + 1)); d=$1; shift
-    if eval "$@"; then echo "ok $n - $d"; else echo "not ok $n - $d"; fi
-}
+[ -x "$hstrace" ] || bail "$hstrace is not built"
 render() { # scene file: runs hstrace on it; sets status, leaves stderr in $work/err
     rm -f "$work/out.png"
     "$hstrace" "$1" --width 16 --height 12 --threads 1 -o "$work/out.png" 2>"$work/err"
@@ -23,12 +22,14 @@ render() { # scene file: runs hstrace on it; sets status, leaves stderr in $work
 # Include files hstrace cannot read yet, each with the reason. They are left
 # out of the all-includes scene, and must still fail cleanly (status 2, with
 # FILE:LINE:COLUMN).
-# None today; a new entry is written as
-#   known_failing="x.inc" reason_x_inc="why"
+# None today; each entry is a line "x.inc|why".
 known_failing=""
 
 if [ ! -d "$incdir" ]; then
-    echo "ok 1 # SKIP POV-Ray's include files are not installed ($incdir absent)"
+    for d in "a scene including all standard include files renders a triangle" \
+             "a function from functions.inc: error at its use, naming its declaration"; do
+        skip "$d" "POV-Ray's include files are not installed (Debian package povray-includes; $incdir absent)"
+    done
 else
     # colors.inc first: stdcam.inc and others use its names without
     # including it, as POV-Ray scenes always include it before them.
@@ -37,7 +38,9 @@ else
         echo '#include "colors.inc"'
         for f in "$incdir"/*.inc; do
             b=${f##*/}
-            case " $known_failing " in *" $b "*) continue ;; esac
+            case "
+$known_failing" in *"
+$b|"*) continue ;; esac
             echo "#include \"$b\""
         done
         echo 'camera { location <0.3, 0.3, -2> look_at <0.3, 0.3, 0> }'
@@ -46,28 +49,29 @@ else
     } >"$work/all.pov"
     count=$(grep -c '^#include' "$work/all.pov")
     render "$work/all.pov"
-    check "a scene including all $count standard include files renders a triangle" \
-        '[ $status -eq 0 ] && [ -s "$work/out.png" ] && [ ! -s "$work/err" ]'
-    [ $status -eq 0 ] || sed 's/^/# /' "$work/err"
+    check "a scene including all $count standard include files renders a triangle" exited 0
+    check "... an image" [ -s "$work/out.png" ]
+    check "... nothing on stderr" [ ! -s "$work/err" ]
 
-    for b in $known_failing; do
+    while IFS='|' read -r b reason; do
+        [ -n "$b" ] || continue
         printf '#include "colors.inc"\n#include "%s"\ntriangle { 0, x, y }\n' "$b" >"$work/one.pov"
         render "$work/one.pov"
-        eval "reason=\$reason_$(echo "$b" | tr . _)"
         if [ $status -eq 0 ]; then
-            echo "ok $((n + 1)) - $b: now renders; take it off the known_failing list"
-            n=$((n + 1))
+            not_ok "$b: now renders; take it off the known_failing list"
         else
-            check "$b fails cleanly ($reason)" '[ $status -eq 2 ] && grep -q "^$incdir/$b:[0-9]*:[0-9]*: " "$work/err"'
+            check "$b fails cleanly ($reason)" exited 2 "^$incdir/$b:[0-9]*:[0-9]*: "
         fi
-    done
+    done <<EOF
+$known_failing
+EOF
 
     # functions.inc and shapes.inc declare functions and isosurfaces: those
     # stay unread until used, and using one names its declaration.
     printf '#include "functions.inc"\n#include "shapes.inc"\n#declare R = f_sphere(1, 0, 0, 1);\ntriangle { 0, x, y translate R * z }\n' >"$work/fn.pov"
     render "$work/fn.pov"
     check "a function from functions.inc: error at its use, naming its declaration" \
-        '[ $status -eq 2 ] && grep -q "^$work/fn.pov:4:30: '"'"'function'"'"' is not supported by hstrace (declared at $incdir/functions.inc:[0-9]*)\$" "$work/err"'
+        exited 2 "^$work/fn.pov:4:30: 'function' is not supported by hstrace (declared at $incdir/functions.inc:[0-9]*)\$"
 fi
 
 # #debug, #warning, #error
@@ -78,11 +82,13 @@ triangle { 0, x, y }
 #error concat("stop ", "here")
 POV
 render "$work/msg.pov"
-check "#debug prints its text, #warning a located warning, #error stops with status 2" \
-    '[ $status -eq 2 ] && [ "$(cat "$work/err")" = "value 42
+# err_is TEXT: stderr of the last render is TEXT
+err_is() { [ "$(cat "$work/err")" = "$1" ] || { echo "stderr:"; cat "$work/err"; echo "expected:"; echo "$1"; return 1; }; }
+check "#error stops with status 2" exited 2
+check "#debug prints its text, #warning a located warning, #error its message" err_is "value 42
 $work/msg.pov:2:1: warning: careful
-$work/msg.pov:4:1: #error: stop here" ] && [ ! -e "$work/out.png" ]'
-[ $status -eq 2 ] || cat "$work/err" | sed 's/^/# /'
+$work/msg.pov:4:1: #error: stop here"
+check "... no image" [ ! -e "$work/out.png" ]
 
 # #debug text without a final newline (POV-Ray's sample portfolio scenes
 # print "Generated the file: X" so) must not swallow the start of the next
@@ -94,15 +100,16 @@ cat >"$work/open.pov" <<'POV'
 #error "stop"
 POV
 render "$work/open.pov"
-check "a message after #debug text without a newline starts a line of its own" \
-    '[ $status -eq 2 ] && [ "$(cat "$work/err")" = "one
+check "#error after #debug text without a newline: status 2" exited 2
+check "a message after #debug text without a newline starts a line of its own" err_is "one
 $work/open.pov:2:1: warning: careful
 two
-$work/open.pov:4:1: #error: stop" ]'
+$work/open.pov:4:1: #error: stop"
 printf '#debug "last"\ntriangle { 0, x, y }\n' >"$work/open2.pov"
 render "$work/open2.pov"
+check "#debug text without a newline at the end of the scene: renders" exited 0
 check "#debug text without a newline at the end of the scene: the line is ended" \
-    '[ $status -eq 0 ] && [ "$(od -c "$work/err" | head -1 | tr -s " ")" = "0000000 l a s t \\n" ]'
+    [ "$(od -c "$work/err" | head -1 | tr -s " ")" = "0000000 l a s t \\n" ]
 
 # An error inside a macro: the offending token in the macro, then the call.
 cat >"$work/mac.pov" <<'POV'
@@ -115,10 +122,11 @@ cat >"$work/mac.pov" <<'POV'
 Table(1)
 POV
 render "$work/mac.pov"
+check "an error inside nested macros: status 2" exited 2
 check "an error inside nested macros: the body's token, then each call" \
-    '[ $status -eq 2 ] && [ "$(cat "$work/err")" = "$work/mac.pov:2:26: expected an object modifier or '"'"'}'"'"' in '"'"'box'"'"', found '"'"'pigmnt'"'"'
-$work/mac.pov:5:11: note: in macro '"'"'Leg'"'"' called here
-$work/mac.pov:7:1: note: in macro '"'"'Table'"'"' called here" ]'
-[ $status -eq 2 ] && sed 's/^/# /' "$work/err"
+    err_is "$work/mac.pov:2:26: expected an object modifier or '}' in 'box', found 'pigmnt'
+$work/mac.pov:5:11: note: in macro 'Leg' called here
+$work/mac.pov:7:1: note: in macro 'Table' called here"
+sed 's/^/# /' "$work/err"
 
-echo "1..$n"
+tap_end

@@ -19,31 +19,16 @@
 # Environment: top_builddir (default .), POVRAY (path or name of povray;
 # default povray).
 set -u
+srcdir=${top_srcdir:-.}
 builddir=${top_builddir:-.}
+# shellcheck source=tests/tap.sh
+. "$srcdir/tests/tap.sh"
 hstrace="$builddir/hstrace"
 codes="$builddir/tests/png_codes"
 work=$(mktemp -d "${TMPDIR:-/tmp}/hstencoding.XXXXXX") || { echo "Bail out! cannot make a temporary folder"; exit 1; }
 trap 'rm -rf "$work"' EXIT
 trap 'exit 1' HUP INT PIPE TERM
 unset OCIO OCIO_ACTIVE_DISPLAYS OCIO_ACTIVE_VIEWS OCIO_INACTIVE_COLORSPACES
-n=0
-# check DESCRIPTION COMMAND...: runs the command; ok when it succeeds. Its
-# output becomes TAP comments; its status is check's.
-check() {
-    d=$1
-    shift
-    n=$((n + 1))
-    "$@" >"$work/out" 2>&1
-    st=$?
-    if [ $st -eq 0 ]; then
-        echo "ok $n - $d"
-    else
-        echo "not ok $n - $d"
-    fi
-    sed 's/^/# /' "$work/out"
-    return $st
-}
-skip() { n=$((n + 1)); echo "ok $n - $1 # SKIP $2"; }
 for tool in "$hstrace" "$codes"; do
     [ -x "$tool" ] || { echo "Bail out! $tool is not built"; exit 1; }
 done
@@ -111,4 +96,4 @@ else
     check "POV-Ray writes the ramp as PPM (+FP)" pov P p8.ppm &&
         check "PPM: the pixel bytes are POV-Ray's" same_pixels "$work/p8.ppm" "$work/h8.ppm"
 fi
-echo "1..$n"
+tap_end

@@ -15,30 +15,15 @@
 # Environment: top_builddir (default .), POVRAY (path or name of povray;
 # default povray).
 set -u
+srcdir=${top_srcdir:-.}
 builddir=${top_builddir:-.}
+# shellcheck source=tests/tap.sh
+. "$srcdir/tests/tap.sh"
 hstrace="$builddir/hstrace"
 work=$(mktemp -d "${TMPDIR:-/tmp}/hstlights.XXXXXX") || { echo "Bail out! cannot make a temporary folder"; exit 1; }
 trap 'rm -rf "$work"' EXIT
 trap 'exit 1' HUP INT PIPE TERM
-n=0
-# check DESCRIPTION COMMAND...: runs the command; ok when it succeeds. Its
-# output becomes TAP comments; its status is check's.
-check() {
-    d=$1
-    shift
-    n=$((n + 1))
-    "$@" >"$work/out" 2>&1
-    st=$?
-    if [ $st -eq 0 ]; then
-        echo "ok $n - $d"
-    else
-        echo "not ok $n - $d"
-    fi
-    sed 's/^/# /' "$work/out"
-    return $st
-}
 fails() { ! "$@"; }
-skip() { n=$((n + 1)); echo "ok $n - $1 # SKIP $2"; }
 [ -x "$hstrace" ] || { echo "Bail out! $hstrace is not built"; exit 1; }
 
 cat >"$work/fade.pov" <<'POV'
@@ -111,4 +96,4 @@ if [ -n "$povray" ] && [ -e "$work/fade.pov.exr" ]; then
 else
     skip "fade: without its fade lines the scene is outside the limits" "povray not installed"
 fi
-echo "1..$n"
+tap_end
