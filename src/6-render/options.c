@@ -62,9 +62,10 @@ void options_usage(FILE *f)
             "  -o, --output FILE      image to write (.exr, .png or .ppm; default SCENE.png)\n"
             "      --width N          image width in pixels (default 320)\n"
             "      --height N         image height in pixels (default 240)\n"
-            "      --shadows METHOD   shadow test: %s (default hst);\n"
-            "                         embree is Embree 3's float shadow ray, for comparison: not\n"
-            "                         exact (--verify-shadows counts its disagreements)%s\n"
+            "      --shadows METHOD   shadow test (default hst), one of:\n"
+            "                         %s;\n"
+            "                         embree is Embree 3's float shadow ray, for comparison:\n"
+            "                         not exact (--verify-shadows counts its disagreements)%s\n"
             "      --nth N|auto|per-point  hst's switching threshold N_th: fixed, from the\n"
             "                         paper's eq. (7) once per scene (default), or per shading point\n"
             "      --pixel-coherence on|off  hst: carry depth counts from the previous pixel's\n"
@@ -107,7 +108,7 @@ void options_usage(FILE *f)
             "Exit status: 0 success, 1 bad usage (also a display, view or colour space the\n"
             "config lacks), 2 scene error, 3 input/output error (also a missing or broken\n"
             "colour config).\n",
-            shadow_method_names(), shadow_embree_built() ? "" : "; not in\n                         this build (configure found no Embree)");
+            shadow_method_names(), shadow_embree_built() ? "" : ";\n                         not in this build (configure found no Embree)");
 }
 
 /* Takes the value of a long option: "--name=value" or "--name value". */
