@@ -211,11 +211,12 @@ with open(out, "w") as o:
     o.write("\n## Shadow decisions (640x480, 1 thread)\n\n")
     o.write("Nanoseconds per shadow decision: shadow-testing time over shadow queries (`--stats-json`; the "
             "time is taken on every 8th decision and scaled). *none* decides nothing and measures the fixed "
-            "cost of a decision (the call and the clock). *embree* is Embree "
-            f"{version.split('Embree ')[-1].rstrip(')') if have_embree else '(not built)'}'s `rtcOccluded1` "
-            "with the shadow ray's rules; *embree vs ray* is how many of its decisions differ from the exact "
-            "shadow ray's (`--verify-shadows`, 640x480, 2 threads). *queries* are the decisions per render "
-            "(the same for every method).\n\n")
+            "cost of a decision (the call and the clock). "
+            + (f"*embree* is Embree {version.split('Embree ')[-1].rstrip(')')}'s `rtcOccluded1` with the shadow "
+               "ray's rules; *embree vs ray* is how many of its decisions differ from the exact shadow ray's "
+               "(`--verify-shadows`, 640x480, 2 threads). " if have_embree else
+               "This hstrace was built without Embree: no embree column. ")
+            + "*queries* are the decisions per render (the same for every method).\n\n")
     cols = ["none"] + methods
     o.write("| scene | queries | " + " | ".join(cols) + (" | embree vs ray |" if have_embree else " |")
             + "\n|---|---|" + "---|" * len(cols) + ("---|" if have_embree else "") + "\n")
