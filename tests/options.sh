@@ -387,8 +387,8 @@ check "+A is refused: exit status 1, no anti-aliasing" aa_refused
 
 # --- --version ------------------------------------------------------------------------
 run --version
-check "--version: hstrace VERSION and the OpenColorIO built in, or none ($(cat "$work/out"))" \
-    grep -Eqx "hstrace [0-9]+\.[0-9]+\.[0-9]+ \((OpenColorIO [0-9][0-9.]*|no OpenColorIO .*)\)" "$work/out"
+check "--version: hstrace VERSION and the OpenColorIO and Embree built in, or none ($(cat "$work/out"))" \
+    grep -Eqx "hstrace [0-9]+\.[0-9]+\.[0-9]+ \((OpenColorIO [0-9][0-9.]*|no OpenColorIO .*); (Embree [0-9][0-9.]*|no Embree)\)" "$work/out"
 
 # --- vs-povray: render options passed on, and refused ----------------------------------
 mkdir "$work/tmp"

@@ -118,7 +118,7 @@ if [ -z "$povray" ]; then
     for d in "syntax error: exit status 2" "syntax error: FILE:LINE:COLUMN" "a row per method" \
              "speed-ups above 0" "RMSE within the measured limits" "no interior mask pixels" "size and threads" "--report files" \
              "--report PNGs decode" "--report table values" "--report provenance" "--json keys" \
-             "--runs, --methods and POV-Ray switches" "--json parses" "temporary folder removed"; do
+             "--runs, --methods and POV-Ray switches" "--json parses" "--methods hst,embree" "temporary folder removed"; do
         skip "$d" "povray not installed (Debian package povray)"
     done
     tap_end
@@ -208,6 +208,27 @@ for x in m:
 " "$work/out" $max_rmse $max_edge
 else
     skip "--json parses" "python3 not installed (Debian package python3)"
+fi
+# embree is not exact: its disagreements with the shadow ray are measured
+# (one more render with --verify-shadows) and shown; the exact methods' not.
+embree_counted() {
+    [ "$status" -eq 0 ] && grep -q "vs shadow ray" "$work/out" && [ "$(field hst 9)" = - ] &&
+        row embree | grep -Eq " [0-9]+ of [1-9][0-9]*$" &&
+        { ! command -v python3 >/dev/null 2>&1 || python3 -c "
+import json, sys
+m = {x[\"method\"]: x for x in json.load(open(sys.argv[1]))[\"methods\"]}
+assert m[\"hst\"][\"verified\"] is None and m[\"hst\"][\"disagreements\"] is None
+assert m[\"embree\"][\"verified\"] > 0 and 0 <= m[\"embree\"][\"disagreements\"] <= m[\"embree\"][\"verified\"]
+" "$work/embree.json"; }
+}
+if "$hstrace" --version | grep -q "Embree [0-9]"; then
+    run "$work/box.pov" --width 64 --height 48 --threads 2 --methods hst,embree --json
+    cp "$work/out" "$work/embree.json"
+    run "$work/box.pov" --width 64 --height 48 --threads 2 --methods hst,embree
+    check "--methods hst,embree: embree's disagreements with the shadow ray counted in the JSON and the table ($(row embree | awk '{ print $9, $10, $11 }')), none for the exact hst" \
+        embree_counted
+else
+    skip "--methods hst,embree" "embree not built"
 fi
 check "the temporary folder is removed after every run" clean_tmp
 tap_end

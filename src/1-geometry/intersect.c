@@ -177,6 +177,11 @@ double intersect_polygon_in(const World *w, const Polygon *p, const RayFrame *f,
     return intersect_outlines(w, p, f, tmax);
 }
 
+double intersect_plane_distance(const Polygon *p, const RayFrame *f)
+{
+    return plane_distance(p, f);
+}
+
 double intersect_polygon(const World *w, const Polygon *p, Vec3 org, Vec3 dir)
 {
     RayFrame f = ray_frame(org, dir);

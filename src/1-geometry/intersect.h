@@ -26,6 +26,12 @@ RayFrame ray_frame(Vec3 org, Vec3 dir);
  * beyond are not looked at (negative). */
 double intersect_polygon_in(const World *w, const Polygon *p, const RayFrame *f, double tmax);
 
+/* The distance along the frame's ray to p's plane, as intersect_polygon_in
+ * computes it (bit for bit), or -1 when the ray runs parallel to the plane
+ * or starts in it. For tests made elsewhere (Embree's, in float) that need
+ * the shadow ray's distance of a hit they found. */
+double intersect_plane_distance(const Polygon *p, const RayFrame *f);
+
 /* Distance to an infinite plane, or negative when parallel or behind. */
 double intersect_plane(const InfinitePlane *pl, Vec3 org, Vec3 dir);
 

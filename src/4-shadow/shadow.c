@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "shadow_embree.h"
 #include "shadow_volumes.h"
 
 /* Enough for max_trace_level reflections plus continued (same-ior) rays;
@@ -103,13 +104,15 @@ const char *const shadow_scheme_names[SCHEME_COUNT] = { "sustain", "self-shadow"
 /* The first is the default. */
 static const ShadowMethod methods[] = {
     { "hst", "the paper's hybrid: sustain, self-shadow, shadow volume or shadow ray, switched by N_th", 1,
-      shadow_hst_test, shadow_hst_skip },
-    { "conventional", "a shadow ray per light through the grid (exact reference)", 0, shadow_conventional_test, NULL },
+      shadow_hst_test, shadow_hst_skip, 0 },
+    { "conventional", "a shadow ray per light through the grid (exact reference)", 0, shadow_conventional_test, NULL, 0 },
     { "cache", "shadow rays that first try the light's last opaque blocker (as POV-Ray does)", 0, shadow_cache_test,
-      NULL },
+      NULL, 0 },
     { "volume", "shadow volumes: a depth count carried along every segment", 1, shadow_volume_test,
-      shadow_volume_skip },
-    { "none", "no shadows: every light reaches every point", 0, shadow_none_test, NULL },
+      shadow_volume_skip, 0 },
+    { "embree", "Embree 3's float shadow ray with the shadow ray's rules (not exact: for comparison)", 0,
+      shadow_embree_test, NULL, 1 },
+    { "none", "no shadows: every light reaches every point", 0, shadow_none_test, NULL, 0 },
 };
 
 const ShadowMethod *shadow_method_find(const char *name)
@@ -120,9 +123,17 @@ const ShadowMethod *shadow_method_find(const char *name)
     return NULL;
 }
 
+const char *shadow_method_unavailable(const ShadowMethod *m)
+{
+    if (m->test == shadow_embree_test && !shadow_embree_built())
+        return "this hstrace was built without Embree (install the Debian package libembree-dev, then "
+               "configure and make again)";
+    return NULL;
+}
+
 const char *shadow_method_names(void)
 {
-    return "hst, conventional, cache, volume, none";
+    return "hst, conventional, cache, volume, embree, none";
 }
 
 ShadowRecord shadow_record(const ShadowContext *ctx, const ShadowQuery *q, const RGB *answer)

@@ -121,6 +121,7 @@ typedef struct ShadowContext {
     uint32_t sp_id;
     uint32_t *bucket;          /* room for any light's shadow polygons */
     struct PixelCoherence *coherence; /* hst's pixel coherence, or NULL when off */
+    const struct EmbreeScene *embree; /* the embree method's scene (shared, read-only), or NULL */
     /* Light states along the ray tree: one row of nlights per recursion depth. */
     LightState *states;
     int state_depth, state_capacity;
@@ -142,6 +143,10 @@ typedef struct ShadowMethod {
      * point, or adds nothing there); keeps the state at P2 consistent.
      * faces_away: the shading normal faces away from the light. May be NULL. */
     void (*skip)(ShadowContext *ctx, const ShadowQuery *q, int faces_away);
+    /* 1: not exact, by design (embree: float tests); its disagreements with
+     * the shadow ray are a figure to report, not a bug. 0: every decision
+     * must be the shadow ray's. */
+    int inexact;
 } ShadowMethod;
 
 /* The record of one decision, the same for every method, for the analysis
@@ -160,6 +165,8 @@ ShadowRecord shadow_record(const ShadowContext *ctx, const ShadowQuery *q, const
 
 /* NULL when no method has that name. */
 const ShadowMethod *shadow_method_find(const char *name);
+/* Why this build cannot use method m (embree without Embree), or NULL. */
+const char *shadow_method_unavailable(const ShadowMethod *m);
 /* Names of all methods, comma separated, for messages and --help. */
 const char *shadow_method_names(void);
 
@@ -170,6 +177,12 @@ void shadow_conventional_test(ShadowContext *ctx, const ShadowQuery *q, RGB *lig
  * both multiply into *light and return 1 when it is fully blocked. */
 int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+/* The end of the polygon part: folds the see-through polygons the ray met,
+ * ctx->filtered[0..nfiltered) in any order (each polygon once), into *light
+ * in the order the light passes them (by distance, then index), once per
+ * group within POV-Ray's SMALL_TOLERANCE; 1 when that blocks it fully.
+ * Shared, so that a method finding them its own way folds them alike. */
+int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 
 void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
 void shadow_volume_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);

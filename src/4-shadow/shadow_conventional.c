@@ -90,7 +90,6 @@ static int by_distance(const void *a, const void *b)
 
 int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    const World *w = ctx->tracer.world;
     ctx->stats.shadow_rays++;
     double tmin = trace_min_distance(q->point);
     int exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
@@ -102,6 +101,12 @@ int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
         ctx->last_blocker = sw.blocker;
         return 1;
     }
+    return shadow_fold_filtered(ctx, q, light);
+}
+
+int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    const World *w = ctx->tracer.world;
     if (ctx->nfiltered > 1)
         qsort(ctx->filtered, (size_t)ctx->nfiltered, sizeof *ctx->filtered, by_distance);
     double last = 0.0;

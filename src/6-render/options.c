@@ -10,6 +10,7 @@
 #include "aov.h"
 #include "grid.h"
 #include "shadow.h"
+#include "shadow_embree.h"
 #include "shadow_volumes.h"
 
 #define MAX_DIMENSION 32768
@@ -61,7 +62,10 @@ void options_usage(FILE *f)
             "  -o, --output FILE      image to write (.exr, .png or .ppm; default SCENE.png)\n"
             "      --width N          image width in pixels (default 320)\n"
             "      --height N         image height in pixels (default 240)\n"
-            "      --shadows METHOD   shadow test: %s (default hst)\n"
+            "      --shadows METHOD   shadow test (default hst), one of:\n"
+            "                         %s;\n"
+            "                         embree is Embree 3's float shadow ray, for comparison:\n"
+            "                         not exact (--verify-shadows counts its disagreements)%s\n"
             "      --nth N|auto|per-point  hst's switching threshold N_th: fixed, the measured\n"
             "                         cost of a shadow ray over that of counting one shadow polygon\n"
             "                         (default), or the paper's eq. (7) per shading point\n"
@@ -105,7 +109,7 @@ void options_usage(FILE *f)
             "Exit status: 0 success, 1 bad usage (also a display, view or colour space the\n"
             "config lacks), 2 scene error, 3 input/output error (also a missing or broken\n"
             "colour config).\n",
-            shadow_method_names());
+            shadow_method_names(), shadow_embree_built() ? "" : ";\n                         not in this build (configure found no Embree)");
 }
 
 /* Takes the value of a long option: "--name=value" or "--name value". */
@@ -241,8 +245,13 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
         } else if (is_long(a, "--shadows")) {
             if (!(v = option_value(argc, argv, &i, "--shadows", err, errlen)))
                 return -1;
-            if (!shadow_method_find(v)) {
+            const ShadowMethod *m = shadow_method_find(v);
+            if (!m) {
                 snprintf(err, (size_t)errlen, "unknown shadow method '%s' (valid: %s)", v, shadow_method_names());
+                return -1;
+            }
+            if (shadow_method_unavailable(m)) {
+                snprintf(err, (size_t)errlen, "--shadows %s: %s", v, shadow_method_unavailable(m));
                 return -1;
             }
             opt->shadows = v;

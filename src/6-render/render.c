@@ -109,6 +109,7 @@ static void *worker_main(void *arg)
         return NULL;
     }
     tracer_use_bvh(&ctx.shadow.tracer, opt->bvh);
+    ctx.shadow.embree = opt->embree;
     PixelCoherence coherence;
     memset(&coherence, 0, sizeof coherence);
     if (opt->pixel_coherence && opt->volumes) {

@@ -17,6 +17,7 @@ typedef struct {
     const ShadowMethod *shadow;
     const Bvh *bvh;           /* the polygon queries' hierarchy; NULL: the grid's walk */
     const struct ShadowVolumes *volumes; /* when the method uses them */
+    const struct EmbreeScene *embree;    /* when the method is embree */
     const struct CostModel *cost;        /* hst's per-point N_th */
     double nth;               /* hst: N_th; negative: per point */
     int verify;               /* 1 --verify-shadows, 2 --verify-reference too */

@@ -8,6 +8,7 @@
 
 #include "cost_model.h"
 #include "shadow.h"
+#include "shadow_embree.h"
 #include "shadow_volumes.h"
 
 void stats_add(RenderStats *t, const RenderStats *p)
@@ -92,6 +93,13 @@ void stats_print(FILE *f, const StatsReport *r)
         if (s->shadow.shadow_coherent || s->shadow.shadow_coherence_unsure)
             fprintf(f, "  coherence   counts from the neighbouring pixel %llu  abandoned %llu\n",
                     (unsigned long long)s->shadow.shadow_coherent, (unsigned long long)s->shadow.shadow_coherence_unsure);
+    }
+    if (r->embree) {
+        const EmbreeSceneInfo *e = shadow_embree_info(r->embree);
+        fprintf(f, "  embree      Embree %s, robust, %s quality: %d triangles, %d convex polygons as %d triangles,"
+                   " %d polygons tested exactly (user geometry), %d no_shadow left out; built in %.3f s\n",
+                shadow_embree_version(), e->quality, e->triangles, e->fanned_polygons, e->fan_triangles,
+                e->user_polygons, e->left_out, e->seconds);
     }
     if (r->cost) {
         const CostModel *c = r->cost;
@@ -212,6 +220,13 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
                 fprintf(f, "null}");
         }
         fprintf(f, "]}");
+    }
+    if (r->embree) {
+        const EmbreeSceneInfo *e = shadow_embree_info(r->embree);
+        fprintf(f, ",\n  \"embree\": {\"version\": \"%s\", \"quality\": \"%s\", \"seconds\": %.6f, \"triangles\": %d, "
+                   "\"fanned_polygons\": %d, \"fan_triangles\": %d, \"user_polygons\": %d, \"left_out\": %d}",
+                shadow_embree_version(), e->quality, e->seconds, e->triangles, e->fanned_polygons, e->fan_triangles,
+                e->user_polygons, e->left_out);
     }
     if (r->cost) {
         const CostModel *c = r->cost;

@@ -35,6 +35,7 @@ typedef struct {
     double parse_seconds, preprocess_seconds, output_seconds, wall_seconds;
     double volumes_seconds;           /* silhouettes and shadow polygon registration (in preprocessing) */
     const struct ShadowVolumes *volumes; /* NULL unless the method uses them */
+    const struct EmbreeScene *embree;    /* NULL unless the method is embree */
     const struct CostModel *cost;     /* the calibration, when made */
     double nth;                       /* N_th used (negative: per point) */
     const char *nth_mode;

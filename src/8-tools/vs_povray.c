@@ -38,6 +38,7 @@
 
 typedef struct {
     double wall[VS_MAX_RUNS], cpu[VS_MAX_RUNS], shadow[VS_MAX_RUNS];
+    double verified, disagreements; /* from the --verify-shadows render; NAN: none */
 } Timings;
 
 typedef struct {
@@ -398,14 +399,14 @@ static int spawn_failed(VsRun *v, const char *name)
  * --width W --height H --threads T, in the current folder (the render
  * options may name files relative to it). */
 static int run_hstrace(VsRun *v, const char *method, int quality, const char *out, const char *json,
-                       int with_shadow_channels, ProcessResult *r)
+                       int with_shadow_channels, int verify, ProcessResult *r)
 {
     const VsPovrayOptions *opt = v->opt;
     char **argv = calloc((size_t)opt->nrender_args + 26, sizeof *argv);
     if (!argv)
         return spawn_failed(v, "hstrace");
     char prog[] = "hstrace", shadows[] = "--shadows", o[] = "-o", sj[] = "--stats-json", w[] = "--width",
-         h[] = "--height", t[] = "--threads", aov[] = "--aov", aov_groups[] = "shadow";
+         h[] = "--height", t[] = "--threads", aov[] = "--aov", aov_groups[] = "shadow", vs[] = "--verify-shadows";
     char q[16], ws[16], hs[16], ts[16], outp[PATH_MAX], jsonp[PATH_MAX], meth[32];
     snprintf(q, sizeof q, "+Q%d", quality);
     snprintf(ws, sizeof ws, "%d", v->width);
@@ -432,6 +433,8 @@ static int run_hstrace(VsRun *v, const char *method, int quality, const char *ou
         argv[n++] = aov;
         argv[n++] = aov_groups;
     }
+    if (verify)
+        argv[n++] = vs;
     argv[n++] = w;
     argv[n++] = ws;
     argv[n++] = h;
@@ -446,7 +449,7 @@ static int run_hstrace(VsRun *v, const char *method, int quality, const char *ou
     if (rc)
         return spawn_failed(v, "hstrace");
     char what[64];
-    snprintf(what, sizeof what, "--shadows %s +Q%d", method, quality);
+    snprintf(what, sizeof what, "--shadows %s +Q%d%s", method, quality, verify ? " --verify-shadows" : "");
     return check_child(v, 0, what, r, log);
 }
 
@@ -520,8 +523,8 @@ static int run_povray(VsRun *v, int quality, const char *out, ProcessResult *r)
     return status;
 }
 
-/* time.shadow_testing from a --stats-json file; NAN when absent. */
-static double read_shadow_seconds(const char *path)
+/* The number after the first "KEY": in a --stats-json file; NAN when absent. */
+static double read_json_number(const char *path, const char *key)
 {
     FILE *f = fopen(path, "r");
     if (!f)
@@ -530,12 +533,14 @@ static double read_shadow_seconds(const char *path)
     size_t n = fread(buf, 1, sizeof buf - 1, f);
     fclose(f);
     buf[n] = '\0';
-    const char *s = strstr(buf, "\"shadow_testing\":");
+    char quoted[64];
+    snprintf(quoted, sizeof quoted, "\"%s\":", key);
+    const char *s = strstr(buf, quoted);
     if (!s)
         return NAN;
     char *end;
-    double t = strtod(s + strlen("\"shadow_testing\":"), &end);
-    return end == s ? NAN : t;
+    double t = strtod(s + strlen(quoted), &end);
+    return end == s + strlen(quoted) ? NAN : t;
 }
 
 /* All renders: POV-Ray's +Q3/+Q4 pair and each method's +Q4 render with
@@ -553,8 +558,25 @@ static int render_all(VsRun *v, Timings *pov, Timings *methods)
         const char *method = opt->methods[m]->name;
         snprintf(name, sizeof name, "%s.q4.exr", method);
         progress(v, method, "+Q4", 0);
-        if ((status = run_hstrace(v, method, 4, name, NULL, 1, &r)))
+        if ((status = run_hstrace(v, method, 4, name, NULL, 1, 0, &r)))
             return status;
+    }
+    /* A method that is not exact: its disagreements with the shadow ray, in
+     * a full render of its own (the timed ones must not pay for the check). */
+    for (int m = 0; m < opt->nmethods; m++) {
+        methods[m].verified = methods[m].disagreements = NAN;
+        if (!opt->methods[m]->inexact)
+            continue;
+        const char *method = opt->methods[m]->name;
+        char path[PATH_MAX];
+        snprintf(name, sizeof name, "%s.verify.exr", method);
+        snprintf(json, sizeof json, "%s.verify.json", method);
+        progress(v, method, "--verify-shadows", 0);
+        if ((status = run_hstrace(v, method, 9, name, json, 0, 1, &r)))
+            return status;
+        tmp_path(v, json, path, sizeof path);
+        methods[m].verified = read_json_number(path, "verified");
+        methods[m].disagreements = read_json_number(path, "disagreements");
     }
     progress(v, "POV-Ray", "+Q3", 0);
     if ((status = run_povray(v, 3, "povray.q3.exr", &r)))
@@ -574,13 +596,13 @@ static int render_all(VsRun *v, Timings *pov, Timings *methods)
             snprintf(name, sizeof name, "%s.exr", method);
             snprintf(json, sizeof json, "%s.json", method);
             progress(v, method, "+Q9", run + 1);
-            if ((status = run_hstrace(v, method, 9, name, json, 0, &r)))
+            if ((status = run_hstrace(v, method, 9, name, json, 0, 0, &r)))
                 return status;
             char path[PATH_MAX];
             tmp_path(v, json, path, sizeof path);
             methods[m].wall[run] = r.wall_seconds;
             methods[m].cpu[run] = r.cpu_seconds;
-            methods[m].shadow[run] = read_shadow_seconds(path);
+            methods[m].shadow[run] = read_json_number(path, "shadow_testing");
         }
     }
     progress_done(v);
@@ -698,6 +720,7 @@ static int compare_all(VsRun *v, const Timings *pov, const Timings *methods, VsR
     res->povray.cpu = median(pov->cpu, opt->runs);
     res->povray.shadow = NAN;
     res->povray.speedup = 1.0;
+    res->povray.verified = res->povray.disagreements = -1;
     if (opt->report) {
         if (mkdir(opt->report, 0777) != 0 && errno != EEXIST) {
             fprintf(stderr, PROGRAM ": --report '%s': %s\n", opt->report, strerror(errno));
@@ -717,6 +740,8 @@ static int compare_all(VsRun *v, const Timings *pov, const Timings *methods, VsR
         row->cpu = median(methods[m].cpu, opt->runs);
         row->shadow = median(methods[m].shadow, opt->runs);
         row->speedup = res->povray.wall / row->wall;
+        row->verified = isfinite(methods[m].verified) ? (long long)methods[m].verified : -1;
+        row->disagreements = isfinite(methods[m].disagreements) ? (long long)methods[m].disagreements : -1;
         snprintf(name, sizeof name, "%s.exr", method);
         if ((status = read_render(v, name, "hstrace", &img)))
             goto done;

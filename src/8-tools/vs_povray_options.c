@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "shadow_embree.h"
+
 void vs_povray_options_usage(FILE *f)
 {
     fprintf(f,
@@ -12,10 +14,12 @@ void vs_povray_options_usage(FILE *f)
             "Renders SCENE with POV-Ray and with hstrace under each shadow method, at the same\n"
             "size and thread count, and prints one table: wall time, CPU time, shadow-testing\n"
             "time, speed-up against POV-Ray, RMSE against POV-Ray's image and disagreements with\n"
-            "POV-Ray's shadow mask (from +Q3/+Q4 renders), at edges and in the interior.\n"
+            "POV-Ray's shadow mask (from +Q3/+Q4 renders), at edges and in the interior; for\n"
+            "a method that is not exact (embree), also its disagreements with the exact\n"
+            "shadow ray, from one more render with --verify-shadows.\n"
             "\n"
-            "      --methods LIST     shadow methods to compare, comma separated, or all\n"
-            "                         (default %s; valid: %s)\n"
+            "      --methods LIST     shadow methods to compare, comma separated, or all (those\n"
+            "                         and embree when built in; default %s; valid: %s)\n"
             "      --runs N           time N full renders per program and report the median\n"
             "                         (default 1, at most %d)\n"
             "      --report DIR       also write DIR/index.html: the table, the images side by\n"
@@ -46,7 +50,7 @@ void vs_povray_options_free(VsPovrayOptions *opt)
 static int parse_methods(const char *list, VsPovrayOptions *opt, char *err, int errlen)
 {
     if (strcmp(list, "all") == 0)
-        list = VS_DEFAULT_METHODS;
+        list = shadow_embree_built() ? VS_ALL_METHODS : VS_DEFAULT_METHODS;
     char *copy = strdup(list);
     if (!copy) {
         snprintf(err, (size_t)errlen, "out of memory");
@@ -60,6 +64,11 @@ static int parse_methods(const char *list, VsPovrayOptions *opt, char *err, int 
         if (!m) {
             snprintf(err, (size_t)errlen, "--methods: unknown shadow method '%s' (valid: %s, or all)", t,
                      shadow_method_names());
+            rc = -1;
+            break;
+        }
+        if (shadow_method_unavailable(m)) {
+            snprintf(err, (size_t)errlen, "--methods: %s: %s", t, shadow_method_unavailable(m));
             rc = -1;
             break;
         }

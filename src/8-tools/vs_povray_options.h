@@ -14,6 +14,8 @@
 #define VS_MAX_RUNS 100
 /* The methods compared when --methods is not given. */
 #define VS_DEFAULT_METHODS "conventional,cache,volume,hst"
+/* --methods all: those, and embree when built in. */
+#define VS_ALL_METHODS "conventional,cache,volume,hst,embree"
 
 typedef struct {
     const char *scene;                             /* as given */

@@ -7,10 +7,10 @@
 #include "compare_report.h"
 #include "json_write.h"
 
-enum { COL_METHOD, COL_WALL, COL_CPU, COL_SHADOW, COL_SPEEDUP, COL_RMSE, COL_EDGE, COL_INTERIOR, NCOLS };
+enum { COL_METHOD, COL_WALL, COL_CPU, COL_SHADOW, COL_SPEEDUP, COL_RMSE, COL_EDGE, COL_INTERIOR, COL_DISAGREE, NCOLS };
 
 static const char *const heading[NCOLS] = {"method", "wall (s)", "CPU (s)", "shadows (s)",
-                                           "speed-up", "RMSE", "mask edge", "mask interior"};
+                                           "speed-up", "RMSE", "mask edge", "mask interior", "vs shadow ray"};
 
 /* What each column means, for the legends. */
 static const char *const meaning[NCOLS] = {
@@ -22,6 +22,8 @@ static const char *const meaning[NCOLS] = {
     "root mean square difference from POV-Ray's image, linear RGB",
     "shadow-mask pixels (+Q3 against +Q4) disagreeing with POV-Ray's at a shadow edge or silhouette: ties",
     "shadow-mask pixels disagreeing with POV-Ray's elsewhere: errors",
+    "a method that is not exact (embree): its decisions that differ from the exact shadow ray's, of those made, "
+    "in one more full render with --verify-shadows (untimed); - for the exact methods, which the tests hold to none",
 };
 
 /* The one formatter of every figure, for the table, the page and tests. */
@@ -62,6 +64,12 @@ static void cell(const VsRow *row, int is_povray, int col, char *buf, size_t n)
         break;
     case COL_EDGE:
         snprintf(buf, n, "%ld", row->mask.shadow_edge + row->mask.silhouette);
+        break;
+    case COL_DISAGREE:
+        if (row->verified >= 0)
+            snprintf(buf, n, "%lld of %lld", row->disagreements, row->verified);
+        else
+            snprintf(buf, n, "-");
         break;
     default:
         snprintf(buf, n, "%ld", row->mask.interior);
@@ -144,6 +152,10 @@ void vs_report_json(FILE *f, const VsResult *r)
         json_key_number(f, "      ", "cpu", w->cpu, 0);
         json_key_number(f, "      ", "shadow_testing", w->shadow, 0);
         json_key_number(f, "      ", "speedup", w->speedup, 0);
+        if (w->verified >= 0)
+            fprintf(f, "      \"verified\": %lld,\n      \"disagreements\": %lld,\n", w->verified, w->disagreements);
+        else
+            fprintf(f, "      \"verified\": null,\n      \"disagreements\": null,\n");
         compare_json_image_fields(f, "      ", &w->image);
         json_key_count(f, "      ", "nonfinite_pixels", w->image.nonfinite, 0);
         fprintf(f, "      \"mask\": {\n");

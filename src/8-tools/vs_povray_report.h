@@ -21,6 +21,10 @@ typedef struct {
     double speedup;         /* POV-Ray's wall time over this one's */
     ImageComparison image;  /* the +Q9 render against POV-Ray's */
     MaskComparison mask;    /* the +Q3/+Q4 shadow mask against POV-Ray's */
+    /* A method that is not exact (ShadowMethod.inexact): decisions checked
+     * and disagreements with the exact shadow ray in an untimed full render
+     * with --verify-shadows; -1 for the others and POV-Ray. */
+    long long verified, disagreements;
     /* Files of the report, relative to its folder ("" when none). */
     char render_png[64], diff_png[64], mask_png[64];
 } VsRow;

@@ -22,6 +22,7 @@
 #include "render.h"
 #include "cost_model.h"
 #include "shadow.h"
+#include "shadow_embree.h"
 #include "shadow_volumes.h"
 #include "stats.h"
 #include "vs_povray.h"
@@ -71,7 +72,10 @@ int main(int argc, char **argv)
         return EXIT_OK;
     }
     if (opt.version) {
-        printf("hstrace %s (%s)\n", PACKAGE_VERSION, colour_ocio_version());
+        if (shadow_embree_built())
+            printf("hstrace %s (%s; Embree %s)\n", PACKAGE_VERSION, colour_ocio_version(), shadow_embree_version());
+        else
+            printf("hstrace %s (%s; no Embree)\n", PACKAGE_VERSION, colour_ocio_version());
         return EXIT_OK;
     }
 
@@ -85,6 +89,7 @@ int main(int argc, char **argv)
     Grid grid;
     Bvh bvh;
     ShadowVolumes volumes;
+    EmbreeScene *embree = NULL;
     CostModel cost;
     AovImage aov;
     Provenance prov;
@@ -223,6 +228,16 @@ int main(int argc, char **argv)
             report.cost = &cost;
         report.volumes = &volumes;
     }
+    if (method->test == shadow_embree_test && opt.quality >= 4) {
+        embree = shadow_embree_build(&world, opt.threads > 0 ? opt.threads : render_default_threads(), err,
+                                     sizeof err);
+        if (!embree) {
+            fprintf(stderr, "hstrace: %s\n", err);
+            status = EXIT_IO;
+            goto done;
+        }
+        report.embree = embree;
+    }
     report.preprocess_seconds = clock_wall() - t;
     memcpy(report.grid, grid.n, sizeof report.grid);
     report.grid_registrations = grid.nitems;
@@ -240,6 +255,7 @@ int main(int argc, char **argv)
     ropt.shadow = method;
     ropt.bvh = &bvh;
     ropt.volumes = have_volumes ? &volumes : NULL;
+    ropt.embree = embree;
     ropt.cost = &cost;
     ropt.verify = opt.verify_shadows;
     ropt.pixel_coherence = opt.pixel_coherence;
@@ -315,6 +331,7 @@ done:
     provenance_free(&prov);
     aov_image_free(&aov);
     shadow_volumes_free(&volumes);
+    shadow_embree_free(embree);
     bvh_free(&bvh);
     grid_free(&grid);
     world_free(&world);
