@@ -132,6 +132,20 @@ static inline double test_limit(const Hit *hit, double best, double plane_t)
     return hit->kind == HIT_NONE ? plane_t : nextafter(best, HUGE_VAL);
 }
 
+/* Polygon pi as a candidate for the nearest hit (not hidden; the caller
+ * has left out the segment's own polygon). */
+static inline void try_nearer(Tracer *tr, const RayFrame *frame, uint32_t pi, double tmin, double plane_t, Hit *hit,
+                              double *best)
+{
+    const World *w = tr->world;
+    if (tr->hide && material_hidden(&w->materials[w->polygons[pi].material], tr->hide))
+        return;
+    tr->stats.polygon_tests++;
+    double t = intersect_polygon_in(w, &w->polygons[pi], frame, test_limit(hit, *best, plane_t));
+    if (t > tmin)
+        take_nearer(hit, best, pi, t);
+}
+
 /* The nearest polygon by the grid: cell by cell, a hit inside a cell
  * ending the walk. */
 static void nearest_in_grid(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double plane_t, int exclude, Hit *hit,
@@ -151,14 +165,8 @@ static void nearest_in_grid(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double 
         int c = grid_cell_index(g, walk.cell);
         for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
             uint32_t pi = g->items[k];
-            if (!bucket_admit(tr, id, pi))
-                continue;
-            if (tr->hide && material_hidden(&w->materials[w->polygons[pi].material], tr->hide))
-                continue;
-            tr->stats.polygon_tests++;
-            double t = intersect_polygon_in(w, &w->polygons[pi], &frame, test_limit(hit, *best, plane_t));
-            if (t > tmin)
-                take_nearer(hit, best, pi, t);
+            if (bucket_admit(tr, id, pi))
+                try_nearer(tr, &frame, pi, tmin, plane_t, hit, best);
         }
         /* A hit inside this cell cannot be beaten by later cells. */
         if (hit->kind != HIT_NONE && *best <= grid_walk_exit(&walk))
@@ -202,7 +210,6 @@ static inline int push_children(Pending *stack, int sp, const BvhNode *n, unsign
 static void nearest_in_bvh(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double plane_t, int exclude, Hit *hit,
                            double *best)
 {
-    const World *w = tr->world;
     const Bvh *b = tr->bvh;
     if (b->nnodes == 0)
         return;
@@ -228,17 +235,9 @@ static void nearest_in_bvh(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double p
             continue;
         }
         uint32_t first = bvh_leaf_first(p.child), end = first + bvh_leaf_count(p.child);
-        for (uint32_t k = first; k < end; k++) {
-            uint32_t pi = b->items[k];
-            if ((int)pi == exclude)
-                continue;
-            if (tr->hide && material_hidden(&w->materials[w->polygons[pi].material], tr->hide))
-                continue;
-            tr->stats.polygon_tests++;
-            double t = intersect_polygon_in(w, &w->polygons[pi], &frame, test_limit(hit, *best, plane_t));
-            if (t > tmin)
-                take_nearer(hit, best, pi, t);
-        }
+        for (uint32_t k = first; k < end; k++)
+            if ((int)b->items[k] != exclude)
+                try_nearer(tr, &frame, b->items[k], tmin, plane_t, hit, best);
     }
 }
 
