@@ -32,6 +32,7 @@
 #   MUTATION_CONFIGURE     configure arguments for the copies (default: BUILDDIR's, else --enable-werror)
 #   MUTATION_CACHE=DIR     the results cache (default BUILDDIR/mutation.cache)
 #   MUTATION_REPORT=FILE   the report (default tests/MUTATION.md in the source tree)
+#   MUTATION_POVRAY_MEMO=0 run POV-Ray for every mutant (default: each render once, tests/povray-memo.sh)
 set -u -o pipefail
 
 cache_version=1
@@ -90,6 +91,15 @@ elif [ -x "$builddir/config.status" ]; then
     eval "configure_args=($("$builddir/config.status" --config))" || die "cannot read $builddir/config.status"
 else
     configure_args=(--enable-werror)
+fi
+# POV-Ray's renders are the same for every mutant: the copies call it
+# through tests/povray-memo.sh, which renders each scene once for the whole
+# run (MUTATION_POVRAY_MEMO=0: POV-Ray itself every time).
+if [ "${MUTATION_POVRAY_MEMO:-1}" = 1 ] && command -v povray >/dev/null 2>&1; then
+    POVRAY_MEMO_REAL=$(command -v povray)
+    POVRAY_MEMO_DIR=$cache/povray-memo
+    export POVRAY_MEMO_REAL POVRAY_MEMO_DIR
+    configure_args+=("POVRAY=$srcdir/tests/povray-memo.sh")
 fi
 
 # The tracked files as they stand (deleted ones left out).
@@ -440,5 +450,5 @@ per=0
     echo "changed since their cached result; \`MUTANTS='03 17'\` runs a subset, \`MUTATION_FRESH=1\` ignores the"
     echo "cache, \`MUTATION_JOBS=2\` runs two copies at once. Re-run it when the code the mutants touch changes,"
     echo "and add a mutant for each bug the suite once missed."
-} >"$report.part" && mv "$report.part" "$report"
+} | scrub >"$report.part" && mv "$report.part" "$report"
 say "$caught / $total caught ($score); $survived survived, $timeouts timed out, $stale stale, $notrun not run; report in $(basename "$report") (this run: $run_seconds s)"
