@@ -425,6 +425,8 @@ void lex_raw(Parser *p, Token *t)
 
 void lex_token(Parser *p, SourceFile *f, Token *t)
 {
+    if (limits_stack_low(p))
+        limits_stack_exhausted(p, here(f));
     skip_space(p, f);
     memset(t, 0, sizeof *t);
     t->kw = -1;

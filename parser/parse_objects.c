@@ -605,6 +605,15 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
     o->u.csg.children = palloc(p, sizeof(SceneObject *) * (size_t)(children.n ? children.n : 1));
     if (children.n)
         memcpy(o->u.csg.children, children.data, sizeof(SceneObject *) * (size_t)children.n);
+    /* Written unions nest as deep as the text (nesting_enter counts them),
+     * but `#declare U = union { object { U } }` in a loop nests a copy one
+     * level deeper each time: the depth is bounded here, where it grows. */
+    o->depth = 1;
+    for (int i = 0; i < children.n; i++)
+        if (o->u.csg.children[i]->depth + 1 > o->depth)
+            o->depth = o->u.csg.children[i]->depth + 1;
+    if (o->depth > MAX_NESTING)
+        parse_fail(p, kw->pos, "nested too deeply (unions inside unions more than %d levels)", MAX_NESTING);
     if (lights.n) {
         SceneLight *l = palloc(p, sizeof(SceneLight) * (size_t)lights.n);
         int *slot = palloc(p, sizeof(int) * (size_t)lights.n);

@@ -151,18 +151,6 @@ int defer_unsupported(Parser *p, const char *what, SourcePos at)
     return 1;
 }
 
-int nesting_enter(Parser *p, const Token *t)
-{
-    if (++p->nesting > MAX_NESTING)
-        parse_fail(p, t->pos, "nested too deeply (more than %d levels)", MAX_NESTING);
-    return p->nesting;
-}
-
-void nesting_leave(Parser *p)
-{
-    p->nesting--;
-}
-
 /* ---- memory ------------------------------------------------------------ */
 
 static _Noreturn void out_of_memory(Parser *p)
@@ -364,20 +352,30 @@ static void skip_poisoned_value(Parser *p, int start_depth)
     }
 }
 
-Value copy_value(Parser *p, const Value *v)
+/* Arrays can hold arrays, and `#declare A[0] = A` in a loop nests them one
+ * level deeper each time without any nesting in the text: the copy, which
+ * recurses through them, is where that depth is bounded. */
+static Value copy_value_at(Parser *p, const Value *v, int depth)
 {
     Value c = *v;
     if (v->kind == VAL_ARRAY) {
+        if (depth > MAX_NESTING)
+            parse_fail(p, p->last_pos, "nested too deeply (arrays in arrays more than %d levels)", MAX_NESTING);
         /* POV-Ray copies arrays on assignment: `#declare B = A` and then
          * `#declare B[0] = ...` leaves A as it was. */
         ArrayValue *a = tmp_alloc(p, sizeof *a);
         *a = *v->array;
         a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)a->count);
         for (long i = 0; i < a->count; i++)
-            a->elems[i].value = copy_value(p, &v->array->elems[i].value);
+            a->elems[i].value = copy_value_at(p, &v->array->elems[i].value, depth + 1);
         c.array = a;
     }
     return c;
+}
+
+Value copy_value(Parser *p, const Value *v)
+{
+    return copy_value_at(p, v, 1);
 }
 
 /* What a lenient parse reads: a whole right-hand value, or one more
@@ -755,6 +753,7 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     tvec_init(&p->user_files, sizeof(struct UserFile *));
     symbols_init(p);
     init_scene(scene);
+    limits_init_stack(p);
 
     if (setjmp(p->fail)) {
         debug_end_line(p);

@@ -233,7 +233,10 @@ typedef struct Parser {
     double assumed_gamma; /* 0 with gamma_set: srgb */
     int default_changed;  /* #default was used */
 
-    int nesting; /* recursion guard for expressions and objects */
+    /* limits.c: the lowest stack address a token may be read at, and the
+     * levels of expressions and objects open (MAX_NESTING at most). */
+    const char *stack_floor;
+    int nesting;
 
     /* Inside a #declare: unsupported things become VAL_UNSUPPORTED instead of
      * errors. `poison_jmp` leads back to the innermost declaration. */
@@ -286,6 +289,27 @@ char *tmp_strndup(Parser *p, const char *s, size_t n);
 void tvec_init(TempVec *v, size_t elem);
 void *tvec_push(Parser *p, TempVec *v); /* returns the new zeroed slot */
 const char *describe_token(Parser *p, const Token *t);
+
+/* limits.c: the guards on what a scene may use while it is parsed. */
+/* Notes how far down this thread's stack may go (the parse's entry). */
+void limits_init_stack(Parser *p);
+_Noreturn void limits_stack_exhausted(Parser *p, SourcePos pos);
+/* Every token is read after this check (lex_token), so every level of
+ * every recursion of the parser meets it: true when the stack left below
+ * the caller is down to the reserve, and the parse must stop with
+ * limits_stack_exhausted. (Stacks grow down on every machine hstrace
+ * builds for.) */
+static inline int limits_stack_low(const Parser *p)
+{
+#if defined(__GNUC__)
+    const char *here = __builtin_frame_address(0);
+#else
+    char probe;
+    const char *here = &probe;
+#endif
+    return here < p->stack_floor;
+}
+/* One more level of an expression or an object (MAX_NESTING at most). */
 int nesting_enter(Parser *p, const Token *t);
 void nesting_leave(Parser *p);
 

@@ -200,6 +200,10 @@ struct SceneObject {
     const ApproxNote *approx; /* photons { } on the object */
     unsigned no_shadow : 1, no_image : 1, no_reflection : 1, hollow : 1, inverse : 1;
     int double_illuminate;
+    /* Levels of unions from this object down (1: a union of other objects,
+     * 0: not a union). The parser keeps it at MAX_NESTING (200) at most, so
+     * whatever walks the tree recurses that deep at most. */
+    int depth;
     union {
         struct {            /* polygon: one or more closed outlines */
             int npoints;    /* all outline points; each outline is closed */
