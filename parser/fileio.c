@@ -333,11 +333,14 @@ static void write_binary(Parser *p, UserFile *f, long lo, long hi, int bytes, in
             return;
         if (!token_starts_expression(p, t))
             fail_expected(p, next(p), "a number after the binary type in '#write'");
+        Token at = *peek(p);
         double e[5] = { 0 };
         int terms = 1;
         parse_express(p, e, &terms);
         for (int i = 0; i < terms; i++) {
-            long val = e[i] <= (double)lo ? lo : e[i] >= (double)hi ? hi : (long)floor(e[i] + 0.5);
+            if (isnan(e[i]))
+                parse_fail(p, at.pos, "#write cannot write nan as a binary integer");
+            long val = int_clamped(floor(e[i] + 0.5), (int)lo, (int)hi);
             unsigned long u = (unsigned long)val;
             for (int j = 0; j < bytes; j++) {
                 int shift = (big_endian ? bytes - 1 - j : j) * 8;

@@ -18,6 +18,9 @@ static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt
     e->column = pos.column;
     e->is_io = is_io;
     vsnprintf(e->message, sizeof e->message, fmt, ap);
+    /* "%g" shows a NaN's sign bit, which means nothing: "nan" either way */
+    for (char *m = e->message; (m = strstr(m, "-nan")) != NULL;)
+        memmove(m, m + 1, strlen(m + 1) + 1);
     /* Inside macros: where each was called, innermost first, so that an
      * error in a macro's body can be traced to the line that caused it. */
     e->notes[0] = '\0';
@@ -560,7 +563,19 @@ static void parse_global_settings(Parser *p)
             }
             break;
         }
-        case KW_max_trace_level: g->max_trace_level = (int)parse_float(p); break;
+        case KW_max_trace_level: {
+            /* POV-Ray: at least 1, and at most its limit, with a warning */
+            Token at = *peek(p);
+            double v = parse_float(p);
+            g->max_trace_level = int_clamped(v, 1, MAX_TRACE_LEVEL_LIMIT);
+            if (v > MAX_TRACE_LEVEL_LIMIT) {
+                char msg[160];
+                snprintf(msg, sizeof msg, "max_trace_level %g is more than POV-Ray's limit, %d: %d is used", v,
+                         MAX_TRACE_LEVEL_LIMIT, MAX_TRACE_LEVEL_LIMIT);
+                parse_warning(p, at.pos, msg);
+            }
+            break;
+        }
         case KW_adc_bailout: g->adc_bailout = parse_float(p); break;
         case KW_ambient_light:
             parse_colour(p, &c, 0);
@@ -579,10 +594,8 @@ static void parse_global_settings(Parser *p)
             break;
         case KW_noise_generator: {
             Token at = *peek(p);
-            double v = parse_float(p);
-            if (v < 1.0 || v >= 4.0)
+            if (!int_from_double(parse_float(p), 1, 3, &g->noise_generator))
                 parse_fail(p, at.pos, "Value for noise_generator in global_settings must be 1, 2, or 3.");
-            g->noise_generator = (int)v;
             break;
         }
         case KW_number_of_waves: case KW_max_intersections: case KW_hf_gray_16:

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stddef.h>
 
+#include "convert.h"
 #include "keywords.h"
 #include "parser.h"
 #include "scene.h"
@@ -379,6 +380,10 @@ void parse_express(Parser *p, double e[5], int *terms);
 void parse_rel_factor(Parser *p, double e[5], int *terms);
 double parse_float(Parser *p);
 double parse_float_full(Parser *p); /* comparisons allowed */
+/* v, read at `at`, as an integer of [lo, hi], truncated toward zero as
+ * POV-Ray's casts do; NaN, infinities and values outside the range are an
+ * error there: "WHAT must be an integer from LO to HI, not V". */
+int checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *what);
 Vec3 parse_vector(Parser *p);
 Vec3 parse_scale_vector(Parser *p);
 void parse_colour(Parser *p, Colour *c, int expect_ft);

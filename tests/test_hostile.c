@@ -1,7 +1,11 @@
 /* Hostile input to the parser: every recursive production nested deep
  * enough to have overflowed the stack is "nested too deeply" at a position
  * inside the nesting (on the main thread and on a thread with a small
- * stack), and the same productions nested 90 deep still parse. */
+ * stack), and the same productions nested 90 deep still parse. Numbers
+ * that become integers (counts, levels, indices, characters) are refused
+ * with their position when NaN, infinite or out of range, or clamped where
+ * POV-Ray clamps; infinite and NaN geometry, cameras and colours are
+ * refused at the value. */
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -203,8 +207,104 @@ static void test_nesting_by_copies(void)
                  "an array stored in its own element, 100000 times: nested too deeply at the 200th");
 }
 
+static Scene *parse_ok(const char *text, const char *what)
+{
+    ParseError err;
+    Scene *s = parse_scene_string("t.pov", text, &opts, &err);
+    tap_ok(s != NULL, "%s", what);
+    if (!s)
+        tap_diag("%s:%d:%d: %s", err.file, err.line, err.column, err.message);
+    return s;
+}
+
+/* NaN below is 0 * 1e309 (1e309 reads as infinity, as in POV-Ray). */
+static void test_conversions(void)
+{
+    Scene *s = parse_ok("global_settings { max_trace_level 1e10 }", "max_trace_level 1e10 parses");
+    tap_ok(s && s->globals.max_trace_level == 256, "max_trace_level 1e10 is POV-Ray's limit, 256 (got %d)",
+           s ? s->globals.max_trace_level : -1);
+    scene_free(s);
+    s = parse_ok("global_settings { max_trace_level -1e10 }", "max_trace_level -1e10 parses");
+    tap_ok(s && s->globals.max_trace_level == 1, "max_trace_level -1e10 is 1, as POV-Ray's max(1, ...)");
+    scene_free(s);
+    expect_error("#declare N = 0 * 1e309;\nglobal_settings { max_trace_level N }", 2, 35,
+                 "expected a finite number, found nan", "max_trace_level NaN: refused at the value");
+    expect_error("#declare S = chr(1e10);", 1, 18, "chr(1e+10): a character code is from 0 to 65535", "chr(1e10)");
+    expect_error("#declare S = chr(0 * 1e309);", 1, 18, "a character code is from 0 to 65535", "chr(NaN)");
+    expect_error("#declare S = chr(-1);", 1, 18, "a character code is from 0 to 65535", "chr(-1)");
+    expect_error("triangle { 0, x, y finish { reflection { 0.5 fresnel 1e10 } } }", 1, 46,
+                 "fresnel must be true or false", "fresnel 1e10");
+    expect_error("#declare N = 0 * 1e309;\ntriangle { 0, x, y finish { reflection { 0.5 fresnel N } } }", 2, 54,
+                 "expected a finite number, found nan", "fresnel NaN");
+    s = parse_ok("triangle { 0, x, y pigment { bozo octaves 1e10 } }\n"
+                 "triangle { 0, x, y pigment { bozo octaves -1e10 } }",
+                 "octaves 1e10 and -1e10 parse");
+    tap_ok(s && s->objects[0]->texture->pigment.turbulence[0].octaves == 10 &&
+               s->objects[1]->texture->pigment.turbulence[0].octaves == 1,
+           "octaves are held to POV-Ray's 1 to 10");
+    scene_free(s);
+    expect_error("global_settings { noise_generator 1e10 }", 1, 35, "must be 1, 2, or 3", "noise_generator 1e10");
+    expect_error("triangle { 0, x, y pigment { bozo noise_generator -1e10 } }", 1, 51, "must be 0, 1, 2, or 3",
+                 "a pigment's noise_generator -1e10");
+    expect_error("polygon { 1e10, <0, 0>, <1, 0>, <0, 1> }", 1, 11, "polygon: 1e+10 is not a usable count",
+                 "polygon count 1e10");
+    expect_error("#declare N = 0 * 1e309;\n#declare A = array[N];", 2, 20, "invalid array size nan",
+                 "array size NaN");
+    expect_error("#declare A = array[3];\n#declare B = A[1e10];", 2, 16, "index 1e+10 is out of range",
+                 "array index 1e10");
+    expect_error("#declare N = 0 * 1e309;\n#declare A = array[3];\n#declare B = A[N];", 3, 16, "index nan is out of range",
+                 "array index NaN");
+    s = parse_ok("#declare A = array[3][4];\n#declare D = dimension_size(A, 1e10);\nbox { 0, D + 1 }",
+                 "dimension_size(A, 1e10) parses");
+    tap_ok(s && s->objects[0]->u.box.corner2.x == 1.0, "dimension_size of a dimension A lacks is 0, as POV-Ray's");
+    scene_free(s);
+    expect_error("#declare S = substr(\"abc\", 0 * 1e309, 1);", 1, 14, "'substr' range outside the string",
+                 "substr start NaN");
+    expect_error("#declare S = substr(\"abc\", 1, 1e10);", 1, 14, "'substr' range outside the string",
+                 "substr length 1e10");
+    expect_error("mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 1e10> } }", 1, 57,
+                 "mesh2 face index out of range (3 vertices)", "mesh2 face index 1e10");
+    expect_error("mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 0 * 1e309> } }", 1, 57,
+                 "expected a finite vector, found <0, 1, nan>", "mesh2 face index NaN");
+    s = parse_ok("fog { distance 1 fog_type 1e10 rgb 1 }", "fog_type 1e10: POV-Ray's warning, and on");
+    scene_free(s);
+    s = parse_ok("triangle { 0, x, y pigment { spiral1 1e10 } }", "spiral1 1e10 parses");
+    tap_ok(s && s->objects[0]->texture->pigment.arms == 0, "spiral1 1e10 has POV-Ray's (short)(int) arms, 0 (got %d)",
+           s ? s->objects[0]->texture->pigment.arms : -1);
+    scene_free(s);
+    /* POV-Ray's domain errors, in its words */
+    expect_error("#declare X = sqrt(-1);", 1, 14, "sqrt of negative number -1.000000", "sqrt(-1)");
+    expect_error("#declare X = ln(0);", 1, 14, "ln of negative number 0.000000", "ln(0)");
+    expect_error("#declare X = log(-2);", 1, 14, "log of negative number -2.000000", "log(-2)");
+}
+
+static void test_infinite_values(void)
+{
+    expect_error("triangle { 0, x, <0, 1/0, 0> }", 1, 18, "expected a finite vector, found <0, inf, 0>",
+                 "a triangle vertex 1/0");
+    expect_error("triangle { 0, x, <0, 1e309, 0> }", 1, 18, "expected a finite vector, found <0, inf, 0>",
+                 "a triangle vertex 1e309 (the fast path for plain numbers too)");
+    expect_error("#declare N = val(\"nan\");\ncamera { location <N, 0, -5> look_at 0 }", 2, 19,
+                 "expected a finite vector, found <nan, 0, -5>", "a camera location val(\"nan\")");
+    expect_error("camera { angle 1e309 }", 1, 16, "expected a finite number, found inf", "a camera angle 1e309");
+    expect_error("plane { y, -1e309 }", 1, 12, "expected a finite number, found -inf", "a plane distance -1e309");
+    expect_error("light_source { 0, rgb <1, 1e309, 1> }", 1, 19, "expected a finite colour, found <1, inf, 1>",
+                 "a light's colour 1e309");
+    expect_error("triangle { 0, x, y pigment { rgb 1 - 1e309 } }", 1, 30, "expected a finite colour, found <-inf, -inf, -inf, 0, 0>",
+                 "a pigment colour -inf");
+    /* inside expressions and declarations, any value */
+    Scene *s = parse_ok("#declare Big = 1e309;\n#declare V = <1, 1/0, 3>;\n#if (Big > 1) box { 0, V.x } #end",
+                        "infinities inside expressions and declarations are values");
+    scene_free(s);
+    s = parse_ok("camera { location <1e308, 0, -5> look_at 0 }\ntriangle { 0, x, y }",
+                 "a camera 1e308 away is finite: POV-Ray renders it, so does hstrace");
+    scene_free(s);
+}
+
 int main(void)
 {
+    test_conversions();
+    test_infinite_values();
     test_nesting_by_copies();
     test_deep();
     test_small_stack();

@@ -289,9 +289,13 @@ typedef struct {
     const ApproxNote *approx; /* focal blur, camera normal */
 } SceneCamera;
 
+/* POV-Ray's bound on max_trace_level (configbackend.h there): the ray
+ * tree, which the renderer walks recursively, is never deeper. */
+#define MAX_TRACE_LEVEL_LIMIT 256
+
 typedef struct {
     double assumed_gamma;   /* 0 when not given */
-    int max_trace_level;    /* default 5 */
+    int max_trace_level;    /* default 5; 1 to MAX_TRACE_LEVEL_LIMIT */
     double adc_bailout;     /* default 1/255 */
     Colour ambient_light;   /* default 1,1,1 */
     int has_assumed_gamma;

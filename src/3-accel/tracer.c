@@ -48,7 +48,12 @@ static int touches_other(Tracer *t, const Hit *hit, double tol)
     const Grid *g = t->grid;
     if (hit->kind == HIT_POLYGON && polygon_classify_point(w, &w->polygons[hit->index], hit->point, tol) < 0)
         return 1; /* on its own polygon's border: on the neighbours' too */
-    /* Every cell within tol of the point (usually one). */
+    /* Every cell within tol of the point (usually one). A point beyond the
+     * grid's box touches nothing: the box holds every polygon. (Hits on an
+     * infinite plane near the horizon lie there, 1e16 units away.) */
+    for (int a = 0; a < 3; a++)
+        if (!(v3_comp(hit->point, a) + tol >= v3_comp(g->min, a) && v3_comp(hit->point, a) - tol <= v3_comp(g->max, a)))
+            return 0;
     int lo[3], hi[3];
     for (int a = 0; a < 3; a++) {
         lo[a] = grid_cell_coord(g, v3_comp(hit->point, a) - tol, a);
