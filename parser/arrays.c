@@ -73,6 +73,8 @@ Value parse_array(Parser *p, const Token *kw)
         a->count *= size;
         if (a->count > MAX_ARRAY_ELEMENTS)
             parse_fail(p, at.pos, "array of more than %ld elements", MAX_ARRAY_ELEMENTS);
+        if ((size_t)a->count > limits_memory_left(p) / sizeof *a->elems) /* named at the size that crosses it */
+            limits_over_budget(p, at.pos);
     }
     a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)a->count);
     if (lex_next_is_punct(p, '{'))

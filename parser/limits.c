@@ -1,4 +1,5 @@
-/* What a scene may use while it is parsed: nesting and the C stack.
+/* What a scene may use while it is parsed: the C stack, nesting, memory,
+ * time and work.
  *
  * The parser is recursive descent, and its recursion runs through next():
  * a directive can stand anywhere, so nearly every production can reach
@@ -20,7 +21,11 @@
 
 #include <pthread.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <string.h>
 #include <sys/resource.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "parser_internal.h"
 
@@ -69,6 +74,131 @@ void limits_stack_exhausted(Parser *p, SourcePos pos)
 {
     parse_fail(p, pos, "nested too deeply (the parser's stack is used up)");
 }
+
+/* ---- memory ------------------------------------------------------------- */
+
+size_t parse_default_max_memory(void)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page <= 0)
+        return (size_t)4 << 30;
+    uintmax_t bytes = (uintmax_t)pages * (uintmax_t)page / 4;
+    if (bytes < ((uintmax_t)256 << 20))
+        bytes = (uintmax_t)256 << 20;
+    return bytes > SIZE_MAX ? SIZE_MAX : (size_t)bytes;
+}
+
+void limits_init_memory(Parser *p)
+{
+    p->budget.limit = p->opts->max_memory ? p->opts->max_memory : parse_default_max_memory();
+    arena_set_budget(p->arena, &p->budget);
+    arena_set_budget(p->temp, &p->budget);
+}
+
+size_t limits_memory_left(const Parser *p)
+{
+    return p->budget.used < p->budget.limit ? p->budget.limit - p->budget.used : 0;
+}
+
+/* 1.5 GiB, 256 MiB, 12 KiB: a size as people read it. */
+static void format_size(char *buf, size_t n, size_t bytes)
+{
+    static const char *const units[] = { "bytes", "KiB", "MiB", "GiB", "TiB" };
+    double v = (double)bytes;
+    int u = 0;
+    while (v >= 1024.0 && u < 4) {
+        v /= 1024.0;
+        u++;
+    }
+    if (u == 0)
+        snprintf(buf, n, "%zu bytes", bytes);
+    else
+        snprintf(buf, n, v < 10.0 && v != (double)(long)v ? "%.1f %s" : "%.0f %s", v, units[u]);
+}
+
+void limits_over_budget(Parser *p, SourcePos pos)
+{
+    p->budget.exceeded = 1;
+    parse_fail_memory(p, pos);
+}
+
+void parse_fail_memory(Parser *p, SourcePos pos)
+{
+    if (!p->budget.exceeded)
+        parse_fail(p, pos, "out of memory");
+    char limit[32];
+    format_size(limit, sizeof limit, p->budget.limit);
+    parse_fail(p, pos, "the scene needs more than %s of memory while it is parsed (--max-memory sets the budget)",
+               limit);
+}
+
+/* ---- time and work --------------------------------------------------------- */
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+void limits_init_work(Parser *p)
+{
+    const ParseOptions *o = p->opts;
+    p->max_loop_iterations = o->max_loop_iterations > 0 ? o->max_loop_iterations : MAX_LOOP_ITERATIONS;
+    p->max_macro_calls = o->max_macro_calls > 0 ? o->max_macro_calls : MAX_MACRO_CALLS;
+    p->max_repeated_tokens = o->max_repeated_tokens > 0 ? o->max_repeated_tokens : MAX_REPEATED_TOKENS;
+    p->deadline = o->max_parse_seconds > 0.0 ? now() + o->max_parse_seconds : 0.0;
+}
+
+/* What was running out of budget: the innermost loop of the current
+ * file, else the macro whose body is being read. */
+static void what_runs(Parser *p, char *buf, size_t n)
+{
+    const SourceFile *f = &p->files[p->depth - 1];
+    const Control *c = p->controls.data;
+    for (int i = p->controls.n - 1; i >= f->controls_at_entry; i--)
+        if (c[i].kind == CTL_WHILE || c[i].kind == CTL_FOR) {
+            snprintf(buf, n, "is the %s at %s:%d endless?", c[i].kind == CTL_WHILE ? "#while" : "#for", c[i].pos.file,
+                     c[i].pos.line);
+            return;
+        }
+    if (f->macro)
+        snprintf(buf, n, "is the recursion of macro '%s' endless?", f->macro->name);
+    else
+        snprintf(buf, n, "is a loop or a recursion endless?");
+}
+
+void limits_work_exhausted(Parser *p, SourcePos pos, const char *what)
+{
+    char runs[600];
+    what_runs(p, runs, sizeof runs);
+    if (strcmp(what, "tokens") == 0)
+        parse_fail(p, pos, "more than %ld tokens read again by loops and macro calls (--max-repeated-tokens): %s",
+                   p->max_repeated_tokens, runs);
+    parse_fail(p, pos, "the parse ran for more than %g s (--max-parse-seconds): %s", p->opts->max_parse_seconds, runs);
+}
+
+void limits_check_time(Parser *p, SourcePos pos)
+{
+    if (now() > p->deadline)
+        limits_work_exhausted(p, pos, "seconds");
+}
+
+void limits_count_iteration(Parser *p, SourcePos loop)
+{
+    if (++p->loop_iterations > p->max_loop_iterations)
+        parse_fail(p, loop, "more than %ld loop iterations (--max-loop-iterations): is this loop endless?",
+                   p->max_loop_iterations);
+}
+
+void limits_count_call(Parser *p, SourcePos call, const char *macro)
+{
+    if (++p->macro_calls > p->max_macro_calls)
+        parse_fail(p, call, "more than %ld macro calls (--max-macro-calls): is the recursion of macro '%s' endless?",
+                   p->max_macro_calls, macro);
+}
+
+/* ---- nesting ------------------------------------------------------------ */
 
 int nesting_enter(Parser *p, const Token *t)
 {

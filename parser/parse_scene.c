@@ -158,7 +158,7 @@ int defer_unsupported(Parser *p, const char *what, SourcePos at)
 
 static _Noreturn void out_of_memory(Parser *p)
 {
-    parse_fail(p, p->last_pos, "out of memory");
+    parse_fail_memory(p, p->last_pos);
 }
 
 void *palloc(Parser *p, size_t size)
@@ -396,6 +396,7 @@ static Value parse_lenient(Parser *p, const LenientWhat *what)
     jmp_buf here;
     jmp_buf *volatile outer = p->poison_jmp;
     volatile int saved_nesting = p->nesting, saved_declaring = p->declaring;
+    volatile int saved_args = p->arg_values.n; /* macro calls inside, left half read */
     volatile int start_depth = p->brace_depth;
     const char *volatile outer_deferred = p->deferred_what;
     volatile SourcePos outer_deferred_at = p->deferred_at;
@@ -419,6 +420,7 @@ static Value parse_lenient(Parser *p, const LenientWhat *what)
         }
     } else {
         p->nesting = saved_nesting;
+        p->arg_values.n = p->arg_refs.n = saved_args;
         memset(&v, 0, sizeof v);
         v.kind = VAL_UNSUPPORTED;
         v.what = p->poison_what;
@@ -704,8 +706,11 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
         char *copy = tmp_alloc(p, len + 1);
         memcpy(copy, text, len);
         lex_open_buffer(p, name, copy, len, start);
-    } else if (!lex_open_file(p, name, name, start)) {
-        parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
+    } else {
+        SourceText scene_text;
+        if (!source_read(p, name, start, &scene_text))
+            parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
+        lex_open_source(p, &scene_text, start);
     }
     parse_statements(p);
     debug_end_line(p);
@@ -726,6 +731,7 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
     scene->fogs = palloc(p, sizeof(SceneFog) * (size_t)(p->fogs.n ? p->fogs.n : 1));
     if (p->fogs.n)
         memcpy(scene->fogs, p->fogs.data, sizeof(SceneFog) * (size_t)p->fogs.n);
+    arena_set_budget(scene->arena, NULL); /* the budget is the parse's, and ends with it */
     arena_free(p->temp);
     free(p);
     return scene;
@@ -764,9 +770,14 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     tvec_init(&p->fogs, sizeof(SceneFog));
     tvec_init(&p->rand_streams, sizeof(unsigned));
     tvec_init(&p->user_files, sizeof(struct UserFile *));
+    tvec_init(&p->arg_values, sizeof(Value));
+    tvec_init(&p->arg_refs, sizeof(Symbol *));
+    source_files_init(p);
     symbols_init(p);
     init_scene(scene);
     limits_init_stack(p);
+    limits_init_memory(p);
+    limits_init_work(p);
 
     if (setjmp(p->fail)) {
         debug_end_line(p);

@@ -5,19 +5,26 @@
 # no image behind when it fails; scenes whose numbers run to the ends of
 # the doubles render.
 #
+# Then paths that are no regular files -- a FIFO (which would wait for a
+# writer for ever), a directory, a device (/dev/zero, read for 4 GB
+# before) -- as the scene, an #include and an #fopen: refused at once, with
+# status 3 and the position of the name.
+#
 # A scene's header says what it must do, in comment lines:
 #   // expect: status N
-#   // expect: error LINE:COLUMN: MESSAGE   (the first error line, after the file name)
+#   // expect: error FILE:LINE:COLUMN: MESSAGE   (the first error line)
 #   // expect: option ARGS                  (more hstrace arguments)
 # Environment: top_srcdir, top_builddir (default .).
 set -u
 srcdir=${top_srcdir:-.}
 builddir=${top_builddir:-.}
 hstrace=$(cd "$builddir" && pwd)/hstrace
-scenes=$(cd "$srcdir/tests/hostile" && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/hsthostile.XXXXXX") || { echo "Bail out! cannot make a temporary folder"; exit 1; }
 trap 'rm -rf "$work"' EXIT
 trap 'exit 1' HUP INT PIPE TERM
+# The scenes run in a copy: some write files next to themselves.
+cp -R "$srcdir/tests/hostile" "$work/scenes" || { echo "Bail out! cannot copy the scenes"; exit 1; }
+scenes=$work/scenes
 [ -x "$hstrace" ] || { echo "Bail out! $hstrace is not built"; exit 1; }
 n=0
 check() { # description, then a shell condition
@@ -45,13 +52,55 @@ for f in "$scenes"/*.pov; do
     fi
     check "$b: status $want_status (got $status: $(head -1 "$work/err"))" '[ "$status" = "$want_status" ]'
     if [ -n "$want_error" ]; then
-        check "$b: $b:$want_error" '[ "$got" = "$b:$want_error" ]'
+        check "$b: $want_error" '[ "$got" = "$want_error" ]'
     fi
     if [ "$want_status" = 0 ]; then
         check "$b: renders an image" '[ -s "$work/out.png" ]'
     else
         check "$b: no image left behind" '[ ! -e "$work/out.png" ]'
     fi
+done
+
+run() { # hstrace on scene $1 in $work/files; sets status, keeps stderr in $work/err
+    rm -f "$work/out.png"
+    (cd "$work/files" && exec timeout -s KILL $limit "$hstrace" "$1" --width 16 --height 12 --threads 1 \
+        -o "$work/out.png") >/dev/null 2>"$work/err"
+    status=$?
+}
+mkdir "$work/files" "$work/files/folder.pov"
+if mkfifo "$work/files/fifo.pov" 2>/dev/null; then fifo=fifo.pov; else fifo=""; fi
+for target in $fifo folder.pov /dev/zero; do
+    case $target in
+    fifo.pov) kind="a FIFO" ;;
+    folder.pov) kind="a directory" ;;
+    *) kind="a device" ;;
+    esac
+    run "$target"
+    check "$target as the scene: status 3 within $limit s" '[ $status -eq 3 ]'
+    check "$target as the scene: '$target' is $kind ($(head -1 "$work/err"))" \
+        'grep -q "^$target: '"'"'$target'"'"' is $kind, not a file to read\$" "$work/err"'
+    printf '#declare A = 1;\n#include "%s"\n' "$target" >"$work/files/inc.pov"
+    run inc.pov
+    check "#include \"$target\": status 3, at the name ($(head -1 "$work/err"))" \
+        '[ $status -eq 3 ] && grep -q "^inc.pov:2:10: '"'"'$target'"'"' is $kind, not a file to read\$" "$work/err"'
+    printf '#fopen F "%s" read\n' "$target" >"$work/files/fopen.pov"
+    run fopen.pov
+    check "#fopen F \"$target\" read: status 3, at the name ($(head -1 "$work/err"))" \
+        '[ $status -eq 3 ] && grep -q "^fopen.pov:1:10: '"'"'$target'"'"' is $kind, not a file to read\$" "$work/err"'
+    printf '#fopen F "%s" write\n#write (F, "x")\n' "$target" >"$work/files/fwrite.pov"
+    run fwrite.pov
+    check "#fopen F \"$target\" write: status 3, at the name ($(head -1 "$work/err"))" \
+        '[ $status -eq 3 ] && grep -q "^fwrite.pov:1:10: cannot open '"'"'$target'"'"' for writing: " "$work/err"'
+done
+
+# The budgets' options, given something that is no budget: bad usage.
+printf 'triangle { 0, x, y }\n' >"$work/files/ok.pov"
+for bad in "--max-memory 12Q" "--max-memory 0" "--max-parse-seconds -1" "--max-repeated-tokens 0" \
+    "--max-macro-calls 1.5" "--max-loop-iterations x"; do
+    # shellcheck disable=SC2086 # the option and its value are two words
+    (cd "$work/files" && exec "$hstrace" ok.pov -o "$work/out.png" $bad) >/dev/null 2>"$work/err"
+    status=$?
+    check "$bad: status 1 ($(head -1 "$work/err"))" '[ $status -eq 1 ] && grep -q "^hstrace: ${bad%% *} " "$work/err"'
 done
 
 echo "1..$n"

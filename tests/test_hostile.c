@@ -5,7 +5,10 @@
  * that become integers (counts, levels, indices, characters) are refused
  * with their position when NaN, infinite or out of range, or clamped where
  * POV-Ray clamps; infinite and NaN geometry, cameras and colours are
- * refused at the value. */
+ * refused at the value. Memory stays within the budget and flat across a
+ * loop's passes and a macro's calls; endless loops and recursions stop at
+ * the budgets of work and time, naming the position, the loop or macro
+ * and the calls that led there. */
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -301,8 +304,109 @@ static void test_infinite_values(void)
     scene_free(s);
 }
 
+/* Parses with a budget; returns the scene, or NULL with err filled. */
+static Scene *parse_with(const char *text, const ParseOptions *o, ParseError *err)
+{
+    return parse_scene_string("t.pov", text, o, err);
+}
+
+static void test_memory(void)
+{
+    ParseOptions o = opts;
+    ParseError err;
+    o.max_memory = 16u << 20;
+    Scene *s = parse_with("#declare A = array[1e8];", &o, &err);
+    tap_ok(!s && err.line == 1 && err.column == 20 &&
+               strcmp(err.message, "the scene needs more than 16 MiB of memory while it is parsed (--max-memory sets the budget)") == 0,
+           "array[1e8] with a 16 MiB budget: refused at the size (%d:%d: %s)", err.line, err.column, err.message);
+    scene_free(s);
+    /* Memory flat across iterations: each of these took a few hundred
+     * bytes (calls) or a kilobyte (literals) per pass, 50 to 200 MiB here. */
+    static char loop[2600];
+    char lit[1001];
+    memset(lit, 'x', 1000);
+    lit[1000] = '\0';
+    struct {
+        const char *what;
+        const char *text;
+    } flat[] = {
+        { "200000 calls of a one-argument macro", "#macro M(A) #local B = A; #end\n"
+                                                  "#for (I, 1, 200000) M(I) #end\n" },
+        { "200000 calls with two string arguments", "#macro M(A, B) #end\n"
+                                                     "#for (I, 1, 200000) M(\"one\", concat(\"t\", \"wo\")) #end\n" },
+        { "200000 passes over a 1000-character literal under a false #if", loop },
+        { "200000 passes over a 1000-character literal", loop + 1300 },
+    };
+    snprintf(loop, 1300, "#for (I, 1, 200000) #if (0) #declare S = \"%s\"; #end #end\n", lit);
+    snprintf(loop + 1300, 1300, "#for (I, 1, 200000) #declare S = \"%s\"; #end\n", lit);
+    o.max_memory = 8u << 20;
+    for (size_t i = 0; i < sizeof flat / sizeof flat[0]; i++) {
+        s = parse_with(flat[i].text, &o, &err);
+        tap_ok(s != NULL, "%s: within 8 MiB", flat[i].what);
+        if (!s)
+            tap_diag("%s:%d:%d: %s", err.file, err.line, err.column, err.message);
+        scene_free(s);
+    }
+    /* what does grow is bounded: a new string per pass */
+    s = parse_with("#for (I, 1, 10000000) #declare S = concat(\"a\", str(I, 0, 0)); #end\n", &o, &err);
+    tap_ok(!s && err.line == 1 && strstr(err.message, "more than 8 MiB of memory"),
+           "strings made anew in a loop stop at the budget (%d:%d: %s)", err.line, err.column, err.message);
+    scene_free(s);
+}
+
+/* Only the first line of the notes: the innermost call. */
+static int first_note_is(const ParseError *err, const char *want)
+{
+    return strncmp(err->notes, want, strlen(want)) == 0;
+}
+
+static void test_time(void)
+{
+    ParseOptions o = opts;
+    ParseError err;
+    Scene *s = parse_with("#macro M(N)\n  #if (N > 0) M(N - 1) M(N - 1) #end\n#end\nM(60)\n", &o, &err);
+    tap_ok(!s && strstr(err.message, "more than 20000000 tokens read again by loops and macro calls") &&
+               strstr(err.message, "is the recursion of macro 'M' endless?") && err.line == 2 &&
+               first_note_is(&err, "t.pov:2:") && strstr(err.notes, "and ") != NULL,
+           "exponential recursion M(60): the budget of repeated text, in M, with the calls (%d:%d: %s)", err.line,
+           err.column, err.message);
+    scene_free(s);
+    s = parse_with("#declare I = 0;\n#while (1)\n  #declare I = sin(I) * cos(I) + sqrt(abs(I)) + I * I / (I + 1);\n#end\n",
+                   &o, &err);
+    tap_ok(!s && strstr(err.message, "is the #while at t.pov:2 endless?") && err.line == 3,
+           "an endless #while with a heavy body: the budget, naming the loop (%d:%d: %s)", err.line, err.column,
+           err.message);
+    scene_free(s);
+    s = parse_with("mesh2 { vertex_vectors { 50000000,\n#declare I = 0;\n#while (I < 10)\n<I, 0, 0>,\n#declare I = I;\n#end\n} }",
+                   &o, &err);
+    tap_ok(!s && strstr(err.message, "is the #while at t.pov:3 endless?"),
+           "an endless loop inside mesh2 (a mutated #declare): the budget (%d:%d: %s)", err.line, err.column,
+           err.message);
+    scene_free(s);
+    o.max_macro_calls = 1000;
+    s = parse_with("#macro M(N)\n  #if (N > 0) M(N - 1) M(N - 1) #end\n#end\nM(60)\n", &o, &err);
+    tap_ok(!s && strcmp(err.message, "more than 1000 macro calls (--max-macro-calls): is the recursion of macro 'M' endless?") == 0 &&
+               err.line == 2 && first_note_is(&err, "t.pov:2:"),
+           "1000 macro calls at most: at the 1001st call (%d:%d: %s)", err.line, err.column, err.message);
+    scene_free(s);
+    o = opts;
+    o.max_parse_seconds = 0.2;
+    s = parse_with("#while (1) #end\n", &o, &err);
+    tap_ok(!s && strstr(err.message, "the parse ran for more than 0.2 s (--max-parse-seconds): is the #while at t.pov:1 endless?"),
+           "--max-parse-seconds 0.2 stops an endless loop (%d:%d: %s)", err.line, err.column, err.message);
+    scene_free(s);
+    /* what real scenes do stays well inside: 100000 iterations, 100000 calls */
+    o = opts;
+    s = parse_with("#macro Add(A, B) (A + B) #end\n#declare S = 0;\n#for (I, 1, 100000) #declare S = Add(S, I); #end\n",
+                   &o, &err);
+    tap_ok(s != NULL, "100000 iterations calling a macro parse within the default budgets");
+    scene_free(s);
+}
+
 int main(void)
 {
+    test_memory();
+    test_time();
     test_conversions();
     test_infinite_values();
     test_nesting_by_copies();

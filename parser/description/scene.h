@@ -358,6 +358,15 @@ Interior scene_default_interior(void);
 
 /* Arena allocation: zeroed memory that lives as long as the scene. */
 Arena *arena_new(void);
+/* A bound on what arenas may take from the system, shared by the arenas
+ * given it (the parser's two): once `used` would pass `limit`, an
+ * allocation returns NULL and sets `exceeded`, before any memory is asked
+ * for. A budget is the caller's, and one thread's: NULL detaches it. */
+typedef struct {
+    size_t used, limit;
+    int exceeded;
+} ArenaBudget;
+void arena_set_budget(Arena *a, ArenaBudget *budget);
 void *arena_alloc(Arena *a, size_t size);
 /* As arena_alloc, without zeroing (for memory about to be overwritten). */
 void *arena_alloc_uninit(Arena *a, size_t size);
