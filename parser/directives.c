@@ -28,7 +28,9 @@ void debug_end_line(Parser *p)
 void parse_warning(Parser *p, SourcePos pos, const char *msg)
 {
     debug_end_line(p);
-    fprintf(stderr, "%s:%d:%d: warning: %s\n", pos.file, pos.line, pos.column, msg);
+    char shown[1024];
+    text_escape(shown, sizeof shown, msg, NULL);
+    fprintf(stderr, "%s:%d:%d: warning: %s\n", pos.file, pos.line, pos.column, shown);
 }
 
 static void count_braces(Parser *p, const Token *t, int dir)
@@ -598,9 +600,13 @@ static void handle_directive(Parser *p, const Token *hash)
         return;
     }
     case KW_debug: {
-        /* POV-Ray's debug stream: the text as it is, newlines from "\n" */
+        /* POV-Ray's debug stream: the text as it is, newlines from "\n"
+         * (and tabs), the other controls escaped as in messages */
         char *msg = parse_string(p);
-        fputs(msg, stderr);
+        size_t n = strlen(msg) * 4 + 1;
+        char *shown = tmp_alloc(p, n);
+        text_escape(shown, n, msg, "\n\t");
+        fputs(shown, stderr);
         fflush(stderr);
         if (*msg)
             p->debug_line_open = msg[strlen(msg) - 1] != '\n';

@@ -45,7 +45,9 @@ static UserFile *new_user_file(Parser *p, const char *name, SourcePos at)
         *(UserFile **)tvec_push(p, &p->user_files) = f;
     }
     memset(f, 0, sizeof *f);
-    f->name = intern_name(p, name, (int)strlen(name));
+    char shown[512];
+    text_escape(shown, sizeof shown, name, NULL);
+    f->name = intern_name(p, shown, (int)strlen(shown));
     f->opened_at = at;
     return f;
 }

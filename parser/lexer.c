@@ -63,10 +63,7 @@ static void open_text(Parser *p, const char *name, const char *dir, const char *
 
 void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at)
 {
-    char *kept = arena_strdup(p->arena, name);
-    if (!kept)
-        parse_fail_memory(p, at);
-    open_text(p, kept, dir_of(p, name), buf, size, at);
+    open_text(p, display_name(p, name), dir_of(p, name), buf, size, at);
 }
 
 void lex_open_source(Parser *p, const SourceText *s, SourcePos at)

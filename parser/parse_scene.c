@@ -10,6 +10,63 @@
 
 /* ---- errors ------------------------------------------------------------ */
 
+/* The length of the printable UTF-8 character at s (n bytes left), or 0:
+ * a control character (C0, DEL, C1), a malformed, overlong or surrogate
+ * sequence, or a code point beyond U+10FFFF. */
+static size_t printable_char(const unsigned char *s, size_t n)
+{
+    unsigned c = s[0];
+    if (c < 0x80)
+        return c >= 0x20 && c != 0x7f;
+    size_t len = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+    if (len == 0 || len > n)
+        return 0;
+    for (size_t i = 1; i < len; i++)
+        if ((s[i] & 0xc0) != 0x80)
+            return 0;
+    if ((c == 0xe0 && s[1] < 0xa0) || (c == 0xed && s[1] >= 0xa0) || (c == 0xf0 && s[1] < 0x90) ||
+        (c == 0xf4 && s[1] >= 0x90))
+        return 0; /* overlong, a surrogate, beyond U+10FFFF */
+    if (c == 0xc2 && s[1] < 0xa0)
+        return 0; /* U+0080 to U+009F: C1 controls */
+    return len;
+}
+
+size_t text_escape(char *out, size_t size, const char *in, const char *keep)
+{
+    const unsigned char *s = (const unsigned char *)in;
+    size_t n = strlen(in), o = 0;
+    for (size_t i = 0; i < n;) {
+        size_t len = printable_char(s + i, n - i);
+        if (len == 0 && keep && s[i] && strchr(keep, s[i]))
+            len = 1;
+        if (len) {
+            if (o + len >= size)
+                break;
+            memcpy(out + o, s + i, len);
+            o += len;
+            i += len;
+        } else {
+            if (o + 4 >= size)
+                break;
+            snprintf(out + o, 5, "\\x%02x", s[i]);
+            o += 4;
+            i++;
+        }
+    }
+    if (size)
+        out[o] = '\0';
+    return o;
+}
+
+const char *display_name(Parser *p, const char *path)
+{
+    size_t n = strlen(path) * 4 + 1;
+    char *shown = palloc(p, n);
+    text_escape(shown, n, path, NULL);
+    return shown;
+}
+
 static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt, va_list ap)
 {
     ParseError *e = p->err;
@@ -17,7 +74,11 @@ static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt
     e->line = pos.line;
     e->column = pos.column;
     e->is_io = is_io;
-    vsnprintf(e->message, sizeof e->message, fmt, ap);
+    /* The message may quote the scene (a string, a file name): what is not
+     * printable UTF-8 is shown as \xNN, never copied to the terminal. */
+    char raw[sizeof e->message];
+    vsnprintf(raw, sizeof raw, fmt, ap);
+    text_escape(e->message, sizeof e->message, raw, NULL);
     /* "%g" shows a NaN's sign bit, which means nothing: "nan" either way */
     for (char *m = e->message; (m = strstr(m, "-nan")) != NULL;)
         memmove(m, m + 1, strlen(m + 1) + 1);

@@ -296,6 +296,14 @@ typedef struct Parser {
 #define HST_PRINTF(a, b)
 #endif
 _Noreturn void parse_fail(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
+/* in copied to out (size bytes with the NUL) with every byte that is not
+ * part of printable UTF-8 (controls, DEL, C1, malformed sequences) shown
+ * as \xNN, except the characters in `keep` (NULL: none); cut short at a
+ * whole character. Messages, warnings and #debug text go through it, so
+ * that no byte of a scene reaches the terminal raw. Returns the length. */
+size_t text_escape(char *out, size_t size, const char *in, const char *keep);
+/* A file's name as messages show it (escaped; the scene arena). */
+const char *display_name(Parser *p, const char *path);
 /* Ends the line of #debug text on stderr, if the scene left one open, so
  * that the next message (a warning, the error) starts a line of its own. */
 void debug_end_line(Parser *p);

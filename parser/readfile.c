@@ -156,11 +156,9 @@ int source_read(Parser *p, const char *path, SourcePos at, SourceText *out)
     }
     SourceText text;
     read_whole(p, fd, &st, path, at, &text);
-    /* positions name it as long as the scene lives */
+    /* positions name it (escaped) as long as the scene lives */
     const char *real = tmp_strndup(p, path, strlen(path));
-    text.name = arena_strdup(p->arena, path);
-    if (!text.name)
-        parse_fail_memory(p, at);
+    text.name = display_name(p, path);
     text.dir = dir_of(p, real);
     ReadFile *r = tvec_push(p, &p->read_files);
     r->path = real;

@@ -8,11 +8,13 @@
  * refused at the value. Memory stays within the budget and flat across a
  * loop's passes and a macro's calls; endless loops and recursions stop at
  * the budgets of work and time, naming the position, the loop or macro
- * and the calls that led there. */
+ * and the calls that led there. Bytes of the scene that are not printable
+ * UTF-8 reach messages escaped. */
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "parser.h"
 #include "tap.h"
@@ -403,8 +405,42 @@ static void test_time(void)
     scene_free(s);
 }
 
+static void test_escaped_bytes(void)
+{
+    expect_error("#error \"bad \x1b[31mred\xff\xfe caf\xc3\xa9\"\n", 1, 1,
+                 "#error: bad \\x1b[31mred\\xff\\xfe caf\xc3\xa9", "#error: control and malformed bytes escaped, UTF-8 kept");
+    expect_error("#include \"\x1b]0;title\x07\"\n", 1, 10, "cannot open include file '\\x1b]0;title\\x07'",
+                 "an include name with terminal controls, escaped");
+    expect_error("box { 0, \"\xc0\xaf\xed\xa0\x80\xc2\x85\" }", 1, 10,
+                 "expected a numeric expression, found string \"\\xc0\\xaf\\xed\\xa0\\x80\\xc2\\x85\"",
+                 "overlong, surrogate and C1 sequences escaped");
+    char dir[] = "/tmp/hst_hostile_XXXXXX";
+    if (!mkdtemp(dir)) {
+        tap_ok(0, "temporary folder");
+        return;
+    }
+    char path[256], text[600];
+    snprintf(path, sizeof path, "%s/a\x1b[1mb.inc", dir);
+    FILE *f = fopen(path, "w");
+    if (f) {
+        fputs("#declare X = ;\n", f);
+        fclose(f);
+    }
+    snprintf(text, sizeof text, "#include \"%s\"\n", path);
+    ParseError err;
+    Scene *s = parse_scene_string("t.pov", text, &opts, &err);
+    char want[300];
+    snprintf(want, sizeof want, "%s/a\\x1b[1mb.inc", dir);
+    tap_ok(!s && strcmp(err.file, want) == 0 && err.line == 1 && err.column == 14,
+           "an error inside a file whose name has controls: the name escaped (%s:%d:%d)", err.file, err.line, err.column);
+    scene_free(s);
+    remove(path);
+    rmdir(dir);
+}
+
 int main(void)
 {
+    test_escaped_bytes();
     test_memory();
     test_time();
     test_conversions();
