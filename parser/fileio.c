@@ -181,6 +181,8 @@ void directive_fopen(Parser *p, const Token *hash)
         f->data.size = text.size;
         f->data.line = f->data.col = 1;
     } else {
+        if (p->opts->forbid_writes)
+            parse_fail_io(p, name_at, "writing files is not allowed here: '%s'", name);
         f->out = open_for_writing(p, name, mode.kw == KW_append, name_at);
     }
     Value v = { .kind = VAL_FILE, .file = f };

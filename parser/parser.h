@@ -28,6 +28,9 @@ typedef struct {
     size_t max_memory;
     /* --strict: what hstrace would approximate (ApproxKind) is an error. */
     int strict;
+    /* #fopen ... write/append is an error (for a fuzzer, which must not
+     * write files its inputs name). */
+    int forbid_writes;
 } ParseOptions;
 
 /* A parse error: "FILE:LINE:COLUMN: message". */
