@@ -8,7 +8,9 @@
 # Then paths that are no regular files -- a FIFO (which would wait for a
 # writer for ever), a directory, a device (/dev/zero, read for 4 GB
 # before) -- as the scene, an #include and an #fopen: refused at once, with
-# status 3 and the position of the name.
+# status 3 and the position of the name; the images fuzzing found
+# (tests/hostile/images), which `hstrace compare` refuses with a message;
+# and the budgets' options given something that is no budget.
 #
 # A scene's header says what it must do, in comment lines:
 #   // expect: status N
@@ -92,6 +94,20 @@ for target in $fifo folder.pov /dev/zero; do
     check "#fopen F \"$target\" write: status 3, at the name ($(head -1 "$work/err"))" \
         '[ $status -eq 3 ] && grep -q "^fwrite.pov:1:10: cannot open '"'"'$target'"'"' for writing: " "$work/err"'
 done
+
+# Images the fuzzers of tests/fuzz found hostile (tests/hostile/images),
+# read by `hstrace compare`: an error with a message, status 2, quickly,
+# and no memory asked for beyond what the file holds.
+while IFS='|' read -r image message; do
+    "$hstrace" compare "$scenes/images/$image" "$scenes/images/$image" >/dev/null 2>"$work/err"
+    status=$?
+    check "images/$image: status 2, '$message' ($(head -1 "$work/err"))" \
+        '[ $status -eq 2 ] && grep -q "$message" "$work/err"'
+done <<'IMAGES'
+ppm-huge-header.ppm|PPM pixel data is truncated (2677x55595 pixels need 446483445 bytes, 1 are left)
+png-huge-truncated.png|Not enough image data
+exr-huge-window.exr|truncated EXR file: its 2051x65536 data window needs 4096 chunks, the file holds 460 bytes
+IMAGES
 
 # The budgets' options, given something that is no budget: bad usage.
 printf 'triangle { 0, x, y }\n' >"$work/files/ok.pov"
