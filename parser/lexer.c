@@ -384,11 +384,20 @@ void lex_raw(Parser *p, Token *t)
     lex_token(p, &p->files[p->depth - 1], t);
 }
 
+static void scan_token(Parser *p, SourceFile *f, Token *t);
+
 void lex_token(Parser *p, SourceFile *f, Token *t)
 {
     if (limits_stack_low(p))
         limits_stack_exhausted(p, here(f));
-    limits_count_token(p, f, here(f));
+    size_t from = f->offset;
+    scan_token(p, f, t);
+    limits_count_token(p, f, from, t->pos);
+}
+
+/* The blanks and comments, then the token: t. */
+static void scan_token(Parser *p, SourceFile *f, Token *t)
+{
     skip_space(p, f);
     memset(t, 0, sizeof *t);
     t->kw = -1;

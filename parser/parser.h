@@ -15,9 +15,9 @@ typedef struct {
     /* Budgets of the parse's work (0: the default), each an error naming the
      * position, the loop or macro, and the macro calls that led there:
      * #while/#for iterations in all (10 million), macro calls in all (2
-     * million), tokens read again by loops and macro calls (20 million:
-     * what bounds an endless loop whatever its body, within seconds), and
-     * seconds of parsing (none). */
+     * million), tokens read again by loops and macro calls, a long one
+     * counting one per 16 bytes (20 million: what bounds an endless loop
+     * whatever its body, within seconds), and seconds of parsing (none). */
     long max_loop_iterations;
     long max_macro_calls;
     long max_repeated_tokens;

@@ -349,17 +349,25 @@ static inline int limits_stack_low(const Parser *p)
     return here < p->stack_floor;
 }
 /* The budgets of time and work (limits.c). lex_token counts every token
- * read from text read before and looks at the clock now and then; loops
- * count their iterations, macro calls themselves. */
+ * read from text read before (a long one as several) and looks at the
+ * clock now and then; loops count their iterations, macro calls
+ * themselves. */
 void limits_init_work(Parser *p);
 _Noreturn void limits_work_exhausted(Parser *p, SourcePos pos, const char *what);
 void limits_check_time(Parser *p, SourcePos pos);
 void limits_count_iteration(Parser *p, SourcePos loop);
 void limits_count_call(Parser *p, SourcePos call, const char *macro);
-static inline void limits_count_token(Parser *p, const SourceFile *f, SourcePos pos)
+/* A token was read from offset `from` to f->offset (blanks and comments
+ * before it included). Read again, it counts one, and one more for every 16
+ * bytes it spans, so that long strings and comments in a loop count what
+ * they cost. */
+static inline void limits_count_token(Parser *p, const SourceFile *f, size_t from, SourcePos pos)
 {
-    if (f->offset < f->repeated_to && ++p->repeated_tokens > p->max_repeated_tokens)
-        limits_work_exhausted(p, pos, "tokens");
+    if (from < f->repeated_to) {
+        p->repeated_tokens += 1 + (long)((f->offset - from) >> 4);
+        if (p->repeated_tokens > p->max_repeated_tokens)
+            limits_work_exhausted(p, pos, "tokens");
+    }
     if ((++p->tokens_read & 4095u) == 0 && p->deadline > 0.0)
         limits_check_time(p, pos);
 }
