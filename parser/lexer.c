@@ -69,6 +69,8 @@ void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, 
 void lex_open_source(Parser *p, const SourceText *s, SourcePos at)
 {
     open_text(p, s->name, s->dir, s->text, s->size, at);
+    if (s->again) /* an #include in a loop: its text is read again */
+        p->files[p->depth - 1].repeated_to = SIZE_MAX;
 }
 
 void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)

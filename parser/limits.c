@@ -150,22 +150,24 @@ void limits_init_work(Parser *p)
     p->deadline = o->max_parse_seconds > 0.0 ? now() + o->max_parse_seconds : 0.0;
 }
 
-/* What was running out of budget: the innermost loop of the current
- * file, else the macro whose body is being read. */
+/* What was running out of budget: the innermost loop running (in this
+ * file, an includer, a macro's body or its caller), else the innermost
+ * macro: with no loop, a recursion. */
 static void what_runs(Parser *p, char *buf, size_t n)
 {
-    const SourceFile *f = &p->files[p->depth - 1];
     const Control *c = p->controls.data;
-    for (int i = p->controls.n - 1; i >= f->controls_at_entry; i--)
+    for (int i = p->controls.n - 1; i >= 0; i--)
         if (c[i].kind == CTL_WHILE || c[i].kind == CTL_FOR) {
             snprintf(buf, n, "is the %s at %s:%d endless?", c[i].kind == CTL_WHILE ? "#while" : "#for", c[i].pos.file,
                      c[i].pos.line);
             return;
         }
-    if (f->macro)
-        snprintf(buf, n, "is the recursion of macro '%s' endless?", f->macro->name);
-    else
-        snprintf(buf, n, "is a loop or a recursion endless?");
+    for (int d = p->depth - 1; d >= 0; d--)
+        if (p->files[d].macro) {
+            snprintf(buf, n, "is the recursion of macro '%s' endless?", p->files[d].macro->name);
+            return;
+        }
+    snprintf(buf, n, "is a loop or a recursion endless?");
 }
 
 void limits_work_exhausted(Parser *p, SourcePos pos, const char *what)

@@ -391,6 +391,7 @@ typedef struct {
     size_t size;
     const char *name; /* the path it was read by (scene arena) */
     const char *dir;  /* its folder, searched first by its #includes */
+    int again;        /* read before: its text counts as repeated text */
 } SourceText;
 void source_files_init(Parser *p);
 /* Reads path whole: 1 and *out; 0 when it cannot be opened (errno says

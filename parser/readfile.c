@@ -8,7 +8,8 @@
  * (a zero byte: a binary file), with its line and column; its size counts
  * in the parse's memory budget before it is read. A file read before by
  * the same path, unchanged since (device, inode, size, modification time),
- * is not read again: an #include inside a loop costs its text once. */
+ * is not read again: an #include inside a loop costs its text once in
+ * memory, and its tokens count as text read again. */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdint.h>
@@ -145,6 +146,7 @@ int source_read(Parser *p, const char *path, SourcePos at, SourceText *out)
     if (seen) {
         close(fd);
         *out = seen->text;
+        out->again = 1;
         return 1;
     }
     int flags = fcntl(fd, F_GETFL);
@@ -155,6 +157,7 @@ int source_read(Parser *p, const char *path, SourcePos at, SourceText *out)
         limits_over_budget(p, at);
     }
     SourceText text;
+    memset(&text, 0, sizeof text);
     read_whole(p, fd, &st, path, at, &text);
     /* positions name it (escaped) as long as the scene lives */
     const char *real = tmp_strndup(p, path, strlen(path));
