@@ -85,18 +85,16 @@ static void read_whole(Parser *p, int fd, const struct stat *st, const char *pat
             close(fd);
             parse_fail_memory(p, at);
         }
-        if (n + 1 == cap) { /* full: twice the room, the text so far copied */
-            char *bigger = cap > SIZE_MAX / 4 ? NULL : arena_alloc_uninit(p->temp, cap * 2);
-            if (bigger)
-                memcpy(bigger, buf, n);
-            buf = bigger;
-            cap *= 2;
-            continue;
-        }
+        char probe[4096];
+        char *into = buf + n;
         size_t want = cap - 1 - n;
+        if (want == 0) { /* as big as the size said: is there more? */
+            into = probe;
+            want = sizeof probe;
+        }
         if (want > ((size_t)1 << 20))
             want = (size_t)1 << 20;
-        ssize_t got = read(fd, buf + n, want);
+        ssize_t got = read(fd, into, want);
         if (got < 0 && errno == EINTR)
             continue;
         if (got < 0) {
@@ -106,6 +104,18 @@ static void read_whole(Parser *p, int fd, const struct stat *st, const char *pat
         }
         if (got == 0)
             break;
+        if (into == probe) { /* it grew (a /proc file): twice the room */
+            size_t more = cap * 2 > n + (size_t)got + 1 ? cap * 2 : n + (size_t)got + 1;
+            char *bigger = cap > SIZE_MAX / 4 ? NULL : arena_alloc_uninit(p->temp, more);
+            if (!bigger) {
+                close(fd);
+                parse_fail_memory(p, at);
+            }
+            memcpy(bigger, buf, n);
+            memcpy(bigger + n, probe, (size_t)got);
+            buf = bigger;
+            cap = more;
+        }
         const char *zero = memchr(buf + n, '\0', (size_t)got);
         if (zero) {
             close(fd);

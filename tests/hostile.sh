@@ -95,6 +95,14 @@ for target in $fifo folder.pov /dev/zero; do
         '[ $status -eq 3 ] && grep -q "^fwrite.pov:1:10: cannot open '"'"'$target'"'"' for writing: " "$work/err"'
 done
 
+# A regular file whose size says 0 (a /proc file) is read as it grows.
+if [ -r /proc/self/status ]; then
+    printf '#fopen F "/proc/self/status" read\n#read (F, S)\n' >"$work/files/proc.pov"
+    run proc.pov
+    check "a /proc file, of size 0, is read: its data is no scene data ($(head -1 "$work/err"))" \
+        '[ $status -eq 2 ] && grep -q "^/proc/self/status:1:1: expected a float, a vector or a string" "$work/err"'
+fi
+
 # Images the fuzzers of tests/fuzz found hostile (tests/hostile/images),
 # read by `hstrace compare`: an error with a message, status 2, quickly,
 # and no memory asked for beyond what the file holds.
