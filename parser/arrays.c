@@ -66,13 +66,15 @@ Value parse_array(Parser *p, const Token *kw)
         Token at = *peek(p);
         double n = parse_float_full(p);
         expect_punct(p, ']', "the array size");
-        if (!(n >= 1.0 - 1e-10) || n > (double)MAX_ARRAY_ELEMENTS)
+        int size;
+        if (!int_from_double(n + 1e-10, 1, (int)MAX_ARRAY_ELEMENTS, &size))
             parse_fail(p, at.pos, "invalid array size %g (1 to %ld)", n, MAX_ARRAY_ELEMENTS);
-        int size = (int)(n + 1e-10);
         a->size[a->ndims++] = size;
         a->count *= size;
         if (a->count > MAX_ARRAY_ELEMENTS)
             parse_fail(p, at.pos, "array of more than %ld elements", MAX_ARRAY_ELEMENTS);
+        if ((size_t)a->count > limits_memory_left(p) / sizeof *a->elems) /* named at the size that crosses it */
+            limits_over_budget(p, at.pos);
     }
     a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)a->count);
     if (lex_next_is_punct(p, '{'))
@@ -103,14 +105,15 @@ void read_array_element(Parser *p, Symbol *s)
         Token at = *peek(p);
         double v = parse_float_full(p);
         expect_punct(p, ']', "the array index");
-        if (!(v > -1.0) || v >= (double)a->size[d]) {
+        int i;
+        if (!int_from_double(v, 0, a->size[d] - 1, &i)) {
             if (a->ndims == 1)
                 parse_fail(p, at.pos, "index %g is out of range for '%.*s' (array[%d]: 0 to %d)", v, t.len, t.text,
                            a->size[0], a->size[0] - 1);
             parse_fail(p, at.pos, "index %g is out of range for dimension %d of '%.*s' (0 to %d)", v, d + 1, t.len,
                        t.text, a->size[d] - 1);
         }
-        index = index * a->size[d] + (long)v;
+        index = index * a->size[d] + i;
     }
     p->no_macro_calls = saved;
     /* Let messages show `A[i][j]` when it was written on one stretch. */
@@ -153,10 +156,9 @@ double array_function(Parser *p, const Token *t)
         v = a->ndims;
     } else {
         expect_punct(p, ',', "the array");
-        double d = parse_float_full(p);
-        int i = (int)d - 1;
+        int d;
         /* POV-Ray warns and answers 0 for a dimension the array lacks */
-        v = (i >= 0 && i < a->ndims) ? a->size[i] : 0.0;
+        v = int_from_double(parse_float_full(p), 1, a->ndims, &d) ? a->size[d - 1] : 0.0;
     }
     expect_punct(p, ')', "the arguments");
     return v;

@@ -6,6 +6,7 @@
  * back there at #end. Skipped text (a false #if branch, a finished loop, a
  * macro body) is tokenised but not interpreted, counting nested directives to
  * find the matching #else/#end. */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -27,7 +28,9 @@ void debug_end_line(Parser *p)
 void parse_warning(Parser *p, SourcePos pos, const char *msg)
 {
     debug_end_line(p);
-    fprintf(stderr, "%s:%d:%d: warning: %s\n", pos.file, pos.line, pos.column, msg);
+    char shown[1024];
+    text_escape(shown, sizeof shown, msg, NULL);
+    fprintf(stderr, "%s:%d:%d: warning: %s\n", pos.file, pos.line, pos.column, shown);
 }
 
 static void count_braces(Parser *p, const Token *t, int dir)
@@ -258,11 +261,13 @@ static Control *top_control(Parser *p)
     return (Control *)p->controls.data + p->controls.n - 1;
 }
 
-static void count_iteration(Parser *p, SourcePos pos)
+/* The loop goes back to m: the text from there to here is read again. */
+static void loop_back(Parser *p, LexMark m)
 {
-    long limit = p->opts->max_loop_iterations > 0 ? p->opts->max_loop_iterations : MAX_LOOP_ITERATIONS;
-    if (++p->loop_iterations > limit)
-        parse_fail(p, pos, "more than %ld loop iterations: is this loop endless?", limit);
+    SourceFile *f = &p->files[m.depth - 1];
+    if (f->offset > f->repeated_to)
+        f->repeated_to = f->offset;
+    lex_seek(p, m);
 }
 
 /* `( expr )`, as POV-Ray requires after #if/#while: the closing parenthesis
@@ -321,11 +326,11 @@ static void directive_end(Parser *p, const Token *hash)
         p->controls.n--;
         return;
     }
-    count_iteration(p, c->pos);
+    limits_count_iteration(p, c->pos);
     if (c->kind == CTL_WHILE) {
         LexMark m = c->loop;
         SourcePos at = c->pos;
-        lex_seek(p, m);
+        loop_back(p, m);
         if (!truthy(parse_condition(p, "#while"))) {
             p->controls.n--;
             skip_text(p, SKIP_TO_END, at, "#while");
@@ -339,7 +344,7 @@ static void directive_end(Parser *p, const Token *hash)
     double v = s->value.v[0] + c->for_step;
     s->value.v[0] = v;
     if (c->for_step > 0 ? v <= c->for_end : v >= c->for_end)
-        lex_seek(p, c->loop);
+        loop_back(p, c->loop);
     else
         p->controls.n--;
 }
@@ -375,7 +380,7 @@ static void directive_for(Parser *p, const Token *hash)
     }
     Control *c = push_control(p, CTL_FOR, hash->pos);
     c->loop = lex_mark(p);
-    c->for_var = tmp_strndup(p, var.text, (size_t)var.len);
+    c->for_var = intern_name(p, var.text, var.len);
     c->for_end = end;
     c->for_step = step;
 }
@@ -466,19 +471,17 @@ static void directive_include(Parser *p, const Token *hash)
     Token *t = peek(p);
     SourcePos at = t->pos;
     char *name = parse_string(p);
+    SourceText text;
     if (name[0] == '/') {
-        if (!lex_open_file(p, name, name, at))
-            parse_fail_io(p, at, "cannot open include file '%s'", name);
+        if (!source_read(p, name, at, &text))
+            parse_fail_io(p, at, "cannot open include file '%s': %s", name, strerror(errno));
+        lex_open_source(p, &text, at);
     } else {
         const char *dirs[130];
         int nd = lex_search_dirs(p, dirs, 128);
         for (int i = 0; i < nd; i++) {
-            const char *path;
-            FILE *fp = lex_open_in_dir(p, dirs[i], name, &path);
-            if (fp) {
-                size_t size;
-                const char *buf = lex_read_file(p, fp, path, at, &size);
-                lex_open_buffer(p, path, buf, size, at);
+            if (source_read_in(p, dirs[i], name, at, &text)) {
+                lex_open_source(p, &text, at);
                 symbols_push_scope(p);
                 return;
             }
@@ -574,7 +577,7 @@ static void handle_directive(Parser *p, const Token *hash)
     case KW_while: {
         LexMark m = lex_mark(p);
         if (truthy(parse_condition(p, "#while"))) {
-            count_iteration(p, hash->pos);
+            limits_count_iteration(p, hash->pos);
             Control *c = push_control(p, CTL_WHILE, hash->pos);
             c->loop = m;
         } else {
@@ -597,9 +600,13 @@ static void handle_directive(Parser *p, const Token *hash)
         return;
     }
     case KW_debug: {
-        /* POV-Ray's debug stream: the text as it is, newlines from "\n" */
+        /* POV-Ray's debug stream: the text as it is, newlines from "\n"
+         * (and tabs), the other controls escaped as in messages */
         char *msg = parse_string(p);
-        fputs(msg, stderr);
+        size_t n = strlen(msg) * 4 + 1;
+        char *shown = tmp_alloc(p, n);
+        text_escape(shown, n, msg, "\n\t");
+        fputs(shown, stderr);
         fflush(stderr);
         if (*msg)
             p->debug_line_open = msg[strlen(msg) - 1] != '\n';

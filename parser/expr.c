@@ -8,6 +8,7 @@
  *   ?:   & |   < <= = != >= >   + -   * /   unary - + !   factors
  * A plain float or vector (parse_float, parse_vector) stops at + - as POV-Ray
  * does; comparisons need parentheses there. */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -161,15 +162,50 @@ void parse_express(Parser *p, double e[5], int *terms)
     nesting_leave(p);
 }
 
-double parse_float(Parser *p)
+/* A float where an expression's part is wanted (a vector's component):
+ * any value, infinities and NaN included, as inside any expression. */
+static double float_term(Parser *p, Token *first)
 {
-    Token first = *peek(p);
+    *first = *peek(p);
     double e[5] = { 0 };
     int terms = 1;
     parse_rel_factor(p, e, &terms);
     if (terms > 1)
-        parse_fail(p, first.pos, "float expected but vector or colour expression found");
+        parse_fail(p, first->pos, "float expected but vector or colour expression found");
     return e[0];
+}
+
+/* What a scene item is given (a coordinate, a size, a colour, a count)
+ * must be a number: POV-Ray takes 1/0 (with a warning) and 1e309 as
+ * infinities and goes on with them, but geometry, cameras and colours made
+ * of them would render garbage, so hstrace stops at the value. Expressions
+ * inside (and #declare) stay free to hold any value. */
+static void finite_or_fail(Parser *p, SourcePos at, const double *v, int n, const char *what)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i])) {
+            char shown[200];
+            int used = 0;
+            for (int k = 0; k < n && used < (int)sizeof shown - 40; k++)
+                used += snprintf(shown + used, sizeof shown - (size_t)used, "%s%g", k ? ", " : "", v[k]);
+            parse_fail(p, at, "expected a finite %s, found %s%s%s", what, n == 1 ? "" : "<", shown, n == 1 ? "" : ">");
+        }
+}
+
+double parse_float(Parser *p)
+{
+    Token first;
+    double v = float_term(p, &first);
+    finite_or_fail(p, first.pos, &v, 1, "number");
+    return v;
+}
+
+int checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *what)
+{
+    int n;
+    if (!int_from_double(v, lo, hi, &n))
+        parse_fail(p, at, "%s must be an integer from %d to %d, not %g", what, lo, hi, v);
+    return n;
 }
 
 /* A signed number read raw, or 0. */
@@ -207,7 +243,7 @@ static int plain_vector(Parser *p, Vec3 *out)
             goto no;
     }
     for (int i = 0; i < 3; i++) {
-        if (!raw_number(p, &c[i]))
+        if (!raw_number(p, &c[i]) || !isfinite(c[i])) /* 1e309: the general path reports it */
             goto no;
         lex_raw(p, &t);
         if (!is_punct(&t, i < 2 ? ',' : '>'))
@@ -235,6 +271,7 @@ Vec3 parse_vector(Parser *p)
     parse_rel_factor(p, e, &terms);
     if (terms > 3)
         parse_fail(p, first.pos, "vector expected but colour expression found");
+    finite_or_fail(p, first.pos, e, 3, "vector");
     return v3(e[0], e[1], e[2]);
 }
 
@@ -447,7 +484,8 @@ static void vector_literal(Parser *p, double e[5], int *terms)
     int n = 0;
     fill(e, 5, 0.0);
     for (;;) {
-        e[n++] = parse_float(p);
+        Token first;
+        e[n++] = float_term(p, &first);
         parse_comma(p);
         Token *t = next(p);
         if (is_punct(t, '>')) {
@@ -583,12 +621,26 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
     case KW_exp: val = exp(float_param(p)); break;
     case KW_int: {
         double f = float_param(p);
-        val = (f > -2147483648.0 && f < 2147483648.0) ? (double)(int)f : trunc(f);
+        int i;
+        val = int_from_double(f, INT_MIN, INT_MAX, &i) ? (double)i : trunc(f);
         break;
     }
-    case KW_ln: val = log(float_param(p)); break;
-    case KW_log: val = log10(float_param(p)); break;
-    case KW_sqrt: val = sqrt(float_param(p)); break;
+    /* POV-Ray refuses these outside their domain (its words); with a
+     * placeholder for a deferred unsupported value, the answer is moot. */
+    case KW_ln:
+    case KW_log:
+    case KW_sqrt: {
+        a = float_param(p);
+        int moot = p->declaring && p->deferred_what;
+        if (t->kw == KW_sqrt ? a < 0.0 : a <= 0.0) {
+            if (!moot)
+                parse_fail(p, t->pos, "%s of negative number %f", keyword_name(t->kw), a);
+            val = NAN;
+        } else {
+            val = t->kw == KW_ln ? log(a) : t->kw == KW_log ? log10(a) : sqrt(a);
+        }
+        break;
+    }
     case KW_pow: float_params2(p, &a, &b); val = pow(a, b); break;
     case KW_mod: float_params2(p, &a, &b); val = b == 0.0 ? HUGE_VAL : fmod(a, b); break;
     case KW_div: float_params2(p, &a, &b); val = b == 0.0 ? HUGE_VAL : trunc(a / b); break;
@@ -596,7 +648,7 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
     case KW_bitwise_or:
     case KW_bitwise_xor: {
         float_params2(p, &a, &b);
-        long ia = (long)fmax(-2e9, fmin(2e9, a)), ib = (long)fmax(-2e9, fmin(2e9, b));
+        long ia = int_clamped(a, -2000000000, 2000000000), ib = int_clamped(b, -2000000000, 2000000000);
         val = (double)(t->kw == KW_bitwise_and ? (ia & ib) : t->kw == KW_bitwise_or ? (ia | ib) : (ia ^ ib));
         break;
     }
@@ -659,8 +711,7 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
         double v = float_param(p);
         if (p->rand_streams.n >= 1000000)
             parse_fail(p, t->pos, "more than a million random streams (seed)");
-        long long iv = (long long)fmax(-2147483648.0, fmin(2147483647.0, v));
-        *(unsigned *)tvec_push(p, &p->rand_streams) = (unsigned)(int)iv;
+        *(unsigned *)tvec_push(p, &p->rand_streams) = (unsigned)int_clamped(v, INT_MIN, INT_MAX);
         val = p->rand_streams.n - 1;
         break;
     }
@@ -669,11 +720,12 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
         Token at = *peek(p);
         double v = parse_float_full(p);
         expect_punct(p, ')', "the stream");
-        if (!(v >= 0.0) || v >= (double)p->rand_streams.n)
+        int stream;
+        if (!(v >= 0.0) || !int_from_double(v, 0, p->rand_streams.n - 1, &stream))
             parse_fail(p, at.pos, "rand needs a stream made by seed(), not %g", v);
         /* POV-Ray's POV_rand(): a 32-bit linear congruential generator,
          * so that scenes draw the same numbers as in POV-Ray. */
-        unsigned *state = (unsigned *)p->rand_streams.data + (int)v;
+        unsigned *state = (unsigned *)p->rand_streams.data + stream;
         *state = *state * 1812433253u + 12345u;
         val = (double)*state / 4294967295.0;
         break;
@@ -816,6 +868,7 @@ void parse_colour(Parser *p, Colour *out, int expect_ft)
     double c[5] = { 0 };
     int started = 0;
     Token *t = next(p);
+    SourcePos start = t->pos;
     if (!is_kw(t, KW_color) && !is_kw(t, KW_colour))
         unget(p);
     for (;;) {
@@ -885,6 +938,7 @@ void parse_colour(Parser *p, Colour *out, int expect_ft)
     }
     if (!started)
         fail_expected(p, peek(p), "a colour");
+    finite_or_fail(p, start, c, expect_ft ? 5 : 3, "colour");
     out->r = c[0];
     out->g = c[1];
     out->b = c[2];
@@ -940,9 +994,9 @@ char *parse_string(Parser *p)
         expect_punct(p, '(', "'str'");
         double v = parse_float_full(p);
         expect_punct(p, ',', "the value");
-        int w = (int)fmax(-100, fmin(100, parse_float_full(p)));
+        int w = int_clamped(parse_float_full(p), -100, 100);
         expect_punct(p, ',', "the width");
-        int prec = (int)fmax(-1, fmin(40, parse_float_full(p)));
+        int prec = int_clamped(parse_float_full(p), -1, 40);
         expect_punct(p, ')', "the precision");
         if (prec < 0)
             prec = 6;
@@ -954,7 +1008,7 @@ char *parse_string(Parser *p)
     }
     case KW_vstr: {
         expect_punct(p, '(', "'vstr'");
-        int n = (int)fmax(2, fmin(5, parse_float_full(p)));
+        int n = int_clamped(parse_float_full(p), 2, 5);
         expect_punct(p, ',', "the component count");
         double e[5] = { 0 };
         int terms = n;
@@ -962,9 +1016,9 @@ char *parse_string(Parser *p)
         expect_punct(p, ',', "the vector");
         char *sep = string_param(p);
         expect_punct(p, ',', "the separator");
-        int w = (int)fmax(-100, fmin(100, parse_float_full(p)));
+        int w = int_clamped(parse_float_full(p), -100, 100);
         expect_punct(p, ',', "the width");
-        int prec = (int)fmax(-1, fmin(40, parse_float_full(p)));
+        int prec = int_clamped(parse_float_full(p), -1, 40);
         expect_punct(p, ')', "the precision");
         if (prec < 0)
             prec = 6;
@@ -983,7 +1037,15 @@ char *parse_string(Parser *p)
         return tmp_strndup(p, buf, strlen(buf));
     }
     case KW_chr: {
-        int c = (int)float_param(p);
+        /* POV-Ray: "Value %d cannot be used in chr(...)" outside 0..65535;
+         * hstrace's strings are bytes, so codes beyond a byte become '?'. */
+        expect_punct(p, '(', "the function name");
+        Token at = *peek(p);
+        double v = parse_float_full(p);
+        expect_punct(p, ')', "the argument");
+        int c;
+        if (!int_from_double(v, 0, 65535, &c))
+            parse_fail(p, at.pos, "chr(%g): a character code is from 0 to 65535", v);
         buf[0] = (char)(c > 0 && c < 256 ? c : '?');
         return tmp_strndup(p, buf, 1);
     }
@@ -995,10 +1057,13 @@ char *parse_string(Parser *p)
         expect_punct(p, ',', "the start");
         double len = parse_float_full(p);
         expect_punct(p, ')', "the length");
+        /* POV-Ray truncates both to integers, then checks the range */
         size_t n = strlen(s);
-        if (start < 1 || len < 0 || start - 1 + len > (double)n)
+        int from, count;
+        if (!int_from_double(start, 1, INT_MAX, &from) || !int_from_double(len, 0, INT_MAX, &count) ||
+            (size_t)from - 1 + (size_t)count > n)
             parse_fail(p, t.pos, "'substr' range outside the string");
-        return tmp_strndup(p, s + (size_t)start - 1, (size_t)len);
+        return tmp_strndup(p, s + from - 1, (size_t)count);
     }
     case KW_strupr:
     case KW_strlwr: {

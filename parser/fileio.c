@@ -11,33 +11,52 @@
  * `#while (defined(F)) #read (F, V) ... #end` reads every value. Numbers are
  * written with C's "%g" (six significant digits), vectors as "<x,y,z> ". */
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "parser_internal.h"
 
 typedef struct UserFile {
-    const char *name;  /* as written in #fopen, for messages (scene arena) */
+    const char *name;  /* as written in #fopen, for messages (interned) */
     SourcePos opened_at;
     FILE *out;         /* write / append, until closed */
     int reading;
     SourceFile data; /* reading: the data, tokenised by the scene lexer */
+    struct UserFile *next_free; /* closed and forgotten: the next #fopen's */
 } UserFile;
 
 /* ---- files --------------------------------------------------------------- */
 
+/* A record for a new #fopen: one whose file was closed and whose
+ * identifier is gone (so that #fopen ... #fclose in a loop costs one), or
+ * a new one. */
 static UserFile *new_user_file(Parser *p, const char *name, SourcePos at)
 {
-    UserFile *f = tmp_alloc(p, sizeof *f);
+    UserFile *f = p->free_user_files;
+    if (f) {
+        p->free_user_files = f->next_free;
+    } else {
+        f = tmp_alloc(p, sizeof *f);
+        *(UserFile **)tvec_push(p, &p->user_files) = f;
+    }
     memset(f, 0, sizeof *f);
-    f->name = arena_strdup(p->arena, name);
-    if (!f->name)
-        parse_fail(p, at, "out of memory");
+    char shown[512];
+    text_escape(shown, sizeof shown, name, NULL);
+    f->name = intern_name(p, shown, (int)strlen(shown));
     f->opened_at = at;
-    *(UserFile **)tvec_push(p, &p->user_files) = f;
     return f;
+}
+
+/* f is closed and its identifier undefined: nothing refers to it. */
+static void forget_user_file(Parser *p, UserFile *f)
+{
+    f->next_free = p->free_user_files;
+    p->free_user_files = f;
 }
 
 /* Closes f's output; a write error is reported at `at` when report is set. */
@@ -61,22 +80,48 @@ void user_files_close_all(Parser *p, int report)
         close_output(p, files[i], files[i]->opened_at, report);
 }
 
-/* The whole of an open stream into the temporary arena (closes fp). */
 /* POV-Ray looks for a file to read in the current folder, then in its
  * library paths; hstrace also looks in the scene's folder first among the
  * latter, as #include does. */
-static FILE *open_for_reading(Parser *p, const char *name)
+static int read_data(Parser *p, const char *name, SourcePos at, SourceText *out)
 {
-    FILE *fp = fopen(name, "rb");
-    if (fp || name[0] == '/')
-        return fp;
+    if (source_read(p, name, at, out))
+        return 1;
+    if (name[0] == '/')
+        return 0;
+    int e = errno;
     const char *dirs[130];
     int nd = lex_search_dirs(p, dirs, 128);
-    for (int i = 0; i < nd && !fp; i++) {
-        const char *path;
-        fp = lex_open_in_dir(p, dirs[i], name, &path);
+    for (int i = 0; i < nd; i++)
+        if (source_read_in(p, dirs[i], name, at, out))
+            return 1;
+    errno = e;
+    return 0;
+}
+
+/* Written files are regular files too: opened without blocking (a FIFO
+ * with no reader fails at once instead of waiting), then checked. */
+static FILE *open_for_writing(Parser *p, const char *name, int append, SourcePos at)
+{
+    const char *doing = append ? "appending" : "writing";
+    int fd = open(name, O_WRONLY | O_CREAT | O_NONBLOCK | O_CLOEXEC | (append ? O_APPEND : O_TRUNC), 0666);
+    if (fd < 0)
+        parse_fail_io(p, at, "cannot open '%s' for %s: %s", name, doing, strerror(errno));
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        parse_fail_io(p, at, "cannot open '%s' for %s: it is not a regular file", name, doing);
     }
-    return fp;
+    int flags = fcntl(fd, F_GETFL);
+    if (flags >= 0)
+        (void)fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    FILE *out = fdopen(fd, append ? "a" : "w");
+    if (!out) {
+        int e = errno;
+        close(fd);
+        parse_fail_io(p, at, "cannot open '%s' for %s: %s", name, doing, strerror(e));
+    }
+    return out;
 }
 
 /* The file a token names, checked to be open in the wanted mode. */
@@ -127,18 +172,18 @@ void directive_fopen(Parser *p, const Token *hash)
         close_output(p, old->value.file, id.pos, 1);
     UserFile *f = new_user_file(p, name, name_at);
     if (mode.kw == KW_read) {
-        FILE *fp = open_for_reading(p, name);
-        if (!fp)
+        SourceText text;
+        if (!read_data(p, name, name_at, &text))
             parse_fail_io(p, name_at, "cannot open '%s' for reading: %s", name, strerror(errno));
         f->reading = 1;
         f->data.name = f->name;
-        f->data.buf = lex_read_file(p, fp, f->name, name_at, &f->data.size);
+        f->data.buf = text.text;
+        f->data.size = text.size;
         f->data.line = f->data.col = 1;
     } else {
-        f->out = fopen(name, mode.kw == KW_write ? "w" : "a");
-        if (!f->out)
-            parse_fail_io(p, name_at, "cannot open '%s' for %s: %s", name,
-                          mode.kw == KW_write ? "writing" : "appending", strerror(errno));
+        if (p->opts->forbid_writes)
+            parse_fail_io(p, name_at, "writing files is not allowed here: '%s'", name);
+        f->out = open_for_writing(p, name, mode.kw == KW_append, name_at);
     }
     Value v = { .kind = VAL_FILE, .file = f };
     symbol_define_global(p, id.text, id.len, &v);
@@ -157,8 +202,11 @@ void directive_fclose(Parser *p)
     Symbol *s = id.elem ? NULL : symbol_find(p, id.text, id.len);
     if (!s || s->value.kind != VAL_FILE)
         return;
-    close_output(p, s->value.file, id.pos, 1);
+    UserFile *f = s->value.file;
+    close_output(p, f, id.pos, 1);
     symbol_undef(p, id.text, id.len);
+    if (!symbol_find(p, id.text, id.len))
+        forget_user_file(p, f);
 }
 
 /* ---- reading data ---------------------------------------------------------- */
@@ -301,8 +349,11 @@ void directive_read(Parser *p)
         if (!is_punct(t, ','))
             unget(p);
     }
-    if (ended) /* POV-Ray closes the file and forgets its identifier */
+    if (ended) { /* POV-Ray closes the file and forgets its identifier */
         symbol_undef(p, file_tok.text, file_tok.len);
+        if (!symbol_find(p, file_tok.text, file_tok.len))
+            forget_user_file(p, f);
+    }
 }
 
 /* ---- writing ------------------------------------------------------------- */
@@ -333,11 +384,14 @@ static void write_binary(Parser *p, UserFile *f, long lo, long hi, int bytes, in
             return;
         if (!token_starts_expression(p, t))
             fail_expected(p, next(p), "a number after the binary type in '#write'");
+        Token at = *peek(p);
         double e[5] = { 0 };
         int terms = 1;
         parse_express(p, e, &terms);
         for (int i = 0; i < terms; i++) {
-            long val = e[i] <= (double)lo ? lo : e[i] >= (double)hi ? hi : (long)floor(e[i] + 0.5);
+            if (isnan(e[i]))
+                parse_fail(p, at.pos, "#write cannot write nan as a binary integer");
+            long val = int_clamped(floor(e[i] + 0.5), (int)lo, (int)hi);
             unsigned long u = (unsigned long)val;
             for (int j = 0; j < bytes; j++) {
                 int shift = (big_endian ? bytes - 1 - j : j) * 8;

@@ -37,7 +37,8 @@ static void reserve_frame(Parser *p)
     p->files_cap = cap;
 }
 
-void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at)
+/* A frame for a file's text; name and dir are the caller's, kept. */
+static void open_text(Parser *p, const char *name, const char *dir, const char *buf, size_t size, SourcePos at)
 {
     if (p->include_depth >= MAX_INCLUDE_DEPTH || p->depth >= MAX_SOURCE_FRAMES) {
         /* Name the cycle when there is one: that is the usual cause. */
@@ -51,15 +52,25 @@ void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, 
     SourceFile *f = &p->files[p->depth++];
     p->include_depth++;
     memset(f, 0, sizeof *f);
-    f->name = arena_strdup(p->arena, name);
-    if (!f->name)
-        parse_fail(p, at, "out of memory");
-    f->dir = dir_of(p, name);
+    f->name = name;
+    f->dir = dir;
     f->buf = buf;
     f->size = size;
     f->line = 1;
     f->col = 1;
     f->controls_at_entry = p->controls.n;
+}
+
+void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at)
+{
+    open_text(p, display_name(p, name), dir_of(p, name), buf, size, at);
+}
+
+void lex_open_source(Parser *p, const SourceText *s, SourcePos at)
+{
+    open_text(p, s->name, s->dir, s->text, s->size, at);
+    if (s->again) /* an #include in a loop: its text is read again */
+        p->files[p->depth - 1].repeated_to = SIZE_MAX;
 }
 
 void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)
@@ -81,65 +92,7 @@ void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)
     f->controls_at_entry = p->controls.n;
     f->macro = m;
     f->called_at = called_at;
-}
-
-/* The file is read straight into the temporary arena (no copy, and an
- * error longjmp cannot leak it): its size is known for a regular file, and
- * pipes grow a malloc'd buffer. */
-const char *lex_read_file(Parser *p, FILE *fp, const char *shown_name, SourcePos at, size_t *size_out)
-{
-    struct stat st;
-    if (fstat(fileno(fp), &st) == 0 && S_ISREG(st.st_mode) && (uintmax_t)st.st_size < ((uintmax_t)1 << 40)) {
-        size_t size = (size_t)st.st_size;
-        char *kept = arena_alloc_uninit(p->temp, size + 1);
-        if (!kept) {
-            fclose(fp);
-            parse_fail(p, at, "out of memory reading '%s'", shown_name);
-        }
-        size_t n = fread(kept, 1, size, fp);
-        int failed = ferror(fp);
-        fclose(fp);
-        if (failed)
-            parse_fail_io(p, at, "cannot read '%s'", shown_name);
-        kept[n] = '\0';
-        *size_out = n;
-        return kept;
-    }
-    size_t cap = 65536, n = 0;
-    char *buf = malloc(cap);
-    for (;;) {
-        if (!buf) {
-            fclose(fp);
-            parse_fail(p, at, "out of memory reading '%s'", shown_name);
-        }
-        n += fread(buf + n, 1, cap - n, fp);
-        if (n < cap)
-            break;
-        char *bigger = cap > ((size_t)1 << 31) ? NULL : realloc(buf, cap * 2);
-        if (!bigger) {
-            free(buf);
-            buf = NULL;
-            continue;
-        }
-        buf = bigger;
-        cap *= 2;
-    }
-    int failed = ferror(fp);
-    fclose(fp);
-    if (failed) {
-        free(buf);
-        parse_fail_io(p, at, "cannot read '%s'", shown_name);
-    }
-    char *kept = arena_alloc_uninit(p->temp, n + 1);
-    if (!kept) {
-        free(buf);
-        parse_fail(p, at, "out of memory reading '%s'", shown_name);
-    }
-    memcpy(kept, buf, n);
-    kept[n] = '\0';
-    free(buf);
-    *size_out = n;
-    return kept;
+    f->repeated_to = SIZE_MAX; /* a body is read again at every call */
 }
 
 int lex_search_dirs(Parser *p, const char **dirs, int cap)
@@ -150,31 +103,6 @@ int lex_search_dirs(Parser *p, const char **dirs, int cap)
         if (p->opts->include_dirs[i])
             dirs[nd++] = p->opts->include_dirs[i];
     return nd;
-}
-
-FILE *lex_open_in_dir(Parser *p, const char *dir, const char *name, const char **path)
-{
-    size_t n = strlen(dir) + strlen(name) + 2;
-    char *joined = tmp_alloc(p, n);
-    if (strcmp(dir, ".") == 0)
-        snprintf(joined, n, "%s", name);
-    else
-        snprintf(joined, n, "%s%s%s", dir, dir[strlen(dir) - 1] == '/' ? "" : "/", name);
-    *path = joined;
-    return fopen(joined, "rb");
-}
-
-/* Returns 0 when the file cannot be opened (the caller words the message);
- * read errors after opening are reported here. */
-int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return 0;
-    size_t size;
-    const char *buf = lex_read_file(p, fp, shown_name, at, &size);
-    lex_open_buffer(p, shown_name, buf, size, at);
-    return 1;
 }
 
 LexMark lex_mark(Parser *p)
@@ -379,8 +307,38 @@ static void lex_number(Parser *p, SourceFile *f, Token *t)
     t->number = strtod(tmp, NULL);
 }
 
+/* The value of the string literal whose quote stands at `at` in its
+ * file's buffer, if it was read before (the buffers live as long as the
+ * parse, and string values are never changed in place). */
+static char **literal_slot(Parser *p, const char *at)
+{
+    if ((p->nliterals + 1) * 2 > p->cap_literals) {
+        size_t cap = p->cap_literals ? p->cap_literals * 2 : 256;
+        struct Interned *t = tmp_alloc(p, sizeof *t * cap);
+        for (size_t i = 0; i < p->cap_literals; i++) {
+            if (!p->literals[i].key)
+                continue;
+            size_t j = ((uintptr_t)p->literals[i].key * 11400714819323198485ull >> 20) & (cap - 1);
+            while (t[j].key)
+                j = (j + 1) & (cap - 1);
+            t[j] = p->literals[i];
+        }
+        p->literals = t;
+        p->cap_literals = cap;
+    }
+    size_t j = ((uintptr_t)at * 11400714819323198485ull >> 20) & (p->cap_literals - 1);
+    while (p->literals[j].key && p->literals[j].key != at)
+        j = (j + 1) & (p->cap_literals - 1);
+    if (!p->literals[j].key) {
+        p->literals[j].key = at;
+        p->nliterals++;
+    }
+    return &p->literals[j].value;
+}
+
 static void lex_string(Parser *p, SourceFile *f, Token *t)
 {
+    char **cached = literal_slot(p, f->buf + f->offset);
     advance(f); /* the opening quote */
     size_t start = f->offset;
     size_t n = 0;
@@ -394,6 +352,12 @@ static void lex_string(Parser *p, SourceFile *f, Token *t)
         parse_fail(p, t->pos, "string starting here has no closing '\"'");
     size_t end = f->offset;
     advance(f);
+    t->type = TK_STRING;
+    t->len = (int)(f->offset - start + 1);
+    if (*cached) { /* read again: a loop's next pass, a macro's next call */
+        t->string = *cached;
+        return;
+    }
     char *s = tmp_alloc(p, n + 1), *o = s;
     for (size_t i = start; i < end; i++) {
         char c = f->buf[i];
@@ -413,9 +377,8 @@ static void lex_string(Parser *p, SourceFile *f, Token *t)
         *o++ = c;
     }
     *o = '\0';
-    t->type = TK_STRING;
     t->string = s;
-    t->len = (int)(f->offset - start + 1);
+    *cached = s;
 }
 
 void lex_raw(Parser *p, Token *t)
@@ -423,7 +386,19 @@ void lex_raw(Parser *p, Token *t)
     lex_token(p, &p->files[p->depth - 1], t);
 }
 
+static void scan_token(Parser *p, SourceFile *f, Token *t);
+
 void lex_token(Parser *p, SourceFile *f, Token *t)
+{
+    if (limits_stack_low(p))
+        limits_stack_exhausted(p, here(f));
+    size_t from = f->offset;
+    scan_token(p, f, t);
+    limits_count_token(p, f, from, t->pos);
+}
+
+/* The blanks and comments, then the token: t. */
+static void scan_token(Parser *p, SourceFile *f, Token *t)
 {
     skip_space(p, f);
     memset(t, 0, sizeof *t);

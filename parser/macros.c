@@ -125,8 +125,17 @@ void macro_invoke(Parser *p, const Token *call, const Macro *m)
                  m->declared_at.line);
         fail_expected(p, &open, what);
     }
-    Value *args = m->nparams ? tmp_alloc(p, sizeof *args * (size_t)m->nparams) : NULL;
-    Symbol **refs = m->nparams ? tmp_alloc(p, sizeof *refs * (size_t)m->nparams) : NULL;
+    /* The arguments go on a stack that calls inside them use above this
+     * call's slots (indices: the stack may move as it grows), and that is
+     * back at `base` once they are bound, so that calls in a loop reuse
+     * the same memory. */
+    int base = p->arg_values.n;
+    for (int i = 0; i < m->nparams; i++) {
+        (void)tvec_push(p, &p->arg_values);
+        (void)tvec_push(p, &p->arg_refs);
+    }
+#define ARG(i) (((Value *)p->arg_values.data)[base + (i)])
+#define REF(i) (((Symbol **)p->arg_refs.data)[base + (i)])
     /* All arguments are read before the macro's level opens, so that they
      * mean what they mean at the call (recursion depends on it). */
     for (int i = 0; i < m->nparams; i++) {
@@ -138,9 +147,12 @@ void macro_invoke(Parser *p, const Token *call, const Macro *m)
             if (!is_punct(t, ','))
                 unget(p); /* POV-Ray lets a ',' be missing */
         }
-        refs[i] = reference_argument(p, m, i);
-        if (!refs[i])
-            args[i] = parse_value_lenient(p);
+        Symbol *ref = reference_argument(p, m, i);
+        REF(i) = ref;
+        if (!ref) {
+            Value v = parse_value_lenient(p);
+            ARG(i) = v;
+        }
     }
     Token *close = next(p);
     if (!is_punct(close, ')')) {
@@ -149,18 +161,22 @@ void macro_invoke(Parser *p, const Token *call, const Macro *m)
                        m->nparams == 1 ? "" : "s");
         fail_expected(p, close, "')' after the macro arguments");
     }
+    limits_count_call(p, call->pos, m->name);
     lex_open_macro(p, m, call->pos);
     symbols_push_scope(p);
     for (int i = 0; i < m->nparams; i++) {
         int len = (int)strlen(m->params[i]);
-        if (refs[i]) {
+        if (REF(i)) {
             Symbol *s = symbol_add_local(p, m->params[i], len, NULL);
-            s->alias = refs[i];
-            s->alias_serial = refs[i]->serial;
+            s->alias = REF(i);
+            s->alias_serial = REF(i)->serial;
         } else {
-            symbol_add_local(p, m->params[i], len, &args[i]);
+            symbol_add_local(p, m->params[i], len, &ARG(i));
         }
     }
+    p->arg_values.n = p->arg_refs.n = base;
+#undef ARG
+#undef REF
 }
 
 /* The body's #end: back to the text after the call. */

@@ -2,6 +2,7 @@
  * number is the distance (POV-Ray warns that `distance` should be written);
  * transforms turn only the up vector, and a translate is ignored with a
  * warning, as in POV-Ray. */
+#include <limits.h>
 #include <math.h>
 
 #include "parser_internal.h"
@@ -48,8 +49,9 @@ void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_distance: fog->distance = parse_float(p); continue;
         case KW_fog_type: {
-            double type = parse_float(p);
-            fog->type = (int)type;
+            /* POV-Ray warns of a type it does not know and goes on */
+            if (!int_from_double(parse_float(p), INT_MIN, INT_MAX, &fog->type))
+                fog->type = 0;
             if (fog->type < 1 || fog->type > 2) {
                 parse_warning(p, at.pos, "unknown fog type");
             }
@@ -65,8 +67,7 @@ void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
             continue;
         case KW_octaves: {
             begin_turbulence(fog);
-            double octaves = parse_float(p);
-            fog->octaves = octaves < 1.0 ? 1 : octaves > 10.0 ? 10 : (int)octaves;
+            fog->octaves = int_clamped(parse_float(p), 1, 10); /* POV-Ray's limits */
             continue;
         }
         case KW_omega: begin_turbulence(fog); fog->omega = (float)parse_float(p); continue;

@@ -9,6 +9,9 @@
 #include "parser_internal.h"
 
 static const double POLY_EPSILON = 1e-10; /* POV-Ray's EPSILON for closing outlines */
+/* Points, vertices, faces ... one object may list: a bound that keeps a
+ * garbled count from reserving the machine's memory. */
+#define MAX_ELEMENT_COUNT 50000000
 
 int is_object_keyword(int kw)
 {
@@ -191,9 +194,10 @@ static int parse_count(Parser *p, const char *what, int minimum)
 {
     Token at = *peek(p);
     double n = parse_float(p);
-    if (!(n >= minimum) || n > 50000000.0)
+    int count;
+    if (!int_from_double(n, minimum, MAX_ELEMENT_COUNT, &count))
         parse_fail(p, at.pos, "%s: %g is not a usable count", what, n);
-    return (int)n;
+    return count;
 }
 
 static SceneObject *parse_polygon(Parser *p, const Token *kw)
@@ -204,9 +208,9 @@ static SceneObject *parse_polygon(Parser *p, const Token *kw)
     double count = parse_float(p);
     if (count < 3)
         parse_fail(p, at.pos, "polygon needs at least three points");
-    if (count > 50000000.0)
+    int n;
+    if (!int_from_double(count, 3, MAX_ELEMENT_COUNT, &n))
         parse_fail(p, at.pos, "polygon: %g is not a usable count", count);
-    int n = (int)count;
     TempVec pts;
     tvec_init(&pts, sizeof(Vec3));
     for (int i = 0; i < n; i++) {
@@ -329,7 +333,8 @@ static void finish_mesh(Parser *p, SceneObject *o, MeshBuilder *mb)
         memcpy(o->u.mesh.textures, mb->textures.data, sizeof(SceneTexture *) * (size_t)mb->textures.n);
 }
 
-static int index_in_range(double v, int n) { return v >= 0 && v < n; }
+/* A mesh2 index: as POV-Ray's (int) of the value, within [0, n). */
+static int mesh_index(double v, int n, int *out) { return int_from_double(v, 0, n - 1, out); }
 
 /* mesh2's normal_indices or, with `uv`, uv_indices (after the keyword):
  * one index triple per face into the normals or uv vectors. */
@@ -347,13 +352,11 @@ static void parse_face_index_block(Parser *p, MeshBuilder *mb, int uv)
         parse_comma(p);
         Token vt = *peek(p);
         Vec3 idx = parse_vector(p);
-        if (!index_in_range(idx.x, range) || !index_in_range(idx.y, range) || !index_in_range(idx.z, range))
-            parse_fail(p, vt.pos, "mesh2 %s index out of range (%d %s)", kind, range, range_what);
         MeshFace *f = (MeshFace *)mb->faces.data + i;
         int *slot = uv ? f->uv : f->n;
-        slot[0] = (int)idx.x;
-        slot[1] = (int)idx.y;
-        slot[2] = (int)idx.z;
+        if (!mesh_index(idx.x, range, &slot[0]) || !mesh_index(idx.y, range, &slot[1]) ||
+            !mesh_index(idx.z, range, &slot[2]))
+            parse_fail(p, vt.pos, "mesh2 %s index out of range (%d %s)", kind, range, range_what);
     }
     parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
     expect_punct(p, '}', block);
@@ -495,13 +498,10 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                 parse_comma(p);
                 Token vt = *peek(p);
                 Vec3 idx = parse_vector(p);
-                if (!index_in_range(idx.x, mb.vertices.n) || !index_in_range(idx.y, mb.vertices.n) ||
-                    !index_in_range(idx.z, mb.vertices.n))
-                    parse_fail(p, vt.pos, "mesh2 face index out of range (%d vertices)", mb.vertices.n);
                 MeshFace *f = tvec_push(p, &mb.faces);
-                f->v[0] = (int)idx.x;
-                f->v[1] = (int)idx.y;
-                f->v[2] = (int)idx.z;
+                if (!mesh_index(idx.x, mb.vertices.n, &f->v[0]) || !mesh_index(idx.y, mb.vertices.n, &f->v[1]) ||
+                    !mesh_index(idx.z, mb.vertices.n, &f->v[2]))
+                    parse_fail(p, vt.pos, "mesh2 face index out of range (%d vertices)", mb.vertices.n);
                 f->n[0] = f->n[1] = f->n[2] = -1;
                 f->uv[0] = f->uv[1] = f->uv[2] = -1;
                 f->texture = -1;
@@ -511,11 +511,11 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                     if (!token_starts_float(p, peek(p)))
                         break;
                     Token it = *peek(p);
-                    double ti = parse_float(p);
-                    if (!index_in_range(ti, mb.textures.n))
+                    int ti;
+                    if (!mesh_index(parse_float(p), mb.textures.n, &ti))
                         parse_fail(p, it.pos, "texture index out of range in mesh2");
                     if (k == 0)
-                        f->texture = (int)ti;
+                        f->texture = ti;
                 }
             }
             parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
@@ -605,6 +605,15 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
     o->u.csg.children = palloc(p, sizeof(SceneObject *) * (size_t)(children.n ? children.n : 1));
     if (children.n)
         memcpy(o->u.csg.children, children.data, sizeof(SceneObject *) * (size_t)children.n);
+    /* Written unions nest as deep as the text (nesting_enter counts them),
+     * but `#declare U = union { object { U } }` in a loop nests a copy one
+     * level deeper each time: the depth is bounded here, where it grows. */
+    o->depth = 1;
+    for (int i = 0; i < children.n; i++)
+        if (o->u.csg.children[i]->depth + 1 > o->depth)
+            o->depth = o->u.csg.children[i]->depth + 1;
+    if (o->depth > MAX_NESTING)
+        parse_fail(p, kw->pos, "nested too deeply (unions inside unions more than %d levels)", MAX_NESTING);
     if (lights.n) {
         SceneLight *l = palloc(p, sizeof(SceneLight) * (size_t)lights.n);
         int *slot = palloc(p, sizeof(int) * (size_t)lights.n);

@@ -10,6 +10,63 @@
 
 /* ---- errors ------------------------------------------------------------ */
 
+/* The length of the printable UTF-8 character at s (n bytes left), or 0:
+ * a control character (C0, DEL, C1), a malformed, overlong or surrogate
+ * sequence, or a code point beyond U+10FFFF. */
+static size_t printable_char(const unsigned char *s, size_t n)
+{
+    unsigned c = s[0];
+    if (c < 0x80)
+        return c >= 0x20 && c != 0x7f;
+    size_t len = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+    if (len == 0 || len > n)
+        return 0;
+    for (size_t i = 1; i < len; i++)
+        if ((s[i] & 0xc0) != 0x80)
+            return 0;
+    if ((c == 0xe0 && s[1] < 0xa0) || (c == 0xed && s[1] >= 0xa0) || (c == 0xf0 && s[1] < 0x90) ||
+        (c == 0xf4 && s[1] >= 0x90))
+        return 0; /* overlong, a surrogate, beyond U+10FFFF */
+    if (c == 0xc2 && s[1] < 0xa0)
+        return 0; /* U+0080 to U+009F: C1 controls */
+    return len;
+}
+
+size_t text_escape(char *out, size_t size, const char *in, const char *keep)
+{
+    const unsigned char *s = (const unsigned char *)in;
+    size_t n = strlen(in), o = 0;
+    for (size_t i = 0; i < n;) {
+        size_t len = printable_char(s + i, n - i);
+        if (len == 0 && keep && s[i] && strchr(keep, s[i]))
+            len = 1;
+        if (len) {
+            if (o + len >= size)
+                break;
+            memcpy(out + o, s + i, len);
+            o += len;
+            i += len;
+        } else {
+            if (o + 4 >= size)
+                break;
+            snprintf(out + o, 5, "\\x%02x", s[i]);
+            o += 4;
+            i++;
+        }
+    }
+    if (size)
+        out[o] = '\0';
+    return o;
+}
+
+const char *display_name(Parser *p, const char *path)
+{
+    size_t n = strlen(path) * 4 + 1;
+    char *shown = palloc(p, n);
+    text_escape(shown, n, path, NULL);
+    return shown;
+}
+
 static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt, va_list ap)
 {
     ParseError *e = p->err;
@@ -17,7 +74,14 @@ static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt
     e->line = pos.line;
     e->column = pos.column;
     e->is_io = is_io;
-    vsnprintf(e->message, sizeof e->message, fmt, ap);
+    /* The message may quote the scene (a string, a file name): what is not
+     * printable UTF-8 is shown as \xNN, never copied to the terminal. */
+    char raw[sizeof e->message];
+    vsnprintf(raw, sizeof raw, fmt, ap);
+    text_escape(e->message, sizeof e->message, raw, NULL);
+    /* "%g" shows a NaN's sign bit, which means nothing: "nan" either way */
+    for (char *m = e->message; (m = strstr(m, "-nan")) != NULL;)
+        memmove(m, m + 1, strlen(m + 1) + 1);
     /* Inside macros: where each was called, innermost first, so that an
      * error in a macro's body can be traced to the line that caused it. */
     e->notes[0] = '\0';
@@ -151,23 +215,11 @@ int defer_unsupported(Parser *p, const char *what, SourcePos at)
     return 1;
 }
 
-int nesting_enter(Parser *p, const Token *t)
-{
-    if (++p->nesting > MAX_NESTING)
-        parse_fail(p, t->pos, "nested too deeply (more than %d levels)", MAX_NESTING);
-    return p->nesting;
-}
-
-void nesting_leave(Parser *p)
-{
-    p->nesting--;
-}
-
 /* ---- memory ------------------------------------------------------------ */
 
 static _Noreturn void out_of_memory(Parser *p)
 {
-    parse_fail(p, p->last_pos, "out of memory");
+    parse_fail_memory(p, p->last_pos);
 }
 
 void *palloc(Parser *p, size_t size)
@@ -364,20 +416,30 @@ static void skip_poisoned_value(Parser *p, int start_depth)
     }
 }
 
-Value copy_value(Parser *p, const Value *v)
+/* Arrays can hold arrays, and `#declare A[0] = A` in a loop nests them one
+ * level deeper each time without any nesting in the text: the copy, which
+ * recurses through them, is where that depth is bounded. */
+static Value copy_value_at(Parser *p, const Value *v, int depth)
 {
     Value c = *v;
     if (v->kind == VAL_ARRAY) {
+        if (depth > MAX_NESTING)
+            parse_fail(p, p->last_pos, "nested too deeply (arrays in arrays more than %d levels)", MAX_NESTING);
         /* POV-Ray copies arrays on assignment: `#declare B = A` and then
          * `#declare B[0] = ...` leaves A as it was. */
         ArrayValue *a = tmp_alloc(p, sizeof *a);
         *a = *v->array;
         a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)a->count);
         for (long i = 0; i < a->count; i++)
-            a->elems[i].value = copy_value(p, &v->array->elems[i].value);
+            a->elems[i].value = copy_value_at(p, &v->array->elems[i].value, depth + 1);
         c.array = a;
     }
     return c;
+}
+
+Value copy_value(Parser *p, const Value *v)
+{
+    return copy_value_at(p, v, 1);
 }
 
 /* What a lenient parse reads: a whole right-hand value, or one more
@@ -395,6 +457,7 @@ static Value parse_lenient(Parser *p, const LenientWhat *what)
     jmp_buf here;
     jmp_buf *volatile outer = p->poison_jmp;
     volatile int saved_nesting = p->nesting, saved_declaring = p->declaring;
+    volatile int saved_args = p->arg_values.n; /* macro calls inside, left half read */
     volatile int start_depth = p->brace_depth;
     const char *volatile outer_deferred = p->deferred_what;
     volatile SourcePos outer_deferred_at = p->deferred_at;
@@ -418,6 +481,7 @@ static Value parse_lenient(Parser *p, const LenientWhat *what)
         }
     } else {
         p->nesting = saved_nesting;
+        p->arg_values.n = p->arg_refs.n = saved_args;
         memset(&v, 0, sizeof v);
         v.kind = VAL_UNSUPPORTED;
         v.what = p->poison_what;
@@ -562,7 +626,19 @@ static void parse_global_settings(Parser *p)
             }
             break;
         }
-        case KW_max_trace_level: g->max_trace_level = (int)parse_float(p); break;
+        case KW_max_trace_level: {
+            /* POV-Ray: at least 1, and at most its limit, with a warning */
+            Token at = *peek(p);
+            double v = parse_float(p);
+            g->max_trace_level = int_clamped(v, 1, MAX_TRACE_LEVEL_LIMIT);
+            if (v > MAX_TRACE_LEVEL_LIMIT) {
+                char msg[160];
+                snprintf(msg, sizeof msg, "max_trace_level %g is more than POV-Ray's limit, %d: %d is used", v,
+                         MAX_TRACE_LEVEL_LIMIT, MAX_TRACE_LEVEL_LIMIT);
+                parse_warning(p, at.pos, msg);
+            }
+            break;
+        }
         case KW_adc_bailout: g->adc_bailout = parse_float(p); break;
         case KW_ambient_light:
             parse_colour(p, &c, 0);
@@ -581,10 +657,8 @@ static void parse_global_settings(Parser *p)
             break;
         case KW_noise_generator: {
             Token at = *peek(p);
-            double v = parse_float(p);
-            if (v < 1.0 || v >= 4.0)
+            if (!int_from_double(parse_float(p), 1, 3, &g->noise_generator))
                 parse_fail(p, at.pos, "Value for noise_generator in global_settings must be 1, 2, or 3.");
-            g->noise_generator = (int)v;
             break;
         }
         case KW_number_of_waves: case KW_max_intersections: case KW_hf_gray_16:
@@ -693,8 +767,11 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
         char *copy = tmp_alloc(p, len + 1);
         memcpy(copy, text, len);
         lex_open_buffer(p, name, copy, len, start);
-    } else if (!lex_open_file(p, name, name, start)) {
-        parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
+    } else {
+        SourceText scene_text;
+        if (!source_read(p, name, start, &scene_text))
+            parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
+        lex_open_source(p, &scene_text, start);
     }
     parse_statements(p);
     debug_end_line(p);
@@ -715,6 +792,7 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
     scene->fogs = palloc(p, sizeof(SceneFog) * (size_t)(p->fogs.n ? p->fogs.n : 1));
     if (p->fogs.n)
         memcpy(scene->fogs, p->fogs.data, sizeof(SceneFog) * (size_t)p->fogs.n);
+    arena_set_budget(scene->arena, NULL); /* the budget is the parse's, and ends with it */
     arena_free(p->temp);
     free(p);
     return scene;
@@ -753,8 +831,14 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     tvec_init(&p->fogs, sizeof(SceneFog));
     tvec_init(&p->rand_streams, sizeof(unsigned));
     tvec_init(&p->user_files, sizeof(struct UserFile *));
+    tvec_init(&p->arg_values, sizeof(Value));
+    tvec_init(&p->arg_refs, sizeof(Symbol *));
+    source_files_init(p);
     symbols_init(p);
     init_scene(scene);
+    limits_init_stack(p);
+    limits_init_memory(p);
+    limits_init_work(p);
 
     if (setjmp(p->fail)) {
         debug_end_line(p);

@@ -144,7 +144,7 @@ static PatternTurbulence *classic_turbulence(Parser *p, Pigment *pig)
 
 static int octaves_value(double v)
 {
-    return v < 1.0 ? 1 : v > 10.0 ? 10 : (int)v; /* POV-Ray's limits */
+    return int_clamped(v, 1, 10); /* POV-Ray's limits */
 }
 
 /* warp { ... }: turbulence is modelled, the other warps are approximated
@@ -447,7 +447,7 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
                 break;
             case KW_spiral1: case KW_spiral2:
                 pig->kind = kw == KW_spiral1 ? PIGMENT_SPIRAL1 : PIGMENT_SPIRAL2;
-                pig->arms = (short)parse_float(p); /* POV-Ray keeps a short */
+                pig->arms = (short)int_as_povray(parse_float(p)); /* POV-Ray keeps (short)(int)v */
                 pig->wave = WAVE_TRIANGLE;
                 break;
             }
@@ -513,10 +513,8 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         case KW_warp: parse_warp(p, pig, &at); continue;
         case KW_noise_generator: {
             Token vt = *peek(p);
-            double g = parse_float(p);
-            if (g < 0.0 || g >= 4.0)
+            if (!int_from_double(parse_float(p), 0, 3, &pig->noise_generator))
                 parse_fail(p, vt.pos, "Value for noise_generator must be 0, 1, 2, or 3.");
-            pig->noise_generator = (int)g;
             continue;
         }
         case KW_agate_turb:
@@ -588,12 +586,12 @@ static void parse_reflection(Parser *p, Finish *f)
         if (is_punct(t, '}'))
             return;
         if (is_kw(t, KW_fresnel)) {
+            Token at = *t;
             double v = 1.0;
             if (token_starts_float(p, peek(p)))
                 v = parse_float(p);
-            f->reflection_fresnel = (int)v;
-            if (f->reflection_fresnel < 0 || f->reflection_fresnel > 1)
-                parse_fail(p, t->pos, "fresnel must be true or false");
+            if (!int_from_double(v, 0, 1, &f->reflection_fresnel))
+                parse_fail(p, at.pos, "fresnel must be true or false");
             if (!second && f->reflection_fresnel)
                 memset(f->reflection_min, 0, sizeof f->reflection_min);
         } else if (is_kw(t, KW_falloff)) {

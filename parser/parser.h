@@ -12,11 +12,25 @@ typedef struct {
     int ninclude_dirs;
     /* image_width / image_height as the scene sees them. */
     int image_width, image_height;
-    /* Total #while/#for iterations allowed before the parse fails as a
-     * runaway loop; 0 means the default, 10 million. */
+    /* Budgets of the parse's work (0: the default), each an error naming the
+     * position, the loop or macro, and the macro calls that led there:
+     * #while/#for iterations in all (10 million), macro calls in all (2
+     * million), tokens read again by loops and macro calls, a long one
+     * counting one per 16 bytes (20 million: what bounds an endless loop
+     * whatever its body, within seconds), and seconds of parsing (none). */
     long max_loop_iterations;
+    long max_macro_calls;
+    long max_repeated_tokens;
+    double max_parse_seconds;
+    /* Bytes the parse may allocate (the scene description and everything
+     * temporary: arrays, strings, macro frames, file texts, meshes); 0
+     * means the default, parse_default_max_memory(). */
+    size_t max_memory;
     /* --strict: what hstrace would approximate (ApproxKind) is an error. */
     int strict;
+    /* #fopen ... write/append is an error (for a fuzzer, which must not
+     * write files its inputs name). */
+    int forbid_writes;
 } ParseOptions;
 
 /* A parse error: "FILE:LINE:COLUMN: message". */
@@ -30,6 +44,10 @@ typedef struct {
      * the error is not inside a macro. */
     char notes[1024];
 } ParseError;
+
+/* A fair share of the machine for one parse: a quarter of its physical
+ * memory, at least 256 MiB (4 GiB when the size is unknown). */
+size_t parse_default_max_memory(void);
 
 /* Returns NULL and fills err on failure; never exits, never crashes. */
 Scene *parse_scene_file(const char *path, const ParseOptions *opts, ParseError *err);

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stddef.h>
 
+#include "convert.h"
 #include "keywords.h"
 #include "parser.h"
 #include "scene.h"
@@ -65,6 +66,10 @@ typedef struct {
     size_t size, offset;
     int line, col;
     int controls_at_entry; /* control stack height when the file started */
+    /* Text before this offset has been read before: a loop went back over
+     * it, or (SIZE_MAX) the frame replays a macro body. Its tokens count
+     * in the budget of repeated text. */
+    size_t repeated_to;
     const struct Macro *macro; /* a macro body: the macro, else NULL */
     SourcePos called_at;       /* a macro body: the call's position */
 } SourceFile;
@@ -151,7 +156,7 @@ typedef struct {
 typedef struct Symbol {
     struct Symbol *next;       /* in its hash bucket */
     struct Symbol *scope_next; /* the symbols of the same level */
-    char *name;
+    const char *name; /* interned (intern_name) */
     int level; /* 0: global; each include file and macro call opens one more */
     unsigned serial; /* changes when the symbol is freed, so aliases notice */
     /* A macro parameter passed by reference: the caller's symbol, which
@@ -180,7 +185,7 @@ typedef struct {
     int file_depth;
     SourcePos pos;  /* of the directive, for "missing #end" */
     LexMark loop;   /* #while: start of the condition; #for: start of the body */
-    char *for_var;
+    const char *for_var;
     double for_end, for_step;
     double switch_value; /* CTL_SWITCH: a #case matched, text is being read */
 } Control;
@@ -192,13 +197,22 @@ typedef struct {
     size_t elem;
 } TempVec;
 
+/* An entry of the parser's open-addressing tables (literals, names). */
+struct Interned {
+    const char *key;
+    char *value;
+};
+
 /* ---- the parser ----------------------------------------------------------- */
 
-/* Hard limits that turn runaway input into an error instead of a hang or a
- * stack overflow. POV-Ray has no loop limit; a scene needing more than ten
- * million #while/#for iterations (ParseOptions.max_loop_iterations can raise
- * it) is far more likely an endless loop, which would otherwise hang. */
+/* Limits that turn runaway input into an error instead of a hang or a
+ * stack overflow (limits.c). POV-Ray has none; scenes that need more than
+ * these (ParseOptions raises each) are far more likely endless loops or
+ * recursions. The budgets of repeated text and of macro calls are what
+ * stops an endless parse within seconds, whatever its loop's body holds. */
 #define MAX_LOOP_ITERATIONS 10000000L
+#define MAX_MACRO_CALLS 2000000L
+#define MAX_REPEATED_TOKENS 20000000L
 #define MAX_NESTING 200
 
 typedef struct Parser {
@@ -224,7 +238,11 @@ typedef struct Parser {
     TempVec controls; /* of Control */
     TempVec fogs;     /* of SceneFog, in file order */
     int media_attenuation_seen; /* a light_source asked for media_attenuation */
-    long loop_iterations;
+    /* limits.c: the work done so far, and its budgets */
+    long loop_iterations, macro_calls, repeated_tokens;
+    long max_loop_iterations, max_macro_calls, max_repeated_tokens;
+    unsigned tokens_read;  /* the clock is read every 4096 tokens */
+    double deadline;       /* clock_wall() seconds, or 0: none */
 
     double version;
     int version_given;
@@ -233,7 +251,22 @@ typedef struct Parser {
     double assumed_gamma; /* 0 with gamma_set: srgb */
     int default_changed;  /* #default was used */
 
-    int nesting; /* recursion guard for expressions and objects */
+    /* limits.c: the lowest stack address a token may be read at, and the
+     * levels of expressions and objects open (MAX_NESTING at most). */
+    const char *stack_floor;
+    int nesting;
+    /* What the scene's arenas may take from the system (ParseOptions
+     * .max_memory), and every file read so far (readfile.c). */
+    ArenaBudget budget;
+    TempVec read_files;
+    /* Memory that stays flat when text is read again (a loop's next pass, a
+     * macro's next call): string literals by where they stand in their
+     * file's buffer (lexer.c), identifier names by their spelling
+     * (symbols.c), and the arguments of the macro calls being read, a
+     * stack whose slots the next call reuses (macros.c). */
+    struct Interned *literals, *names;
+    size_t nliterals, cap_literals, nnames, cap_names;
+    TempVec arg_values, arg_refs;
 
     /* Inside a #declare: unsupported things become VAL_UNSUPPORTED instead of
      * errors. `poison_jmp` leads back to the innermost declaration. */
@@ -248,6 +281,7 @@ typedef struct Parser {
 
     TempVec rand_streams; /* of unsigned: seed() makes one, rand() draws */
     TempVec user_files;   /* of struct UserFile *: every #fopen, closed or not */
+    struct UserFile *free_user_files; /* closed, forgotten: for the next #fopen */
     int poison_strict;
 
     const ApproxNote *global_approx; /* global_settings: radiosity, photons */
@@ -262,6 +296,14 @@ typedef struct Parser {
 #define HST_PRINTF(a, b)
 #endif
 _Noreturn void parse_fail(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
+/* in copied to out (size bytes with the NUL) with every byte that is not
+ * part of printable UTF-8 (controls, DEL, C1, malformed sequences) shown
+ * as \xNN, except the characters in `keep` (NULL: none); cut short at a
+ * whole character. Messages, warnings and #debug text go through it, so
+ * that no byte of a scene reaches the terminal raw. Returns the length. */
+size_t text_escape(char *out, size_t size, const char *in, const char *keep);
+/* A file's name as messages show it (escaped; the scene arena). */
+const char *display_name(Parser *p, const char *path);
 /* Ends the line of #debug text on stderr, if the scene left one open, so
  * that the next message (a warning, the error) starts a line of its own. */
 void debug_end_line(Parser *p);
@@ -286,26 +328,94 @@ char *tmp_strndup(Parser *p, const char *s, size_t n);
 void tvec_init(TempVec *v, size_t elem);
 void *tvec_push(Parser *p, TempVec *v); /* returns the new zeroed slot */
 const char *describe_token(Parser *p, const Token *t);
+
+/* limits.c: the guards on what a scene may use while it is parsed. */
+/* Notes how far down this thread's stack may go (the parse's entry). */
+void limits_init_stack(Parser *p);
+_Noreturn void limits_stack_exhausted(Parser *p, SourcePos pos);
+/* Every token is read after this check (lex_token), so every level of
+ * every recursion of the parser meets it: true when the stack left below
+ * the caller is down to the reserve, and the parse must stop with
+ * limits_stack_exhausted. (Stacks grow down on every machine hstrace
+ * builds for.) */
+static inline int limits_stack_low(const Parser *p)
+{
+#if defined(__GNUC__)
+    const char *here = __builtin_frame_address(0);
+#else
+    char probe;
+    const char *here = &probe;
+#endif
+    return here < p->stack_floor;
+}
+/* The budgets of time and work (limits.c). lex_token counts every token
+ * read from text read before (a long one as several) and looks at the
+ * clock now and then; loops count their iterations, macro calls
+ * themselves. */
+void limits_init_work(Parser *p);
+_Noreturn void limits_work_exhausted(Parser *p, SourcePos pos, const char *what);
+void limits_check_time(Parser *p, SourcePos pos);
+void limits_count_iteration(Parser *p, SourcePos loop);
+void limits_count_call(Parser *p, SourcePos call, const char *macro);
+/* A token was read from offset `from` to f->offset (blanks and comments
+ * before it included). Read again, it counts one, and one more for every 16
+ * bytes it spans, so that long strings and comments in a loop count what
+ * they cost. */
+static inline void limits_count_token(Parser *p, const SourceFile *f, size_t from, SourcePos pos)
+{
+    if (from < f->repeated_to) {
+        p->repeated_tokens += 1 + (long)((f->offset - from) >> 4);
+        if (p->repeated_tokens > p->max_repeated_tokens)
+            limits_work_exhausted(p, pos, "tokens");
+    }
+    if ((++p->tokens_read & 4095u) == 0 && p->deadline > 0.0)
+        limits_check_time(p, pos);
+}
+/* One more level of an expression or an object (MAX_NESTING at most). */
 int nesting_enter(Parser *p, const Token *t);
 void nesting_leave(Parser *p);
 
+/* The budget of ParseOptions.max_memory for the parse's arenas. */
+void limits_init_memory(Parser *p);
+/* The memory the parse may still take from its budget. */
+size_t limits_memory_left(const Parser *p);
+/* "out of memory", or, when the budget ran out, the budget's message. */
+_Noreturn void parse_fail_memory(Parser *p, SourcePos pos);
+/* The budget's message for what would need more than limits_memory_left,
+ * found before it is asked for. */
+_Noreturn void limits_over_budget(Parser *p, SourcePos pos);
+
+/* readfile.c: a file's text, read whole (see there). */
+typedef struct {
+    const char *text; /* NUL-terminated, in the temporary arena */
+    size_t size;
+    const char *name; /* the path it was read by (scene arena) */
+    const char *dir;  /* its folder, searched first by its #includes */
+    int again;        /* read before: its text counts as repeated text */
+} SourceText;
+void source_files_init(Parser *p);
+/* Reads path whole: 1 and *out; 0 when it cannot be opened (errno says
+ * why, the caller words the message). What is no regular file, a read
+ * error, a zero byte in the text or a file beyond the memory budget are
+ * errors at `at`. */
+int source_read(Parser *p, const char *path, SourcePos at, SourceText *out);
+/* The same for dir/name ("." : name as it is). */
+int source_read_in(Parser *p, const char *dir, const char *name, SourcePos at, SourceText *out);
+
 /* lexer.c */
 void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at);
+/* A file read by source_read, on top of the include stack. */
+void lex_open_source(Parser *p, const SourceText *s, SourcePos at);
 void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at);
 int lex_peek_char(Parser *p); /* the next character after blanks, or -1 */
 size_t lex_offset(Parser *p);
-int lex_open_file(Parser *p, const char *path, const char *shown_name, SourcePos at);
 /* The folders a relative #include (and #fopen ... read) name is looked
  * for in, in order: the current file's, then each include folder. */
 int lex_search_dirs(Parser *p, const char **dirs, int cap);
-/* Opens dir/name ("." : name as it is) for reading; *path is the name used. */
-FILE *lex_open_in_dir(Parser *p, const char *dir, const char *name, const char **path);
 void lex_raw(Parser *p, Token *t); /* TK_EOF at the end of the current file */
 /* The next token of f, which need not be on the include stack (#read's
  * data is written in the scene language's tokens). */
 void lex_token(Parser *p, SourceFile *f, Token *t);
-/* fp's whole contents in the temporary arena, NUL-terminated; closes fp. */
-const char *lex_read_file(Parser *p, FILE *fp, const char *shown_name, SourcePos at, size_t *size);
 LexMark lex_mark(Parser *p);
 void lex_seek(Parser *p, LexMark m);
 int lex_skip_semicolon(Parser *p); /* consume a ';' if it comes next */
@@ -333,6 +443,9 @@ Token *next_name(Parser *p);
 
 /* symbols.c */
 void symbols_init(Parser *p);
+/* The one copy of a name (temporary arena): the same spelling, the same
+ * pointer, so that symbols made again and again cost their name once. */
+const char *intern_name(Parser *p, const char *name, int len);
 /* The innermost visible symbol (an alias resolved to its target). */
 Symbol *symbol_find(Parser *p, const char *name, int len);
 /* The symbol a token names: an array element, else symbol_find(); fails on
@@ -355,6 +468,10 @@ void parse_express(Parser *p, double e[5], int *terms);
 void parse_rel_factor(Parser *p, double e[5], int *terms);
 double parse_float(Parser *p);
 double parse_float_full(Parser *p); /* comparisons allowed */
+/* v, read at `at`, as an integer of [lo, hi], truncated toward zero as
+ * POV-Ray's casts do; NaN, infinities and values outside the range are an
+ * error there: "WHAT must be an integer from LO to HI, not V". */
+int checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *what);
 Vec3 parse_vector(Parser *p);
 Vec3 parse_scale_vector(Parser *p);
 void parse_colour(Parser *p, Colour *c, int expect_ft);

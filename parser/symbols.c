@@ -25,6 +25,34 @@ void symbols_init(Parser *p)
     memset(&p->symbols, 0, sizeof p->symbols);
 }
 
+const char *intern_name(Parser *p, const char *name, int len)
+{
+    if ((p->nnames + 1) * 2 > p->cap_names) {
+        size_t cap = p->cap_names ? p->cap_names * 2 : 1024;
+        struct Interned *t = tmp_alloc(p, sizeof *t * cap);
+        for (size_t i = 0; i < p->cap_names; i++) {
+            const char *k = p->names[i].key;
+            if (!k)
+                continue;
+            size_t j = hash_name(k, (int)strlen(k)) * 2654435761u & (cap - 1);
+            while (t[j].key)
+                j = (j + 1) & (cap - 1);
+            t[j] = p->names[i];
+        }
+        p->names = t;
+        p->cap_names = cap;
+    }
+    size_t j = hash_name(name, len) * 2654435761u & (p->cap_names - 1);
+    for (; p->names[j].key; j = (j + 1) & (p->cap_names - 1))
+        if (strncmp(p->names[j].key, name, (size_t)len) == 0 && p->names[j].key[len] == '\0')
+            return p->names[j].key;
+    char *copy = tmp_strndup(p, name, (size_t)len);
+    p->names[j].key = copy;
+    p->names[j].value = copy;
+    p->nnames++;
+    return copy;
+}
+
 /* The innermost symbol of that name, aliases not followed. */
 static Symbol *find_own(Parser *p, const char *name, int len)
 {
@@ -70,7 +98,7 @@ static Symbol *new_symbol(Parser *p, const char *name, int len, int level)
     } else {
         s = tmp_alloc(p, sizeof *s);
     }
-    s->name = tmp_strndup(p, name, (size_t)len);
+    s->name = (char *)intern_name(p, name, len);
     s->level = level;
     unsigned h = hash_name(name, len);
     s->next = p->symbols.buckets[h];

@@ -902,6 +902,31 @@ int main(void)
     tap_ok(cells >= 4.0 * w.npolygons && cells <= 32.0 * w.npolygons, "heuristic gives %dx%dx%d cells for %d polygons", r[0],
            r[1], r[2], w.npolygons);
 
+    /* Points anywhere have a cell: the nearest edge cell beyond the box
+     * (a plane's hit near the horizon lies 1e16 away), the first for NaN. */
+    int far_ok = 1;
+    for (int a = 0; a < 3; a++) {
+        far_ok &= grid_cell_coord(&g, -3.57e16, a) == 0 && grid_cell_coord(&g, 3.57e16, a) == g.n[a] - 1;
+        far_ok &= grid_cell_coord(&g, -HUGE_VAL, a) == 0 && grid_cell_coord(&g, HUGE_VAL, a) == g.n[a] - 1;
+        far_ok &= grid_cell_coord(&g, NAN, a) == 0 && grid_cell_coord(&g, 1e308, a) == g.n[a] - 1;
+    }
+    tap_ok(far_ok, "cell coordinates of points at +-3.57e16, +-1e308, +-inf and NaN are the edge cells");
+    /* A ray that goes nowhere has no walk: NaN, or a direction that
+     * underflowed to zero (toward a light 1e308 away), with no end. */
+    GridWalk gw;
+    tap_ok(!grid_walk_begin(&g, v3(0, 0, 0), v3(0, 0, 0), 0.0, HUGE_VAL, &gw), "no walk for a zero direction");
+    tap_ok(!grid_walk_begin(&g, v3(0, 0, 0), v3(NAN, 0, 1), 0.0, HUGE_VAL, &gw) &&
+               !grid_walk_begin(&g, v3(NAN, 0, 0), v3(0, 0, 1), 0.0, HUGE_VAL, &gw) &&
+               !grid_walk_begin(&g, v3(0, 0, 0), v3(0, 0, 1), 0.0, NAN, &gw),
+           "no walk for a NaN origin, direction or end");
+    int steps = 0;
+    if (grid_walk_begin(&g, v3(-1e300, 0.5, 0.5), v3(1, 0, 0), 0.0, HUGE_VAL, &gw))
+        do
+            steps++;
+        while (grid_walk_next(&g, &gw) && steps < 1000);
+    /* (at t = 1e300 the cells' crossings round together: fewer cells, never more) */
+    tap_ok(steps >= 1 && steps <= g.n[0], "a ray from 1e300 away ends its walk (%d cells, %d across)", steps, g.n[0]);
+
     grid_free(&g);
     world_free(&w);
     scene_free(s);

@@ -14,7 +14,18 @@ typedef struct Block {
 
 struct Arena {
     Block *head;
+    ArenaBudget *budget;
+    size_t taken; /* bytes of all its blocks, counted in the budget */
 };
+
+void arena_set_budget(Arena *a, ArenaBudget *budget)
+{
+    if (a->budget)
+        a->budget->used -= a->taken;
+    a->budget = budget;
+    if (budget)
+        budget->used += a->taken;
+}
 
 Arena *arena_new(void)
 {
@@ -32,15 +43,27 @@ void *arena_alloc(Arena *a, size_t size)
 void *arena_alloc_uninit(Arena *a, size_t size)
 {
     const size_t align = sizeof(max_align_t);
+    if (size > SIZE_MAX - align)
+        return NULL;
     size = (size + align - 1) / align * align;
     if (size == 0)
         size = align;
     Block *b = a->head;
     if (!b || b->size - b->used < size) {
         size_t cap = size > 65536 ? size : 65536;
-        b = malloc(sizeof(Block) + cap);
+        size_t whole = sizeof(Block) + cap;
+        if (whole < cap)
+            return NULL; /* a size near SIZE_MAX */
+        if (a->budget && (whole > a->budget->limit || a->budget->used > a->budget->limit - whole)) {
+            a->budget->exceeded = 1;
+            return NULL;
+        }
+        b = malloc(whole);
         if (!b)
             return NULL;
+        a->taken += whole;
+        if (a->budget)
+            a->budget->used += whole;
         b->size = cap;
         b->used = 0;
         b->next = a->head;
@@ -64,6 +87,7 @@ void arena_free(Arena *a)
 {
     if (!a)
         return;
+    arena_set_budget(a, NULL);
     for (Block *b = a->head, *next; b; b = next) {
         next = b->next;
         free(b);

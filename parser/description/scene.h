@@ -200,6 +200,10 @@ struct SceneObject {
     const ApproxNote *approx; /* photons { } on the object */
     unsigned no_shadow : 1, no_image : 1, no_reflection : 1, hollow : 1, inverse : 1;
     int double_illuminate;
+    /* Levels of unions from this object down (1: a union of other objects,
+     * 0: not a union). The parser keeps it at MAX_NESTING (200) at most, so
+     * whatever walks the tree recurses that deep at most. */
+    int depth;
     union {
         struct {            /* polygon: one or more closed outlines */
             int npoints;    /* all outline points; each outline is closed */
@@ -285,9 +289,13 @@ typedef struct {
     const ApproxNote *approx; /* focal blur, camera normal */
 } SceneCamera;
 
+/* POV-Ray's bound on max_trace_level (configbackend.h there): the ray
+ * tree, which the renderer walks recursively, is never deeper. */
+#define MAX_TRACE_LEVEL_LIMIT 256
+
 typedef struct {
     double assumed_gamma;   /* 0 when not given */
-    int max_trace_level;    /* default 5 */
+    int max_trace_level;    /* default 5; 1 to MAX_TRACE_LEVEL_LIMIT */
     double adc_bailout;     /* default 1/255 */
     Colour ambient_light;   /* default 1,1,1 */
     int has_assumed_gamma;
@@ -350,6 +358,15 @@ Interior scene_default_interior(void);
 
 /* Arena allocation: zeroed memory that lives as long as the scene. */
 Arena *arena_new(void);
+/* A bound on what arenas may take from the system, shared by the arenas
+ * given it (the parser's two): once `used` would pass `limit`, an
+ * allocation returns NULL and sets `exceeded`, before any memory is asked
+ * for. A budget is the caller's, and one thread's: NULL detaches it. */
+typedef struct {
+    size_t used, limit;
+    int exceeded;
+} ArenaBudget;
+void arena_set_budget(Arena *a, ArenaBudget *budget);
 void *arena_alloc(Arena *a, size_t size);
 /* As arena_alloc, without zeroing (for memory about to be overwritten). */
 void *arena_alloc_uninit(Arena *a, size_t size);

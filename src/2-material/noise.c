@@ -23,6 +23,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "convert.h"
+
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
 enum { RANDOM_VALUES = 267 };
@@ -151,11 +153,7 @@ static LatticeCoord lattice_coord(double x)
      * Beyond int's range that is undefined there; here such coordinates
      * are held at the range's ends. */
     double lowered = x >= 0.0 ? x : x - (1.0 - POV_EPSILON);
-    if (!(lowered > -2147483000.0))
-        lowered = -2147483000.0;
-    if (lowered > 2147483000.0)
-        lowered = 2147483000.0;
-    int whole = (int)lowered;
+    int whole = int_clamped(lowered, -2147483000, 2147483000);
     c.index = (int)(((unsigned)whole + 10000u) & 0xFFFu); /* unsigned: no overflow near the ends */
     c.frac = x - whole;
     return c;
@@ -263,12 +261,7 @@ static GradientCoord gradient_coord(double x)
 {
     GradientCoord c;
     double t = x + 10000000.023157213; /* POV-Ray's offset: keeps t positive */
-    double f = floor(t);
-    if (!(f > -2147483000.0))
-        f = -2147483000.0;
-    if (f > 2147483000.0)
-        f = 2147483000.0;
-    int it = (int)f;
+    int it = int_clamped(floor(t), -2147483000, 2147483000);
     c.b0 = it & (GRADIENTS - 1);
     c.b1 = (c.b0 + 1) & (GRADIENTS - 1);
     c.r0 = t - it;

@@ -8,6 +8,7 @@
 
 #include <math.h>
 
+#include "convert.h"
 #include "noise.h"
 
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
@@ -23,7 +24,7 @@ static double checker_value(Vec3 p)
 {
     /* The EPSILON nudges points on a cell face (a plane through whole
      * units, the usual case for a checkered floor) into the upper cell. */
-    long v = (long)(floor(p.x + POV_EPSILON) + floor(p.y + POV_EPSILON) + floor(p.z + POV_EPSILON));
+    int v = int_as_povray(floor(p.x + POV_EPSILON) + floor(p.y + POV_EPSILON) + floor(p.z + POV_EPSILON));
     return (v & 1) ? 1.0 : 0.0;
 }
 
@@ -38,7 +39,11 @@ static double hexagon_value(Vec3 p)
     double xs = x / xfactor, zs = z / zfactor;
     xs -= floor(xs / 6.0) * 6.0;
     zs -= floor(zs / 6.0) * 6.0;
-    int xm = (int)pov_floor(xs) % 6, zm = (int)pov_floor(zs) % 6;
+    /* Far from the origin (|x| beyond ~1e15) the reduction above leaves
+     * [0, 6); POV-Ray's switch then matches no block and answers 0. */
+    int xm = int_as_povray(pov_floor(xs)) % 6, zm = int_as_povray(pov_floor(zs)) % 6;
+    if (xm < 0 || zm < 0)
+        return 0.0;
     static const int straight_05[6] = { 0, 1, 1, 2, 2, 0 }; /* columns 0 and 5 by zm */
     static const int straight_23[6] = { 2, 2, 0, 0, 1, 1 }; /* columns 2 and 3 */
     static const int below[6] = { 0, 2, 1, 0, 2, 1 };       /* split columns, under the diagonal */

@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "convert.h"
+
 void grid_choose_resolution(const World *w, Vec3 lo, Vec3 hi, int res[3])
 {
     /* About eight cells per polygon, shaped like the box: the usual ARTS
@@ -23,8 +25,7 @@ void grid_choose_resolution(const World *w, Vec3 lo, Vec3 hi, int res[3])
     }
     double per_len = dims > 0 ? pow(density * n / volume, 1.0 / dims) : 1.0;
     for (int a = 0; a < 3; a++) {
-        int k = (e[a] > emax * 1e-3) ? (int)ceil(e[a] * per_len) : 1;
-        res[a] = k < 1 ? 1 : k > 512 ? 512 : k;
+        res[a] = (e[a] > emax * 1e-3) ? int_clamped(ceil(e[a] * per_len), 1, 512) : 1;
     }
     /* Keep the cell array within reason (2^24 cells). */
     while ((double)res[0] * res[1] * res[2] > 16777216.0)
@@ -109,8 +110,7 @@ typedef struct {
 
 int grid_cell_coord(const Grid *g, double x, int axis)
 {
-    int c = (int)floor((x - v3_comp(g->min, axis)) * v3_comp(g->inv_cell_size, axis));
-    return c < 0 ? 0 : c >= g->n[axis] ? g->n[axis] - 1 : c;
+    return int_floor_clamped((x - v3_comp(g->min, axis)) * v3_comp(g->inv_cell_size, axis), 0, g->n[axis] - 1);
 }
 
 int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int nextra)
@@ -260,6 +260,11 @@ int grid_walk_begin(const Grid *g, Vec3 org, Vec3 dir, double t0, double t1, Gri
     /* Clip [t0, t1] to the grid box (slabs). */
     double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };
     double lo[3] = { g->min.x, g->min.y, g->min.z }, hi[3] = { g->max.x, g->max.y, g->max.z };
+    /* No walk for a ray that goes nowhere: a NaN anywhere, or no direction
+     * (toward a light 1e308 away, the normalised direction underflows to
+     * zero), which would step through no cell boundary for ever. */
+    if (isnan(o[0] + o[1] + o[2] + d[0] + d[1] + d[2] + t0 + t1) || (d[0] == 0.0 && d[1] == 0.0 && d[2] == 0.0))
+        return 0;
     for (int a = 0; a < 3; a++) {
         if (d[a] == 0.0) {
             if (o[a] < lo[a] || o[a] > hi[a])
@@ -279,8 +284,7 @@ int grid_walk_begin(const Grid *g, Vec3 org, Vec3 dir, double t0, double t1, Gri
     double cs[3] = { g->cell_size.x, g->cell_size.y, g->cell_size.z };
     for (int a = 0; a < 3; a++) {
         double p = o[a] + d[a] * t0;
-        int c = (int)floor((p - lo[a]) / cs[a]);
-        c = c < 0 ? 0 : c >= g->n[a] ? g->n[a] - 1 : c;
+        int c = int_floor_clamped((p - lo[a]) / cs[a], 0, g->n[a] - 1);
         walk->cell[a] = c;
         if (d[a] > 0.0) {
             walk->step[a] = 1;

@@ -56,12 +56,18 @@ static int touches_other(Tracer *t, const Hit *hit, double tol)
     const Grid *g = t->grid;
     if (hit->kind == HIT_POLYGON && polygon_classify_point(w, &w->polygons[hit->index], hit->point, tol) < 0)
         return 1; /* on its own polygon's border: on the neighbours' too */
-    /* A polygon that holds the point within tol has a point y with
-     * |y - x| <= tol on its projection's two axes and, since x is within
-     * tol of the plane and the dropped axis is the normal's largest
+    /* A point beyond the grid's box touches nothing: the box holds every
+     * polygon. (Hits on an infinite plane near the horizon lie there, 1e16
+     * units away.) A polygon that holds the point within tol has a point y
+     * with |y - x| <= tol on its projection's two axes and, since x is
+     * within tol of the plane and the dropped axis is the normal's largest
      * (|n_w| >= 1/sqrt 3), |y_w - x_w| <= sqrt 3 (1 + sqrt 2) tol < 4.2 tol
      * on the third: it is listed in a cell within 5 tol of x on every axis
      * (usually the one cell holding x). */
+    for (int a = 0; a < 3; a++)
+        if (!(v3_comp(hit->point, a) + 5.0 * tol >= v3_comp(g->min, a) &&
+              v3_comp(hit->point, a) - 5.0 * tol <= v3_comp(g->max, a)))
+            return 0;
     int lo[3], hi[3];
     for (int a = 0; a < 3; a++) {
         lo[a] = grid_cell_coord(g, v3_comp(hit->point, a) - 5.0 * tol, a);

@@ -3,11 +3,12 @@
 
 #include <limits.h>
 
+#include "convert.h"
 #include "shadow_volumes.h"
 
 int shadow_bucket_limit(double nth)
 {
-    return nth >= (double)INT_MAX ? INT_MAX : nth < 0.0 ? -1 : (int)nth;
+    return nth < 0.0 ? -1 : int_clamped(nth, 0, INT_MAX); /* NaN: 0, no polygon counts as under it */
 }
 
 int shadow_bucket_fill(ShadowContext *ctx, int light, int limit)

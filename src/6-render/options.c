@@ -28,6 +28,48 @@ static int parse_int(const char *s, int lo, int hi, int *out)
     return 0;
 }
 
+/* A size in bytes: a whole or decimal number, then K, M, G or T (powers
+ * of 1024; "KiB", "MB" ... and lower case too), none for bytes. */
+static int parse_size(const char *s, size_t *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || errno || !(v > 0.0))
+        return -1;
+    double unit = 1.0;
+    switch (*end) {
+    case 'k': case 'K': unit = 1024.0; end++; break;
+    case 'm': case 'M': unit = 1024.0 * 1024.0; end++; break;
+    case 'g': case 'G': unit = 1024.0 * 1024.0 * 1024.0; end++; break;
+    case 't': case 'T': unit = 1024.0 * 1024.0 * 1024.0 * 1024.0; end++; break;
+    default: break;
+    }
+    if (unit > 1.0 && *end == 'i')
+        end++;
+    if (*end == 'B' || *end == 'b')
+        end++;
+    if (*end != '\0')
+        return -1;
+    double bytes = v * unit;
+    if (bytes < 1.0 || bytes > 1e18)
+        return -1;
+    *out = (size_t)bytes;
+    return 0;
+}
+
+/* A whole number from 1 to 10^15 (the work budgets). */
+static int parse_count(const char *s, long *out)
+{
+    char *end;
+    errno = 0;
+    long long v = strtoll(s, &end, 10);
+    if (end == s || *end || errno || v < 1 || v > 1000000000000000LL)
+        return -1;
+    *out = (long)v;
+    return 0;
+}
+
 /* "N" or "NxNxN". */
 static int parse_grid(const char *s, int g[3])
 {
@@ -86,6 +128,14 @@ void options_usage(FILE *f)
             "      --include-path DIR folder searched for #include files (repeatable)\n"
             "      --strict           refuse what hstrace only approximates (normal, patterns other\n"
             "                         than checker/hexagon/gradient, area_light, ...: see the man page)\n"
+            "      --max-memory SIZE  memory the scene may take while it is parsed, e.g. 512M or 8G\n"
+            "                         (default: a quarter of the physical memory)\n"
+            "      --max-parse-seconds S  stop a parse running longer (default: no time limit)\n"
+            "      --max-repeated-tokens N  tokens loops and macro calls may read again, a long\n"
+            "                         one counting one per 16 bytes (default 20000000: stops an\n"
+            "                         endless loop within seconds)\n"
+            "      --max-macro-calls N     macro calls in all (default 2000000)\n"
+            "      --max-loop-iterations N #while/#for iterations in all (default 10000000)\n"
             "      --exr-float        write 32-bit float EXR channels instead of half\n"
             "      --aov LIST         EXR only: add analysis channels, comma separated groups of\n"
             "                         Z, N, P, shadow, hst, depth, cost, or all (see the man page)\n"
@@ -328,6 +378,36 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             opt->stats = 1;
         } else if (strcmp(a, "--strict") == 0) {
             opt->strict = 1;
+        } else if (is_long(a, "--max-memory")) {
+            if (!(v = option_value(argc, argv, &i, "--max-memory", err, errlen)))
+                return -1;
+            if (parse_size(v, &opt->max_memory)) {
+                snprintf(err, (size_t)errlen, "--max-memory '%s': expected a size such as 512M or 8G", v);
+                return -1;
+            }
+        } else if (is_long(a, "--max-parse-seconds")) {
+            if (!(v = option_value(argc, argv, &i, "--max-parse-seconds", err, errlen)))
+                return -1;
+            char *end;
+            double s = strtod(v, &end);
+            if (end == v || *end != '\0' || !(s > 0.0 && s <= 1e9)) {
+                snprintf(err, (size_t)errlen, "--max-parse-seconds '%s': expected a number of seconds above 0", v);
+                return -1;
+            }
+            opt->max_parse_seconds = s;
+        } else if (is_long(a, "--max-repeated-tokens") || is_long(a, "--max-macro-calls") ||
+                   is_long(a, "--max-loop-iterations")) {
+            static const char *const names[] = { "--max-repeated-tokens", "--max-macro-calls", "--max-loop-iterations" };
+            long *slots[] = { &opt->max_repeated_tokens, &opt->max_macro_calls, &opt->max_loop_iterations };
+            int k = 0;
+            while (!is_long(a, names[k]))
+                k++;
+            if (!(v = option_value(argc, argv, &i, names[k], err, errlen)))
+                return -1;
+            if (parse_count(v, slots[k])) {
+                snprintf(err, (size_t)errlen, "%s '%s': expected a whole number from 1 to 10^15", names[k], v);
+                return -1;
+            }
         } else if (is_long(a, "--stats-json")) {
             if (!(v = option_value(argc, argv, &i, "--stats-json", err, errlen)))
                 return -1;

@@ -34,6 +34,12 @@ typedef struct {
     int ninclude_paths;
     int stats;
     int strict;       /* --strict: approximations are errors */
+    /* What the parse may use (0: the parser's defaults): --max-memory,
+     * --max-parse-seconds, --max-loop-iterations, --max-macro-calls,
+     * --max-repeated-tokens. */
+    size_t max_memory;
+    double max_parse_seconds;
+    long max_loop_iterations, max_macro_calls, max_repeated_tokens;
     const char *stats_json;
     int exr_float;
     int png16;

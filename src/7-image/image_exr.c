@@ -355,6 +355,26 @@ static exr_result_t start_read_part0(exr_context_t *ctx, ExrIO *io, exr_storage_
     return rv;
 }
 
+/* Every chunk has an 8-byte entry in the offset table: a file too short
+ * for its table cannot hold the data window it claims (a few hundred
+ * corrupt bytes may claim 2^27 pixels), and no memory is asked for it.
+ * 1 when the table is missing (the message set, *rv the library's error
+ * or success), 0 when it fits. */
+static int chunk_table_missing(exr_context_t ctx, ExrIO *io, int w, int h, exr_result_t *rv)
+{
+    int32_t nchunks = 0;
+    int64_t size = exr_fd_size(ctx, io);
+    *rv = exr_get_chunk_count(ctx, 0, &nchunks);
+    if (*rv != EXR_ERR_SUCCESS)
+        return 1;
+    if (size >= 0 && (int64_t)nchunks * 8 > size) {
+        image_set_error(io->err, io->errlen, "truncated EXR file: its %dx%d data window needs %d chunks, the file holds %lld bytes",
+                        w, h, (int)nchunks, (long long)size);
+        return 1;
+    }
+    return 0;
+}
+
 int image_exr_read(int fd, Image *img, char *err, int errlen)
 {
     ExrIO io = { fd, err, errlen, 0 };
@@ -395,6 +415,11 @@ int image_exr_read(int fd, Image *img, char *err, int errlen)
         }
         w = (int)lw;
         h = (int)lh;
+    }
+    if (chunk_table_missing(ctx, &io, w, h, &rv)) {
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+        goto fail_quiet;
     }
     if (image_alloc(img, w, h) != 0) {
         image_set_error(err, errlen, "out of memory for a %dx%d image", w, h);
@@ -511,6 +536,11 @@ int image_exr_read_planes(int fd, const char *const *names, int n, float **plane
         }
         w = (int)lw;
         h = (int)lh;
+    }
+    if (chunk_table_missing(ctx, &io, w, h, &rv)) {
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+        goto fail_quiet;
     }
     for (int k = 0; k < n; k++)
         if (!(planes[k] = calloc((size_t)w * (size_t)h, sizeof(float)))) {

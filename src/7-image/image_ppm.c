@@ -118,6 +118,20 @@ int image_ppm_read(FILE *fp, Image *img, double display_gamma, char *err, int er
         return -1;
     }
     wide = maxval > 255;
+    /* The pixels must be there before their memory is asked for: a header
+     * of 30 bytes may claim 2^28 pixels (4 GiB). Binary samples take 1 or 2
+     * bytes, text ones 2 at least (a digit and a blank). When the stream
+     * cannot tell its length, the reading finds out. */
+    long here = ftell(fp);
+    if (here >= 0 && fseek(fp, 0, SEEK_END) == 0) {
+        long end = ftell(fp);
+        double need = (double)w * (double)h * channels * (ascii ? 2.0 : wide ? 2.0 : 1.0) - (ascii ? 1.0 : 0.0);
+        if (fseek(fp, here, SEEK_SET) != 0 || (end >= here && (double)(end - here) < need)) {
+            image_set_error(err, errlen, "PPM pixel data is truncated (%ldx%ld pixels need %.0f bytes, %ld are left)",
+                            w, h, need, end - here);
+            return -1;
+        }
+    }
     image_transfer_init(&t, display_gamma);
     lut = image_transfer_decode_table(&t, (unsigned)maxval);
     if (lut == NULL || image_alloc(img, (int)w, (int)h) != 0) {

@@ -156,6 +156,11 @@ int main(int argc, char **argv)
     popt.image_width = opt.width;
     popt.image_height = opt.height;
     popt.strict = opt.strict;
+    popt.max_memory = opt.max_memory;
+    popt.max_parse_seconds = opt.max_parse_seconds;
+    popt.max_loop_iterations = opt.max_loop_iterations;
+    popt.max_macro_calls = opt.max_macro_calls;
+    popt.max_repeated_tokens = opt.max_repeated_tokens;
 
     StatsReport report;
     memset(&report, 0, sizeof report);

@@ -1,0 +1,102 @@
+/* libFuzzer entry point: a scene, parsed, and when it parses, rendered as
+ * the command line renders it (world, grid, shadow volumes, cost model,
+ * hybrid shadow testing) at 4x3 pixels on one thread, so that hostile
+ * geometry reaches the engine too.
+ *
+ * The parse has small budgets (64 MiB, 50000 tokens read again, 5000
+ * macro calls) and only scenes of up to 2000 polygons are rendered, so that
+ * each input ends in milliseconds: the budgets' code is what is
+ * exercised, not their size. #fopen may not write (the fuzzer
+ * would write files named by its inputs), and #include finds hstrace's own
+ * colors.inc beside the scene's folder. Built and run by tests/fuzz/run.sh
+ * (`make fuzz`). */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cost_model.h"
+#include "grid.h"
+#include "parser.h"
+#include "render.h"
+#include "shadow.h"
+#include "shadow_volumes.h"
+#include "world.h"
+
+#ifndef FUZZ_INCLUDE_DIR
+#define FUZZ_INCLUDE_DIR "data/include"
+#endif
+
+static void render_tiny(const Scene *scene)
+{
+    World world;
+    WorldError werr;
+    if (world_build(&world, scene, &werr))
+        return;
+    Vec3 extra[1 + 8 * 16];
+    int nextra = grid_extra_points(&world, extra, (int)(sizeof extra / sizeof extra[0]));
+    Grid grid;
+    if (world.npolygons > 2000 || grid_build(&grid, &world, NULL, extra, nextra)) {
+        world_free(&world);
+        return;
+    }
+    ShadowVolumes volumes;
+    memset(&volumes, 0, sizeof volumes);
+    CostModel cost;
+    memset(&cost, 0, sizeof cost);
+    const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
+    if (shadow_volumes_build(&volumes, &world, &grid, eye) == 0) {
+        (void)cost_model_calibrate(&cost, &world, &grid, &volumes, 4, 3);
+        RenderOptions ropt;
+        memset(&ropt, 0, sizeof ropt);
+        ropt.width = 4;
+        ropt.height = 3;
+        ropt.threads = 1;
+        Quality q = { 1, 1, 1, 0, 1 };
+        ropt.quality = q;
+        ropt.shadow = shadow_method_find("hst");
+        ropt.volumes = &volumes;
+        ropt.cost = &cost;
+        ropt.pixel_coherence = 1;
+        ropt.nth = cost.nth;
+        Image img;
+        RenderStats stats;
+        if (render_image(&world, &grid, &ropt, &img, &stats) == 0)
+            image_free(&img);
+        shadow_volumes_free(&volumes);
+    }
+    grid_free(&grid);
+    world_free(&world);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    char *text = malloc(size + 1);
+    if (!text)
+        return 0;
+    memcpy(text, data, size);
+    text[size] = '\0';
+    static const char *const dirs[] = { FUZZ_INCLUDE_DIR };
+    ParseOptions opts;
+    memset(&opts, 0, sizeof opts);
+    opts.include_dirs = dirs;
+    opts.ninclude_dirs = 1;
+    opts.image_width = 4;
+    opts.image_height = 3;
+    opts.max_memory = (size_t)64 << 20;
+    opts.max_repeated_tokens = 50000;
+    opts.max_macro_calls = 5000;
+    opts.max_loop_iterations = 20000;
+    opts.forbid_writes = 1;
+    ParseError err;
+    Scene *scene = parse_scene_string("fuzz.pov", text, &opts, &err);
+    if (scene) {
+        render_tiny(scene);
+        scene_free(scene);
+    } else if (err.line < 0 || err.column < 0 || (!err.file[0] && !err.message[0])) {
+        abort(); /* every error names where it is and what */
+    }
+    free(text);
+    return 0;
+}
