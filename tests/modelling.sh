@@ -177,6 +177,21 @@ image_check "lights in a declared union's copies render as the lights written ou
 # pigments over the background; and pigment_maps whose entries are plain
 # colours (identifiers, rgb, and a pigment identifier), which hstrace blends
 # exactly as POV-Ray does.
+# Variable reflection: reflection { min, max falloff } blends from min
+# facing the viewer to max at grazing angles, seen here on a floor both
+# steeply and at grazing angles, beside a mirror with metallic and a
+# single reflection value.
+cat >"$work/reflect.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 max_trace_level 5 }
+camera { location <0, 1.2, -6> look_at <0, 0.3, 2> angle 70 }
+light_source { <-3, 6, -4> rgb 1 }
+background { rgb <0.25, 0.35, 0.6> }
+plane { y, 0 pigment { checker rgb <0.9, 0.8, 0.7>, rgb <0.2, 0.3, 0.4> } finish { reflection { 0.05, 0.9 falloff 2 } } }
+box { <-2, 0, 1>, <-1, 1.5, 2> pigment { rgb <1, 0.3, 0.2> } }
+box { <0.5, 0, 3>, <2, 2, 3.5> pigment { rgb <0.3, 0.8, 0.3> } finish { reflection { 0.2, 0.6 } metallic } }
+triangle { <-3, 0, 6>, <3, 0, 6>, <0, 3, 6> pigment { rgb <0.9, 0.9, 0.2> } finish { reflection 0.4 } }
+POV
 cat >"$work/legacy.pov" <<'POV'
 #version 3.6;
 global_settings { assumed_gamma 1 }
@@ -211,10 +226,11 @@ unionlights   1e-5   (2.58e-6)    1 (0)     1 (0)
 fog           3.8e-4 (1.89e-4)    2 (1)     2 (1)
 declsky       1e-5   (1.37e-6)    1 (0)     1 (0)
 legacy        1e-5   (9.78e-7)    1 (0)     1 (0)
+reflect       1e-5   (1.70e-6)    1 (0)     1 (0)
 '
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-for name in patterns binding flags noise lights unionlights fog declsky legacy; do
+for name in patterns binding flags noise lights unionlights fog declsky legacy reflect; do
     rendered=1
     for q in 9 3 4; do
         run "$work/$name.pov" --width 240 --height 180 "+Q$q" -o "$work/$name.h$q.exr"

@@ -421,6 +421,47 @@ int main(void)
         }
         fixture_scene_free(sc);
     }
+    /* A hit nearer than the start's margin (trace_min_distance) is the start
+     * itself: two parallel triangles 1e-10 apart (beyond plane_distance's
+     * 1e-12 of a start in the plane, within the margin's 1e-9), a ray
+     * leaving the lower toward the upper one meets nothing, by the grid's
+     * walk and by the hierarchy alike; 1e-8 apart, it meets the upper. */
+    for (int far = 0; far < 2; far++) {
+        double gap = far ? 1e-8 : 1e-10;
+        Scene *sc = fixture_scene(3);
+        fixture_triangle(sc, v3(-1, 0, -1), v3(1, 0, -1), v3(0, 0, 1));
+        fixture_triangle(sc, v3(-1, gap, -1), v3(1, gap, -1), v3(0, gap, 1));
+        World w;
+        WorldError we;
+        Grid g;
+        Bvh b;
+        if (world_build(&w, sc, &we) || grid_build(&g, &w, NULL, NULL, 0) || bvh_build(&b, &w, 1)) {
+            tap_ok(0, "two triangles %g apart build", gap);
+            fixture_scene_free(sc);
+            continue;
+        }
+        Tracer grid, tree;
+        tracer_init(&grid, &w, &g);
+        tracer_init(&tree, &w, &g);
+        tracer_use_bvh(&tree, &b);
+        Vec3 org = v3(0.1, 0, -0.2), dir = v3_normalize(v3(0.3, 1, 0.2));
+        Hit from = { HIT_POLYGON, 0, 0.0, org }, hg, hb;
+        int fg = trace_nearest(&grid, org, dir, HUGE_VAL, &from, &hg);
+        int fb = trace_nearest(&tree, org, dir, HUGE_VAL, &from, &hb);
+        if (far)
+            tap_ok(fg && fb && hg.index == 1 && hb.index == 1,
+                   "a ray leaving a triangle meets a parallel one 1e-8 above it (beyond the start's margin)");
+        else
+            tap_ok(!fg && !fb, "a ray leaving a triangle does not meet a parallel one 1e-10 above it: within the "
+                               "start's margin, the hit is the start itself");
+        tracer_free(&grid);
+        tracer_free(&tree);
+        bvh_free(&b);
+        grid_free(&g);
+        world_free(&w);
+        fixture_scene_free(sc);
+    }
+
     /* The hierarchy does not depend on the threads that built it: a soup
      * big enough that its subtrees go to threads, built by 1, 2 and 3. */
     {
