@@ -5,6 +5,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -465,7 +466,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
     RegList regs = { NULL, 0, 0 };
     Vec3 ext = v3_sub(g->max, g->min);
     double diagonal = v3_length(ext);
-    lv->first = *nall;
+    lv->first = *nall; /* moved along when the lights' polygons are put together */
     int status = 0;
     for (size_t i = 0; i < nuses && status == 0;) {
         size_t j = i;
@@ -527,30 +528,64 @@ static int parallel_plane_cuts_box(const Light *l, const Grid *g, double tol)
     return 0;
 }
 
-int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye)
+/* One light's shadow volumes, built on a thread of its own: into arrays of
+ * its own, its shadow polygons numbered from 0. */
+typedef struct {
+    ShadowVolumes *sv;
+    const World *w;
+    const Grid *g;
+    const int *weld;
+    const Vec3 *eye;
+    int maxpts;
+    int first_light, stride;  /* the lights i = first_light + k * stride */
+    ShadowPolygon **polygons; /* per light */
+    int *npolygons;
+    int status;
+} LightJob;
+
+static void *build_lights(void *arg)
+{
+    LightJob *j = arg;
+    const World *w = j->w;
+    PolygonEdge *edges = malloc(sizeof *edges * (size_t)j->maxpts);
+    if (!edges) {
+        j->status = -1;
+        return NULL;
+    }
+    for (int li = j->first_light; li < w->nlights && j->status == 0; li += j->stride) {
+        LightVolumes *lv = &j->sv->light[li];
+        if (!lv->usable)
+            continue;
+        int cap = 0;
+        j->npolygons[li] = 0;
+        j->status = build_light(j->sv, lv, w, j->g, &w->lights[li], j->weld, j->eye, edges, &j->polygons[li],
+                                &j->npolygons[li], &cap);
+    }
+    free(edges);
+    return NULL;
+}
+
+int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads)
 {
     memset(sv, 0, sizeof *sv);
     sv->tolerance = grid_tolerance(g);
     sv->box_min = g->min;
     sv->box_max = g->max;
     sv->nlights = w->nlights;
-    sv->light = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *sv->light);
+    int nl = w->nlights > 0 ? w->nlights : 1;
+    sv->light = calloc((size_t)nl, sizeof *sv->light);
+    ShadowPolygon **polygons = calloc((size_t)nl, sizeof *polygons);
+    int *npolygons = calloc((size_t)nl, sizeof *npolygons);
     int nclasses = 0;
     int *weld = weld_points(w, &nclasses);
     int maxpts = 3;
     for (int i = 0; i < w->npolygons; i++)
         if (w->polygons[i].npoints + 3 > maxpts)
             maxpts = w->polygons[i].npoints + 3;
-    PolygonEdge *edges = malloc(sizeof *edges * (size_t)maxpts);
-    if (!sv->light || !weld || !edges) {
-        free(weld);
-        free(edges);
-        shadow_volumes_free(sv);
-        return -1;
-    }
+    int status = !sv->light || !polygons || !npolygons || !weld ? -1 : 0;
     sv->nwelded_vertices = nclasses;
-    int cap = 0, status = 0;
-    for (int li = 0; li < w->nlights && status == 0; li++) {
+    int usable = 0;
+    for (int li = 0; status == 0 && li < w->nlights; li++) {
         if (w->lights[li].shadowless)
             continue;
         if (parallel_plane_cuts_box(&w->lights[li], g, sv->tolerance)) {
@@ -558,11 +593,58 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
             continue;
         }
         sv->light[li].usable = 1;
-        status = build_light(sv, &sv->light[li], w, g, &w->lights[li], weld, eye, edges, &sv->polygons,
-                             &sv->npolygons, &cap);
+        usable++;
     }
+    /* The lights on up to `threads` threads, each light on one: what each
+     * builds does not depend on the others, nor on which thread built it. */
+    int nthreads = threads < 1 ? 1 : threads;
+    if (nthreads > usable)
+        nthreads = usable > 0 ? usable : 1;
+    enum { MAX_BUILD_THREADS = 64 };
+    if (nthreads > MAX_BUILD_THREADS)
+        nthreads = MAX_BUILD_THREADS;
+    LightJob jobs[MAX_BUILD_THREADS];
+    pthread_t tids[MAX_BUILD_THREADS];
+    int spawned[MAX_BUILD_THREADS] = { 0 };
+    for (int t = 0; status == 0 && t < nthreads; t++) {
+        jobs[t] = (LightJob){ sv, w, g, weld, eye, maxpts, t, nthreads, polygons, npolygons, 0 };
+        if (t > 0)
+            spawned[t] = pthread_create(&tids[t], NULL, build_lights, &jobs[t]) == 0;
+        if (t > 0 && !spawned[t])
+            build_lights(&jobs[t]); /* no thread to be had: here, then */
+    }
+    if (status == 0)
+        build_lights(&jobs[0]);
+    for (int t = 0; status == 0 && t < nthreads; t++) {
+        if (spawned[t])
+            pthread_join(tids[t], NULL);
+    }
+    for (int t = 0; status == 0 && t < nthreads; t++)
+        if (jobs[t].status)
+            status = -1;
+    /* The lights' shadow polygons put together, in light order. */
+    for (int li = 0; status == 0 && li < w->nlights; li++)
+        sv->npolygons += npolygons[li];
+    if (status == 0) {
+        sv->polygons = malloc(sizeof *sv->polygons * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
+        status = sv->polygons ? 0 : -1;
+    }
+    int base = 0;
+    for (int li = 0; status == 0 && li < w->nlights; li++) {
+        LightVolumes *lv = &sv->light[li];
+        if (npolygons[li])
+            memcpy(&sv->polygons[base], polygons[li], sizeof *sv->polygons * (size_t)npolygons[li]);
+        lv->first = base;
+        if (lv->items && base)
+            for (uint32_t k = 0; k < lv->cell_start[g->ncells]; k++)
+                lv->items[k] += (uint32_t)base;
+        base += npolygons[li];
+    }
+    for (int li = 0; polygons && li < w->nlights; li++)
+        free(polygons[li]);
+    free(polygons);
+    free(npolygons);
     free(weld);
-    free(edges);
     if (status == 0) {
         sv->planes = malloc(sizeof *sv->planes * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
         if (!sv->planes)

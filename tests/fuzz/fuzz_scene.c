@@ -44,7 +44,7 @@ static void render_tiny(const Scene *scene)
     CostModel cost;
     memset(&cost, 0, sizeof cost);
     const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
-    if (shadow_volumes_build(&volumes, &world, &grid, eye) == 0) {
+    if (shadow_volumes_build(&volumes, &world, &grid, eye, 1) == 0) {
         (void)cost_model_calibrate(&cost, &world, &grid, &volumes, 4, 3);
         RenderOptions ropt;
         memset(&ropt, 0, sizeof ropt);
