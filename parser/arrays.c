@@ -47,9 +47,88 @@ static void parse_initialiser(Parser *p, ArrayValue *a, int dim, long base)
     }
 }
 
+static int size_class(long n)
+{
+    int k = 0;
+    while (k + 1 < ARRAY_SIZE_CLASSES && (n >> (k + 1)) > 0)
+        k++;
+    return k;
+}
+
+ArrayValue *array_new(Parser *p, long count)
+{
+    /* The first of a few in count's class that is big enough, or any of
+     * the next class (all are). Loops and macro calls make arrays of the
+     * same sizes again and again: the first one usually fits. */
+    int k = size_class(count);
+    ArrayValue **link = &p->free_arrays[k];
+    for (int tries = 0; *link && tries < 8; tries++, link = &(*link)->next_free)
+        if ((*link)->capacity >= count)
+            break;
+    if ((!*link || (*link)->capacity < count) && k + 1 < ARRAY_SIZE_CLASSES && p->free_arrays[k + 1])
+        link = &p->free_arrays[k + 1];
+    ArrayValue *a = *link;
+    if (a && a->capacity >= count) {
+        *link = a->next_free;
+        for (long i = 0; i < count; i++) {
+            unsigned serial = a->elems[i].serial;
+            memset(&a->elems[i], 0, sizeof a->elems[i]);
+            a->elems[i].serial = serial;
+        }
+        long capacity = a->capacity;
+        Symbol *elems = a->elems;
+        memset(a, 0, sizeof *a);
+        a->capacity = capacity;
+        a->elems = elems;
+        a->count = count;
+        return a;
+    }
+    a = tmp_alloc(p, sizeof *a);
+    a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)count);
+    a->capacity = count;
+    a->count = count;
+    return a;
+}
+
+void value_give_up(Parser *p, Value *v)
+{
+    if (v->kind != VAL_ARRAY || !v->array)
+        return;
+    /* Nested arrays are given up one after the other through a list of
+     * our own, not by recursion: `#declare A[0] = A` in a loop nests them
+     * as deep as the loop runs. */
+    ArrayValue *todo = v->array;
+    todo->next_free = NULL;
+    v->array = NULL;
+    v->kind = VAL_NONE;
+    while (todo) {
+        ArrayValue *a = todo;
+        todo = a->next_free;
+        for (long i = 0; i < a->count; i++) {
+            Symbol *e = &a->elems[i];
+            e->serial++;
+            if (e->value.kind == VAL_ARRAY && e->value.array) {
+                e->value.array->next_free = todo;
+                todo = e->value.array;
+            }
+            e->value.kind = VAL_NONE;
+            e->value.array = NULL;
+        }
+        int k = size_class(a->capacity);
+        a->next_free = p->free_arrays[k];
+        p->free_arrays[k] = a;
+    }
+}
+
+Symbol *token_element(const Token *t)
+{
+    return t->elem->serial == t->elem_serial ? t->elem : NULL;
+}
+
 Value parse_array(Parser *p, const Token *kw)
 {
-    ArrayValue *a = tmp_alloc(p, sizeof *a);
+    ArrayValue shape, *a = &shape; /* the sizes first, then the elements */
+    memset(&shape, 0, sizeof shape);
     a->declared_at = kw->pos;
     a->count = 1;
     for (;;) {
@@ -76,7 +155,10 @@ Value parse_array(Parser *p, const Token *kw)
         if ((size_t)a->count > limits_memory_left(p) / sizeof *a->elems) /* named at the size that crosses it */
             limits_over_budget(p, at.pos);
     }
-    a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)a->count);
+    a = array_new(p, shape.count);
+    a->ndims = shape.ndims;
+    memcpy(a->size, shape.size, sizeof a->size);
+    a->declared_at = shape.declared_at;
     if (lex_next_is_punct(p, '{'))
         parse_initialiser(p, a, 0, 0);
     Value v;
@@ -124,6 +206,7 @@ void read_array_element(Parser *p, Symbol *s)
             t.len = (int)(f->offset - start);
     }
     t.elem = &a->elems[index];
+    t.elem_serial = t.elem->serial;
     p->tok = t;
 }
 

@@ -308,7 +308,11 @@ static int read_value(Parser *p, UserFile *f, Value *v, int *got)
 static void store(Parser *p, const Token *t, const Value *v)
 {
     if (t->elem) {
-        t->elem->value = *v;
+        Symbol *e = token_element(t);
+        if (e) {
+            value_give_up(p, &e->value);
+            e->value = *v;
+        }
         return;
     }
     symbol_set(p, t->text, t->len, 0, v);

@@ -427,9 +427,10 @@ static Value copy_value_at(Parser *p, const Value *v, int depth)
             parse_fail(p, p->last_pos, "nested too deeply (arrays in arrays more than %d levels)", MAX_NESTING);
         /* POV-Ray copies arrays on assignment: `#declare B = A` and then
          * `#declare B[0] = ...` leaves A as it was. */
-        ArrayValue *a = tmp_alloc(p, sizeof *a);
-        *a = *v->array;
-        a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)a->count);
+        ArrayValue *a = array_new(p, v->array->count);
+        a->ndims = v->array->ndims;
+        memcpy(a->size, v->array->size, sizeof a->size);
+        a->declared_at = v->array->declared_at;
         for (long i = 0; i < a->count; i++)
             a->elems[i].value = copy_value_at(p, &v->array->elems[i].value, depth + 1);
         c.array = a;
@@ -552,9 +553,15 @@ void parse_declare(Parser *p, const Token *hash, int local)
     /* Stored before looking for the ';': that lookahead carries out the
      * directives that follow, which may use the new value (or, at the end of
      * a macro's body, close the level a #local belongs to). */
-    if (name.elem)
-        name.elem->value = v;
-    else
+    if (name.elem) {
+        Symbol *e = token_element(&name);
+        if (e) {
+            value_give_up(p, &e->value);
+            e->value = v;
+        } else {
+            value_give_up(p, &v);
+        }
+    } else
         symbol_set(p, name.text, name.len, local, &v);
 
     /* POV-Ray 3.5+ wants ';' after float, vector and colour values (a parse

@@ -42,6 +42,7 @@ typedef struct {
     /* An array element `A[i][j]` (next() reads the indices): the element,
      * which may still hold no value. text/len span the whole `A[i][j]`. */
     struct Symbol *elem;
+    unsigned elem_serial; /* elem's serial then: it changes if the array is recycled */
 } Token;
 
 /* ---- the include stack --------------------------------------------------- */
@@ -121,12 +122,15 @@ typedef struct Macro {
 /* array[N][M]...: elements are symbols so that a token can refer to one;
  * an element not yet given a value has kind VAL_NONE. */
 #define MAX_ARRAY_DIMS 5
-typedef struct {
+#define ARRAY_SIZE_CLASSES 32
+typedef struct ArrayValue {
     int ndims;
     int size[MAX_ARRAY_DIMS];
     long count;
+    long capacity; /* elements allocated (a recycled block may hold more than count) */
     struct Symbol *elems;
     SourcePos declared_at;
+    struct ArrayValue *next_free; /* on the parser's list of recycled arrays */
 } ArrayValue;
 
 typedef struct {
@@ -267,6 +271,10 @@ typedef struct Parser {
     struct Interned *literals, *names;
     size_t nliterals, cap_literals, nnames, cap_names;
     TempVec arg_values, arg_refs;
+    /* Arrays whose symbol was given another value or went away, by the
+     * size class of their capacity (class k: 2^k to 2^(k+1) - 1
+     * elements), for the next arrays to reuse (arrays.c). */
+    struct ArrayValue *free_arrays[ARRAY_SIZE_CLASSES];
 
     /* Inside a #declare: unsupported things become VAL_UNSUPPORTED instead of
      * errors. `poison_jmp` leads back to the innermost declaration. */
@@ -528,6 +536,22 @@ Value parse_array(Parser *p, const Token *kw); /* after 'array' */
  * make p->tok that element. */
 void read_array_element(Parser *p, Symbol *s);
 double array_function(Parser *p, const Token *t); /* dimensions, dimension_size */
+/* The value a symbol or an array element held is given up (it gets
+ * another value, or the symbol goes away): an array in it, and the arrays
+ * in its elements, are kept for reuse. Every array belongs to one symbol
+ * or element, since reading an array's name copies it (copy_value); an
+ * element's serial changes, so tokens and by-reference parameters that
+ * still point into it notice. Anything else in the value stays where it
+ * is (the arenas). */
+void value_give_up(Parser *p, Value *v);
+/* An array of `count` elements, all without a value: a recycled one when
+ * one fits, else new (temporary arena). */
+ArrayValue *array_new(Parser *p, long count);
+/* A token's array element, or NULL when its array no longer exists: the
+ * right side of `#declare A[i] = ...` may have declared A anew. POV-Ray
+ * renders such a scene; the value then goes into the array that was
+ * replaced, which nothing can read any more: it is given up. */
+Symbol *token_element(const Token *t);
 /* fileio.c: #fopen, #fclose, #read, #write (after the keyword) */
 void directive_fopen(Parser *p, const Token *hash);
 void directive_fclose(Parser *p);

@@ -114,6 +114,8 @@ void symbol_set(Parser *p, const char *name, int len, int local, const Value *v)
     if (s && (!local || s->level == p->symbols.level)) {
         Symbol *target = follow(s);
         if (target) {
+            if (!(v->kind == VAL_ARRAY && v->array == target->value.array))
+                value_give_up(p, &target->value);
             target->value = *v;
             return;
         }
@@ -133,6 +135,8 @@ void symbol_define_global(Parser *p, const char *name, int len, const Value *v)
 {
     for (Symbol *s = p->symbols.buckets[hash_name(name, len)]; s; s = s->next)
         if (s->level == 0 && same_name(s, name, len)) {
+            if (!(v->kind == VAL_ARRAY && v->array == s->value.array))
+                value_give_up(p, &s->value);
             s->value = *v;
             s->alias = NULL;
             return;
@@ -151,6 +155,7 @@ static void unlink_from_bucket(Parser *p, Symbol *target)
 
 static void release(Parser *p, Symbol *s)
 {
+    value_give_up(p, &s->value);
     s->serial++;
     s->next = p->symbols.free_list;
     p->symbols.free_list = s;

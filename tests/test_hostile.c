@@ -323,7 +323,8 @@ static void test_memory(void)
            "array[1e8] with a 16 MiB budget: refused at the size (%d:%d: %s)", err.line, err.column, err.message);
     scene_free(s);
     /* Memory flat across iterations: each of these took a few hundred
-     * bytes (calls) or a kilobyte (literals) per pass, 50 to 200 MiB here. */
+     * bytes (calls) or a kilobyte (literals, arrays) per pass, 50 to 800
+     * MiB here. */
     static char loop[2600];
     char lit[1001];
     memset(lit, 'x', 1000);
@@ -336,6 +337,11 @@ static void test_memory(void)
                                                   "#for (I, 1, 200000) M(I) #end\n" },
         { "200000 calls with two string arguments", "#macro M(A, B) #end\n"
                                                      "#for (I, 1, 200000) M(\"one\", concat(\"t\", \"wo\")) #end\n" },
+        { "200000 calls of a macro with a #local array[16]", "#macro M(A) #local V = array[16]; #local V[3] = A; #end\n"
+                                                              "#for (I, 1, 200000) M(I) #end\n" },
+        { "200000 passes declaring an array of arrays anew", "#for (I, 1, 200000)\n"
+                                                              "#declare G = array[2] { array[8], array[3] { I, 1, 2 } };\n"
+                                                              "#declare H = G; #end\n" },
         { "200000 passes over a 1000-character literal under a false #if", loop },
         { "200000 passes over a 1000-character literal", loop + 1300 },
     };

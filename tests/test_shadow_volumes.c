@@ -134,7 +134,7 @@ static int shared_borders(TestRng *r, Vec3 offset, int parallel, int *undecided,
     int tested = 0;
     if (world_build(&w, s, &err) == 0) {
         Vec3 extra[2] = { w.camera.location, v3_add(offset, v3(0, -3, 0)) };
-        if (grid_build(&g, &w, NULL, extra, 2) == 0 && shadow_volumes_build(&sv, &w, &g, NULL) == 0) {
+        if (grid_build(&g, &w, NULL, extra, 2) == 0 && shadow_volumes_build(&sv, &w, &g, NULL, 1) == 0) {
             const Light *l = &w.lights[0];
             for (int k = 0; k < 6; k++)
                 for (int j = 0; j < 50; j++) {
@@ -218,7 +218,7 @@ static void check_cards(Scene *s, const CardProbe *probes, int nprobes, const ch
     Grid g;
     ShadowVolumes sv;
     Bvh bvh;
-    if (grid_build(&g, &w, NULL, extra, nextra) || shadow_volumes_build(&sv, &w, &g, &w.camera.location) ||
+    if (grid_build(&g, &w, NULL, extra, nextra) || shadow_volumes_build(&sv, &w, &g, &w.camera.location, 1) ||
         bvh_build(&bvh, &w, 1)) {
         tap_ok(0, "%s: grid and volumes built", layout);
         world_free(&w);
@@ -384,11 +384,52 @@ static void transparent_cards(void)
     }
 }
 
+static int same_vec(Vec3 a, Vec3 b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+/* Field by field (the structs have padding). */
+static int same_shadow_polygon(const ShadowPolygon *x, const ShadowPolygon *y)
+{
+    for (int k = 0; k < 2; k++)
+        if (!same_vec(x->end[k], y->end[k]) || !same_vec(x->toward[k], y->toward[k]) ||
+            x->inside_sign[k] != y->inside_sign[k])
+            return 0;
+    return same_vec(x->normal, y->normal) && memcmp(&x->d, &y->d, sizeof x->d) == 0 &&
+           same_vec(x->edge_normal, y->edge_normal) && memcmp(&x->edge_d, &y->edge_d, sizeof x->edge_d) == 0 &&
+           x->weight_opaque == y->weight_opaque && x->weight_transparent == y->weight_transparent;
+}
+
+/* Two builds of the same scene's volumes are the same, polygon for polygon
+ * and registration for registration. */
+static int same_volumes(const ShadowVolumes *a, const ShadowVolumes *b, const World *w, const Grid *g)
+{
+    if (a->npolygons != b->npolygons || a->nlights != b->nlights)
+        return 0;
+    for (int i = 0; i < a->npolygons; i++)
+        if (!same_shadow_polygon(&a->polygons[i], &b->polygons[i]) || !same_vec(a->planes[i].normal, b->planes[i].normal) ||
+            memcmp(&a->planes[i].d, &b->planes[i].d, sizeof a->planes[i].d) != 0)
+            return 0;
+    for (int li = 0; li < a->nlights; li++) {
+        const LightVolumes *x = &a->light[li], *y = &b->light[li];
+        if (x->usable != y->usable || x->first != y->first || x->count != y->count || x->nitems != y->nitems ||
+            x->eye_known != y->eye_known || x->eye_opaque != y->eye_opaque ||
+            x->eye_transparent != y->eye_transparent || x->silhouette_edges != y->silhouette_edges ||
+            x->cancelled_edges != y->cancelled_edges)
+            return 0;
+        if (!x->usable)
+            continue;
+        if (memcmp(x->cell_start, y->cell_start, sizeof *x->cell_start * ((size_t)g->ncells + 1)) != 0 ||
+            memcmp(x->items, y->items, sizeof *x->items * x->nitems) != 0 ||
+            memcmp(x->occluder, y->occluder, sizeof *x->occluder * (size_t)w->npolygons) != 0)
+            return 0;
+    }
+    return 1;
+}
+
 int main(void)
 {
     TestRng rng = { 0x2545F4914F6CDD1Dull };
     int scenes = 12, samples = 0, unsure = 0, wrong = 0, eye_wrong = 0, eye_checked = 0;
-    int cancelled = 0, silhouettes = 0, usable = 0;
+    int cancelled = 0, silhouettes = 0, usable = 0, same_volumes_wrong = 0;
     for (int sc = 0; sc < scenes; sc++) {
         Scene *s = fixture_scene(128);
         add_scene(s, &rng);
@@ -416,9 +457,19 @@ int main(void)
         Vec3 extra[1] = { w.camera.location };
         Grid g;
         ShadowVolumes sv;
-        if (grid_build(&g, &w, NULL, extra, 1) || shadow_volumes_build(&sv, &w, &g, &w.camera.location)) {
+        if (grid_build(&g, &w, NULL, extra, 1) || shadow_volumes_build(&sv, &w, &g, &w.camera.location, 1)) {
             tap_ok(0, "grid and volumes built");
             continue;
+        }
+        /* The same volumes, built with the lights on two threads and on three. */
+        for (int threads = 2; threads <= 3; threads++) {
+            ShadowVolumes sv2;
+            if (shadow_volumes_build(&sv2, &w, &g, &w.camera.location, threads)) {
+                same_volumes_wrong++;
+                continue;
+            }
+            same_volumes_wrong += !same_volumes(&sv, &sv2, &w, &g);
+            shadow_volumes_free(&sv2);
         }
         for (int li = 0; li < w.nlights; li++) {
             const Light *l = &w.lights[li];
@@ -459,6 +510,9 @@ int main(void)
     tap_ok(wrong == 0, "carried depth count equals the direct count on every segment (%d wrong of %d)", wrong,
            samples - unsure);
     tap_ok(unsure * 1000 <= samples, "undecidable crossings are rare (%d of %d)", unsure, samples);
+    tap_ok(same_volumes_wrong == 0,
+           "the shadow volumes built with the lights on 2 and 3 threads are those of 1 thread (%d of %d builds differ)",
+           same_volumes_wrong, 2 * scenes);
     tap_ok(eye_checked > 0 && eye_wrong == 0, "the eye's count equals the direct count (%d wrong of %d)", eye_wrong,
            eye_checked);
 

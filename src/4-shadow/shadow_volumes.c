@@ -5,6 +5,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -127,36 +128,44 @@ int shadow_light_side(const Polygon *p, const Light *l, double tol)
 
 /* ---- edge contributions and merging -------------------------------------- */
 
+/* One polygon's use of a welded edge. What a use is does not depend on the
+ * light: the uses of every polygon are gathered and put in order once, for
+ * all lights (edge_uses_build); each light's build then takes those of the
+ * polygons that cast its shadows. */
 typedef struct {
-    int lo, hi;      /* welded vertex ids, lo < hi */
-    int a, b;        /* point indices of lo and hi */
+    int lo, hi;            /* welded vertex ids, lo < hi */
+    int a, b;              /* point indices of lo and hi */
     int polygon;
-    int8_t sign;     /* +1: the polygon lies on the positive side of the edge's plane */
-    int8_t channel;  /* 1 opaque, 2 transparent */
+    int8_t swapped;        /* the polygon's outline runs from b to a */
+    int8_t interior_left;  /* as PolygonEdge's, for the outline's direction */
 } EdgeUse;
 
-static int compare_edge_use(const void *x, const void *y)
-{
-    const EdgeUse *a = x, *b = y;
-    if (a->lo != b->lo)
-        return a->lo < b->lo ? -1 : 1;
-    if (a->hi != b->hi)
-        return a->hi < b->hi ? -1 : 1;
-    return 0;
-}
+/* Every polygon's uses of welded edges, by (lo, hi); the uses of one edge
+ * in the order of the polygons and of their outlines. */
+typedef struct {
+    EdgeUse *uses;
+    size_t n;
+} EdgeUses;
+
+/* A use as one light sees it. */
+typedef struct {
+    const EdgeUse *use;
+    int8_t sign;     /* +1: the polygon lies on the positive side of the edge's plane */
+    int8_t channel;  /* 1 opaque, 2 transparent */
+} LightEdgeUse;
 
 /* The faces of a cancelled edge that are not all in one plane are bent
  * (see OccluderSide). They share the edge, so parallel normals mean one
  * plane. */
-static void mark_bent(LightVolumes *lv, const World *w, const EdgeUse *u, size_t n)
+static void mark_bent(LightVolumes *lv, const World *w, const LightEdgeUse *u, size_t n)
 {
-    Vec3 n0 = w->polygons[u[0].polygon].normal;
+    Vec3 n0 = w->polygons[u[0].use->polygon].normal;
     int flat = 1;
     for (size_t k = 1; k < n && flat; k++)
-        flat = v3_length(v3_cross(n0, w->polygons[u[k].polygon].normal)) <= 1e-12;
+        flat = v3_length(v3_cross(n0, w->polygons[u[k].use->polygon].normal)) <= 1e-12;
     if (!flat)
         for (size_t k = 0; k < n; k++)
-            lv->occluder[u[k].polygon].bent = 1;
+            lv->occluder[u[k].use->polygon].bent = 1;
 }
 
 /* The plane through the edge (a, b) and the light, from the canonical
@@ -398,16 +407,72 @@ static int eye_crosses(const World *w, const Polygon *p, const Light *l, Vec3 ey
 
 /* ---- the whole build ------------------------------------------------------ */
 
+/* Every polygon's uses of welded edges (zero-length ones left out), by
+ * (lo, hi) and, within an edge, in the order of the polygons and their
+ * outlines: counted per lo, placed, then each lo's few sorted by hi, in
+ * place and stably. Linear in the uses; once for all lights. Returns 0, or
+ * -1 when out of memory. */
+static int edge_uses_build(EdgeUses *eu, const World *w, const int *weld, int nclasses, PolygonEdge *edges)
+{
+    eu->uses = NULL;
+    eu->n = 0;
+    size_t *start = calloc((size_t)nclasses + 1, sizeof *start);
+    if (!start)
+        return -1;
+    for (int pi = 0; pi < w->npolygons; pi++) {
+        int ne = polygon_edges(w, &w->polygons[pi], edges);
+        for (int i = 0; i < ne; i++) {
+            int la = weld[edges[i].a], lb = weld[edges[i].b];
+            if (la != lb)
+                start[(la < lb ? la : lb) + 1]++;
+        }
+    }
+    for (int c = 0; c < nclasses; c++)
+        start[c + 1] += start[c];
+    eu->n = start[nclasses];
+    eu->uses = malloc(sizeof *eu->uses * (eu->n > 0 ? eu->n : 1));
+    if (!eu->uses) {
+        free(start);
+        return -1;
+    }
+    for (int pi = 0; pi < w->npolygons; pi++) {
+        int ne = polygon_edges(w, &w->polygons[pi], edges);
+        for (int i = 0; i < ne; i++) {
+            int a = edges[i].a, b = edges[i].b;
+            if (weld[a] == weld[b])
+                continue;
+            int swap = weld[a] > weld[b];
+            EdgeUse *u = &eu->uses[start[swap ? weld[b] : weld[a]]++];
+            u->lo = swap ? weld[b] : weld[a];
+            u->hi = swap ? weld[a] : weld[b];
+            u->a = swap ? b : a;
+            u->b = swap ? a : b;
+            u->polygon = pi;
+            u->swapped = (int8_t)swap;
+            u->interior_left = (int8_t)edges[i].interior_left;
+        }
+    }
+    free(start); /* each now the end of its lo's uses */
+    /* Within a lo, by hi: insertion sort, stable, over a vertex's few edges. */
+    for (size_t i = 1; i < eu->n; i++) {
+        EdgeUse u = eu->uses[i];
+        size_t k = i;
+        while (k > 0 && eu->uses[k - 1].lo == u.lo && eu->uses[k - 1].hi > u.hi) {
+            eu->uses[k] = eu->uses[k - 1];
+            k--;
+        }
+        eu->uses[k] = u;
+    }
+    return 0;
+}
+
 static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, const Grid *g, const Light *l,
-                       const int *weld, const Vec3 *eye, PolygonEdge *edges, ShadowPolygon **all, int *nall, int *cap_all)
+                       const EdgeUses *eu, const Vec3 *eye, PolygonEdge *edges, ShadowPolygon **all, int *nall,
+                       int *cap_all)
 {
     double tol = sv->tolerance;
     lv->occluder = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof *lv->occluder);
     if (!lv->occluder)
-        return -1;
-    size_t nuses = 0, cap_uses = 1024;
-    EdgeUse *uses = malloc(cap_uses * sizeof *uses);
-    if (!uses)
         return -1;
     lv->eye_known = eye != NULL;
     for (int pi = 0; pi < w->npolygons; pi++) {
@@ -418,38 +483,6 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
         o->channel = (int8_t)(m->no_shadow || o->light_side == 0 ? 0 : m->opaque ? 1 : 2);
         if (!o->channel)
             continue;
-        int ne = polygon_edges(w, p, edges);
-        for (int i = 0; i < ne; i++) {
-            int a = edges[i].a, b = edges[i].b;
-            if (weld[a] == weld[b])
-                continue; /* zero length */
-            if (nuses == cap_uses) {
-                cap_uses *= 2;
-                EdgeUse *n = realloc(uses, cap_uses * sizeof *uses);
-                if (!n) {
-                    free(uses);
-                    return -1;
-                }
-                uses = n;
-            }
-            EdgeUse *u = &uses[nuses];
-            int swap = weld[a] > weld[b];
-            u->lo = swap ? weld[b] : weld[a];
-            u->hi = swap ? weld[a] : weld[b];
-            u->a = swap ? b : a;
-            u->b = swap ? a : b;
-            u->channel = o->channel;
-            u->polygon = pi;
-            Vec3 n;
-            if (!edge_plane(l, w->points[u->a], w->points[u->b], &n))
-                continue;
-            /* The polygon's side of the edge, in its plane. */
-            Vec3 inward = v3_cross(p->normal, v3_sub(w->points[b], w->points[a]));
-            if (!edges[i].interior_left)
-                inward = v3_neg(inward);
-            u->sign = (int8_t)(v3_dot(n, inward) > 0.0 ? 1 : -1);
-            nuses++;
-        }
         if (lv->eye_known) {
             int c = eye_crosses(w, p, l, *eye, tol, edges);
             if (c < 0)
@@ -460,26 +493,60 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
                 lv->eye_transparent++;
         }
     }
-    qsort(uses, nuses, sizeof *uses, compare_edge_use);
 
     RegList regs = { NULL, 0, 0 };
     Vec3 ext = v3_sub(g->max, g->min);
     double diagonal = v3_length(ext);
-    lv->first = *nall;
+    lv->first = *nall; /* moved along when the lights' polygons are put together */
     int status = 0;
-    for (size_t i = 0; i < nuses && status == 0;) {
-        size_t j = i;
+    /* Edge by edge: the uses by polygons that cast this light's shadows and
+     * whose edge has a plane through the light. */
+    size_t cap_group = 16;
+    LightEdgeUse *uses = malloc(cap_group * sizeof *uses);
+    if (!uses)
+        status = -1;
+    for (size_t e = 0; e < eu->n && status == 0;) {
+        size_t e_end = e;
+        size_t nuses = 0;
+        for (; e_end < eu->n && eu->uses[e_end].lo == eu->uses[e].lo && eu->uses[e_end].hi == eu->uses[e].hi; e_end++) {
+            const EdgeUse *u = &eu->uses[e_end];
+            const OccluderSide *o = &lv->occluder[u->polygon];
+            if (!o->channel)
+                continue;
+            Vec3 n;
+            if (!edge_plane(l, w->points[u->a], w->points[u->b], &n))
+                continue;
+            /* The polygon's side of the edge, in its plane. */
+            const Polygon *p = &w->polygons[u->polygon];
+            int a = u->swapped ? u->b : u->a, b = u->swapped ? u->a : u->b;
+            Vec3 inward = v3_cross(p->normal, v3_sub(w->points[b], w->points[a]));
+            if (!u->interior_left)
+                inward = v3_neg(inward);
+            if (nuses == cap_group) {
+                cap_group *= 2;
+                LightEdgeUse *bigger = realloc(uses, cap_group * sizeof *uses);
+                if (!bigger) {
+                    status = -1;
+                    break;
+                }
+                uses = bigger;
+            }
+            uses[nuses++] = (LightEdgeUse){ u, (int8_t)(v3_dot(n, inward) > 0.0 ? 1 : -1), o->channel };
+        }
+        e = e_end;
+        if (nuses == 0 || status)
+            continue;
+        size_t i = 0, j = nuses;
         int wo = 0, wt = 0;
-        for (; j < nuses && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi; j++) {
-            if (uses[j].channel == 1)
-                wo += uses[j].sign;
+        for (size_t k = i; k < j; k++) {
+            if (uses[k].channel == 1)
+                wo += uses[k].sign;
             else
-                wt += uses[j].sign;
+                wt += uses[k].sign;
         }
         if (wo == 0 && wt == 0) {
             lv->cancelled_edges++;
             mark_bent(lv, w, uses + i, j - i);
-            i = j;
             continue;
         }
         lv->silhouette_edges++;
@@ -493,7 +560,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
             *all = n;
             *cap_all = cap;
         }
-        Vec3 a = w->points[uses[i].a], b = w->points[uses[i].b], n;
+        Vec3 a = w->points[uses[i].use->a], b = w->points[uses[i].use->b], n;
         edge_plane(l, a, b, &n);
         ShadowPolygon *sp = &(*all)[*nall];
         make_shadow_polygon(sp, l, a, b, n);
@@ -503,7 +570,6 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
         wedge_outline(l, a, b, diagonal, q);
         status = register_shadow_polygon(&regs, g, q, (uint32_t)*nall, tol);
         (*nall)++;
-        i = j;
     }
     free(uses);
     lv->count = *nall - lv->first;
@@ -527,30 +593,71 @@ static int parallel_plane_cuts_box(const Light *l, const Grid *g, double tol)
     return 0;
 }
 
-int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye)
+/* One light's shadow volumes, built on a thread of its own: into arrays of
+ * its own, its shadow polygons numbered from 0. */
+typedef struct {
+    ShadowVolumes *sv;
+    const World *w;
+    const Grid *g;
+    const EdgeUses *uses;
+    const Vec3 *eye;
+    int maxpts;
+    int first_light, stride;  /* the lights i = first_light + k * stride */
+    ShadowPolygon **polygons; /* per light */
+    int *npolygons;
+    int status;
+} LightJob;
+
+static void *build_lights(void *arg)
+{
+    LightJob *j = arg;
+    const World *w = j->w;
+    PolygonEdge *edges = malloc(sizeof *edges * (size_t)j->maxpts);
+    if (!edges) {
+        j->status = -1;
+        return NULL;
+    }
+    for (int li = j->first_light; li < w->nlights && j->status == 0; li += j->stride) {
+        LightVolumes *lv = &j->sv->light[li];
+        if (!lv->usable)
+            continue;
+        int cap = 0;
+        j->npolygons[li] = 0;
+        j->status = build_light(j->sv, lv, w, j->g, &w->lights[li], j->uses, j->eye, edges, &j->polygons[li],
+                                &j->npolygons[li], &cap);
+    }
+    free(edges);
+    return NULL;
+}
+
+int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads)
 {
     memset(sv, 0, sizeof *sv);
     sv->tolerance = grid_tolerance(g);
     sv->box_min = g->min;
     sv->box_max = g->max;
     sv->nlights = w->nlights;
-    sv->light = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *sv->light);
+    int nl = w->nlights > 0 ? w->nlights : 1;
+    sv->light = calloc((size_t)nl, sizeof *sv->light);
+    ShadowPolygon **polygons = calloc((size_t)nl, sizeof *polygons);
+    int *npolygons = calloc((size_t)nl, sizeof *npolygons);
     int nclasses = 0;
     int *weld = weld_points(w, &nclasses);
     int maxpts = 3;
     for (int i = 0; i < w->npolygons; i++)
         if (w->polygons[i].npoints + 3 > maxpts)
             maxpts = w->polygons[i].npoints + 3;
-    PolygonEdge *edges = malloc(sizeof *edges * (size_t)maxpts);
-    if (!sv->light || !weld || !edges) {
-        free(weld);
-        free(edges);
-        shadow_volumes_free(sv);
-        return -1;
-    }
+    int status = !sv->light || !polygons || !npolygons || !weld ? -1 : 0;
     sv->nwelded_vertices = nclasses;
-    int cap = 0, status = 0;
-    for (int li = 0; li < w->nlights && status == 0; li++) {
+    /* The edges' uses, for every light alike. */
+    EdgeUses uses = { NULL, 0 };
+    if (status == 0) {
+        PolygonEdge *edges = malloc(sizeof *edges * (size_t)maxpts);
+        status = edges && edge_uses_build(&uses, w, weld, nclasses, edges) == 0 ? 0 : -1;
+        free(edges);
+    }
+    int usable = 0;
+    for (int li = 0; status == 0 && li < w->nlights; li++) {
         if (w->lights[li].shadowless)
             continue;
         if (parallel_plane_cuts_box(&w->lights[li], g, sv->tolerance)) {
@@ -558,11 +665,59 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
             continue;
         }
         sv->light[li].usable = 1;
-        status = build_light(sv, &sv->light[li], w, g, &w->lights[li], weld, eye, edges, &sv->polygons,
-                             &sv->npolygons, &cap);
+        usable++;
     }
+    /* The lights on up to `threads` threads, each light on one: what each
+     * builds does not depend on the others, nor on which thread built it. */
+    int nthreads = threads < 1 ? 1 : threads;
+    if (nthreads > usable)
+        nthreads = usable > 0 ? usable : 1;
+    enum { MAX_BUILD_THREADS = 64 };
+    if (nthreads > MAX_BUILD_THREADS)
+        nthreads = MAX_BUILD_THREADS;
+    LightJob jobs[MAX_BUILD_THREADS];
+    pthread_t tids[MAX_BUILD_THREADS];
+    int spawned[MAX_BUILD_THREADS] = { 0 };
+    for (int t = 0; status == 0 && t < nthreads; t++) {
+        jobs[t] = (LightJob){ sv, w, g, &uses, eye, maxpts, t, nthreads, polygons, npolygons, 0 };
+        if (t > 0)
+            spawned[t] = pthread_create(&tids[t], NULL, build_lights, &jobs[t]) == 0;
+        if (t > 0 && !spawned[t])
+            build_lights(&jobs[t]); /* no thread to be had: here, then */
+    }
+    if (status == 0)
+        build_lights(&jobs[0]);
+    for (int t = 0; status == 0 && t < nthreads; t++) {
+        if (spawned[t])
+            pthread_join(tids[t], NULL);
+    }
+    for (int t = 0; status == 0 && t < nthreads; t++)
+        if (jobs[t].status)
+            status = -1;
+    /* The lights' shadow polygons put together, in light order. */
+    for (int li = 0; status == 0 && li < w->nlights; li++)
+        sv->npolygons += npolygons[li];
+    if (status == 0) {
+        sv->polygons = malloc(sizeof *sv->polygons * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
+        status = sv->polygons ? 0 : -1;
+    }
+    int base = 0;
+    for (int li = 0; status == 0 && li < w->nlights; li++) {
+        LightVolumes *lv = &sv->light[li];
+        if (npolygons[li])
+            memcpy(&sv->polygons[base], polygons[li], sizeof *sv->polygons * (size_t)npolygons[li]);
+        lv->first = base;
+        if (lv->items && base)
+            for (uint32_t k = 0; k < lv->cell_start[g->ncells]; k++)
+                lv->items[k] += (uint32_t)base;
+        base += npolygons[li];
+    }
+    for (int li = 0; polygons && li < w->nlights; li++)
+        free(polygons[li]);
+    free(polygons);
+    free(npolygons);
     free(weld);
-    free(edges);
+    free(uses.uses);
     if (status == 0) {
         sv->planes = malloc(sizeof *sv->planes * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
         if (!sv->planes)

@@ -106,10 +106,11 @@ typedef struct ShadowVolumes {
 } ShadowVolumes;
 
 /* Builds the volumes of every light that casts shadows (shadowless lights
- * get none). `eye`: where every camera ray starts, or NULL when they start
- * at different points (orthographic camera): no eye count then. Returns 0,
- * or -1 when out of memory. */
-int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye);
+ * get none), the lights on up to `threads` threads (the volumes are the
+ * same for any number). `eye`: where every camera ray starts, or NULL when
+ * they start at different points (orthographic camera): no eye count
+ * then. Returns 0, or -1 when out of memory. */
+int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads);
 void shadow_volumes_free(ShadowVolumes *sv);
 
 /* Chooses how the planes are tested (PLANES_DOUBLE after a build). Returns

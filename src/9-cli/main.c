@@ -221,7 +221,7 @@ int main(int argc, char **argv)
     if (method->uses_volumes && opt.quality >= 4) {
         double tv = clock_wall();
         const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
-        if (shadow_volumes_build(&volumes, &world, &grid, eye) ||
+        if (shadow_volumes_build(&volumes, &world, &grid, eye, threads) ||
             shadow_volumes_set_precision(&volumes, (PlanePrecision)opt.plane_precision)) {
             fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
             status = EXIT_IO;

@@ -1,6 +1,6 @@
 /* libFuzzer entry point: a scene, parsed, and when it parses, rendered as
- * the command line renders it (world, grid, shadow volumes, cost model,
- * hybrid shadow testing) at 4x3 pixels on one thread, so that hostile
+ * the command line renders it (world, grid, hierarchy, shadow volumes,
+ * cost model, hybrid shadow testing) at 4x3 pixels on one thread, so that hostile
  * geometry reaches the engine too.
  *
  * The parse has small budgets (64 MiB, 50000 tokens read again, 5000
@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bvh.h"
 #include "cost_model.h"
 #include "grid.h"
 #include "parser.h"
@@ -39,13 +40,19 @@ static void render_tiny(const Scene *scene)
         world_free(&world);
         return;
     }
+    Bvh bvh;
+    if (bvh_build(&bvh, &world, 1)) {
+        grid_free(&grid);
+        world_free(&world);
+        return;
+    }
     ShadowVolumes volumes;
     memset(&volumes, 0, sizeof volumes);
     CostModel cost;
     memset(&cost, 0, sizeof cost);
     const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
-    if (shadow_volumes_build(&volumes, &world, &grid, eye) == 0) {
-        (void)cost_model_calibrate(&cost, &world, &grid, &volumes, 4, 3);
+    if (shadow_volumes_build(&volumes, &world, &grid, eye, 1) == 0) {
+        (void)cost_model_calibrate(&cost, &world, &grid, &bvh, &volumes, 4, 3);
         RenderOptions ropt;
         memset(&ropt, 0, sizeof ropt);
         ropt.width = 4;
@@ -54,6 +61,7 @@ static void render_tiny(const Scene *scene)
         Quality q = { 1, 1, 1, 0, 1 };
         ropt.quality = q;
         ropt.shadow = shadow_method_find("hst");
+        ropt.bvh = &bvh;
         ropt.volumes = &volumes;
         ropt.cost = &cost;
         ropt.pixel_coherence = 1;
@@ -64,6 +72,7 @@ static void render_tiny(const Scene *scene)
             image_free(&img);
         shadow_volumes_free(&volumes);
     }
+    bvh_free(&bvh);
     grid_free(&grid);
     world_free(&world);
 }

@@ -40,6 +40,8 @@ pkgs="libpng OpenEXR"
 cflags="$cflags $(pkg-config --cflags $pkgs)"
 libs="$(pkg-config --libs $pkgs) -lm -lpthread"
 [ -f "$build/config.h" ] || { echo "fuzz: $build/config.h missing: configure first" >&2; exit 2; }
+# Built with Embree (configure found it): its method is in the objects below.
+grep -q '^#define HAVE_EMBREE 1' "$build/config.h" && libs="$libs -lembree3"
 
 # Every C file of the parser and of rooms 0 to 7 (without OpenColorIO's C++),
 # compiled once with the coverage instrumentation and the sanitizers.
