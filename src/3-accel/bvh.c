@@ -98,10 +98,13 @@ static int new_node(Builder *bd)
     return bd->nnodes++;
 }
 
+/* The bin of centre coordinate c. A coordinate beyond float's range is
+ * infinite in the build records, and an infinite centre gives NaN here: it
+ * goes to the first bin (converting NaN to an int would be undefined). */
 static inline int bin_of(float c, float lo, float scale)
 {
-    int k = (int)((c - lo) * scale);
-    return k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
+    float x = (c - lo) * scale;
+    return x >= 0.0f ? (x < (float)BINS ? (int)x : BINS - 1) : 0;
 }
 
 /* items[first, first + count), whose boxes' union is `bounds` and whose
@@ -208,7 +211,7 @@ static int build(Builder *bd, int first, int count, int depth, const Box *bounds
     int splittable[3];
     for (int a = 0; a < 3; a++) {
         float ext = cbounds->hi[a] - cbounds->lo[a];
-        splittable[a] = ext > 0.0f && (float)BINS / ext < HUGE_VALF;
+        splittable[a] = ext > 0.0f && ext < HUGE_VALF && (float)BINS / ext < HUGE_VALF;
         scale[a] = splittable[a] ? (float)BINS / ext : 0.0f;
     }
     /* Per axis and bin: the items and their boxes' union. */
