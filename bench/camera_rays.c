@@ -70,7 +70,7 @@ int main(int argc, char **argv)
         return 2;
     }
     int nextra = grid_extra_points(&w, extra, (int)(sizeof extra / sizeof extra[0]));
-    if (grid_build(&g, &w, NULL, extra, nextra) || bvh_build(&b, &w) || tracer_init(&t, &w, &g)) {
+    if (grid_build(&g, &w, NULL, extra, nextra) || bvh_build(&b, &w, 1) || tracer_init(&t, &w, &g)) {
         fprintf(stderr, "%s: out of memory\n", argv[1]);
         return 2;
     }
