@@ -694,23 +694,38 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     for (int t = 0; status == 0 && t < nthreads; t++)
         if (jobs[t].status)
             status = -1;
-    /* The lights' shadow polygons put together, in light order. */
-    for (int li = 0; status == 0 && li < w->nlights; li++)
-        sv->npolygons += npolygons[li];
-    if (status == 0) {
-        sv->polygons = malloc(sizeof *sv->polygons * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
-        status = sv->polygons ? 0 : -1;
-    }
+    free(uses.uses); /* before the polygons are put together: the peak is there */
+    uses.uses = NULL;
+    /* The lights' shadow polygons put together, in light order: the first
+     * light's array grows to take each next one, which is freed at once,
+     * so that at most one light's polygons exist twice. */
     int base = 0;
     for (int li = 0; status == 0 && li < w->nlights; li++) {
         LightVolumes *lv = &sv->light[li];
-        if (npolygons[li])
+        if (npolygons[li] && !sv->polygons) {
+            sv->polygons = polygons[li];
+            polygons[li] = NULL;
+        } else if (npolygons[li]) {
+            ShadowPolygon *grown = realloc(sv->polygons, sizeof *grown * ((size_t)base + (size_t)npolygons[li]));
+            if (!grown) {
+                status = -1;
+                break;
+            }
+            sv->polygons = grown;
             memcpy(&sv->polygons[base], polygons[li], sizeof *sv->polygons * (size_t)npolygons[li]);
+            free(polygons[li]);
+            polygons[li] = NULL;
+        }
         lv->first = base;
         if (lv->items && base)
             for (uint32_t k = 0; k < lv->cell_start[g->ncells]; k++)
                 lv->items[k] += (uint32_t)base;
         base += npolygons[li];
+    }
+    sv->npolygons = base;
+    if (status == 0 && !sv->polygons) {
+        sv->polygons = malloc(sizeof *sv->polygons);
+        status = sv->polygons ? 0 : -1;
     }
     for (int li = 0; polygons && li < w->nlights; li++)
         free(polygons[li]);
