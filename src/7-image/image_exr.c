@@ -360,6 +360,20 @@ static exr_result_t start_read_part0(exr_context_t *ctx, ExrIO *io, exr_storage_
  * corrupt bytes may claim 2^27 pixels), and no memory is asked for it.
  * 1 when the table is missing (the message set, *rv the library's error
  * or success), 0 when it fits. */
+/* The data window's width and height, when an Image can hold them; else
+ * -1 with the reason in err. */
+static int data_window_size(exr_attr_box2i_t dw, int *w, int *h, char *err, int errlen)
+{
+    int64_t lw = (int64_t)dw.max.x - dw.min.x + 1, lh = (int64_t)dw.max.y - dw.min.y + 1;
+    if (lw <= 0 || lh <= 0 || lw > IMAGE_MAX_DIM || lh > IMAGE_MAX_DIM || lw * lh > IMAGE_MAX_PIXELS) {
+        image_set_error(err, errlen, "unsupported EXR data window (%lldx%lld)", (long long)lw, (long long)lh);
+        return -1;
+    }
+    *w = (int)lw;
+    *h = (int)lh;
+    return 0;
+}
+
 static int chunk_table_missing(exr_context_t ctx, ExrIO *io, int w, int h, exr_result_t *rv)
 {
     int32_t nchunks = 0;
@@ -407,15 +421,8 @@ int image_exr_read(int fd, Image *img, char *err, int errlen)
         goto fail_quiet;
     }
     grey_only = !have_rgb;
-    {
-        int64_t lw = (int64_t)dw.max.x - dw.min.x + 1, lh = (int64_t)dw.max.y - dw.min.y + 1;
-        if (lw <= 0 || lh <= 0 || lw > IMAGE_MAX_DIM || lh > IMAGE_MAX_DIM || lw * lh > IMAGE_MAX_PIXELS) {
-            image_set_error(err, errlen, "unsupported EXR data window (%lldx%lld)", (long long)lw, (long long)lh);
-            goto fail_quiet;
-        }
-        w = (int)lw;
-        h = (int)lh;
-    }
+    if (data_window_size(dw, &w, &h, err, errlen))
+        goto fail_quiet;
     if (chunk_table_missing(ctx, &io, w, h, &rv)) {
         if (rv != EXR_ERR_SUCCESS)
             goto fail;
@@ -528,15 +535,8 @@ int image_exr_read_planes(int fd, const char *const *names, int n, float **plane
             goto fail_quiet;
         }
     }
-    {
-        int64_t lw = (int64_t)dw.max.x - dw.min.x + 1, lh = (int64_t)dw.max.y - dw.min.y + 1;
-        if (lw <= 0 || lh <= 0 || lw > IMAGE_MAX_DIM || lh > IMAGE_MAX_DIM || lw * lh > IMAGE_MAX_PIXELS) {
-            image_set_error(err, errlen, "unsupported EXR data window (%lldx%lld)", (long long)lw, (long long)lh);
-            goto fail_quiet;
-        }
-        w = (int)lw;
-        h = (int)lh;
-    }
+    if (data_window_size(dw, &w, &h, err, errlen))
+        goto fail_quiet;
     if (chunk_table_missing(ctx, &io, w, h, &rv)) {
         if (rv != EXR_ERR_SUCCESS)
             goto fail;

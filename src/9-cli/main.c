@@ -234,8 +234,7 @@ int main(int argc, char **argv)
         report.volumes = &volumes;
     }
     if (method->test == shadow_embree_test && opt.quality >= 4) {
-        embree = shadow_embree_build(&world, opt.threads > 0 ? opt.threads : render_default_threads(), err,
-                                     sizeof err);
+        embree = shadow_embree_build(&world, threads, err, sizeof err);
         if (!embree) {
             fprintf(stderr, "hstrace: %s\n", err);
             status = EXIT_IO;
