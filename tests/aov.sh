@@ -42,13 +42,23 @@ if [ -n "$exrheader" ]; then
     check "exrheader: Z is a 32-bit float channel" grep -q "^    Z, 32-bit floating-point" "$work/header"
     check "exrheader: shadow.L1 is a half channel" grep -q "^    shadow.L1, 16-bit floating-point" "$work/header"
     for a in chromaticities hstrace.version hstrace.commandLine hstrace.options hstrace.scene hstrace.sceneHash \
-             hstrace.shadows hstrace.nth hstrace.cost.Cs hstrace.time.wall hstrace.aov.hstCodes; do
+             hstrace.shadows hstrace.volumes hstrace.time.wall hstrace.aov.hstCodes; do
         check "exrheader shows the attribute $a" grep -q "^$a (type " "$work/header"
     done
+    check "hstrace.volumes says per light whether the cost model built its volumes" \
+        grep -Eq '^hstrace.volumes \(type string\): "auto; L1 [a-z].*; L2 [a-z].*; L3 [a-z]' "$work/header"
+    # The cost model's calibration is there when volumes were built.
+    "$hstrace" "$srcdir/scenes/desk.pov" --width 32 --height 24 --volumes always -o "$work/always.exr" 2>"$work/err"
+    "$exrheader" "$work/always.exr" >"$work/header-always" 2>"$work/err"
+    for a in hstrace.nth hstrace.cost.Cs; do
+        check "with --volumes always, exrheader shows the attribute $a" grep -q "^$a (type " "$work/header-always"
+    done
+    check "with --volumes always, hstrace.volumes says so" \
+        grep -q '^hstrace.volumes (type string): "always; L1 built (--volumes always)' "$work/header-always"
     check "the hst codes are spelt out in the header" \
         grep -q '^hstrace.aov.hstCodes (type string): "0 none (no hit), 1 sustain, 2 self-shadow, 3 volume, 4 conventional, 5 cache hit, 6 faces away' "$work/header"
     check "the options in force include the defaults" \
-        grep -q '^hstrace.options (type string): "--width 64 --height 48 +Q9 --shadows hst --nth auto --pixel-coherence on' "$work/header"
+        grep -q '^hstrace.options (type string): "--width 64 --height 48 +Q9 --shadows hst --volumes auto --nth auto --pixel-coherence on' "$work/header"
     # The hash is of the scene's bytes: a comment changes it, a copy does not.
     cp "$srcdir/scenes/holes.pov" "$work/a.pov"
     { cat "$srcdir/scenes/holes.pov"; echo "// one more line"; } >"$work/b.pov"

@@ -93,8 +93,8 @@ check "--stats-json writes JSON with the time split" grep -q '"shadow_testing"' 
 check "PPM output is binary P6" [ "$(head -c 2 "$work/s.ppm")" = P6 ]
 
 # Options keep their values whatever follows them.
-run "$srcdir/scenes/desk.pov" --width 32 --height 24 -o "$work/o.png" --pixel-coherence off --tolerance 0 --nth auto \
-    --stats-json "$work/o.json"
+run "$srcdir/scenes/desk.pov" --width 32 --height 24 -o "$work/o.png" --volumes always --pixel-coherence off --tolerance 0 \
+    --nth auto --stats-json "$work/o.json"
 check_status "--pixel-coherence off --tolerance 0 --nth auto: exit status 0" "$status" 0
 check "--pixel-coherence off stays set after --nth auto" grep -q '"coherent": 0,' "$work/o.json"
 check "--tolerance 0 stays set after --nth auto" grep -q '"tolerance": 0,' "$work/o.json"

@@ -469,7 +469,7 @@ static void one_scene(TestRng *rng, Totals *tot)
     if (!grid_failed)
         grid_set_tolerance(&g, tolerance);
     Bvh bvh;
-    if (grid_failed || shadow_volumes_build(&sv, &w, &g, &w.camera.location, 2) || bvh_build(&bvh, &w, 1)) {
+    if (grid_failed || shadow_volumes_build(&sv, &w, &g, &w.camera.location, 2, NULL) || bvh_build(&bvh, &w, 1)) {
         fprintf(stderr, "out of memory\n");
         exit(99);
     }

@@ -134,7 +134,7 @@ static int shared_borders(TestRng *r, Vec3 offset, int parallel, int *undecided,
     int tested = 0;
     if (world_build(&w, s, &err) == 0) {
         Vec3 extra[2] = { w.camera.location, v3_add(offset, v3(0, -3, 0)) };
-        if (grid_build(&g, &w, NULL, extra, 2) == 0 && shadow_volumes_build(&sv, &w, &g, NULL, 1) == 0) {
+        if (grid_build(&g, &w, NULL, extra, 2) == 0 && shadow_volumes_build(&sv, &w, &g, NULL, 1, NULL) == 0) {
             const Light *l = &w.lights[0];
             for (int k = 0; k < 6; k++)
                 for (int j = 0; j < 50; j++) {
@@ -218,7 +218,7 @@ static void check_cards(Scene *s, const CardProbe *probes, int nprobes, const ch
     Grid g;
     ShadowVolumes sv;
     Bvh bvh;
-    if (grid_build(&g, &w, NULL, extra, nextra) || shadow_volumes_build(&sv, &w, &g, &w.camera.location, 1) ||
+    if (grid_build(&g, &w, NULL, extra, nextra) || shadow_volumes_build(&sv, &w, &g, &w.camera.location, 1, NULL) ||
         bvh_build(&bvh, &w, 1)) {
         tap_ok(0, "%s: grid and volumes built", layout);
         world_free(&w);
@@ -457,14 +457,14 @@ int main(void)
         Vec3 extra[1] = { w.camera.location };
         Grid g;
         ShadowVolumes sv;
-        if (grid_build(&g, &w, NULL, extra, 1) || shadow_volumes_build(&sv, &w, &g, &w.camera.location, 1)) {
+        if (grid_build(&g, &w, NULL, extra, 1) || shadow_volumes_build(&sv, &w, &g, &w.camera.location, 1, NULL)) {
             tap_ok(0, "grid and volumes built");
             continue;
         }
         /* The same volumes, built with the lights on two threads and on three. */
         for (int threads = 2; threads <= 3; threads++) {
             ShadowVolumes sv2;
-            if (shadow_volumes_build(&sv2, &w, &g, &w.camera.location, threads)) {
+            if (shadow_volumes_build(&sv2, &w, &g, &w.camera.location, threads, NULL)) {
                 same_volumes_wrong++;
                 continue;
             }

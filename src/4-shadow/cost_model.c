@@ -16,8 +16,19 @@
 
 #define SAMPLE_GRID 24      /* camera rays per axis whose hits are the sample points */
 #define SAMPLES (SAMPLE_GRID * SAMPLE_GRID)
-#define MIN_TIMING 0.0005   /* seconds each round of a cost is timed for, at least */
-#define ROUNDS 5            /* rounds per cost; the fastest counts */
+#define MIN_TIMING 0.0002   /* seconds each round of a cost is timed for, at least */
+#define ROUNDS 3            /* rounds per cost; the fastest counts */
+
+/* A quick calibration (only N_th's costs, for a trial) times less. */
+static int rounds_of(int full)
+{
+    return full ? ROUNDS : 2;
+}
+
+static double min_timing_of(int full)
+{
+    return full ? MIN_TIMING : MIN_TIMING / 2;
+}
 
 typedef struct {
     uint64_t s;
@@ -139,7 +150,7 @@ static int stop_at_opaque(void *user, uint32_t polygon, double t)
 
 /* C_ray: the exact shadow ray through the hierarchy on the sample rays. */
 static double time_shadow_rays(const World *w, const Grid *g, const Bvh *bvh, const SampleRay *rays, int nrays,
-                               volatile double *sink)
+                               volatile double *sink, int full)
 {
     Tracer t;
     if (tracer_init(&t, w, g)) {
@@ -148,7 +159,7 @@ static double time_shadow_rays(const World *w, const Grid *g, const Bvh *bvh, co
     }
     tracer_use_bvh(&t, bvh);
     double best = HUGE_VAL;
-    for (int round = 0; round < ROUNDS; round++) {
+    for (int round = 0; round < rounds_of(full); round++) {
         long n = 0;
         double t0 = clock_thread_cpu(), dt;
         do {
@@ -159,7 +170,7 @@ static double time_shadow_rays(const World *w, const Grid *g, const Bvh *bvh, co
                                             &tests);
             }
             n += nrays;
-        } while ((dt = clock_thread_cpu() - t0) < MIN_TIMING);
+        } while ((dt = clock_thread_cpu() - t0) < min_timing_of(full));
         best = fmin(best, dt / (double)n);
     }
     tracer_free(&t);
@@ -169,7 +180,7 @@ static double time_shadow_rays(const World *w, const Grid *g, const Bvh *bvh, co
 /* C_g: gathering the shadow polygons of the cells that camera segments
  * pierce into buckets, per polygon gathered. */
 static double time_gathering(const World *w, const Grid *g, const ShadowVolumes *sv, int width, int height,
-                             const int *lights, int nlights, volatile double *sink)
+                             const int *lights, int nlights, volatile double *sink, int full)
 {
     ShadowContext ctx;
     if (shadow_context_init(&ctx, w, g, NULL, sv)) {
@@ -195,7 +206,7 @@ static double time_gathering(const World *w, const Grid *g, const ShadowVolumes 
     double best = 0.0;
     if (nseg > 0) {
         best = HUGE_VAL;
-        for (int round = 0; round < ROUNDS; round++) {
+        for (int round = 0; round < rounds_of(full); round++) {
             long gathered = 0;
             double t0 = clock_thread_cpu(), dt;
             do {
@@ -204,7 +215,7 @@ static double time_gathering(const World *w, const Grid *g, const ShadowVolumes 
                     gathered += shadow_bucket_fill_in(&ctx, light, &cells[(size_t)i * (size_t)cap], ncells[i], INT_MAX);
                 }
                 *sink += (double)gathered;
-            } while ((dt = clock_thread_cpu() - t0) < MIN_TIMING);
+            } while ((dt = clock_thread_cpu() - t0) < min_timing_of(full));
             best = gathered > 0 ? fmin(best, dt / (double)gathered) : 0.0;
         }
     }
@@ -213,8 +224,8 @@ static double time_gathering(const World *w, const Grid *g, const ShadowVolumes 
     return best < HUGE_VAL ? best : 0.0;
 }
 
-int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv,
-                         int width, int height)
+static int calibrate(CostModel *m, const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv, int width,
+                     int height, int full)
 {
     memset(m, 0, sizeof *m);
     double start = clock_wall();
@@ -284,7 +295,7 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Bvh 
     /* p, alpha and N_c from whole walks to the light. */
     long cells = 0, ntests = 0, hits = 0;
     int nkeep = 0;
-    for (int i = 0; i < nrays; i++)
+    for (int i = 0; full && i < nrays; i++)
         sample_walk(w, g, stamp, (uint32_t)i + 1, &rays[i], &cells, &ntests, &hits, tests, &nkeep, 4096);
     m->samples = nrays;
     m->n_c = nrays > 0 ? (double)cells / nrays : 0.0;
@@ -298,24 +309,24 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Bvh 
      * inflated by one preemption into an N_th off by a factor of ten. */
     volatile double sink = 0.0;
     /* C_o: ray/polygon tests on the pairs the walks met. */
-    if (nkeep > 0) {
+    if (full && nkeep > 0) {
         m->c_o = HUGE_VAL;
-        for (int round = 0; round < ROUNDS; round++) {
+        for (int round = 0; round < rounds_of(full); round++) {
             long n = 0;
             double t0 = clock_thread_cpu(), t;
             do {
                 for (int i = 0; i < nkeep; i++)
                     sink += intersect_polygon(w, &w->polygons[tests[i].polygon], tests[i].ray.org, tests[i].ray.dir);
                 n += nkeep;
-            } while ((t = clock_thread_cpu() - t0) < MIN_TIMING);
+            } while ((t = clock_thread_cpu() - t0) < min_timing_of(full));
             m->c_o = fmin(m->c_o, t / (double)n);
         }
     }
     /* C_i and C_c: walk set-ups, then whole walks; C_c is the difference
      * per cell step, both timed in alternation so drifts cancel. */
-    if (nrays > 0) {
+    if (full && nrays > 0) {
         m->c_i = m->c_c = HUGE_VAL;
-        for (int round = 0; round < ROUNDS; round++) {
+        for (int round = 0; round < rounds_of(full); round++) {
             long n = 0, steps = 0;
             double t_begin = 0.0, t_walk = 0.0;
             GridWalk walk;
@@ -334,7 +345,7 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Bvh 
                 t_walk += clock_thread_cpu() - t1;
                 t_begin += t1 - t0;
                 n += nrays;
-            } while (t_begin + t_walk < 2 * MIN_TIMING);
+            } while (t_begin + t_walk < 2 * min_timing_of(full));
             m->c_i = fmin(m->c_i, t_begin / (double)n);
             m->c_c = fmin(m->c_c, steps > 0 ? fmax(t_walk - t_begin, 0.0) / (double)steps : 0.0);
         }
@@ -343,7 +354,7 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Bvh 
     if (sv && sv->npolygons > 0 && nrays > 1) {
         m->c_s = HUGE_VAL;
         int sign = 0;
-        for (int round = 0; round < ROUNDS; round++) {
+        for (int round = 0; round < rounds_of(full); round++) {
             long n = 0;
             double t0 = clock_thread_cpu(), t;
             do {
@@ -352,20 +363,33 @@ int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Bvh 
                     sink += shadow_polygon_cross(sp, rays[i].org, rays[i + 1].org, sv->tolerance, &sign) + sign;
                 }
                 n += nrays - 1;
-            } while ((t = clock_thread_cpu() - t0) < MIN_TIMING);
+            } while ((t = clock_thread_cpu() - t0) < min_timing_of(full));
             m->c_s = fmin(m->c_s, t / (double)n);
         }
     }
     if (bvh && nrays > 0)
-        m->c_ray = time_shadow_rays(w, g, bvh, rays, nrays, &sink);
+        m->c_ray = time_shadow_rays(w, g, bvh, rays, nrays, &sink, full);
     if (sv && sv->npolygons > 0)
-        m->c_g = time_gathering(w, g, sv, width, height, lights, nlights, &sink);
+        m->c_g = time_gathering(w, g, sv, width, height, lights, nlights, &sink, full);
     (void)sink;
     free(rays);
     free(tests);
     free(stamp);
-    m->nth = cost_model_threshold(m, m->n_c);
+    m->nth = full ? cost_model_threshold(m, m->n_c) : 0.0;
     m->nth_ray = m->c_ray > 0.0 && m->c_s + m->c_g > 0.0 ? m->c_ray / (m->c_s + m->c_g) : m->nth;
+    m->full = full;
     m->seconds = clock_wall() - start;
     return 0;
+}
+
+int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv,
+                         int width, int height)
+{
+    return calibrate(m, w, g, bvh, sv, width, height, 1);
+}
+
+int cost_model_calibrate_threshold(CostModel *m, const World *w, const Grid *g, const Bvh *bvh,
+                                   const ShadowVolumes *sv, int width, int height)
+{
+    return calibrate(m, w, g, bvh, sv, width, height, 0);
 }

@@ -33,6 +33,7 @@ typedef struct CostModel {
     double c_g;     /* gathering one shadow polygon into a segment's bucket */
     double nth_ray; /* C_ray / (C_s + C_g): the threshold for the shadow ray as fired now */
     double seconds; /* what the calibration cost */
+    int full;       /* 0: only C_ray, C_s and C_g (cost_model_calibrate_threshold) */
     int samples;    /* shadow rays sampled for p and alpha */
 } CostModel;
 
@@ -42,6 +43,11 @@ typedef struct CostModel {
  * or -1 when out of memory. */
 int cost_model_calibrate(CostModel *m, const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv,
                          int width, int height);
+
+/* Only what N_th = C_ray / (C_s + C_g) needs (C_s, C_ray, C_g), for a
+ * quick trial (volume_plan.h); eq. (7)'s values are left 0. */
+int cost_model_calibrate_threshold(CostModel *m, const World *w, const Grid *g, const Bvh *bvh,
+                                   const ShadowVolumes *sv, int width, int height);
 
 /* Eq. (7): N_th for a shadow ray that would visit n_c cells. */
 double cost_model_threshold(const CostModel *m, double n_c);

@@ -189,8 +189,9 @@ static void decide(ShadowContext *ctx, const ShadowQuery *q, Mode mode, int face
 {
     LightState scratch;
     LightState *out = q->segment->state ? &q->segment->state[q->light] : &scratch;
-    if (!ctx->volumes->light[q->light].usable) {
-        /* No volumes for this light: the shadow ray decides, always. */
+    if (!ctx->volumes || !ctx->volumes->light[q->light].usable) {
+        /* No volumes for this light (none built, or none that pay:
+         * volume_plan.h): the shadow ray decides, always. */
         out->depth_known = 0;
         out->self = 0;
         out->condition = COND_UNKNOWN;

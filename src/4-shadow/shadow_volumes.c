@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "clock.h"
 #include "intersect.h"
 
 /* ---- welding vertices by exact position ---------------------------------- */
@@ -468,7 +469,7 @@ static int edge_uses_build(EdgeUses *eu, const World *w, const int *weld, int nc
 
 static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, const Grid *g, const Light *l,
                        const EdgeUses *eu, const Vec3 *eye, PolygonEdge *edges, ShadowPolygon **all, int *nall,
-                       int *cap_all)
+                       int *cap_all, int fill)
 {
     double tol = sv->tolerance;
     lv->occluder = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof *lv->occluder);
@@ -573,7 +574,8 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
     }
     free(uses);
     lv->count = *nall - lv->first;
-    if (status == 0)
+    lv->nitems = regs.n;
+    if (status == 0 && fill)
         status = fill_cells(lv, g, &regs);
     free(regs.r);
     return status;
@@ -624,13 +626,28 @@ static void *build_lights(void *arg)
         int cap = 0;
         j->npolygons[li] = 0;
         j->status = build_light(j->sv, lv, w, j->g, &w->lights[li], j->uses, j->eye, edges, &j->polygons[li],
-                                &j->npolygons[li], &cap);
+                                &j->npolygons[li], &cap, 1);
     }
     free(edges);
     return NULL;
 }
 
-int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads)
+/* Light li can have volumes: it casts shadows, and a parallel light's
+ * plane does not cut the grid box. *cuts: why not, when it does. */
+static int light_can_have_volumes(const World *w, const Grid *g, int li, double tol, int *cuts)
+{
+    *cuts = 0;
+    if (w->lights[li].shadowless)
+        return 0;
+    if (parallel_plane_cuts_box(&w->lights[li], g, tol)) {
+        *cuts = 1;
+        return 0;
+    }
+    return 1;
+}
+
+int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads,
+                         const int8_t *want)
 {
     memset(sv, 0, sizeof *sv);
     sv->tolerance = grid_tolerance(g);
@@ -658,10 +675,10 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     }
     int usable = 0;
     for (int li = 0; status == 0 && li < w->nlights; li++) {
-        if (w->lights[li].shadowless)
+        if (!light_can_have_volumes(w, g, li, sv->tolerance, &sv->light[li].plane_cuts_scene))
             continue;
-        if (parallel_plane_cuts_box(&w->lights[li], g, sv->tolerance)) {
-            sv->light[li].plane_cuts_scene = 1;
+        if (want && !want[li]) {
+            sv->light[li].not_wanted = 1;
             continue;
         }
         sv->light[li].usable = 1;
@@ -761,6 +778,180 @@ void shadow_volumes_free(ShadowVolumes *sv)
     free(sv->planes);
     free(sv->planes_f);
     memset(sv, 0, sizeof *sv);
+}
+
+void shadow_volumes_drop_light(ShadowVolumes *sv, int li)
+{
+    LightVolumes *lv = &sv->light[li];
+    free(lv->cell_start);
+    free(lv->items);
+    free(lv->occluder);
+    lv->cell_start = NULL;
+    lv->items = NULL;
+    lv->occluder = NULL;
+    lv->nitems = 0;
+    lv->usable = 0;
+    lv->dropped = 1;
+}
+
+int shadow_volumes_usable_lights(const ShadowVolumes *sv)
+{
+    int n = 0;
+    for (int i = 0; i < sv->nlights; i++)
+        n += sv->light[i].usable;
+    return n;
+}
+
+/* ---- what a build would cost ---------------------------------------------- */
+
+/* The polygons [first, first + n) of w as a world of their own: their
+ * points (and outlines) copied and renumbered, everything else shared. */
+static int sample_world(World *s, const World *w, int first, int n)
+{
+    *s = *w;
+    s->npolygons = n;
+    s->polygons = malloc(sizeof *s->polygons * (size_t)(n > 0 ? n : 1));
+    int npts = 0, nstarts = 0;
+    for (int i = first; i < first + n; i++) {
+        npts += w->polygons[i].npoints;
+        if (w->polygons[i].first_outline >= 0)
+            nstarts += w->polygons[i].noutlines + 1;
+    }
+    s->points = malloc(sizeof *s->points * (size_t)(npts > 0 ? npts : 1));
+    s->outline_start = malloc(sizeof *s->outline_start * (size_t)(nstarts > 0 ? nstarts : 1));
+    if (!s->polygons || !s->points || !s->outline_start)
+        return -1;
+    s->npoints = npts;
+    s->noutline_starts = nstarts;
+    int pt = 0, st = 0;
+    for (int i = 0; i < n; i++) {
+        Polygon p = w->polygons[first + i];
+        memcpy(&s->points[pt], &w->points[p.first_point], sizeof *s->points * (size_t)p.npoints);
+        if (p.first_outline >= 0) {
+            for (int k = 0; k <= p.noutlines; k++)
+                s->outline_start[st + k] = w->outline_start[p.first_outline + k] - p.first_point + pt;
+            p.first_outline = st;
+            st += p.noutlines + 1;
+        }
+        p.first_point = pt;
+        pt += p.npoints;
+        s->polygons[i] = p;
+    }
+    return 0;
+}
+
+static void sample_world_free(World *s)
+{
+    free(s->polygons);
+    free(s->points);
+    free(s->outline_start);
+}
+
+/* The fastest of a few timings: on a shared machine a timing can only be
+ * slowed down, never sped up. */
+#define ESTIMATE_ROUNDS 2
+
+int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, const int8_t *want, int sample,
+                            VolumesEstimate *est)
+{
+    memset(est, 0, sizeof *est);
+    est->light_seconds = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_seconds);
+    est->light_registrations = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_registrations);
+    if (!est->light_seconds || !est->light_registrations)
+        return -1;
+    if (w->npolygons == 0)
+        return 0;
+    /* A run of consecutive polygons from the middle: a mesh's neighbours
+     * are mostly neighbours in its list too, so the sample keeps most of
+     * its edges shared, as the whole does. (Its cut edges become
+     * silhouettes: if anything, the estimate is high.) */
+    int n = sample < w->npolygons ? sample : w->npolygons;
+    int first = (w->npolygons - n) / 2;
+    World s;
+    int status = sample_world(&s, w, first, n);
+    long total_points = 0;
+    for (int i = 0; i < w->npolygons; i++)
+        total_points += w->polygons[i].npoints;
+    est->sample_polygons = n;
+    est->scale = s.npoints > 0 ? (double)total_points / (double)s.npoints : 1.0;
+    int maxpts = 3;
+    for (int i = 0; i < s.npolygons; i++)
+        if (s.polygons[i].npoints + 3 > maxpts)
+            maxpts = s.polygons[i].npoints + 3;
+    PolygonEdge *edges = status == 0 ? malloc(sizeof *edges * (size_t)maxpts) : NULL;
+    if (!edges)
+        status = -1;
+    ShadowVolumes sv;
+    memset(&sv, 0, sizeof sv);
+    sv.tolerance = grid_tolerance(g);
+    LightVolumes lv;
+    /* The shared part: welding and the edges' uses. */
+    EdgeUses uses = { NULL, 0 };
+    est->shared_seconds = HUGE_VAL;
+    for (int round = 0; status == 0 && round < ESTIMATE_ROUNDS; round++) {
+        free(uses.uses);
+        uses.uses = NULL;
+        double t0 = clock_thread_cpu();
+        int nclasses = 0;
+        int *weld = weld_points(&s, &nclasses);
+        status = weld && edge_uses_build(&uses, &s, weld, nclasses, edges) == 0 ? 0 : -1;
+        free(weld);
+        est->shared_seconds = fmin(est->shared_seconds, (clock_thread_cpu() - t0) * est->scale);
+    }
+    /* Each wanted light's silhouettes and registrations on the sample. */
+    for (int li = 0; status == 0 && li < w->nlights; li++) {
+        int cuts;
+        if (!light_can_have_volumes(w, g, li, sv.tolerance, &cuts) || (want && !want[li]))
+            continue;
+        double best = HUGE_VAL;
+        for (int round = 0; status == 0 && round < ESTIMATE_ROUNDS; round++) {
+            memset(&lv, 0, sizeof lv);
+            ShadowPolygon *polygons = NULL;
+            int npolygons = 0, cap = 0;
+            double t0 = clock_thread_cpu();
+            status = build_light(&sv, &lv, &s, g, &w->lights[li], &uses, eye, edges, &polygons, &npolygons, &cap, 0);
+            best = fmin(best, clock_thread_cpu() - t0);
+            est->light_registrations[li] = (double)lv.nitems * est->scale;
+            free(lv.occluder);
+            free(polygons);
+        }
+        est->light_seconds[li] = best * est->scale;
+    }
+    /* Filling a light's cells: its offsets span the whole grid, whatever
+     * the sample, so that part is timed at full size (with no items). */
+    est->fill_seconds = HUGE_VAL;
+    for (int round = 0; status == 0 && round < ESTIMATE_ROUNDS; round++) {
+        memset(&lv, 0, sizeof lv);
+        RegList none = { NULL, 0, 0 };
+        double t0 = clock_thread_cpu();
+        status = fill_cells(&lv, g, &none);
+        est->fill_seconds = fmin(est->fill_seconds, clock_thread_cpu() - t0);
+        free(lv.cell_start);
+        free(lv.items);
+    }
+    for (int li = 0; status == 0 && li < w->nlights; li++)
+        if (est->light_seconds[li] > 0.0)
+            est->light_seconds[li] += est->fill_seconds;
+    free(uses.uses);
+    free(edges);
+    sample_world_free(&s);
+    if (status) {
+        shadow_volumes_estimate_free(est);
+        return -1;
+    }
+    if (!(est->shared_seconds < HUGE_VAL))
+        est->shared_seconds = 0.0;
+    if (!(est->fill_seconds < HUGE_VAL))
+        est->fill_seconds = 0.0;
+    return 0;
+}
+
+void shadow_volumes_estimate_free(VolumesEstimate *est)
+{
+    free(est->light_seconds);
+    free(est->light_registrations);
+    est->light_seconds = NULL;
+    est->light_registrations = NULL;
 }
 
 int shadow_volumes_set_precision(ShadowVolumes *sv, PlanePrecision p)

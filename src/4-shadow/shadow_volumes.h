@@ -60,6 +60,8 @@ typedef struct {
      * polygons cannot say). */
     int usable;
     int plane_cuts_scene; /* why a parallel light has none */
+    int not_wanted;       /* the build was asked to leave it out (volume_plan.h) */
+    int dropped;          /* built, then dropped (shadow_volumes_drop_light) */
     int first, count;     /* shadow polygons of this light: polygons[first .. first+count) */
     uint32_t *cell_start; /* ncells + 1 offsets into items */
     uint32_t *items;      /* global shadow polygon indices, grouped by cell */
@@ -106,12 +108,38 @@ typedef struct ShadowVolumes {
 } ShadowVolumes;
 
 /* Builds the volumes of every light that casts shadows (shadowless lights
- * get none), the lights on up to `threads` threads (the volumes are the
+ * get none) and that `want` asks for (NULL: all; else want[i] != 0 for
+ * light i), the lights on up to `threads` threads (the volumes are the
  * same for any number). `eye`: where every camera ray starts, or NULL when
  * they start at different points (orthographic camera): no eye count
  * then. Returns 0, or -1 when out of memory. */
-int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads);
+int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads,
+                         const int8_t *want);
 void shadow_volumes_free(ShadowVolumes *sv);
+
+/* Frees light li's registrations and turns its volumes off: from then on
+ * every method fires shadow rays toward it. Its shadow polygons stay in
+ * the shared array (other lights' indices point past them). */
+void shadow_volumes_drop_light(ShadowVolumes *sv, int li);
+int shadow_volumes_usable_lights(const ShadowVolumes *sv);
+
+/* What shadow_volumes_build would cost on one thread, estimated before
+ * building: the same code (welding, edges' uses, silhouettes, wedges
+ * registered in the grid) timed on a run of `sample` consecutive polygons
+ * and scaled by the polygons' points, whole over sample; filling a light's
+ * cells timed at the grid's full size. */
+typedef struct {
+    int sample_polygons;
+    double scale;                /* points in the scene over points in the sample */
+    double shared_seconds;       /* welding and edges' uses, once for all lights */
+    double *light_seconds;       /* per light (0: not estimated), filling included */
+    double *light_registrations; /* per light, estimated */
+    double fill_seconds;         /* filling one light's cells (in light_seconds) */
+} VolumesEstimate;
+
+int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, const int8_t *want, int sample,
+                            VolumesEstimate *est);
+void shadow_volumes_estimate_free(VolumesEstimate *est);
 
 /* Chooses how the planes are tested (PLANES_DOUBLE after a build). Returns
  * 0, or -1 when out of memory. */

@@ -111,6 +111,10 @@ void options_usage(FILE *f)
             "      --nth N|auto|per-point  hst's switching threshold N_th: fixed, the measured\n"
             "                         cost of a shadow ray over that of counting one shadow polygon\n"
             "                         (default), or the paper's eq. (7) per shading point\n"
+            "      --volumes auto|always  hst: build a light's shadow volumes only where the cost\n"
+            "                         model, measured before building, says they repay their\n"
+            "                         build on this image, else shadow rays only (default auto);\n"
+            "                         always: every light's, as the paper does\n"
             "      --pixel-coherence on|off  hst: carry depth counts from the previous pixel's\n"
             "                         hit instead of the eye where cheaper (default on)\n"
             "      --tolerance R      margin of the shadow tests, relative to the scene's\n"
@@ -343,6 +347,15 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 return -1;
             }
             opt->tolerance = t;
+        } else if (is_long(a, "--volumes")) {
+            if (!(v = option_value(argc, argv, &i, "--volumes", err, errlen)))
+                return -1;
+            if (strcmp(v, "auto") == 0 || strcmp(v, "always") == 0) {
+                opt->volumes_always = strcmp(v, "always") == 0;
+            } else {
+                snprintf(err, (size_t)errlen, "--volumes '%s': expected auto or always", v);
+                return -1;
+            }
         } else if (is_long(a, "--pixel-coherence")) {
             if (!(v = option_value(argc, argv, &i, "--pixel-coherence", err, errlen)))
                 return -1;

@@ -29,6 +29,7 @@ typedef struct {
     double nth;                   /* hst's N_th; NTH_AUTO: eq. (7) once per scene; NTH_PER_POINT */
     int verify_shadows;        /* 1 --verify-shadows, 2 --verify-reference */
     int pixel_coherence;          /* hst: counts from the neighbouring pixel (--pixel-coherence) */
+    int volumes_always;           /* hst: build every light's volumes (--volumes always); 0: auto */
     int grid[3];                  /* 0: choose from the polygon count */
     const char *include_paths[MAX_INCLUDE_PATHS];
     int ninclude_paths;

@@ -10,6 +10,7 @@
 #include "shadow.h"
 #include "shadow_embree.h"
 #include "shadow_volumes.h"
+#include "volume_plan.h"
 
 void stats_add(RenderStats *t, const RenderStats *p)
 {
@@ -27,6 +28,56 @@ static double others_seconds(const StatsReport *r)
 {
     double o = r->render.render_seconds - r->render.shadow.shadow_seconds;
     return (o > 0 ? o : 0) + r->output_seconds;
+}
+
+/* Which lights got shadow volumes, and what the cost model measured to
+ * decide it (volume_plan.h). */
+static void print_plan(FILE *f, const VolumePlan *p)
+{
+    if (p->mode == VOLUMES_ALWAYS) {
+        fprintf(f, "  volume plan every light's volumes built (--volumes always)\n");
+        return;
+    }
+    fprintf(f, "  volume plan %d pilot rays for %.0f pixels; touching check %.1f ns a decision, recording cells %.1f ns"
+               " a camera ray; welding and edges' uses estimated %.1f ms (sample of %d polygons); planned in %.1f ms\n",
+            p->pilot_rays, p->pixels, p->c_touch * 1e9, p->c_record * 1e9, p->shared_estimate * 1e3,
+            p->sample_polygons, p->seconds * 1e3);
+    for (int i = 0; i < p->nlights; i++) {
+        const LightPlan *l = &p->light[i];
+        fprintf(f, "    light %d   %s", i, volume_plan_decision_name(l->decision));
+        if (l->decision == PLAN_IMPOSSIBLE) {
+            fprintf(f, "\n");
+            continue;
+        }
+        fprintf(f, ": %.0f decisions expected, shadow ray %.1f ns, build estimated %.2f ms, gain at most %.2f ms",
+                l->queries, l->c_ray * 1e9, l->build_estimate * 1e3, l->gain_bound * 1e3);
+        if (l->decision == PLAN_KEPT || l->decision == PLAN_DROPPED || l->decision == PLAN_DROPPED_ALL)
+            fprintf(f, "; pilot: hst %.1f ns against the shadow ray's %.1f ns, gain %.2f ms", l->c_hst * 1e9,
+                    l->c_ray_beside * 1e9, l->gain * 1e3);
+        fprintf(f, "\n");
+    }
+}
+
+static void json_plan(FILE *f, const VolumePlan *p)
+{
+    fprintf(f, ",\n  \"volume_plan\": {\"mode\": \"%s\"", p->mode == VOLUMES_ALWAYS ? "always" : "auto");
+    if (p->mode == VOLUMES_AUTO) {
+        fprintf(f, ", \"pilot_rays\": %d, \"pixels\": %.0f, \"touch_ns\": %.3f, \"record_ns\": %.3f, "
+                   "\"shared_estimate_s\": %.6f, \"sample_polygons\": %d, \"seconds\": %.6f, \"lights\": [",
+                p->pilot_rays, p->pixels, p->c_touch * 1e9, p->c_record * 1e9, p->shared_estimate, p->sample_polygons,
+                p->seconds);
+        for (int i = 0; i < p->nlights; i++) {
+            const LightPlan *l = &p->light[i];
+            fprintf(f, "%s\n    {\"decision\": \"%s\", \"volumes\": %s, \"queries\": %.0f, \"shadow_ray_ns\": %.3f, "
+                       "\"build_estimate_s\": %.6f, \"gain_bound_s\": %.6f, \"hst_ns\": %.3f, "
+                       "\"shadow_ray_beside_ns\": %.3f, \"gain_s\": %.6f}",
+                    i ? "," : "", volume_plan_decision_name(l->decision), l->decision == PLAN_KEPT ? "true" : "false",
+                    l->queries, l->c_ray * 1e9, l->build_estimate, l->gain_bound, l->c_hst * 1e9,
+                    l->c_ray_beside * 1e9, l->gain);
+        }
+        fprintf(f, "]");
+    }
+    fprintf(f, "}");
 }
 
 void stats_print(FILE *f, const StatsReport *r)
@@ -63,6 +114,8 @@ void stats_print(FILE *f, const StatsReport *r)
     for (int i = 0; i < SCHEME_COUNT; i++)
         fprintf(f, "  %s %llu", shadow_scheme_names[i], (unsigned long long)s->shadow.shadow_schemes[i]);
     fprintf(f, "\n");
+    if (r->plan)
+        print_plan(f, r->plan);
     if (r->volumes) {
         const ShadowVolumes *sv = r->volumes;
         fprintf(f, "  volumes     %d welded vertices; built in %.3f s; tolerance %.3g\n", sv->nwelded_vertices,
@@ -205,6 +258,8 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
                 (unsigned long long)s->shadow.reference_ties, (unsigned long long)s->shadow.reference_wrong,
                 (unsigned long long)s->shadow.reference_ray_wrong);
     fprintf(f, "}");
+    if (r->plan)
+        json_plan(f, r->plan);
     if (r->volumes) {
         const ShadowVolumes *sv = r->volumes;
         fprintf(f, ",\n  \"volumes\": {\"seconds\": %.6f, \"welded_vertices\": %d, \"tolerance\": %.3g, \"lights\": [",

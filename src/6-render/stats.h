@@ -34,6 +34,7 @@ typedef struct {
     const SceneApproximation *approximations;
     double parse_seconds, preprocess_seconds, output_seconds, wall_seconds;
     double volumes_seconds;           /* silhouettes and shadow polygon registration (in preprocessing) */
+    const struct VolumePlan *plan;    /* which lights got volumes and why; NULL unless the method uses them */
     const struct ShadowVolumes *volumes; /* NULL unless the method uses them */
     const struct EmbreeScene *embree;    /* NULL unless the method is embree */
     const struct CostModel *cost;     /* the calibration, when made */

@@ -25,6 +25,7 @@
 #include "shadow_embree.h"
 #include "shadow_volumes.h"
 #include "stats.h"
+#include "volume_plan.h"
 #include "vs_povray.h"
 #include "world.h"
 
@@ -89,6 +90,7 @@ int main(int argc, char **argv)
     Grid grid;
     Bvh bvh;
     ShadowVolumes volumes;
+    VolumePlan plan;
     EmbreeScene *embree = NULL;
     CostModel cost;
     AovImage aov;
@@ -97,6 +99,7 @@ int main(int argc, char **argv)
     memset(&grid, 0, sizeof grid);
     memset(&bvh, 0, sizeof bvh);
     memset(&volumes, 0, sizeof volumes);
+    memset(&plan, 0, sizeof plan);
     memset(&cost, 0, sizeof cost);
     memset(&aov, 0, sizeof aov);
     memset(&prov, 0, sizeof prov);
@@ -218,20 +221,33 @@ int main(int argc, char **argv)
     }
     const ShadowMethod *method = shadow_method_find(opt.shadows);
     int have_volumes = 0;
+    /* N_th as the render will use it (auto: measured with the volumes). */
+    double nth = opt.nth == NTH_PER_POINT ? -1.0 : opt.nth == NTH_AUTO ? 0.0 : opt.nth;
     if (method->uses_volumes && opt.quality >= 4) {
-        double tv = clock_wall();
+        /* hst builds only the volumes that pay (volume_plan.h); the pure
+         * volume method is the paper's baseline and builds them all. */
+        VolumePlanOptions po;
+        po.mode = method->test == shadow_hst_test && !opt.volumes_always ? VOLUMES_AUTO : VOLUMES_ALWAYS;
+        po.width = opt.width;
+        po.height = opt.height;
+        po.threads = threads;
+        po.precision = opt.plane_precision;
+        po.nth = opt.nth == NTH_PER_POINT ? VOLUME_PLAN_NTH_PER_POINT : opt.nth == NTH_AUTO ? VOLUME_PLAN_NTH_AUTO : opt.nth;
         const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
-        if (shadow_volumes_build(&volumes, &world, &grid, eye, threads) ||
-            shadow_volumes_set_precision(&volumes, (PlanePrecision)opt.plane_precision)) {
+        if (volume_plan_build(&plan, &volumes, &cost, &world, &grid, &bvh, eye, &po)) {
             fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
             status = EXIT_IO;
             goto done;
         }
-        have_volumes = 1;
-        report.volumes_seconds = clock_wall() - tv;
-        if (cost_model_calibrate(&cost, &world, &grid, &bvh, &volumes, opt.width, opt.height) == 0)
+        report.plan = &plan;
+        report.volumes_seconds = plan.build_seconds;
+        have_volumes = volumes.light != NULL;
+        if (have_volumes) {
+            report.volumes = &volumes;
             report.cost = &cost;
-        report.volumes = &volumes;
+            if (opt.nth == NTH_AUTO)
+                nth = cost.nth_ray;
+        }
     }
     if (method->test == shadow_embree_test && opt.quality >= 4) {
         embree = shadow_embree_build(&world, threads, err, sizeof err);
@@ -263,7 +279,7 @@ int main(int argc, char **argv)
     ropt.cost = &cost;
     ropt.verify = opt.verify_shadows;
     ropt.pixel_coherence = opt.pixel_coherence;
-    ropt.nth = opt.nth == NTH_PER_POINT ? -1.0 : opt.nth == NTH_AUTO ? cost.nth_ray : opt.nth;
+    ropt.nth = nth;
     report.nth = ropt.nth;
     report.nth_mode = opt.nth == NTH_PER_POINT ? "per-point" : opt.nth == NTH_AUTO ? "auto (C_ray / (C_s + C_g))" : "fixed";
     report.verify = opt.verify_shadows;
@@ -335,6 +351,7 @@ done:
     provenance_free(&prov);
     aov_image_free(&aov);
     shadow_volumes_free(&volumes);
+    volume_plan_free(&plan);
     shadow_embree_free(embree);
     bvh_free(&bvh);
     grid_free(&grid);

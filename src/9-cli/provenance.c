@@ -8,6 +8,7 @@
 #include "aov.h"
 #include "config.h"
 #include "cost_model.h"
+#include "volume_plan.h"
 
 int provenance_hash_file(const char *path, uint64_t *hash)
 {
@@ -97,9 +98,10 @@ static char *resolved_options(const Options *opt, const StatsReport *r)
         return NULL;
     int pp = opt->plane_precision >= 0 && opt->plane_precision < 3 ? opt->plane_precision : 0;
     snprintf(s, len,
-             "--width %d --height %d +Q%d --shadows %s --nth %s --pixel-coherence %s --tolerance %s "
+             "--width %d --height %d +Q%d --shadows %s --volumes %s --nth %s --pixel-coherence %s --tolerance %s "
              "--plane-precision %s --grid %dx%dx%d --threads %d%s%s%s%s",
-             opt->width, opt->height, opt->quality, opt->shadows, nth, opt->pixel_coherence ? "on" : "off",
+             opt->width, opt->height, opt->quality, opt->shadows, opt->volumes_always ? "always" : "auto", nth,
+             opt->pixel_coherence ? "on" : "off",
              tolerance, precision_names[pp], r->grid[0], r->grid[1], r->grid[2], r->threads,
              opt->exr_float ? " --exr-float" : "",
              opt->verify_shadows == 2 ? " --verify-reference" : opt->verify_shadows ? " --verify-shadows" : "",
@@ -125,6 +127,22 @@ static void add_double(Provenance *p, const char *name, double value)
         p->attr[p->n++] = (ImageAttribute){ name, IMAGE_ATTR_DOUBLE, NULL, 0, value };
 }
 
+/* Which lights got shadow volumes and why (volume_plan.h), one line:
+ * "auto; L1 built and kept; L2 not built: ...". */
+static char *plan_summary(const VolumePlan *plan)
+{
+    size_t len = 32;
+    for (int i = 0; i < plan->nlights; i++)
+        len += 16 + strlen(volume_plan_decision_name(plan->light[i].decision));
+    char *s = malloc(len);
+    if (!s)
+        return NULL;
+    size_t at = (size_t)snprintf(s, len, "%s", plan->mode == VOLUMES_ALWAYS ? "always" : "auto");
+    for (int i = 0; i < plan->nlights && at < len; i++)
+        at += (size_t)snprintf(s + at, len - at, "; L%d %s", i + 1, volume_plan_decision_name(plan->light[i].decision));
+    return s;
+}
+
 int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, const StatsReport *r)
 {
     memset(p, 0, sizeof *p);
@@ -148,6 +166,14 @@ int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, c
     add_int(p, "hstrace.threads", r->threads);
     add_int(p, "hstrace.lights", r->nlights);
     add_int(p, "hstrace.polygons", r->npolygons);
+    if (r->plan) {
+        p->volumes = plan_summary(r->plan);
+        if (!p->volumes) {
+            provenance_free(p);
+            return -1;
+        }
+        add_string(p, "hstrace.volumes", p->volumes);
+    }
     if (r->cost) {
         const CostModel *c = r->cost;
         add_double(p, "hstrace.nth", r->nth); /* negative: per shading point */
@@ -180,6 +206,7 @@ void provenance_free(Provenance *p)
 {
     free(p->command_line);
     free(p->options);
-    p->command_line = p->options = NULL;
+    free(p->volumes);
+    p->command_line = p->options = p->volumes = NULL;
     p->n = 0;
 }

@@ -17,7 +17,7 @@
 typedef struct {
     ImageAttribute attr[PROVENANCE_MAX_ATTRIBUTES];
     int n;
-    char *command_line, *options;
+    char *command_line, *options, *volumes;
     char scene_hash[32];
 } Provenance;
 

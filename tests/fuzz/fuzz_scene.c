@@ -21,6 +21,7 @@
 #include "render.h"
 #include "shadow.h"
 #include "shadow_volumes.h"
+#include "volume_plan.h"
 #include "world.h"
 
 #ifndef FUZZ_INCLUDE_DIR
@@ -51,7 +52,7 @@ static void render_tiny(const Scene *scene)
     CostModel cost;
     memset(&cost, 0, sizeof cost);
     const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
-    if (shadow_volumes_build(&volumes, &world, &grid, eye, 1) == 0) {
+    if (shadow_volumes_build(&volumes, &world, &grid, eye, 1, NULL) == 0) {
         (void)cost_model_calibrate(&cost, &world, &grid, &bvh, &volumes, 4, 3);
         RenderOptions ropt;
         memset(&ropt, 0, sizeof ropt);
@@ -72,6 +73,13 @@ static void render_tiny(const Scene *scene)
             image_free(&img);
         shadow_volumes_free(&volumes);
     }
+    /* The cost model's plan of which volumes pay: its pilot, its estimate
+     * on a sample of the polygons, and whatever it builds. */
+    VolumePlan plan;
+    VolumePlanOptions po = { VOLUMES_AUTO, 4, 3, 1, 0, VOLUME_PLAN_NTH_AUTO };
+    (void)volume_plan_build(&plan, &volumes, &cost, &world, &grid, &bvh, eye, &po);
+    volume_plan_free(&plan);
+    shadow_volumes_free(&volumes);
     bvh_free(&bvh);
     grid_free(&grid);
     world_free(&world);
