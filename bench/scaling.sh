@@ -5,13 +5,15 @@
 # each scene. Per run: wall time, CPU time and peak memory (the process's
 # maximum resident set, from wait4), and for hstrace the preprocessing and
 # shadow-testing split of --stats-json. 320x240, 1 thread, EXR output;
-# every figure is the median of RUNS runs (default 1: the series shows growth,
-# not small ratios). Plots with gnuplot (Debian: gnuplot-nox) when present.
+# every figure is the median of RUNS runs, the programs interleaved within
+# each run (default 3). hst is the default (only the volumes the cost model
+# expects to pay), hst-always builds every light's. Then the biggest cell
+# at 1280x960, and on 1 and 2 threads. Plots with gnuplot (Debian: gnuplot-nox) when present.
 # Writes bench/scaling.md and bench/scaling.{svg,png}.
 #
 # usage: bench/scaling.sh [BUILDDIR]   (default: the current folder)
 #   env: SCALING_TRIANGLES (default "100 1000 10000 100000 1000000"),
-#        SCALING_LIGHTS (default "1 2 4 8"), SCALING_RUNS (default 1)
+#        SCALING_LIGHTS (default "1 2 4 8"), SCALING_RUNS (default 3)
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/.." && pwd)
@@ -21,7 +23,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/hstscale.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 triangles=${SCALING_TRIANGLES:-"100 1000 10000 100000 1000000"}
 lights=${SCALING_LIGHTS:-"1 2 4 8"}
-runs=${SCALING_RUNS:-1}
+runs=${SCALING_RUNS:-3}
 for n in $triangles; do
     for l in $lights; do
         sh "$src/scenes/make-mesh.sh" "$n" "$l" >"$work/mesh-$n-$l.pov"
@@ -31,7 +33,7 @@ python3 - "$build/hstrace" "$work" "$here" "$triangles" "$lights" "$runs" <<'PY'
 import json, os, shutil, statistics, subprocess, sys, time
 
 hstrace, work, here, triangles, lights, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4].split(), sys.argv[5].split(), int(sys.argv[6])
-methods = ["conventional", "cache", "volume", "hst"]
+methods = ["conventional", "cache", "volume", "hst", "hst-always"]
 povray = shutil.which("povray")
 size = ["--width", "320", "--height", "240", "--threads", "1"]
 
@@ -47,29 +49,63 @@ def run(cmd, cwd):
     return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss
 
 
+def hstrace_cmd(m, scene, extra):
+    """The command of one of hstrace's columns: a method, or hst with every light's volumes built."""
+    opts = ["--shadows", "hst", "--volumes", "always"] if m == "hst-always" else ["--shadows", m]
+    return [hstrace, scene, *extra, *opts]
+
+
+def measure(m, scene, extra, js):
+    """One run: wall, CPU, peak KiB, and for hstrace parse + preprocessing and shadow-testing seconds."""
+    if m == "povray":
+        w, h = "320", "240"
+        if "--width" in extra:
+            w, h = extra[extra.index("--width") + 1], extra[extra.index("--height") + 1]
+        threads = extra[extra.index("--threads") + 1] if "--threads" in extra else "1"
+        cmd = [povray, f"+I{scene}", f"+O{work}/p.exr", "+FE", "-A", "-D", "-GA", f"+WT{threads}", f"+W{w}", f"+H{h}"]
+        return run(cmd, work) + (None, None)
+    cmd = hstrace_cmd(m, scene, extra) + ["-o", f"{work}/h.exr", "--stats-json", js]
+    wall, cpu, rss = run(cmd, work)
+    t = json.load(open(js))["time"]
+    return wall, cpu, rss, t["parse"] + t["preprocessing"], t["shadow_testing"]
+
+
+def medians(columns, scene, extra, label):
+    """Every column measured RUNS times, interleaved (A B C A B C ...), so
+    that a change of load falls on all of them alike; the medians."""
+    samples = {m: [] for m in columns}
+    for r in range(runs):
+        for m in columns:
+            samples[m].append(measure(m, scene, extra, f"{work}/{m}.json"))
+    per = {}
+    for m in columns:
+        med = lambda i: statistics.median(s[i] for s in samples[m]) if samples[m][0][i] is not None else None
+        per[m] = [med(i) for i in range(5)]
+    print(f"scaling: {label} done", file=sys.stderr)
+    return per
+
+
 rows = []
 for n in triangles:
     for l in lights:
         scene = f"mesh-{n}-{l}.pov"
         with open(os.path.join(work, scene)) as f:
             exact = next(int(line.split()[-1]) for line in f if line.startswith("// triangles:"))
-        per = {}
-        for m in methods + (["povray"] if povray else []):
-            samples = []
-            for r in range(runs):
-                if m == "povray":
-                    cmd = [povray, f"+I{scene}", f"+O{work}/p.exr", "+FE", "-A", "-D", "-GA", "+WT1", "+W320", "+H240"]
-                    samples.append(run(cmd, work) + (None, None))
-                else:
-                    js = f"{work}/{m}.json"
-                    cmd = [hstrace, scene, *size, "--shadows", m, "-o", f"{work}/h.exr", "--stats-json", js]
-                    wall, cpu, rss = run(cmd, work)
-                    t = json.load(open(js))["time"]
-                    samples.append((wall, cpu, rss, t["parse"] + t["preprocessing"], t["shadow_testing"]))
-            med = lambda i: statistics.median(s[i] for s in samples) if samples[0][i] is not None else None
-            per[m] = [med(i) for i in range(5)]
+        per = medians(methods + (["povray"] if povray else []), scene, size, f"{exact} triangles, {l} lights")
         rows.append((exact, int(l), per))
-        print(f"scaling: {exact} triangles, {l} lights done", file=sys.stderr)
+
+# The biggest cell again where shadow testing weighs most (1280x960), and on
+# 1 and 2 threads (the thread-scaling rows).
+big_n, big_l = triangles[-1], lights[-1]
+big = f"mesh-{big_n}-{big_l}.pov"
+with open(os.path.join(work, big)) as f:
+    big_exact = next(int(line.split()[-1]) for line in f if line.startswith("// triangles:"))
+large = medians(["conventional", "hst", "hst-always"] + (["povray"] if povray else []), big,
+                ["--width", "1280", "--height", "960", "--threads", "1"], f"{big_exact} triangles at 1280x960")
+threads = {}
+for t in ("1", "2"):
+    threads[t] = medians(["conventional", "hst", "hst-always"], big, ["--width", "320", "--height", "240", "--threads", t],
+                         f"{big_exact} triangles on {t} thread(s)")
 
 have = methods + (["povray"] if povray else [])
 out = os.path.join(here, "scaling.md")
@@ -92,6 +128,31 @@ with open(out, "w") as f:
     table("**Wall time (s)**", have, lambda v: f"{v[0]:.2f}")
     table("**hstrace: parse + preprocessing / shadow testing (s)**", methods, lambda v: f"{v[3]:.2f} / {v[4]:.2f}")
     table("**Peak memory (MiB)**", have, lambda v: f"{v[2] / 1024:.0f}")
+    f.write("**hst against conventional** (wall time and peak memory, hst over conventional; hst is the default, "
+            "which builds only the volumes the cost model expects to pay, `hst-always` builds every light's)\n\n")
+    f.write("| triangles | lights | hst wall | hst memory | hst-always wall | hst-always memory |\n|---|---|---|---|---|---|\n")
+    for exact, l, per in rows:
+        c = per["conventional"]
+        f.write(f"| {exact} | {l} | {per['hst'][0] / c[0]:.3f} | {per['hst'][2] / c[2]:.3f} | "
+                f"{per['hst-always'][0] / c[0]:.3f} | {per['hst-always'][2] / c[2]:.3f} |\n")
+    worst = max(per["hst"][0] / per["conventional"][0] for _, _, per in rows)
+    over = sum(1 for _, _, per in rows if per["hst"][0] > 1.02 * per["conventional"][0])
+    f.write(f"\nWorst hst/conventional wall ratio {worst:.3f}; cells above 1.02: {over} of {len(rows)}.\n\n")
+    f.write(f"**{big_exact} triangles, {big_l} lights at 1280x960, 1 thread** (median of {runs})\n\n")
+    f.write("| program | wall (s) | CPU (s) | parse + preprocessing (s) | shadow testing (s) | peak (MiB) | wall / conventional |\n")
+    f.write("|---|---|---|---|---|---|---|\n")
+    for m, v in large.items():
+        prep = f"{v[3]:.2f}" if v[3] is not None else "-"
+        shadow = f"{v[4]:.2f}" if v[4] is not None else "-"
+        f.write(f"| {m} | {v[0]:.2f} | {v[1]:.2f} | {prep} | {shadow} | {v[2] / 1024:.0f} | "
+                f"{v[0] / large['conventional'][0]:.3f} |\n")
+    f.write(f"\n**Threads: {big_exact} triangles, {big_l} lights, 320x240** (median of {runs}; speed-up = 1 thread over 2)\n\n")
+    f.write("| method | wall 1 thread | wall 2 threads | speed-up | prep. 1 thread | prep. 2 threads | speed-up |\n")
+    f.write("|---|---|---|---|---|---|---|\n")
+    for m in ("conventional", "hst", "hst-always"):
+        a, b = threads["1"][m], threads["2"][m]
+        f.write(f"| {m} | {a[0]:.2f} | {b[0]:.2f} | {a[0] / b[0]:.2f} | {a[3]:.2f} | {b[3]:.2f} | {a[3] / b[3]:.2f} |\n")
+    f.write("\n")
     # One data file per light count for the plot: wall time against triangles.
     for l in lights:
         with open(os.path.join(work, f"plot-{l}.dat"), "w") as d:

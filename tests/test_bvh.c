@@ -239,7 +239,16 @@ static Vec3 point_on(const World *w, const Polygon *p, uint64_t *s)
     return v3_add(v[0], v3_add(v3_scale(v3_sub(v[1], v[0]), a), v3_scale(v3_sub(v[2], v[0]), b)));
 }
 
-static void check_world(const char *name, const World *w)
+/* "NAME (AVX2)", for the descriptions of the second pass. */
+static const char *avx2_name(const char *name)
+{
+    static char buf[1100];
+    snprintf(buf, sizeof buf, "%s (AVX2)", name);
+    return buf;
+}
+
+/* avx2: the hierarchy's traversals with the AVX2 box test (else SSE2's). */
+static void check_world(const char *name, const World *w, int avx2)
 {
     Vec3 extra[1 + 8 * 16];
     int nextra = grid_extra_points(w, extra, (int)(sizeof extra / sizeof extra[0]));
@@ -266,15 +275,23 @@ static void check_world(const char *name, const World *w)
             BvhRay r = bvh_ray(o, d);
             double e1[BVH_WIDTH], e2[BVH_WIDTH];
             double t1 = j % 3 ? HUGE_VAL : 10.0 * unit(&rs);
-            unsigned m1 = bvh_node_hits(&b.nodes[i], &r, 0.0, t1, e1), m2 = bvh_node_hits_plain(&b.nodes[i], &r, 0.0, t1, e2);
+            unsigned m2 = bvh_node_hits_plain(&b.nodes[i], &r, 0.0, t1, e2), m1;
+#if BVH_HAVE_AVX2_PATH
+            if (avx2)
+                m1 = bvh_node_hits_avx2(&b.nodes[i], &r, 0.0, t1, e1);
+            else
+#endif
+                m1 = bvh_node_hits(&b.nodes[i], &r, 0.0, t1, e1);
             node_tests++;
             int differ = m1 != m2;
             for (int k = 0; k < BVH_WIDTH; k++)
                 differ |= (m1 & (1u << k)) && memcmp(&e1[k], &e2[k], sizeof e1[k]) != 0;
             node_differ += differ;
         }
-    tap_ok(node_differ == 0, "%s: the SSE2 and plain box tests agree on %d node tests (%d differ)", name, node_tests,
-           node_differ);
+    tap_ok(node_differ == 0, "%s: the %s and plain box tests agree on %d node tests (%d differ)", name,
+           avx2 ? "AVX2" : "SSE2", node_tests, node_differ);
+    if (avx2)
+        name = avx2_name(name);
     for (int i = 0; i < w->npolygons; i++)
         once &= seen[i] == 1;
     tap_ok(shape == 0 && once && b.depth <= BVH_MAX_DEPTH,
@@ -287,6 +304,7 @@ static void check_world(const char *name, const World *w)
     tracer_init(&grid, w, &g);
     tracer_init(&tree, w, &g);
     tracer_use_bvh(&tree, &b);
+    tracer_use_avx2(&tree, avx2);
     Tally t = { 0 };
     HitList la = { 0 }, lb = { 0 };
     uint64_t s = 0x9E3779B97F4A7C15ULL;
@@ -366,7 +384,10 @@ static void check_scene_file(const char *srcdir, const char *rel)
         scene_free(sc);
         return;
     }
-    check_world(rel, &w);
+    check_world(rel, &w, 0);
+    /* The traversals again with AVX2's box test, where this processor has it. */
+    if (bvh_have_avx2())
+        check_world(rel, &w, 1);
     world_free(&w);
     scene_free(sc);
 }
@@ -414,7 +435,9 @@ int main(void)
         char name[64];
         snprintf(name, sizeof name, "soup %d (%d triangles)", soup, n);
         if (world_build(&w, sc, &we) == 0) {
-            check_world(name, &w);
+            check_world(name, &w, 0);
+            if (bvh_have_avx2())
+                check_world(name, &w, 1);
             world_free(&w);
         } else {
             tap_ok(0, "%s: world builds", name);

@@ -497,6 +497,15 @@ void bvh_free(Bvh *b)
     memset(b, 0, sizeof *b);
 }
 
+int bvh_have_avx2(void)
+{
+#if BVH_HAVE_AVX2_PATH
+    return __builtin_cpu_supports("avx2") != 0;
+#else
+    return 0;
+#endif
+}
+
 BvhRay bvh_ray(Vec3 org, Vec3 dir)
 {
     BvhRay r;

@@ -20,6 +20,7 @@ int tracer_init(Tracer *t, const World *w, const Grid *g)
     memset(t, 0, sizeof *t);
     t->world = w;
     t->grid = g;
+    t->avx2 = bvh_have_avx2();
     t->stamp = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof(uint32_t));
     return t->stamp ? 0 : -1;
 }
@@ -119,6 +120,11 @@ void tracer_use_bvh(Tracer *t, const Bvh *bvh)
     t->bvh = bvh;
 }
 
+void tracer_use_avx2(Tracer *t, int on)
+{
+    t->avx2 = on && bvh_have_avx2();
+}
+
 /* Takes polygon pi's hit at t when it is nearer than the best so far, or as
  * near and of a lower index: the rule for exact ties, so that the answer
  * does not depend on the order the polygons were tested in. */
@@ -211,42 +217,27 @@ static inline int push_children(Pending *stack, int sp, const BvhNode *n, unsign
     return sp;
 }
 
-/* The nearest polygon by the hierarchy: nearer children first, those the
- * ray enters beyond the best hit so far skipped. */
-static void nearest_in_bvh(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double plane_t, int exclude, Hit *hit,
-                           double *best)
-{
-    const Bvh *b = tr->bvh;
-    if (b->nnodes == 0)
-        return;
-    RayFrame frame = ray_frame(org, dir);
-    BvhRay br = bvh_ray(org, dir);
-    Pending stack[BVH_STACK];
-    int sp = 0;
-    stack[sp].child = 0;
-    stack[sp++].enter = 0.0;
-    while (sp > 0) {
-        Pending p = stack[--sp];
-        double limit = hit->kind == HIT_NONE ? plane_t : *best;
-        /* Entered beyond the best hit: nothing nearer inside (the test that
-         * pushed it grew the limit the same way). */
-        if (p.enter > limit * BVH_GROW)
-            continue;
-        if (!bvh_is_leaf(p.child)) {
-            const BvhNode *n = &b->nodes[p.child];
-            double enter[BVH_WIDTH];
-            tr->stats.nodes_visited++;
-            unsigned mask = bvh_node_hits(n, &br, 0.0, limit, enter);
-            sp = push_children(stack, sp, n, mask, enter);
-            continue;
-        }
-        uint32_t first = bvh_leaf_first(p.child), end = first + bvh_leaf_count(p.child);
-        for (uint32_t k = first; k < end; k++)
-            if ((int)b->items[k] != exclude)
-                try_nearer(tr, &frame, b->items[k], tmin, plane_t, hit, best);
-    }
-}
-
+/* The hierarchy's two traversals (bvh_traverse.h), once with the SSE2 box
+ * test and once with AVX2's, which tracer_init chooses where the processor
+ * has it: the same answers, bit for bit (bvh.h). */
+#define BVH_TRAVERSE_NAME(f) f##_sse2
+#define BVH_TRAVERSE_NODE_HITS bvh_node_hits
+#define BVH_TRAVERSE_TARGET
+#include "bvh_traverse.h"
+#undef BVH_TRAVERSE_NAME
+#undef BVH_TRAVERSE_NODE_HITS
+#undef BVH_TRAVERSE_TARGET
+#if BVH_HAVE_AVX2_PATH
+#define BVH_TRAVERSE_NAME(f) f##_avx2
+#define BVH_TRAVERSE_NODE_HITS bvh_node_hits_avx2
+#define BVH_TRAVERSE_TARGET __attribute__((target("avx2")))
+#include "bvh_traverse.h"
+#undef BVH_TRAVERSE_NAME
+#undef BVH_TRAVERSE_NODE_HITS
+#undef BVH_TRAVERSE_TARGET
+#else
+#define nearest_in_bvh_avx2 nearest_in_bvh_sse2
+#endif
 /* The cells a segment pierces, recorded for the shadow buckets: those the
  * grid's own nearest-hit walk would visit (up to the cell holding the hit). */
 static void record_cells(Tracer *tr, Vec3 org, Vec3 dir, double plane_t, const Hit *hit, double best)
@@ -299,8 +290,10 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
 
     double best = HUGE_VAL;
     int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
-    if (tr->bvh)
-        nearest_in_bvh(tr, org, dir, tmin, plane_t, exclude, hit, &best);
+    if (tr->bvh && tr->avx2)
+        nearest_in_bvh_avx2(tr, org, dir, tmin, plane_t, exclude, hit, &best);
+    else if (tr->bvh)
+        nearest_in_bvh_sse2(tr, org, dir, tmin, plane_t, exclude, hit, &best);
     else
         nearest_in_grid(tr, org, dir, tmin, plane_t, exclude, hit, &best);
     if (hit->kind == HIT_NONE) {
@@ -330,37 +323,11 @@ int trace_segment_hits(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double tmax,
         return 0;
     RayFrame frame = ray_frame(org, dir);
     if (tr->bvh) {
-        const Bvh *b = tr->bvh;
-        if (b->nnodes == 0)
-            return 0;
-        BvhRay br = bvh_ray(org, dir);
-        uint32_t stack[BVH_STACK];
-        int sp = 0;
-        stack[sp++] = 0;
-        while (sp > 0) {
-            uint32_t c = stack[--sp];
-            if (!bvh_is_leaf(c)) {
-                const BvhNode *n = &b->nodes[c];
-                double enter[BVH_WIDTH];
-                tr->stats.nodes_visited++;
-                unsigned mask = bvh_node_hits(n, &br, 0.0, tmax, enter);
-                for (int k = BVH_WIDTH - 1; k >= 0; k--)
-                    if ((mask & (1u << k)) && n->child[k] != BVH_EMPTY)
-                        stack[sp++] = n->child[k];
-                continue;
-            }
-            uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
-            for (uint32_t k = first; k < end; k++) {
-                uint32_t pi = b->items[k];
-                if ((int)pi == exclude || (hide && material_hidden(&w->materials[w->polygons[pi].material], hide)))
-                    continue;
-                ++*tests;
-                double t = intersect_polygon_in(w, &w->polygons[pi], &frame, tmax); /* negative at tmax or beyond */
-                if (t > tmin && visit(user, pi, t))
-                    return 1;
-            }
-        }
-        return 0;
+#if BVH_HAVE_AVX2_PATH
+        if (tr->avx2)
+            return segment_hits_in_bvh_avx2(tr, &frame, org, dir, tmin, tmax, exclude, hide, visit, user, tests);
+#endif
+        return segment_hits_in_bvh_sse2(tr, &frame, org, dir, tmin, tmax, exclude, hide, visit, user, tests);
     }
     const Grid *g = tr->grid;
     GridWalk walk;

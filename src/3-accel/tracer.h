@@ -40,6 +40,7 @@ typedef struct {
     /* The hierarchy the polygon queries use, or NULL: then they walk the
      * grid (the reference path, which tests compare the hierarchy with). */
     const Bvh *bvh;
+    int avx2;                  /* 1: its box tests with AVX2 (the processor has it; tracer_use_avx2) */
     unsigned hide;             /* HIDE_* for the next trace_nearest, 0 otherwise */
     /* The bucket: stamp[i] == ray_id marks polygon i as already tested by
      * the current segment, so it is tested once however many cells hold it. */
@@ -65,6 +66,9 @@ int tracer_init(Tracer *t, const World *w, const Grid *g);
 int tracer_record_cells(Tracer *t, Vec3 box_min, Vec3 box_max);
 /* Polygon queries through the hierarchy from now on (NULL: the grid). */
 void tracer_use_bvh(Tracer *t, const Bvh *bvh);
+/* The hierarchy's box tests with AVX2 (on: where the processor has it, the
+ * default) or SSE2: the same answers, bit for bit; for tests and timing. */
+void tracer_use_avx2(Tracer *t, int on);
 void tracer_free(Tracer *t);
 
 /* The next mailbox id for a stamp array of n entries (cleared when the id
