@@ -45,10 +45,10 @@ for name in desk glasses stars cards; do
         "$build/hstrace" "$scene" $size --shadows conventional --stats-json "$work/$name.conv.$r.json" -o "$work/x.exr"
         "$build/hstrace" "$scene" $size --shadows volume --stats-json "$work/$name.volume.$r.json" -o "$work/x.exr"
         for coh in on off; do
-            "$build/hstrace" "$scene" $size --nth auto --pixel-coherence $coh \
+            "$build/hstrace" "$scene" $size --volumes always --nth auto --pixel-coherence $coh \
                 --stats-json "$work/$name.auto.$coh.$r.json" -o "$work/x.exr"
             for n in $nths; do
-                "$build/hstrace" "$scene" $size --nth "$n" --pixel-coherence $coh \
+                "$build/hstrace" "$scene" $size --volumes always --nth "$n" --pixel-coherence $coh \
                     --stats-json "$work/$name.$n.$coh.$r.json" -o "$work/x.exr"
             done
         done

@@ -1,11 +1,13 @@
 /* The top level: scene statements, #declare values, errors, and the public
  * entry points of parser.h. */
+#include <ctype.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "keywords.h"
 #include "parser_internal.h"
 
 /* ---- errors ------------------------------------------------------------ */
@@ -766,6 +768,36 @@ static void init_scene(Scene *s)
 
 /* Everything after the setjmp lives here, so no local of run_parser is
  * modified between setjmp and a longjmp. */
+/* The symbols the command line or an INI file declared (Declare=NAME=VALUE),
+ * as global #declares made before the scene's first line. */
+static void declare_given(Parser *p, SourcePos start)
+{
+    for (int i = 0; i < p->opts->ndeclares; i++) {
+        const ParseDeclare *d = &p->opts->declares[i];
+        int len = (int)strlen(d->name), ok = len > 0 && (isalpha((unsigned char)d->name[0]) || d->name[0] == '_');
+        for (int k = 1; ok && k < len; k++)
+            ok = isalnum((unsigned char)d->name[k]) || d->name[k] == '_';
+        if (!ok)
+            parse_fail(p, start, "Declare=%s: '%s' is not an identifier", d->name, d->name);
+        if (keyword_lookup(d->name, len) >= 0)
+            parse_fail(p, start, "Declare=%s: '%s' is a reserved word", d->name, d->name);
+        if (symbol_find(p, d->name, len))
+            continue; /* declared before: the first value stands */
+        Value v;
+        memset(&v, 0, sizeof v);
+        if (d->string) {
+            v.kind = VAL_STRING;
+            v.string = arena_strdup(p->temp, d->string);
+        } else {
+            v.kind = VAL_NUMERIC;
+            v.terms = 1;
+            v.v[0] = d->number;
+        }
+        v.declared_at = start;
+        symbol_define_global(p, d->name, len, &v);
+    }
+}
+
 static Scene *parse_everything(Parser *p, const char *name, const char *text, size_t len)
 {
     Scene *scene = p->scene;
@@ -780,6 +812,7 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
             parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
         lex_open_source(p, &scene_text, start);
     }
+    declare_given(p, start);
     parse_statements(p);
     debug_end_line(p);
     user_files_close_all(p, 1);

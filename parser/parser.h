@@ -4,6 +4,14 @@
 
 #include "scene.h"
 
+/* A symbol declared before the scene is read (POV-Ray's Declare=NAME=VALUE):
+ * a float, or a string when string is not NULL. */
+typedef struct {
+    const char *name;
+    double number;
+    const char *string;
+} ParseDeclare;
+
 typedef struct {
     /* Folders searched for #include after the scene's own folder, in order:
      * --include-path/+L folders, then the project's installed include folder,
@@ -12,6 +20,12 @@ typedef struct {
     int ninclude_dirs;
     /* image_width / image_height as the scene sees them. */
     int image_width, image_height;
+    /* Global symbols declared before the first token, in order (a name given
+     * twice keeps its first value, as POV-Ray 3.7 keeps it). A name that is
+     * not an identifier, or is a reserved word, is an error at the scene's
+     * start. */
+    const ParseDeclare *declares;
+    int ndeclares;
     /* Budgets of the parse's work (0: the default), each an error naming the
      * position, the loop or macro, and the macro calls that led there:
      * #while/#for iterations in all (10 million), macro calls in all (2

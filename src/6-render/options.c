@@ -1,13 +1,17 @@
 /* Command-line parsing. */
+#include <ctype.h>
 #include <errno.h>
+#include <math.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "options.h"
 
 #include "aov.h"
+#include "ini_file.h"
 #include "grid.h"
 #include "shadow.h"
 #include "shadow_embree.h"
@@ -94,6 +98,7 @@ void options_usage(FILE *f)
 {
     fprintf(f,
             "usage: hstrace SCENE.pov [options]\n"
+            "       hstrace FILE.ini[SECTION] [more INI files, switches, KEY=VALUE] [options]\n"
             "       hstrace compare A B [options]   (see hstrace compare --help)\n"
             "       hstrace vs-povray SCENE.pov [options]   (see hstrace vs-povray --help)\n"
             "\n"
@@ -157,12 +162,18 @@ void options_usage(FILE *f)
             "      --version          show the version\n"
             "\n"
             "POV-Ray switches: +Wn +Hn +Oname +Iname +Ldir +WTn +Qn (quality: <=3 no shadows,\n"
-            "4-5 shadows, 6-7 also refraction, >=8 also reflection; default 9); -A -D +D -V\n"
-            "are accepted and change nothing; +A is refused (no anti-aliasing).\n"
+            "4-5 shadows, 6-7 also refraction, >=8 also reflection; default 9); +FN[16] (PNG),\n"
+            "+FE (EXR), +FP (PPM): the output type, +Oname without an extension gets its\n"
+            "extension; -F: write no image; +FT +FC +FB +FJ +FH are refused; -A -D +D -V are\n"
+            "accepted and change nothing; +A is refused (no anti-aliasing yet).\n"
+            "POV-Ray INI files (FILE.ini, FILE.ini[SECTION]) and INI options given as KEY=VALUE\n"
+            "(Input_File_Name, Output_File_Name, Width, Height, Quality, Work_Threads,\n"
+            "Library_Path, Output_File_Type, Bits_Per_Color, Declare=NAME=VALUE, ...: see the\n"
+            "man page); settings apply in order, later ones winning.\n"
             "\n"
-            "Exit status: 0 success, 1 bad usage (also a display, view or colour space the\n"
-            "config lacks), 2 scene error, 3 input/output error (also a missing or broken\n"
-            "colour config).\n",
+            "Exit status: 0 success, 1 bad usage (also a mistake in an INI file, a display,\n"
+            "view or colour space the config lacks), 2 scene error, 3 input/output error (also\n"
+            "an unreadable INI file, a missing or broken colour config).\n",
             shadow_method_names(), shadow_embree_built() ? "" : ";\n                         not in this build (configure found no Embree)");
 }
 
@@ -204,6 +215,40 @@ static int add_include(Options *opt, const char *dir, char *err, int errlen)
         return -1;
     }
     opt->include_paths[opt->ninclude_paths++] = dir;
+    return 0;
+}
+
+/* POV-Ray's +F: the output file's type (+FN, +FN16, +FE, +FP; -F none). */
+static int output_type_switch(const char *arg, int on, Options *opt, char *err, int errlen)
+{
+    const char *t = arg + 2;
+    if (!on) {
+        opt->no_output = 1;
+        return 0;
+    }
+    opt->no_output = 0;
+    int type = toupper((unsigned char)t[0]);
+    static const char *const other[][2] = { { "T", "TGA" }, { "C", "compressed TGA" }, { "B", "BMP" },
+                                            { "J", "JPEG" }, { "H", "Radiance HDR" }, { "S", "system" } };
+    for (size_t i = 0; i < sizeof other / sizeof other[0]; i++) {
+        if (type == other[i][0][0]) {
+            snprintf(err, (size_t)errlen, "'%s': %s output is not supported by hstrace (+FN PNG, +FE EXR, +FP PPM)",
+                     arg, other[i][1]);
+            return -1;
+        }
+    }
+    if (type == 'N') {
+        int bits = 8;
+        if (t[1] && parse_int(t + 1, 1, 16, &bits)) {
+            snprintf(err, (size_t)errlen, "'%s': bits per colour must be 1 to 16", arg);
+            return -1;
+        }
+        opt->png16 = bits > 8;
+    } else if ((type != 'E' && type != 'P') || t[1]) {
+        snprintf(err, (size_t)errlen, "'%s': unknown output type (+FN PNG, +FE EXR, +FP PPM)", arg);
+        return -1;
+    }
+    opt->output_type = type;
     return 0;
 }
 
@@ -250,11 +295,14 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
         if (!s[1]) break;
         return add_include(opt, s + 1, err, errlen);
     case 'A': case 'a':
-        if (on) {
-            snprintf(err, (size_t)errlen, "'%s': anti-aliasing is not supported by hstrace", arg);
-            return -1;
-        }
+        /* Refused at the end if still on: a later -A or Antialias=off wins. */
+        opt->antialias_on = on;
+        opt->antialias_positioned = 0;
+        if (on)
+            snprintf(opt->antialias_by, sizeof opt->antialias_by, "'%s'", arg);
         return 0;
+    case 'F': case 'f':
+        return output_type_switch(arg, on, opt, err, errlen);
     case 'D': case 'd':
         return 0; /* no display window either way */
     case 'V': case 'v':
@@ -264,6 +312,377 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
     }
     snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
     return -1;
+}
+
+/* ---- INI options and files (ini_file.h) ---------------------------------- */
+
+/* A string the options own (freed by options_free). */
+static char *own_string(Options *opt, const char *s, size_t n)
+{
+    char **grown = realloc(opt->strings, sizeof *grown * (size_t)(opt->nstrings + 1));
+    if (!grown)
+        return NULL;
+    opt->strings = grown;
+    char *copy = malloc(n + 1);
+    if (!copy)
+        return NULL;
+    memcpy(copy, s, n);
+    copy[n] = '\0';
+    opt->strings[opt->nstrings++] = copy;
+    return copy;
+}
+
+/* POV-Ray's truth values (ProcessOptions::IsTrue/IsFalse). */
+static int parse_bool(const char *v, int *out)
+{
+    static const char *const yes[] = { "on", "true", "yes", "1" }, *const no[] = { "off", "false", "no", "0" };
+    for (int i = 0; i < 4; i++) {
+        if (strcasecmp(v, yes[i]) == 0)
+            return *out = 1, 0;
+        if (strcasecmp(v, no[i]) == 0)
+            return *out = 0, 0;
+    }
+    return -1;
+}
+
+/* A declared float as POV-Ray 3.7 passes it to the scene: stored in
+ * single precision and written with 6 significant digits (Declare=X=
+ * 1.23456789 gives the scene 1.23457). */
+static double pov_declared_float(double v)
+{
+    char buf[40];
+    snprintf(buf, sizeof buf, "%g", (double)(float)v);
+    return strtod(buf, NULL);
+}
+
+/* Declare=NAME=VALUE: a number, or a string in double quotes. */
+static int add_declare(Options *opt, const char *text, char *err, int errlen)
+{
+    const char *eq = strchr(text, '=');
+    if (!eq || eq == text) {
+        snprintf(err, (size_t)errlen, "Declare=%s: expected Declare=NAME=VALUE", text);
+        return -1;
+    }
+    OptionDeclare d = { own_string(opt, text, (size_t)(eq - text)), 0.0, NULL };
+    const char *value = eq + 1, *quote = strchr(value, '"');
+    if (quote) {
+        const char *close = strchr(quote + 1, '"');
+        if (!close) {
+            snprintf(err, (size_t)errlen, "Declare=%s: the string is not closed", text);
+            return -1;
+        }
+        d.string = own_string(opt, quote + 1, (size_t)(close - quote - 1));
+    } else {
+        char *end;
+        errno = 0;
+        double v = strtod(value, &end);
+        if (end == value || *end != '\0' || !isfinite(v) || !isfinite(pov_declared_float(v))) {
+            snprintf(err, (size_t)errlen, "Declare=%s: the value must be a number (within float's range) or a string "
+                     "in double quotes", text);
+            return -1;
+        }
+        d.number = pov_declared_float(v);
+    }
+    OptionDeclare *grown = realloc(opt->declares, sizeof *grown * (size_t)(opt->ndeclares + 1));
+    if (!d.name || (quote && !d.string) || !grown) {
+        free(grown == opt->declares ? NULL : grown);
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
+    opt->declares = grown;
+    opt->declares[opt->ndeclares++] = d;
+    return 0;
+}
+
+/* The INI keys hstrace knows (POV-Ray 3.7's names, case ignored). */
+typedef enum {
+    KEY_SWITCH,   /* the same as the switch PREFIX followed by the value */
+    KEY_BOOL,     /* on/off as the switch +PREFIX / -PREFIX */
+    KEY_SCENE, KEY_OUTPUT, KEY_LIBRARY, KEY_DECLARE, KEY_BITS, KEY_INCLUDE_INI,
+    KEY_NUMBER_IGNORED, /* anti-aliasing's settings: they matter only with Antialias on, which is refused */
+    KEY_IGNORED,  /* no effect on the image or the files (display, consoles, bounding) */
+    KEY_UNSUPPORTED /* POV-Ray's, not hstrace's yet */
+} KeyKind;
+
+typedef struct {
+    const char *name;
+    KeyKind kind;
+    const char *prefix; /* KEY_SWITCH, KEY_BOOL: the switch; KEY_UNSUPPORTED: what it is about */
+} IniKey;
+
+static const IniKey ini_keys[] = {
+    { "Input_File_Name", KEY_SCENE, NULL },
+    { "Output_File_Name", KEY_OUTPUT, NULL },
+    { "Width", KEY_SWITCH, "+W" },
+    { "Height", KEY_SWITCH, "+H" },
+    { "Quality", KEY_SWITCH, "+Q" },
+    { "Work_Threads", KEY_SWITCH, "+WT" },
+    { "Output_File_Type", KEY_SWITCH, "+F" },
+    { "Library_Path", KEY_LIBRARY, NULL },
+    { "Bits_Per_Color", KEY_BITS, NULL },
+    { "Declare", KEY_DECLARE, NULL },
+    { "Include_Ini", KEY_INCLUDE_INI, NULL },
+    { "Antialias", KEY_BOOL, "A" },
+    { "Output_To_File", KEY_BOOL, "F" },
+    { "Antialias_Threshold", KEY_NUMBER_IGNORED, NULL },
+    { "Antialias_Depth", KEY_NUMBER_IGNORED, NULL },
+    { "Antialias_Gamma", KEY_NUMBER_IGNORED, NULL },
+    { "Sampling_Method", KEY_NUMBER_IGNORED, NULL },
+    { "Jitter_Amount", KEY_NUMBER_IGNORED, NULL },
+    { "Jitter", KEY_IGNORED, NULL },
+    { "Display", KEY_IGNORED, NULL },
+    { "Display_Gamma", KEY_IGNORED, NULL },
+    { "Verbose", KEY_IGNORED, NULL },
+    { "Pause_When_Done", KEY_IGNORED, NULL },
+    { "Draw_Vistas", KEY_IGNORED, NULL },
+    { "Preview_Start_Size", KEY_IGNORED, NULL },
+    { "Preview_End_Size", KEY_IGNORED, NULL },
+    { "Test_Abort", KEY_IGNORED, NULL },
+    { "Test_Abort_Count", KEY_IGNORED, NULL },
+    { "Bounding", KEY_IGNORED, NULL },
+    { "Bounding_Method", KEY_IGNORED, NULL },
+    { "Bounding_Threshold", KEY_IGNORED, NULL },
+    { "Light_Buffer", KEY_IGNORED, NULL },
+    { "Vista_Buffer", KEY_IGNORED, NULL },
+    { "Remove_Bounds", KEY_IGNORED, NULL },
+    { "Split_Unions", KEY_IGNORED, NULL },
+    { "All_Console", KEY_IGNORED, NULL },
+    { "Debug_Console", KEY_IGNORED, NULL },
+    { "Fatal_Console", KEY_IGNORED, NULL },
+    { "Render_Console", KEY_IGNORED, NULL },
+    { "Statistic_Console", KEY_IGNORED, NULL },
+    { "Warning_Console", KEY_IGNORED, NULL },
+    { "Warning_Level", KEY_IGNORED, NULL },
+    { "Initial_Frame", KEY_UNSUPPORTED, "animation" },
+    { "Final_Frame", KEY_UNSUPPORTED, "animation" },
+    { "Initial_Clock", KEY_UNSUPPORTED, "animation" },
+    { "Final_Clock", KEY_UNSUPPORTED, "animation" },
+    { "Subset_Start_Frame", KEY_UNSUPPORTED, "animation" },
+    { "Subset_End_Frame", KEY_UNSUPPORTED, "animation" },
+    { "Cyclic_Animation", KEY_UNSUPPORTED, "animation" },
+    { "Field_Render", KEY_UNSUPPORTED, "animation" },
+    { "Odd_Field", KEY_UNSUPPORTED, "animation" },
+    { "Clock", KEY_UNSUPPORTED, "animation" },
+    { "Frame_Step", KEY_UNSUPPORTED, "animation" },
+    { "Start_Row", KEY_UNSUPPORTED, "partial renders" },
+    { "End_Row", KEY_UNSUPPORTED, "partial renders" },
+    { "Start_Column", KEY_UNSUPPORTED, "partial renders" },
+    { "End_Column", KEY_UNSUPPORTED, "partial renders" },
+    { "Continue_Trace", KEY_UNSUPPORTED, "continuing a render" },
+    { "Create_Continue_Trace_Log", KEY_UNSUPPORTED, "continuing a render" },
+    { "Output_Alpha", KEY_UNSUPPORTED, "the alpha channel of PNG output" },
+    { "Create_Ini", KEY_UNSUPPORTED, "writing INI files" },
+    { "Histogram_Type", KEY_UNSUPPORTED, "histograms" },
+    { "Histogram_Name", KEY_UNSUPPORTED, "histograms" },
+    { "Histogram_Grid_Size", KEY_UNSUPPORTED, "histograms" },
+    { "Dither", KEY_UNSUPPORTED, "dithering" },
+    { "Dither_Method", KEY_UNSUPPORTED, "dithering" },
+    { "File_Gamma", KEY_UNSUPPORTED, "output gamma" },
+    { "Radiosity_From_File", KEY_UNSUPPORTED, "radiosity files" },
+    { "Radiosity_To_File", KEY_UNSUPPORTED, "radiosity files" },
+    { "Radiosity_File_Name", KEY_UNSUPPORTED, "radiosity files" },
+    { "Radiosity_Vain_Pretrace", KEY_UNSUPPORTED, "radiosity" },
+    { "High_Reproducibility", KEY_UNSUPPORTED, "radiosity" },
+    { "Pre_Scene_Command", KEY_UNSUPPORTED, "shell-out commands" },
+    { "Pre_Frame_Command", KEY_UNSUPPORTED, "shell-out commands" },
+    { "Post_Scene_Command", KEY_UNSUPPORTED, "shell-out commands" },
+    { "Post_Frame_Command", KEY_UNSUPPORTED, "shell-out commands" },
+    { "User_Abort_Command", KEY_UNSUPPORTED, "shell-out commands" },
+    { "Fatal_Error_Command", KEY_UNSUPPORTED, "shell-out commands" },
+    { "Include_Header", KEY_UNSUPPORTED, "an include file for every scene" },
+    { "All_File", KEY_UNSUPPORTED, "console files" },
+    { "Debug_File", KEY_UNSUPPORTED, "console files" },
+    { "Fatal_File", KEY_UNSUPPORTED, "console files" },
+    { "Render_File", KEY_UNSUPPORTED, "console files" },
+    { "Statistic_File", KEY_UNSUPPORTED, "console files" },
+    { "Warning_File", KEY_UNSUPPORTED, "console files" },
+    { "Video_Mode", KEY_UNSUPPORTED, "the display" },
+    { "Palette", KEY_UNSUPPORTED, "the display" },
+    { "Buffer_Output", KEY_IGNORED, NULL },
+    { "Buffer_Size", KEY_IGNORED, NULL },
+};
+
+static int read_ini(Options *opt, const char *spec, int depth, char *err, int errlen);
+
+/* One KEY=VALUE, from an INI file (where: "FILE:LINE:COLUMN") or the
+ * command line (where: NULL). */
+static int apply_key(Options *opt, const char *key, const char *value, const char *where, int depth, char *err,
+                     int errlen)
+{
+    const IniKey *k = NULL;
+    for (size_t i = 0; i < sizeof ini_keys / sizeof ini_keys[0] && !k; i++)
+        if (strcasecmp(ini_keys[i].name, key) == 0)
+            k = &ini_keys[i];
+    char msg[768];
+    int status = 0, b;
+    msg[0] = '\0';
+    if (!k) {
+        snprintf(msg, sizeof msg, "unknown INI key '%s'", key);
+        status = -1;
+    } else {
+        switch (k->kind) {
+        case KEY_SWITCH: {
+            char sw[600];
+            snprintf(sw, sizeof sw, "%s%s", k->prefix, value);
+            char *own = own_string(opt, sw, strlen(sw));
+            status = own ? parse_pov_switch(own, opt, msg, (int)sizeof msg) : -1;
+            break;
+        }
+        case KEY_BOOL:
+            if (parse_bool(value, &b)) {
+                snprintf(msg, sizeof msg, "%s=%s: expected on or off", k->name, value);
+                status = -1;
+            } else if (k->prefix[0] == 'A') {
+                opt->antialias_on = b;
+                if (b) {
+                    snprintf(opt->antialias_by, sizeof opt->antialias_by, "%s%s%s=%s", where ? where : "",
+                             where ? ": " : "", k->name, value);
+                    opt->antialias_positioned = where != NULL;
+                }
+            } else {
+                opt->no_output = !b; /* Output_To_File */
+            }
+            break;
+        case KEY_SCENE:
+            opt->scene = value;
+            break;
+        case KEY_OUTPUT:
+            opt->output = value;
+            break;
+        case KEY_LIBRARY:
+            status = add_include(opt, value, msg, (int)sizeof msg);
+            break;
+        case KEY_DECLARE:
+            status = add_declare(opt, value, msg, (int)sizeof msg);
+            break;
+        case KEY_BITS:
+            if (parse_int(value, 1, 16, &b)) {
+                snprintf(msg, sizeof msg, "Bits_Per_Color=%s: expected 1 to 16", value);
+                status = -1;
+            } else {
+                opt->png16 = b > 8;
+            }
+            break;
+        case KEY_INCLUDE_INI:
+            if (depth >= 16) {
+                snprintf(msg, sizeof msg, "Include_Ini=%s: INI files included more than 16 deep", value);
+                status = -1;
+            } else if (read_ini(opt, value, depth + 1, err, errlen)) {
+                return -1; /* err already says where */
+            }
+            break;
+        case KEY_NUMBER_IGNORED: {
+            char *end;
+            (void)strtod(value, &end);
+            if (end == value || *end != '\0') {
+                snprintf(msg, sizeof msg, "%s=%s: expected a number", k->name, value);
+                status = -1;
+            }
+            break;
+        }
+        case KEY_IGNORED:
+            break;
+        case KEY_UNSUPPORTED:
+            snprintf(msg, sizeof msg, "%s: %s is not supported by hstrace yet", k->name, k->prefix);
+            status = -1;
+            break;
+        }
+    }
+    if (status) {
+        if (where) {
+            snprintf(err, (size_t)errlen, "%s: %s", where, msg);
+            opt->error_has_position = 1;
+        } else {
+            snprintf(err, (size_t)errlen, "%s", msg);
+        }
+    }
+    return status;
+}
+
+static int read_ini(Options *opt, const char *spec, int depth, char *err, int errlen)
+{
+    IniFile *grown = realloc(opt->inis, sizeof *grown * (size_t)(opt->ninis + 1));
+    if (!grown) {
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
+    opt->inis = grown;
+    IniFile *f = &opt->inis[opt->ninis++];
+    if (ini_file_read(f, spec, err, errlen)) {
+        /* Unreadable: an input/output error; else a mistake at its place. */
+        opt->error_is_io = strncmp(err, "cannot ", 7) == 0 || strstr(err, "too big for an INI file") != NULL;
+        opt->error_has_position = !opt->error_is_io && strncmp(err, "out of memory", 13) != 0;
+        return -1;
+    }
+    /* f may move as included files are added: keep what is needed. */
+    int n = f->n;
+    IniEntry *entries = f->entries;
+    const char *path = f->path;
+    for (int i = 0; i < n; i++) {
+        const IniEntry *e = &entries[i];
+        char where[600];
+        snprintf(where, sizeof where, "%s:%d:%d", path, e->line, e->column);
+        if (e->kind == INI_OPTION) {
+            if (apply_key(opt, e->key, e->value, where, depth, err, errlen))
+                return -1;
+        } else if (e->kind == INI_SWITCH) {
+            char msg[600];
+            if (parse_pov_switch(e->key, opt, msg, (int)sizeof msg)) {
+                snprintf(err, (size_t)errlen, "%s: %s", where, msg);
+                opt->error_has_position = 1;
+                return -1;
+            }
+            if (toupper((unsigned char)e->key[1]) == 'A' && opt->antialias_on) {
+                snprintf(opt->antialias_by, sizeof opt->antialias_by, "%s: '%s'", where, e->key);
+                opt->antialias_positioned = 1;
+            }
+        } else if (ini_spec_is_ini(e->key)) {
+            if (depth >= 16 || read_ini(opt, e->key, depth + 1, err, errlen)) {
+                if (depth >= 16)
+                    snprintf(err, (size_t)errlen, "%s: INI files included more than 16 deep", where);
+                opt->error_has_position = 1;
+                return -1;
+            }
+        } else if (opt->scene && strcmp(opt->scene, e->key) != 0) {
+            snprintf(err, (size_t)errlen, "%s: more than one scene given ('%s' and '%s')", where, opt->scene, e->key);
+            opt->error_has_position = 1;
+            return -1;
+        } else {
+            opt->scene = e->key;
+        }
+    }
+    return 0;
+}
+
+/* KEY=VALUE on the command line (Declare=X=1, Width=640), as POV-Ray takes it. */
+static int is_key_value(const char *a)
+{
+    if (!(isalpha((unsigned char)a[0]) || a[0] == '_'))
+        return 0;
+    const char *p = a;
+    while (isalnum((unsigned char)*p) || *p == '_')
+        p++;
+    return *p == '=';
+}
+
+void options_free(Options *opt)
+{
+    for (int i = 0; i < opt->ninis; i++)
+        ini_file_free(&opt->inis[i]);
+    free(opt->inis);
+    for (int i = 0; i < opt->nstrings; i++)
+        free(opt->strings[i]);
+    free(opt->strings);
+    free(opt->declares);
+    opt->inis = NULL;
+    opt->strings = NULL;
+    opt->declares = NULL;
+    opt->ninis = opt->nstrings = opt->ndeclares = 0;
+}
+
+const char *options_output_extension(const Options *opt)
+{
+    return opt->output_type == 'E' ? ".exr" : opt->output_type == 'P' ? ".ppm" : ".png";
 }
 
 int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
@@ -452,6 +871,15 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
         } else if (a[0] == '-' && a[1] == '-') {
             snprintf(err, (size_t)errlen, "unknown option '%s' (see --help)", a);
             return -1;
+        } else if (ini_spec_is_ini(a)) {
+            if (read_ini(opt, a, 0, err, errlen))
+                return -1;
+        } else if (is_key_value(a)) {
+            char key[128];
+            size_t n = (size_t)(strchr(a, '=') - a);
+            snprintf(key, sizeof key, "%.*s", (int)(n < sizeof key - 1 ? n : sizeof key - 1), a);
+            if (apply_key(opt, key, a + n + 1, NULL, 0, err, errlen))
+                return -1;
         } else if (!opt->scene) {
             opt->scene = a;
         } else {
@@ -462,6 +890,38 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     if (!opt->help && !opt->version && !opt->scene) {
         snprintf(err, (size_t)errlen, "no scene file given (see --help)");
         return -1;
+    }
+    if (opt->antialias_on) {
+        opt->error_has_position = opt->antialias_positioned;
+        snprintf(err, (size_t)errlen, "%s: anti-aliasing is not supported by hstrace yet (render with -A or "
+                 "Antialias=off)", opt->antialias_by);
+        return -1;
+    }
+    if (opt->output_type && opt->output) {
+        /* +Oname without an extension gets the type's, as in POV-Ray; one
+         * with another type's extension is a contradiction. */
+        const char *base = strrchr(opt->output, '/'), *dot;
+        base = base ? base + 1 : opt->output;
+        dot = strrchr(base, '.');
+        const char *ext = options_output_extension(opt);
+        if (!dot) {
+            size_t n = strlen(opt->output);
+            char *named = malloc(n + 5);
+            if (named) {
+                memcpy(named, opt->output, n);
+                memcpy(named + n, ext, 5);
+                opt->output = own_string(opt, named, n + 4);
+                free(named);
+            }
+            if (!named || !opt->output) {
+                snprintf(err, (size_t)errlen, "out of memory");
+                return -1;
+            }
+        } else if (strcasecmp(dot, ext) != 0 && !(opt->output_type == 'E' && strcasecmp(dot, ".exr") == 0)) {
+            snprintf(err, (size_t)errlen, "+F%c asks for %s, but the output '%s' is named for another type",
+                     opt->output_type, ext + 1, opt->output);
+            return -1;
+        }
     }
     if ((double)opt->width * opt->height > (double)(1 << 28)) {
         snprintf(err, (size_t)errlen, "image of %dx%d pixels is too large (at most 268435456 pixels)", opt->width,

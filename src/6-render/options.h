@@ -17,6 +17,13 @@ enum {
 #define NTH_AUTO (-1.0)
 #define NTH_PER_POINT (-2.0)
 
+/* Declare=NAME=VALUE: a float, or a string when string is not NULL. */
+typedef struct {
+    const char *name;
+    double number;
+    const char *string;
+} OptionDeclare;
+
 typedef struct {
     const char *scene;
     const char *output;           /* NULL: scene name with .png, in the current folder */
@@ -48,10 +55,31 @@ typedef struct {
     /* OpenColorIO (see colour.h); NULL when not given. */
     const char *ocio_config, *display, *view, *colorspace;
     int help, version;
+    /* Declare=NAME=VALUE from the command line and INI files, in order. */
+    OptionDeclare *declares;
+    int ndeclares;
+    int antialias_on;             /* +A or Antialias=on, last: refused (hstrace has no anti-aliasing yet) */
+    char antialias_by[720];       /* what turned it on, for the message */
+    int antialias_positioned;     /* ... which begins with FILE:LINE:COLUMN */
+    int output_type;              /* POV-Ray's +F: 0 none given, 'N' PNG, 'E' EXR, 'P' PPM */
+    int no_output;                /* -F: render, write no image */
+    int error_has_position;       /* the message options_parse gave begins with FILE:LINE:COLUMN */
+    int error_is_io;              /* ... is about a file that could not be read (exit status 3) */
+    /* What options_free releases: the INI files read (their strings are
+     * values of the options above) and strings made here. */
+    struct IniFile *inis;
+    int ninis;
+    char **strings;
+    int nstrings;
 } Options;
 
-/* Fills opt from argv. Returns 0, or -1 with a message in err. */
+/* Fills opt from argv: options, POV-Ray switches, KEY=VALUE INI options and
+ * INI files (FILE.ini, FILE.ini[section]), later settings winning. Returns
+ * 0, or -1 with a message in err. options_free either way. */
 int options_parse(int argc, char **argv, Options *opt, char *err, int errlen);
+void options_free(Options *opt);
+/* The output file's extension for POV-Ray's +F type (".png" without one). */
+const char *options_output_extension(const Options *opt);
 void options_usage(FILE *f);
 
 /* For subcommands' parsers: is arg the long option name, alone or as

@@ -39,7 +39,7 @@ static Quality quality_from_level(int q)
 
 /* Default output: the scene's base name with .png, in the current folder,
  * as POV-Ray does. */
-static char *default_output(const char *scene)
+static char *default_output(const char *scene, const char *ext)
 {
     const char *base = strrchr(scene, '/');
     base = base ? base + 1 : scene;
@@ -47,10 +47,11 @@ static char *default_output(const char *scene)
     const char *dot = strrchr(base, '.');
     if (dot && dot != base)
         n = (size_t)(dot - base);
-    char *out = malloc(n + 5);
+    size_t e = strlen(ext);
+    char *out = malloc(n + e + 1);
     if (out) {
         memcpy(out, base, n);
-        memcpy(out + n, ".png", 5);
+        memcpy(out + n, ext, e + 1);
     }
     return out;
 }
@@ -65,18 +66,20 @@ int main(int argc, char **argv)
     Options opt;
     char err[1024];
     if (options_parse(argc, argv, &opt, err, sizeof err)) {
-        fprintf(stderr, "hstrace: %s\n", err);
-        return EXIT_USAGE;
+        /* An INI file's mistake begins with its FILE:LINE:COLUMN. */
+        fprintf(stderr, opt.error_has_position ? "%s\n" : "hstrace: %s\n", err);
+        int io = opt.error_is_io;
+        options_free(&opt);
+        return io ? EXIT_IO : EXIT_USAGE;
     }
-    if (opt.help) {
-        options_usage(stdout);
-        return EXIT_OK;
-    }
-    if (opt.version) {
-        if (shadow_embree_built())
+    if (opt.help || opt.version) {
+        if (opt.help)
+            options_usage(stdout);
+        else if (shadow_embree_built())
             printf("hstrace %s (%s; Embree %s)\n", PACKAGE_VERSION, colour_ocio_version(), shadow_embree_version());
         else
             printf("hstrace %s (%s; no Embree)\n", PACKAGE_VERSION, colour_ocio_version());
+        options_free(&opt);
         return EXIT_OK;
     }
 
@@ -84,6 +87,7 @@ int main(int argc, char **argv)
      * is safe on what was never made). */
     int status = EXIT_OK;
     char *owned_output = NULL;
+    ParseDeclare *declares = NULL;
     ColourDisplay *colour = NULL;
     Scene *scene = NULL;
     World world;
@@ -105,7 +109,7 @@ int main(int argc, char **argv)
     memset(&prov, 0, sizeof prov);
 
     const char *output = opt.output;
-    if (!output && !(output = owned_output = default_output(opt.scene))) {
+    if (!output && !(output = owned_output = default_output(opt.scene, options_output_extension(&opt)))) {
         fprintf(stderr, "hstrace: out of memory\n");
         status = EXIT_IO;
         goto done;
@@ -164,6 +168,17 @@ int main(int argc, char **argv)
     popt.max_loop_iterations = opt.max_loop_iterations;
     popt.max_macro_calls = opt.max_macro_calls;
     popt.max_repeated_tokens = opt.max_repeated_tokens;
+    /* Declare=NAME=VALUE: the options' list has the parser's shape. */
+    declares = opt.ndeclares ? calloc((size_t)opt.ndeclares, sizeof *declares) : NULL;
+    for (int i = 0; declares && i < opt.ndeclares; i++)
+        declares[i] = (ParseDeclare){ opt.declares[i].name, opt.declares[i].number, opt.declares[i].string };
+    if (opt.ndeclares && !declares) {
+        fprintf(stderr, "hstrace: out of memory\n");
+        status = EXIT_IO;
+        goto done;
+    }
+    popt.declares = declares;
+    popt.ndeclares = opt.ndeclares;
 
     StatsReport report;
     memset(&report, 0, sizeof report);
@@ -326,7 +341,7 @@ int main(int argc, char **argv)
         wopt.attributes = prov.attr;
         wopt.nattributes = prov.n;
     }
-    if (status == EXIT_OK && image_write(output, &img, &wopt, err, sizeof err)) {
+    if (status == EXIT_OK && !opt.no_output && image_write(output, &img, &wopt, err, sizeof err)) {
         fprintf(stderr, "hstrace: %s\n", err);
         status = EXIT_IO;
     }
@@ -359,5 +374,7 @@ done:
     scene_free(scene);
     colour_display_free(colour);
     free(owned_output);
+    free(declares);
+    options_free(&opt);
     return status;
 }

@@ -1,0 +1,154 @@
+#!/bin/sh
+# POV-Ray's INI files, Declare= and +F, in TAP: an INI file with comments,
+# a section chosen by name, switches in it and a Declare, rendered by hstrace
+# and by POV-Ray from the same INI file and compared by `hstrace compare`
+# (POV-Ray's image as A; the limits those of tests/lights.sh, a little above
+# what half-float EXR's rounding alone gives); the Declare seen (without it
+# the image is outside the limits); later settings winning; the values a
+# Declare gives the scene as POV-Ray 3.7 gives them (6 significant digits,
+# the first of two declarations); and every mistake with its FILE:LINE:COLUMN,
+# its exit status and no image written. Without povray the comparisons are
+# TAP SKIPs.
+#
+# Environment: top_builddir (default .), POVRAY (path or name of povray;
+# default povray).
+set -u
+srcdir=${top_srcdir:-.}
+builddir=${top_builddir:-.}
+# shellcheck source=tests/tap.sh
+. "$srcdir/tests/tap.sh"
+hstrace="$builddir/hstrace"
+work=$(mktemp -d "${TMPDIR:-/tmp}/hstini.XXXXXX") || { echo "Bail out! cannot make a temporary folder"; exit 1; }
+trap 'rm -rf "$work"' EXIT
+trap 'exit 1' HUP INT PIPE TERM
+[ -x "$hstrace" ] || { echo "Bail out! $hstrace is not built"; exit 1; }
+case $hstrace in /*) ;; *) hstrace=$(cd "$(dirname "$hstrace")" && pwd)/$(basename "$hstrace") ;; esac
+fails() { ! "$@"; }
+# run ARG...: hstrace in $work; stderr in $work/err, the status in $status.
+run() { (cd "$work" && "$hstrace" "$@") >"$work/out" 2>"$work/err"; status=$?; }
+
+# The box moves by Shift, declared in the INI file (0 without it).
+cat >"$work/scene.pov" <<'POV'
+#version 3.7;
+#ifndef (Shift) #declare Shift = 0; #end
+global_settings { assumed_gamma 1 }
+camera { location <0, 4, -7> look_at <0, 0.5, 0> right x*image_width/image_height }
+light_source { <-2, 5, -3> rgb 1 }
+plane { y, 0 pigment { rgb 0.9 } }
+box { <-0.6, 0, -0.6>, <0.6, 1.2, 0.6> pigment { rgb <1, 0.8, 0.6> } translate x*Shift }
+POV
+cat >"$work/render.ini" <<'INI'
+; settings for scene.pov
+Input_File_Name=scene.pov   ; the scene
+Width=64
+Height = 48
+Declare=Shift=1.25
+# switches, two on a line
+-D -V
+
+[Small]
+Width=80
+Height=60
++FE +Osmall-hst
+
+[Large]
+Width=640
+Height=480
+INI
+
+# --- against POV-Ray ------------------------------------------------------
+run "render.ini[small]" +WT1
+check "an INI file's [Small] section (named in another case) renders: exit status 0" exited 0
+check "+FE and +Osmall-hst in the section: an EXR named small-hst.exr" test -s "$work/small-hst.exr"
+povray=$(command -v "${POVRAY:-povray}" 2>/dev/null || true)
+pov() { # ARG...: POV-Ray in $work (one retry: it can time out starting its threads on a loaded machine)
+    (cd "$work" && { "$povray" "$@" -A -GA +WT1 >pov.log 2>&1 || "$povray" "$@" -A -GA +WT1 >pov.log 2>&1; }) ||
+        { tail -3 "$work/pov.log"; return 1; }
+}
+if [ -n "$povray" ]; then
+    check "POV-Ray renders the same INI file and section" pov "render.ini[Small]" +Osmall-pov.exr
+    check "the INI file's image as POV-Ray renders it (80x60, the box shifted by the Declare; RMSE <= 1e-5, max error <= 0.0005)" \
+        "$hstrace" compare "$work/small-pov.exr" "$work/small-hst.exr" --max-rmse 1e-5 --max-error 0.0005
+    run scene.pov +W80 +H60 +FE +Onoshift
+    check "the scene without the Declare renders" exited 0
+    check "without the Declare the image is outside those limits (the comparison sees it)" \
+        fails "$hstrace" compare "$work/small-pov.exr" "$work/noshift.exr" --max-rmse 1e-5 --max-error 0.0005
+else
+    skip "the INI file's image as POV-Ray renders it" "povray not installed"
+    skip "without the Declare the image is outside those limits" "povray not installed"
+fi
+
+# --- settings in order -------------------------------------------------------
+run render.ini +W40 +H30 --stats-json s.json -o later.png
+size_is() { grep -q "\"width\": $1," "$work/s.json" && grep -q "\"height\": $2," "$work/s.json"; }
+check "render.ini then +W40 +H30: the later switches win (40x30)" size_is 40 30
+run +W40 +H30 render.ini --stats-json s.json -o earlier.png
+check "+W40 +H30 then render.ini: the INI file's settings win (64x48; no section: [Small] and [Large] ignored)" \
+    size_is 64 48
+cat >"$work/values.pov" <<'POV'
+#debug concat("X=", str(X, 0, 9), " Y=", str(Y, 0, 3), " S=", S, "\n")
+camera { location <0, 0, -5> look_at 0 }
+POV
+run values.pov Declare=X=1.23456789 Declare=Y=2 Declare=Y=3 'Declare=S="a b"' --width 4 --height 3 -o v.png
+check "Declare=X=1.23456789 gives the scene 1.23457 (single precision, 6 significant digits, as POV-Ray 3.7)" \
+    grep -q "X=1.234570000 " "$work/err"
+check "Declare=Y=2 then Declare=Y=3: the first stands (as POV-Ray 3.7)" grep -q " Y=2.000 " "$work/err"
+check "Declare=S=\"a b\": a string" grep -q " S=a b$" "$work/err"
+
+# --- mistakes ----------------------------------------------------------------
+nothing_written() { ! ls "$work"/bad*.png >/dev/null 2>&1; }
+mistake() { # NAME STATUS PATTERN DESC LINES...: an INI file of LINES, run, its message and status
+    name=$1 want=$2 pattern=$3 desc=$4
+    shift 4
+    printf '%s\n' "$@" >"$work/$name.ini"
+    run "$name.ini" scene.pov -o "bad-$name.png"
+    check "$desc: exit status $want, '$pattern'" exited "$want" "$pattern"
+    check "$desc: no image written" nothing_written
+}
+mistake key 1 "^key.ini:2:1: unknown INI key 'Bogus_Key'$" "an unknown key" "Width=64" "Bogus_Key=1"
+mistake novalue 1 "^novalue.ini:1:1: Width= has no value$" "a key without a value" "Width="
+mistake section 1 "^section.ini:2:1: a \\[section\\] header without its ']'$" "an unclosed section header" \
+    "Width=64" "[Small"
+mistake quote 1 "^quote.ini:1:1: a string opened with \" is not closed on its line$" "an unclosed quote" \
+    'Output_File_Name="out.png'
+mistake width 1 "^width.ini:1:5: '+W0': width must be 1 to 32768$" "a bad switch in an INI file" "-D  +W0"
+mistake anim 1 "^anim.ini:1:1: Initial_Frame: animation is not supported by hstrace yet$" \
+    "a POV-Ray key hstrace does not support yet" "Initial_Frame=1"
+mistake aa 1 "^aa.ini:2:1: Antialias=on: anti-aliasing is not supported by hstrace yet" "Antialias=on" \
+    "Width=64" "Antialias=on"
+mistake declare 1 "Declare=X=abc: the value must be a number" "a Declare whose value is no number" "Declare=X=abc"
+run missing.ini scene.pov -o bad-missing.png
+check "an INI file that cannot be read: exit status 3, says which" exited 3 "cannot open INI file 'missing.ini'"
+run scene.pov Declare=clock=1 -o bad-clock.png
+check "Declare of a reserved word: a scene error, exit status 2" exited 2 "'clock' is a reserved word"
+printf 'Width=64\n' >"$work/noscene.ini"
+run noscene.ini -o bad-noscene.png
+check "an INI file without Input_File_Name and no scene: exit status 1" exited 1 "no scene file given"
+run scene.pov +FE -o bad-type.png
+check "+FE with an output named .png: refused, exit status 1" exited 1 "+FE asks for exr"
+check "... and nothing written" nothing_written
+
+# --- +F output types -----------------------------------------------------------
+run scene.pov +W8 +H6 +FN16 +Ofn16
+png_depth() { [ "$(od -An -tu1 -j24 -N1 "$work/fn16.png" | tr -d ' ')" = 16 ]; }
+check "+FN16 +Ofn16: a 16-bit PNG named fn16.png" png_depth
+run scene.pov +W8 +H6 +FP +Ofp
+check "+FP +Ofp: a binary PPM named fp.ppm" test "$(head -c 2 "$work/fp.ppm" 2>/dev/null)" = P6
+run scene.pov +W8 +H6 +FE
+exr_magic() { [ "$(od -An -tx1 -N4 "$work/scene.exr" | tr -d ' ')" = 762f3101 ]; }
+check "+FE without +O: the scene's name with .exr, an OpenEXR file" exr_magic
+run scene.pov +W8 +H6 +FN +Ofn8
+png_depth8() { [ "$(od -An -tu1 -j24 -N1 "$work/fn8.png" | tr -d ' ')" = 8 ]; }
+check "+FN +Ofn8: an 8-bit PNG named fn8.png" png_depth8
+for t in "+FT TGA" "+FC TGA" "+FB BMP" "+FJ JPEG" "+FH HDR"; do
+    run scene.pov "${t%% *}" -o bad-type.png
+    check "${t%% *}: ${t#* } output refused, exit status 1" exited 1 "output is not supported"
+done
+
+# --- Antialias=on turned off later, -F ----------------------------------------
+run aa.ini scene.pov -A -o aa-off.png
+check "Antialias=on, then -A on the command line: renders" exited 0
+run scene.pov -F -o nofile.png --width 8 --height 6
+check "-F: renders, exit status 0" exited 0
+check "-F: writes no image" fails test -e "$work/nofile.png"
+tap_end
