@@ -20,6 +20,10 @@
 #define SAMPLE_MAX 8192
 #define SAMPLE_SHARE 256  /* ... about one in this many */
 #define POV_EPSILON 1.0e-10
+/* hst is kept only where the pilot measures it clearly cheaper than the
+ * shadow ray, by this ratio at least: the two timings are a few hundred
+ * decisions each, and on a busy machine they wander by a few percent. */
+#define KEEP_RATIO 0.9
 
 const char *volume_plan_decision_name(int decision)
 {
@@ -30,7 +34,7 @@ const char *volume_plan_decision_name(int decision)
     case PLAN_WONT_PAY: return "not built: what its volumes could save does not repay their build";
     case PLAN_SHARED_WONT_PAY:
         return "not built: the lights together cannot repay what their volumes share (welding, cells of camera rays)";
-    case PLAN_DROPPED: return "built, dropped: hst measured no cheaper than the shadow ray";
+    case PLAN_DROPPED: return "built, dropped: hst not measured 10% cheaper than the shadow ray";
     case PLAN_TRIAL_FAILED: return "not built: the most promising light was tried first and did not pay";
     case PLAN_PREDICTED_WONT_PAY: return "not built: at the tried light's measured hst cost it would not pay";
     case PLAN_DROPPED_ALL: return "built, dropped: the lights kept would not repay the cells' recording";
@@ -431,7 +435,7 @@ int volume_plan_build(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, cons
     if (status == 0 && sv->light[best].usable)
         status = measure_hst(plan, w, g, bvh, sv, nth_for(o, cost), cost);
     LightPlan *tp = &plan->light[best];
-    if (status == 0 && !(tp->gain > 0.0)) {
+    if (status == 0 && !(tp->gain > 0.0 && tp->c_hst < KEEP_RATIO * tp->c_ray_beside)) {
         tp->decision = PLAN_DROPPED;
         for (int li = 0; li < w->nlights; li++) {
             if (li != best && wanted[li]) {
@@ -481,7 +485,7 @@ int volume_plan_build(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, cons
                 LightPlan *lp = &plan->light[li];
                 if (!sv->light[li].usable)
                     continue;
-                if (lp->gain > 0.0) {
+                if (lp->gain > 0.0 && lp->c_hst < KEEP_RATIO * lp->c_ray_beside) {
                     kept += lp->gain;
                 } else {
                     lp->decision = PLAN_DROPPED;

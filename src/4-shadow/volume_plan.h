@@ -18,8 +18,8 @@
  *
  * The bound is optimistic: it prices an hst decision at its cheapest. So
  * after building, the pilot is run again with hst itself beside the shadow
- * ray, on the same points; a light whose hst decisions measure no cheaper
- * than its shadow rays is dropped (its build is spent, its memory freed),
+ * ray, on the same points; a light whose hst decisions do not measure
+ * clearly cheaper than its shadow rays (by 10%) is dropped (its build is spent, its memory freed),
  * and if what the kept lights save does not repay the cells' recording,
  * all are. A light without volumes is decided by the shadow ray, exactly
  * as with volumes: the images are the same whatever is decided, only the

@@ -287,7 +287,12 @@ int main(int argc, char **argv)
     ropt.height = opt.height;
     ropt.threads = threads;
     ropt.quality = quality_from_level(opt.quality);
-    ropt.shadow = method;
+    /* hst with no light whose volumes pay is the shadow ray alone: render
+     * it as conventional does, without hst's per-decision wrapper (the
+     * decisions, images and analysis codes are the same). */
+    ropt.shadow = method->uses_volumes && !have_volumes && method->test == shadow_hst_test
+                      ? shadow_method_find("conventional")
+                      : method;
     ropt.bvh = &bvh;
     ropt.volumes = have_volumes ? &volumes : NULL;
     ropt.embree = embree;
