@@ -16,6 +16,26 @@
 
 #include "parser_internal.h"
 
+/* clock and its kin for the frame being rendered (parser.h), or a still's:
+ * POV-Ray 3.7 renders a still with every one of them 0 and clock_on false
+ * (checked with 3.7.0.10). */
+static double animation_value(const ParseAnimation *a, int kw)
+{
+    static const ParseAnimation still = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0 };
+    if (!a)
+        a = &still;
+    switch (kw) {
+    case KW_clock: return a->clock;
+    case KW_clock_on: return a->clock_on;
+    case KW_clock_delta: return a->clock_delta;
+    case KW_initial_clock: return a->initial_clock;
+    case KW_final_clock: return a->final_clock;
+    case KW_frame_number: return a->frame_number;
+    case KW_initial_frame: return a->initial_frame;
+    default: return a->final_frame;
+    }
+}
+
 static void parse_num_factor(Parser *p, double e[5], int *terms);
 
 static void fill(double e[5], int terms, double v)
@@ -738,10 +758,9 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
     case KW_true: case KW_yes: case KW_on: val = 1.0; break;
     case KW_false: case KW_no: case KW_off: val = 0.0; break;
     case KW_clock: case KW_clock_on: case KW_initial_clock: case KW_frame_number: case KW_initial_frame:
-    case KW_final_frame:
-        val = 0.0;
+    case KW_final_frame: case KW_final_clock: case KW_clock_delta:
+        val = animation_value(p->opts->animation, t->kw);
         break;
-    case KW_final_clock: case KW_clock_delta: val = 1.0; break;
     case KW_version: val = p->version; break;
     case KW_image_width: val = p->opts->image_width; break;
     case KW_image_height: val = p->opts->image_height; break;

@@ -12,6 +12,15 @@ typedef struct {
     const char *string;
 } ParseDeclare;
 
+/* POV-Ray's clock and frame values as the scene sees them (clock,
+ * clock_on, clock_delta, initial_clock, final_clock, frame_number,
+ * initial_frame, final_frame). */
+typedef struct {
+    double clock, clock_delta, initial_clock, final_clock;
+    double frame_number, initial_frame, final_frame;
+    int clock_on;
+} ParseAnimation;
+
 typedef struct {
     /* Folders searched for #include after the scene's own folder, in order:
      * --include-path/+L folders, then the project's installed include folder,
@@ -26,6 +35,9 @@ typedef struct {
      * start. */
     const ParseDeclare *declares;
     int ndeclares;
+    /* The frame being rendered; NULL: a still, as POV-Ray renders one
+     * without animation switches (clock 0, clock_delta 1, ...). */
+    const ParseAnimation *animation;
     /* Budgets of the parse's work (0: the default), each an error naming the
      * position, the loop or macro, and the macro calls that led there:
      * #while/#for iterations in all (10 million), macro calls in all (2

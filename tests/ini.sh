@@ -112,8 +112,8 @@ mistake section 1 "^section.ini:2:1: a \\[section\\] header without its ']'$" "a
 mistake quote 1 "^quote.ini:1:1: a string opened with \" is not closed on its line$" "an unclosed quote" \
     'Output_File_Name="out.png'
 mistake width 1 "^width.ini:1:5: '+W0': width must be 1 to 32768$" "a bad switch in an INI file" "-D  +W0"
-mistake anim 1 "^anim.ini:1:1: Initial_Frame: animation is not supported by hstrace yet$" \
-    "a POV-Ray key hstrace does not support yet" "Initial_Frame=1"
+mistake field 1 "^field.ini:1:1: Field_Render: field rendering is not supported by hstrace yet$" \
+    "a POV-Ray key hstrace does not support yet" "Field_Render=on"
 mistake aa 1 "^aa.ini:2:1: Antialias=on: anti-aliasing is not supported by hstrace yet" "Antialias=on" \
     "Width=64" "Antialias=on"
 mistake declare 1 "Declare=X=abc: the value must be a number" "a Declare whose value is no number" "Declare=X=abc"

@@ -10,6 +10,7 @@
 
 #include "options.h"
 
+#include "animation.h"
 #include "aov.h"
 #include "ini_file.h"
 #include "grid.h"
@@ -166,10 +167,14 @@ void options_usage(FILE *f)
             "+FE (EXR), +FP (PPM): the output type, +Oname without an extension gets its\n"
             "extension; -F: write no image; +FT +FC +FB +FJ +FH are refused; -A -D +D -V are\n"
             "accepted and change nothing; +A is refused (no anti-aliasing yet).\n"
+            "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
+            "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
+            "parsed and rendered anew and written to NAMEnn.EXT, as POV-Ray numbers them.\n"
+            "Partial renders (+SR +ER +SC +EC) are refused (not yet there).\n"
             "POV-Ray INI files (FILE.ini, FILE.ini[SECTION]) and INI options given as KEY=VALUE\n"
             "(Input_File_Name, Output_File_Name, Width, Height, Quality, Work_Threads,\n"
-            "Library_Path, Output_File_Type, Bits_Per_Color, Declare=NAME=VALUE, ...: see the\n"
-            "man page); settings apply in order, later ones winning.\n"
+            "Library_Path, Output_File_Type, Bits_Per_Color, Declare=NAME=VALUE, Initial_Frame,\n"
+            "...: see the man page); settings apply in order, later ones winning.\n"
             "\n"
             "Exit status: 0 success, 1 bad usage (also a mistake in an INI file, a display,\n"
             "view or colour space the config lacks), 2 scene error, 3 input/output error (also\n"
@@ -252,6 +257,59 @@ static int output_type_switch(const char *arg, int on, Options *opt, char *err, 
     return 0;
 }
 
+static int parse_double(const char *s, double *out)
+{
+    if (!s || !*s)
+        return -1;
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (errno || *end || !isfinite(v))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+/* Animation's switches (+KFIn +KFFn +KIf +KFf +KC, +SFx +EFx, +Kf) and the
+ * partial renders' (+SR +ER +SC +EC), which hstrace does not do yet. */
+static int animation_switch(const char *arg, Options *opt, char *err, int errlen)
+{
+    const char *s = arg + 1;
+    char a = (char)toupper((unsigned char)s[0]), b = (char)toupper((unsigned char)s[1]);
+    char c = b ? (char)toupper((unsigned char)s[2]) : '\0';
+    int bad = 0;
+    if (a == 'K' && b == 'F' && (c == 'I' || c == 'F')) {
+        int *slot = c == 'I' ? &opt->initial_frame : &opt->final_frame;
+        bad = parse_int(s + 3, 0, 1000000000, slot);
+    } else if (a == 'K' && b == 'C') {
+        opt->cyclic = arg[0] == '+';
+    } else if (a == 'K' && (b == 'I' || b == 'F')) {
+        bad = parse_double(s + 2, b == 'I' ? &opt->initial_clock : &opt->final_clock);
+    } else if (a == 'K') {
+        bad = parse_double(s + 1, &opt->clock);
+        opt->have_clock = 1;
+    } else if ((a == 'S' || a == 'E') && b == 'F') {
+        double *slot = a == 'S' ? &opt->subset_start : &opt->subset_end;
+        bad = parse_double(s + 2, slot) || *slot < 0.0;
+        if (a == 'S')
+            opt->have_subset_start = 1;
+        else
+            opt->have_subset_end = 1;
+    } else if ((a == 'S' || a == 'E') && (b == 'R' || b == 'C')) {
+        snprintf(err, (size_t)errlen, "'%s': partial renders are not supported by hstrace yet", arg);
+        return -1;
+    } else {
+        snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
+        return -1;
+    }
+    if (bad) {
+        snprintf(err, (size_t)errlen, "'%s': expected %s", arg,
+                 a == 'K' && b == 'F' && (c == 'I' || c == 'F') ? "a frame number from 0" : "a number");
+        return -1;
+    }
+    return 0;
+}
+
 /* POV-Ray switches: +X or -X followed by a value where it has one. */
 static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen)
 {
@@ -264,6 +322,9 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
         }
         return 0;
     }
+    if (toupper((unsigned char)s[0]) == 'K' || ((toupper((unsigned char)s[0]) == 'S' || toupper((unsigned char)s[0]) == 'E') &&
+                                               s[1] != '\0'))
+        return animation_switch(arg, opt, err, errlen);
     switch (s[0]) {
     case 'W': case 'w':
         if (parse_int(s + 1, 1, MAX_DIMENSION, &opt->width)) {
@@ -345,16 +406,6 @@ static int parse_bool(const char *v, int *out)
     return -1;
 }
 
-/* A declared float as POV-Ray 3.7 passes it to the scene: stored in
- * single precision and written with 6 significant digits (Declare=X=
- * 1.23456789 gives the scene 1.23457). */
-static double pov_declared_float(double v)
-{
-    char buf[40];
-    snprintf(buf, sizeof buf, "%g", (double)(float)v);
-    return strtod(buf, NULL);
-}
-
 /* Declare=NAME=VALUE: a number, or a string in double quotes. */
 static int add_declare(Options *opt, const char *text, char *err, int errlen)
 {
@@ -376,12 +427,12 @@ static int add_declare(Options *opt, const char *text, char *err, int errlen)
         char *end;
         errno = 0;
         double v = strtod(value, &end);
-        if (end == value || *end != '\0' || !isfinite(v) || !isfinite(pov_declared_float(v))) {
+        if (end == value || *end != '\0' || !isfinite(v) || !isfinite(pov_declared_value(v))) {
             snprintf(err, (size_t)errlen, "Declare=%s: the value must be a number (within float's range) or a string "
                      "in double quotes", text);
             return -1;
         }
-        d.number = pov_declared_float(v);
+        d.number = pov_declared_value(v);
     }
     OptionDeclare *grown = realloc(opt->declares, sizeof *grown * (size_t)(opt->ndeclares + 1));
     if (!d.name || (quote && !d.string) || !grown) {
@@ -453,17 +504,17 @@ static const IniKey ini_keys[] = {
     { "Statistic_Console", KEY_IGNORED, NULL },
     { "Warning_Console", KEY_IGNORED, NULL },
     { "Warning_Level", KEY_IGNORED, NULL },
-    { "Initial_Frame", KEY_UNSUPPORTED, "animation" },
-    { "Final_Frame", KEY_UNSUPPORTED, "animation" },
-    { "Initial_Clock", KEY_UNSUPPORTED, "animation" },
-    { "Final_Clock", KEY_UNSUPPORTED, "animation" },
-    { "Subset_Start_Frame", KEY_UNSUPPORTED, "animation" },
-    { "Subset_End_Frame", KEY_UNSUPPORTED, "animation" },
-    { "Cyclic_Animation", KEY_UNSUPPORTED, "animation" },
-    { "Field_Render", KEY_UNSUPPORTED, "animation" },
-    { "Odd_Field", KEY_UNSUPPORTED, "animation" },
-    { "Clock", KEY_UNSUPPORTED, "animation" },
-    { "Frame_Step", KEY_UNSUPPORTED, "animation" },
+    { "Initial_Frame", KEY_SWITCH, "+KFI" },
+    { "Final_Frame", KEY_SWITCH, "+KFF" },
+    { "Initial_Clock", KEY_SWITCH, "+KI" },
+    { "Final_Clock", KEY_SWITCH, "+KF" },
+    { "Subset_Start_Frame", KEY_SWITCH, "+SF" },
+    { "Subset_End_Frame", KEY_SWITCH, "+EF" },
+    { "Cyclic_Animation", KEY_BOOL, "KC" },
+    { "Field_Render", KEY_UNSUPPORTED, "field rendering" },
+    { "Odd_Field", KEY_UNSUPPORTED, "field rendering" },
+    { "Clock", KEY_SWITCH, "+K" },
+    { "Frame_Step", KEY_UNSUPPORTED, "frame steps (POV-Ray 3.8)" },
     { "Start_Row", KEY_UNSUPPORTED, "partial renders" },
     { "End_Row", KEY_UNSUPPORTED, "partial renders" },
     { "Start_Column", KEY_UNSUPPORTED, "partial renders" },
@@ -532,6 +583,8 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
             if (parse_bool(value, &b)) {
                 snprintf(msg, sizeof msg, "%s=%s: expected on or off", k->name, value);
                 status = -1;
+            } else if (k->prefix[0] == 'K') {
+                opt->cyclic = b; /* Cyclic_Animation */
             } else if (k->prefix[0] == 'A') {
                 opt->antialias_on = b;
                 if (b) {
@@ -695,6 +748,8 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     opt->nth = NTH_AUTO;
     opt->pixel_coherence = 1;
     opt->tolerance = GRID_TOLERANCE;
+    opt->initial_frame = opt->final_frame = 1;
+    opt->final_clock = 1.0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v;

@@ -61,6 +61,15 @@ typedef struct {
     int antialias_on;             /* +A or Antialias=on, last: refused (hstrace has no anti-aliasing yet) */
     char antialias_by[720];       /* what turned it on, for the message */
     int antialias_positioned;     /* ... which begins with FILE:LINE:COLUMN */
+    /* Animation, as POV-Ray's +KFIn +KFFn +KIf +KFf +KC +SFx +EFx and the
+     * INI keys of the same (animation.h); +Kf: a still's clock. */
+    int initial_frame, final_frame;
+    double initial_clock, final_clock;
+    int cyclic;
+    int have_subset_start, have_subset_end;
+    double subset_start, subset_end;
+    double clock;
+    int have_clock;               /* +K or Clock= given: clock_on in a still */
     int output_type;              /* POV-Ray's +F: 0 none given, 'N' PNG, 'E' EXR, 'P' PPM */
     int no_output;                /* -F: render, write no image */
     int error_has_position;       /* the message options_parse gave begins with FILE:LINE:COLUMN */

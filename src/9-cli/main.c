@@ -26,6 +26,7 @@
 #include "shadow_volumes.h"
 #include "stats.h"
 #include "volume_plan.h"
+#include "animation.h"
 #include "vs_povray.h"
 #include "world.h"
 
@@ -56,37 +57,15 @@ static char *default_output(const char *scene, const char *ext)
     return out;
 }
 
-int main(int argc, char **argv)
+/* One frame (or the still): parse, build, render and write `output`. wall0:
+ * when the frame's work began. Returns the exit status. */
+static int render_frame(int argc, char **argv, const Options *o, const ParseAnimation *anim, const char *output,
+                        const char *stats_json, double wall0)
 {
-    if (argc > 1 && strcmp(argv[1], "compare") == 0)
-        return compare_main(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "vs-povray") == 0)
-        return vs_povray_main(argc - 1, argv + 1, argv[0]);
-    double wall0 = clock_wall();
-    Options opt;
-    char err[1024];
-    if (options_parse(argc, argv, &opt, err, sizeof err)) {
-        /* An INI file's mistake begins with its FILE:LINE:COLUMN. */
-        fprintf(stderr, opt.error_has_position ? "%s\n" : "hstrace: %s\n", err);
-        int io = opt.error_is_io;
-        options_free(&opt);
-        return io ? EXIT_IO : EXIT_USAGE;
-    }
-    if (opt.help || opt.version) {
-        if (opt.help)
-            options_usage(stdout);
-        else if (shadow_embree_built())
-            printf("hstrace %s (%s; Embree %s)\n", PACKAGE_VERSION, colour_ocio_version(), shadow_embree_version());
-        else
-            printf("hstrace %s (%s; no Embree)\n", PACKAGE_VERSION, colour_ocio_version());
-        options_free(&opt);
-        return EXIT_OK;
-    }
-
     /* Everything the render owns, released once at the end (every release
      * is safe on what was never made). */
     int status = EXIT_OK;
-    char *owned_output = NULL;
+    char err[1024];
     ParseDeclare *declares = NULL;
     ColourDisplay *colour = NULL;
     Scene *scene = NULL;
@@ -108,18 +87,12 @@ int main(int argc, char **argv)
     memset(&aov, 0, sizeof aov);
     memset(&prov, 0, sizeof prov);
 
-    const char *output = opt.output;
-    if (!output && !(output = owned_output = default_output(opt.scene, options_output_extension(&opt)))) {
-        fprintf(stderr, "hstrace: out of memory\n");
-        status = EXIT_IO;
-        goto done;
-    }
     if (image_format_from_path(output) == IMAGE_FORMAT_UNKNOWN) {
         fprintf(stderr, "hstrace: '%s': unknown image format (use .exr, .png or .ppm)\n", output);
         status = EXIT_USAGE;
         goto done;
     }
-    if (opt.aov && image_format_from_path(output) != IMAGE_FORMAT_EXR) {
+    if (o->aov && image_format_from_path(output) != IMAGE_FORMAT_EXR) {
         fprintf(stderr, "hstrace: --aov: '%s': analysis channels need an EXR output (-o FILE.exr)\n", output);
         status = EXIT_USAGE;
         goto done;
@@ -128,10 +101,10 @@ int main(int argc, char **argv)
     /* Colour management: OpenColorIO when an option or $OCIO asks for it,
      * else POV-Ray's own encoding. Opened before any work, so that a bad
      * config or name costs nothing. */
-    ColourRequest creq = { opt.ocio_config, opt.display, opt.view, opt.colorspace };
+    ColourRequest creq = { o->ocio_config, o->display, o->view, o->colorspace };
     if (colour_requested(&creq)) {
         ColourStatus cs = colour_display_open(&creq, &colour, err, sizeof err);
-        int from_env_only = !opt.ocio_config && !opt.display && !opt.view && !opt.colorspace;
+        int from_env_only = !o->ocio_config && !o->display && !o->view && !o->colorspace;
         if (cs == COLOUR_ERR_UNAVAILABLE && from_env_only) {
             /* $OCIO is set for every program of a user; one built without
              * the library goes on as if it were not. */
@@ -148,8 +121,8 @@ int main(int argc, char **argv)
      * (its colors.inc for systems without POV-Ray's). */
     const char *dirs[MAX_INCLUDE_PATHS + 2];
     int ndirs = 0;
-    for (int i = 0; i < opt.ninclude_paths; i++)
-        dirs[ndirs++] = opt.include_paths[i];
+    for (int i = 0; i < o->ninclude_paths; i++)
+        dirs[ndirs++] = o->include_paths[i];
     const char *povray_dir = povray_include_folder();
     if (povray_dir)
         dirs[ndirs++] = povray_dir;
@@ -160,41 +133,42 @@ int main(int argc, char **argv)
     memset(&popt, 0, sizeof popt);
     popt.include_dirs = dirs;
     popt.ninclude_dirs = ndirs;
-    popt.image_width = opt.width;
-    popt.image_height = opt.height;
-    popt.strict = opt.strict;
-    popt.max_memory = opt.max_memory;
-    popt.max_parse_seconds = opt.max_parse_seconds;
-    popt.max_loop_iterations = opt.max_loop_iterations;
-    popt.max_macro_calls = opt.max_macro_calls;
-    popt.max_repeated_tokens = opt.max_repeated_tokens;
+    popt.image_width = o->width;
+    popt.image_height = o->height;
+    popt.strict = o->strict;
+    popt.max_memory = o->max_memory;
+    popt.max_parse_seconds = o->max_parse_seconds;
+    popt.max_loop_iterations = o->max_loop_iterations;
+    popt.max_macro_calls = o->max_macro_calls;
+    popt.max_repeated_tokens = o->max_repeated_tokens;
     /* Declare=NAME=VALUE: the options' list has the parser's shape. */
-    declares = opt.ndeclares ? calloc((size_t)opt.ndeclares, sizeof *declares) : NULL;
-    for (int i = 0; declares && i < opt.ndeclares; i++)
-        declares[i] = (ParseDeclare){ opt.declares[i].name, opt.declares[i].number, opt.declares[i].string };
-    if (opt.ndeclares && !declares) {
+    declares = o->ndeclares ? calloc((size_t)o->ndeclares, sizeof *declares) : NULL;
+    for (int i = 0; declares && i < o->ndeclares; i++)
+        declares[i] = (ParseDeclare){ o->declares[i].name, o->declares[i].number, o->declares[i].string };
+    if (o->ndeclares && !declares) {
         fprintf(stderr, "hstrace: out of memory\n");
         status = EXIT_IO;
         goto done;
     }
     popt.declares = declares;
-    popt.ndeclares = opt.ndeclares;
+    popt.ndeclares = o->ndeclares;
+    popt.animation = anim;
 
     StatsReport report;
     memset(&report, 0, sizeof report);
-    report.scene = opt.scene;
-    report.shadow_method = opt.shadows;
-    report.width = opt.width;
-    report.height = opt.height;
+    report.scene = o->scene;
+    report.shadow_method = o->shadows;
+    report.width = o->width;
+    report.height = o->height;
 
     double t = clock_wall();
     ParseError perr;
-    scene = parse_scene_file(opt.scene, &popt, &perr);
+    scene = parse_scene_file(o->scene, &popt, &perr);
     if (!scene) {
         if (perr.line > 0)
             fprintf(stderr, "%s:%d:%d: %s\n", perr.file, perr.line, perr.column, perr.message);
         else
-            fprintf(stderr, "%s: %s\n", perr.file[0] ? perr.file : opt.scene, perr.message);
+            fprintf(stderr, "%s: %s\n", perr.file[0] ? perr.file : o->scene, perr.message);
         fputs(perr.notes, stderr);
         status = perr.is_io ? EXIT_IO : EXIT_SCENE;
         goto done;
@@ -222,32 +196,32 @@ int main(int argc, char **argv)
      * of every infinite plane under the geometry, where shadows fall. */
     Vec3 extra[1 + 8 * 16];
     int nextra = grid_extra_points(&world, extra, (int)(sizeof extra / sizeof extra[0]));
-    if (grid_build(&grid, &world, opt.grid[0] ? opt.grid : NULL, extra, nextra)) {
+    if (grid_build(&grid, &world, o->grid[0] ? o->grid : NULL, extra, nextra)) {
         fprintf(stderr, "hstrace: out of memory while building the grid\n");
         status = EXIT_IO;
         goto done;
     }
-    grid_set_tolerance(&grid, opt.tolerance);
-    int threads = opt.threads > 0 ? opt.threads : render_default_threads();
+    grid_set_tolerance(&grid, o->tolerance);
+    int threads = o->threads > 0 ? o->threads : render_default_threads();
     if (bvh_build(&bvh, &world, threads)) {
         fprintf(stderr, "hstrace: out of memory while building the hierarchy\n");
         status = EXIT_IO;
         goto done;
     }
-    const ShadowMethod *method = shadow_method_find(opt.shadows);
+    const ShadowMethod *method = shadow_method_find(o->shadows);
     int have_volumes = 0;
     /* N_th as the render will use it (auto: measured with the volumes). */
-    double nth = opt.nth == NTH_PER_POINT ? -1.0 : opt.nth == NTH_AUTO ? 0.0 : opt.nth;
-    if (method->uses_volumes && opt.quality >= 4) {
+    double nth = o->nth == NTH_PER_POINT ? -1.0 : o->nth == NTH_AUTO ? 0.0 : o->nth;
+    if (method->uses_volumes && o->quality >= 4) {
         /* hst builds only the volumes that pay (volume_plan.h); the pure
          * volume method is the paper's baseline and builds them all. */
         VolumePlanOptions po;
-        po.mode = method->test == shadow_hst_test && !opt.volumes_always ? VOLUMES_AUTO : VOLUMES_ALWAYS;
-        po.width = opt.width;
-        po.height = opt.height;
+        po.mode = method->test == shadow_hst_test && !o->volumes_always ? VOLUMES_AUTO : VOLUMES_ALWAYS;
+        po.width = o->width;
+        po.height = o->height;
         po.threads = threads;
-        po.precision = opt.plane_precision;
-        po.nth = opt.nth == NTH_PER_POINT ? VOLUME_PLAN_NTH_PER_POINT : opt.nth == NTH_AUTO ? VOLUME_PLAN_NTH_AUTO : opt.nth;
+        po.precision = o->plane_precision;
+        po.nth = o->nth == NTH_PER_POINT ? VOLUME_PLAN_NTH_PER_POINT : o->nth == NTH_AUTO ? VOLUME_PLAN_NTH_AUTO : o->nth;
         const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
         if (volume_plan_build(&plan, &volumes, &cost, &world, &grid, &bvh, eye, &po)) {
             fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
@@ -260,11 +234,11 @@ int main(int argc, char **argv)
         if (have_volumes) {
             report.volumes = &volumes;
             report.cost = &cost;
-            if (opt.nth == NTH_AUTO)
+            if (o->nth == NTH_AUTO)
                 nth = cost.nth_ray;
         }
     }
-    if (method->test == shadow_embree_test && opt.quality >= 4) {
+    if (method->test == shadow_embree_test && o->quality >= 4) {
         embree = shadow_embree_build(&world, threads, err, sizeof err);
         if (!embree) {
             fprintf(stderr, "hstrace: %s\n", err);
@@ -283,10 +257,10 @@ int main(int argc, char **argv)
 
     RenderOptions ropt;
     memset(&ropt, 0, sizeof ropt);
-    ropt.width = opt.width;
-    ropt.height = opt.height;
+    ropt.width = o->width;
+    ropt.height = o->height;
     ropt.threads = threads;
-    ropt.quality = quality_from_level(opt.quality);
+    ropt.quality = quality_from_level(o->quality);
     /* hst with no light whose volumes pay is the shadow ray alone: render
      * it as conventional does, without hst's per-decision wrapper (the
      * decisions, images and analysis codes are the same). */
@@ -297,17 +271,17 @@ int main(int argc, char **argv)
     ropt.volumes = have_volumes ? &volumes : NULL;
     ropt.embree = embree;
     ropt.cost = &cost;
-    ropt.verify = opt.verify_shadows;
-    ropt.pixel_coherence = opt.pixel_coherence;
+    ropt.verify = o->verify_shadows;
+    ropt.pixel_coherence = o->pixel_coherence;
     ropt.nth = nth;
     report.nth = ropt.nth;
-    report.nth_mode = opt.nth == NTH_PER_POINT ? "per-point" : opt.nth == NTH_AUTO ? "auto (C_ray / (C_s + C_g))" : "fixed";
-    report.verify = opt.verify_shadows;
+    report.nth_mode = o->nth == NTH_PER_POINT ? "per-point" : o->nth == NTH_AUTO ? "auto (C_ray / (C_s + C_g))" : "fixed";
+    report.verify = o->verify_shadows;
     ropt.progress = isatty(STDERR_FILENO);
     report.threads = ropt.threads;
 
-    if (opt.aov) {
-        if (aov_image_alloc(&aov, opt.aov, opt.width, opt.height, world.nlights, opt.exr_float)) {
+    if (o->aov) {
+        if (aov_image_alloc(&aov, o->aov, o->width, o->height, world.nlights, o->exr_float)) {
             fprintf(stderr, "hstrace: out of memory for the analysis channels\n");
             status = EXIT_IO;
             goto done;
@@ -325,8 +299,8 @@ int main(int argc, char **argv)
     image_decode_working_gamma(&img, working_gamma);
     ImageWriteOptions wopt;
     memset(&wopt, 0, sizeof wopt);
-    wopt.exr_float = opt.exr_float;
-    wopt.png_16bit = opt.png16;
+    wopt.exr_float = o->exr_float;
+    wopt.png_16bit = o->png16;
     wopt.display_gamma = 0.0; /* sRGB, as POV-Ray 3.7 writes assumed_gamma 1 scenes */
     wopt.display = colour;    /* or OpenColorIO's display/view transform */
     if (colour != NULL) {
@@ -339,21 +313,21 @@ int main(int argc, char **argv)
     wopt.nchannels = aov.nchannels;
     report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */
     if (image_format_from_path(output) == IMAGE_FORMAT_EXR) {
-        if (provenance_build(&prov, argc, argv, &opt, &report)) {
+        if (provenance_build(&prov, argc, argv, o, &report)) {
             fprintf(stderr, "hstrace: out of memory\n");
             status = EXIT_IO;
         }
         wopt.attributes = prov.attr;
         wopt.nattributes = prov.n;
     }
-    if (status == EXIT_OK && !opt.no_output && image_write(output, &img, &wopt, err, sizeof err)) {
+    if (status == EXIT_OK && !o->no_output && image_write(output, &img, &wopt, err, sizeof err)) {
         fprintf(stderr, "hstrace: %s\n", err);
         status = EXIT_IO;
     }
     report.output_seconds = clock_wall() - t;
     image_free(&img);
     report.wall_seconds = clock_wall() - wall0;
-    if (status == EXIT_OK && opt.stats) {
+    if (status == EXIT_OK && o->stats) {
         stats_print(stderr, &report);
         if (colour != NULL)
             fprintf(stderr, "colour: %s, config '%s', display '%s', view '%s', working space '%s'\n",
@@ -362,7 +336,7 @@ int main(int argc, char **argv)
         else
             fprintf(stderr, "colour: POV-Ray's sRGB encoding (no OpenColorIO config asked for)\n");
     }
-    if (status == EXIT_OK && opt.stats_json && stats_write_json(opt.stats_json, &report, err, sizeof err)) {
+    if (status == EXIT_OK && stats_json && stats_write_json(stats_json, &report, err, sizeof err)) {
         fprintf(stderr, "hstrace: %s\n", err);
         status = EXIT_IO;
     }
@@ -378,8 +352,73 @@ done:
     world_free(&world);
     scene_free(scene);
     colour_display_free(colour);
-    free(owned_output);
     free(declares);
+    return status;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1 && strcmp(argv[1], "compare") == 0)
+        return compare_main(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "vs-povray") == 0)
+        return vs_povray_main(argc - 1, argv + 1, argv[0]);
+    double wall0 = clock_wall();
+    Options opt;
+    char err[1024];
+    if (options_parse(argc, argv, &opt, err, sizeof err)) {
+        /* An INI file's mistake begins with its FILE:LINE:COLUMN. */
+        fprintf(stderr, opt.error_has_position ? "%s\n" : "hstrace: %s\n", err);
+        int io = opt.error_is_io;
+        options_free(&opt);
+        return io ? EXIT_IO : EXIT_USAGE;
+    }
+    if (opt.help || opt.version) {
+        if (opt.help)
+            options_usage(stdout);
+        else if (shadow_embree_built())
+            printf("hstrace %s (%s; Embree %s)\n", PACKAGE_VERSION, colour_ocio_version(), shadow_embree_version());
+        else
+            printf("hstrace %s (%s; no Embree)\n", PACKAGE_VERSION, colour_ocio_version());
+        options_free(&opt);
+        return EXIT_OK;
+    }
+
+    Animation anim;
+    if (animation_plan(&opt, &anim, err, sizeof err)) {
+        fprintf(stderr, "hstrace: %s\n", err);
+        options_free(&opt);
+        return EXIT_USAGE;
+    }
+    char *default_name = opt.output ? NULL : default_output(opt.scene, options_output_extension(&opt));
+    const char *output = opt.output ? opt.output : default_name;
+    int status = output ? EXIT_OK : EXIT_IO;
+    if (!output)
+        fprintf(stderr, "hstrace: out of memory\n");
+    /* Each frame is parsed, built and rendered anew, as POV-Ray does, and
+     * written to its own numbered file; the first that fails ends the run. */
+    for (int frame = anim.first; status == EXIT_OK && frame <= anim.last; frame++) {
+        /* The values as POV-Ray 3.7 hands them to the scene (animation.h). */
+        ParseAnimation pa = { animation_clock(&anim, frame), pov_declared_value(anim.clock_delta),
+                              pov_declared_value(anim.initial_clock), pov_declared_value(anim.final_clock),
+                              pov_declared_value(frame), pov_declared_value(anim.initial_frame),
+                              pov_declared_value(anim.final_frame), 1 };
+        ParseAnimation still = { anim.still_clock, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, anim.still_clock_on };
+        char *name = anim.animated ? animation_file_name(output, frame, anim.digits) : NULL;
+        char *json = anim.animated && opt.stats_json ? animation_file_name(opt.stats_json, frame, anim.digits) : NULL;
+        if ((anim.animated && !name) || (anim.animated && opt.stats_json && !json)) {
+            fprintf(stderr, "hstrace: out of memory\n");
+            status = EXIT_IO;
+        } else {
+            if (anim.animated && isatty(STDERR_FILENO))
+                fprintf(stderr, "hstrace: frame %d (%d of %d), clock %g: %s\n", frame, frame - anim.first + 1,
+                        anim.last - anim.first + 1, pa.clock, name);
+            status = render_frame(argc, argv, &opt, anim.animated ? &pa : &still, name ? name : output,
+                                  json ? json : opt.stats_json, frame == anim.first ? wall0 : clock_wall());
+        }
+        free(name);
+        free(json);
+    }
+    free(default_name);
     options_free(&opt);
     return status;
 }

@@ -1,0 +1,83 @@
+/* POV-Ray's frames, clocks and frame file names (animation.h). */
+#include "animation.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* +SF/+EF: a frame number, or a fraction of the frames when below 1 (and
+ * not 0), as POV-Ray reads them. */
+static int subset_frame(double v, const Animation *a)
+{
+    if (v == 0.0 || v >= 1.0)
+        return (int)v;
+    return (int)((a->final_frame - a->initial_frame + 1) * v);
+}
+
+int animation_plan(const Options *opt, Animation *a, char *err, int errlen)
+{
+    memset(a, 0, sizeof *a);
+    a->still_clock = (float)opt->clock;
+    a->still_clock_on = opt->have_clock;
+    a->initial_frame = opt->initial_frame > 0 ? opt->initial_frame : 0;
+    a->final_frame = opt->final_frame > a->initial_frame ? opt->final_frame : a->initial_frame;
+    a->initial_clock = opt->initial_clock;
+    a->final_clock = opt->final_clock;
+    a->animated = opt->final_frame > opt->initial_frame;
+    if (!a->animated) {
+        a->first = a->last = a->initial_frame;
+        return 0;
+    }
+    if (opt->cyclic)
+        a->final_frame++;
+    a->first = a->initial_frame;
+    if (opt->have_subset_start) {
+        a->first = subset_frame(opt->subset_start, a);
+        if (a->first < a->initial_frame)
+            a->first = a->initial_frame;
+    }
+    if (opt->have_subset_end) {
+        a->last = subset_frame(opt->subset_end, a);
+        if (a->last < a->first)
+            a->last = a->first;
+    } else {
+        a->last = a->final_frame - (opt->cyclic ? 1 : 0);
+    }
+    if (a->first > a->last || a->first > a->final_frame) {
+        snprintf(err, (size_t)errlen, "no frame to render: frames %d to %d of %d to %d", a->first, a->last,
+                 a->initial_frame, a->final_frame);
+        return -1;
+    }
+    a->clock_delta = (a->final_clock - a->initial_clock) / (double)(a->final_frame - a->initial_frame);
+    a->digits = 1;
+    for (int i = a->final_frame; i >= 10; i /= 10)
+        a->digits++;
+    return 0;
+}
+
+double animation_clock(const Animation *a, int frame)
+{
+    if (!a->animated)
+        return a->still_clock;
+    return (float)(a->clock_delta * (double)(frame - a->initial_frame) + a->initial_clock);
+}
+
+double pov_declared_value(double v)
+{
+    char buf[40];
+    snprintf(buf, sizeof buf, "%g", (double)(float)v);
+    return strtod(buf, NULL);
+}
+
+char *animation_file_name(const char *output, int frame, int digits)
+{
+    const char *base = strrchr(output, '/');
+    base = base ? base + 1 : output;
+    const char *dot = strrchr(base, '.');
+    size_t stem = dot && dot != base ? (size_t)(dot - output) : strlen(output);
+    size_t n = strlen(output) + 16 + (size_t)digits;
+    char *name = malloc(n);
+    if (name)
+        snprintf(name, n, "%.*s%0*d%s", (int)stem, output, digits, frame, output + stem);
+    return name;
+}
