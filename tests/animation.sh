@@ -8,7 +8,7 @@
 # switches and from an INI file, frame by frame against POV-Ray's frames
 # (`hstrace compare`, POV-Ray's image as A; the limits those of
 # tests/lights.sh); and a frame that fails ending the run with its status,
-# the frames before it written and none after.
+# the frames before it written and none after. (Partial renders: partial.sh.)
 #
 # Environment: top_builddir (default .), POVRAY (path or name of povray;
 # default povray).
@@ -126,9 +126,5 @@ run values.pov +KFIx -o bad.png
 check "+KFIx: exit status 1, says what is expected" exited 1 "'+KFIx': expected a frame number"
 run values.pov +KFI1 +KFF3 +SF5 -o bad.png
 check "+SF beyond the final frame: no frame to render, exit status 1" exited 1 "no frame to render"
-for sw in +SR10 +ER20 +SC10 +EC20; do
-    run values.pov "$sw" -o bad.png
-    check "$sw: partial renders refused, exit status 1" exited 1 "partial renders are not supported"
-done
 check "... and nothing written" fails test -e "$work/bad.png"
 tap_end

@@ -170,7 +170,8 @@ void options_usage(FILE *f)
             "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
             "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
             "parsed and rendered anew and written to NAMEnn.EXT, as POV-Ray numbers them.\n"
-            "Partial renders (+SR +ER +SC +EC) are refused (not yet there).\n"
+            "Partial renders: +SRn +ERn +SCn +ECn (rows and columns from 1, or fractions below\n"
+            "1), the rest of the image black, as POV-Ray writes them.\n"
             "POV-Ray INI files (FILE.ini, FILE.ini[SECTION]) and INI options given as KEY=VALUE\n"
             "(Input_File_Name, Output_File_Name, Width, Height, Quality, Work_Threads,\n"
             "Library_Path, Output_File_Type, Bits_Per_Color, Declare=NAME=VALUE, Initial_Frame,\n"
@@ -296,8 +297,12 @@ static int animation_switch(const char *arg, Options *opt, char *err, int errlen
         else
             opt->have_subset_end = 1;
     } else if ((a == 'S' || a == 'E') && (b == 'R' || b == 'C')) {
-        snprintf(err, (size_t)errlen, "'%s': partial renders are not supported by hstrace yet", arg);
-        return -1;
+        double *slot = a == 'S' ? (b == 'R' ? &opt->start_row : &opt->start_col)
+                                : (b == 'R' ? &opt->end_row : &opt->end_col);
+        int *have = a == 'S' ? (b == 'R' ? &opt->have_start_row : &opt->have_start_col)
+                             : (b == 'R' ? &opt->have_end_row : &opt->have_end_col);
+        bad = parse_double(s + 2, slot) || *slot < 0.0;
+        *have = 1;
     } else {
         snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
         return -1;
@@ -515,10 +520,10 @@ static const IniKey ini_keys[] = {
     { "Odd_Field", KEY_UNSUPPORTED, "field rendering" },
     { "Clock", KEY_SWITCH, "+K" },
     { "Frame_Step", KEY_UNSUPPORTED, "frame steps (POV-Ray 3.8)" },
-    { "Start_Row", KEY_UNSUPPORTED, "partial renders" },
-    { "End_Row", KEY_UNSUPPORTED, "partial renders" },
-    { "Start_Column", KEY_UNSUPPORTED, "partial renders" },
-    { "End_Column", KEY_UNSUPPORTED, "partial renders" },
+    { "Start_Row", KEY_SWITCH, "+SR" },
+    { "End_Row", KEY_SWITCH, "+ER" },
+    { "Start_Column", KEY_SWITCH, "+SC" },
+    { "End_Column", KEY_SWITCH, "+EC" },
     { "Continue_Trace", KEY_UNSUPPORTED, "continuing a render" },
     { "Create_Continue_Trace_Log", KEY_UNSUPPORTED, "continuing a render" },
     { "Output_Alpha", KEY_UNSUPPORTED, "the alpha channel of PNG output" },
@@ -716,6 +721,41 @@ static int is_key_value(const char *a)
     while (isalnum((unsigned char)*p) || *p == '_')
         p++;
     return *p == '=';
+}
+
+/* The pixels a partial render covers, as POV-Ray 3.7 works them out from
+ * +SR +ER +SC +EC (measured with 3.7.0.10): a start of 1 or more is a row
+ * counted from 1, below 1 a fraction of the height; an end above 1 is a
+ * row counted from 1, up to 1 a fraction (+ER1 is the last row); fractions
+ * are cut down to whole rows. An end beyond the image is an error, as in
+ * POV-Ray; an empty area too (POV-Ray renders nothing). */
+static int area_side(int have_start, double start, int have_end, double end, int size, int *lo, int *hi,
+                     const char *what, char *err, int errlen)
+{
+    double first = !have_start ? 0.0 : start >= 1.0 ? start - 1.0 : start * size;
+    double last = !have_end ? size - 1.0 : end > 1.0 ? end - 1.0 : end * size - 1.0;
+    if (last >= size) {
+        snprintf(err, (size_t)errlen, "the render area's end %s (%g) is beyond the image's %d", what, end, size);
+        return -1;
+    }
+    *lo = (int)first;
+    *hi = (int)last + 1;
+    if (last < 0.0 || *lo >= *hi) {
+        snprintf(err, (size_t)errlen, "the render area is empty: %ss %g to %g of %d", what, have_start ? start : 1.0,
+                 have_end ? end : (double)size, size);
+        return -1;
+    }
+    return 0;
+}
+
+static int render_area(Options *opt, char *err, int errlen)
+{
+    return area_side(opt->have_start_row, opt->start_row, opt->have_end_row, opt->end_row, opt->height,
+                     &opt->area_y0, &opt->area_y1, "row", err, errlen) ||
+                   area_side(opt->have_start_col, opt->start_col, opt->have_end_col, opt->end_col, opt->width,
+                             &opt->area_x0, &opt->area_x1, "column", err, errlen)
+               ? -1
+               : 0;
 }
 
 void options_free(Options *opt)
@@ -946,6 +986,8 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
         snprintf(err, (size_t)errlen, "no scene file given (see --help)");
         return -1;
     }
+    if (render_area(opt, err, errlen))
+        return -1;
     if (opt->antialias_on) {
         opt->error_has_position = opt->antialias_positioned;
         snprintf(err, (size_t)errlen, "%s: anti-aliasing is not supported by hstrace yet (render with -A or "

@@ -69,7 +69,14 @@ typedef struct {
     int have_subset_start, have_subset_end;
     double subset_start, subset_end;
     double clock;
-    int have_clock;               /* +K or Clock= given: clock_on in a still */
+    int have_clock;
+    /* Partial renders, as POV-Ray's +SRn +ERn +SCn +ECn (a value of 1 or
+     * more a row or column counted from 1, below 1 a fraction) and the
+     * INI keys Start_Row ...; area_*: the pixels rendered, [x0, x1) x
+     * [y0, y1), worked out at the end of options_parse. */
+    double start_row, end_row, start_col, end_col;
+    int have_start_row, have_end_row, have_start_col, have_end_col;
+    int area_x0, area_y0, area_x1, area_y1;               /* +K or Clock= given: clock_on in a still */
     int output_type;              /* POV-Ray's +F: 0 none given, 'N' PNG, 'E' EXR, 'P' PPM */
     int no_output;                /* -F: render, write no image */
     int error_has_position;       /* the message options_parse gave begins with FILE:LINE:COLUMN */

@@ -28,6 +28,8 @@ typedef struct {
     const RenderOptions *opt;
     Image *img;
     int tiles_x, ntiles;
+    int tile_x0, tile_y0;   /* the first tile's place in the image's grid of tiles */
+    int x0, y0, x1, y1;     /* the pixels rendered */
     atomic_int next_tile;   /* shared by the workers: the only mutable shared state */
     atomic_int done_tiles;
     atomic_int failed;
@@ -56,9 +58,13 @@ static uint64_t rays_traced(const ShadeContext *ctx, const RenderStats *loop)
 static void render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile)
 {
     const RenderOptions *opt = job->opt;
-    int x0 = (tile % job->tiles_x) * TILE, y0 = (tile / job->tiles_x) * TILE;
-    int x1 = x0 + TILE < opt->width ? x0 + TILE : opt->width;
-    int y1 = y0 + TILE < opt->height ? y0 + TILE : opt->height;
+    /* Tiles lie on the whole image's grid, cut to the area rendered: a
+     * partial render's pixels are those of the full render. */
+    int x0 = (job->tile_x0 + tile % job->tiles_x) * TILE, y0 = (job->tile_y0 + tile / job->tiles_x) * TILE;
+    int x1 = x0 + TILE < job->x1 ? x0 + TILE : job->x1;
+    int y1 = y0 + TILE < job->y1 ? y0 + TILE : job->y1;
+    x0 = x0 > job->x0 ? x0 : job->x0;
+    y0 = y0 > job->y0 ? y0 : job->y0;
     /* The cache method's last blockers start empty in every tile, so that
      * what it decides and counts for a pixel (the analysis channels, the
      * statistics) does not depend on which tiles this thread rendered
@@ -185,8 +191,14 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
     job.grid = g;
     job.opt = opt;
     job.img = img;
-    job.tiles_x = (opt->width + TILE - 1) / TILE;
-    job.ntiles = job.tiles_x * ((opt->height + TILE - 1) / TILE);
+    job.x0 = opt->x0;
+    job.y0 = opt->y0;
+    job.x1 = opt->x1 > 0 ? opt->x1 : opt->width;
+    job.y1 = opt->y1 > 0 ? opt->y1 : opt->height;
+    job.tile_x0 = job.x0 / TILE;
+    job.tile_y0 = job.y0 / TILE;
+    job.tiles_x = (job.x1 - 1) / TILE - job.tile_x0 + 1;
+    job.ntiles = job.tiles_x * ((job.y1 - 1) / TILE - job.tile_y0 + 1);
     atomic_init(&job.next_tile, 0);
     atomic_init(&job.done_tiles, 0);
     atomic_init(&job.failed, 0);

@@ -12,6 +12,9 @@
 
 typedef struct {
     int width, height;
+    /* The pixels rendered, [x0, x1) x [y0, y1) (a partial render); the rest
+     * of the image stays 0. All zero: the whole image. */
+    int x0, y0, x1, y1;
     int threads;              /* >= 1 */
     Quality quality;
     const ShadowMethod *shadow;

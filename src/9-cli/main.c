@@ -259,6 +259,10 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     memset(&ropt, 0, sizeof ropt);
     ropt.width = o->width;
     ropt.height = o->height;
+    ropt.x0 = o->area_x0;
+    ropt.y0 = o->area_y0;
+    ropt.x1 = o->area_x1;
+    ropt.y1 = o->area_y1;
     ropt.threads = threads;
     ropt.quality = quality_from_level(o->quality);
     /* hst with no light whose volumes pay is the shadow ray alone: render

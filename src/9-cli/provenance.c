@@ -92,6 +92,11 @@ static char *resolved_options(const Options *opt, const StatsReport *r)
     for (int g = 0; g < AOV_NGROUPS; g++)
         if (opt->aov & (1u << g))
             snprintf(aov + strlen(aov), sizeof aov - strlen(aov), "%s%s", aov[0] ? "," : "", aov_group_list[g]);
+    /* A partial render's area, as the rows and columns POV-Ray counts from 1. */
+    char area[96] = "";
+    if (opt->area_x0 > 0 || opt->area_y0 > 0 || opt->area_x1 < opt->width || opt->area_y1 < opt->height)
+        snprintf(area, sizeof area, " +SR%d +ER%d +SC%d +EC%d", opt->area_y0 + 1, opt->area_y1, opt->area_x0 + 1,
+                 opt->area_x1);
     size_t len = 1024;
     char *s = malloc(len);
     if (!s)
@@ -99,13 +104,13 @@ static char *resolved_options(const Options *opt, const StatsReport *r)
     int pp = opt->plane_precision >= 0 && opt->plane_precision < 3 ? opt->plane_precision : 0;
     snprintf(s, len,
              "--width %d --height %d +Q%d --shadows %s --volumes %s --nth %s --pixel-coherence %s --tolerance %s "
-             "--plane-precision %s --grid %dx%dx%d --threads %d%s%s%s%s",
+             "--plane-precision %s --grid %dx%dx%d --threads %d%s%s%s%s%s",
              opt->width, opt->height, opt->quality, opt->shadows, opt->volumes_always ? "always" : "auto", nth,
              opt->pixel_coherence ? "on" : "off",
              tolerance, precision_names[pp], r->grid[0], r->grid[1], r->grid[2], r->threads,
              opt->exr_float ? " --exr-float" : "",
              opt->verify_shadows == 2 ? " --verify-reference" : opt->verify_shadows ? " --verify-shadows" : "",
-             aov[0] ? " --aov " : "", aov);
+             aov[0] ? " --aov " : "", aov, area);
     return s;
 }
 
