@@ -98,4 +98,34 @@ run "$srcdir/scenes/desk.pov" --width 32 --height 24 -o "$work/o.png" --volumes 
 check_status "--pixel-coherence off --tolerance 0 --nth auto: exit status 0" "$status" 0
 check "--pixel-coherence off stays set after --nth auto" grep -q '"coherent": 0,' "$work/o.json"
 check "--tolerance 0 stays set after --nth auto" grep -q '"tolerance": 0,' "$work/o.json"
+
+# A scene named without its extension, as "povray +Idesk" takes it.
+case $hstrace in /*) abs=$hstrace ;; *) abs=$(pwd)/$hstrace ;; esac
+cp "$srcdir/scenes/desk.pov" "$work/desk.pov"
+(cd "$work" && "$abs" desk --width 8 --height 6 +D >"$work/out" 2>"$work/err"); status=$?
+check_status "'hstrace desk' renders desk.pov: exit status 0" "$status" 0
+check "... to desk.png, as POV-Ray names it" test -s "$work/desk.png"
+check "+D: one note that there is no display window, not an error" test "$(grep -c "no display window" "$work/err")" = 1
+
+# The progress line: on a terminal (a pseudo-terminal made by script(1)),
+# rewritten in place with the pixels done, the share, the time spent and an
+# estimate of what is left, and erased at the end; nothing when stderr is
+# not a terminal.
+if command -v script >/dev/null 2>&1; then
+    (cd "$work" && script -qec "'$abs' desk.pov --width 2000 --height 1500 --threads 1 -o pty.png" /dev/null \
+        >pty.out 2>&1 </dev/null); status=$?
+    check_status "under a pseudo-terminal: exit status 0" "$status" 0
+    tr '\r' '\n' <"$work/pty.out" >"$work/pty.lines"
+    check "under a pseudo-terminal: a progress line with pixels, share, time spent and left" \
+        grep -Eq '^rendering: [0-9]+ of 3000000 pixels \( *[0-9]+%\), [0-9.hms]+ elapsed, about [0-9.hms]+ left' \
+        "$work/pty.lines"
+    # The last thing written is the line's erasure: carriage return, clear to the end.
+    check "under a pseudo-terminal: the line erased at the end" \
+        test "$(tail -c 4 "$work/pty.out" | od -An -tx1 | tr -d ' \n')" = 0d1b5b4b
+else
+    skip "under a pseudo-terminal: a progress line" "script(1) not installed (Debian package bsdutils)"
+    skip "under a pseudo-terminal: the line erased at the end" "script(1) not installed"
+fi
+run "$work/desk.pov" --width 2000 --height 1500 --threads 1 -o "$work/np.png"
+check "no progress line when stderr is not a terminal (a file)" test ! -s "$work/err"
 tap_end

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <unistd.h>
 
 #include "options.h"
 
@@ -165,8 +166,10 @@ void options_usage(FILE *f)
             "POV-Ray switches: +Wn +Hn +Oname +Iname +Ldir +WTn +Qn (quality: <=3 no shadows,\n"
             "4-5 shadows, 6-7 also refraction, >=8 also reflection; default 9); +FN[16] (PNG),\n"
             "+FE (EXR), +FP (PPM): the output type, +Oname without an extension gets its\n"
-            "extension; -F: write no image; +FT +FC +FB +FJ +FH are refused; -A -D +D -V are\n"
-            "accepted and change nothing; +A is refused (no anti-aliasing yet).\n"
+            "extension; -F: write no image; +FT +FC +FB +FJ +FH are refused; -A -D -V are\n"
+            "accepted and change nothing, +D with a note (no display window); +A is refused (no\n"
+            "anti-aliasing yet). A scene named without an extension is NAME.pov, as in POV-Ray.\n"
+            "On a terminal a progress line shows the pixels done and the time left.\n"
             "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
             "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
             "parsed and rendered anew and written to NAMEnn.EXT, as POV-Ray numbers them.\n"
@@ -370,7 +373,8 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
     case 'F': case 'f':
         return output_type_switch(arg, on, opt, err, errlen);
     case 'D': case 'd':
-        return 0; /* no display window either way */
+        opt->display_asked = on; /* no display window: main says so once */
+        return 0;
     case 'V': case 'v':
         return 0; /* verbosity */
     default:
@@ -486,7 +490,7 @@ static const IniKey ini_keys[] = {
     { "Sampling_Method", KEY_NUMBER_IGNORED, NULL },
     { "Jitter_Amount", KEY_NUMBER_IGNORED, NULL },
     { "Jitter", KEY_IGNORED, NULL },
-    { "Display", KEY_IGNORED, NULL },
+    { "Display", KEY_BOOL, "D" },
     { "Display_Gamma", KEY_IGNORED, NULL },
     { "Verbose", KEY_IGNORED, NULL },
     { "Pause_When_Done", KEY_IGNORED, NULL },
@@ -590,6 +594,8 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
                 status = -1;
             } else if (k->prefix[0] == 'K') {
                 opt->cyclic = b; /* Cyclic_Animation */
+            } else if (k->prefix[0] == 'D') {
+                opt->display_asked = b; /* Display */
             } else if (k->prefix[0] == 'A') {
                 opt->antialias_on = b;
                 if (b) {
@@ -756,6 +762,32 @@ static int render_area(Options *opt, char *err, int errlen)
                              &opt->area_x0, &opt->area_x1, "column", err, errlen)
                ? -1
                : 0;
+}
+
+/* A scene named without an extension is NAME.pov when NAME itself is not a
+ * file and NAME.pov is, as POV-Ray takes "povray +Idesk". */
+static int find_scene(Options *opt, char *err, int errlen)
+{
+    const char *base = strrchr(opt->scene, '/');
+    base = base ? base + 1 : opt->scene;
+    if (strchr(base, '.') || access(opt->scene, F_OK) == 0)
+        return 0;
+    size_t n = strlen(opt->scene);
+    char *pov = malloc(n + 5);
+    if (!pov) {
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
+    memcpy(pov, opt->scene, n);
+    memcpy(pov + n, ".pov", 5);
+    if (access(pov, F_OK) == 0)
+        opt->scene = own_string(opt, pov, n + 4);
+    free(pov);
+    if (!opt->scene) {
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
+    return 0;
 }
 
 void options_free(Options *opt)
@@ -987,6 +1019,8 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
         return -1;
     }
     if (render_area(opt, err, errlen))
+        return -1;
+    if (opt->scene && find_scene(opt, err, errlen))
         return -1;
     if (opt->antialias_on) {
         opt->error_has_position = opt->antialias_positioned;

@@ -79,6 +79,7 @@ typedef struct {
     int area_x0, area_y0, area_x1, area_y1;               /* +K or Clock= given: clock_on in a still */
     int output_type;              /* POV-Ray's +F: 0 none given, 'N' PNG, 'E' EXR, 'P' PPM */
     int no_output;                /* -F: render, write no image */
+    int display_asked;            /* +D or Display=on: there is no display window, said once */
     int error_has_position;       /* the message options_parse gave begins with FILE:LINE:COLUMN */
     int error_is_io;              /* ... is about a file that could not be read (exit status 3) */
     /* What options_free releases: the INI files read (their strings are

@@ -32,6 +32,9 @@ typedef struct {
     int x0, y0, x1, y1;     /* the pixels rendered */
     atomic_int next_tile;   /* shared by the workers: the only mutable shared state */
     atomic_int done_tiles;
+    atomic_long done_pixels; /* for the progress line */
+    long total_pixels;
+    int reported;            /* the progress line was printed (worker 0 only) */
     atomic_int failed;
     double start;
 } Job;
@@ -54,8 +57,9 @@ static uint64_t rays_traced(const ShadeContext *ctx, const RenderStats *loop)
            ctx->shadow.stats.shadow_rays;
 }
 
-/* loop: the render loop's own counters (pixels, camera rays). */
-static void render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile)
+/* loop: the render loop's own counters (pixels, camera rays). Returns the
+ * tile's pixels. */
+static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile)
 {
     const RenderOptions *opt = job->opt;
     /* Tiles lie on the whole image's grid, cut to the area rendered: a
@@ -97,6 +101,32 @@ static void render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
             px[3] = (float)(1.0 - c.transmit);
         }
     }
+    return (long)(x1 - x0) * (y1 - y0);
+}
+
+/* "1m05s", "12.3s": a duration for the progress line. */
+static void format_duration(char *buf, size_t n, double s)
+{
+    if (s < 60.0)
+        snprintf(buf, n, "%.1fs", s);
+    else if (s < 3600.0)
+        snprintf(buf, n, "%dm%02ds", (int)(s / 60.0), (int)s % 60);
+    else
+        snprintf(buf, n, "%dh%02dm", (int)(s / 3600.0), (int)(s / 60.0) % 60);
+}
+
+/* The live progress line on a terminal: pixels done, the share, the time so
+ * far and an estimate of what is left, rewritten in place. */
+static void report_progress(Job *job, double elapsed)
+{
+    long done = atomic_load(&job->done_pixels);
+    char spent[32], left[32];
+    format_duration(spent, sizeof spent, elapsed);
+    format_duration(left, sizeof left, done > 0 ? elapsed * (double)(job->total_pixels - done) / (double)done : 0.0);
+    fprintf(stderr, "\rrendering: %ld of %ld pixels (%3d%%), %s elapsed, about %s left\033[K", done,
+            job->total_pixels, (int)(100.0 * (double)done / (double)job->total_pixels), spent, left);
+    fflush(stderr);
+    job->reported = 1;
 }
 
 static void *worker_main(void *arg)
@@ -155,16 +185,18 @@ static void *worker_main(void *arg)
          * its wall time takes that out (no change on an idle machine). */
         double *shadow_seconds = &ctx.shadow.stats.shadow_seconds;
         double tile_wall = clock_wall(), tile_cpu = clock_thread_cpu(), shadow_before = *shadow_seconds;
-        render_tile(&ctx, &loop, job, tile);
+        long pixels = render_tile(&ctx, &loop, job, tile);
+        atomic_fetch_add(&job->done_pixels, pixels);
         tile_wall = clock_wall() - tile_wall;
         tile_cpu = clock_thread_cpu() - tile_cpu;
         if (tile_wall > 0.0 && tile_cpu < tile_wall)
             *shadow_seconds = shadow_before + (*shadow_seconds - shadow_before) * (tile_cpu / tile_wall);
-        int done = atomic_fetch_add(&job->done_tiles, 1) + 1;
+        atomic_fetch_add(&job->done_tiles, 1);
+        /* At most four times a second, from half a second on. */
         if (job->opt->progress && wk->index == 0) {
             double now = clock_wall() - job->start;
-            if (now > 1.0 && now - last_report > 0.25) {
-                fprintf(stderr, "\rrendering: %3d%%", (int)(100.0 * done / job->ntiles));
+            if (now > 0.5 && now - last_report >= 0.25) {
+                report_progress(job, now);
                 last_report = now;
             }
         }
@@ -201,6 +233,8 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
     job.ntiles = job.tiles_x * ((job.y1 - 1) / TILE - job.tile_y0 + 1);
     atomic_init(&job.next_tile, 0);
     atomic_init(&job.done_tiles, 0);
+    atomic_init(&job.done_pixels, 0);
+    job.total_pixels = (long)(job.x1 - job.x0) * (job.y1 - job.y0);
     atomic_init(&job.failed, 0);
     job.start = clock_wall();
 
@@ -228,8 +262,8 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
         pthread_join(tids[i], NULL);
     for (int i = 0; i < n; i++)
         stats_add(stats, &workers[i].stats);
-    if (opt->progress && clock_wall() - job.start > 1.0)
-        fprintf(stderr, "\rrendering: 100%%\n");
+    if (job.reported)
+        fputs("\r\033[K", stderr); /* the line erased: the terminal as it was */
     free(workers);
     free(tids);
     if (atomic_load(&job.failed) || atomic_load(&job.next_tile) < job.ntiles) {

@@ -387,6 +387,8 @@ int main(int argc, char **argv)
         return EXIT_OK;
     }
 
+    if (opt.display_asked)
+        fprintf(stderr, "hstrace: note: +D: hstrace has no display window; the image goes to its file only\n");
     Animation anim;
     if (animation_plan(&opt, &anim, err, sizeof err)) {
         fprintf(stderr, "hstrace: %s\n", err);
