@@ -114,8 +114,8 @@ mistake quote 1 "^quote.ini:1:1: a string opened with \" is not closed on its li
 mistake width 1 "^width.ini:1:5: '+W0': width must be 1 to 32768$" "a bad switch in an INI file" "-D  +W0"
 mistake field 1 "^field.ini:1:1: Field_Render: field rendering is not supported by hstrace yet$" \
     "a POV-Ray key hstrace does not support yet" "Field_Render=on"
-mistake aa 1 "^aa.ini:2:1: Antialias=on: anti-aliasing is not supported by hstrace yet" "Antialias=on" \
-    "Width=64" "Antialias=on"
+mistake aa 1 "^aa.ini:2:1: Antialias=on: anti-aliasing with jitter (POV-Ray's default) is not supported by hstrace yet" \
+    "Antialias=on with the default jitter" "Width=64" "Antialias=on"
 mistake declare 1 "Declare=X=abc: the value must be a number" "a Declare whose value is no number" "Declare=X=abc"
 run missing.ini scene.pov -o bad-missing.png
 check "an INI file that cannot be read: exit status 3, says which" exited 3 "cannot open INI file 'missing.ini'"

@@ -166,9 +166,12 @@ void options_usage(FILE *f)
             "POV-Ray switches: +Wn +Hn +Oname +Iname +Ldir +WTn +Qn (quality: <=3 no shadows,\n"
             "4-5 shadows, 6-7 also refraction, >=8 also reflection; default 9); +FN[16] (PNG),\n"
             "+FE (EXR), +FP (PPM): the output type, +Oname without an extension gets its\n"
-            "extension; -F: write no image; +FT +FC +FB +FJ +FH are refused; -A -D -V are\n"
-            "accepted and change nothing, +D with a note (no display window); +A is refused (no\n"
-            "anti-aliasing yet). A scene named without an extension is NAME.pov, as in POV-Ray.\n"
+            "extension; -F: write no image; +FT +FC +FB +FJ +FH are refused; -D -V are\n"
+            "accepted and change nothing, +D with a note (no display window). A scene named\n"
+            "without an extension is NAME.pov, as in POV-Ray.\n"
+            "Anti-aliasing as POV-Ray 3.7's: +A[threshold] (0.3), -A, +AM1 / +AM2 (method),\n"
+            "+Rn (depth, 3); jitter, POV-Ray's default, is not there yet: -J is needed with +A\n"
+            "(+J[amount] and Jitter=on are refused with it).\n"
             "On a terminal a progress line shows the pixels done and the time left.\n"
             "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
             "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
@@ -364,11 +367,34 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
         if (!s[1]) break;
         return add_include(opt, s + 1, err, errlen);
     case 'A': case 'a':
-        /* Refused at the end if still on: a later -A or Antialias=off wins. */
+        if (toupper((unsigned char)s[1]) == 'M') {
+            if (parse_int(s + 2, 1, 2, &opt->aa_method)) {
+                snprintf(err, (size_t)errlen, "'%s': the sampling method is 1 or 2", arg);
+                return -1;
+            }
+            return 0;
+        }
         opt->antialias_on = on;
         opt->antialias_positioned = 0;
         if (on)
             snprintf(opt->antialias_by, sizeof opt->antialias_by, "'%s'", arg);
+        if (s[1] && (parse_double(s + 1, &opt->aa_threshold) || opt->aa_threshold < 0.0)) {
+            snprintf(err, (size_t)errlen, "'%s': the anti-aliasing threshold is a number from 0", arg);
+            return -1;
+        }
+        return 0;
+    case 'R': case 'r':
+        if (parse_int(s + 1, 1, 9, &opt->aa_depth)) {
+            snprintf(err, (size_t)errlen, "'%s': the anti-aliasing depth is 1 to 9", arg);
+            return -1;
+        }
+        return 0;
+    case 'J': case 'j':
+        opt->jitter_on = on;
+        if (s[1] && (parse_double(s + 1, &opt->jitter_amount) || opt->jitter_amount < 0.0)) {
+            snprintf(err, (size_t)errlen, "'%s': the jitter amount is a number from 0", arg);
+            return -1;
+        }
         return 0;
     case 'F': case 'f':
         return output_type_switch(arg, on, opt, err, errlen);
@@ -459,7 +485,7 @@ typedef enum {
     KEY_SWITCH,   /* the same as the switch PREFIX followed by the value */
     KEY_BOOL,     /* on/off as the switch +PREFIX / -PREFIX */
     KEY_SCENE, KEY_OUTPUT, KEY_LIBRARY, KEY_DECLARE, KEY_BITS, KEY_INCLUDE_INI,
-    KEY_NUMBER_IGNORED, /* anti-aliasing's settings: they matter only with Antialias on, which is refused */
+    KEY_AA,       /* anti-aliasing's settings (prefix: which) */
     KEY_IGNORED,  /* no effect on the image or the files (display, consoles, bounding) */
     KEY_UNSUPPORTED /* POV-Ray's, not hstrace's yet */
 } KeyKind;
@@ -484,12 +510,12 @@ static const IniKey ini_keys[] = {
     { "Include_Ini", KEY_INCLUDE_INI, NULL },
     { "Antialias", KEY_BOOL, "A" },
     { "Output_To_File", KEY_BOOL, "F" },
-    { "Antialias_Threshold", KEY_NUMBER_IGNORED, NULL },
-    { "Antialias_Depth", KEY_NUMBER_IGNORED, NULL },
-    { "Antialias_Gamma", KEY_NUMBER_IGNORED, NULL },
-    { "Sampling_Method", KEY_NUMBER_IGNORED, NULL },
-    { "Jitter_Amount", KEY_NUMBER_IGNORED, NULL },
-    { "Jitter", KEY_IGNORED, NULL },
+    { "Antialias_Threshold", KEY_AA, "threshold" },
+    { "Antialias_Depth", KEY_AA, "depth" },
+    { "Antialias_Gamma", KEY_AA, "gamma" },
+    { "Sampling_Method", KEY_AA, "method" },
+    { "Jitter_Amount", KEY_AA, "amount" },
+    { "Jitter", KEY_BOOL, "J" },
     { "Display", KEY_BOOL, "D" },
     { "Display_Gamma", KEY_IGNORED, NULL },
     { "Verbose", KEY_IGNORED, NULL },
@@ -596,6 +622,8 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
                 opt->cyclic = b; /* Cyclic_Animation */
             } else if (k->prefix[0] == 'D') {
                 opt->display_asked = b; /* Display */
+            } else if (k->prefix[0] == 'J') {
+                opt->jitter_on = b; /* Jitter */
             } else if (k->prefix[0] == 'A') {
                 opt->antialias_on = b;
                 if (b) {
@@ -635,11 +663,24 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
                 return -1; /* err already says where */
             }
             break;
-        case KEY_NUMBER_IGNORED: {
-            char *end;
-            (void)strtod(value, &end);
-            if (end == value || *end != '\0') {
-                snprintf(msg, sizeof msg, "%s=%s: expected a number", k->name, value);
+        case KEY_AA: {
+            double v;
+            int bad = parse_double(value, &v) || v < 0.0;
+            if (!bad && strcmp(k->prefix, "threshold") == 0)
+                opt->aa_threshold = v;
+            else if (!bad && strcmp(k->prefix, "gamma") == 0)
+                opt->aa_gamma = v;
+            else if (!bad && strcmp(k->prefix, "amount") == 0)
+                opt->jitter_amount = v;
+            else if (!bad && strcmp(k->prefix, "depth") == 0)
+                bad = parse_int(value, 1, 9, &opt->aa_depth);
+            else if (!bad)
+                bad = parse_int(value, 1, 2, &opt->aa_method);
+            if (bad) {
+                snprintf(msg, sizeof msg, "%s=%s: expected %s", k->name, value,
+                         strcmp(k->prefix, "depth") == 0    ? "1 to 9"
+                         : strcmp(k->prefix, "method") == 0 ? "1 or 2"
+                                                            : "a number from 0");
                 status = -1;
             }
             break;
@@ -821,6 +862,12 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     opt->pixel_coherence = 1;
     opt->tolerance = GRID_TOLERANCE;
     opt->initial_frame = opt->final_frame = 1;
+    opt->aa_threshold = 0.3;
+    opt->aa_method = 1;
+    opt->aa_depth = 3;
+    opt->aa_gamma = 2.5;
+    opt->jitter_on = 1;
+    opt->jitter_amount = 1.0;
     opt->final_clock = 1.0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -1022,10 +1069,14 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
         return -1;
     if (opt->scene && find_scene(opt, err, errlen))
         return -1;
-    if (opt->antialias_on) {
+    if (opt->antialias_on && opt->jitter_on && opt->jitter_amount > 0.0) {
         opt->error_has_position = opt->antialias_positioned;
-        snprintf(err, (size_t)errlen, "%s: anti-aliasing is not supported by hstrace yet (render with -A or "
-                 "Antialias=off)", opt->antialias_by);
+        snprintf(err, (size_t)errlen, "%s: anti-aliasing with jitter (POV-Ray's default) is not supported by "
+                 "hstrace yet: add -J (or Jitter=off)", opt->antialias_by);
+        return -1;
+    }
+    if (opt->antialias_on && opt->aov) {
+        snprintf(err, (size_t)errlen, "--aov with anti-aliasing is not supported yet");
         return -1;
     }
     if (opt->output_type && opt->output) {

@@ -58,7 +58,13 @@ typedef struct {
     /* Declare=NAME=VALUE from the command line and INI files, in order. */
     OptionDeclare *declares;
     int ndeclares;
-    int antialias_on;             /* +A or Antialias=on, last: refused (hstrace has no anti-aliasing yet) */
+    int antialias_on;             /* +A or Antialias=on, last */
+    double aa_threshold;          /* +An, Antialias_Threshold (0.3) */
+    int aa_method;                /* +AMn, Sampling_Method (1) */
+    int aa_depth;                 /* +Rn, Antialias_Depth (3) */
+    double aa_gamma;              /* Antialias_Gamma (2.5) */
+    int jitter_on;                /* +J / -J, Jitter (on) */
+    double jitter_amount;         /* +Jn, Jitter_Amount (1) */
     char antialias_by[720];       /* what turned it on, for the message */
     int antialias_positioned;     /* ... which begins with FILE:LINE:COLUMN */
     /* Animation, as POV-Ray's +KFIn +KFFn +KIf +KFf +KC +SFx +EFx and the

@@ -28,7 +28,9 @@ typedef struct {
     const RenderOptions *opt;
     Image *img;
     int tiles_x, ntiles;
-    int tile_x0, tile_y0;   /* the first tile's place in the image's grid of tiles */
+    int tile_size;          /* TILE, or POV-Ray's anti-aliasing blocks */
+    int grid_x0, grid_y0;   /* where the grid of tiles starts: the image's corner, or (anti-aliasing) the area's */
+    int tile_x0, tile_y0;   /* the first tile's place in that grid */
     int x0, y0, x1, y1;     /* the pixels rendered */
     atomic_int next_tile;   /* shared by the workers: the only mutable shared state */
     atomic_int done_tiles;
@@ -57,6 +59,56 @@ static uint64_t rays_traced(const ShadeContext *ctx, const RenderStats *loop)
            ctx->shadow.stats.shadow_rays;
 }
 
+/* One anti-aliasing sample: a camera ray through pixel coordinates (x, y). */
+typedef struct {
+    ShadeContext *ctx;
+    RenderStats *loop;
+    const Job *job;
+} SampleUser;
+
+static void trace_sample(void *user, double x, double y, AaColour *out)
+{
+    SampleUser *u = user;
+    const RenderOptions *opt = u->job->opt;
+    Ray ray;
+    memset(&ray, 0, sizeof ray);
+    ray.from.kind = HIT_NONE;
+    camera_ray_at(&u->job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
+    Radiance c;
+    shade_trace(u->ctx, &ray, 1.0, 0, &c);
+    u->loop->camera_rays++;
+    out->c[0] = (float)c.r;
+    out->c[1] = (float)c.g;
+    out->c[2] = (float)c.b;
+    out->c[3] = (float)c.transmit;
+}
+
+/* A block of POV-Ray's anti-aliasing (antialias.h) into the image. */
+static long antialiased_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int x0, int y0, int x1, int y1)
+{
+    const RenderOptions *opt = job->opt;
+    AaColour *px = malloc(sizeof *px * (size_t)(x1 - x0) * (size_t)(y1 - y0));
+    SampleUser u = { ctx, loop, job };
+    if (!px || antialias_block(&opt->aa, x0, y0, x1 - 1, y1 - 1, trace_sample, &u, px)) {
+        free(px);
+        atomic_store(&job->failed, 1);
+        return 0;
+    }
+    for (int y = y0; y < y1; y++) {
+        for (int x = x0; x < x1; x++) {
+            const AaColour *c = &px[(y - y0) * (x1 - x0) + (x - x0)];
+            float *out = &job->img->rgba[((size_t)y * opt->width + x) * 4];
+            out[0] = c->c[0];
+            out[1] = c->c[1];
+            out[2] = c->c[2];
+            out[3] = 1.0f - c->c[3];
+        }
+    }
+    loop->pixels += (uint64_t)(x1 - x0) * (uint64_t)(y1 - y0);
+    free(px);
+    return (long)(x1 - x0) * (y1 - y0);
+}
+
 /* loop: the render loop's own counters (pixels, camera rays). Returns the
  * tile's pixels. */
 static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile)
@@ -64,9 +116,11 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
     const RenderOptions *opt = job->opt;
     /* Tiles lie on the whole image's grid, cut to the area rendered: a
      * partial render's pixels are those of the full render. */
-    int x0 = (job->tile_x0 + tile % job->tiles_x) * TILE, y0 = (job->tile_y0 + tile / job->tiles_x) * TILE;
-    int x1 = x0 + TILE < job->x1 ? x0 + TILE : job->x1;
-    int y1 = y0 + TILE < job->y1 ? y0 + TILE : job->y1;
+    int ts = job->tile_size;
+    int x0 = job->grid_x0 + (job->tile_x0 + tile % job->tiles_x) * ts;
+    int y0 = job->grid_y0 + (job->tile_y0 + tile / job->tiles_x) * ts;
+    int x1 = x0 + ts < job->x1 ? x0 + ts : job->x1;
+    int y1 = y0 + ts < job->y1 ? y0 + ts : job->y1;
     x0 = x0 > job->x0 ? x0 : job->x0;
     y0 = y0 > job->y0 ? y0 : job->y0;
     /* The cache method's last blockers start empty in every tile, so that
@@ -75,6 +129,8 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
      * before: the same for any thread count. */
     for (int i = 0; i < job->world->nlights; i++)
         ctx->shadow.light_cache[i] = -1;
+    if (opt->aa.method)
+        return antialiased_tile(ctx, loop, job, x0, y0, x1, y1);
     for (int y = y0; y < y1; y++) {
         for (int x = x0; x < x1; x++) {
             Ray ray;
@@ -148,7 +204,7 @@ static void *worker_main(void *arg)
     ctx.shadow.embree = opt->embree;
     PixelCoherence coherence;
     memset(&coherence, 0, sizeof coherence);
-    if (opt->pixel_coherence && opt->volumes) {
+    if (opt->pixel_coherence && opt->volumes && !opt->aa.method) {
         if (pixel_coherence_init(&coherence, job->world, job->grid)) {
             pixel_coherence_free(&coherence);
             shadow_context_free(&ctx.shadow);
@@ -227,10 +283,15 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
     job.y0 = opt->y0;
     job.x1 = opt->x1 > 0 ? opt->x1 : opt->width;
     job.y1 = opt->y1 > 0 ? opt->y1 : opt->height;
-    job.tile_x0 = job.x0 / TILE;
-    job.tile_y0 = job.y0 / TILE;
-    job.tiles_x = (job.x1 - 1) / TILE - job.tile_x0 + 1;
-    job.ntiles = job.tiles_x * ((job.y1 - 1) / TILE - job.tile_y0 + 1);
+    /* POV-Ray's anti-aliasing decides by blocks of its own size, from the
+     * area's corner; the plain render's tiles lie on the image's grid. */
+    job.tile_size = opt->aa.method ? ANTIALIAS_BLOCK : TILE;
+    job.grid_x0 = opt->aa.method ? job.x0 : 0;
+    job.grid_y0 = opt->aa.method ? job.y0 : 0;
+    job.tile_x0 = (job.x0 - job.grid_x0) / job.tile_size;
+    job.tile_y0 = (job.y0 - job.grid_y0) / job.tile_size;
+    job.tiles_x = (job.x1 - 1 - job.grid_x0) / job.tile_size - job.tile_x0 + 1;
+    job.ntiles = job.tiles_x * ((job.y1 - 1 - job.grid_y0) / job.tile_size - job.tile_y0 + 1);
     atomic_init(&job.next_tile, 0);
     atomic_init(&job.done_tiles, 0);
     atomic_init(&job.done_pixels, 0);

@@ -4,6 +4,7 @@
 #ifndef HST_RENDER_H
 #define HST_RENDER_H
 
+#include "antialias.h"
 #include "grid.h"
 #include "image_buffer.h"
 #include "shade.h"
@@ -16,6 +17,7 @@ typedef struct {
      * of the image stays 0. All zero: the whole image. */
     int x0, y0, x1, y1;
     int threads;              /* >= 1 */
+    Antialias aa;             /* method 0: none (one camera ray through each pixel's centre) */
     Quality quality;
     const ShadowMethod *shadow;
     const Bvh *bvh;           /* the polygon queries' hierarchy; NULL: the grid's walk */

@@ -259,6 +259,13 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     memset(&ropt, 0, sizeof ropt);
     ropt.width = o->width;
     ropt.height = o->height;
+    if (o->antialias_on) {
+        ropt.aa.method = o->aa_method;
+        ropt.aa.threshold = o->aa_threshold < 1.0 ? o->aa_threshold : 1.0; /* clipped to 1, as POV-Ray does */
+        ropt.aa.depth = o->aa_depth;
+        ropt.aa.gamma = o->aa_gamma;
+        ropt.aa.work_gamma = working_gamma;
+    }
     ropt.x0 = o->area_x0;
     ropt.y0 = o->area_y0;
     ropt.x1 = o->area_x1;
