@@ -114,8 +114,6 @@ mistake quote 1 "^quote.ini:1:1: a string opened with \" is not closed on its li
 mistake width 1 "^width.ini:1:5: '+W0': width must be 1 to 32768$" "a bad switch in an INI file" "-D  +W0"
 mistake field 1 "^field.ini:1:1: Field_Render: field rendering is not supported by hstrace yet$" \
     "a POV-Ray key hstrace does not support yet" "Field_Render=on"
-mistake aa 1 "^aa.ini:2:1: Antialias=on: anti-aliasing with jitter (POV-Ray's default) is not supported by hstrace yet" \
-    "Antialias=on with the default jitter" "Width=64" "Antialias=on"
 mistake declare 1 "Declare=X=abc: the value must be a number" "a Declare whose value is no number" "Declare=X=abc"
 run missing.ini scene.pov -o bad-missing.png
 check "an INI file that cannot be read: exit status 3, says which" exited 3 "cannot open INI file 'missing.ini'"
@@ -146,8 +144,13 @@ for t in "+FT TGA" "+FC TGA" "+FB BMP" "+FJ JPEG" "+FH HDR"; do
 done
 
 # --- Antialias=on turned off later, -F ----------------------------------------
+printf 'Width=64\nHeight=48\nAntialias=on\n' >"$work/aa.ini"
+run aa.ini scene.pov -o aa-on.png
 run aa.ini scene.pov -A -o aa-off.png
-check "Antialias=on, then -A on the command line: renders" exited 0
+run scene.pov +W64 +H48 -o plain.png
+aa_later() { "$hstrace" compare "$work/aa-off.png" "$work/plain.png" --max-error 0 >/dev/null &&
+    ! "$hstrace" compare "$work/aa-on.png" "$work/plain.png" --max-error 0 >/dev/null 2>&1; }
+check "Antialias=on anti-aliases; then -A on the command line turns it off again (the plain image)" aa_later
 run scene.pov -F -o nofile.png --width 8 --height 6
 check "-F: renders, exit status 0" exited 0
 check "-F: writes no image" fails test -e "$work/nofile.png"

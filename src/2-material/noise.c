@@ -136,6 +136,13 @@ static void ensure_tables(void)
     pthread_once(&tables_once, build_tables);
 }
 
+unsigned noise_hash(unsigned i)
+{
+    ensure_tables();
+    return tables.hash[i & 0xfffu];
+}
+
+
 /* ---- generators 1 and 2 ---------------------------------------------------- */
 
 /* The lattice cell of one coordinate: its index modulo 4096 (offset as

@@ -29,4 +29,8 @@ Vec3 noise_vector(Vec3 p);
 double noise_turbulence(Vec3 p, int octaves, double omega, double lambda, int generator);
 Vec3 noise_vector_turbulence(Vec3 p, int octaves, double omega, double lambda);
 
+/* POV-Ray's hash table (a permutation of 0..4095) at i & 0xfff, which its
+ * anti-aliasing's jitter also reads. */
+unsigned noise_hash(unsigned i);
+
 #endif

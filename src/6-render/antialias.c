@@ -2,16 +2,55 @@
 #include "antialias.h"
 
 #include <math.h>
+#include <pthread.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "noise.h"
+
 #define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON, which ends its sample loops */
+
+/* ---- POV-Ray's jitter -------------------------------------------------------
+ * POV-Ray 3.7 offsets a sample by an entry of a 256-entry table picked by
+ * hashing the sample's coordinates through its noise hash table. The table
+ * is, entry by entry (worked out from its values, which it reproduces all):
+ * in 16-bit fixed point, the parity of i's bits in bits 15 and 1, i's Gray
+ * code from bit 8 up and i's lowest bit in bit 7, modulo 2^16, less one
+ * half; POV-Ray keeps each with 6 decimals, in single precision. Built once,
+ * then only read. */
+static float jitter_table[256];
+static pthread_once_t jitter_once = PTHREAD_ONCE_INIT;
+
+static void build_jitter_table(void)
+{
+    for (unsigned i = 0; i < 256; i++) {
+        unsigned parity = 0;
+        for (unsigned b = i; b; b >>= 1)
+            parity ^= b & 1u;
+        unsigned k = (parity * 32770u + (i ^ (i >> 1)) * 256u + (i & 1u) * 128u) & 0xffffu;
+        char printed[32];
+        snprintf(printed, sizeof printed, "%.6f", k / 65536.0 - 0.5);
+        jitter_table[i] = strtof(printed, NULL);
+    }
+}
+
+/* POV-Ray's Jitter2d for a sample at pixel coordinates (x, y): the offsets
+ * in x and in y, each from -0.5 to 0.5. */
+static void jitter(double x, double y, double *jx, double *jy)
+{
+    pthread_once(&jitter_once, build_jitter_table);
+    int x1 = (int)(x * 1021.0), y1 = (int)(y * 1019.0), x2 = (int)(x * 1019.0), y2 = (int)(y * 1021.0);
+    *jx = jitter_table[noise_hash((unsigned)(((int)noise_hash((unsigned)(x1 & 0xfff)) ^ y1) & 0xfff)) & 0xffu];
+    *jy = jitter_table[noise_hash((unsigned)(((int)noise_hash((unsigned)(x2 & 0xfff)) ^ y2) & 0xfff)) & 0xffu];
+}
 
 typedef struct {
     const Antialias *aa;
     float threshold;  /* as POV-Ray reads it: single precision */
     float encode;     /* the gamma curve's exponent, 1 / Antialias_Gamma (0: none) */
     float decode;     /* the working gamma's (0: none) */
+    double jitter;    /* the jitter's scale, in pixels (0: none) */
     AaTrace trace;
     void *user;
 } Sampler;
@@ -48,6 +87,18 @@ static void scale(AaColour *a, double by)
         a->c[i] = (float)(a->c[i] * by);
 }
 
+/* A sample at (x, y), moved by the jitter when it is on. */
+static void trace_at(const Sampler *s, double x, double y, AaColour *out)
+{
+    if (s->jitter > 0.0) {
+        double jx, jy;
+        jitter(x, y, &jx, &jy);
+        x += jx * s->jitter;
+        y += jy * s->jitter;
+    }
+    s->trace(s->user, x, y, out);
+}
+
 /* Method 1: a depth x depth grid across pixel (x, y), averaged with the
  * centre sample already in *col. */
 static void supersample(const Sampler *s, double x, double y, AaColour *col)
@@ -57,7 +108,7 @@ static void supersample(const Sampler *s, double x, double y, AaColour *col)
     for (double yy = -range; yy <= range + POV_EPSILON; yy += step) {
         for (double xx = -range; xx <= range + POV_EPSILON; xx += step) {
             AaColour t;
-            s->trace(s->user, x + xx, y + yy, &t);
+            trace_at(s, x + xx, y + yy, &t);
             add(col, &t);
         }
     }
@@ -126,7 +177,7 @@ static AaColour *at(Lattice *l, int i, int j)
 static void sample_once(const Sampler *s, Lattice *l, int i, int j, double x, double y)
 {
     if (!l->have[i + j * l->size]) {
-        s->trace(s->user, x, y, at(l, i, j));
+        trace_at(s, x, y, at(l, i, j));
         l->have[i + j * l->size] = 1;
     }
 }
@@ -201,7 +252,11 @@ static int method2(const Sampler *s, int left, int top, int right, int bottom, A
 int antialias_block(const Antialias *aa, int left, int top, int right, int bottom, AaTrace trace, void *user,
                     AaColour *out)
 {
+    /* The jitter's amount is spread over the samples' spacing, as POV-Ray
+     * spreads it: depth for method 1, 2^depth + 1 for method 2. */
+    double spacing = aa->method == 2 ? (double)((1 << aa->depth) + 1) : (double)aa->depth;
     Sampler s = { aa, (float)aa->threshold, aa->gamma > 0.0 ? (float)(1.0 / aa->gamma) : 0.0f,
-                  aa->work_gamma > 0.0 && aa->work_gamma != 1.0 ? (float)aa->work_gamma : 0.0f, trace, user };
+                  aa->work_gamma > 0.0 && aa->work_gamma != 1.0 ? (float)aa->work_gamma : 0.0f,
+                  aa->jitter > 0.0 ? aa->jitter / spacing : 0.0, trace, user };
     return aa->method == 2 ? method2(&s, left, top, right, bottom, out) : method1(&s, left, top, right, bottom, out);
 }

@@ -21,7 +21,9 @@
  * transmit, in single precision as POV-Ray keeps colours. Blocks are 32
  * pixels square from the render area's corner; what a block decides does
  * not depend on any other, so the image is the same for any thread count.
- * Jitter is not here yet: the options refuse +A with it on. */
+ * Jitter (on by default) moves each supersample by POV-Ray's own
+ * deterministic offsets, the amount spread over the samples' spacing;
+ * the centres (method 1) and the corners (method 2) stay put. */
 #ifndef HST_ANTIALIAS_H
 #define HST_ANTIALIAS_H
 
@@ -33,6 +35,7 @@ typedef struct {
     int depth;        /* 1..9 */
     double gamma;     /* Antialias_Gamma; <= 0: compare the colours as they are */
     double work_gamma; /* the scene's working gamma (assumed_gamma): decoded before; 0 or 1: none */
+    double jitter;    /* Jitter_Amount, 0..1 (0: no jitter) */
 } Antialias;
 
 /* A colour as POV-Ray's render keeps it: red, green, blue, transmit. */

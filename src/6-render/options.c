@@ -170,8 +170,9 @@ void options_usage(FILE *f)
             "accepted and change nothing, +D with a note (no display window). A scene named\n"
             "without an extension is NAME.pov, as in POV-Ray.\n"
             "Anti-aliasing as POV-Ray 3.7's: +A[threshold] (0.3), -A, +AM1 / +AM2 (method),\n"
-            "+Rn (depth, 3); jitter, POV-Ray's default, is not there yet: -J is needed with +A\n"
-            "(+J[amount] and Jitter=on are refused with it).\n"
+            "+Rn (depth, 3), +J[amount] / -J (POV-Ray's own jitter, on by default).\n"
+            "+C (continue: hstrace leaves no partial image, so it renders all), -UA, +MV3.7\n"
+            "are accepted; +UA (alpha) is refused.\n"
             "On a terminal a progress line shows the pixels done and the time left.\n"
             "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
             "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
@@ -383,6 +384,31 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
             return -1;
         }
         return 0;
+    case 'C': case 'c':
+        if (s[1])
+            break;
+        /* Continue an interrupted render: hstrace never leaves a partial
+         * image behind (it writes whole files), so there is nothing to
+         * continue and the render is made whole. */
+        return 0;
+    case 'U': case 'u':
+        if (toupper((unsigned char)s[1]) != 'A' || s[2])
+            break;
+        if (on) {
+            snprintf(err, (size_t)errlen, "'%s': an alpha channel in the output is not supported by hstrace yet", arg);
+            return -1;
+        }
+        return 0;
+    case 'M': case 'm': {
+        double v;
+        if (toupper((unsigned char)s[1]) != 'V')
+            break;
+        if (parse_double(s + 2, &v) || fabs(v - 3.7) > 1e-9) {
+            snprintf(err, (size_t)errlen, "'%s': hstrace reads scenes as POV-Ray 3.7 does (+MV3.7 only)", arg);
+            return -1;
+        }
+        return 0;
+    }
     case 'R': case 'r':
         if (parse_int(s + 1, 1, 9, &opt->aa_depth)) {
             snprintf(err, (size_t)errlen, "'%s': the anti-aliasing depth is 1 to 9", arg);
@@ -1069,12 +1095,6 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
         return -1;
     if (opt->scene && find_scene(opt, err, errlen))
         return -1;
-    if (opt->antialias_on && opt->jitter_on && opt->jitter_amount > 0.0) {
-        opt->error_has_position = opt->antialias_positioned;
-        snprintf(err, (size_t)errlen, "%s: anti-aliasing with jitter (POV-Ray's default) is not supported by "
-                 "hstrace yet: add -J (or Jitter=off)", opt->antialias_by);
-        return -1;
-    }
     if (opt->antialias_on && opt->aov) {
         snprintf(err, (size_t)errlen, "--aov with anti-aliasing is not supported yet");
         return -1;

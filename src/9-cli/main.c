@@ -265,6 +265,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         ropt.aa.depth = o->aa_depth;
         ropt.aa.gamma = o->aa_gamma;
         ropt.aa.work_gamma = working_gamma;
+        ropt.aa.jitter = o->jitter_on ? (o->jitter_amount < 1.0 ? o->jitter_amount : 1.0) : 0.0; /* clipped, as POV-Ray */
     }
     ropt.x0 = o->area_x0;
     ropt.y0 = o->area_y0;
