@@ -106,6 +106,8 @@ check "--aov with anti-aliasing: refused, exit status 1" exited 1 "--aov with an
 run desk.pov +W320 +H240 +FN +AM2 +A0.01 +r3 +Q9 +C -UA +MV3.7 +Oposeray
 check "PoseRay's line +W320 +H240 +FN +AM2 +A0.01 +r3 +Q9 +C -UA +MV3.7: renders poseray.png" exited 0
 check "... a 320x240 PNG" test "$(od -An -tu1 -j16 -N8 "$work/poseray.png" | tr -s ' ' | sed 's/^ //')" = "0 0 1 64 0 0 0 240"
+run desk.pov +W16 +H12 +SP8 +EP2 -o sp.png
+check "+SP8 +EP2 (mosaic preview): accepted, exit status 0" exited 0
 run desk.pov +W16 +H12 +UA -o bad.png
 check "+UA: refused (no alpha channel in PNG yet), exit status 1" exited 1 "alpha channel"
 run desk.pov +W16 +H12 +MV3.5 -o bad.png

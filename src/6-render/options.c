@@ -171,8 +171,8 @@ void options_usage(FILE *f)
             "without an extension is NAME.pov, as in POV-Ray.\n"
             "Anti-aliasing as POV-Ray 3.7's: +A[threshold] (0.3), -A, +AM1 / +AM2 (method),\n"
             "+Rn (depth, 3), +J[amount] / -J (POV-Ray's own jitter, on by default).\n"
-            "+C (continue: hstrace leaves no partial image, so it renders all), -UA, +MV3.7\n"
-            "are accepted; +UA (alpha) is refused.\n"
+            "+C (continue: hstrace leaves no partial image, so it renders all), -UA, +MV3.7,\n"
+            "+SPn +EPn (mosaic preview: no display) are accepted; +UA (alpha) is refused.\n"
             "On a terminal a progress line shows the pixels done and the time left.\n"
             "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
             "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
@@ -303,6 +303,11 @@ static int animation_switch(const char *arg, Options *opt, char *err, int errlen
             opt->have_subset_start = 1;
         else
             opt->have_subset_end = 1;
+    } else if ((a == 'S' || a == 'E') && b == 'P') {
+        /* The mosaic preview's block sizes: they change only what a display
+         * window would show first, and hstrace has none. */
+        int size;
+        bad = parse_int(s + 2, 1, 64, &size);
     } else if ((a == 'S' || a == 'E') && (b == 'R' || b == 'C')) {
         double *slot = a == 'S' ? (b == 'R' ? &opt->start_row : &opt->start_col)
                                 : (b == 'R' ? &opt->end_row : &opt->end_col);
