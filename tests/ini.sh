@@ -115,6 +115,24 @@ mistake width 1 "^width.ini:1:5: '+W0': width must be 1 to 32768$" "a bad switch
 mistake field 1 "^field.ini:1:1: Field_Render: field rendering is not supported by hstrace yet$" \
     "a POV-Ray key hstrace does not support yet" "Field_Render=on"
 mistake declare 1 "Declare=X=abc: the value must be a number" "a Declare whose value is no number" "Declare=X=abc"
+# Hostile INI files: each an error with its status, no crash and no hang
+# (the suite runs under AddressSanitizer and UBSan in CI's second build).
+printf 'Width=64\n\000\001\377garbage\n' >"$work/nul.ini"
+run nul.ini scene.pov -o bad-nul.png
+check "a NUL byte in an INI file: exit status 1, says so" exited 1 "NUL byte"
+printf 'Include_Ini=self.ini\n' >"$work/self.ini"
+run self.ini scene.pov -o bad-self.png
+check "an INI file that includes itself: exit status 1 at 16 deep, no hang" exited 1 "more than 16 deep"
+awk 'BEGIN { printf "Output_File_Name="; for (i = 0; i < 70000; i++) printf "x"; printf "\n" }' >"$work/long.ini"
+run long.ini scene.pov --width 4 --height 3
+check "a 70000-character value: read whole; as an output name without an extension it is refused (exit status 1)" \
+    exited 1 "unknown image format"
+head -c 1100000 /dev/zero | tr '\0' ';' >"$work/big.ini"
+run big.ini scene.pov -o bad-big.png
+check "an INI file over 1 MiB: exit status 3, too big" exited 3 "too big for an INI file"
+printf '[Unclosed' >"$work/eof.ini"
+run eof.ini scene.pov -o bad-eof.png
+check "a section header cut by the end of the file: exit status 1" exited 1 "without its ']'"
 run missing.ini scene.pov -o bad-missing.png
 check "an INI file that cannot be read: exit status 3, says which" exited 3 "cannot open INI file 'missing.ini'"
 run scene.pov Declare=clock=1 -o bad-clock.png
