@@ -48,7 +48,14 @@ libs="$(pkg-config --libs $pkgs) -lm -lpthread"
 grep -q '^#define HAVE_EMBREE 1' "$build/config.h" && libs="$libs -lembree3"
 
 # Every C file of the parser and of rooms 0 to 7 (without OpenColorIO's C++),
-# compiled once with the coverage instrumentation and the sanitizers.
+# compiled once with the coverage instrumentation and the sanitizers; all of
+# them again when any header has changed since (a struct that grew would
+# otherwise be read with two layouts, and the fuzzer would see nothing).
+headers=$(find "$src/parser" "$src/src" -name '*.h' -exec cksum {} + | sort | cksum)
+if [ "$(cat "$out/obj/headers.sum" 2>/dev/null)" != "$headers" ]; then
+    rm -f "$out"/obj/*.o
+    printf '%s\n' "$headers" >"$out/obj/headers.sum"
+fi
 objects=""
 for f in "$src"/parser/*.c "$src"/parser/description/*.c "$src"/src/[0-7]-*/*.c; do
     o=$out/obj/$(echo "${f#"$src"/}" | tr / _ | sed 's/\.c$/.o/')
