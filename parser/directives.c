@@ -27,6 +27,8 @@ void debug_end_line(Parser *p)
 
 void parse_warning(Parser *p, SourcePos pos, const char *msg)
 {
+    if (p->opts->quiet_warnings)
+        return;
     debug_end_line(p);
     char shown[1024];
     text_escape(shown, sizeof shown, msg, NULL);
@@ -606,6 +608,8 @@ static void handle_directive(Parser *p, const Token *hash)
         size_t n = strlen(msg) * 4 + 1;
         char *shown = tmp_alloc(p, n);
         text_escape(shown, n, msg, "\n\t");
+        if (p->opts->quiet_debug)
+            return;
         fputs(shown, stderr);
         fflush(stderr);
         if (*msg)

@@ -38,6 +38,10 @@ typedef struct {
     /* The frame being rendered; NULL: a still, as POV-Ray renders one
      * without animation switches (clock 0, clock_delta 1, ...). */
     const ParseAnimation *animation;
+    /* POV-Ray's console streams turned off (-GD, -GW, -GA): #debug text
+     * and warnings (#warning, the parser's own) are not printed. Errors
+     * always are. */
+    int quiet_debug, quiet_warnings;
     /* Budgets of the parse's work (0: the default), each an error naming the
      * position, the loop or macro, and the macro calls that led there:
      * #while/#for iterations in all (10 million), macro calls in all (2

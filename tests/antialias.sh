@@ -108,8 +108,6 @@ check "PoseRay's line +W320 +H240 +FN +AM2 +A0.01 +r3 +Q9 +C -UA +MV3.7: renders
 check "... a 320x240 PNG" test "$(od -An -tu1 -j16 -N8 "$work/poseray.png" | tr -s ' ' | sed 's/^ //')" = "0 0 1 64 0 0 0 240"
 run desk.pov +W16 +H12 +SP8 +EP2 -o sp.png
 check "+SP8 +EP2 (mosaic preview): accepted, exit status 0" exited 0
-run desk.pov +W16 +H12 +UA -o bad.png
-check "+UA: refused (no alpha channel in PNG yet), exit status 1" exited 1 "alpha channel"
 run desk.pov +W16 +H12 +MV3.5 -o bad.png
 check "+MV3.5: refused, exit status 1" exited 1 "+MV3.7 only"
 run desk.pov +W16 +H12 +A0.3 -J +R10 -o bad.png

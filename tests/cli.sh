@@ -112,7 +112,7 @@ check "+D: one note that there is no display window, not an error" test "$(grep 
 # estimate of what is left, and erased at the end; nothing when stderr is
 # not a terminal.
 if command -v script >/dev/null 2>&1; then
-    (cd "$work" && script -qec "'$abs' desk.pov --width 2000 --height 1500 --threads 1 -o pty.png" /dev/null \
+    (cd "$work" && script -qec "'$abs' desk.pov --width 2000 --height 1500 --threads 1 +GR -o pty.png" /dev/null \
         >pty.out 2>&1 </dev/null); status=$?
     check_status "under a pseudo-terminal: exit status 0" "$status" 0
     tr '\r' '\n' <"$work/pty.out" >"$work/pty.lines"
@@ -122,9 +122,15 @@ if command -v script >/dev/null 2>&1; then
     # The last thing written is the line's erasure: carriage return, clear to the end.
     check "under a pseudo-terminal: the line erased at the end" \
         test "$(tail -c 4 "$work/pty.out" | od -An -tx1 | tr -d ' \n')" = 0d1b5b4b
+    # -GR: POV-Ray's render stream off: no progress line.
+    (cd "$work" && script -qec "'$abs' desk.pov --width 400 --height 300 --threads 1 -GR -o pty-gr.png" /dev/null \
+        >pty-gr.out 2>&1 </dev/null); status=$?
+    check "under a pseudo-terminal with -GR: exit status 0 and no progress line" \
+        test "$status $(grep -c rendering: "$work/pty-gr.out")" = "0 0"
 else
     skip "under a pseudo-terminal: a progress line" "script(1) not installed (Debian package bsdutils)"
     skip "under a pseudo-terminal: the line erased at the end" "script(1) not installed"
+    skip "under a pseudo-terminal with -GR: no progress line" "script(1) not installed"
 fi
 run "$work/desk.pov" --width 2000 --height 1500 --threads 1 -o "$work/np.png"
 check "no progress line when stderr is not a terminal (a file)" test ! -s "$work/err"

@@ -131,13 +131,13 @@ check "unwritable --diff: exit status 2, names the file" exited 2 "no/such/folde
 # Bad usage: exit status 2.
 for args in "$work/a.ppm" "$work/a.ppm $work/b.ppm $work/b.ppm" "$work/a.ppm $work/b.ppm --frobnicate" \
             "$work/a.ppm $work/b.ppm --max-rmse lots" "$work/a.ppm $work/b.ppm --max-share 2" \
-            "$work/a.ppm $work/b.ppm --max-interior 0" "$work/a.ppm $work/b.ppm --diff $work/d.tga" \
+            "$work/a.ppm $work/b.ppm --max-interior 0" "$work/a.ppm $work/b.ppm --diff $work/d.gif" \
             "$work/a.ppm $work/b.ppm --mask-a $work/a.ppm" "$work/a.ppm $work/b.ppm --mask-a $work/a.ppm $work/a.ppm"; do
     # shellcheck disable=SC2086 # $args is several words
     run $args
     check "bad usage ($(sed "s|$work/||g" "$work/err")): exit status 2 and a message" exited 2 .
 done
-check "no image written for --diff with an unknown format" [ ! -e "$work/d.tga" ]
+check "no image written for --diff with an unknown format" [ ! -e "$work/d.gif" ]
 run --help
 check_status "compare --help exits 0" "$status" 0
 for opt in --max-rmse --min-psnr --max-error --max-share --max-mask-share --max-interior --mask-a; do

@@ -3,8 +3,8 @@
 # tests/fuzz_replay_scene hands the seed corpus make fuzz starts from (the
 # project's scenes, the hard cases, tests/hostile and tests/fuzz/seeds) to
 # the scene entry point one input at a time, which parses each and renders
-# what parses at 4x3 pixels with hybrid shadow testing; the EXR, PNG and
-# PPM entry points get images hstrace writes of a small scene and the
+# what parses at 4x3 pixels with hybrid shadow testing; the image readers'
+# entry points (EXR, PNG, PPM, Targa, BMP, JPEG, HDR) get images hstrace writes of a small scene and the
 # images fuzzing found (tests/hostile/images). Under the sanitizer build a
 # report ends the program (no recovery): the check fails. So the entry
 # points keep building with the tree, and every finding kept in the tree
@@ -35,11 +35,11 @@ for f in "$srcdir"/scenes/*.pov "$srcdir"/scenes/hard/*.pov "$srcdir"/tests/host
 done
 check "the scene entry point parses and renders the $# seed scenes" replayed fuzz_replay_scene "$@"
 
-for fmt in exr png ppm; do
+for fmt in exr png ppm tga bmp jpg hdr; do
     set --
     i=0
     for opts in "--width 5 --height 3" "--width 7 --height 4 --exr-float" "--width 3 --height 9 --png16" \
-        "--width 6 --height 5 --aov all"; do
+        "--width 6 --height 5 --aov all" "--width 9 --height 2 +UA" "--width 40 --height 3 +UA +FC"; do
         i=$((i + 1))
         # shellcheck disable=SC2086 # the options are words
         "$build/hstrace" "$srcdir/tests/fuzz/seeds/small.pov" $opts -o "$work/seed-$i.$fmt" >/dev/null 2>&1 &&

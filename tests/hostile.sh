@@ -121,6 +121,7 @@ ppm-huge-header.ppm|PPM pixel data is truncated (2677x55595 pixels need 44648344
 png-huge-truncated.png|Not enough image data
 exr-huge-window.exr|truncated EXR file: its 2051x65536 data window needs 4096 chunks, the file holds 460 bytes
 exr-huge-reservation.exr|Invalid size 50331649
+jpg-arithmetic-bomb.jpg|JPEG data of 238 bytes is too small for 1801x44267 pixels
 IMAGES
 
 # The budgets' options, given something that is no budget: bad usage.

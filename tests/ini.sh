@@ -156,9 +156,23 @@ check "+FE without +O: the scene's name with .exr, an OpenEXR file" exr_magic
 run scene.pov +W8 +H6 +FN +Ofn8
 png_depth8() { [ "$(od -An -tu1 -j24 -N1 "$work/fn8.png" | tr -d ' ')" = 8 ]; }
 check "+FN +Ofn8: an 8-bit PNG named fn8.png" png_depth8
-for t in "+FT TGA" "+FC TGA" "+FB BMP" "+FJ JPEG" "+FH HDR"; do
-    run scene.pov "${t%% *}" -o bad-type.png
-    check "${t%% *}: ${t#* } output refused, exit status 1" exited 1 "output is not supported"
+# kind FILE: what the file's first bytes say it is.
+kind() {
+    case $(od -An -tu1 -N3 "$1" 2>/dev/null | tr -s ' ' | sed 's/^ //') in
+    "0 0 2") echo Targa ;;
+    "0 0 10") echo "RLE Targa" ;;
+    "66 77 "*) echo BMP ;;
+    "255 216 255") echo JPEG ;;
+    "35 63 82") echo HDR ;;
+    *) echo "unknown" ;;
+    esac
+}
+for t in "T tga Targa" "C tga RLE Targa" "B bmp BMP" "J jpg JPEG" "H hdr HDR"; do
+    type=${t%% *} rest=${t#* }
+    ext=${rest%% *} want=${rest#* }
+    printf 'Output_File_Type=%s\nOutput_File_Name=type-%s\nWidth=8\nHeight=6\n' "$type" "$type" >"$work/type-$type.ini"
+    run "type-$type.ini" scene.pov
+    check "Output_File_Type=$type: writes type-$type.$ext, a $want file" test "$status $(kind "$work/type-$type.$ext")" = "0 $want"
 done
 
 # --- Antialias=on turned off later, -F ----------------------------------------
@@ -172,4 +186,56 @@ check "Antialias=on anti-aliases; then -A on the command line turns it off again
 run scene.pov -F -o nofile.png --width 8 --height 6
 check "-F: renders, exit status 0" exited 0
 check "-F: writes no image" fails test -e "$work/nofile.png"
+
+# --- POV-Ray's console streams (+G.. -G..) and +P ----------------------------
+cat >"$work/streams.pov" <<'EOF'
+#debug "debug-text\n"
+#warning "warning-text"
+camera { location <0, 0, -3> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> pigment { color rgb 1 } }
+EOF
+# shown SWITCHES...: which of the two streams reach the standard error.
+shown() {
+    run streams.pov +W8 +H6 -o streams.png "$@"
+    [ "$status" = 0 ] || { echo "exit status $status"; cat "$work/err"; return 1; }
+    printf '%s%s' "$(grep -q debug-text "$work/err" && echo D)" "$(grep -q 'warning: warning-text' "$work/err" && echo W)"
+}
+while IFS='|' read -r switches want; do
+    # shellcheck disable=SC2086 # the switches are words
+    got=$(shown $switches)
+    check "streams ${switches:-(none)}: ${want:-nothing} shown" test "$got" = "$want"
+done <<'STREAMS'
+|DW
+-GD|W
+-GW|D
+-GA|
+-GA +GW|W
++GA -GD +GP|W
+-GA +GD +GS|D
++GF -GW|D
+STREAMS
+run streams.pov +W8 +H6 -o streams.png --stats
+stats_lines=$(grep -c '' "$work/err")
+run streams.pov +W8 +H6 -o streams.png --stats -GS
+check "-GS: --stats prints nothing (only the two streams' lines are left)" \
+    test "$status $(grep -c '' "$work/err") $(above "$stats_lines" 10 >/dev/null && echo many)" = "0 2 many"
+printf 'Debug_Console=off\n' >"$work/nodebug.ini"
+check "Debug_Console=off in an INI file: the debug stream off" test "$(shown nodebug.ini)" = W
+printf 'All_Console=off\nWarning_Console=on\n' >"$work/warnonly.ini"
+check "All_Console=off then Warning_Console=on: warnings only" test "$(shown warnonly.ini)" = W
+printf 'camera { location <0,0,-3> look_at 0 }\nsphere { 0, 1 pigment { colour rgb 1 } } }\n' >"$work/broken.pov"
+run broken.pov +W8 +H6 -GA -GF -o broken.png
+check "-GA -GF: a scene error is still shown (status 2, FILE:LINE:COLUMN)" exited 2 "broken.pov:2:"
+run streams.pov +W8 +H6 +GWwarnings.txt -o streams.png
+check "+GWwarnings.txt: refused (hstrace writes to the standard error), status 1" exited 1 "standard error only"
+run streams.pov +W8 +H6 +GIout.ini -o streams.png
+check "+GIout.ini: refused (no INI files written), status 1" exited 1 "writing INI files is not supported"
+run streams.pov +W8 +H6 +P -o streams.png
+check "+P: accepted, with a note that there is nothing to pause on" exited 0 "note: +P: hstrace has no display window to pause on"
+printf 'Pause_When_Done=on\n' >"$work/pause.ini"
+run pause.ini streams.pov +W8 +H6 -o streams.png
+check "Pause_When_Done=on: the same note" exited 0 "note: +P:"
+run streams.pov +W8 +H6 -P -o streams.png
+check "-P: accepted without a note" test "$status $(grep -c 'note: +P' "$work/err")" = "0 0"
 tap_end

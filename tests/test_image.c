@@ -149,7 +149,12 @@ static void test_basics(void)
     tap_ok(image_format_from_path("dir.png/b.EXR") == IMAGE_FORMAT_EXR, "format: .EXR, case-insensitive");
     tap_ok(image_format_from_path("x/y.Png") == IMAGE_FORMAT_PNG, "format: .Png");
     tap_ok(image_format_from_path("out.ppm") == IMAGE_FORMAT_PPM, "format: .ppm");
-    tap_ok(image_format_from_path("out.tga") == IMAGE_FORMAT_UNKNOWN, "format: .tga unknown");
+    tap_ok(image_format_from_path("out.tga") == IMAGE_FORMAT_TGA, "format: .tga");
+    tap_ok(image_format_from_path("out.BMP") == IMAGE_FORMAT_BMP, "format: .BMP");
+    tap_ok(image_format_from_path("out.jpg") == IMAGE_FORMAT_JPEG && image_format_from_path("a.jpeg") == IMAGE_FORMAT_JPEG,
+           "format: .jpg and .jpeg");
+    tap_ok(image_format_from_path("out.hdr") == IMAGE_FORMAT_HDR, "format: .hdr");
+    tap_ok(image_format_from_path("out.gif") == IMAGE_FORMAT_UNKNOWN, "format: .gif unknown");
     tap_ok(image_format_from_path("dir.png/noext") == IMAGE_FORMAT_UNKNOWN, "format: dot only in folder name");
     tap_ok(image_format_from_path("png") == IMAGE_FORMAT_UNKNOWN, "format: no extension");
 
@@ -615,6 +620,122 @@ static void test_ppm(void)
     image_free(&src);
 }
 
+/* ---- Targa, BMP, JPEG, HDR ---------------------------------------------------- */
+
+/* A write and a read through the file `name`; the mismatching samples of the
+ * display encoding (png_ppm_mismatches), or -1 with err when either failed. */
+static int round_trip(const char *name, const Image *src, const ImageWriteOptions *opt, int with_alpha, float steps,
+                      char *err, int errlen)
+{
+    Image back;
+    int bad = -1;
+    const char *p = tmp_path(name);
+    if (image_write(p, src, opt, err, errlen) == 0 && image_read(p, &back, 0.0, err, errlen) == 0) {
+        bad = back.width == src->width && back.height == src->height
+                  ? png_ppm_mismatches(src, &back, 0.0, 255, with_alpha, steps)
+                  : src->width * src->height;
+        image_free(&back);
+    }
+    return bad;
+}
+
+static void test_other_types(void)
+{
+    Image src, withalpha, back;
+    ImageWriteOptions opt = { 0 };
+    char err[512] = "";
+    int bad;
+
+    image_alloc(&src, 67, 29);
+    fill_test_image(&src, 0);
+    image_alloc(&withalpha, 67, 29);
+    fill_test_image(&withalpha, 1);
+    for (int rle = 0; rle <= 1; rle++)
+        for (int alpha = 0; alpha <= 1; alpha++) {
+            opt.tga_rle = rle;
+            opt.write_alpha = alpha;
+            bad = round_trip("round.tga", alpha ? &withalpha : &src, &opt, alpha, 0.0f, err, sizeof err);
+            tap_ok(bad == 0, "Targa %s %s: every sample survives write and read (%s)", rle ? "RLE" : "plain",
+                   alpha ? "RGBA" : "RGB", bad < 0 ? err : "ok");
+        }
+    opt.tga_rle = 0;
+    for (int alpha = 0; alpha <= 1; alpha++) {
+        opt.write_alpha = alpha;
+        bad = round_trip("round.bmp", alpha ? &withalpha : &src, &opt, alpha, 0.0f, err, sizeof err);
+        tap_ok(bad == 0, "BMP %s: every sample survives write and read (%s)", alpha ? "RGBA" : "RGB",
+               bad < 0 ? err : "ok");
+    }
+    opt.write_alpha = 0;
+    opt.jpeg_quality = 100;
+    bad = round_trip("round.jpg", &src, &opt, 0, 6.0f, err, sizeof err);
+    tap_ok(bad == 0, "JPEG at quality 100: every sample within 6 steps of 255 (%s)", bad < 0 ? err : "ok");
+
+    /* HDR: linear, each component within the shared exponent's step */
+    {
+        const char *p = tmp_path("round.hdr");
+        bad = -1;
+        if (image_write(p, &src, &opt, err, sizeof err) == 0 && image_read(p, &back, 0.0, err, sizeof err) == 0) {
+            bad = 0;
+            for (size_t i = 0; i < (size_t)src.width * src.height; i++) {
+                const float *a = src.rgba + 4 * i, *b = back.rgba + 4 * i;
+                float m = fmaxf(a[0], fmaxf(a[1], a[2]));
+                for (int c = 0; c < 3; c++)
+                    bad += fabsf(a[c] - b[c]) > m / 128.0f + 1e-30f;
+            }
+            image_free(&back);
+        }
+        tap_ok(bad == 0, "HDR: every component within 1/128 of the pixel's largest (%s)", bad < 0 ? err : "ok");
+    }
+
+    /* Files as other programs write them. */
+    {
+        /* a bottom-up 2x2 Targa (descriptor 0), 24 bits: red green / blue white */
+        const unsigned char tga[] = { 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 2, 0, 24, 0,
+                                      255, 0, 0, 255, 255, 255, /* bottom row: blue, white */
+                                      0, 0, 255, 0, 255, 0 /* top row: red, green */ };
+        const char *p = tmp_path("bottom-up.tga");
+        spit(p, tga, sizeof tga);
+        tap_ok(image_read(p, &back, 0.0, err, sizeof err) == 0 && back.rgba[0] == 1.0f && back.rgba[1] == 0.0f &&
+                   back.rgba[5] == 1.0f && back.rgba[10] == 1.0f && back.rgba[12] == 1.0f && back.rgba[13] == 1.0f,
+               "a bottom-up Targa reads with its top row first (%s)", err);
+        image_free(&back);
+    }
+    {
+        /* a top-down (negative height) 8-bit BMP with a palette of two colours */
+        unsigned char bmp[14 + 40 + 8 + 8] = { 'B', 'M' };
+        bmp[10] = 14 + 40 + 8;
+        bmp[14] = 40;
+        bmp[18] = 2;                                   /* width 2 */
+        bmp[22] = 0xfe, bmp[23] = bmp[24] = bmp[25] = 0xff; /* height -2 */
+        bmp[26] = 1;
+        bmp[28] = 8;
+        bmp[46] = 2;                                   /* two colours used */
+        bmp[54 + 2] = 255;                             /* colour 0: red (BGRA) */
+        bmp[54 + 4] = 255;                             /* colour 1: blue */
+        bmp[62] = 0, bmp[63] = 1;                      /* row 0: red, blue */
+        bmp[66] = 1, bmp[67] = 0;                      /* row 1: blue, red */
+        const char *p = tmp_path("palette.bmp");
+        spit(p, bmp, sizeof bmp);
+        tap_ok(image_read(p, &back, 0.0, err, sizeof err) == 0 && back.rgba[0] == 1.0f && back.rgba[2] == 0.0f &&
+                   back.rgba[6] == 1.0f && back.rgba[8 + 2] == 1.0f && back.rgba[12] == 1.0f,
+               "a top-down 8-bit BMP with a palette reads (%s)", err);
+        image_free(&back);
+    }
+    {
+        /* an HDR of 3 flat pixels: (128,64,32,129) then an old-RLE repeat of 2 */
+        const char hdr[] = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 3\n\x80\x40\x20\x81\x01\x01\x01\x02";
+        const char *p = tmp_path("old.hdr");
+        spit(p, hdr, (long)sizeof hdr - 1);
+        tap_ok(image_read(p, &back, 0.0, err, sizeof err) == 0 && back.width == 3 &&
+                   back.rgba[0] == 128.5f / 128.0f && back.rgba[1] == 64.5f / 128.0f && back.rgba[8] == back.rgba[0] &&
+                   back.rgba[10] == 32.5f / 128.0f,
+               "an HDR's flat pixels and old run-length repeat read as Radiance decodes them (%s)", err);
+        image_free(&back);
+    }
+    image_free(&src);
+    image_free(&withalpha);
+}
+
 /* ---- atomic writes ---------------------------------------------------------- */
 
 static void test_atomic(void)
@@ -696,7 +817,7 @@ static void test_atomic(void)
         rmdir(sub);
     }
 
-    tap_ok(image_write(tmp_path("atomic/x.tga"), &img, &opt, err, sizeof err) == -1 && strstr(err, "x.tga"),
+    tap_ok(image_write(tmp_path("atomic/x.gif"), &img, &opt, err, sizeof err) == -1 && strstr(err, "x.gif"),
            "unknown extension refused: %s", err);
     {
         Image empty = { 0, 0, NULL };
@@ -895,6 +1016,7 @@ int main(void)
     test_exr_tiled();
     test_png();
     test_ppm();
+    test_other_types();
     test_atomic();
     test_broken();
     test_povray();

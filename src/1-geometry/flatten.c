@@ -556,7 +556,15 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     w->camera.direction = scene->camera.direction;
     w->camera.up = scene->camera.up;
     w->camera.right = scene->camera.right;
-    w->background = rgb_of(&scene->background);
+    w->background_colour = rgb_of(&scene->background);
+    w->background_filter = scene->background.filter;
+    w->background_transmit = scene->background.transmit;
+    w->background = w->background_colour;
+    if (scene->version >= 3.7) { /* POV-Ray 3.7 composites it on black */
+        w->background.r *= 1.0 - scene->background.transmit;
+        w->background.g *= 1.0 - scene->background.transmit;
+        w->background.b *= 1.0 - scene->background.transmit;
+    }
     if (scene->sky.npigments > 0) {
         w->sky = malloc(sizeof *w->sky);
         Pigment *pigments = malloc(sizeof *pigments * (size_t)scene->sky.npigments);

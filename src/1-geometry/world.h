@@ -91,7 +91,15 @@ typedef struct {
     int nlights;
     Light *lights;
     Camera camera;
+    /* The background without an alpha channel (opaque: POV-Ray 3.7 takes
+     * its colour times 1 - transmit, 3.6 its colour), and as the scene gave
+     * it, for an alpha channel (+UA). */
     RGB background;
+    RGB background_colour;
+    double background_filter, background_transmit;
+    /* +UA: camera rays and the rays refracted from them see the background
+     * as transparent as it is. Zero from world_build; the caller sets it. */
+    int alpha_background;
     /* NULL: the background colour alone. Else the scene's sky sphere with
      * its own copy of the pigments, noise generators resolved (owned). */
     SkySphere *sky;

@@ -321,29 +321,68 @@ static RGB legacy_sky_colour(const World *w, Vec3 p)
     return col;
 }
 
+/* POV-Ray 3.7's sky: the sky sphere's layers, the last written on top, each
+ * letting through its colour times filter plus transmit; fil is what the
+ * layers together let through. */
+static RGB sky_layers(const World *w, Vec3 dir, RGB *fil)
+{
+    RGB col = { 0, 0, 0 };
+    const SkySphere *sky = w->sky;
+    *fil = (RGB){ 1, 1, 1 };
+    if (!sky)
+        return col;
+    /* POV-Ray transforms the direction as a point (MInvTransPoint) */
+    Vec3 p = inverse_transform_point(&sky->transform, dir);
+    for (int i = sky->npigments - 1; i >= 0; i--) {
+        Colour c = sky_pigment_at(w, i, p);
+        double opacity = 1.0 - c.filter - c.transmit;
+        col.r += c.r * opacity * fil->r;
+        col.g += c.g * opacity * fil->g;
+        col.b += c.b * opacity * fil->b;
+        fil->r *= c.r * c.filter + c.transmit;
+        fil->g *= c.g * c.filter + c.transmit;
+        fil->b *= c.b * c.filter + c.transmit;
+    }
+    return col;
+}
+
 RGB sky_colour(const World *w, Vec3 dir)
 {
-    RGB col = { 0, 0, 0 }, fil = { 1, 1, 1 };
-    const SkySphere *sky = w->sky;
-    if (sky && w->legacy_sky)
-        return legacy_sky_colour(w, inverse_transform_point(&sky->transform, dir));
-    if (sky) {
-        /* POV-Ray transforms the direction as a point (MInvTransPoint) */
-        Vec3 p = inverse_transform_point(&sky->transform, dir);
-        for (int i = sky->npigments - 1; i >= 0; i--) { /* the last written is on top */
-            Colour c = sky_pigment_at(w, i, p);
-            double opacity = 1.0 - c.filter - c.transmit;
-            col.r += c.r * opacity * fil.r;
-            col.g += c.g * opacity * fil.g;
-            col.b += c.b * opacity * fil.b;
-            fil.r *= c.r * c.filter + c.transmit;
-            fil.g *= c.g * c.filter + c.transmit;
-            fil.b *= c.b * c.filter + c.transmit;
-        }
+    return sky_colour_over(w, dir, w->background);
+}
+
+RGB sky_colour_over(const World *w, Vec3 dir, RGB below)
+{
+    if (w->sky && w->legacy_sky)
+        return legacy_sky_colour(w, inverse_transform_point(&w->sky->transform, dir));
+    RGB fil, col = sky_layers(w, dir, &fil);
+    /* the background below, as one more opaque layer */
+    col.r += below.r * fil.r;
+    col.g += below.g * fil.g;
+    col.b += below.b * fil.b;
+    return col;
+}
+
+RGB sky_colour_alpha(const World *w, Vec3 dir, double *transmit)
+{
+    RGB col = { 0, 0, 0 };
+    if (w->legacy_sky) { /* POV-Ray 3.6's rule: the background is not there */
+        *transmit = 1.0;
+        return col;
     }
-    /* the background below, as one more (opaque: no alpha channel) layer */
-    col.r += w->background.r * fil.r;
-    col.g += w->background.g * fil.g;
-    col.b += w->background.b * fil.b;
+    RGB fil;
+    col = sky_layers(w, dir, &fil);
+    /* the background as one more layer, with its own filter and transmit */
+    const RGB bg = w->background_colour;
+    const double f = w->background_filter, t = w->background_transmit, opacity = 1.0 - f - t;
+    col.r += bg.r * opacity * fil.r;
+    col.g += bg.g * opacity * fil.g;
+    col.b += bg.b * opacity * fil.b;
+    fil.r *= bg.r * f + t;
+    fil.g *= bg.g * f + t;
+    fil.b *= bg.b * f + t;
+    /* POV-Ray: min(1, |greyscale|), its weights summed in single precision */
+    double grey = fabs((double)(float)(0.297 * fil.r + 0.589 * fil.g + 0.114 * fil.b));
+    *transmit = grey < 1.0 ? grey : 1.0;
     return col;
 }

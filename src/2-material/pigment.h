@@ -29,5 +29,14 @@ Colour material_colour_at(const World *w, const Material *m, int polygon, Vec3 w
 /* What a sky sphere and the background show in direction `dir` (unit),
  * without an alpha channel (POV-Ray 3.7's ComputeSky, version >= 3.7). */
 RGB sky_colour(const World *w, Vec3 dir);
+/* The same over another opaque background colour: with an alpha channel
+ * POV-Ray 3.7 keeps the background's colour as given, and reflected rays
+ * see it opaque, not composited on black. */
+RGB sky_colour_over(const World *w, Vec3 dir, RGB below);
+/* The same seen with an alpha channel (+UA): the background with its own
+ * filter and transmit, and what the sky and background together let
+ * through, as POV-Ray 3.7 gives it (POV-Ray 3.6's scenes: nothing at all,
+ * transmit 1). */
+RGB sky_colour_alpha(const World *w, Vec3 dir, double *transmit);
 
 #endif

@@ -18,20 +18,25 @@
 /* POV-Ray's greyscale weights (base/types.h). */
 static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589 * g + 0.114 * b; }
 
-static void background(const World *w, Vec3 dir, Radiance *out)
+static void background(const World *w, const Ray *ray, Radiance *out)
 {
-    /* Without an alpha channel POV-Ray ignores the background's filter and
-     * transmit, so it is opaque and the pixel's transmittance is 0. */
-    if (w->sky) {
-        RGB c = sky_colour(w, dir);
+    /* With an alpha channel (+UA), camera rays and rays refracted from them
+     * (not reflected ones: POV-Ray's alphaBackground) see the background's
+     * transparency. Otherwise it is opaque and the transmittance 0: without
+     * an alpha channel composited on black, with one (for reflected rays)
+     * its colour as given. */
+    if (w->alpha_background && !ray->reflection) {
+        RGB c = sky_colour_alpha(w, ray->dir, &out->transmit);
         out->r = c.r;
         out->g = c.g;
         out->b = c.b;
-    } else {
-        out->r = w->background.r;
-        out->g = w->background.g;
-        out->b = w->background.b;
+        return;
     }
+    RGB below = w->alpha_background ? w->background_colour : w->background;
+    RGB c = w->sky ? sky_colour_over(w, ray->dir, below) : below;
+    out->r = c.r;
+    out->g = c.g;
+    out->b = c.b;
     out->transmit = 0.0;
 }
 
@@ -452,7 +457,7 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
     int found = trace_nearest(&ctx->shadow.tracer, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);
     ctx->shadow.tracer.hide = 0;
     if (!found) {
-        background(w, ray->dir, out);
+        background(w, ray, out);
         if (ctx->quality.volume && w->nfogs && in_atmosphere(&ray->inside))
             fog_apply(w, ray->org, ray->dir, HUGE_VAL, out);
         return;

@@ -108,7 +108,7 @@ void options_usage(FILE *f)
             "two images and two renderers' shadow masks; or measures every shadow method\n"
             "against POV-Ray on a scene.\n"
             "\n"
-            "  -o, --output FILE      image to write (.exr, .png or .ppm; default SCENE.png)\n"
+            "  -o, --output FILE      image to write (.exr .png .ppm .tga .bmp .jpg .hdr; default SCENE.png)\n"
             "      --width N          image width in pixels (default 320)\n"
             "      --height N         image height in pixels (default 240)\n"
             "      --shadows METHOD   shadow test (default hst), one of:\n"
@@ -165,14 +165,21 @@ void options_usage(FILE *f)
             "\n"
             "POV-Ray switches: +Wn +Hn +Oname +Iname +Ldir +WTn +Qn (quality: <=3 no shadows,\n"
             "4-5 shadows, 6-7 also refraction, >=8 also reflection; default 9); +FN[16] (PNG),\n"
-            "+FE (EXR), +FP (PPM): the output type, +Oname without an extension gets its\n"
-            "extension; -F: write no image; +FT +FC +FB +FJ +FH are refused; -D -V are\n"
+            "+FE (EXR), +FP (PPM), +FT / +FC (Targa, plain / run-length), +FB (BMP), +FJ (JPEG,\n"
+            "quality from the INI key Compression, default 85), +FH (Radiance HDR): the output\n"
+            "type, +Oname without an extension gets its extension; +FS (system), +FNG (grey)\n"
+            "and 16-bit PPM are refused; -F: write no image; -D -V are\n"
             "accepted and change nothing, +D with a note (no display window). A scene named\n"
             "without an extension is NAME.pov, as in POV-Ray.\n"
             "Anti-aliasing as POV-Ray 3.7's: +A[threshold] (0.3), -A, +AM1 / +AM2 (method),\n"
             "+Rn (depth, 3), +J[amount] / -J (POV-Ray's own jitter, on by default).\n"
-            "+C (continue: hstrace leaves no partial image, so it renders all), -UA, +MV3.7,\n"
-            "+SPn +EPn (mosaic preview: no display) are accepted; +UA (alpha) is refused.\n"
+            "+UA: an alpha channel (PNG, Targa, BMP; EXR always has one), the background\n"
+            "transparent, as POV-Ray 3.7's; -UA (the default) composites it.\n"
+            "+C (continue: hstrace leaves no partial image, so it renders all), +MV3.7,\n"
+            "+SPn +EPn (mosaic preview: no display) are accepted; +P (pause) with a note, -P.\n"
+            "Console streams: +GA -GA (all), +GD -GD (#debug), +GW -GW (warnings), +GR -GR\n"
+            "(progress line), +GS -GS (--stats), +GF -GF +GP accepted; errors are always\n"
+            "shown; a stream to a file (+GW name) and +GI name (an INI file) are refused.\n"
             "On a terminal a progress line shows the pixels done and the time left.\n"
             "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
             "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
@@ -231,7 +238,10 @@ static int add_include(Options *opt, const char *dir, char *err, int errlen)
     return 0;
 }
 
-/* POV-Ray's +F: the output file's type (+FN, +FN16, +FE, +FP; -F none). */
+/* POV-Ray's +F: the output file's type (+FN[bits] PNG, +FE EXR, +FP PPM,
+ * +FT Targa, +FC compressed Targa, +FB BMP, +FJ JPEG, +FH Radiance HDR;
+ * -F none). Digits after the type are POV-Ray's bits per colour: PNG's
+ * depth, ignored by the types that have one depth. */
 static int output_type_switch(const char *arg, int on, Options *opt, char *err, int errlen)
 {
     const char *t = arg + 2;
@@ -241,27 +251,65 @@ static int output_type_switch(const char *arg, int on, Options *opt, char *err, 
     }
     opt->no_output = 0;
     int type = toupper((unsigned char)t[0]);
-    static const char *const other[][2] = { { "T", "TGA" }, { "C", "compressed TGA" }, { "B", "BMP" },
-                                            { "J", "JPEG" }, { "H", "Radiance HDR" }, { "S", "system" } };
-    for (size_t i = 0; i < sizeof other / sizeof other[0]; i++) {
-        if (type == other[i][0][0]) {
-            snprintf(err, (size_t)errlen, "'%s': %s output is not supported by hstrace (+FN PNG, +FE EXR, +FP PPM)",
-                     arg, other[i][1]);
-            return -1;
-        }
-    }
-    if (type == 'N') {
-        int bits = 8;
-        if (t[1] && parse_int(t + 1, 1, 16, &bits)) {
-            snprintf(err, (size_t)errlen, "'%s': bits per colour must be 1 to 16", arg);
-            return -1;
-        }
-        opt->png16 = bits > 8;
-    } else if ((type != 'E' && type != 'P') || t[1]) {
-        snprintf(err, (size_t)errlen, "'%s': unknown output type (+FN PNG, +FE EXR, +FP PPM)", arg);
+    if (type == 'S') {
+        snprintf(err, (size_t)errlen, "'%s': the system's own image type is not supported by hstrace (+FN PNG, +FE EXR, "
+                 "+FP PPM, +FT/+FC Targa, +FB BMP, +FJ JPEG, +FH HDR)", arg);
         return -1;
     }
+    if (!type || !strchr("NEPTCBJH", type)) {
+        snprintf(err, (size_t)errlen, "'%s': unknown output type (+FN PNG, +FE EXR, +FP PPM, +FT/+FC Targa, +FB BMP, "
+                 "+FJ JPEG, +FH HDR)", arg);
+        return -1;
+    }
+    if (toupper((unsigned char)t[1]) == 'G') {
+        snprintf(err, (size_t)errlen, "'%s': greyscale output is not supported by hstrace", arg);
+        return -1;
+    }
+    int bits = 8;
+    if (t[1] && parse_int(t + 1, 1, 16, &bits)) {
+        snprintf(err, (size_t)errlen, "'%s': bits per colour must be 1 to 16", arg);
+        return -1;
+    }
+    if (type == 'P' && bits > 8) {
+        snprintf(err, (size_t)errlen, "'%s': 16-bit PPM output is not supported by hstrace (+FN16 writes 16-bit PNG)", arg);
+        return -1;
+    }
+    if (type == 'N')
+        opt->png16 = bits > 8;
     opt->output_type = type;
+    return 0;
+}
+
+/* POV-Ray's console streams: +GA all, +GD debug, +GF fatal, +GR render,
+ * +GS statistics, +GW warning (on, or off with -), +GP append to their
+ * files. hstrace writes its streams to the standard error only: a file name
+ * after the letter is refused (redirect the standard error instead); fatal
+ * errors are shown whatever -GF or -GA say, since the exit status alone
+ * would not tell what went wrong. */
+static int stream_switch(const char *arg, int on, Options *opt, char *err, int errlen)
+{
+    int which = toupper((unsigned char)arg[2]);
+    if (which == 'I') {
+        snprintf(err, (size_t)errlen, "'%s': writing INI files is not supported by hstrace", arg);
+        return -1;
+    }
+    if (!which || !strchr("ADFRSWP", which) || (which == 'P' && arg[3])) {
+        snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
+        return -1;
+    }
+    if (arg[3]) {
+        snprintf(err, (size_t)errlen, "'%s': hstrace writes its messages to the standard error only (redirect it to "
+                 "keep them in a file)", arg);
+        return -1;
+    }
+    if (which == 'A' || which == 'D')
+        opt->debug_console = on;
+    if (which == 'A' || which == 'W')
+        opt->warning_console = on;
+    if (which == 'A' || which == 'R')
+        opt->render_console = on;
+    if (which == 'A' || which == 'S')
+        opt->statistics_console = on;
     return 0;
 }
 
@@ -399,10 +447,7 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
     case 'U': case 'u':
         if (toupper((unsigned char)s[1]) != 'A' || s[2])
             break;
-        if (on) {
-            snprintf(err, (size_t)errlen, "'%s': an alpha channel in the output is not supported by hstrace yet", arg);
-            return -1;
-        }
+        opt->output_alpha = on;
         return 0;
     case 'M': case 'm': {
         double v;
@@ -434,6 +479,13 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
         return 0;
     case 'V': case 'v':
         return 0; /* verbosity */
+    case 'P': case 'p':
+        if (s[1])
+            break;
+        opt->pause_asked = on; /* no display window: main says so once */
+        return 0;
+    case 'G': case 'g':
+        return stream_switch(arg, on, opt, err, errlen);
     default:
         break;
     }
@@ -515,7 +567,7 @@ static int add_declare(Options *opt, const char *text, char *err, int errlen)
 typedef enum {
     KEY_SWITCH,   /* the same as the switch PREFIX followed by the value */
     KEY_BOOL,     /* on/off as the switch +PREFIX / -PREFIX */
-    KEY_SCENE, KEY_OUTPUT, KEY_LIBRARY, KEY_DECLARE, KEY_BITS, KEY_INCLUDE_INI,
+    KEY_SCENE, KEY_OUTPUT, KEY_LIBRARY, KEY_DECLARE, KEY_BITS, KEY_COMPRESSION, KEY_INCLUDE_INI,
     KEY_AA,       /* anti-aliasing's settings (prefix: which) */
     KEY_IGNORED,  /* no effect on the image or the files (display, consoles, bounding) */
     KEY_UNSUPPORTED /* POV-Ray's, not hstrace's yet */
@@ -550,7 +602,7 @@ static const IniKey ini_keys[] = {
     { "Display", KEY_BOOL, "D" },
     { "Display_Gamma", KEY_IGNORED, NULL },
     { "Verbose", KEY_IGNORED, NULL },
-    { "Pause_When_Done", KEY_IGNORED, NULL },
+    { "Pause_When_Done", KEY_BOOL, "P" },
     { "Draw_Vistas", KEY_IGNORED, NULL },
     { "Preview_Start_Size", KEY_IGNORED, NULL },
     { "Preview_End_Size", KEY_IGNORED, NULL },
@@ -563,12 +615,12 @@ static const IniKey ini_keys[] = {
     { "Vista_Buffer", KEY_IGNORED, NULL },
     { "Remove_Bounds", KEY_IGNORED, NULL },
     { "Split_Unions", KEY_IGNORED, NULL },
-    { "All_Console", KEY_IGNORED, NULL },
-    { "Debug_Console", KEY_IGNORED, NULL },
-    { "Fatal_Console", KEY_IGNORED, NULL },
-    { "Render_Console", KEY_IGNORED, NULL },
-    { "Statistic_Console", KEY_IGNORED, NULL },
-    { "Warning_Console", KEY_IGNORED, NULL },
+    { "All_Console", KEY_BOOL, "GA" },
+    { "Debug_Console", KEY_BOOL, "GD" },
+    { "Fatal_Console", KEY_IGNORED, NULL }, /* errors are always shown */
+    { "Render_Console", KEY_BOOL, "GR" },
+    { "Statistic_Console", KEY_BOOL, "GS" },
+    { "Warning_Console", KEY_BOOL, "GW" },
     { "Warning_Level", KEY_IGNORED, NULL },
     { "Initial_Frame", KEY_SWITCH, "+KFI" },
     { "Final_Frame", KEY_SWITCH, "+KFF" },
@@ -587,7 +639,8 @@ static const IniKey ini_keys[] = {
     { "End_Column", KEY_SWITCH, "+EC" },
     { "Continue_Trace", KEY_UNSUPPORTED, "continuing a render" },
     { "Create_Continue_Trace_Log", KEY_UNSUPPORTED, "continuing a render" },
-    { "Output_Alpha", KEY_UNSUPPORTED, "the alpha channel of PNG output" },
+    { "Output_Alpha", KEY_BOOL, "UA" },
+    { "Compression", KEY_COMPRESSION, NULL },
     { "Create_Ini", KEY_UNSUPPORTED, "writing INI files" },
     { "Histogram_Type", KEY_UNSUPPORTED, "histograms" },
     { "Histogram_Name", KEY_UNSUPPORTED, "histograms" },
@@ -651,8 +704,22 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
                 status = -1;
             } else if (k->prefix[0] == 'K') {
                 opt->cyclic = b; /* Cyclic_Animation */
+            } else if (k->prefix[0] == 'U') {
+                opt->output_alpha = b; /* Output_Alpha */
             } else if (k->prefix[0] == 'D') {
                 opt->display_asked = b; /* Display */
+            } else if (k->prefix[0] == 'P') {
+                opt->pause_asked = b; /* Pause_When_Done */
+            } else if (k->prefix[0] == 'G') {
+                /* All_Console, Debug_Console, ...: the stream's letter */
+                if (k->prefix[1] == 'A' || k->prefix[1] == 'D')
+                    opt->debug_console = b;
+                if (k->prefix[1] == 'A' || k->prefix[1] == 'W')
+                    opt->warning_console = b;
+                if (k->prefix[1] == 'A' || k->prefix[1] == 'R')
+                    opt->render_console = b;
+                if (k->prefix[1] == 'A' || k->prefix[1] == 'S')
+                    opt->statistics_console = b;
             } else if (k->prefix[0] == 'J') {
                 opt->jitter_on = b; /* Jitter */
             } else if (k->prefix[0] == 'A') {
@@ -684,6 +751,15 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
                 status = -1;
             } else {
                 opt->png16 = b > 8;
+            }
+            break;
+        case KEY_COMPRESSION:
+            /* POV-Ray keeps 0..255; JPEG's quality is it, up to 100 */
+            if (parse_int(value, 0, 255, &b)) {
+                snprintf(msg, sizeof msg, "Compression=%s: expected 0 to 255", value);
+                status = -1;
+            } else {
+                opt->jpeg_quality = b;
             }
             break;
         case KEY_INCLUDE_INI:
@@ -879,7 +955,15 @@ void options_free(Options *opt)
 
 const char *options_output_extension(const Options *opt)
 {
-    return opt->output_type == 'E' ? ".exr" : opt->output_type == 'P' ? ".ppm" : ".png";
+    switch (opt->output_type) {
+    case 'E': return ".exr";
+    case 'P': return ".ppm";
+    case 'T': case 'C': return ".tga";
+    case 'B': return ".bmp";
+    case 'J': return ".jpg";
+    case 'H': return ".hdr";
+    default: return ".png";
+    }
 }
 
 int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
@@ -893,6 +977,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     opt->pixel_coherence = 1;
     opt->tolerance = GRID_TOLERANCE;
     opt->initial_frame = opt->final_frame = 1;
+    opt->debug_console = opt->warning_console = opt->render_console = opt->statistics_console = 1;
     opt->aa_threshold = 0.3;
     opt->aa_method = 1;
     opt->aa_depth = 3;
@@ -1124,7 +1209,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 snprintf(err, (size_t)errlen, "out of memory");
                 return -1;
             }
-        } else if (strcasecmp(dot, ext) != 0 && !(opt->output_type == 'E' && strcasecmp(dot, ".exr") == 0)) {
+        } else if (strcasecmp(dot, ext) != 0 && !(opt->output_type == 'J' && strcasecmp(dot, ".jpeg") == 0)) {
             snprintf(err, (size_t)errlen, "+F%c asks for %s, but the output '%s' is named for another type",
                      opt->output_type, ext + 1, opt->output);
             return -1;

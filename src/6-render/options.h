@@ -83,9 +83,16 @@ typedef struct {
     double start_row, end_row, start_col, end_col;
     int have_start_row, have_end_row, have_start_col, have_end_col;
     int area_x0, area_y0, area_x1, area_y1;               /* +K or Clock= given: clock_on in a still */
-    int output_type;              /* POV-Ray's +F: 0 none given, 'N' PNG, 'E' EXR, 'P' PPM */
+    int output_type;              /* POV-Ray's +F: 0 none given, 'N' PNG, 'E' EXR, 'P' PPM,
+                                   * 'T' Targa, 'C' RLE Targa, 'B' BMP, 'J' JPEG, 'H' HDR */
+    int jpeg_quality;             /* the INI key Compression: 0 (POV-Ray's default, 85) to 255 */
+    int output_alpha;             /* +UA / Output_Alpha: an alpha channel, the background transparent */
     int no_output;                /* -F: render, write no image */
     int display_asked;            /* +D or Display=on: there is no display window, said once */
+    int pause_asked;              /* +P or Pause_When_Done=on: nothing to pause on, said once */
+    /* POV-Ray's console streams (+G.. / -G.., All_Console ...): 1 shown
+     * (the default), 0 turned off. Errors are always shown. */
+    int debug_console, warning_console, render_console, statistics_console;
     int error_has_position;       /* the message options_parse gave begins with FILE:LINE:COLUMN */
     int error_is_io;              /* ... is about a file that could not be read (exit status 3) */
     /* What options_free releases: the INI files read (their strings are

@@ -55,6 +55,14 @@ ImageFormat image_format_from_path(const char *path)
         return IMAGE_FORMAT_PNG;
     if (strcasecmp(dot, ".ppm") == 0)
         return IMAGE_FORMAT_PPM;
+    if (strcasecmp(dot, ".tga") == 0)
+        return IMAGE_FORMAT_TGA;
+    if (strcasecmp(dot, ".bmp") == 0)
+        return IMAGE_FORMAT_BMP;
+    if (strcasecmp(dot, ".jpg") == 0 || strcasecmp(dot, ".jpeg") == 0)
+        return IMAGE_FORMAT_JPEG;
+    if (strcasecmp(dot, ".hdr") == 0)
+        return IMAGE_FORMAT_HDR;
     return IMAGE_FORMAT_UNKNOWN;
 }
 
@@ -75,10 +83,14 @@ static int write_codec(AtomicFile *af, ImageFormat fmt, const Image *img, const 
     if (fp == NULL)
         return -1;
     errno = 0;
-    if (fmt == IMAGE_FORMAT_PNG)
-        rc = image_png_write(fp, img, opt, why, whylen);
-    else
-        rc = image_ppm_write(fp, img, opt, why, whylen);
+    switch (fmt) {
+    case IMAGE_FORMAT_PNG: rc = image_png_write(fp, img, opt, why, whylen); break;
+    case IMAGE_FORMAT_TGA: rc = image_tga_write(fp, img, opt, why, whylen); break;
+    case IMAGE_FORMAT_BMP: rc = image_bmp_write(fp, img, opt, why, whylen); break;
+    case IMAGE_FORMAT_JPEG: rc = image_jpeg_write(fp, img, opt, why, whylen); break;
+    case IMAGE_FORMAT_HDR: rc = image_hdr_write(fp, img, opt, why, whylen); break;
+    default: rc = image_ppm_write(fp, img, opt, why, whylen); break;
+    }
     /* fclose flushes: a full disk shows up here at the latest. */
     if (ferror(fp) && rc == 0)
         rc = -1;
@@ -104,7 +116,7 @@ int image_write(const char *path, const Image *img, const ImageWriteOptions *opt
         return -1;
     }
     if (fmt == IMAGE_FORMAT_UNKNOWN) {
-        image_set_error(err, errlen, "cannot write '%s': unknown image format (use .exr, .png or .ppm)", path);
+        image_set_error(err, errlen, "cannot write '%s': unknown image format (use .exr, .png, .ppm, .tga, .bmp, .jpg or .hdr)", path);
         return -1;
     }
     if (img == NULL || img->rgba == NULL || img->width <= 0 || img->height <= 0 ||
@@ -132,7 +144,8 @@ int image_write(const char *path, const Image *img, const ImageWriteOptions *opt
 }
 
 /* Which codec reads this file: by its first bytes, falling back to the
- * extension for files too short to tell. */
+ * extension for files too short to tell and for Targa (which has no
+ * signature at its start). */
 static ImageFormat sniff(int fd, const char *path)
 {
     unsigned char m[8];
@@ -144,7 +157,14 @@ static ImageFormat sniff(int fd, const char *path)
         return IMAGE_FORMAT_PNG;
     if (n >= 2 && m[0] == 'P' && (m[1] == '3' || m[1] == '6' || m[1] == '2' || m[1] == '5'))
         return IMAGE_FORMAT_PPM;
-    return n >= 8 ? IMAGE_FORMAT_UNKNOWN : image_format_from_path(path);
+    if (n >= 3 && m[0] == 0xff && m[1] == 0xd8 && m[2] == 0xff)
+        return IMAGE_FORMAT_JPEG;
+    if (n >= 2 && m[0] == 'B' && m[1] == 'M')
+        return IMAGE_FORMAT_BMP;
+    if (n >= 2 && m[0] == '#' && m[1] == '?')
+        return IMAGE_FORMAT_HDR;
+    ImageFormat by_name = image_format_from_path(path);
+    return n < 8 || by_name == IMAGE_FORMAT_TGA ? by_name : IMAGE_FORMAT_UNKNOWN;
 }
 
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen)
@@ -179,21 +199,25 @@ int image_read(const char *path, Image *img, double display_gamma, char *err, in
     if (fmt == IMAGE_FORMAT_EXR) {
         rc = image_exr_read(fd, img, why, (int)sizeof why);
         close(fd);
-    } else if (fmt == IMAGE_FORMAT_PNG || fmt == IMAGE_FORMAT_PPM) {
+    } else if (fmt != IMAGE_FORMAT_UNKNOWN) {
         FILE *fp = fdopen(fd, "rb");
         if (fp == NULL) {
             image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(errno));
             close(fd);
             return -1;
         }
-        if (fmt == IMAGE_FORMAT_PNG)
-            rc = image_png_read(fp, img, display_gamma, why, (int)sizeof why);
-        else
-            rc = image_ppm_read(fp, img, display_gamma, why, (int)sizeof why);
+        switch (fmt) {
+        case IMAGE_FORMAT_PNG: rc = image_png_read(fp, img, display_gamma, why, (int)sizeof why); break;
+        case IMAGE_FORMAT_TGA: rc = image_tga_read(fp, img, display_gamma, why, (int)sizeof why); break;
+        case IMAGE_FORMAT_BMP: rc = image_bmp_read(fp, img, display_gamma, why, (int)sizeof why); break;
+        case IMAGE_FORMAT_JPEG: rc = image_jpeg_read(fp, img, display_gamma, why, (int)sizeof why); break;
+        case IMAGE_FORMAT_HDR: rc = image_hdr_read(fp, img, why, (int)sizeof why); break;
+        default: rc = image_ppm_read(fp, img, display_gamma, why, (int)sizeof why); break;
+        }
         fclose(fp);
     } else {
         close(fd);
-        snprintf(why, sizeof why, "not an EXR, PNG or PPM file");
+        snprintf(why, sizeof why, "not an EXR, PNG, PPM, Targa, BMP, JPEG or HDR file");
         rc = -1;
     }
     if (rc != 0) {

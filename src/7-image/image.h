@@ -1,12 +1,16 @@
 /* Image files: the buffers of image_buffer.h written to and read from
- * OpenEXR (through its C API), PNG and PPM files. */
+ * OpenEXR (through its C API), PNG, PPM, Targa, BMP, JPEG and Radiance HDR
+ * files: the types POV-Ray 3.7 writes. */
 #ifndef HST_IMAGE_H
 #define HST_IMAGE_H
 
 #include "colour.h"
 #include "image_buffer.h"
 
-typedef enum { IMAGE_FORMAT_UNKNOWN, IMAGE_FORMAT_EXR, IMAGE_FORMAT_PNG, IMAGE_FORMAT_PPM } ImageFormat;
+typedef enum {
+    IMAGE_FORMAT_UNKNOWN, IMAGE_FORMAT_EXR, IMAGE_FORMAT_PNG, IMAGE_FORMAT_PPM,
+    IMAGE_FORMAT_TGA, IMAGE_FORMAT_BMP, IMAGE_FORMAT_JPEG, IMAGE_FORMAT_HDR
+} ImageFormat;
 
 /* EXR compression; the zero default is ZIP (16 scanlines a block), what
  * POV-Ray 3.7 writes. */
@@ -28,8 +32,12 @@ typedef struct {
 typedef struct {
     int exr_float;      /* 1: 32-bit float channels; 0: half (default) */
     int png_16bit;      /* 1: 16-bit PNG; 0: 8-bit (default) */
-    int write_alpha;    /* include alpha in PNG (EXR always has RGBA) */
-    /* Display encoding for PNG/PPM, as POV-Ray 3.7 does: 0 means sRGB, any
+    int write_alpha;    /* include alpha in PNG, Targa and BMP (EXR always has
+                         * RGBA; PPM, JPEG and HDR have none) */
+    int tga_rle;        /* Targa: 1 run-length encoded (+FC), 0 plain (+FT) */
+    int jpeg_quality;   /* JPEG: 2..100; 0 or 1 mean POV-Ray's default 85 */
+    const char *software; /* named in the Targa, JPEG and HDR headers; NULL: "hstrace" */
+    /* Display encoding for the integer types (all but EXR and HDR), as POV-Ray 3.7 does: 0 means sRGB, any
      * other value a power-law gamma (file_gamma). */
     double display_gamma;
     /* OpenColorIO's display/view transform for PNG and PPM, replacing the
@@ -63,8 +71,9 @@ ImageFormat image_format_from_path(const char *path);
  * success, or -1 with a message in err. */
 int image_write(const char *path, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
 
-/* Read an EXR, PNG or PPM into linear RGBA (PNG/PPM are decoded from sRGB, or
- * the gamma given, back to linear). Returns 0, or -1 with a message. */
+/* Read an EXR, PNG, PPM, Targa, BMP, JPEG or HDR file into linear RGBA (the
+ * integer types are decoded from sRGB, or the gamma given, back to linear;
+ * EXR and HDR are linear already). Returns 0, or -1 with a message. */
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen);
 
 /* Reads the named channels of a scanline EXR (part 0) as float planes of

@@ -72,12 +72,16 @@ void image_set_error(char *err, int errlen, const char *fmt, ...) HST_PRINTF(3, 
 
 /* ---- codecs --------------------------------------------------------------
  * Writers get the open descriptor of the temporary file (the EXR writer) or
- * a FILE wrapping it (PNG, PPM; the caller closes it), and report errors as
+ * a FILE wrapping it (the others; the caller closes it), and report errors as
  * a bare reason ("disk full"); image_write adds "cannot write 'path': ".
  * Readers fill a fresh Image and report the bare reason likewise. */
 int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
 int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
 int image_ppm_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+int image_tga_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+int image_bmp_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+int image_jpeg_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
+int image_hdr_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen);
 
 int image_exr_read(int fd, Image *img, char *err, int errlen);
 /* Named channels as float planes: 0, 1 when one is missing, -1 on error. */
@@ -85,5 +89,9 @@ int image_exr_read_planes(int fd, const char *const *names, int n, float **plane
                           char *err, int errlen);
 int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
 int image_ppm_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
+int image_tga_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
+int image_bmp_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
+int image_jpeg_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
+int image_hdr_read(FILE *fp, Image *img, char *err, int errlen);
 
 #endif

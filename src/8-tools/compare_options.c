@@ -22,9 +22,10 @@ void compare_options_usage(FILE *f)
     fprintf(f,
             "usage: hstrace compare A B [options]\n"
             "\n"
-            "Compares two images of the same size (EXR, PNG or PPM) in linear RGB: RMSE, PSNR,\n"
-            "the largest channel error and where, and the share of pixels off by more than a\n"
-            "threshold. With --mask-a and --mask-b, also the shadow masks of two renderers.\n"
+            "Compares two images of the same size (EXR, PNG, PPM, Targa, BMP, JPEG or HDR) in\n"
+            "linear RGB: RMSE, PSNR, the largest channel error and where, and the share of\n"
+            "pixels off by more than a threshold. With --mask-a and --mask-b, also the shadow\n"
+            "masks of two renderers.\n"
             "\n"
             "      --threshold T      a pixel is off when a channel differs by more (default %g);\n"
             "                         also the shadow-loss tolerance of the mask comparison\n"
@@ -33,7 +34,7 @@ void compare_options_usage(FILE *f)
             "                         B's mask comes from B's shadow channels (hstrace --aov shadow)\n"
             "      --allow-a-leaks    count interior disagreements where A lets more light through\n"
             "                         than B apart, as A's leaks, not as errors\n"
-            "      --diff FILE        write a heat map of |A - B| (.exr, .png or .ppm)\n"
+            "      --diff FILE        write a heat map of |A - B| (.exr, .png, .ppm, .tga, .bmp, .jpg, .hdr)\n"
             "      --mask-map FILE    write the shadow-mask verdicts as an image\n"
             "      --json             print the figures as JSON\n"
             "      --help             show this help\n"
@@ -66,7 +67,7 @@ static int check_image_name(const char *option, const char *path, char *err, int
 {
     if (image_format_from_path(path) != IMAGE_FORMAT_UNKNOWN)
         return 0;
-    snprintf(err, (size_t)errlen, "%s '%s': unknown image format (use .exr, .png or .ppm)", option, path);
+    snprintf(err, (size_t)errlen, "%s '%s': unknown image format (use .exr, .png, .ppm, .tga, .bmp, .jpg or .hdr)", option, path);
     return -1;
 }
 

@@ -88,7 +88,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     memset(&prov, 0, sizeof prov);
 
     if (image_format_from_path(output) == IMAGE_FORMAT_UNKNOWN) {
-        fprintf(stderr, "hstrace: '%s': unknown image format (use .exr, .png or .ppm)\n", output);
+        fprintf(stderr, "hstrace: '%s': unknown image format (use .exr, .png, .ppm, .tga, .bmp, .jpg or .hdr)\n", output);
         status = EXIT_USAGE;
         goto done;
     }
@@ -108,7 +108,8 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         if (cs == COLOUR_ERR_UNAVAILABLE && from_env_only) {
             /* $OCIO is set for every program of a user; one built without
              * the library goes on as if it were not. */
-            fprintf(stderr, "hstrace: warning: $OCIO ignored: %s\n", err);
+            if (o->warning_console)
+                fprintf(stderr, "hstrace: warning: $OCIO ignored: %s\n", err);
         } else if (cs != COLOUR_OK) {
             fprintf(stderr, "hstrace: %s\n", err);
             status = cs == COLOUR_ERR_CONFIG ? EXIT_IO : EXIT_USAGE;
@@ -136,6 +137,8 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     popt.image_width = o->width;
     popt.image_height = o->height;
     popt.strict = o->strict;
+    popt.quiet_debug = !o->debug_console;
+    popt.quiet_warnings = !o->warning_console;
     popt.max_memory = o->max_memory;
     popt.max_parse_seconds = o->max_parse_seconds;
     popt.max_loop_iterations = o->max_loop_iterations;
@@ -177,7 +180,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     report.napproximations = scene->napproximations;
     report.approximations = scene->approximations;
     /* Like POV-Ray's warnings: the image is not what POV-Ray would make. */
-    for (int i = 0; i < scene->napproximations; i++) {
+    for (int i = 0; o->warning_console && i < scene->napproximations; i++) {
         const SceneApproximation *a = &scene->approximations[i];
         fprintf(stderr, "%s:%d:%d: warning: %s approximated: %s (%d place%s; --strict refuses it)\n", a->first.file,
                 a->first.line, a->first.column, a->what, approx_kind_effect(a->kind), a->count,
@@ -192,6 +195,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         status = EXIT_IO;
         goto done;
     }
+    world.alpha_background = o->output_alpha;
     /* The grid box holds the camera (depth counts start there) and the part
      * of every infinite plane under the geometry, where shadows fall. */
     Vec3 extra[1 + 8 * 16];
@@ -289,7 +293,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     report.nth = ropt.nth;
     report.nth_mode = o->nth == NTH_PER_POINT ? "per-point" : o->nth == NTH_AUTO ? "auto (C_ray / (C_s + C_g))" : "fixed";
     report.verify = o->verify_shadows;
-    ropt.progress = isatty(STDERR_FILENO);
+    ropt.progress = o->render_console && isatty(STDERR_FILENO);
     report.threads = ropt.threads;
 
     if (o->aov) {
@@ -313,6 +317,10 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     memset(&wopt, 0, sizeof wopt);
     wopt.exr_float = o->exr_float;
     wopt.png_16bit = o->png16;
+    wopt.write_alpha = o->output_alpha;
+    wopt.tga_rle = o->output_type == 'C';
+    wopt.jpeg_quality = o->jpeg_quality;
+    wopt.software = "hstrace " PACKAGE_VERSION;
     wopt.display_gamma = 0.0; /* sRGB, as POV-Ray 3.7 writes assumed_gamma 1 scenes */
     wopt.display = colour;    /* or OpenColorIO's display/view transform */
     if (colour != NULL) {
@@ -339,7 +347,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     report.output_seconds = clock_wall() - t;
     image_free(&img);
     report.wall_seconds = clock_wall() - wall0;
-    if (status == EXIT_OK && o->stats) {
+    if (status == EXIT_OK && o->stats && o->statistics_console) {
         stats_print(stderr, &report);
         if (colour != NULL)
             fprintf(stderr, "colour: %s, config '%s', display '%s', view '%s', working space '%s'\n",
@@ -397,6 +405,8 @@ int main(int argc, char **argv)
 
     if (opt.display_asked)
         fprintf(stderr, "hstrace: note: +D: hstrace has no display window; the image goes to its file only\n");
+    if (opt.pause_asked)
+        fprintf(stderr, "hstrace: note: +P: hstrace has no display window to pause on; it ends when the image is written\n");
     Animation anim;
     if (animation_plan(&opt, &anim, err, sizeof err)) {
         fprintf(stderr, "hstrace: %s\n", err);

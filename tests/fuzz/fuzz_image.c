@@ -1,6 +1,7 @@
 /* libFuzzer entry points for the image readers `hstrace compare` uses:
- * compiled once per format, with FUZZ_EXR, FUZZ_PNG or FUZZ_PPM defined.
- * The input is the file's bytes: PNG and PPM are read through fmemopen,
+ * compiled once per format, with FUZZ_EXR, FUZZ_PNG, FUZZ_PPM, FUZZ_TGA,
+ * FUZZ_BMP, FUZZ_JPG or FUZZ_HDR defined. The input is the file's bytes:
+ * all but EXR are read through fmemopen,
  * EXR (read from a file descriptor, with seeks) through a memfd; the EXR
  * target also reads the analysis channels by name, as the AOV tools do.
  * Built and run by tests/fuzz/run.sh (`make fuzz`). */
@@ -46,6 +47,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
 #if defined(FUZZ_PNG)
     (void)image_png_read(fp, &img, 0.0, err, (int)sizeof err);
+#elif defined(FUZZ_TGA)
+    (void)image_tga_read(fp, &img, 0.0, err, (int)sizeof err);
+#elif defined(FUZZ_BMP)
+    (void)image_bmp_read(fp, &img, 0.0, err, (int)sizeof err);
+#elif defined(FUZZ_JPG)
+    (void)image_jpeg_read(fp, &img, 0.0, err, (int)sizeof err);
+#elif defined(FUZZ_HDR)
+    (void)image_hdr_read(fp, &img, err, (int)sizeof err);
 #else
     (void)image_ppm_read(fp, &img, 0.0, err, (int)sizeof err);
 #endif

@@ -29,7 +29,7 @@ set -u
 src=$(cd "${1:?usage: run.sh SRCDIR BUILDDIR}" && pwd)
 build=$(cd "${2:?usage: run.sh SRCDIR BUILDDIR}" && pwd)
 shift 2
-targets=${*:-scene exr png ppm}
+targets=${*:-scene exr png ppm tga bmp jpg hdr}
 seconds=${FUZZ_SECONDS:-60}
 cc=${FUZZ_CC:-clang}
 out=$build/fuzz
@@ -40,7 +40,7 @@ san="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all"
 cflags="-std=c11 -g -O1 -fno-omit-frame-pointer -ffp-contract=off -D_POSIX_C_SOURCE=200809L"
 cflags="$cflags -DHST_DATADIR=\"$src/data\" -I$build -I$src/parser -I$src/parser/description"
 for room in "$src"/src/[0-7]-*; do cflags="$cflags -I$room"; done
-pkgs="libpng OpenEXR"
+pkgs="libpng libjpeg OpenEXR"
 cflags="$cflags $(pkg-config --cflags $pkgs)"
 libs="$(pkg-config --libs $pkgs) -lm -lpthread"
 [ -f "$build/config.h" ] || { echo "fuzz: $build/config.h missing: configure first" >&2; exit 2; }
@@ -97,13 +97,13 @@ for t in $targets; do
         dict=-dict=$out/scene.dict
         max_len=16384
         ;;
-    exr | png | ppm)
+    exr | png | ppm | tga | bmp | jpg | hdr)
         fmt=$(echo "$t" | tr a-z A-Z)
         link "$t" "-DFUZZ_$fmt" "$src/tests/fuzz/fuzz_image.c"
         if [ -x "$build/hstrace" ]; then
             i=0
             for opts in "--width 5 --height 3" "--width 7 --height 4 --exr-float" "--width 3 --height 9 --png16" \
-                "--width 6 --height 5 --aov all"; do
+                "--width 6 --height 5 --aov all" "--width 9 --height 2 +UA" "--width 40 --height 3 +UA +FC"; do
                 i=$((i + 1))
                 # shellcheck disable=SC2086
                 "$build/hstrace" "$src/tests/fuzz/seeds/small.pov" $opts -o "$corpus/seed-$i.$t" >/dev/null 2>&1 || true
@@ -111,7 +111,7 @@ for t in $targets; do
         fi
         max_len=16384
         ;;
-    *) echo "fuzz: no target '$t' (scene, exr, png, ppm)" >&2; exit 2 ;;
+    *) echo "fuzz: no target '$t' (scene, exr, png, ppm, tga, bmp, jpg, hdr)" >&2; exit 2 ;;
     esac
     (cd "$out/findings-$t" && exec nice -n 19 "$out/fuzz-$t" "$corpus" $dict -max_total_time="$seconds" \
         -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=4608 -max_len=$max_len -print_final_stats=1 -artifact_prefix="$out/findings-$t/" \
