@@ -27,11 +27,7 @@ typedef struct {
     const Grid *grid;
     const RenderOptions *opt;
     Image *img;
-    int tiles_x, ntiles;
-    int tile_size;          /* TILE, or POV-Ray's anti-aliasing blocks */
-    int grid_x0, grid_y0;   /* where the grid of tiles starts: the image's corner, or (anti-aliasing) the area's */
-    int tile_x0, tile_y0;   /* the first tile's place in that grid */
-    int x0, y0, x1, y1;     /* the pixels rendered */
+    TileGrid tiles;
     atomic_int next_tile;   /* shared by the workers: the only mutable shared state */
     atomic_int done_tiles;
     atomic_long done_pixels; /* for the progress line */
@@ -114,15 +110,8 @@ static long antialiased_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int
 static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile)
 {
     const RenderOptions *opt = job->opt;
-    /* Tiles lie on the whole image's grid, cut to the area rendered: a
-     * partial render's pixels are those of the full render. */
-    int ts = job->tile_size;
-    int x0 = job->grid_x0 + (job->tile_x0 + tile % job->tiles_x) * ts;
-    int y0 = job->grid_y0 + (job->tile_y0 + tile / job->tiles_x) * ts;
-    int x1 = x0 + ts < job->x1 ? x0 + ts : job->x1;
-    int y1 = y0 + ts < job->y1 ? y0 + ts : job->y1;
-    x0 = x0 > job->x0 ? x0 : job->x0;
-    y0 = y0 > job->y0 ? y0 : job->y0;
+    int x0, y0, x1, y1;
+    render_tile_area(&job->tiles, tile, &x0, &y0, &x1, &y1);
     /* The cache method's last blockers start empty in every tile, so that
      * what it decides and counts for a pixel (the analysis channels, the
      * statistics) does not depend on which tiles this thread rendered
@@ -232,8 +221,8 @@ static void *worker_main(void *arg)
     double t0 = clock_thread_cpu();
     double last_report = 0.0;
     for (;;) {
-        int tile = atomic_fetch_add(&job->next_tile, 1);
-        if (tile >= job->ntiles)
+        int tile = opt->tiles ? opt->tiles->next(opt->tiles, wk->index) : atomic_fetch_add(&job->next_tile, 1);
+        if (tile < 0 || tile >= job->tiles.ntiles)
             break;
         /* Shadow time is sampled on the wall clock (shadow_decide.c), which
          * also counts the time the thread spent preempted on a busy
@@ -268,6 +257,36 @@ static void *worker_main(void *arg)
     return NULL;
 }
 
+void render_tile_grid(const RenderOptions *opt, TileGrid *t)
+{
+    t->x0 = opt->x0;
+    t->y0 = opt->y0;
+    t->x1 = opt->x1 > 0 ? opt->x1 : opt->width;
+    t->y1 = opt->y1 > 0 ? opt->y1 : opt->height;
+    /* POV-Ray's anti-aliasing decides by blocks of its own size, from the
+     * area's corner; the plain render's tiles lie on the image's grid. */
+    t->tile_size = opt->aa.method ? ANTIALIAS_BLOCK : TILE;
+    t->grid_x0 = opt->aa.method ? t->x0 : 0;
+    t->grid_y0 = opt->aa.method ? t->y0 : 0;
+    t->tile_x0 = (t->x0 - t->grid_x0) / t->tile_size;
+    t->tile_y0 = (t->y0 - t->grid_y0) / t->tile_size;
+    t->tiles_x = (t->x1 - 1 - t->grid_x0) / t->tile_size - t->tile_x0 + 1;
+    t->ntiles = t->tiles_x * ((t->y1 - 1 - t->grid_y0) / t->tile_size - t->tile_y0 + 1);
+}
+
+void render_tile_area(const TileGrid *t, int tile, int *x0, int *y0, int *x1, int *y1)
+{
+    /* Tiles lie on the whole image's grid, cut to the area rendered: a
+     * partial render's pixels are those of the full render. */
+    int ts = t->tile_size;
+    int ax = t->grid_x0 + (t->tile_x0 + tile % t->tiles_x) * ts;
+    int ay = t->grid_y0 + (t->tile_y0 + tile / t->tiles_x) * ts;
+    *x1 = ax + ts < t->x1 ? ax + ts : t->x1;
+    *y1 = ay + ts < t->y1 ? ay + ts : t->y1;
+    *x0 = ax > t->x0 ? ax : t->x0;
+    *y0 = ay > t->y0 ? ay : t->y0;
+}
+
 int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image *img, RenderStats *stats)
 {
     memset(stats, 0, sizeof *stats);
@@ -279,23 +298,11 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
     job.grid = g;
     job.opt = opt;
     job.img = img;
-    job.x0 = opt->x0;
-    job.y0 = opt->y0;
-    job.x1 = opt->x1 > 0 ? opt->x1 : opt->width;
-    job.y1 = opt->y1 > 0 ? opt->y1 : opt->height;
-    /* POV-Ray's anti-aliasing decides by blocks of its own size, from the
-     * area's corner; the plain render's tiles lie on the image's grid. */
-    job.tile_size = opt->aa.method ? ANTIALIAS_BLOCK : TILE;
-    job.grid_x0 = opt->aa.method ? job.x0 : 0;
-    job.grid_y0 = opt->aa.method ? job.y0 : 0;
-    job.tile_x0 = (job.x0 - job.grid_x0) / job.tile_size;
-    job.tile_y0 = (job.y0 - job.grid_y0) / job.tile_size;
-    job.tiles_x = (job.x1 - 1 - job.grid_x0) / job.tile_size - job.tile_x0 + 1;
-    job.ntiles = job.tiles_x * ((job.y1 - 1 - job.grid_y0) / job.tile_size - job.tile_y0 + 1);
+    render_tile_grid(opt, &job.tiles);
     atomic_init(&job.next_tile, 0);
     atomic_init(&job.done_tiles, 0);
     atomic_init(&job.done_pixels, 0);
-    job.total_pixels = (long)(job.x1 - job.x0) * (job.y1 - job.y0);
+    job.total_pixels = (long)(job.tiles.x1 - job.tiles.x0) * (job.tiles.y1 - job.tiles.y0);
     atomic_init(&job.failed, 0);
     job.start = clock_wall();
 
@@ -327,7 +334,9 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
         fputs("\r\033[K", stderr); /* the line erased: the terminal as it was */
     free(workers);
     free(tids);
-    if (atomic_load(&job.failed) || atomic_load(&job.next_tile) < job.ntiles) {
+    /* Without a tile source, every tile must have been taken; a source
+     * keeps its own account of what was handed out. */
+    if (atomic_load(&job.failed) || (!opt->tiles && atomic_load(&job.next_tile) < job.tiles.ntiles)) {
         image_free(img);
         return -1;
     }

@@ -11,6 +11,15 @@
 #include "stats.h"
 #include "world.h"
 
+/* Where a render's tiles come from: by default the process's own counter;
+ * a distributed render (mpi_job.h) hands them out across processes. next
+ * is called from the render's threads at once (worker: the thread's index)
+ * and returns a tile number below the grid's count, or -1 when none is left
+ * for this process; it must be safe to call from several threads. */
+typedef struct TileSource {
+    int (*next)(struct TileSource *src, int worker);
+} TileSource;
+
 typedef struct {
     int width, height;
     /* The pixels rendered, [x0, x1) x [y0, y1) (a partial render); the rest
@@ -29,12 +38,27 @@ typedef struct {
     int pixel_coherence;      /* hst: count from the neighbouring pixel's hit */
     int progress;             /* print a progress line on stderr */
     struct AovImage *aov;     /* --aov: the analysis channels to fill, or NULL */
+    TileSource *tiles;        /* NULL: every tile, in this process */
 } RenderOptions;
+
+/* The tiles a render is cut into: on the whole image's grid (POV-Ray's
+ * anti-aliasing blocks from the area's corner), cut to the area rendered. */
+typedef struct {
+    int tile_size, tiles_x, ntiles;
+    int grid_x0, grid_y0;   /* where the grid of tiles starts */
+    int tile_x0, tile_y0;   /* the first tile's place in that grid */
+    int x0, y0, x1, y1;     /* the pixels rendered */
+} TileGrid;
+
+void render_tile_grid(const RenderOptions *opt, TileGrid *t);
+/* Tile `tile`'s pixels, [x0, x1) x [y0, y1). */
+void render_tile_area(const TileGrid *t, int tile, int *x0, int *y0, int *x1, int *y1);
 
 /* The thread count when none is given: the online cores (1 to 1024). */
 int render_default_threads(void);
 
-/* Renders into img (allocated here). Returns 0, or -1 when out of memory. */
+/* Renders into img (allocated here; with a tile source, only the tiles it
+ * gave this process, the rest 0). Returns 0, or -1 when out of memory. */
 int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image *img, RenderStats *stats);
 
 #endif

@@ -97,6 +97,13 @@ void stats_print(FILE *f, const StatsReport *r)
     }
     fprintf(f, "  grid        %dx%dx%d cells, %llu registrations\n", r->grid[0], r->grid[1], r->grid[2],
             (unsigned long long)r->grid_registrations);
+    if (r->ranks > 1 && r->rank_render) {
+        /* A distributed render: the counters below are all ranks' */
+        fprintf(f, "  ranks       %d, each threads %d; pixels per rank", r->ranks, r->threads);
+        for (int i = 0; i < r->ranks; i++)
+            fprintf(f, " %llu", (unsigned long long)r->rank_render[i].pixels);
+        fprintf(f, "\n");
+    }
     fprintf(f, "  time (s)    parse %.3f  preprocessing %.3f  shadow testing %.3f  others %.3f  total %.3f  (wall %.3f)\n",
             r->parse_seconds, r->preprocess_seconds, s->shadow.shadow_seconds, others, total, r->wall_seconds);
     fprintf(f, "              shadow testing and others are CPU time summed over threads\n");
@@ -223,6 +230,20 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
     fprintf(f, "%s],\n", r->napproximations ? "\n  " : "");
     fprintf(f, "  \"grid\": [%d, %d, %d],\n  \"grid_registrations\": %llu,\n", r->grid[0], r->grid[1], r->grid[2],
             (unsigned long long)r->grid_registrations);
+    /* A distributed render (mpi_job.h): the figures below are all ranks'
+     * together, the wall time the whole job's; each rank's own here. */
+    fprintf(f, "  \"ranks\": %d,\n", r->ranks > 1 ? r->ranks : 1);
+    if (r->ranks > 1 && r->rank_render) {
+        fprintf(f, "  \"per_rank\": [");
+        for (int i = 0; i < r->ranks; i++) {
+            const RenderStats *p = &r->rank_render[i];
+            fprintf(f, "%s\n    {\"rank\": %d, \"pixels\": %llu, \"camera_rays\": %llu, \"shadow_queries\": %llu, "
+                       "\"render_cpu_seconds\": %.6f, \"shadow_seconds\": %.6f}",
+                    i ? "," : "", i, (unsigned long long)p->pixels, (unsigned long long)p->camera_rays,
+                    (unsigned long long)p->shadow.shadow_queries, p->render_seconds, p->shadow.shadow_seconds);
+        }
+        fprintf(f, "\n  ],\n");
+    }
     fprintf(f, "  \"time\": {\"parse\": %.6f, \"preprocessing\": %.6f, \"shadow_testing\": %.6f, \"others\": %.6f, "
                "\"total\": %.6f, \"wall\": %.6f},\n",
             r->parse_seconds, r->preprocess_seconds, s->shadow.shadow_seconds, others,

@@ -41,7 +41,11 @@ typedef struct {
     double nth;                       /* N_th used (negative: per point) */
     const char *nth_mode;
     int verify;
-    RenderStats render;
+    RenderStats render;           /* all ranks' together */
+    /* A render spread over an MPI job's ranks (mpi_job.h): their number
+     * and each one's counters (NULL: one process). */
+    int ranks;
+    const RenderStats *rank_render;
 } StatsReport;
 
 void stats_print(FILE *f, const StatsReport *r);

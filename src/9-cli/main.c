@@ -27,6 +27,7 @@
 #include "stats.h"
 #include "volume_plan.h"
 #include "animation.h"
+#include "mpi_job.h"
 #include "vs_povray.h"
 #include "world.h"
 
@@ -57,10 +58,61 @@ static char *default_output(const char *scene, const char *ext)
     return out;
 }
 
+/* What rank 0's volume plan chose, for the other ranks of a distributed
+ * render: the plan's choices rest on timings, which differ between ranks,
+ * and every rank must decide (and count, for the analysis channels) alike. */
+typedef struct {
+    int have_volumes;
+    double nth;
+    CostModel cost;
+} VolumeChoice;
+
+/* Rank 0 sends, the others rebuild: the lights built, then the same ones
+ * dropped, with the same planes, cost model and N_th. Returns 0, or -1 when
+ * out of memory (on this rank). */
+static int share_volume_choices(ShadowVolumes *sv, CostModel *cost, double *nth, int *have_volumes, const World *w,
+                                const Grid *g, const Vec3 *eye, int threads, int precision)
+{
+    VolumeChoice c;
+    memset(&c, 0, sizeof c);
+    int n = w->nlights;
+    int8_t *flags = calloc((size_t)(2 * n + 1), 1); /* per light: built, then dropped */
+    if (!flags)
+        return -1;
+    if (mpi_job_rank() == 0) {
+        c.have_volumes = *have_volumes;
+        c.nth = *nth;
+        c.cost = *cost;
+        for (int li = 0; *have_volumes && li < n; li++) {
+            flags[li] = !sv->light[li].not_wanted;
+            flags[n + li] = (int8_t)sv->light[li].dropped;
+        }
+    }
+    mpi_job_broadcast(&c, sizeof c);
+    mpi_job_broadcast(flags, (size_t)(2 * n));
+    int status = 0;
+    if (mpi_job_rank() != 0) {
+        *have_volumes = c.have_volumes;
+        *nth = c.nth;
+        *cost = c.cost;
+        if (c.have_volumes) {
+            status = shadow_volumes_build(sv, w, g, eye, threads, flags) ||
+                     shadow_volumes_set_precision(sv, (PlanePrecision)precision);
+            for (int li = 0; status == 0 && li < n; li++)
+                if (flags[n + li])
+                    shadow_volumes_drop_light(sv, li);
+        }
+    }
+    free(flags);
+    return status ? -1 : 0;
+}
+
 /* One frame (or the still): parse, build, render and write `output`. wall0:
- * when the frame's work began. Returns the exit status. */
+ * when the frame's work began. distributed: the frame's tiles are spread
+ * over the MPI job's ranks (mpi_job.h), rank 0 writing. Returns the exit
+ * status. */
 static int render_frame(int argc, char **argv, const Options *o, const ParseAnimation *anim, const char *output,
-                        const char *stats_json, double wall0)
+                        const char *stats_json, double wall0, int distributed)
 {
     /* Everything the render owns, released once at the end (every release
      * is safe on what was never made). */
@@ -78,6 +130,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     CostModel cost;
     AovImage aov;
     Provenance prov;
+    RenderStats *per_rank = NULL;
     memset(&world, 0, sizeof world);
     memset(&grid, 0, sizeof grid);
     memset(&bvh, 0, sizeof bvh);
@@ -206,7 +259,10 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         goto done;
     }
     grid_set_tolerance(&grid, o->tolerance);
+    /* Each rank takes its share of this machine's cores. */
     int threads = o->threads > 0 ? o->threads : render_default_threads();
+    if (o->threads <= 0 && mpi_job_size() > 1)
+        threads = threads / mpi_job_local_size() > 1 ? threads / mpi_job_local_size() : 1;
     if (bvh_build(&bvh, &world, threads)) {
         fprintf(stderr, "hstrace: out of memory while building the hierarchy\n");
         status = EXIT_IO;
@@ -216,7 +272,8 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     int have_volumes = 0;
     /* N_th as the render will use it (auto: measured with the volumes). */
     double nth = o->nth == NTH_PER_POINT ? -1.0 : o->nth == NTH_AUTO ? 0.0 : o->nth;
-    if (method->uses_volumes && o->quality >= 4) {
+    const Vec3 *plan_eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
+    if (method->uses_volumes && o->quality >= 4 && (!distributed || mpi_job_rank() == 0)) {
         /* hst builds only the volumes that pay (volume_plan.h); the pure
          * volume method is the paper's baseline and builds them all. */
         VolumePlanOptions po;
@@ -226,8 +283,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         po.threads = threads;
         po.precision = o->plane_precision;
         po.nth = o->nth == NTH_PER_POINT ? VOLUME_PLAN_NTH_PER_POINT : o->nth == NTH_AUTO ? VOLUME_PLAN_NTH_AUTO : o->nth;
-        const Vec3 *eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
-        if (volume_plan_build(&plan, &volumes, &cost, &world, &grid, &bvh, eye, &po)) {
+        if (volume_plan_build(&plan, &volumes, &cost, &world, &grid, &bvh, plan_eye, &po)) {
             fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
             status = EXIT_IO;
             goto done;
@@ -240,6 +296,19 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
             report.cost = &cost;
             if (o->nth == NTH_AUTO)
                 nth = cost.nth_ray;
+        }
+    }
+    if (distributed && method->uses_volumes && o->quality >= 4) {
+        if (share_volume_choices(&volumes, &cost, &nth, &have_volumes, &world, &grid, plan_eye, threads,
+                                 o->plane_precision)) {
+            fprintf(stderr, "hstrace: rank %d: out of memory while building shadow volumes\n", mpi_job_rank());
+            mpi_job_abort(EXIT_IO);
+            status = EXIT_IO;
+            goto done;
+        }
+        if (have_volumes) {
+            report.volumes = &volumes;
+            report.cost = &cost;
         }
     }
     if (method->test == shadow_embree_test && o->quality >= 4) {
@@ -293,7 +362,8 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     report.nth = ropt.nth;
     report.nth_mode = o->nth == NTH_PER_POINT ? "per-point" : o->nth == NTH_AUTO ? "auto (C_ray / (C_s + C_g))" : "fixed";
     report.verify = o->verify_shadows;
-    ropt.progress = o->render_console && isatty(STDERR_FILENO);
+    /* A distributed render's progress is no one rank's to tell. */
+    ropt.progress = o->render_console && isatty(STDERR_FILENO) && !distributed;
     report.threads = ropt.threads;
 
     if (o->aov) {
@@ -306,7 +376,33 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     }
 
     Image img;
-    if (render_image(&world, &grid, &ropt, &img, &report.render)) {
+    if (distributed) {
+        /* Tiles from rank 0, the pixels and counters back to it. */
+        MpiTiles tiles;
+        TileGrid tg;
+        render_tile_grid(&ropt, &tg);
+        per_rank = mpi_job_rank() == 0 ? calloc((size_t)mpi_job_size(), sizeof *per_rank) : NULL;
+        if (mpi_tiles_begin(&tiles, &tg)) {
+            fprintf(stderr, "hstrace: out of memory for the tiles of a distributed render\n");
+            status = EXIT_IO;
+            goto done;
+        }
+        ropt.tiles = &tiles.source;
+        int rc = render_image(&world, &grid, &ropt, &img, &report.render);
+        if (mpi_tiles_end(&tiles, &tg, rc, &img, o->aov ? &aov : NULL, &report.render, per_rank)) {
+            fprintf(stderr, "hstrace: a rank ran out of memory while rendering\n");
+            if (rc == 0)
+                image_free(&img);
+            status = EXIT_IO;
+            goto done;
+        }
+        report.ranks = mpi_job_size();
+        report.rank_render = per_rank;
+        if (mpi_job_rank() != 0) { /* rank 0 writes the image and the report */
+            image_free(&img);
+            goto done;
+        }
+    } else if (render_image(&world, &grid, &ropt, &img, &report.render)) {
         fprintf(stderr, "hstrace: out of memory while rendering\n");
         status = EXIT_IO;
         goto done;
@@ -362,6 +458,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     }
 
 done:
+    free(per_rank);
     provenance_free(&prov);
     aov_image_free(&aov);
     shadow_volumes_free(&volumes);
@@ -376,6 +473,8 @@ done:
     return status;
 }
 
+static int main_rank(int argc, char **argv, double wall0);
+
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "compare") == 0)
@@ -383,6 +482,21 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "vs-povray") == 0)
         return vs_povray_main(argc - 1, argv + 1, argv[0]);
     double wall0 = clock_wall();
+    char err[1024];
+    /* Under mpirun: one rank of a job (mpi_job.h); before any thread. */
+    if (mpi_job_init(&argc, &argv, err, sizeof err)) {
+        fprintf(stderr, "hstrace: %s\n", err);
+        mpi_job_finalize();
+        return EXIT_USAGE;
+    }
+    int status = main_rank(argc, argv, wall0);
+    mpi_job_finalize();
+    return status;
+}
+
+/* main's work, between MPI's start and end. */
+static int main_rank(int argc, char **argv, double wall0)
+{
     Options opt;
     char err[1024];
     if (options_parse(argc, argv, &opt, err, sizeof err)) {
@@ -413,14 +527,28 @@ int main(int argc, char **argv)
         options_free(&opt);
         return EXIT_USAGE;
     }
+    /* Across ranks: an animation of at least as many frames as ranks by
+     * frames (each rank its own, every size-th from its rank), else each
+     * frame by tiles, where only rank 0 speaks (the others would repeat
+     * its messages; a rank that fails alone ends the job, named by
+     * mpirun). */
+    const int ranks = mpi_job_size(), rank = mpi_job_rank();
+    const int by_frames = ranks > 1 && anim.animated && anim.last - anim.first + 1 >= ranks;
+    const int distributed = ranks > 1 && !by_frames;
+    if (distributed && rank != 0 && !freopen("/dev/null", "w", stderr))
+        return EXIT_IO;
     char *default_name = opt.output ? NULL : default_output(opt.scene, options_output_extension(&opt));
     const char *output = opt.output ? opt.output : default_name;
     int status = output ? EXIT_OK : EXIT_IO;
+    if (ranks > 1 && rank == 0 && opt.stats)
+        fprintf(stderr, "hstrace: %d ranks, %s\n", ranks, by_frames ? "the frames spread over them" : "the tiles of each frame spread over them");
     if (!output)
         fprintf(stderr, "hstrace: out of memory\n");
     /* Each frame is parsed, built and rendered anew, as POV-Ray does, and
      * written to its own numbered file; the first that fails ends the run. */
     for (int frame = anim.first; status == EXIT_OK && frame <= anim.last; frame++) {
+        if (by_frames && (frame - anim.first) % ranks != rank)
+            continue;
         /* The values as POV-Ray 3.7 hands them to the scene (animation.h). */
         ParseAnimation pa = { animation_clock(&anim, frame), pov_declared_value(anim.clock_delta),
                               pov_declared_value(anim.initial_clock), pov_declared_value(anim.final_clock),
@@ -437,7 +565,7 @@ int main(int argc, char **argv)
                 fprintf(stderr, "hstrace: frame %d (%d of %d), clock %g: %s\n", frame, frame - anim.first + 1,
                         anim.last - anim.first + 1, pa.clock, name);
             status = render_frame(argc, argv, &opt, anim.animated ? &pa : &still, name ? name : output,
-                                  json ? json : opt.stats_json, frame == anim.first ? wall0 : clock_wall());
+                                  json ? json : opt.stats_json, frame == anim.first ? wall0 : clock_wall(), distributed);
         }
         free(name);
         free(json);
