@@ -325,7 +325,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     wopt.nchannels = aov.nchannels;
     report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */
     if (image_format_from_path(output) == IMAGE_FORMAT_EXR) {
-        if (provenance_build(&prov, argc, argv, o, &report)) {
+        if (provenance_build(&prov, argc, argv, o, anim, &report)) {
             fprintf(stderr, "hstrace: out of memory\n");
             status = EXIT_IO;
         }
