@@ -1,6 +1,7 @@
 /* hstrace: scene file -> description -> polygons and grid -> rays -> image;
  * `hstrace compare` compares images (compare.h); `hstrace vs-povray` renders
- * a scene with POV-Ray and every shadow method and compares (vs_povray.h). */
+ * a scene with POV-Ray and every shadow method and compares (vs_povray.h);
+ * `hstrace stitch` joins partial renders into the whole image (stitch.h). */
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,6 +26,7 @@
 #include "shadow_embree.h"
 #include "shadow_volumes.h"
 #include "stats.h"
+#include "stitch.h"
 #include "volume_plan.h"
 #include "animation.h"
 #include "vs_povray.h"
@@ -374,6 +376,8 @@ int main(int argc, char **argv)
         return compare_main(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "vs-povray") == 0)
         return vs_povray_main(argc - 1, argv + 1, argv[0]);
+    if (argc > 1 && strcmp(argv[1], "stitch") == 0)
+        return stitch_main(argc - 1, argv + 1, argv[0]);
     double wall0 = clock_wall();
     Options opt;
     char err[1024];
