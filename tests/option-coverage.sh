@@ -2,10 +2,11 @@
 # Every documented option has a test that would notice it broken, in TAP.
 #
 # The options are read from where a user reads them: the option tables and
-# the POV-Ray switches of `hstrace --help`, `hstrace compare --help` and
+# the POV-Ray switches of `hstrace --help`, `hstrace compare --help`,
 # `hstrace vs-povray --help` (with vs-povray's paragraph on the render
-# options it passes on or refuses), and the same parts of man/hstrace.1
-# (SYNOPSIS, OPTIONS and its POV-Ray switches, COMPARE, VS-POVRAY). For each
+# options it passes on or refuses) and `hstrace stitch --help`, and the same
+# parts of man/hstrace.1 (SYNOPSIS, OPTIONS and its POV-Ray switches,
+# COMPARE, VS-POVRAY, STITCH). For each
 # option, per command:
 #   - it is in both --help and the man page (a disagreement is a failure,
 #     or a TODO while tests/options.map records it with `help-lacks:` or
@@ -88,7 +89,7 @@ help_options() {
 }
 
 # man_options FILE: "CMD OPTION" for each option the man page FILE documents: the tags
-# of .TP entries in OPTIONS (hstrace), COMPARE and VS-POVRAY, every switch in
+# of .TP entries in OPTIONS (hstrace), COMPARE, VS-POVRAY and STITCH, every switch in
 # SYNOPSIS and "POV-Ray switches", and vs-povray's render-option paragraph.
 man_options() {
     awk "$awk_tokens"'
@@ -104,12 +105,14 @@ man_options() {
         sec == "SYNOPSIS" {
             if (line ~ /^hstrace compare/) cmd = "compare"
             else if (line ~ /^hstrace vs-povray/) cmd = "vs-povray"
+            else if (line ~ /^hstrace stitch/) cmd = "stitch"
             else all_tokens(line)
             next
         }
         sec == "OPTIONS" && sub_ == "POV-Ray switches" { cmd = "hstrace"; all_tokens(line); next }
         sec == "OPTIONS" && tag { cmd = "hstrace"; all_tokens(line); next }
         sec == "COMPARE" && tag { cmd = "compare"; all_tokens(line); next }
+        sec == "STITCH" && tag { cmd = "stitch"; all_tokens(line); next }
         sec == "VS-POVRAY" {
             cmd = "vs-povray"
             if (line ~ /^Render options are those of/) para = 1
@@ -118,7 +121,7 @@ man_options() {
 }
 
 : >"$work/help"
-for c in hstrace compare vs-povray; do help_options "$c" >>"$work/help"; done
+for c in hstrace compare vs-povray stitch; do help_options "$c" >>"$work/help"; done
 man_options "$man" >"$work/man"
 # The union, in the order of first appearance (help first), without repeats.
 cat "$work/help" "$work/man" | awk '!seen[$0]++' >"$work/all"
@@ -133,7 +136,7 @@ has() { grep -qx -- "$1" "$2"; }
 both() { has "$1" "$work/help" && has "$1" "$work/man"; }
 anchors() {
     for o in "hstrace -o" "hstrace --grid" "hstrace +WT" "hstrace +L" "compare --mask-a" "compare --max-interior" \
-             "vs-povray --include-path" "vs-povray +L"; do
+             "vs-povray --include-path" "vs-povray +L" "stitch -o"; do
         both "$o" || { echo "# $o not found in both"; return 1; }
     done
 }
@@ -192,7 +195,7 @@ check "--help: $(count hstrace "$work/help") hstrace, $(count compare "$work/hel
     at_least "$work/help" 30 14 10
 check "man page: $(count hstrace "$work/man") hstrace, $(count compare "$work/man") compare and $(count vs-povray "$work/man") vs-povray options found" \
     at_least "$work/man" 30 14 10
-check "both read options with values, alternatives, POV-Ray switches and vs-povray's render options (hstrace -o, --grid, +WT, +L; compare --mask-a, --max-interior; vs-povray --include-path, +L)" \
+check "both read options with values, alternatives, POV-Ray switches and vs-povray's render options (hstrace -o, --grid, +WT, +L; compare --mask-a, --max-interior; vs-povray --include-path, +L; stitch -o)" \
     anchors
 
 # The map, without comments and blank lines: COMMAND OPTION REST.

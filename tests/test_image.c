@@ -1003,6 +1003,131 @@ static void test_povray(void)
     image_free(&lin);
 }
 
+/* image_read_exr_file: every channel as stored and the header's attributes,
+ * back from image_write; rows read by chunks; the header alone. */
+static void test_exr_file(void)
+{
+    const char *p = tmp_path("whole.exr");
+    char err[512];
+    Image src;
+    if (image_alloc(&src, 61, 37) != 0) {
+        tap_ok(0, "out of memory");
+        return;
+    }
+    fill_test_image(&src, 1);
+    const int w = src.width, h = src.height;
+    size_t n = (size_t)w * (size_t)h;
+    float *depth = malloc(n * sizeof(float)), *vis = malloc(n * sizeof(float));
+    uint32_t *code = malloc(n * sizeof(uint32_t));
+    for (size_t i = 0; depth && vis && code && i < n; i++) {
+        depth[i] = i % 7 == 0 ? INFINITY : (float)i * 0.37f + 1e-3f; /* no half would hold these */
+        vis[i] = (float)(i % 5) * 0.25f;                              /* halves exactly */
+        code[i] = (uint32_t)(i * 2654435761u);                         /* over float's 2^24 */
+    }
+    const ImageChannel extra[3] = { { "Z", IMAGE_CHANNEL_FLOAT, depth }, { "shadow.L1", IMAGE_CHANNEL_HALF, vis },
+                                    { "cost.rays", IMAGE_CHANNEL_UINT, code } };
+    const ImageAttribute attr[3] = { { "hstrace.options", IMAGE_ATTR_STRING, "--width 61 +SR1", 0, 0.0 },
+                                     { "hstrace.threads", IMAGE_ATTR_INT, NULL, 3, 0.0 },
+                                     { "hstrace.time.wall", IMAGE_ATTR_DOUBLE, NULL, 0, 0.125 } };
+    ImageWriteOptions opt;
+    memset(&opt, 0, sizeof opt);
+    opt.channels = extra;
+    opt.nchannels = 3;
+    opt.attributes = attr;
+    opt.nattributes = 3;
+    opt.have_chromaticities = 1;
+    for (int k = 0; k < 8; k++)
+        opt.chromaticities[k] = 0.1f * (float)(k + 1);
+    opt.exr_compression = IMAGE_EXR_PIZ;
+    tap_ok(depth && vis && code && image_write(p, &src, &opt, err, sizeof err) == 0, "EXR with channels and attributes written (%s)", err);
+
+    ImageExrFile f;
+    int rc = image_read_exr_file(p, &f, 0, h, err, sizeof err);
+    tap_ok(rc == 0 && f.width == w && f.height == h && f.nchannels == 7, "whole EXR read: %dx%d, %d channels (%s)", f.width,
+           f.height, f.nchannels, err);
+    static const char *const order[7] = { "A", "B", "G", "R", "Z", "cost.rays", "shadow.L1" };
+    static const ImageChannelType types[7] = { IMAGE_CHANNEL_HALF, IMAGE_CHANNEL_HALF, IMAGE_CHANNEL_HALF, IMAGE_CHANNEL_HALF,
+                                               IMAGE_CHANNEL_FLOAT, IMAGE_CHANNEL_UINT, IMAGE_CHANNEL_HALF };
+    int names_ok = rc == 0 && f.nchannels == 7;
+    for (int c = 0; names_ok && c < 7; c++)
+        names_ok = strcmp(f.channels[c].name, order[c]) == 0 && f.channels[c].type == types[c] && f.channels[c].data;
+    tap_ok(names_ok, "channels in the file's order, with their stored types: A B G R Z cost.rays shadow.L1");
+    int bad = 0;
+    for (size_t i = 0; names_ok && i < n; i++) {
+        const float *z = f.channels[4].data, *l = f.channels[6].data;
+        const uint32_t *u = f.channels[5].data;
+        const float *a = f.channels[0].data, *r = f.channels[3].data;
+        bad += !(same_float(z[i], depth[i]) && l[i] == vis[i] && u[i] == code[i] && near_half(r[i], src.rgba[4 * i]) &&
+                 near_half(a[i], src.rgba[4 * i + 3]));
+    }
+    tap_ok(names_ok && bad == 0, "samples as written: float and uint exact, half within half precision (%d off)", bad);
+    const ImageExrAttribute *o = rc == 0 ? image_exr_file_attribute(&f, "hstrace.options") : NULL;
+    const ImageExrAttribute *t = rc == 0 ? image_exr_file_attribute(&f, "hstrace.threads") : NULL;
+    const ImageExrAttribute *d = rc == 0 ? image_exr_file_attribute(&f, "hstrace.time.wall") : NULL;
+    const ImageExrAttribute *sw = rc == 0 ? image_exr_file_attribute(&f, "software") : NULL;
+    tap_ok(o && o->type == IMAGE_ATTR_STRING && strcmp(o->s, "--width 61 +SR1") == 0 && t && t->type == IMAGE_ATTR_INT &&
+               t->i == 3 && d && d->type == IMAGE_ATTR_DOUBLE && d->d == 0.125 && sw && strcmp(sw->s, "hstrace") == 0,
+           "string, int and double attributes read back");
+    tap_ok(rc == 0 && !image_exr_file_attribute(&f, "dataWindow") && !image_exr_file_attribute(&f, "nothing"),
+           "attributes of other types are not listed; a missing one is NULL");
+    tap_ok(rc == 0 && f.have_chromaticities && f.chromaticities[0] == 0.1f && f.chromaticities[7] == 0.8f &&
+               f.compression == IMAGE_EXR_PIZ,
+           "chromaticities and compression read back");
+
+    /* The same half samples written again from the floats read: bit for bit. */
+    Image again;
+    int again_ok = names_ok && image_alloc(&again, w, h) == 0;
+    for (size_t i = 0; again_ok && i < n; i++)
+        for (int k = 0; k < 4; k++)
+            again.rgba[4 * i + (size_t)k] = ((const float *)f.channels[3 - k].data)[i];
+    const char *p2 = tmp_path("whole2.exr");
+    opt.exr_compression = IMAGE_EXR_PIZ;
+    again_ok = again_ok && image_write(p2, &again, &opt, err, sizeof err) == 0;
+    long len1 = 0, len2 = 0;
+    unsigned char *b1 = again_ok ? slurp(p, &len1) : NULL, *b2 = again_ok ? slurp(p2, &len2) : NULL;
+    tap_ok(b1 && b2 && len1 == len2 && memcmp(b1, b2, (size_t)len1) == 0,
+           "halves read as floats and written again make the same file, byte for byte");
+    free(b1);
+    free(b2);
+    if (again_ok)
+        image_free(&again);
+    image_exr_file_free(&f);
+    tap_ok(f.channels == NULL && f.nchannels == 0 && f.attributes == NULL, "image_exr_file_free empties it");
+
+    rc = image_read_exr_file(p, &f, 0, 0, err, sizeof err);
+    tap_ok(rc == 0 && f.nchannels == 7 && f.channels[0].data == NULL && image_exr_file_attribute(&f, "hstrace.options"),
+           "y0 == y1: the header alone, no samples");
+    image_exr_file_free(&f);
+    /* ZIP's 16-row chunks: rows 20..21 come from the chunk of rows 16..31. */
+    opt.exr_compression = IMAGE_EXR_ZIP;
+    rc = image_write(p, &src, &opt, err, sizeof err) || image_read_exr_file(p, &f, 20, 22, err, sizeof err);
+    int rows_ok = rc == 0 && f.nchannels == 7;
+    const float *z = rows_ok ? f.channels[4].data : NULL;
+    for (int y = 0; rows_ok && y < h; y++)
+        rows_ok = (y >= 16 && y < 32) ? same_float(z[(size_t)y * (size_t)w + 1], depth[(size_t)y * (size_t)w + 1])
+                                      : z[(size_t)y * (size_t)w + 1] == 0.0f;
+    tap_ok(rows_ok, "rows 20-21 read as their chunk, rows 16-31; the rest 0 (%s)", err);
+    image_exr_file_free(&f);
+
+    rc = image_read_exr_file(tmp_path("none.exr"), &f, 0, 1, err, sizeof err);
+    tap_ok(rc == -1 && strstr(err, "none.exr': No such file") && f.nchannels == 0, "a missing file: %s", err);
+    rc = image_read_exr_file(workdir, &f, 0, 1, err, sizeof err);
+    tap_ok(rc == -1 && strstr(err, "Is a directory"), "a folder: %s", err);
+    const char *png = tmp_path("not.exr");
+    spit(png, "\211PNG\r\n\032\nxxxxxxxx", 16);
+    rc = image_read_exr_file(png, &f, 0, 1, err, sizeof err);
+    tap_ok(rc == -1 && strstr(err, "not an EXR file"), "a PNG named .exr: %s", err);
+    long len = 0;
+    unsigned char *whole = slurp(p, &len);
+    rc = whole && spit(png, whole, len / 2) == 0 ? image_read_exr_file(png, &f, 0, h, err, sizeof err) : 0;
+    tap_ok(rc == -1 && f.channels == NULL, "half an EXR: an error, nothing kept (%s)", err);
+    free(whole);
+    free(depth);
+    free(vis);
+    free(code);
+    image_free(&src);
+}
+
 int main(void)
 {
     if (make_workdir() != 0) {
@@ -1014,6 +1139,7 @@ int main(void)
     test_encoding();
     test_exr();
     test_exr_tiled();
+    test_exr_file();
     test_png();
     test_ppm();
     test_other_types();

@@ -112,6 +112,10 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
     const RenderOptions *opt = job->opt;
     int x0, y0, x1, y1;
     render_tile_area(&job->tiles, tile, &x0, &y0, &x1, &y1);
+    /* the tile's corner on the grid, before the area cut it */
+    const int ts = job->tiles.tile_size;
+    const int cx = job->tiles.grid_x0 + (job->tiles.tile_x0 + tile % job->tiles.tiles_x) * ts;
+    const int cy = job->tiles.grid_y0 + (job->tiles.tile_y0 + tile / job->tiles.tiles_x) * ts;
     /* The cache method's last blockers start empty in every tile, so that
      * what it decides and counts for a pixel (the analysis channels, the
      * statistics) does not depend on which tiles this thread rendered
@@ -120,8 +124,23 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
         ctx->shadow.light_cache[i] = -1;
     if (opt->aa.method)
         return antialiased_tile(ctx, loop, job, x0, y0, x1, y1);
-    for (int y = y0; y < y1; y++) {
-        for (int x = x0; x < x1; x++) {
+    /* What the cache and pixel coherence carry from pixel to pixel (the
+     * last blockers, the neighbour's depth counts) changes which
+     * sub-scheme decides and what it costs, never the decision. So a tile
+     * the area cuts is walked from its corner on the image's grid, the
+     * pixels outside the area traced for that state only, when the
+     * analysis channels record it: then a partial render's channels are
+     * the full render's too, and partial renders stitch into it bit for
+     * bit (hstrace stitch). The rows below the area are never needed. */
+    int wx0 = cx, wy0 = cy, wx1 = cx + ts < opt->width ? cx + ts : opt->width;
+    if (!opt->aov) {
+        wx0 = x0;
+        wy0 = y0;
+        wx1 = x1;
+    }
+    for (int y = wy0; y < y1; y++) {
+        for (int x = wx0; x < wx1; x++) {
+            int inside = x >= x0 && x < x1 && y >= y0;
             Ray ray;
             memset(&ray, 0, sizeof ray);
             ray.from.kind = HIT_NONE;
@@ -131,11 +150,13 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
                 aov_pixel_begin(ctx->aov, shadow_tests(ctx), rays_traced(ctx, loop));
             PixelCoherence *pc = ctx->shadow.coherence;
             if (pc)
-                pixel_coherence_begin(pc, x == x0, y == y0);
+                pixel_coherence_begin(pc, x == wx0, y == wy0);
             shade_trace(ctx, &ray, 1.0, 0, &c);
             if (pc)
-                pixel_coherence_end(pc, pc->have_hit ? &pc->hit : NULL, ctx->shadow.states, x == x0);
+                pixel_coherence_end(pc, pc->have_hit ? &pc->hit : NULL, ctx->shadow.states, x == wx0);
             loop->camera_rays++;
+            if (!inside)
+                continue;
             loop->pixels++;
             if (ctx->aov)
                 aov_image_store(opt->aov, ctx->aov, shadow_tests(ctx), rays_traced(ctx, loop), x, y);

@@ -246,3 +246,33 @@ int image_read_exr_channels(const char *path, const char *const *names, int n, f
         image_set_error(err, errlen, "cannot read '%s': %s", path, why[0] ? why : "unreadable image");
     return rc;
 }
+
+int image_read_exr_file(const char *path, ImageExrFile *f, int y0, int y1, char *err, int errlen)
+{
+    char why[256];
+    struct stat st;
+    memset(f, 0, sizeof *f);
+    if (err != NULL && errlen > 0)
+        err[0] = '\0';
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    /* Only regular files: a FIFO or a device could block or never end. */
+    const char *irregular = fstat(fd, &st) != 0 ? strerror(errno)
+                            : S_ISDIR(st.st_mode) ? strerror(EISDIR)
+                            : !S_ISREG(st.st_mode) ? "not a regular file" : NULL;
+    if (irregular) {
+        close(fd);
+        image_set_error(err, errlen, "cannot read '%s': %s", path, irregular);
+        return -1;
+    }
+    why[0] = '\0';
+    int rc = sniff(fd, path) == IMAGE_FORMAT_EXR ? image_exr_read_file(fd, f, y0, y1, why, (int)sizeof why)
+                                                 : (snprintf(why, sizeof why, "not an EXR file"), -1);
+    close(fd);
+    if (rc != 0)
+        image_set_error(err, errlen, "cannot read '%s': %s", path, why[0] ? why : "unreadable image");
+    return rc;
+}

@@ -83,4 +83,50 @@ int image_read(const char *path, Image *img, double display_gamma, char *err, in
 int image_read_exr_channels(const char *path, const char *const *names, int n, float **planes, int *width,
                             int *height, char *err, int errlen);
 
+/* ---- an EXR read back whole ---------------------------------------------
+ * Every channel of a scanline EXR (part 0) as stored, and the header
+ * attributes of the types hstrace writes: what it takes to write the same
+ * file again (image_write with ImageWriteOptions' channels, attributes and
+ * chromaticities), as `hstrace stitch` does with partial renders. */
+typedef struct {
+    char *name;
+    ImageChannelType type; /* as stored: HALF, FLOAT or UINT */
+    /* width*height 4-byte samples, row 0 at the top: floats for HALF and
+     * FLOAT (a half becomes a float and back exactly), uint32_t for UINT;
+     * NULL when no rows were read. */
+    void *data;
+} ImageExrChannel;
+
+typedef struct {
+    char *name;
+    ImageAttributeType type;
+    char *s; /* STRING; NULL otherwise */
+    int i;
+    double d;
+} ImageExrAttribute;
+
+typedef struct {
+    int width, height;
+    ImageExrCompression compression; /* lossy kinds, which hstrace never writes, read as ZIP */
+    int have_chromaticities;
+    float chromaticities[8];
+    ImageExrChannel *channels; /* in the file's order: sorted by name */
+    int nchannels;
+    /* The string, int and double attributes, in the file's order (the
+     * required ones are of other types; chromaticities is above, any other
+     * type is skipped). */
+    ImageExrAttribute *attributes;
+    int nattributes;
+} ImageExrFile;
+
+/* Reads the header of a scanline EXR and, when y0 < y1, the samples of
+ * every channel in the chunks holding rows [y0, y1) (clipped to the image;
+ * the other rows are 0): y0 == y1 reads the header alone. Returns 0, or -1
+ * with a message "cannot read 'PATH': reason" (f is then empty). Free with
+ * image_exr_file_free either way. */
+int image_read_exr_file(const char *path, ImageExrFile *f, int y0, int y1, char *err, int errlen);
+/* The attribute called name, or NULL. */
+const ImageExrAttribute *image_exr_file_attribute(const ImageExrFile *f, const char *name);
+void image_exr_file_free(ImageExrFile *f);
+
 #endif

@@ -87,6 +87,8 @@ int image_exr_read(int fd, Image *img, char *err, int errlen);
 /* Named channels as float planes: 0, 1 when one is missing, -1 on error. */
 int image_exr_read_planes(int fd, const char *const *names, int n, float **planes, int *width, int *height,
                           char *err, int errlen);
+/* The header and rows [y0, y1) of every channel (image_read_exr_file). */
+int image_exr_read_file(int fd, ImageExrFile *f, int y0, int y1, char *err, int errlen);
 int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
 int image_ppm_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
 int image_tga_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);

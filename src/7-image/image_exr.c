@@ -600,3 +600,222 @@ fail_quiet:
     }
     return status;
 }
+
+/* ---- every channel and the header (image_read_exr_file) -------------------- */
+
+static ImageExrCompression compression_of_exr(exr_compression_t c)
+{
+    switch (c) {
+    case EXR_COMPRESSION_NONE: return IMAGE_EXR_NONE;
+    case EXR_COMPRESSION_RLE: return IMAGE_EXR_RLE;
+    case EXR_COMPRESSION_ZIPS: return IMAGE_EXR_ZIPS;
+    case EXR_COMPRESSION_PIZ: return IMAGE_EXR_PIZ;
+    default: return IMAGE_EXR_ZIP; /* ZIP, and the lossy kinds, which a copy must not repeat */
+    }
+}
+
+static char *copy_string(const char *s, int32_t n)
+{
+    char *c = malloc((size_t)n + 1);
+    if (c) {
+        memcpy(c, s, (size_t)n);
+        c[n] = '\0';
+    }
+    return c;
+}
+
+/* The header's string, int and double attributes and its chromaticities
+ * into f. 0, or -1 with the message set. */
+static int read_attributes(exr_const_context_t ctx, ImageExrFile *f, ExrIO *io)
+{
+    int32_t count = 0;
+    exr_result_t rv = exr_get_attribute_count(ctx, 0, &count);
+    if (rv != EXR_ERR_SUCCESS)
+        return exr_fail(io, rv);
+    f->attributes = count > 0 ? calloc((size_t)count, sizeof *f->attributes) : NULL;
+    if (count > 0 && !f->attributes) {
+        image_set_error(io->err, io->errlen, "out of memory");
+        return -1;
+    }
+    for (int32_t k = 0; k < count; k++) {
+        const exr_attribute_t *a = NULL;
+        rv = exr_get_attribute_by_index(ctx, 0, EXR_ATTR_LIST_FILE_ORDER, k, &a);
+        if (rv != EXR_ERR_SUCCESS)
+            return exr_fail(io, rv);
+        if (a->type == EXR_ATTR_CHROMATICITIES && strcmp(a->name, "chromaticities") == 0 && a->chromaticities) {
+            const exr_attr_chromaticities_t *c = a->chromaticities;
+            const float v[8] = { c->red_x, c->red_y, c->green_x, c->green_y,
+                                 c->blue_x, c->blue_y, c->white_x, c->white_y };
+            memcpy(f->chromaticities, v, sizeof v);
+            f->have_chromaticities = 1;
+            continue;
+        }
+        if (a->type != EXR_ATTR_STRING && a->type != EXR_ATTR_INT && a->type != EXR_ATTR_DOUBLE)
+            continue;
+        ImageExrAttribute *o = &f->attributes[f->nattributes];
+        o->name = copy_string(a->name, (int32_t)strlen(a->name));
+        if (a->type == EXR_ATTR_STRING) {
+            o->type = IMAGE_ATTR_STRING;
+            o->s = a->string && a->string->length > 0 ? copy_string(a->string->str, a->string->length)
+                                                      : copy_string("", 0);
+        } else if (a->type == EXR_ATTR_INT) {
+            o->type = IMAGE_ATTR_INT;
+            o->i = a->i;
+        } else {
+            o->type = IMAGE_ATTR_DOUBLE;
+            o->d = a->d;
+        }
+        f->nattributes++;
+        if (!o->name || (o->type == IMAGE_ATTR_STRING && !o->s)) {
+            image_set_error(io->err, io->errlen, "out of memory");
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int image_exr_read_file(int fd, ImageExrFile *f, int y0, int y1, char *err, int errlen)
+{
+    ExrIO io = { fd, err, errlen, 0 };
+    exr_context_t ctx = NULL;
+    exr_decode_pipeline_t dec;
+    exr_storage_t storage;
+    exr_attr_box2i_t dw;
+    exr_compression_t compression;
+    const exr_attr_chlist_t *chans = NULL;
+    int started = 0, lines, w = 0, h = 0;
+    exr_result_t rv;
+
+    memset(f, 0, sizeof *f);
+    memset(&dec, 0, sizeof dec);
+    rv = start_read_part0(&ctx, &io, &storage, &dw, &chans);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = exr_get_compression(ctx, 0, &compression);
+    if (rv != EXR_ERR_SUCCESS)
+        goto fail;
+    if (storage != EXR_STORAGE_SCANLINE) {
+        image_set_error(err, errlen, "not a scanline EXR file (tiled or deep)");
+        goto fail_quiet;
+    }
+    if (data_window_size(dw, &w, &h, err, errlen))
+        goto fail_quiet;
+    f->width = w;
+    f->height = h;
+    f->compression = compression_of_exr(compression);
+    f->channels = chans->num_channels > 0 ? calloc((size_t)chans->num_channels, sizeof *f->channels) : NULL;
+    if (chans->num_channels > 0 && !f->channels) {
+        image_set_error(err, errlen, "out of memory");
+        goto fail_quiet;
+    }
+    for (int c = 0; c < chans->num_channels; c++) {
+        const exr_attr_chlist_entry_t *e = &chans->entries[c];
+        if (e->x_sampling != 1 || e->y_sampling != 1) {
+            image_set_error(err, errlen, "channel '%s' is subsampled (%dx%d)", e->name.str, e->x_sampling,
+                            e->y_sampling);
+            goto fail_quiet;
+        }
+        ImageExrChannel *o = &f->channels[f->nchannels];
+        o->type = e->pixel_type == EXR_PIXEL_UINT ? IMAGE_CHANNEL_UINT
+                  : e->pixel_type == EXR_PIXEL_FLOAT ? IMAGE_CHANNEL_FLOAT : IMAGE_CHANNEL_HALF;
+        if (!(o->name = copy_string(e->name.str, e->name.length))) {
+            image_set_error(err, errlen, "out of memory");
+            goto fail_quiet;
+        }
+        f->nchannels++;
+    }
+    if (read_attributes(ctx, f, &io))
+        goto fail_quiet;
+
+    y0 = y0 < 0 ? 0 : y0;
+    y1 = y1 > h ? h : y1;
+    if (y0 < y1) {
+        if (chunk_table_missing(ctx, &io, w, h, &rv)) {
+            if (rv != EXR_ERR_SUCCESS)
+                goto fail;
+            goto fail_quiet;
+        }
+        rv = exr_get_scanlines_per_chunk(ctx, 0, &lines);
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
+        if (lines < 1)
+            lines = 1;
+        for (int c = 0; c < f->nchannels; c++)
+            if (!(f->channels[c].data = calloc((size_t)w * (size_t)h, 4))) {
+                image_set_error(err, errlen, "out of memory for a %dx%d image", w, h);
+                goto fail_quiet;
+            }
+        /* From the chunk holding row y0: chunks start every `lines` rows
+         * from the data window's top. */
+        for (int64_t y = dw.min.y + (int64_t)(y0 / lines) * lines; y < dw.min.y + (int64_t)y1; y += lines) {
+            exr_chunk_info_t cinfo;
+            rv = exr_read_scanline_chunk_info(ctx, 0, (int)y, &cinfo);
+            if (rv == EXR_ERR_SUCCESS)
+                rv = started ? exr_decoding_update(ctx, 0, &cinfo, &dec)
+                             : exr_decoding_initialize(ctx, 0, &cinfo, &dec);
+            if (rv != EXR_ERR_SUCCESS)
+                goto fail;
+            started = 1;
+            int64_t row = cinfo.start_y - dw.min.y;
+            if (row < 0 || cinfo.height < 1 || row + cinfo.height > h || cinfo.width != w) {
+                rv = EXR_ERR_CORRUPT_CHUNK;
+                goto fail;
+            }
+            for (int c = 0; c < dec.channel_count; c++) {
+                exr_coding_channel_info_t *ch = &dec.channels[c];
+                ch->decode_to_ptr = NULL;
+                for (int k = 0; k < f->nchannels; k++)
+                    if (strcmp(ch->channel_name, f->channels[k].name) == 0) {
+                        /* Planes of their own (never interleaved: see
+                         * SCRATCH_STRIDE); half converted to float. */
+                        ch->user_data_type = f->channels[k].type == IMAGE_CHANNEL_UINT ? EXR_PIXEL_UINT : EXR_PIXEL_FLOAT;
+                        ch->user_bytes_per_element = 4;
+                        ch->user_pixel_stride = 4;
+                        ch->user_line_stride = w * 4;
+                        ch->decode_to_ptr = (uint8_t *)f->channels[k].data + (size_t)row * (size_t)w * 4;
+                    }
+            }
+            rv = exr_decoding_choose_default_routines(ctx, 0, &dec);
+            if (rv == EXR_ERR_SUCCESS)
+                rv = exr_decoding_run(ctx, 0, &dec);
+            if (rv != EXR_ERR_SUCCESS)
+                goto fail;
+        }
+    }
+    if (started)
+        exr_decoding_destroy(ctx, &dec);
+    exr_finish(&ctx);
+    return 0;
+
+fail:
+    exr_fail(&io, rv);
+fail_quiet:
+    if (started)
+        exr_decoding_destroy(ctx, &dec);
+    if (ctx != NULL)
+        exr_finish(&ctx);
+    image_exr_file_free(f);
+    return -1;
+}
+
+const ImageExrAttribute *image_exr_file_attribute(const ImageExrFile *f, const char *name)
+{
+    for (int k = 0; k < f->nattributes; k++)
+        if (strcmp(f->attributes[k].name, name) == 0)
+            return &f->attributes[k];
+    return NULL;
+}
+
+void image_exr_file_free(ImageExrFile *f)
+{
+    for (int c = 0; c < f->nchannels; c++) {
+        free(f->channels[c].name);
+        free(f->channels[c].data);
+    }
+    for (int k = 0; k < f->nattributes; k++) {
+        free(f->attributes[k].name);
+        free(f->attributes[k].s);
+    }
+    free(f->channels);
+    free(f->attributes);
+    memset(f, 0, sizeof *f);
+}

@@ -1,6 +1,7 @@
 /* hstrace: scene file -> description -> polygons and grid -> rays -> image;
  * `hstrace compare` compares images (compare.h); `hstrace vs-povray` renders
- * a scene with POV-Ray and every shadow method and compares (vs_povray.h). */
+ * a scene with POV-Ray and every shadow method and compares (vs_povray.h);
+ * `hstrace stitch` joins partial renders into the whole image (stitch.h). */
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,6 +26,7 @@
 #include "shadow_embree.h"
 #include "shadow_volumes.h"
 #include "stats.h"
+#include "stitch.h"
 #include "volume_plan.h"
 #include "animation.h"
 #include "mpi_job.h"
@@ -429,7 +431,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     wopt.nchannels = aov.nchannels;
     report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */
     if (image_format_from_path(output) == IMAGE_FORMAT_EXR) {
-        if (provenance_build(&prov, argc, argv, o, &report)) {
+        if (provenance_build(&prov, argc, argv, o, anim, &report)) {
             fprintf(stderr, "hstrace: out of memory\n");
             status = EXIT_IO;
         }
@@ -481,6 +483,8 @@ int main(int argc, char **argv)
         return compare_main(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "vs-povray") == 0)
         return vs_povray_main(argc - 1, argv + 1, argv[0]);
+    if (argc > 1 && strcmp(argv[1], "stitch") == 0)
+        return stitch_main(argc - 1, argv + 1, argv[0]);
     double wall0 = clock_wall();
     char err[1024];
     /* Under mpirun: one rank of a job (mpi_job.h); before any thread. */

@@ -8,6 +8,7 @@
 #include "aov.h"
 #include "config.h"
 #include "cost_model.h"
+#include "shell_words.h"
 #include "volume_plan.h"
 
 int provenance_hash_file(const char *path, uint64_t *hash)
@@ -31,40 +32,6 @@ int provenance_hash_file(const char *path, uint64_t *hash)
     return 0;
 }
 
-/* The command line, each word quoted for a POSIX shell where needed. */
-static char *quote_words(int argc, char **argv)
-{
-    size_t len = 1;
-    for (int i = 0; i < argc; i++)
-        len += 4 * strlen(argv[i]) + 3;
-    char *out = malloc(len), *o = out;
-    if (!out)
-        return NULL;
-    for (int i = 0; i < argc; i++) {
-        const char *a = argv[i];
-        if (i > 0)
-            *o++ = ' ';
-        int plain = *a != '\0';
-        for (const char *c = a; *c; c++)
-            if (!strchr("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_+-=,./:@%^", *c))
-                plain = 0;
-        if (!plain)
-            *o++ = '\'';
-        for (const char *c = a; *c; c++) {
-            if (*c == '\'') {
-                memcpy(o, "'\\''", 4);
-                o += 4;
-            } else {
-                *o++ = *c;
-            }
-        }
-        if (!plain)
-            *o++ = '\'';
-    }
-    *o = '\0';
-    return out;
-}
-
 static const char *const aov_group_list[AOV_NGROUPS] = { "Z", "N", "P", "shadow", "hst", "depth", "cost" };
 static const char *const precision_names[] = { "double", "float", "float-naive" };
 
@@ -78,8 +45,11 @@ static void shortest(char *buf, size_t len, double v)
     }
 }
 
-/* Every option in force, defaults included, as one line. */
-static char *resolved_options(const Options *opt, const StatsReport *r)
+/* Every option in force that can change a pixel, defaults included, as one
+ * line: anti-aliasing when on, each Declare=, the clock when the scene sees
+ * one, and a partial render's area last (hstrace stitch reads the area back
+ * and holds the rest of the line of every part to be the same). */
+static char *resolved_options(const Options *opt, const ParseAnimation *anim, const StatsReport *r)
 {
     char nth[64], aov[64] = "", tolerance[32];
     shortest(tolerance, sizeof tolerance, opt->tolerance);
@@ -92,25 +62,56 @@ static char *resolved_options(const Options *opt, const StatsReport *r)
     for (int g = 0; g < AOV_NGROUPS; g++)
         if (opt->aov & (1u << g))
             snprintf(aov + strlen(aov), sizeof aov - strlen(aov), "%s%s", aov[0] ? "," : "", aov_group_list[g]);
+    /* POV-Ray's own switches and INI keys for anti-aliasing, as given
+     * (the render clips the threshold and the jitter to 1). */
+    char aa[256] = "";
+    if (opt->antialias_on) {
+        char threshold[32], gamma[32], jitter[32];
+        shortest(threshold, sizeof threshold, opt->aa_threshold);
+        shortest(gamma, sizeof gamma, opt->aa_gamma);
+        shortest(jitter, sizeof jitter, opt->jitter_amount);
+        snprintf(aa, sizeof aa, " +A%s +AM%d +R%d Antialias_Gamma=%s %s%s", threshold, opt->aa_method, opt->aa_depth,
+                 gamma, opt->jitter_on ? "+J" : "-J", opt->jitter_on ? jitter : "");
+    }
+    char clock[48] = "";
+    if (anim && anim->clock_on) {
+        char value[32];
+        shortest(value, sizeof value, anim->clock);
+        snprintf(clock, sizeof clock, " +K%s", value);
+    }
     /* A partial render's area, as the rows and columns POV-Ray counts from 1. */
     char area[96] = "";
     if (opt->area_x0 > 0 || opt->area_y0 > 0 || opt->area_x1 < opt->width || opt->area_y1 < opt->height)
         snprintf(area, sizeof area, " +SR%d +ER%d +SC%d +EC%d", opt->area_y0 + 1, opt->area_y1, opt->area_x0 + 1,
                  opt->area_x1);
     size_t len = 1024;
+    for (int i = 0; i < opt->ndeclares; i++)
+        len += strlen(opt->declares[i].name) + (opt->declares[i].string ? strlen(opt->declares[i].string) : 0) + 48;
     char *s = malloc(len);
     if (!s)
         return NULL;
     int pp = opt->plane_precision >= 0 && opt->plane_precision < 3 ? opt->plane_precision : 0;
-    snprintf(s, len,
+    size_t at = (size_t)snprintf(s, len,
              "--width %d --height %d +Q%d --shadows %s --volumes %s --nth %s --pixel-coherence %s --tolerance %s "
-             "--plane-precision %s --grid %dx%dx%d --threads %d%s%s%s%s%s",
+             "--plane-precision %s --grid %dx%dx%d --threads %d%s%s%s%s%s%s",
              opt->width, opt->height, opt->quality, opt->shadows, opt->volumes_always ? "always" : "auto", nth,
              opt->pixel_coherence ? "on" : "off",
              tolerance, precision_names[pp], r->grid[0], r->grid[1], r->grid[2], r->threads,
              opt->exr_float ? " --exr-float" : "",
              opt->verify_shadows == 2 ? " --verify-reference" : opt->verify_shadows ? " --verify-shadows" : "",
-             aov[0] ? " --aov " : "", aov, area);
+             aov[0] ? " --aov " : "", aov, aa, clock);
+    /* Declare=NAME=VALUE as POV-Ray's command line takes it: a string in
+     * double quotes. */
+    for (int i = 0; i < opt->ndeclares && at < len; i++) {
+        const OptionDeclare *d = &opt->declares[i];
+        char number[32];
+        if (!d->string)
+            shortest(number, sizeof number, d->number);
+        at += (size_t)snprintf(s + at, len - at, " Declare=%s=%s%s%s", d->name, d->string ? "\"" : "",
+                               d->string ? d->string : number, d->string ? "\"" : "");
+    }
+    if (at < len)
+        snprintf(s + at, len - at, "%s", area);
     return s;
 }
 
@@ -148,11 +149,12 @@ static char *plan_summary(const VolumePlan *plan)
     return s;
 }
 
-int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, const StatsReport *r)
+int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, const ParseAnimation *anim,
+                     const StatsReport *r)
 {
     memset(p, 0, sizeof *p);
-    p->command_line = quote_words(argc, argv);
-    p->options = resolved_options(opt, r);
+    p->command_line = shell_quote_words(argc, argv);
+    p->options = resolved_options(opt, anim, r);
     if (!p->command_line || !p->options) {
         provenance_free(p);
         return -1;

@@ -10,6 +10,7 @@
 
 #include "image.h"
 #include "options.h"
+#include "parser.h"
 #include "stats.h"
 
 #define PROVENANCE_MAX_ATTRIBUTES 32
@@ -24,9 +25,11 @@ typedef struct {
 /* FNV-1a, 64 bits, of a file's bytes. Returns 0, or -1 when unreadable. */
 int provenance_hash_file(const char *path, uint64_t *hash);
 
-/* Fills p from the command line, the options and the report (timings so
- * far; writing the image comes after). Returns 0, or -1 when out of memory. */
-int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, const StatsReport *r);
+/* Fills p from the command line, the options, the frame's clock (anim:
+ * as the scene saw it; NULL: none) and the report (timings so far; writing
+ * the image comes after). Returns 0, or -1 when out of memory. */
+int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, const ParseAnimation *anim,
+                     const StatsReport *r);
 void provenance_free(Provenance *p);
 
 #endif
