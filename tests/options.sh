@@ -418,7 +418,7 @@ check "+A anti-aliases: exit status 0, another image than without it (tests/anti
 # --- --version ------------------------------------------------------------------------
 run --version
 check "--version: hstrace VERSION and the OpenColorIO and Embree built in, or none ($(cat "$work/out"))" \
-    grep -Eqx "hstrace [0-9]+\.[0-9]+\.[0-9]+ \((OpenColorIO [0-9][0-9.]*|no OpenColorIO .*); (Embree [0-9][0-9.]*|no Embree)\)" "$work/out"
+    grep -Eqx "hstrace [0-9]+\.[0-9]+\.[0-9]+ \((OpenColorIO [0-9][0-9.]*|no OpenColorIO .*); (Embree [0-9][0-9.]*|no Embree); (Open MPI|no MPI)\)" "$work/out"
 
 # --- vs-povray: render options passed on, and refused ----------------------------------
 mkdir "$work/tmp"

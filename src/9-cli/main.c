@@ -514,9 +514,11 @@ static int main_rank(int argc, char **argv, double wall0)
         if (opt.help)
             options_usage(stdout);
         else if (shadow_embree_built())
-            printf("hstrace %s (%s; Embree %s)\n", PACKAGE_VERSION, colour_ocio_version(), shadow_embree_version());
+            printf("hstrace %s (%s; Embree %s; %s)\n", PACKAGE_VERSION, colour_ocio_version(), shadow_embree_version(),
+                   mpi_job_built() ? "Open MPI" : "no MPI");
         else
-            printf("hstrace %s (%s; no Embree)\n", PACKAGE_VERSION, colour_ocio_version());
+            printf("hstrace %s (%s; no Embree; %s)\n", PACKAGE_VERSION, colour_ocio_version(),
+                   mpi_job_built() ? "Open MPI" : "no MPI");
         options_free(&opt);
         return EXIT_OK;
     }
