@@ -106,6 +106,7 @@ man_options() {
             if (line ~ /^hstrace compare/) cmd = "compare"
             else if (line ~ /^hstrace vs-povray/) cmd = "vs-povray"
             else if (line ~ /^hstrace stitch/) cmd = "stitch"
+            else if (line ~ /^mpirun/) next  # mpirun -n N: an option of mpirun
             else all_tokens(line)
             next
         }
