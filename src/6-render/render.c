@@ -255,6 +255,8 @@ static void *worker_main(void *arg)
         atomic_fetch_add(&job->done_pixels, pixels);
         tile_wall = clock_wall() - tile_wall;
         tile_cpu = clock_thread_cpu() - tile_cpu;
+        if (opt->tile_seconds)
+            opt->tile_seconds[tile] = tile_cpu; /* each tile is one thread's */
         if (tile_wall > 0.0 && tile_cpu < tile_wall)
             *shadow_seconds = shadow_before + (*shadow_seconds - shadow_before) * (tile_cpu / tile_wall);
         atomic_fetch_add(&job->done_tiles, 1);

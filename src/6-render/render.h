@@ -39,6 +39,9 @@ typedef struct {
     int progress;             /* print a progress line on stderr */
     struct AovImage *aov;     /* --aov: the analysis channels to fill, or NULL */
     TileSource *tiles;        /* NULL: every tile, in this process */
+    /* When not NULL, the thread CPU seconds of each tile rendered here (the
+     * tile grid's count of them), for the statistics' load balance. */
+    double *tile_seconds;
 } RenderOptions;
 
 /* The tiles a render is cut into: on the whole image's grid (POV-Ray's

@@ -233,14 +233,24 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
     /* A distributed render (mpi_job.h): the figures below are all ranks'
      * together, the wall time the whole job's; each rank's own here. */
     fprintf(f, "  \"ranks\": %d,\n", r->ranks > 1 ? r->ranks : 1);
+    if (r->ranks > 1)
+        fprintf(f, "  \"gather_seconds\": %.6f,\n", r->gather_seconds);
+    if (r->tile_seconds) {
+        fprintf(f, "  \"tile_seconds\": [");
+        for (int i = 0; i < r->ntiles; i++)
+            fprintf(f, "%s%.7f", i ? (i % 16 ? ", " : ",\n    ") : "", r->tile_seconds[i]);
+        fprintf(f, "],\n");
+    }
     if (r->ranks > 1 && r->rank_render) {
         fprintf(f, "  \"per_rank\": [");
         for (int i = 0; i < r->ranks; i++) {
             const RenderStats *p = &r->rank_render[i];
             fprintf(f, "%s\n    {\"rank\": %d, \"pixels\": %llu, \"camera_rays\": %llu, \"shadow_queries\": %llu, "
-                       "\"render_cpu_seconds\": %.6f, \"shadow_seconds\": %.6f}",
+                       "\"render_cpu_seconds\": %.6f, \"shadow_seconds\": %.6f, \"tile_requests\": %ld, "
+                       "\"tile_wait_seconds\": %.6f}",
                     i ? "," : "", i, (unsigned long long)p->pixels, (unsigned long long)p->camera_rays,
-                    (unsigned long long)p->shadow.shadow_queries, p->render_seconds, p->shadow.shadow_seconds);
+                    (unsigned long long)p->shadow.shadow_queries, p->render_seconds, p->shadow.shadow_seconds,
+                    r->rank_requests ? r->rank_requests[i] : 0L, r->rank_wait_seconds ? r->rank_wait_seconds[i] : 0.0);
         }
         fprintf(f, "\n  ],\n");
     }

@@ -46,6 +46,12 @@ typedef struct {
      * and each one's counters (NULL: one process). */
     int ranks;
     const RenderStats *rank_render;
+    double gather_seconds;        /* rank 0: waiting for and gathering the other ranks' pixels */
+    const long *rank_requests;    /* per rank: runs of tiles asked of rank 0 (NULL: not kept) */
+    const double *rank_wait_seconds; /* ... and the time waiting for them */
+    /* Each tile's thread CPU seconds (NULL: not kept), for load balance. */
+    int ntiles;
+    const double *tile_seconds;
 } StatsReport;
 
 void stats_print(FILE *f, const StatsReport *r);

@@ -133,6 +133,10 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     AovImage aov;
     Provenance prov;
     RenderStats *per_rank = NULL;
+    MpiTileWaits *waits = NULL;
+    long *requests = NULL;
+    double *wait_seconds = NULL;
+    double *tile_seconds = NULL;
     memset(&world, 0, sizeof world);
     memset(&grid, 0, sizeof grid);
     memset(&bvh, 0, sizeof bvh);
@@ -377,29 +381,51 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         ropt.aov = &aov;
     }
 
+    /* Each tile's time, for the JSON's load balance. */
+    TileGrid tile_grid;
+    render_tile_grid(&ropt, &tile_grid);
+    if (stats_json) {
+        tile_seconds = calloc((size_t)(tile_grid.ntiles > 0 ? tile_grid.ntiles : 1), sizeof *tile_seconds);
+        ropt.tile_seconds = tile_seconds;
+        report.ntiles = tile_grid.ntiles;
+        report.tile_seconds = tile_seconds;
+    }
     Image img;
     if (distributed) {
         /* Tiles from rank 0, the pixels and counters back to it. */
         MpiTiles tiles;
         TileGrid tg;
         render_tile_grid(&ropt, &tg);
-        per_rank = mpi_job_rank() == 0 ? calloc((size_t)mpi_job_size(), sizeof *per_rank) : NULL;
-        if (mpi_tiles_begin(&tiles, &tg)) {
+        if (mpi_job_rank() == 0) {
+            per_rank = calloc((size_t)mpi_job_size(), sizeof *per_rank);
+            waits = calloc((size_t)mpi_job_size(), sizeof *waits);
+            requests = calloc((size_t)mpi_job_size(), sizeof *requests);
+            wait_seconds = calloc((size_t)mpi_job_size(), sizeof *wait_seconds);
+        }
+        if (mpi_tiles_begin(&tiles, &tg, threads)) {
             fprintf(stderr, "hstrace: out of memory for the tiles of a distributed render\n");
             status = EXIT_IO;
             goto done;
         }
         ropt.tiles = &tiles.source;
         int rc = render_image(&world, &grid, &ropt, &img, &report.render);
-        if (mpi_tiles_end(&tiles, &tg, rc, &img, o->aov ? &aov : NULL, &report.render, per_rank)) {
+        double gather = clock_wall();
+        if (mpi_tiles_end(&tiles, &tg, rc, &img, o->aov ? &aov : NULL, &report.render, per_rank, waits, tile_seconds)) {
             fprintf(stderr, "hstrace: a rank ran out of memory while rendering\n");
             if (rc == 0)
                 image_free(&img);
             status = EXIT_IO;
             goto done;
         }
+        report.gather_seconds = clock_wall() - gather;
         report.ranks = mpi_job_size();
         report.rank_render = per_rank;
+        for (int r = 0; waits && requests && wait_seconds && r < mpi_job_size(); r++) {
+            requests[r] = waits[r].requests;
+            wait_seconds[r] = waits[r].wait_seconds;
+        }
+        report.rank_requests = requests;
+        report.rank_wait_seconds = wait_seconds;
         if (mpi_job_rank() != 0) { /* rank 0 writes the image and the report */
             image_free(&img);
             goto done;
@@ -461,6 +487,10 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
 
 done:
     free(per_rank);
+    free(waits);
+    free(requests);
+    free(wait_seconds);
+    free(tile_seconds);
     provenance_free(&prov);
     aov_image_free(&aov);
     shadow_volumes_free(&volumes);

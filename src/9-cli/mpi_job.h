@@ -40,6 +40,12 @@ void mpi_job_broadcast(void *data, size_t n);
  * not 0 on one rank ends them all alike. */
 int mpi_job_max(int value);
 
+/* What a rank spent asking for tiles. */
+typedef struct {
+    long requests;       /* runs of tiles asked of rank 0 */
+    double wait_seconds; /* waiting for the answers, all threads together */
+} MpiTileWaits;
+
 /* The tiles of one frame, handed out by rank 0. */
 typedef struct MpiTiles {
     TileSource source;   /* for RenderOptions.tiles */
@@ -47,15 +53,19 @@ typedef struct MpiTiles {
     struct MpiTilesState *state;
 } MpiTiles;
 
-/* All ranks call it before render_image, with the frame's tile grid.
+/* All ranks call it before render_image, with the frame's tile grid and
+ * this rank's render threads.
  * Returns 0, or -1 when out of memory. */
-int mpi_tiles_begin(MpiTiles *t, const TileGrid *grid);
+int mpi_tiles_begin(MpiTiles *t, const TileGrid *grid, int threads);
 /* All ranks call it after render_image, with its status (0 or -1): the
  * pixels of each tile (and of the analysis channels) land in rank 0's img
  * and aov, every rank's counters in per_rank[rank] (rank 0: an array of
- * mpi_job_size(), or NULL) and their sum in *total on rank 0. Returns 0,
+ * mpi_job_size(), or NULL) and their sum in *total on rank 0, what each
+ * asking cost in waits[rank] (likewise), and, when
+ * tile_seconds is not NULL (on every rank or none), each tile's time from
+ * the rank that rendered it in rank 0's tile_seconds. Returns 0,
  * or -1 when a rank failed (out of memory) or the image is incomplete. */
 int mpi_tiles_end(MpiTiles *t, const TileGrid *grid, int status, Image *img, AovImage *aov, RenderStats *total,
-                  RenderStats *per_rank);
+                  RenderStats *per_rank, MpiTileWaits *waits, double *tile_seconds);
 
 #endif

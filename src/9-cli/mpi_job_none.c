@@ -30,16 +30,19 @@ void mpi_job_broadcast(void *data, size_t n)
 }
 int mpi_job_max(int value) { return value; }
 
-int mpi_tiles_begin(MpiTiles *t, const TileGrid *grid)
+int mpi_tiles_begin(MpiTiles *t, const TileGrid *grid, int threads)
 {
+    (void)threads;
     (void)t;
     (void)grid;
     return -1; /* never asked for: one process renders all its tiles */
 }
 
 int mpi_tiles_end(MpiTiles *t, const TileGrid *grid, int status, Image *img, AovImage *aov, RenderStats *total,
-                  RenderStats *per_rank)
+                  RenderStats *per_rank, MpiTileWaits *waits, double *tile_seconds)
 {
+    (void)waits;
+    (void)tile_seconds;
     (void)t;
     (void)grid;
     (void)img;
