@@ -464,6 +464,7 @@ const char *value_kind_name(ValueKind k)
     case VAL_PIGMENT: return "a pigment";
     case VAL_FINISH: return "a finish";
     case VAL_INTERIOR: return "an interior";
+    case VAL_MATERIAL: return "a material";
     case VAL_CAMERA: return "a camera";
     case VAL_SKY_SPHERE: return "a sky_sphere";
     case VAL_TRANSFORM: return "a transform";

@@ -77,27 +77,13 @@ static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const To
     o->texture_bind = o->transform; /* transforms after the texture move it, those before do not */
 }
 
-static void parse_material(Parser *p, SceneObject *o)
+/* An object's material: on its texture and interior so far. */
+static void object_material(Parser *p, SceneObject *o, const Token *at)
 {
-    begin_block(p, "material");
-    for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
-            return;
-        Token at = *t;
-        if (is_kw(t, KW_texture)) {
-            apply_texture(p, o, parse_texture(p), &at);
-        } else if (is_kw(t, KW_interior)) {
-            Interior *in = palloc(p, sizeof *in);
-            *in = o->interior ? *o->interior : scene_default_interior();
-            parse_interior(p, in);
-            o->interior = in;
-        } else if (!parse_transform_item(p, t, &o->transform)) {
-            if (t->type == TK_WORD && t->kw < 0)
-                parse_fail(p, t->pos, "material identifiers are not supported by hstrace");
-            fail_expected(p, t, "texture, interior, a transform or '}' in 'material'");
-        }
-    }
+    const SceneTexture *before = o->texture;
+    parse_material(p, &o->texture, &o->interior, at);
+    if (o->texture != before)
+        o->texture_bind = o->transform; /* as apply_texture: later transforms move it */
 }
 
 /* Modifiers up to the object's closing '}'. */
@@ -135,7 +121,7 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             o->interior = in;
             break;
         }
-        case KW_material: parse_material(p, o); break;
+        case KW_material: object_material(p, o, &at); break;
         case KW_no_shadow: o->no_shadow = optional_bool(p) ? 1u : 0u; break;
         case KW_no_image: o->no_image = optional_bool(p) ? 1u : 0u; break;
         case KW_no_reflection: o->no_reflection = optional_bool(p) ? 1u : 0u; break;

@@ -281,7 +281,7 @@ static int is_unsupported_value_keyword(int kw)
     case KW_function: case KW_spline: case KW_pattern: case KW_media: case KW_density:
     case KW_fog: case KW_rainbow: case KW_color_map: case KW_colour_map:
     case KW_pigment_map: case KW_normal_map: case KW_slope_map: case KW_texture_map: case KW_material_map:
-    case KW_density_map: case KW_photons: case KW_radiosity: case KW_material: case KW_interior_texture:
+    case KW_density_map: case KW_photons: case KW_radiosity: case KW_interior_texture:
     case KW_trace: case KW_min_extent: case KW_max_extent: case KW_vturbulence: case KW_file_exists:
     case KW_datetime: case KW_now:
         return 1;
@@ -315,6 +315,10 @@ static Value parse_rvalue(Parser *p)
             v.finish = palloc(p, sizeof *v.finish);
             *v.finish = p->scene->default_texture.finish;
             parse_finish(p, v.finish);
+            return v;
+        case KW_material:
+            v.kind = VAL_MATERIAL;
+            parse_material(p, &v.material_texture, &v.material_interior, &t);
             return v;
         case KW_interior:
             v.kind = VAL_INTERIOR;

@@ -721,6 +721,60 @@ void parse_interior(Parser *p, Interior *in)
     }
 }
 
+void parse_material(Parser *p, const SceneTexture **tex, const Interior **in, const Token *at)
+{
+    begin_block(p, "material");
+    int first = 1;
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, '}'))
+            return;
+        Token here = *t;
+        /* a material identifier, as POV-Ray takes it: only first */
+        const Value *id = first ? block_identifier(p, t, VAL_MATERIAL, "material") : NULL;
+        first = 0;
+        if (id) {
+            if (id->material_texture)
+                *tex = *tex ? layer_textures(p, id->material_texture, *tex, &here) : id->material_texture;
+            if (id->material_interior)
+                *in = id->material_interior; /* never changed in place: a new one replaces it */
+            continue;
+        }
+        if (is_kw(t, KW_texture)) {
+            SceneTexture *layer = parse_texture(p);
+            *tex = *tex ? layer_textures(p, layer, *tex, &here) : layer;
+            continue;
+        }
+        if (is_kw(t, KW_interior)) {
+            Interior *next_in = palloc(p, sizeof *next_in);
+            *next_in = *in ? **in : scene_default_interior();
+            parse_interior(p, next_in);
+            *in = next_in;
+            continue;
+        }
+        /* A transform moves the textures given so far, not the object
+         * (POV-Ray's Transform_Textures); an interior holds nothing hstrace
+         * places in space. */
+        Transform moved;
+        transform_identity(&moved);
+        if (parse_transform_item(p, t, &moved)) {
+            if (*tex && !(*tex)->pigment.uv_mapping) {
+                SceneTexture *copy = palloc(p, sizeof *copy);
+                *copy = **tex;
+                transform_compose(&copy->pigment.transform, &moved);
+                *tex = copy;
+            }
+            continue;
+        }
+        if (t->type == TK_WORD && t->kw >= 0)
+            unsupported(p, t); /* interior_texture, ... */
+        if (t->type == TK_WORD && t->kw < 0)
+            fail_expected(p, t, "a material identifier (only first), texture, interior, a transform or '}' in 'material'");
+        fail_expected(p, t, "texture, interior, a transform or '}' in 'material'");
+    }
+    (void)at;
+}
+
 SceneTexture *parse_texture(Parser *p)
 {
     Token kw = p->tok;

@@ -94,6 +94,7 @@ typedef enum {
     VAL_PIGMENT,
     VAL_FINISH,
     VAL_INTERIOR,
+    VAL_MATERIAL,    /* material_texture and material_interior (either may be NULL) */
     VAL_CAMERA,
     VAL_SKY_SPHERE,
     VAL_TRANSFORM,
@@ -144,6 +145,8 @@ typedef struct {
     Pigment *pigment;
     Finish *finish;
     Interior *interior;
+    const SceneTexture *material_texture;
+    const Interior *material_interior;
     SceneCamera *camera;
     SkySphere *sky;
     Transform *transform;
@@ -500,6 +503,11 @@ SceneTexture *parse_texture(Parser *p);   /* after 'texture' */
 void parse_pigment(Parser *p, Pigment *pig); /* after 'pigment' */
 void parse_finish(Parser *p, Finish *f);  /* after 'finish' */
 void parse_interior(Parser *p, Interior *in); /* after 'interior' */
+/* After 'material': POV-Ray's Parse_Material on *tex and *in (an object's
+ * texture and interior so far, or NULL): a material identifier first, then
+ * textures layered on, interiors, and transforms, which move the texture
+ * (not the object). at: the 'material' keyword. */
+void parse_material(Parser *p, const SceneTexture **tex, const Interior **in, const Token *at);
 void skip_normal(Parser *p);              /* after 'normal' */
 /* A layer `top` over `below` (both copied): one texture, see parse_texture.c. */
 SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at);
