@@ -73,4 +73,20 @@ done <<'BAD'
 #declare M = material { texture { pigment { color rgb 1 } } } triangle { <0,0,0>, <1,0,0>, <0,1,0> material { texture { pigment { color rgb 0.5 } } M } }|expected a material identifier (only first)
 triangle { <0,0,0>, <1,0,0>, <0,1,0> material { interior_texture { pigment { color rgb 0.5 } } } }|'interior_texture' is not supported
 BAD
+# --- includes from the current folder, where POV-Ray looks first ------------------
+mkdir -p "$work/scenes"
+printf '#declare Paint = rgb <1, 0.2, 0.1>;\n' >"$work/paint.inc"
+printf '#include "paint.inc"\ncamera { location <0,0,-3> look_at 0 }\nlight_source { <2,4,-3> color rgb 1 }\ntriangle { <-1,-1,0>, <1,-1,0>, <0,1,0> pigment { color Paint } }\n' \
+    >"$work/scenes/uses-inc.pov"
+run scenes/uses-inc.pov +W16 +H12 -o inc.png
+check "an include found in the current folder, not the scene's: renders" exited 0
+if [ -n "$povray" ]; then
+    (cd "$work" && "$povray" +Iscenes/uses-inc.pov +W16 +H12 +Oinc-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    check "... as POV-Ray renders it" "$hstrace" compare "$work/inc-pov.png" "$work/inc.png" --max-error 0
+else
+    skip "... as POV-Ray renders it" "povray not installed"
+fi
+(cd "$work/scenes" && "$hstrace" uses-inc.pov +W16 +H12 -o ../inc-elsewhere.png) >"$work/out" 2>"$work/err"
+status=$?
+check "... and from another current folder: an I/O error naming the include, status 3" exited 3 "paint.inc"
 tap_end
