@@ -662,6 +662,8 @@ static void parse_global_settings(Parser *p)
             /* Not modelled: parsed past and ignored, so scenes written for
              * POV-Ray still load (their lighting will differ). */
             approximate(p, &t, t.kw == KW_photons ? APPROX_PHOTONS : APPROX_RADIOSITY, &p->global_approx);
+            if (t.kw == KW_radiosity)
+                g->radiosity = 1;
             begin_block(p, keyword_name(t.kw));
             skip_block_body(p);
             break;

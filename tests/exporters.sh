@@ -89,4 +89,29 @@ fi
 (cd "$work/scenes" && "$hstrace" uses-inc.pov +W16 +H12 -o ../inc-elsewhere.png) >"$work/out" 2>"$work/err"
 status=$?
 check "... and from another current folder: an I/O error naming the include, status 3" exited 3 "paint.inc"
+# --- radiosity scenes: POV-Ray 3.7 uses no ambient -----------------------------
+# An emitter lit by ambient only, and a floor it would light by radiosity,
+# which is black when ambient is off: the image is exact though radiosity
+# is not modelled.
+cat >"$work/radiosity.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 radiosity { count 20 } }
+camera { location <0,0,-3> look_at 0 }
+light_source { <2,4,-3> color rgb 1 }
+triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> pigment { color rgb <1,0.5,0.2> } finish { ambient 1 diffuse 0 } }
+triangle { <-2,-1,1>, <2,-1,1>, <0,-1,-2> pigment { color rgb 0.7 } finish { ambient 0.3 diffuse 0.6 } }
+EOF
+run radiosity.pov +W32 +H24 -o radiosity.png
+check "a radiosity scene: renders (radiosity noted as approximated)" exited 0 "radiosity"
+if [ -n "$povray" ]; then
+    (cd "$work" && "$povray" +Iradiosity.pov +W32 +H24 +Oradiosity-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    check "... with no ambient, as POV-Ray 3.7 renders it (RMSE 0 measured)" \
+        "$hstrace" compare "$work/radiosity-pov.png" "$work/radiosity.png" --max-error 0
+else
+    skip "... with no ambient, as POV-Ray 3.7 renders it" "povray not installed"
+fi
+sed 's/#version 3.7;/#version 3.6;/' "$work/radiosity.pov" >"$work/radiosity36.pov"
+run radiosity36.pov +W32 +H24 -o radiosity36.png
+check_fails "a #version 3.6 radiosity scene keeps its ambient (another image)" \
+    "$hstrace" compare "$work/radiosity.png" "$work/radiosity36.png" --max-error 0.1
 tap_end

@@ -301,6 +301,7 @@ typedef struct {
     int has_assumed_gamma;
     int assumed_gamma_srgb; /* `assumed_gamma srgb` (assumed_gamma is then 0) */
     int noise_generator;    /* 0 when not given: 2, or 1 before #version 3.5 */
+    int radiosity;          /* a radiosity block was given (not modelled) */
 } GlobalSettings;
 
 /* sky_sphere: pigments on the unit sphere of directions, the last written
