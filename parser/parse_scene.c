@@ -538,6 +538,11 @@ void parse_declare(Parser *p, const Token *hash, int local)
         fail_expected(p, t, what);
     }
     Token first = *peek(p);
+    /* The version the value is read under decides whether it needs a ';'
+     * (POV-Ray's rule, measured): the lookahead after a value carries out
+     * the directives that follow, a `#version` an old include ends with
+     * among them, which must not turn its last #declare into an error. */
+    const double version_of_value = p->version;
     Value v = parse_value_lenient(p);
     (void)hash;
 
@@ -575,7 +580,7 @@ void parse_declare(Parser *p, const Token *hash, int local)
      * POV-Ray 3.7 renders `#declare S = "x"` followed by anything. */
     Token *s = next(p);
     if (!is_punct(s, ';')) {
-        if (v.kind == VAL_NUMERIC && p->version >= 3.5)
+        if (v.kind == VAL_NUMERIC && version_of_value >= 3.5)
             fail_expected(p, s, "';' after the declared value");
         unget(p);
     }
