@@ -804,6 +804,17 @@ SceneTexture *parse_texture(Parser *p)
             transform_identity(&ignored);
             if (parse_transform_item(p, t, tex->pigment.uv_mapping ? &ignored : &tex->pigment.transform))
                 break;
+            /* A pattern in a texture is a patterned texture: say that, not
+             * that the pattern is (Arbaro's trees write them). */
+            if (t->type == TK_WORD && t->kw >= 0 && pattern_support(t->kw) != PAT_NONE) {
+                char patterned[96];
+                snprintf(patterned, sizeof patterned, "texture_map (a texture patterned by %.*s)",
+                         t->len > 40 ? 40 : t->len, t->text);
+                Token what = *t;
+                what.text = tmp_strndup(p, patterned, strlen(patterned));
+                what.len = (int)strlen(patterned);
+                unsupported(p, &what);
+            }
             if (t->type == TK_WORD && t->kw >= 0)
                 unsupported(p, t);
             fail_expected(p, t, "pigment, normal, finish, a transform or '}' in 'texture'");
