@@ -86,13 +86,37 @@ static void object_material(Parser *p, SceneObject *o, const Token *at)
         o->texture_bind = o->transform; /* as apply_texture: later transforms move it */
 }
 
+/* A texture seen at the surface's (u, v, 0), as an object's uv_mapping
+ * makes every texture of it: its own transforms still place it, the
+ * object's do not move it (POV-Ray's UV_FLAG). */
+static const SceneTexture *uv_mapped(Parser *p, const SceneTexture *tex)
+{
+    if (!tex || tex->pigment.uv_mapping)
+        return tex;
+    SceneTexture *copy = palloc(p, sizeof *copy);
+    *copy = *tex;
+    copy->pigment.uv_mapping = 1;
+    return copy;
+}
+
 /* Modifiers up to the object's closing '}'. */
 static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
 {
+    int uv = 0;
     for (;;) {
         Token *t = next(p);
-        if (is_punct(t, '}'))
+        if (is_punct(t, '}')) {
+            if (uv) {
+                o->texture = uv_mapped(p, o->texture);
+                if (o->kind == OBJ_MESH) {
+                    const SceneTexture **list = palloc(p, sizeof *list * (size_t)(o->u.mesh.ntextures + 1));
+                    for (int i = 0; i < o->u.mesh.ntextures; i++)
+                        list[i] = uv_mapped(p, o->u.mesh.textures[i]);
+                    o->u.mesh.textures = list;
+                }
+            }
             return;
+        }
         Token at = *t;
         if (parse_transform_item(p, t, &o->transform))
             continue;
@@ -130,7 +154,8 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_inverse: o->inverse = !o->inverse; break;
         case KW_double_illuminate: o->double_illuminate = 1; break;
         case KW_sturm: case KW_split_union: skip_optional_float(p); break;
-        case KW_uv_mapping: case KW_cutaway_textures: break; /* no effect on solid colours */
+        case KW_uv_mapping: uv = 1; break; /* every texture of the object, at the end */
+        case KW_cutaway_textures: break; /* no effect on solid colours */
         case KW_photons: /* parsed past: hstrace has no photon mapping */
             approximate(p, &at, APPROX_PHOTONS, &o->approx);
             begin_block(p, "photons");

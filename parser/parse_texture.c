@@ -4,11 +4,17 @@
  * from the default (POV-Ray copies the default texture), then applies what
  * is written. Pigments hstrace evaluates: solid colours, checker, hexagon,
  * gradient, the noise patterns (bozo ... wood) and the spirals, with
- * turbulence and uv_mapping; other patterns are approximated by one colour. */
+ * turbulence and uv_mapping, and image_map (its file read through
+ * ParseOptions.load_image); other patterns are approximated by one colour. */
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "parser_internal.h"
+
+#define MAX_SEARCH_DIRS 128 /* as #include searches */
 
 SceneTexture *new_default_texture(Parser *p)
 {
@@ -69,6 +75,167 @@ static PatternSupport pattern_support(int kw)
         return PAT_UNSUPPORTED; /* they need an image or a density file */
     default:
         return PAT_NONE;
+    }
+}
+
+/* ---- image_map ------------------------------------------------------------ */
+
+/* The image file `name`, found as #include files are (the including file's
+ * folder, the current folder, the include folders); NULL when none has it. */
+static char *find_image_file(Parser *p, const char *name)
+{
+    if (name[0] == '/')
+        return access(name, R_OK) == 0 ? tmp_strndup(p, name, strlen(name)) : NULL;
+    const char *dirs[MAX_SEARCH_DIRS];
+    int nd = lex_search_dirs(p, dirs, MAX_SEARCH_DIRS);
+    for (int i = 0; i < nd; i++) {
+        size_t n = strlen(dirs[i]) + strlen(name) + 2;
+        char *path = tmp_alloc(p, n);
+        snprintf(path, n, "%s/%s", dirs[i], name);
+        if (access(path, R_OK) == 0)
+            return path;
+    }
+    return NULL;
+}
+
+/* A linear value into the scene's working space (assumed_gamma), as
+ * POV-Ray transcodes an image's colours. */
+static float to_working(float x, double gamma)
+{
+    if (gamma == 1.0 || x <= 0.0f)
+        return x;
+    if (gamma == 0.0)
+        return x <= 0.0031308f ? x * 12.92f : 1.055f * powf(x, 1.0f / 2.4f) - 0.055f;
+    return (float)pow(x, 1.0 / gamma);
+}
+
+/* After 'image_map': POV-Ray 3.7's Parse_Image and Parse_Image_Map for what
+ * exporters write: [type] "file" [gamma G|srgb] [premultiplied 0], then
+ * once, interpolate 0/2/4, map_type 0, use_colour/use_index, filter all F,
+ * transmit all T. */
+static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
+{
+    begin_block(p, "image_map");
+    Token *t = next(p);
+    int kw = t->type == TK_WORD ? t->kw : -1;
+    switch (kw) {
+    case KW_png: case KW_jpeg: case KW_tga: case KW_ppm: case KW_pgm: case KW_exr: case KW_hdr: case KW_bmp:
+        break; /* the type: hstrace tells files apart by their first bytes */
+    case KW_gif: case KW_iff: case KW_tiff: case KW_sys: case KW_function:
+        unsupported(p, t);
+    default:
+        unget(p);
+    }
+    Token name_at = *peek(p);
+    char *name = parse_string(p);
+    double decoding_gamma = -1.0; /* POV-Ray's default for the file's type */
+    for (;;) {
+        Token *o = next(p);
+        if (is_kw(o, KW_gamma)) {
+            if (is_kw(peek(p), KW_srgb)) {
+                (void)next(p);
+                decoding_gamma = 0.0;
+            } else {
+                Token vt = *peek(p);
+                decoding_gamma = parse_float(p);
+                if (!(decoding_gamma > 0.0))
+                    parse_fail(p, vt.pos, "gamma value must be positive.");
+            }
+        } else if (is_kw(o, KW_premultiplied)) {
+            Token vt = *peek(p);
+            if ((int)parse_float(p) != 0)
+                parse_fail(p, vt.pos, "'premultiplied 1' (an image of premultiplied alpha) is not supported by hstrace");
+        } else {
+            unget(p);
+            break;
+        }
+    }
+    if (!p->opts->load_image)
+        parse_fail(p, at->pos, "image_map is not supported here (no image reader)");
+    char *path = find_image_file(p, name);
+    if (!path)
+        parse_fail(p, name_at.pos, "cannot find the image '%s' (looked in the scene's folder, the current folder and the "
+                   "include folders)", name);
+    int w = 0, h = 0;
+    float *rgba = NULL;
+    char why[256] = "";
+    if (p->opts->load_image(p->opts->load_image_user, path, decoding_gamma, &w, &h, &rgba, why, (int)sizeof why)) {
+        free(rgba);
+        parse_fail(p, name_at.pos, "image_map: %s", why[0] ? why : "unreadable image");
+    }
+    SceneImage *im = palloc(p, sizeof *im);
+    size_t n = (size_t)w * (size_t)h * 4;
+    float *kept = NULL;
+    if (n > 0) {
+        /* in the scene's arena: the parse's memory budget counts it */
+        kept = palloc(p, n * sizeof *kept);
+        memcpy(kept, rgba, n * sizeof *kept);
+    }
+    free(rgba);
+    double wg = scene_working_gamma(p->scene);
+    double sum[3] = { 0, 0, 0 };
+    for (size_t i = 0; i < (size_t)w * (size_t)h; i++) {
+        for (int c = 0; c < 3; c++) {
+            kept[4 * i + c] = to_working(kept[4 * i + c], wg);
+            sum[c] += kept[4 * i + c];
+        }
+        if (kept[4 * i + 3] < 1.0f)
+            im->has_alpha = 1;
+    }
+    im->width = w;
+    im->height = h;
+    im->rgba = kept;
+    im->path = path;
+    pig->kind = PIGMENT_IMAGE_MAP;
+    pig->image = im;
+    pig->nmap = 0;
+    pig->map = NULL;
+    pig->image_once = 0;
+    pig->image_interpolate = 0;
+    pig->image_filter_all = pig->image_transmit_all = 0.0;
+    /* where one colour must stand for the picture: its mean */
+    double count = (double)w * (double)h;
+    pig->colour = (Colour){ sum[0] / count, sum[1] / count, sum[2] / count, 0.0, 0.0 };
+    for (;;) {
+        Token *o = next(p);
+        if (is_punct(o, '}'))
+            return;
+        Token here = *o;
+        switch (o->type == TK_WORD ? o->kw : -1) {
+        case KW_once: pig->image_once = 1; break;
+        case KW_interpolate: {
+            int v = (int)parse_float(p);
+            if (v == 3)
+                parse_fail(p, here.pos, "'interpolate 3' (bicubic) is not supported by hstrace (0, 2 and 4 are)");
+            if (v != 0 && v != 2 && v != 4)
+                parse_fail(p, here.pos, "Invalid interpolate value.");
+            pig->image_interpolate = v;
+            break;
+        }
+        case KW_map_type: {
+            int v = (int)parse_float(p);
+            if (v != 0)
+                parse_fail(p, here.pos, "'map_type %d' is not supported by hstrace (map_type 0, planar, is)", v);
+            break;
+        }
+        case KW_use_colour: case KW_use_color: case KW_use_index: break;
+        case KW_filter: case KW_transmit: {
+            if (!is_kw(peek(p), KW_all))
+                parse_fail(p, here.pos, "'%s' of one palette entry is not supported by hstrace ('%s all' is)",
+                           keyword_name(here.kw), keyword_name(here.kw));
+            (void)next(p);
+            double v = parse_float(p);
+            if (here.kw == KW_filter)
+                pig->image_filter_all = v;
+            else
+                pig->image_transmit_all = v;
+            break;
+        }
+        default:
+            if (o->type == TK_WORD && o->kw >= 0)
+                unsupported(p, o); /* repeat, offset, ... */
+            fail_expected(p, o, "once, interpolate, map_type, filter all, transmit all or '}' in 'image_map'");
+        }
     }
 }
 
@@ -467,6 +634,11 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
                 set_grey_map(p, pig);
             continue;
         case PAT_UNSUPPORTED:
+            if (kw == KW_image_map) {
+                parse_image_map(p, pig, &at);
+                approximated = 0;
+                continue;
+            }
             unsupported(p, &at);
         case PAT_NONE:
             break;

@@ -38,6 +38,15 @@ typedef struct {
     /* The frame being rendered; NULL: a still, as POV-Ray renders one
      * without animation switches (clock 0, clock_delta 1, ...). */
     const ParseAnimation *animation;
+    /* Reads an image_map's file (found through the folders above) into
+     * straight (not premultiplied) RGBA in linear light, *rgba malloc'd
+     * (the parser frees it). decoding_gamma: -1 POV-Ray's default for the
+     * file's type (IMAGE_GAMMA_AS_POVRAY of image.h), 0 sRGB (`gamma srgb`),
+     * else a power law (`gamma G`); linear formats (EXR, HDR) ignore it. Returns 0, or -1 with the reason in err (the
+     * parser names the file and the position). NULL: image_map is refused. */
+    int (*load_image)(void *user, const char *path, double decoding_gamma, int *width, int *height, float **rgba,
+                      char *err, int errlen);
+    void *load_image_user;
     /* POV-Ray's console streams turned off (-GD, -GW, -GA): #debug text
      * and warnings (#warning, the parser's own) are not printed. Errors
      * always are. */

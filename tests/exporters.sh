@@ -1,6 +1,7 @@
 #!/bin/sh
 # What mesh exporters write (issue 20), in TAP: `material { texture {...}
-# interior {...} }` declared and used, a material identifier first in a
+# interior {...} }` declared and used, image_map on polygons and uv-mapped
+# meshes, a material identifier first in a
 # material, transforms in a material that move its texture and not the
 # object, on a polygon, a triangle and mesh objects, against the installed
 # POV-Ray's image of the same scene; and the mistakes: another kind of
@@ -158,4 +159,61 @@ done <<'VERSIONS'
 #version 2.0;|#version 3.7;|renders
 #version 2.0;|#declare Q = 1; #version 3.7;|renders
 VERSIONS
+# --- image_map, as exporters write it ---------------------------------------------
+# Pictures made here: a 4x3 PPM written by hand, and desk rendered small to
+# PNG with alpha, JPEG and Targa with alpha.
+printf 'P3\n4 3\n255\n255 0 0  0 255 0  0 0 255  255 255 0\n0 255 255  255 0 255  128 128 128  255 255 255\n10 20 30  200 100 50  50 200 100  0 0 0\n' \
+    >"$work/tex.ppm"
+cp "$srcdir/scenes/desk.pov" "$work/desk.pov"
+run desk.pov +W40 +H30 +FN +UA +Odesk-alpha
+run desk.pov +W40 +H30 +FJ +Odesk-pic
+run desk.pov +W40 +H30 +FT +UA +Odesk-pic
+cat >"$work/imagemap.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0.5, 1.2, -2.5> look_at <0.5, 0.4, 0> }
+light_source { <2, 5, -4> color rgb 1 }
+plane { y, -0.01 pigment { color rgb <0.9, 0.8, 0.7> } }
+polygon { 4, <-1,0,0>, <0,0,0>, <0,1,0>, <-1,1,0> pigment { image_map { ppm "tex.ppm" interpolate 2 } translate <-1,0,0> } }
+polygon { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> pigment { image_map { jpeg "desk-pic.jpg" interpolate 4 once } scale 0.8 translate <0.1,0.1,0> } }
+polygon { 4, <1,0,0>, <2,0,0>, <2,1,0>, <1,1,0> pigment { image_map { tga "desk-pic.tga" transmit all 0.3 } scale 0.5 translate <1,0,0> } }
+polygon { 4, <-1,0,-0.5>, <2,0,-0.5>, <2,0.5,-0.7>, <-1,0.5,-0.7> pigment { image_map { "desk-alpha.png" filter all 0.4 interpolate 2 } scale <3,0.5,1> translate <-1,0,0> } }
+mesh2 {
+  vertex_vectors { 4, <-1,1.2,0.2>, <2,1.2,0.2>, <2,2,0.2>, <-1,2,0.2> }
+  uv_vectors { 4, <0,0>, <1,0>, <1,1>, <0,1> }
+  face_indices { 2, <0,1,2>, <0,2,3> }
+  uv_indices { 2, <0,1,2>, <0,2,3> }
+  uv_mapping pigment { image_map { ppm "tex.ppm" interpolate 2 } }
+}
+EOF
+run imagemap.pov +W160 +H120 --verify-shadows --stats-json imagemap.json -o imagemap.png
+check "image_map (PPM, JPEG, Targa and PNG with alpha; interpolate 0, 2, 4; once; filter and transmit all; a uv-mapped mesh2): renders, 0 disagreements with the shadow ray" \
+    test "$status $(grep -o '"disagreements": [0-9]*' "$work/imagemap.json" | head -n 1 | grep -o '[0-9]*$')" = "0 0"
+if [ -n "$povray" ]; then
+    (cd "$work" && "$povray" +Iimagemap.pov +W160 +H120 +Oimagemap-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    check "... as POV-Ray renders it, shadows through the pictures' transparency included (RMSE 0 measured)" \
+        "$hstrace" compare "$work/imagemap-pov.png" "$work/imagemap.png" --max-rmse 1e-5 --max-share 0
+else
+    skip "... as POV-Ray renders it" "povray not installed"
+fi
+for method in conventional cache volume hst; do
+    run imagemap.pov +W160 +H120 --shadows "$method" --volumes always -o "imagemap-$method.png"
+    check "image_map: --shadows $method gives the same image" "$hstrace" compare "$work/imagemap.png" "$work/imagemap-$method.png" --max-error 0
+done
+echo junk >"$work/junk.png"
+while IFS='|' read -r map message; do
+    printf 'camera { location <0,0,-3> look_at 0 }\ntriangle { <0,0,0>, <1,0,0>, <0,1,0> pigment { image_map { %s } } }\n' \
+        "$map" >"$work/badmap.pov"
+    run badmap.pov +W8 +H6 -o badmap.png
+    check "image_map { $map }: status 2, FILE:LINE:COLUMN ($message), no image" \
+        test "$status $(grep -c "^badmap.pov:2:[0-9]*: .*$message" "$work/err") $([ -e "$work/badmap.png" ] && echo image || echo none)" = "2 1 none"
+done <<'BADMAPS'
+png "nothere.png"|cannot find the image 'nothere.png'
+png "junk.png"|image_map: cannot read .*junk.png.*not a PNG file
+gif "tex.gif"|'gif' is not supported
+ppm "tex.ppm" interpolate 3|'interpolate 3' (bicubic) is not supported
+ppm "tex.ppm" map_type 1|'map_type 1' is not supported
+ppm "tex.ppm" filter 2, 0.5|'filter' of one palette entry is not supported
+ppm "tex.ppm" repeat <2, 2>|'repeat' is not supported
+BADMAPS
 tap_end

@@ -77,7 +77,17 @@ typedef enum {
     PIGMENT_WOOD,     /* distance from the z axis, turbulence, triangle wave */
     PIGMENT_SPIRAL1,  /* arms around the z axis, triangle wave */
     PIGMENT_SPIRAL2,  /* two sets of arms crossing */
+    PIGMENT_IMAGE_MAP, /* a picture laid on the unit square of x and y (map_type 0) */
 } PigmentKind;
+
+/* An image_map's picture as POV-Ray holds it: straight (not premultiplied)
+ * RGBA, in the scene's working space, row 0 the picture's top. */
+typedef struct {
+    int width, height;
+    const float *rgba;
+    int has_alpha;    /* some pixel's alpha is below 1 */
+    const char *path; /* as found through the include folders */
+} SceneImage;
 
 /* Turbulence of a pattern (POV-Ray's TURB warp): `turbulence` written in
  * the pigment (classic: marble, wood, agate and the spirals also add its
@@ -125,6 +135,11 @@ typedef struct {
      * `transform` is its own, not moved by the texture or the object. */
     int uv_mapping;
     Transform transform;  /* pattern space to texture space */
+    /* image_map: the picture, and POV-Ray's once, interpolate (0 none, 2
+     * bilinear, 4 normalised distance), filter all and transmit all. */
+    const SceneImage *image;
+    int image_once, image_interpolate;
+    double image_filter_all, image_transmit_all;
     const ApproxNote *approx;
 } Pigment;
 

@@ -1,7 +1,8 @@
 /* Pigment patterns, written from POV-Ray 3.7's definitions (checker_pattern,
  * hexagon_pattern, gradient_pattern, the noise patterns, spiral1/2_pattern,
  * Warp_EPoint's turbulence, Evaluate_TPat's frequency/phase/wave,
- * Search_Blend_Map, the uv coordinates of UVCoord): the same small offsets
+ * Search_Blend_Map, the uv coordinates of UVCoord, image_map's lookup and
+ * interpolation): the same small offsets
  * and the same order of operations, so that pattern borders fall where
  * POV-Ray puts them. */
 #include "pigment.h"
@@ -238,8 +239,98 @@ double pattern_value(const Pigment *pig, Vec3 p)
     return wave(pig, v);
 }
 
+/* ---- image_map (POV-Ray's imageutil.cpp) -------------------------------- */
+
+/* POV-Ray's wrap(): into [0, limit), also for negative values. */
+static double pov_wrap(double v, double limit)
+{
+    double t = fmod(v, limit);
+    if (t < 0.0)
+        t += limit;
+    if (t >= limit)
+        t = 0.0;
+    return t;
+}
+
+/* A pixel's colour (no_interpolation), at a place already on the picture
+ * (or, with once, clamped to its edge), as float colour and filter and
+ * transmit, POV-Ray's COLC. */
+static void image_pixel(const Pigment *pig, double xc, double yc, float out[5])
+{
+    const SceneImage *im = pig->image;
+    int ix, iy;
+    if (pig->image_once) {
+        ix = xc < 0.0 ? 0 : xc >= (double)im->width ? im->width - 1 : (int)xc;
+        iy = yc < 0.0 ? 0 : yc >= (double)im->height ? im->height - 1 : (int)yc;
+    } else {
+        ix = (int)pov_wrap(xc, (double)im->width);
+        iy = (int)pov_wrap(yc, (double)im->height);
+    }
+    const float *px = im->rgba + ((size_t)iy * (size_t)im->width + (size_t)ix) * 4;
+    out[0] = px[0];
+    out[1] = px[1];
+    out[2] = px[2];
+    out[3] = 0.0f + (float)pig->image_filter_all;
+    out[4] = (1.0f - px[3]) + (float)pig->image_transmit_all; /* transmit all adds to the alpha channel's */
+}
+
+static Colour image_map_at(const Pigment *pig, Vec3 p)
+{
+    const SceneImage *im = pig->image;
+    const double w = (double)im->width, h = (double)im->height;
+    /* planar_image_map with POV-Ray's gradient <1, -1, 0>: x across, y up */
+    if (pig->image_once && (p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0))
+        return (Colour){ 1, 1, 1, 0, 1 }; /* off the picture: clear */
+    double xc = fmod(p.x * w, w), yc = fmod(p.y * h, h);
+    /* map_pos */
+    xc += POV_EPSILON;
+    yc += POV_EPSILON;
+    if (pig->image_once && (xc >= w || yc >= h || xc < 0.0 || yc < 0.0))
+        return (Colour){ 1, 1, 1, 0, 1 };
+    xc = pov_wrap(xc, w);
+    yc = pov_wrap(-yc, h); /* the picture's rows run down */
+    float c[5];
+    if (pig->image_interpolate == 0) {
+        image_pixel(pig, xc, yc, c);
+    } else {
+        /* Interp: the four pixels around, weighed in double */
+        xc += 0.5;
+        yc += 0.5;
+        int ix = (int)xc, iy = (int)yc;
+        float corner[4][5];
+        image_pixel(pig, (double)ix, (double)iy, corner[0]);
+        image_pixel(pig, (double)ix - 1, (double)iy, corner[1]);
+        image_pixel(pig, (double)ix, (double)iy - 1, corner[2]);
+        image_pixel(pig, (double)ix - 1, (double)iy - 1, corner[3]);
+        double f[4], a = xc - (int)xc, b = yc - (int)yc;
+        if (pig->image_interpolate == 2) { /* bilinear */
+            f[0] = a * b;
+            f[1] = (1 - a) * b;
+            f[2] = a * (1 - b);
+            f[3] = (1 - a) * (1 - b);
+        } else { /* normalised distance */
+            double wt[4] = { 1.0 / ((1 - a) * (1 - a) + (1 - b) * (1 - b)), 1.0 / (a * a + (1 - b) * (1 - b)),
+                             1.0 / ((1 - a) * (1 - a) + b * b), 1.0 / (a * a + b * b) };
+            double sum = 0.0;
+            for (int i = 0; i < 4; i++)
+                sum += wt[i];
+            for (int i = 0; i < 4; i++)
+                f[i] = wt[i] / sum;
+        }
+        for (int k = 0; k < 5; k++) {
+            double v = 0.0;
+            for (int i = 0; i < 4; i++)
+                v += (double)corner[i][k] * f[i];
+            c[k] = (float)v;
+        }
+    }
+    return (Colour){ c[0], c[1], c[2], c[3], c[4] };
+}
+
 Colour pigment_at(const Pigment *pig, Vec3 p)
 {
+    if (pig->kind == PIGMENT_IMAGE_MAP)
+        return image_map_at(pig, p);
     if (pig->kind == PIGMENT_SOLID)
         return pig->colour;
     return colour_map_at(pig->map, pig->nmap, pattern_value(pig, p));

@@ -196,6 +196,9 @@ int image_read(const char *path, Image *img, double display_gamma, char *err, in
     }
     fmt = sniff(fd, path);
     why[0] = '\0';
+    /* POV-Ray's defaults (the PNG reader looks at its chunks itself) */
+    if (display_gamma == IMAGE_GAMMA_AS_POVRAY && fmt != IMAGE_FORMAT_PNG)
+        display_gamma = fmt == IMAGE_FORMAT_PPM ? 1.0 : 0.0;
     if (fmt == IMAGE_FORMAT_EXR) {
         rc = image_exr_read(fd, img, why, (int)sizeof why);
         close(fd);

@@ -73,7 +73,11 @@ int image_write(const char *path, const Image *img, const ImageWriteOptions *opt
 
 /* Read an EXR, PNG, PPM, Targa, BMP, JPEG or HDR file into linear RGBA (the
  * integer types are decoded from sRGB, or the gamma given, back to linear;
- * EXR and HDR are linear already). Returns 0, or -1 with a message. */
+ * EXR and HDR are linear already; IMAGE_GAMMA_AS_POVRAY: as POV-Ray 3.7
+ * reads a file that no `gamma` overrides: PNG by its sRGB or gAMA chunk,
+ * else sRGB; JPEG, Targa and BMP as sRGB; PPM not decoded). Returns 0, or
+ * -1 with a message. */
+#define IMAGE_GAMMA_AS_POVRAY (-1.0)
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen);
 
 /* Reads the named channels of a scanline EXR (part 0) as float planes of

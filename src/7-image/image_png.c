@@ -204,7 +204,21 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
     wide = depth == 16;
     max = wide ? 65535u : 255u;
 
-    image_transfer_init(&t, display_gamma);
+    {
+        /* as POV-Ray 3.7 without `gamma`: an sRGB chunk, else a gAMA chunk
+         * (its encoding gamma), else sRGB */
+        double file_gamma = 0.0, decode = display_gamma;
+        if (decode == IMAGE_GAMMA_AS_POVRAY) {
+            if (png_get_valid(st->png, st->info, PNG_INFO_sRGB))
+                decode = 0.0;
+            else if (png_get_valid(st->png, st->info, PNG_INFO_gAMA) && png_get_gAMA(st->png, st->info, &file_gamma) &&
+                     file_gamma > 0.0)
+                decode = 1.0 / file_gamma;
+            else
+                decode = 0.0;
+        }
+        image_transfer_init(&t, decode);
+    }
     st->lut = image_transfer_decode_table(&t, max);
     /* The image grows with the rows decoded (a non-interlaced file): a few
      * corrupt bytes may claim 2^28 pixels, and memory follows the data the
