@@ -21,7 +21,8 @@ static const struct {
     [APPROX_FINISH] = { "finish", "finish item ignored" },
     [APPROX_CAUSTICS] = { "caustics", "interior caustics and dispersion ignored" },
     [APPROX_PHOTONS] = { "photons", "photon mapping ignored" },
-    [APPROX_RADIOSITY] = { "radiosity", "radiosity and subsurface light transport ignored" },
+    [APPROX_RADIOSITY] = { "radiosity", "radiosity and subsurface light transport ignored: no light gathered from "
+                                        "other surfaces, and (as POV-Ray 3.7 with radiosity) no finish's ambient" },
     [APPROX_AREA_LIGHT] = { "area_light", "area light rendered as a point light at its centre" },
     [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
     [APPROX_FOG] = { "fog", "fog between lights and surfaces (media_attenuation) ignored" },

@@ -98,6 +98,8 @@ void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)
 int lex_search_dirs(Parser *p, const char **dirs, int cap)
 {
     int nd = 0;
+    if (p->opts->first_dir)
+        dirs[nd++] = p->opts->first_dir;
     dirs[nd++] = p->files[p->depth - 1].dir;
     for (int i = 0; i < p->opts->ninclude_dirs && nd < cap; i++)
         if (p->opts->include_dirs[i])

@@ -109,6 +109,16 @@ static float to_working(float x, double gamma)
     return (float)pow(x, 1.0 / gamma);
 }
 
+/* What hstrace does not do of image_map, at `at`: as any unsupported
+ * keyword, an error, or in a #declare a value that is one when used. */
+static _Noreturn void image_map_unsupported(Parser *p, const Token *at, const char *what)
+{
+    Token t = *at;
+    t.text = tmp_strndup(p, what, strlen(what));
+    t.len = (int)strlen(what);
+    unsupported(p, &t);
+}
+
 /* After 'image_map': POV-Ray 3.7's Parse_Image and Parse_Image_Map for what
  * exporters write: [type] "file" [gamma G|srgb] [premultiplied 0], then
  * once, interpolate 0/2/4, map_type 0, use_colour/use_index, filter all F,
@@ -144,17 +154,17 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
         } else if (is_kw(o, KW_premultiplied)) {
             Token vt = *peek(p);
             if ((int)parse_float(p) != 0)
-                parse_fail(p, vt.pos, "'premultiplied 1' (an image of premultiplied alpha) is not supported by hstrace");
+                image_map_unsupported(p, &vt, "premultiplied 1 (an image of premultiplied alpha)");
         } else {
             unget(p);
             break;
         }
     }
-    if (!p->opts->load_image)
-        parse_fail(p, at->pos, "image_map is not supported here (no image reader)");
+    if (!p->opts->load_image) /* a parse without the image layer (the parser's own tests) */
+        image_map_unsupported(p, at, "image_map");
     char *path = find_image_file(p, name);
     if (!path)
-        parse_fail(p, name_at.pos, "cannot find the image '%s' (looked in the scene's folder, the current folder and the "
+        parse_fail(p, name_at.pos, "cannot find the image '%s' (looked in the current folder, the scene's folder and the "
                    "include folders)", name);
     int w = 0, h = 0;
     float *rgba = NULL;
@@ -206,7 +216,7 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
         case KW_interpolate: {
             int v = (int)parse_float(p);
             if (v == 3)
-                parse_fail(p, here.pos, "'interpolate 3' (bicubic) is not supported by hstrace (0, 2 and 4 are)");
+                image_map_unsupported(p, &here, "interpolate 3 (bicubic; 0, 2 and 4 are supported)");
             if (v != 0 && v != 2 && v != 4)
                 parse_fail(p, here.pos, "Invalid interpolate value.");
             pig->image_interpolate = v;
@@ -214,15 +224,21 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
         }
         case KW_map_type: {
             int v = (int)parse_float(p);
-            if (v != 0)
-                parse_fail(p, here.pos, "'map_type %d' is not supported by hstrace (map_type 0, planar, is)", v);
+            if (v != 0) {
+                char what[64];
+                snprintf(what, sizeof what, "map_type %d (map_type 0, planar, is supported)", v);
+                image_map_unsupported(p, &here, what);
+            }
             break;
         }
         case KW_use_colour: case KW_use_color: case KW_use_index: break;
         case KW_filter: case KW_transmit: {
-            if (!is_kw(peek(p), KW_all))
-                parse_fail(p, here.pos, "'%s' of one palette entry is not supported by hstrace ('%s all' is)",
-                           keyword_name(here.kw), keyword_name(here.kw));
+            if (!is_kw(peek(p), KW_all)) {
+                char what[64];
+                snprintf(what, sizeof what, "%s of one palette entry (%s all is supported)", keyword_name(here.kw),
+                         keyword_name(here.kw));
+                image_map_unsupported(p, &here, what);
+            }
             (void)next(p);
             double v = parse_float(p);
             if (here.kw == KW_filter)

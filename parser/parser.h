@@ -27,6 +27,9 @@ typedef struct {
      * then POV-Ray's include folder when it exists. */
     const char *const *include_dirs;
     int ninclude_dirs;
+    /* A folder searched before the including file's own (POV-Ray looks in
+     * the current folder first: "."), or NULL. */
+    const char *first_dir;
     /* image_width / image_height as the scene sees them. */
     int image_width, image_height;
     /* Global symbols declared before the first token, in order (a name given

@@ -88,6 +88,18 @@ if [ -n "$povray" ]; then
 else
     skip "... as POV-Ray renders it" "povray not installed"
 fi
+# Both folders have one: the current folder's is taken, as POV-Ray takes it.
+printf '#declare Paint = rgb <0.1, 0.2, 1>;\n' >"$work/scenes/paint.inc"
+run scenes/uses-inc.pov +W16 +H12 -o inc-both.png
+if [ -n "$povray" ]; then
+    (cd "$work" && "$povray" +Iscenes/uses-inc.pov +W16 +H12 +Oinc-both-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    check "an include in both the current and the scene's folder: the current folder's, as POV-Ray takes it" \
+        "$hstrace" compare "$work/inc-both-pov.png" "$work/inc-both.png" --max-error 0
+else
+    skip "an include in both folders: the current folder's" "povray not installed"
+fi
+check "... which is not the scene's folder's" "$hstrace" compare "$work/inc.png" "$work/inc-both.png" --max-error 0
+rm "$work/scenes/paint.inc"
 (cd "$work/scenes" && "$hstrace" uses-inc.pov +W16 +H12 -o ../inc-elsewhere.png) >"$work/out" 2>"$work/err"
 status=$?
 check "... and from another current folder: an I/O error naming the include, status 3" exited 3 "paint.inc"
@@ -211,9 +223,9 @@ done <<'BADMAPS'
 png "nothere.png"|cannot find the image 'nothere.png'
 png "junk.png"|image_map: cannot read .*junk.png.*not a PNG file
 gif "tex.gif"|'gif' is not supported
-ppm "tex.ppm" interpolate 3|'interpolate 3' (bicubic) is not supported
-ppm "tex.ppm" map_type 1|'map_type 1' is not supported
-ppm "tex.ppm" filter 2, 0.5|'filter' of one palette entry is not supported
+ppm "tex.ppm" interpolate 3|'interpolate 3 (bicubic; 0, 2 and 4 are supported)' is not supported
+ppm "tex.ppm" map_type 1|'map_type 1 (map_type 0, planar, is supported)' is not supported
+ppm "tex.ppm" filter 2, 0.5|'filter of one palette entry (filter all is supported)' is not supported
 ppm "tex.ppm" repeat <2, 2>|'repeat' is not supported
 BADMAPS
 tap_end

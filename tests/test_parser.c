@@ -733,8 +733,11 @@ static void test_errors(void)
     }
     expect_error("box { 0, 1 } }", 1, 14, "expected an object", "stray brace");
     expect_error("box { 0, 1 clipped_by { box { 0, 1 } } }", 1, 12, "'clipped_by' is not supported", "clipped_by");
+    /* without ParseOptions.load_image (a parse with no image layer) */
     expect_error("box { 0, 1 texture { pigment { image_map { png \"a.png\" } } } }", 1, 32,
-                 "'image_map' is not supported", "image pattern");
+                 "'image_map' is not supported", "image_map without an image reader");
+    expect_error("box { 0, 1 texture { pigment { image_pattern { png \"a.png\" } } } }", 1, 32,
+                 "'image_pattern' is not supported", "image pattern");
     expect_error("#error \"stop here\"\n", 1, 1, "#error: stop here", "#error");
     expect_error("box { 0, <1, 2, 3 }", 1, 19, "expected", "unclosed vector");
     expect_error("box { 0, ((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((("

@@ -200,13 +200,13 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         }
     }
 
-    /* Include search: the scene's folder (the parser's own rule), then the
-     * current folder (POV-Ray looks there first: exporters' scenes count
-     * on it), the user's folders, POV-Ray's when installed, and last
-     * hstrace's own (its colors.inc for systems without POV-Ray's). */
-    const char *dirs[MAX_INCLUDE_PATHS + 3];
+    /* Include and image search: the current folder (POV-Ray looks there
+     * first: exporters' scenes count on it), the including file's folder
+     * (the parser's own rule), the user's folders, POV-Ray's when
+     * installed, and last hstrace's own (its colors.inc for systems without
+     * POV-Ray's). */
+    const char *dirs[MAX_INCLUDE_PATHS + 2];
     int ndirs = 0;
-    dirs[ndirs++] = ".";
     for (int i = 0; i < o->ninclude_paths; i++)
         dirs[ndirs++] = o->include_paths[i];
     const char *povray_dir = povray_include_folder();
@@ -217,6 +217,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         dirs[ndirs++] = own_include;
     ParseOptions popt;
     memset(&popt, 0, sizeof popt);
+    popt.first_dir = ".";
     popt.include_dirs = dirs;
     popt.ninclude_dirs = ndirs;
     popt.image_width = o->width;
