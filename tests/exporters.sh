@@ -124,6 +124,16 @@ if [ -n "$povray" ]; then
 else
     skip "... with no ambient, as POV-Ray 3.7 renders it" "povray not installed"
 fi
+# Below +Q9 POV-Ray turns radiosity off, and the ambient is back.
+run radiosity.pov +W32 +H24 +Q8 -o radiosity-q8.png
+if [ -n "$povray" ]; then
+    (cd "$work" && "$povray" +Iradiosity.pov +W32 +H24 +Q8 +Oradiosity-q8-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    check "... at +Q8, where POV-Ray turns radiosity off, with the ambient, as POV-Ray renders it" \
+        "$hstrace" compare "$work/radiosity-q8-pov.png" "$work/radiosity-q8.png" --max-error 0
+else
+    skip "... at +Q8, with the ambient, as POV-Ray renders it" "povray not installed"
+fi
+check_fails "... which is not the +Q9 image" "$hstrace" compare "$work/radiosity.png" "$work/radiosity-q8.png" --max-error 0.1
 sed 's/#version 3.7;/#version 3.6;/' "$work/radiosity.pov" >"$work/radiosity36.pov"
 run radiosity36.pov +W32 +H24 -o radiosity36.png
 check_fails "a #version 3.6 radiosity scene keeps its ambient (another image)" \

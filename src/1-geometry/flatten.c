@@ -586,9 +586,9 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     w->fogs = scene->fogs;
     w->ambient_light = rgb_of(&scene->globals.ambient_light);
     /* POV-Ray 3.7 uses no finish's ambient once radiosity is on (the
-     * radiosity, not modelled here, stands in for it); 3.6 scenes keep it. */
-    if (scene->globals.radiosity && scene->version >= 3.7)
-        w->ambient_light = (RGB){ 0, 0, 0 };
+     * radiosity, not modelled here, stands in for it); 3.6 scenes keep it,
+     * and so do renders below +Q9, where POV-Ray turns radiosity off. */
+    w->radiosity_replaces_ambient = scene->globals.radiosity && scene->version >= 3.7;
     w->max_trace_level = scene->globals.max_trace_level > 0 ? scene->globals.max_trace_level : 5;
     w->adc_bailout = scene->globals.adc_bailout > 0 ? scene->globals.adc_bailout : 1.0 / 255.0;
     return 0;

@@ -107,6 +107,7 @@ typedef struct {
     int nfogs;
     const SceneFog *fogs; /* the scene's, read-only */
     RGB ambient_light;
+    int radiosity_replaces_ambient; /* at +Q9 no finish's ambient counts (POV-Ray 3.7 with radiosity) */
     int max_trace_level;
     double adc_bailout;
     int noise_generator;  /* of patterns that name none (scene_noise_generator) */

@@ -528,10 +528,12 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
 
     /* The surface's own light, reduced where it is see-through. */
     double att = 1.0 - pc->filter - pc->transmit;
+    /* POV-Ray's radiosity (at +Q9, its "advanced light") takes ambient's place */
+    RGB amb = w->radiosity_replaces_ambient && ctx->quality.volume ? (RGB){ 0, 0, 0 } : w->ambient_light;
     RGB acc;
-    acc.r = pigment.r * (f->ambient[0] * w->ambient_light.r * att + f->emission[0] * att);
-    acc.g = pigment.g * (f->ambient[1] * w->ambient_light.g * att + f->emission[1] * att);
-    acc.b = pigment.b * (f->ambient[2] * w->ambient_light.b * att + f->emission[2] * att);
+    acc.r = pigment.r * (f->ambient[0] * amb.r * att + f->emission[0] * att);
+    acc.g = pigment.g * (f->ambient[1] * amb.g * att + f->emission[1] * att);
+    acc.b = pigment.b * (f->ambient[2] * amb.b * att + f->emission[2] * att);
     if (f->diffuse != 0.0 || f->specular != 0.0 || f->phong != 0.0)
         direct_light(ctx, m, &hit, seg, ray->dir, normal, pigment, att, &acc);
     else

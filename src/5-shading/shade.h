@@ -15,7 +15,7 @@ typedef struct {
     int refraction;     /* Q >= 6 */
     int reflection;     /* Q >= 8 */
     int full_ambient;   /* Q <= 1: pigment colour only */
-    int volume;         /* Q >= 9: fog */
+    int volume;         /* Q >= 9: fog, and POV-Ray's "advanced light" (radiosity) */
 } Quality;
 
 /* The secondary rays shading sent, for the statistics (summed over threads). */
