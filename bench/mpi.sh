@@ -2,8 +2,9 @@
 # A render spread over Open MPI's ranks, for issue 21: on this machine (2
 # cores), desk and make-mesh 10^5 (4 lights) at 1280x960, wall and CPU time
 # (user + system of the whole job, from wait4) of 1 process x 1 thread,
-# 1 process x 2 threads and 2 ranks x 1 thread, the median of RUNS runs with
-# the three interleaved run by run: strong scaling, and what MPI costs
+# 1 process x 2 threads, 2 ranks x 1 thread and 2 ranks x 2 threads (more
+# threads than cores), the median of RUNS runs with the four interleaved run
+# by run: strong scaling, and what MPI costs
 # against threads alone, and what starting MPI costs (mpirun -n 2 of a
 # 16x12 render against one process's). Then an estimate, not a measurement,
 # for 16 and 64 ranks of one thread each: the 1x1 run's own tile times
@@ -35,7 +36,8 @@ import heapq, json, os, statistics, subprocess, sys, time
 
 hstrace, mpirun, work, here, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], int(sys.argv[5])
 size = ["+W1280", "+H960"]
-configs = [("1 process x 1 thread", 1, 1), ("1 process x 2 threads", 1, 2), ("2 ranks x 1 thread", 2, 1)]
+configs = [("1 process x 1 thread", 1, 1), ("1 process x 2 threads", 1, 2), ("2 ranks x 1 thread", 2, 1),
+           ("2 ranks x 2 threads (4 threads on 2 cores)", 2, 2)]
 
 def timed(cmd):
     t0 = time.time()
@@ -128,7 +130,7 @@ def big_estimate(n):
 out = []
 out.append("# Renders across Open MPI's ranks (bench/mpi.sh)\n")
 out.append("Command: `bench/mpi.sh` (MPI_RUNS=%d), this machine's 2 cores, Open MPI over shared memory; "
-           "load average during the runs %.1f-%.1f. Median of %d runs, the three configurations interleaved.\n"
+           "load average during the runs %.1f-%.1f. Median of %d runs, the configurations interleaved.\n"
            % (runs, min(loads), max(loads), runs))
 out.append("## Measured: strong scaling and MPI's cost against threads\n")
 out.append("| scene, 1280x960 | configuration | wall s | CPU s | speed-up (wall) against 1x1 |")
