@@ -13,18 +13,6 @@
 #define BMP_FILE_HEADER 14
 #define BMP_INFO_HEADER 40
 
-static void put16(unsigned char *p, unsigned v)
-{
-    p[0] = (unsigned char)(v & 0xff);
-    p[1] = (unsigned char)(v >> 8 & 0xff);
-}
-
-static void put32(unsigned char *p, unsigned long v)
-{
-    put16(p, (unsigned)(v & 0xffff));
-    put16(p + 2, (unsigned)(v >> 16 & 0xffff));
-}
-
 static unsigned long get32(const unsigned char *p)
 {
     return (unsigned long)p[0] | (unsigned long)p[1] << 8 | (unsigned long)p[2] << 16 | (unsigned long)p[3] << 24;
@@ -55,14 +43,14 @@ int image_bmp_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, ch
     }
     h[0] = 'B';
     h[1] = 'M';
-    put32(h + 2, (unsigned long)(size + sizeof h));
-    put32(h + 10, sizeof h);
-    put32(h + 14, BMP_INFO_HEADER);
-    put32(h + 18, (unsigned long)img->width);
-    put32(h + 22, (unsigned long)img->height);
-    put16(h + 26, 1);
-    put16(h + 28, (unsigned)(bpp * 8));
-    put32(h + 34, (unsigned long)size); /* BI_RGB (0) at 30; no resolution or palette */
+    image_put_le32(h + 2, (unsigned long)(size + sizeof h));
+    image_put_le32(h + 10, sizeof h);
+    image_put_le32(h + 14, BMP_INFO_HEADER);
+    image_put_le32(h + 18, (unsigned long)img->width);
+    image_put_le32(h + 22, (unsigned long)img->height);
+    image_put_le16(h + 26, 1);
+    image_put_le16(h + 28, (unsigned)(bpp * 8));
+    image_put_le32(h + 34, (unsigned long)size); /* BI_RGB (0) at 30; no resolution or palette */
     if (fwrite(h, 1, sizeof h, fp) != sizeof h)
         goto fail;
     for (int y = img->height - 1; y >= 0; y--) {

@@ -62,6 +62,26 @@ void image_row_encoder_free(ImageRowEncoder *e);
  * Returns NULL when out of memory. Free with free(). */
 float *image_transfer_decode_table(const ImageTransfer *t, unsigned max);
 
+/* For readers whose image grows with the rows decoded, so that a few
+ * corrupt bytes claiming 2^28 pixels cost only what the file holds: before
+ * row y of an image of `rows` rows, of which *cap are allocated, doubles the
+ * allocation when y reaches it. Returns 0, or -1 when out of memory (the
+ * image as it was). */
+int image_grow_rows(Image *img, int y, int rows, int *cap);
+
+/* ---- little-endian fields (Targa, BMP) ---------------------------------- */
+static inline void image_put_le16(unsigned char *p, unsigned v)
+{
+    p[0] = (unsigned char)(v & 0xff);
+    p[1] = (unsigned char)(v >> 8 & 0xff);
+}
+
+static inline void image_put_le32(unsigned char *p, unsigned long v)
+{
+    image_put_le16(p, (unsigned)(v & 0xffff));
+    image_put_le16(p + 2, (unsigned)(v >> 16 & 0xffff));
+}
+
 /* ---- errors --------------------------------------------------------------- */
 #if defined(__GNUC__)
 #define HST_PRINTF(a, b) __attribute__((format(printf, a, b)))

@@ -152,6 +152,19 @@ float *image_transfer_decode_table(const ImageTransfer *t, unsigned max)
     return lut;
 }
 
+int image_grow_rows(Image *img, int y, int rows, int *cap)
+{
+    if (y < *cap)
+        return 0;
+    int more = *cap * 2 < rows ? *cap * 2 : rows;
+    float *bigger = realloc(img->rgba, (size_t)more * (size_t)img->width * 4 * sizeof(float));
+    if (bigger == NULL)
+        return -1;
+    img->rgba = bigger;
+    *cap = more;
+    return 0;
+}
+
 void image_set_error(char *err, int errlen, const char *fmt, ...)
 {
     va_list ap;

@@ -500,24 +500,71 @@ fail_quiet:
 }
 
 /* Named channels of a scanline file as float planes (image_read_exr_channels). */
+/* Decodes the chunks of part 0 holding rows [y0, y1) (counted from the data
+ * window's top) into planes of their own, never interleaved: for each of
+ * the n channels names[k], data[k] (w*h samples of 4 bytes, row 0 at the
+ * top) as types[k] (EXR_PIXEL_FLOAT, half converted; or EXR_PIXEL_UINT).
+ * Other channels are skipped. Returns EXR_ERR_SUCCESS or the error. */
+static exr_result_t decode_rows(exr_context_t ctx, exr_attr_box2i_t dw, int w, int h, int y0, int y1, int n,
+                                const char *const *names, void *const *data, const exr_pixel_type_t *types)
+{
+    exr_decode_pipeline_t dec;
+    int lines, started = 0;
+    memset(&dec, 0, sizeof dec);
+    exr_result_t rv = exr_get_scanlines_per_chunk(ctx, 0, &lines);
+    if (lines < 1)
+        lines = 1;
+    /* from the chunk holding row y0: chunks start every `lines` rows from
+     * the data window's top */
+    for (int64_t y = dw.min.y + (int64_t)(y0 / lines) * lines; rv == EXR_ERR_SUCCESS && y < dw.min.y + (int64_t)y1;
+         y += lines) {
+        exr_chunk_info_t cinfo;
+        rv = exr_read_scanline_chunk_info(ctx, 0, (int)y, &cinfo);
+        if (rv == EXR_ERR_SUCCESS)
+            rv = started ? exr_decoding_update(ctx, 0, &cinfo, &dec) : exr_decoding_initialize(ctx, 0, &cinfo, &dec);
+        if (rv != EXR_ERR_SUCCESS)
+            break;
+        started = 1;
+        int64_t row = cinfo.start_y - dw.min.y;
+        if (row < 0 || cinfo.height < 1 || row + cinfo.height > h || cinfo.width != w) {
+            rv = EXR_ERR_CORRUPT_CHUNK;
+            break;
+        }
+        for (int c = 0; c < dec.channel_count; c++) {
+            exr_coding_channel_info_t *ch = &dec.channels[c];
+            ch->decode_to_ptr = NULL;
+            for (int k = 0; k < n; k++)
+                if (strcmp(ch->channel_name, names[k]) == 0) {
+                    ch->user_data_type = types[k];
+                    ch->user_bytes_per_element = 4;
+                    ch->user_pixel_stride = 4;
+                    ch->user_line_stride = w * 4;
+                    ch->decode_to_ptr = (uint8_t *)data[k] + (size_t)row * (size_t)w * 4;
+                }
+        }
+        rv = exr_decoding_choose_default_routines(ctx, 0, &dec);
+        if (rv == EXR_ERR_SUCCESS)
+            rv = exr_decoding_run(ctx, 0, &dec);
+    }
+    if (started)
+        exr_decoding_destroy(ctx, &dec);
+    return rv;
+}
+
 int image_exr_read_planes(int fd, const char *const *names, int n, float **planes, int *width, int *height,
                           char *err, int errlen)
 {
     ExrIO io = { fd, err, errlen, 0 };
     exr_context_t ctx = NULL;
-    exr_decode_pipeline_t dec;
     exr_storage_t storage;
     exr_attr_box2i_t dw;
     const exr_attr_chlist_t *chans = NULL;
-    int started = 0, lines, w = 0, h = 0, status = -1;
+    int w = 0, h = 0, status = -1;
     exr_result_t rv;
 
-    memset(&dec, 0, sizeof dec);
     for (int k = 0; k < n; k++)
         planes[k] = NULL;
     rv = start_read_part0(&ctx, &io, &storage, &dw, &chans);
-    if (rv == EXR_ERR_SUCCESS)
-        rv = exr_get_scanlines_per_chunk(ctx, 0, &lines);
     if (rv != EXR_ERR_SUCCESS)
         goto fail;
     if (storage != EXR_STORAGE_SCANLINE) {
@@ -547,41 +594,26 @@ int image_exr_read_planes(int fd, const char *const *names, int n, float **plane
             image_set_error(err, errlen, "out of memory for a %dx%d image", w, h);
             goto fail_quiet;
         }
-    if (lines < 1)
-        lines = 1;
-    for (int64_t y = dw.min.y; y <= dw.max.y; y += lines) {
-        exr_chunk_info_t cinfo;
-        rv = exr_read_scanline_chunk_info(ctx, 0, (int)y, &cinfo);
-        if (rv == EXR_ERR_SUCCESS)
-            rv = started ? exr_decoding_update(ctx, 0, &cinfo, &dec) : exr_decoding_initialize(ctx, 0, &cinfo, &dec);
-        if (rv != EXR_ERR_SUCCESS)
-            goto fail;
-        started = 1;
-        int64_t row = cinfo.start_y - dw.min.y;
-        if (row < 0 || cinfo.height < 1 || row + cinfo.height > h || cinfo.width != w) {
-            rv = EXR_ERR_CORRUPT_CHUNK;
-            goto fail;
+    {
+        /* every channel asked for, as floats */
+        void **data = malloc(sizeof *data * (size_t)(n > 0 ? n : 1));
+        exr_pixel_type_t *types = malloc(sizeof *types * (size_t)(n > 0 ? n : 1));
+        if (!data || !types) {
+            free(data);
+            free(types);
+            image_set_error(err, errlen, "out of memory");
+            goto fail_quiet;
         }
-        for (int c = 0; c < dec.channel_count; c++) {
-            exr_coding_channel_info_t *ch = &dec.channels[c];
-            ch->decode_to_ptr = NULL;
-            for (int k = 0; k < n; k++)
-                if (strcmp(ch->channel_name, names[k]) == 0) {
-                    ch->user_data_type = EXR_PIXEL_FLOAT;
-                    ch->user_bytes_per_element = 4;
-                    ch->user_pixel_stride = 4;
-                    ch->user_line_stride = w * 4;
-                    ch->decode_to_ptr = (uint8_t *)(planes[k] + (size_t)row * (size_t)w);
-                }
+        for (int k = 0; k < n; k++) {
+            data[k] = planes[k];
+            types[k] = EXR_PIXEL_FLOAT;
         }
-        rv = exr_decoding_choose_default_routines(ctx, 0, &dec);
-        if (rv == EXR_ERR_SUCCESS)
-            rv = exr_decoding_run(ctx, 0, &dec);
+        rv = decode_rows(ctx, dw, w, h, 0, h, n, names, data, types);
+        free(data);
+        free(types);
         if (rv != EXR_ERR_SUCCESS)
             goto fail;
     }
-    if (started)
-        exr_decoding_destroy(ctx, &dec);
     exr_finish(&ctx);
     *width = w;
     *height = h;
@@ -590,8 +622,6 @@ int image_exr_read_planes(int fd, const char *const *names, int n, float **plane
 fail:
     exr_fail(&io, rv);
 fail_quiet:
-    if (started)
-        exr_decoding_destroy(ctx, &dec);
     if (ctx != NULL)
         exr_finish(&ctx);
     for (int k = 0; k < n; k++) {
@@ -678,16 +708,14 @@ int image_exr_read_file(int fd, ImageExrFile *f, int y0, int y1, char *err, int 
 {
     ExrIO io = { fd, err, errlen, 0 };
     exr_context_t ctx = NULL;
-    exr_decode_pipeline_t dec;
     exr_storage_t storage;
     exr_attr_box2i_t dw;
     exr_compression_t compression;
     const exr_attr_chlist_t *chans = NULL;
-    int started = 0, lines, w = 0, h = 0;
+    int w = 0, h = 0;
     exr_result_t rv;
 
     memset(f, 0, sizeof *f);
-    memset(&dec, 0, sizeof dec);
     rv = start_read_part0(&ctx, &io, &storage, &dw, &chans);
     if (rv == EXR_ERR_SUCCESS)
         rv = exr_get_compression(ctx, 0, &compression);
@@ -734,63 +762,40 @@ int image_exr_read_file(int fd, ImageExrFile *f, int y0, int y1, char *err, int 
                 goto fail;
             goto fail_quiet;
         }
-        rv = exr_get_scanlines_per_chunk(ctx, 0, &lines);
-        if (rv != EXR_ERR_SUCCESS)
-            goto fail;
-        if (lines < 1)
-            lines = 1;
         for (int c = 0; c < f->nchannels; c++)
             if (!(f->channels[c].data = calloc((size_t)w * (size_t)h, 4))) {
                 image_set_error(err, errlen, "out of memory for a %dx%d image", w, h);
                 goto fail_quiet;
             }
-        /* From the chunk holding row y0: chunks start every `lines` rows
-         * from the data window's top. */
-        for (int64_t y = dw.min.y + (int64_t)(y0 / lines) * lines; y < dw.min.y + (int64_t)y1; y += lines) {
-            exr_chunk_info_t cinfo;
-            rv = exr_read_scanline_chunk_info(ctx, 0, (int)y, &cinfo);
-            if (rv == EXR_ERR_SUCCESS)
-                rv = started ? exr_decoding_update(ctx, 0, &cinfo, &dec)
-                             : exr_decoding_initialize(ctx, 0, &cinfo, &dec);
-            if (rv != EXR_ERR_SUCCESS)
-                goto fail;
-            started = 1;
-            int64_t row = cinfo.start_y - dw.min.y;
-            if (row < 0 || cinfo.height < 1 || row + cinfo.height > h || cinfo.width != w) {
-                rv = EXR_ERR_CORRUPT_CHUNK;
-                goto fail;
-            }
-            for (int c = 0; c < dec.channel_count; c++) {
-                exr_coding_channel_info_t *ch = &dec.channels[c];
-                ch->decode_to_ptr = NULL;
-                for (int k = 0; k < f->nchannels; k++)
-                    if (strcmp(ch->channel_name, f->channels[k].name) == 0) {
-                        /* Planes of their own (never interleaved: see
-                         * SCRATCH_STRIDE); half converted to float. */
-                        ch->user_data_type = f->channels[k].type == IMAGE_CHANNEL_UINT ? EXR_PIXEL_UINT : EXR_PIXEL_FLOAT;
-                        ch->user_bytes_per_element = 4;
-                        ch->user_pixel_stride = 4;
-                        ch->user_line_stride = w * 4;
-                        ch->decode_to_ptr = (uint8_t *)f->channels[k].data + (size_t)row * (size_t)w * 4;
-                    }
-            }
-            rv = exr_decoding_choose_default_routines(ctx, 0, &dec);
-            if (rv == EXR_ERR_SUCCESS)
-                rv = exr_decoding_run(ctx, 0, &dec);
-            if (rv != EXR_ERR_SUCCESS)
-                goto fail;
+        /* each channel as stored: half and float as floats, uint as uint32 */
+        const char **names = malloc(sizeof *names * (size_t)(f->nchannels > 0 ? f->nchannels : 1));
+        void **data = malloc(sizeof *data * (size_t)(f->nchannels > 0 ? f->nchannels : 1));
+        exr_pixel_type_t *types = malloc(sizeof *types * (size_t)(f->nchannels > 0 ? f->nchannels : 1));
+        if (!names || !data || !types) {
+            free(names);
+            free(data);
+            free(types);
+            image_set_error(err, errlen, "out of memory");
+            goto fail_quiet;
         }
+        for (int k = 0; k < f->nchannels; k++) {
+            names[k] = f->channels[k].name;
+            data[k] = f->channels[k].data;
+            types[k] = f->channels[k].type == IMAGE_CHANNEL_UINT ? EXR_PIXEL_UINT : EXR_PIXEL_FLOAT;
+        }
+        rv = decode_rows(ctx, dw, w, h, y0, y1, f->nchannels, names, data, types);
+        free(names);
+        free(data);
+        free(types);
+        if (rv != EXR_ERR_SUCCESS)
+            goto fail;
     }
-    if (started)
-        exr_decoding_destroy(ctx, &dec);
     exr_finish(&ctx);
     return 0;
 
 fail:
     exr_fail(&io, rv);
 fail_quiet:
-    if (started)
-        exr_decoding_destroy(ctx, &dec);
     if (ctx != NULL)
         exr_finish(&ctx);
     image_exr_file_free(f);

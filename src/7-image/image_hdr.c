@@ -237,15 +237,9 @@ int image_hdr_read(FILE *fp, Image *img, char *err, int errlen)
     }
     for (int y = 0; y < h; y++) {
         unsigned char first[4];
-        if (y == cap) {
-            int more = cap * 2 < h ? cap * 2 : h;
-            float *bigger = realloc(img->rgba, (size_t)more * (size_t)w * 4 * sizeof(float));
-            if (bigger == NULL) {
-                why = "out of memory";
-                break;
-            }
-            img->rgba = bigger;
-            cap = more;
+        if (image_grow_rows(img, y, h, &cap)) {
+            why = "out of memory";
+            break;
         }
         if (fread(first, 1, 4, fp) != 4) {
             why = "HDR pixel data is truncated";

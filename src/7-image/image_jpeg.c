@@ -176,15 +176,9 @@ static void jpeg_read_body(struct jpeg_decompress_struct *cinfo, FILE *fp, Image
     }
     for (int y = 0; y < h; y++) {
         JSAMPROW rows[1] = { st->row };
-        if (y == cap) {
-            int more = cap * 2 < h ? cap * 2 : h;
-            float *bigger = realloc(img->rgba, (size_t)more * (size_t)w * 4 * sizeof(float));
-            if (bigger == NULL) {
-                image_set_error(st->je.err, st->je.errlen, "out of memory for a %dx%d image", w, h);
-                longjmp(st->je.jump, 1);
-            }
-            img->rgba = bigger;
-            cap = more;
+        if (image_grow_rows(img, y, h, &cap)) {
+            image_set_error(st->je.err, st->je.errlen, "out of memory for a %dx%d image", w, h);
+            longjmp(st->je.jump, 1);
         }
         if (jpeg_read_scanlines(cinfo, rows, 1) != 1) {
             image_set_error(st->je.err, st->je.errlen, "JPEG data is truncated");

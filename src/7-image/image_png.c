@@ -223,8 +223,8 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
     /* The image grows with the rows decoded (a non-interlaced file): a few
      * corrupt bytes may claim 2^28 pixels, and memory follows the data the
      * file holds, not its header. Interlaced files need all rows at once. */
-    size_t rows_cap = passes > 1 || h < 64 ? h : 64;
-    if (st->lut == NULL || image_alloc(img, (int)w, (int)rows_cap) != 0)
+    int rows_cap = passes > 1 || h < 64 ? (int)h : 64;
+    if (st->lut == NULL || image_alloc(img, (int)w, rows_cap) != 0)
         png_error(st->png, "out of memory");
     st->row = malloc(png_get_rowbytes(st->png, st->info));
     if (st->row == NULL)
@@ -246,14 +246,8 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
         }
         for (png_uint_32 y = 0; y < h; y++) {
             const unsigned char *in;
-            if (y == rows_cap) {
-                size_t more = rows_cap * 2 < h ? rows_cap * 2 : h;
-                float *bigger = realloc(img->rgba, more * w * 4 * sizeof(float));
-                if (bigger == NULL)
-                    png_error(st->png, "out of memory");
-                img->rgba = bigger;
-                rows_cap = more;
-            }
+            if (image_grow_rows(img, (int)y, (int)h, &rows_cap))
+                png_error(st->png, "out of memory");
             float *px = img->rgba + (size_t)y * w * 4;
             if (passes > 1) {
                 in = st->row + png_get_rowbytes(st->png, st->info) * y;

@@ -14,18 +14,6 @@
 #define TGA_EXTENSION 495
 #define TGA_FOOTER 26
 
-static void put16(unsigned char *p, unsigned v)
-{
-    p[0] = (unsigned char)(v & 0xff);
-    p[1] = (unsigned char)(v >> 8 & 0xff);
-}
-
-static void put32(unsigned char *p, unsigned long v)
-{
-    put16(p, (unsigned)(v & 0xffff));
-    put16(p + 2, (unsigned)(v >> 16 & 0xffff));
-}
-
 /* One row of pixels (bpp bytes each) as run-length packets: a run of two or
  * more equal pixels is one repeat packet, anything else goes into raw
  * packets; both hold at most 128 pixels. */
@@ -79,8 +67,8 @@ int image_tga_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, ch
         return -1;
     }
     header[2] = opt->tga_rle ? 10 : 2;
-    put16(header + 12, (unsigned)img->width);
-    put16(header + 14, (unsigned)img->height);
+    image_put_le16(header + 12, (unsigned)img->width);
+    image_put_le16(header + 14, (unsigned)img->height);
     header[16] = (unsigned char)(alpha ? 32 : 24);
     header[17] = alpha ? 0x28 : 0x20; /* top-left origin; 8 alpha bits */
     if (fwrite(header, 1, sizeof header, fp) != sizeof header)
@@ -106,10 +94,10 @@ int image_tga_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, ch
     offset = ftell(fp);
     if (offset < 0)
         goto fail;
-    put16(ext, TGA_EXTENSION);
+    image_put_le16(ext, TGA_EXTENSION);
     snprintf((char *)ext + 426, 41, "%s", opt->software ? opt->software : "hstrace");
     ext[494] = alpha ? 3 : 0; /* attributes: straight alpha, or none */
-    put32(foot, (unsigned long)offset);
+    image_put_le32(foot, (unsigned long)offset);
     memcpy(foot + 8, "TRUEVISION-XFILE.", 18);
     if (fwrite(ext, 1, sizeof ext, fp) != sizeof ext || fwrite(foot, 1, sizeof foot, fp) != sizeof foot)
         goto fail;
@@ -225,17 +213,11 @@ int image_tga_read(FILE *fp, Image *img, double display_gamma, char *err, int er
         return -1;
     }
     for (int y = 0; y < ht; y++) {
-        if (y == cap) {
-            int more = cap * 2 < ht ? cap * 2 : ht;
-            float *bigger = realloc(img->rgba, (size_t)more * (size_t)w * 4 * sizeof(float));
-            if (bigger == NULL) {
-                free(lut);
-                free(lut5);
-                image_set_error(err, errlen, "out of memory for a %dx%d image", w, ht);
-                return -1;
-            }
-            img->rgba = bigger;
-            cap = more;
+        if (image_grow_rows(img, y, ht, &cap)) {
+            free(lut);
+            free(lut5);
+            image_set_error(err, errlen, "out of memory for a %dx%d image", w, ht);
+            return -1;
         }
         float *px = img->rgba + (size_t)y * (size_t)w * 4;
         for (int x = 0; x < w; x++, px += 4) {
