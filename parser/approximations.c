@@ -14,7 +14,7 @@
 static const struct {
     const char *name, *effect;
 } kinds[APPROX_KINDS] = {
-    [APPROX_NORMAL] = { "normal", "surface normal perturbation ignored" },
+    [APPROX_NORMAL] = { "normal", "normal pattern not evaluated: the surface normal left unperturbed" },
     [APPROX_PATTERN] = { "pattern", "pattern shown as one colour, its colour map at 0.5" },
     [APPROX_WARP] = { "warp", "pattern warps other than turbulence ignored" },
     [APPROX_LAYERS] = { "layers", "texture layers blended into one, with the top layer's finish" },
@@ -115,11 +115,23 @@ static void tally_pigment(Tally *t, const Pigment *pig)
     tally_notes(t, pig->approx);
 }
 
+static void tally_normal(Tally *t, const SceneNormal *n, int depth)
+{
+    if (!n || depth > 1000)
+        return;
+    tally_notes(t, n->approx);
+    tally_notes(t, n->pattern.approx);
+    for (int i = 0; i < n->nmap; i++)
+        tally_normal(t, n->map[i].normal, depth + 1);
+    tally_normal(t, n->uv_entry, depth + 1);
+}
+
 static void tally_texture(Tally *t, const SceneTexture *tex)
 {
     if (!tex)
         return;
     tally_notes(t, tex->approx);
+    tally_normal(t, tex->normal, 0);
     tally_pigment(t, &tex->pigment);
     tally_notes(t, tex->finish.approx);
 }

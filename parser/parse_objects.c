@@ -91,11 +91,12 @@ static void object_material(Parser *p, SceneObject *o, const Token *at)
  * object's do not move it (POV-Ray's UV_FLAG). */
 static const SceneTexture *uv_mapped(Parser *p, const SceneTexture *tex)
 {
-    if (!tex || tex->pigment.uv_mapping)
+    if (!tex || (tex->pigment.uv_mapping && (!tex->normal || tex->normal->kind == NORMAL_UV)))
         return tex;
     SceneTexture *copy = palloc(p, sizeof *copy);
     *copy = *tex;
     copy->pigment.uv_mapping = 1;
+    copy->normal = normal_uv_mapped(p, tex->normal);
     return copy;
 }
 
@@ -132,10 +133,10 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             parse_finish(p, &own_texture(p, o, &at)->finish);
             break;
         case KW_normal: {
-            /* not modelled, but as in POV-Ray it gives the object a texture */
+            /* as a pigment: it gives the object a texture of its own */
             SceneTexture *tex = own_texture(p, o, &at);
-            approximate(p, &at, APPROX_NORMAL, &tex->approx);
-            skip_normal(p);
+            tex->normal = parse_normal(p, tex->normal, &at, 1);
+            o->texture_bind = o->transform;
             break;
         }
         case KW_interior: {

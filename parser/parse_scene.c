@@ -328,7 +328,7 @@ static Value parse_rvalue(Parser *p)
             return v;
         case KW_normal:
             v.kind = VAL_NORMAL;
-            skip_normal(p);
+            v.normal = parse_normal(p, NULL, &t, 0);
             return v;
         case KW_sky_sphere: /* skies.inc declares its skies */
             v.kind = VAL_SKY_SPHERE;
@@ -603,7 +603,11 @@ void parse_default_directive(Parser *p)
         }
         case KW_pigment: parse_pigment(p, &d->pigment); break;
         case KW_finish: parse_finish(p, &d->finish); break;
-        case KW_normal: skip_normal(p); break;
+        case KW_normal: {
+            Token at = *t;
+            d->normal = parse_normal(p, d->normal, &at, 0);
+            break;
+        }
         default:
             if (t->type == TK_WORD && t->kw >= 0)
                 unsupported(p, t);
@@ -681,7 +685,18 @@ static void parse_global_settings(Parser *p)
                 parse_fail(p, at.pos, "Value for noise_generator in global_settings must be 1, 2, or 3.");
             break;
         }
-        case KW_number_of_waves: case KW_max_intersections: case KW_hf_gray_16:
+        case KW_number_of_waves: {
+            /* POV-Ray: (int) of the value, at least 1 with a warning */
+            Token at = *peek(p);
+            double v = parse_float(p);
+            if (v > MAX_NUMBER_OF_WAVES)
+                parse_fail(p, at.pos, "number_of_waves %g is more than hstrace supports (%d)", v, MAX_NUMBER_OF_WAVES);
+            g->number_of_waves = v >= 1.0 ? (int)v : 1;
+            if (v < 1.0)
+                parse_warning(p, at.pos, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
+            break;
+        }
+        case KW_max_intersections: case KW_hf_gray_16:
         case KW_mm_per_unit:
             if (token_starts_float(p, peek(p)))
                 (void)parse_float(p);
@@ -771,6 +786,7 @@ static void init_scene(Scene *s)
     s->background.transmit = 1.0;
     s->globals.max_trace_level = 5;
     s->globals.adc_bailout = 1.0 / 255.0;
+    s->globals.number_of_waves = 10;
     s->globals.ambient_light = (Colour){ 1, 1, 1, 0, 0 };
     s->default_texture.pigment.kind = PIGMENT_SOLID;
     transform_identity(&s->default_texture.pigment.transform);

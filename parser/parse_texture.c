@@ -1,4 +1,4 @@
-/* texture, pigment, finish, interior (and normal, which is read and dropped).
+/* texture, pigment, finish, interior (normal: parse_normal.c).
  *
  * Each block starts from its identifier when one comes first, otherwise
  * from the default (POV-Ray copies the default texture), then applies what
@@ -24,7 +24,7 @@ SceneTexture *new_default_texture(Parser *p)
 }
 
 /* The identifier at t when it holds `kind`; errors for other identifiers. */
-static const Value *block_identifier(Parser *p, const Token *t, ValueKind kind, const char *block)
+const Value *block_identifier(Parser *p, const Token *t, ValueKind kind, const char *block)
 {
     if (t->type != TK_WORD || t->kw >= 0)
         return NULL;
@@ -52,10 +52,7 @@ void skip_normal(Parser *p)
  * frequency, phase, omega, lambda ... land where POV-Ray's do. */
 static double single(double v) { return (double)(float)v; }
 
-/* How hstrace treats a pattern keyword in a pigment. */
-typedef enum { PAT_NONE, PAT_EVALUATED, PAT_APPROXIMATED, PAT_UNSUPPORTED } PatternSupport;
-
-static PatternSupport pattern_support(int kw)
+PatternSupport pattern_support(int kw)
 {
     switch (kw) {
     case KW_checker: case KW_hexagon: case KW_gradient:
@@ -119,13 +116,14 @@ static _Noreturn void image_map_unsupported(Parser *p, const Token *at, const ch
     unsupported(p, &t);
 }
 
-/* After 'image_map': POV-Ray 3.7's Parse_Image and Parse_Image_Map for what
- * exporters write: [type] "file" [gamma G|srgb] [premultiplied 0], then
- * once, interpolate 0/2/4, map_type 0, use_colour/use_index, filter all F,
- * transmit all T. */
-static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
+/* POV-Ray 3.7's Parse_Image, after the '{' of `block` (image_map,
+ * bump_map): [type] "file" [gamma G|srgb] [premultiplied 0], the picture
+ * read into pig (kind PIGMENT_IMAGE_MAP, not once, not interpolated).
+ * gamma_correct: colours (image_map) are decoded by the file's gamma and
+ * taken to the scene's working gamma; data (bump_map) are the file's
+ * values as they are, or decoded by a `gamma` given, and left linear. */
+void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct)
 {
-    begin_block(p, "image_map");
     Token *t = next(p);
     int kw = t->type == TK_WORD ? t->kw : -1;
     switch (kw) {
@@ -138,7 +136,7 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
     }
     Token name_at = *peek(p);
     char *name = parse_string(p);
-    double decoding_gamma = -1.0; /* POV-Ray's default for the file's type */
+    double decoding_gamma = gamma_correct ? -1.0 : 1.0; /* -1: POV-Ray's default for the file's type */
     for (;;) {
         Token *o = next(p);
         if (is_kw(o, KW_gamma)) {
@@ -161,7 +159,7 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
         }
     }
     if (!p->opts->load_image) /* a parse without the image layer (the parser's own tests) */
-        image_map_unsupported(p, at, "image_map");
+        image_map_unsupported(p, at, block);
     char *path = find_image_file(p, name);
     if (!path)
         parse_fail(p, name_at.pos, "cannot find the image '%s' (looked in the current folder, the scene's folder and the "
@@ -171,7 +169,7 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
     char why[256] = "";
     if (p->opts->load_image(p->opts->load_image_user, path, decoding_gamma, &w, &h, &rgba, why, (int)sizeof why)) {
         free(rgba);
-        parse_fail(p, name_at.pos, "image_map: %s", why[0] ? why : "unreadable image");
+        parse_fail(p, name_at.pos, "%s: %s", block, why[0] ? why : "unreadable image");
     }
     SceneImage *im = palloc(p, sizeof *im);
     size_t n = (size_t)w * (size_t)h * 4;
@@ -182,7 +180,7 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
         memcpy(kept, rgba, n * sizeof *kept);
     }
     free(rgba);
-    double wg = scene_working_gamma(p->scene);
+    double wg = gamma_correct ? scene_working_gamma(p->scene) : 1.0;
     double sum[3] = { 0, 0, 0 };
     for (size_t i = 0; i < (size_t)w * (size_t)h; i++) {
         for (int c = 0; c < 3; c++) {
@@ -206,6 +204,35 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
     /* where one colour must stand for the picture: its mean */
     double count = (double)w * (double)h;
     pig->colour = (Colour){ sum[0] / count, sum[1] / count, sum[2] / count, 0.0, 0.0 };
+}
+
+int image_interpolation(Parser *p, const Token *at)
+{
+    int v = (int)parse_float(p);
+    if (v == 3)
+        image_map_unsupported(p, at, "interpolate 3 (bicubic; 0, 2 and 4 are supported)");
+    if (v != 0 && v != 2 && v != 4)
+        parse_fail(p, at->pos, "Invalid interpolate value.");
+    return v;
+}
+
+void image_map_type(Parser *p, const Token *at)
+{
+    int v = (int)parse_float(p);
+    if (v != 0) {
+        char what[64];
+        snprintf(what, sizeof what, "map_type %d (map_type 0, planar, is supported)", v);
+        image_map_unsupported(p, at, what);
+    }
+}
+
+/* After 'image_map': POV-Ray 3.7's Parse_Image_Map for what exporters
+ * write: the picture, then once, interpolate 0/2/4, map_type 0,
+ * use_colour/use_index, filter all F, transmit all T. */
+static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
+{
+    begin_block(p, "image_map");
+    parse_image_source(p, pig, at, "image_map", 1);
     for (;;) {
         Token *o = next(p);
         if (is_punct(o, '}'))
@@ -213,24 +240,8 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
         Token here = *o;
         switch (o->type == TK_WORD ? o->kw : -1) {
         case KW_once: pig->image_once = 1; break;
-        case KW_interpolate: {
-            int v = (int)parse_float(p);
-            if (v == 3)
-                image_map_unsupported(p, &here, "interpolate 3 (bicubic; 0, 2 and 4 are supported)");
-            if (v != 0 && v != 2 && v != 4)
-                parse_fail(p, here.pos, "Invalid interpolate value.");
-            pig->image_interpolate = v;
-            break;
-        }
-        case KW_map_type: {
-            int v = (int)parse_float(p);
-            if (v != 0) {
-                char what[64];
-                snprintf(what, sizeof what, "map_type %d (map_type 0, planar, is supported)", v);
-                image_map_unsupported(p, &here, what);
-            }
-            break;
-        }
+        case KW_interpolate: pig->image_interpolate = image_interpolation(p, &here); break;
+        case KW_map_type: image_map_type(p, &here); break;
         case KW_use_colour: case KW_use_color: case KW_use_index: break;
         case KW_filter: case KW_transmit: {
             if (!is_kw(peek(p), KW_all)) {
@@ -304,7 +315,7 @@ static void set_default_map(Parser *p, Pigment *pig, int kw)
  * `omega` and `lambda` written in the pigment change -- the last warp when
  * it is such a classic one, else a new one appended. Warp lists are shared
  * between copies of a pigment, so the list is copied before any change. */
-static PatternTurbulence *classic_turbulence(Parser *p, Pigment *pig)
+PatternTurbulence *classic_turbulence(Parser *p, Pigment *pig)
 {
     int n = pig->nturbulence;
     int append = n == 0 || !pig->turbulence[n - 1].classic;
@@ -325,14 +336,14 @@ static PatternTurbulence *classic_turbulence(Parser *p, Pigment *pig)
     return &list[n - 1];
 }
 
-static int octaves_value(double v)
+int octaves_value(double v)
 {
     return int_clamped(v, 1, 10); /* POV-Ray's limits */
 }
 
 /* warp { ... }: turbulence is modelled, the other warps are approximated
  * (ignored). */
-static void parse_warp(Parser *p, Pigment *pig, const Token *at)
+void parse_warp(Parser *p, Pigment *pig, const Token *at)
 {
     begin_block(p, "warp");
     Token *t = next(p);
@@ -412,7 +423,7 @@ static void parse_colour_list(Parser *p, Pigment *pig, int count)
  * at the map's closing '}', else reads '[' and the entry's value (POV-Ray
  * keeps it in single precision; `optional`: 1 when left out, as average's
  * entries may). */
-static int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int optional, double *value)
+int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int optional, double *value)
 {
     Token *t = next(p);
     if (is_punct(t, '}'))
@@ -473,7 +484,7 @@ static void parse_colour_map(Parser *p, Pigment *pig)
 /* A keyword's arguments when hstrace does not use them: expressions (with
  * commas between) and blocks, so that `spiral2 8`, `warp { ... }` or
  * `brick colour A, colour B` are read past. */
-static void skip_arguments(Parser *p)
+void skip_arguments(Parser *p)
 {
     for (;;) {
         Token *t = peek(p);
@@ -496,7 +507,7 @@ static void skip_arguments(Parser *p)
     }
 }
 
-static int pattern_modifier(int kw)
+int pattern_modifier(int kw)
 {
     switch (kw) {
     case KW_brick_size: case KW_mortar: case KW_form: case KW_metric: case KW_offset:
@@ -946,10 +957,12 @@ void parse_material(Parser *p, const SceneTexture **tex, const Interior **in, co
         Transform moved;
         transform_identity(&moved);
         if (parse_transform_item(p, t, &moved)) {
-            if (*tex && !(*tex)->pigment.uv_mapping) {
+            if (*tex) {
                 SceneTexture *copy = palloc(p, sizeof *copy);
                 *copy = **tex;
-                transform_compose(&copy->pigment.transform, &moved);
+                if (!copy->pigment.uv_mapping)
+                    transform_compose(&copy->pigment.transform, &moved);
+                copy->normal = normal_transformed(p, copy->normal, &moved);
                 *tex = copy;
             }
             continue;
@@ -982,16 +995,22 @@ SceneTexture *parse_texture(Parser *p)
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_pigment: parse_pigment(p, &tex->pigment); break;
         case KW_finish: parse_finish(p, &tex->finish); break;
-        case KW_normal:
-            approximate(p, t, APPROX_NORMAL, &tex->approx);
-            skip_normal(p);
+        case KW_normal: {
+            Token at = *t;
+            tex->normal = parse_normal(p, tex->normal, &at, 1);
             break;
+        }
         default: {
-            /* a uv-mapped pigment is not moved by the texture's transforms */
-            Transform ignored;
-            transform_identity(&ignored);
-            if (parse_transform_item(p, t, tex->pigment.uv_mapping ? &ignored : &tex->pigment.transform))
+            /* A transform moves the pigment and the normal (a uv-mapped
+             * one is not moved by the texture's transforms). */
+            Transform moved;
+            transform_identity(&moved);
+            if (parse_transform_item(p, t, &moved)) {
+                if (!tex->pigment.uv_mapping)
+                    transform_compose(&tex->pigment.transform, &moved);
+                tex->normal = normal_transformed(p, tex->normal, &moved);
                 break;
+            }
             /* A pattern in a texture is a patterned texture: say that, not
              * that the pattern is (Arbaro's trees write them). */
             if (t->type == TK_WORD && t->kw >= 0 && pattern_support(t->kw) != PAT_NONE) {

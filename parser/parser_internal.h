@@ -143,6 +143,7 @@ typedef struct {
     SceneLight *light;
     SceneTexture *texture;
     Pigment *pigment;
+    const SceneNormal *normal;
     Finish *finish;
     Interior *interior;
     const SceneTexture *material_texture;
@@ -509,6 +510,36 @@ void parse_interior(Parser *p, Interior *in); /* after 'interior' */
  * (not the object). at: the 'material' keyword. */
 void parse_material(Parser *p, const SceneTexture **tex, const Interior **in, const Token *at);
 void skip_normal(Parser *p);              /* after 'normal' */
+/* The identifier at t when it holds `kind` (NULL when t is none; an error
+ * for an identifier of another kind). */
+const Value *block_identifier(Parser *p, const Token *t, ValueKind kind, const char *block);
+/* How hstrace treats a pattern keyword in a pigment. */
+typedef enum { PAT_NONE, PAT_EVALUATED, PAT_APPROXIMATED, PAT_UNSUPPORTED } PatternSupport;
+PatternSupport pattern_support(int kw);
+int pattern_modifier(int kw);     /* a modifier of patterns hstrace does not evaluate */
+void skip_arguments(Parser *p);   /* such a keyword's arguments */
+/* POV-Ray's Check_Turb: the turbulence `turbulence`, `octaves` ... change. */
+PatternTurbulence *classic_turbulence(Parser *p, Pigment *pig);
+int octaves_value(double v);
+void parse_warp(Parser *p, Pigment *pig, const Token *at); /* after 'warp' */
+/* A blend map's next entry: 0 at its '}', else 1 after '[' and the value. */
+int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int optional, double *value);
+/* A picture of image_map or bump_map (`block`), after its '{'. */
+void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct);
+int image_interpolation(Parser *p, const Token *at); /* after 'interpolate' */
+void image_map_type(Parser *p, const Token *at);     /* after 'map_type': 0 only */
+
+/* parse_normal.c */
+/* After 'normal' (kw): the normal `from` (NULL: the default texture's)
+ * modified by the block. need_pattern: a normal that ends up with no
+ * pattern is an error (POV-Ray's "No normal type given." for what objects
+ * use; #default and #declare may leave the pattern to later blocks). */
+const SceneNormal *parse_normal(Parser *p, const SceneNormal *from, const Token *kw, int need_pattern);
+/* A copy moved by tr (pattern space to texture space, then tr), as a
+ * texture's transforms move its normal; a uv-mapped normal stays. */
+const SceneNormal *normal_transformed(Parser *p, const SceneNormal *n, const Transform *tr);
+/* The normal seen at the surface's (u, v, 0): an object's uv_mapping. */
+const SceneNormal *normal_uv_mapped(Parser *p, const SceneNormal *n);
 /* A layer `top` over `below` (both copied): one texture, see parse_texture.c. */
 SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at);
 /* sky_sphere { pigment {...} ... transforms } after 'sky_sphere'. */

@@ -283,7 +283,7 @@ check "a pigment_map entry with a pattern of its own is reported as approximated
 # --strict and the approximation report.
 cat >"$work/approx.pov" <<'POV'
 #version 3.7;
-#declare Bumpy = texture { pigment { rgb 1 } normal { bumps 0.5 scale 0.1 } }
+#declare Bumpy = texture { pigment { rgb 1 } normal { crackle 0.5 scale 0.1 } }
 camera { location <0, 1, -4> look_at 0 }
 light_source { <2, 4, -3> rgb 1 area_light x, y, 2, 2 }
 plane { y, -1 pigment { crackle color_map { [0 rgb 0] [1 rgb 1] } } }
@@ -296,7 +296,7 @@ check "a warning names the approximated pattern at FILE:LINE:COLUMN" \
 check "--stats lists the area_light approximation with its position" \
     grep -q "area light rendered as a point light at its centre: 1 place, first 'area_light' at .*approx.pov:4:33" "$work/err"
 check "--stats-json lists the normal approximation with its position" \
-    grep -q '"kind": "normal", "count": 1, "first": ".*approx.pov:2:46"' "$work/a.json"
+    grep -q '"kind": "normal", "count": 1, "first": ".*approx.pov:2:55", "what": "'"'"'crackle'"'"'"' "$work/a.json"
 run "$work/approx.pov" --width 40 --height 30 -o "$work/s.png" --strict
 check "--strict: the first approximation is an error at FILE:LINE:COLUMN, status 2" \
     exited 2 "approx.pov:4:33: 'area_light' is only approximated by hstrace (area light rendered as a point light at its centre); --strict makes it an error"

@@ -209,7 +209,7 @@ static void test_approximations(void)
     scene_free(s);
     s = parse("#declare P = pigment { crackle color_map { [0 rgb 0] [1 rgb <1,0,0>] } }\n"
               "box { 0, 1 pigment { P } }\nbox { 0, 1 pigment { P } }\n"
-              "box { 0, 1 normal { bumps 0.5 } }\n"
+              "box { 0, 1 normal { facets 0.5 } }\n"
               "light_source { 0, 1 area_light x, y, 3, 3 adaptive 1 jitter }\n"
               "global_settings { radiosity { } }\n");
     tap_ok(s != NULL, "approximated features parse");
@@ -226,7 +226,7 @@ static void test_approximations(void)
         tap_ok(pattern >= 0 && s->approximations[pattern].count == 1 && s->approximations[pattern].first.line == 1 &&
                    s->approximations[pattern].first.column == 24 && strcmp(s->approximations[pattern].what, "'crackle'") == 0,
                "a declared pattern used twice: one place, at its declaration 1:24");
-        tap_ok(normal >= 0 && s->approximations[normal].first.line == 4, "object normal at line 4");
+        tap_ok(normal >= 0 && s->approximations[normal].first.line == 4, "object normal (facets) at line 4");
         tap_ok(area >= 0 && rad >= 0, "area_light and radiosity reported");
         tap_ok(colour_is(s->objects[0]->texture->pigment.colour, 0.5, 0, 0, 0, 0) &&
                    s->objects[0]->texture->pigment.kind == PIGMENT_SOLID,
@@ -270,18 +270,23 @@ static void test_strict(void)
                            "box { 0, 1 pigment { uv_mapping spiral2 8 } }\n", &strict_opts);
     tap_ok(ok != NULL, "--strict accepts bozo, turbulence, spiral2 and uv_mapping (evaluated, not approximated)");
     scene_free(ok);
-    expect_error_with(&strict_opts, "box { 0, 1\n  normal { bumps 0.4 } }", 2, 3, "'normal' is only approximated",
-                      "--strict: normal");
+    expect_error_with(&strict_opts, "box { 0, 1\n  normal { facets 0.4 } }", 2, 12, "'facets' is only approximated",
+                      "--strict: a normal pattern hstrace does not evaluate");
+    Scene *bumps = parse_with("box { 0, 1 normal { bumps 0.4 scale 0.1 } }\n"
+                              "box { 0, 1 normal { granite slope_map { [0 <0, 1>] [1 <1, 0>] } } }\n",
+                              &strict_opts);
+    tap_ok(bumps != NULL, "--strict accepts bumps and a granite slope_map (evaluated, not approximated)");
+    scene_free(bumps);
     expect_error_with(&strict_opts, "light_source { 0, 1 area_light x, y, 2, 2 }", 1, 21,
                       "'area_light' is only approximated", "--strict: area_light");
     expect_error_with(&strict_opts, "global_settings { photons { count 100 } }", 1, 19, "'photons' is only approximated",
                       "--strict: photons");
     expect_error_with(&strict_opts, "camera { location -z aperture 0.4 focal_point 0 }", 1, 22,
                       "'aperture' is only approximated", "--strict: focal blur");
-    expect_error_with(&strict_opts, "#declare T = texture { normal { bumps 1 } }\n\nbox { 0, 1 texture { T } }", 3, 22,
-                      "'normal' is only approximated by hstrace; --strict makes it an error (declared at t.pov:1)",
+    expect_error_with(&strict_opts, "#declare T = texture { normal { facets 1 } }\n\nbox { 0, 1 texture { T } }", 3, 22,
+                      "'facets' is only approximated by hstrace; --strict makes it an error (declared at t.pov:1)",
                       "--strict: a declared approximation fails at its use, naming the declaration");
-    Scene *s = parse_with("#declare T = texture { normal { bumps 1 } }\n#include \"textures.inc\"\nbox { 0, 1 }", &strict_opts);
+    Scene *s = parse_with("#declare T = texture { normal { facets 1 } }\n#include \"textures.inc\"\nbox { 0, 1 }", &strict_opts);
     tap_ok(s != NULL, "--strict: unused approximations in declarations and include files are fine");
     scene_free(s);
     s = parse_with("#include \"colors.inc\"\n#include \"metals.inc\"\n#include \"finish.inc\"\n"

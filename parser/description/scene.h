@@ -143,6 +143,57 @@ typedef struct {
     const ApproxNote *approx;
 } Pigment;
 
+/* How a normal perturbs the surface normal (POV-Ray 3.7's normal.cpp):
+ * the patterns made only for normals displace it by their own formulas;
+ * any other pattern by its slope, sampled at four points around the
+ * point (Perturb_Normal); normal_map and average combine other normals. */
+typedef enum {
+    NORMAL_NONE,     /* no pattern (or one hstrace does not evaluate): the normal unchanged */
+    NORMAL_PATTERN,  /* the pattern of `pattern` (checker ... spiral2) by its slope */
+    NORMAL_BUMPS,    /* vector noise */
+    NORMAL_DENTS,    /* vector noise times noise cubed */
+    NORMAL_WRINKLES, /* 10 octaves of |vector noise| */
+    NORMAL_WAVES,    /* number_of_waves sources, each its own frequency */
+    NORMAL_RIPPLES,  /* number_of_waves sources, one frequency */
+    NORMAL_QUILTED,  /* unit cubes, rounded by control0 and control1 */
+    NORMAL_AVERAGE,  /* the entries' perturbations, weighed */
+    NORMAL_BUMP_MAP, /* the slope of a picture's brightness (pattern.image) */
+    NORMAL_UV,       /* uv_mapping: `uv_entry` at the surface's (u, v, 0) */
+} NormalKind;
+
+/* One [value, <height, slope>] entry of a slope_map. */
+typedef struct {
+    double value, height, slope;
+} SlopeMapEntry;
+
+struct SceneNormal;
+
+/* One [value normal {...}] entry of a normal_map, or of average's list. */
+typedef struct {
+    double value;
+    const struct SceneNormal *normal;
+} NormalMapEntry;
+
+/* POV-Ray's TNORMAL. `pattern` holds what a normal shares with a pigment:
+ * the pattern kind and its parameters, frequency, phase, wave, turbulence,
+ * noise generator, the transform (pattern space to texture space; a map's
+ * entries are relative to their normal's pattern space) and a bump_map's
+ * picture. Its colour fields are unused. */
+typedef struct SceneNormal {
+    NormalKind kind;
+    Pigment pattern;
+    double amount;        /* bump_size (or the value after the pattern), default 0.5 */
+    double accuracy;      /* the sample spacing of slopes, default 0.02 */
+    int no_bump_scale;    /* POV-Ray's DONT_SCALE_BUMPS_FLAG */
+    double control0, control1; /* quilted, default 1 and 1 */
+    int nslope;           /* slope_map, sorted by value as written */
+    const SlopeMapEntry *slope;
+    int nmap;             /* normal_map, average's entries, or a checker's / hexagon's normals */
+    const NormalMapEntry *map;
+    const struct SceneNormal *uv_entry; /* NORMAL_UV */
+    const ApproxNote *approx;
+} SceneNormal;
+
 /* POV-Ray 3.7 finish, with its defaults (see scene_default_finish). */
 typedef struct {
     double ambient[3];    /* default 0.1 (scaled by global ambient_light) */
@@ -175,6 +226,7 @@ typedef struct {
 
 typedef struct SceneTexture {
     Pigment pigment;
+    const SceneNormal *normal; /* NULL: the surface's own normal */
     Finish finish;
     SourcePos pos;
     const ApproxNote *approx; /* the texture's own: normal, layering */
@@ -307,6 +359,9 @@ typedef struct {
 /* POV-Ray's bound on max_trace_level (configbackend.h there): the ray
  * tree, which the renderer walks recursively, is never deeper. */
 #define MAX_TRACE_LEVEL_LIMIT 256
+/* hstrace's bound on number_of_waves (POV-Ray has none): every shading
+ * point of waves and ripples visits every source. */
+#define MAX_NUMBER_OF_WAVES 10000
 
 typedef struct {
     double assumed_gamma;   /* 0 when not given */
@@ -317,6 +372,7 @@ typedef struct {
     int assumed_gamma_srgb; /* `assumed_gamma srgb` (assumed_gamma is then 0) */
     int noise_generator;    /* 0 when not given: 2, or 1 before #version 3.5 */
     int radiosity;          /* a radiosity block was given (not modelled) */
+    int number_of_waves;    /* waves and ripples: their sources; default 10 */
 } GlobalSettings;
 
 /* sky_sphere: pigments on the unit sphere of directions, the last written

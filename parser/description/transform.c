@@ -132,6 +132,15 @@ Vec3 transform_direction(const Transform *t, Vec3 d) { return mul_direction(t->m
 Vec3 inverse_transform_point(const Transform *t, Vec3 p) { return mul_point(t->inv, p); }
 Vec3 inverse_transform_direction(const Transform *t, Vec3 d) { return mul_direction(t->inv, d); }
 
+Vec3 inverse_transform_normal(const Transform *t, Vec3 n)
+{
+    /* n * M^T: row i of the forward matrix dotted with n (POV-Ray's MInvTransNormal). */
+    const double (*v)[4] = t->m;
+    return v3(n.x * v[0][0] + n.y * v[0][1] + n.z * v[0][2],
+              n.x * v[1][0] + n.y * v[1][1] + n.z * v[1][2],
+              n.x * v[2][0] + n.y * v[2][1] + n.z * v[2][2]);
+}
+
 Vec3 transform_normal(const Transform *t, Vec3 n)
 {
     /* n * (M^-1)^T: row i of the inverse dotted with n. */

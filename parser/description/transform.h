@@ -26,6 +26,8 @@ Vec3 transform_point(const Transform *t, Vec3 p);
 Vec3 transform_direction(const Transform *t, Vec3 d);
 /* Normals transform with the inverse transpose. */
 Vec3 transform_normal(const Transform *t, Vec3 n);
+/* The other way (world normals into object space): n * M^T. */
+Vec3 inverse_transform_normal(const Transform *t, Vec3 n);
 Vec3 inverse_transform_point(const Transform *t, Vec3 p);
 Vec3 inverse_transform_direction(const Transform *t, Vec3 d);
 

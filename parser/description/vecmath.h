@@ -11,6 +11,8 @@
 
 typedef struct { double x, y, z; } Vec3;
 
+#define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
+
 static inline Vec3 v3(double x, double y, double z) { Vec3 r = { x, y, z }; return r; }
 static inline Vec3 v3_add(Vec3 a, Vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
 static inline Vec3 v3_sub(Vec3 a, Vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }

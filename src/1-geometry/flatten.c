@@ -8,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
 typedef struct {
     World *w;
@@ -72,6 +71,12 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
         m->pattern_to_world = tex->pigment.transform;
         if (!tex->pigment.uv_mapping) /* uv space is the surface's own: nothing moves it */
             transform_compose(&m->pattern_to_world, texture_space);
+    }
+    if (tex->normal && tex->normal->kind != NORMAL_NONE) {
+        m->normal = tex->normal;
+        m->normal_to_world = tex->normal->pattern.transform;
+        if (tex->normal->kind != NORMAL_UV)
+            transform_compose(&m->normal_to_world, texture_space);
     }
     m->finish = tex->finish;
     /* POV-Ray keeps 1/roughness internally; so do we. */
@@ -233,7 +238,7 @@ static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, in
 static int uses_uv(const World *w, int material)
 {
     const Material *m = &w->materials[material];
-    return m->pattern.kind != PIGMENT_SOLID && m->pattern.uv_mapping;
+    return (m->pattern.kind != PIGMENT_SOLID && m->pattern.uv_mapping) || (m->normal && m->normal->kind == NORMAL_UV);
 }
 
 /* Gives the polygon added last the uv coordinates of its first 3 points
@@ -530,6 +535,7 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     w->bounds_min = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
     w->bounds_max = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
     w->noise_generator = scene_noise_generator(scene);
+    w->number_of_waves = scene->globals.number_of_waves;
     Builder b = { .w = w };
     Inherited root;
     memset(&root, 0, sizeof root);

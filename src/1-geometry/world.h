@@ -19,6 +19,10 @@ typedef struct {
      * material_colour_at (pigment.h). */
     Pigment pattern;
     Transform pattern_to_world;
+    /* The texture's normal (NULL: none; read-only, the scene's) and its
+     * pattern space to world, as pattern_to_world for the pigment. */
+    const SceneNormal *normal;
+    Transform normal_to_world;
     Finish finish;        /* roughness already inverted, as POV-Ray uses it */
     double ior;
     /* Identity of the interior: POV-Ray gives each top-level object one,
@@ -111,6 +115,7 @@ typedef struct {
     int max_trace_level;
     double adc_bailout;
     int noise_generator;  /* of patterns that name none (scene_noise_generator) */
+    int number_of_waves;  /* global_settings: the sources of waves and ripples normals */
     Vec3 bounds_min, bounds_max; /* of all polygons; empty when min > max */
     int ndegenerate;      /* polygons dropped at build: no area, up to rounding */
 } World;

@@ -12,7 +12,6 @@
 #include "convert.h"
 #include "noise.h"
 
-#define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
 /* POV-Ray's FLOOR macro: floor() written so that -0 and exact negative
  * integers land as POV-Ray's do. */
@@ -216,8 +215,17 @@ static double wave(const Pigment *pig, double v)
 
 double pattern_value(const Pigment *pig, Vec3 p)
 {
-    int generator = pig->noise_generator ? pig->noise_generator : NOISE_RANGE_CORRECTED;
-    p = warp_point(pig, p);
+    return pattern_value_warped(pig, warp_point(pig, p), NOISE_RANGE_CORRECTED);
+}
+
+Vec3 pattern_warp(const Pigment *pig, Vec3 p)
+{
+    return warp_point(pig, p);
+}
+
+double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator)
+{
+    int generator = pig->noise_generator ? pig->noise_generator : default_generator;
     double v;
     switch (pig->kind) {
     case PIGMENT_CHECKER: v = checker_value(p); break;
@@ -274,21 +282,34 @@ static void image_pixel(const Pigment *pig, double xc, double yc, float out[5])
     out[4] = (1.0f - px[3]) + (float)pig->image_transmit_all; /* transmit all adds to the alpha channel's */
 }
 
-static Colour image_map_at(const Pigment *pig, Vec3 p)
+int image_map_position(const Pigment *pig, Vec3 p, double *x, double *y)
 {
     const SceneImage *im = pig->image;
     const double w = (double)im->width, h = (double)im->height;
     /* planar_image_map with POV-Ray's gradient <1, -1, 0>: x across, y up */
     if (pig->image_once && (p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0))
-        return (Colour){ 1, 1, 1, 0, 1 }; /* off the picture: clear */
+        return 0;
     double xc = fmod(p.x * w, w), yc = fmod(p.y * h, h);
     /* map_pos */
     xc += POV_EPSILON;
     yc += POV_EPSILON;
     if (pig->image_once && (xc >= w || yc >= h || xc < 0.0 || yc < 0.0))
-        return (Colour){ 1, 1, 1, 0, 1 };
-    xc = pov_wrap(xc, w);
-    yc = pov_wrap(-yc, h); /* the picture's rows run down */
+        return 0;
+    *x = pov_wrap(xc, w);
+    *y = pov_wrap(-yc, h); /* the picture's rows run down */
+    return 1;
+}
+
+static Colour image_map_at(const Pigment *pig, Vec3 p)
+{
+    double xc, yc;
+    if (!image_map_position(pig, p, &xc, &yc))
+        return (Colour){ 1, 1, 1, 0, 1 }; /* off the picture: clear */
+    return image_colour_at(pig, xc, yc);
+}
+
+Colour image_colour_at(const Pigment *pig, double xc, double yc)
+{
     float c[5];
     if (pig->image_interpolate == 0) {
         image_pixel(pig, xc, yc, c);

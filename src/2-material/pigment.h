@@ -14,6 +14,20 @@
  * generator of 0 stands for POV-Ray's default, 2. */
 double pattern_value(const Pigment *pig, Vec3 p);
 
+/* pattern_value in two steps, as POV-Ray's normals take it: the point
+ * displaced by the pattern's turbulence (Warp_EPoint after the transform),
+ * then the value at a point so displaced (Evaluate_TPat), with the noise
+ * generator `default_generator` where the pattern names none. */
+Vec3 pattern_warp(const Pigment *pig, Vec3 p);
+double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator);
+
+/* An image_map's or bump_map's picture (map_type 0): where point p of
+ * pattern space falls on it, in pixels from its top left (POV-Ray's
+ * map_pos); 0 when off a picture used `once`. */
+int image_map_position(const Pigment *pig, Vec3 p, double *x, double *y);
+/* Its colour there, interpolated as the pigment says. */
+Colour image_colour_at(const Pigment *pig, double x, double y);
+
 /* The colour at a point in pattern space (solid pigments: their colour). */
 Colour pigment_at(const Pigment *pig, Vec3 p);
 

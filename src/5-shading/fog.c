@@ -5,7 +5,6 @@
 #include "fog.h"
 #include "noise.h"
 
-#define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 #define POV_BOUND_HUGE 2.0e10 /* POV-Ray's depth of a ray that hits nothing */
 
 static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589 * g + 0.114 * b; }

@@ -8,12 +8,12 @@
 #include "aov_pixel.h"
 #include "fog.h"
 #include "intersect.h"
+#include "normal.h"
 #include "pigment.h"
 #include "shadow.h"
 #include "shadow_coherence.h"
 #include "shadow_decide.h"
 
-#define POV_EPSILON 1.0e-10 /* POV-Ray's EPSILON */
 
 /* POV-Ray's greyscale weights (base/types.h). */
 static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589 * g + 0.114 * b; }
@@ -496,6 +496,12 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
     Vec3 normal = raw;
+    if (m->normal && ctx->quality.normal) {
+        const int polygon = hit.kind == HIT_POLYGON ? hit.index : -1;
+        const NormalSetting setting = normal_setting_of(w);
+        Vec3 uv = m->normal->kind == NORMAL_UV ? surface_uv(w, polygon, hit.point) : v3(0, 0, 0);
+        normal = normal_perturb(&setting, m->normal, &m->normal_to_world, hit.point, uv, raw);
+    }
     const Colour surface = material_colour_at(w, m, hit.kind == HIT_POLYGON ? hit.index : -1, hit.point);
     const Colour *pc = &surface;
     RGB pigment = { pc->r, pc->g, pc->b };

@@ -16,6 +16,7 @@ typedef struct {
     int reflection;     /* Q >= 8 */
     int full_ambient;   /* Q <= 1: pigment colour only */
     int volume;         /* Q >= 9: fog, and POV-Ray's "advanced light" (radiosity) */
+    int normal;         /* Q >= 8: normal perturbation */
 } Quality;
 
 /* The secondary rays shading sent, for the statistics (summed over threads). */

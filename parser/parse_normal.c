@@ -1,0 +1,392 @@
+/* normal { ... }: POV-Ray 3.7's Parse_Tnormal and the normal side of its
+ * Parse_Pattern (parstxtr.cpp there).
+ *
+ * A normal starts from its identifier when one comes first, else from the
+ * normal it modifies (a texture's own), else from the default texture's,
+ * else from nothing: amount 0.5, accuracy 0.02. Then one pattern, the
+ * amount after it, and the modifiers. The patterns made for normals
+ * (bumps, dents, wrinkles, waves, ripples, quilted), bump_map, average
+ * and uv_mapping are read with what they take; of the others, those
+ * hstrace evaluates for pigments displace the normal by their slope (the
+ * engine's src/2-material/normal.c), and the rest are approximated: the
+ * normal is left as it is, with a note. */
+#include <stdio.h>
+#include <string.h>
+
+#include "parser_internal.h"
+
+static double single(double v) { return (double)(float)v; }
+
+/* A normal with nothing given (POV-Ray's Create_Tnormal). */
+static SceneNormal fresh_normal(Parser *p)
+{
+    SceneNormal n;
+    memset(&n, 0, sizeof n);
+    n.kind = NORMAL_NONE;
+    n.pattern = p->scene->default_texture.pigment;
+    n.pattern.kind = PIGMENT_SOLID;
+    n.pattern.nmap = 0;
+    n.pattern.map = NULL;
+    n.pattern.nturbulence = 0;
+    n.pattern.turbulence = NULL;
+    n.pattern.uv_mapping = 0;
+    n.pattern.noise_generator = 0;
+    n.pattern.approx = NULL;
+    n.pattern.frequency = 1.0;
+    n.pattern.phase = 0.0;
+    n.pattern.wave = WAVE_RAMP;
+    transform_identity(&n.pattern.transform);
+    n.amount = 0.5;
+    n.accuracy = single(0.02);
+    n.control0 = n.control1 = 1.0;
+    return n;
+}
+
+/* Where a normal starts: a copy of `from`, of the default texture's
+ * normal, or a fresh one. */
+static SceneNormal *start_normal(Parser *p, const SceneNormal *from)
+{
+    SceneNormal *n = palloc(p, sizeof *n);
+    if (!from)
+        from = p->scene->default_texture.normal;
+    *n = from ? *from : fresh_normal(p);
+    return n;
+}
+
+static void normal_items(Parser *p, SceneNormal *n, int close, const Token *kw, int need_pattern);
+
+/* A normal read from `items` up to `close`, starting as start_normal. */
+static const SceneNormal *entry_normal(Parser *p, int close, const Token *at)
+{
+    SceneNormal *n = start_normal(p, NULL);
+    normal_items(p, n, close, at, 1);
+    return n;
+}
+
+/* After checker or hexagon: up to `count` `normal { }` items, commas
+ * optional (Parse_Blend_List). None: the pattern's own slope. Missing
+ * ones: the default texture's normal (none: the normal unchanged). */
+static void parse_normal_list(Parser *p, SceneNormal *n, int count)
+{
+    if (!is_kw(peek(p), KW_normal))
+        return;
+    NormalMapEntry *e = palloc(p, sizeof *e * (size_t)count);
+    int i = 0;
+    while (i < count && is_kw(peek(p), KW_normal)) {
+        Token at = *next(p);
+        begin_block(p, "normal");
+        e[i].normal = entry_normal(p, '}', &at);
+        e[i].value = i;
+        i++;
+        parse_comma(p);
+    }
+    for (; i < count; i++) {
+        e[i].normal = p->scene->default_texture.normal;
+        e[i].value = i;
+    }
+    n->map = e;
+    n->nmap = count;
+}
+
+/* normal_map { [value normal items] ... } and average's list, whose
+ * values may be left out (1). */
+static void parse_normal_map(Parser *p, SceneNormal *n, int average)
+{
+    begin_block(p, "normal_map");
+    TempVec entries;
+    tvec_init(&entries, sizeof(NormalMapEntry));
+    double v;
+    while (blend_map_entry(p, "normal_map", &entries, average, &v)) {
+        Token at = p->tok;
+        NormalMapEntry *e = tvec_push(p, &entries);
+        e->value = v;
+        e->normal = entry_normal(p, ']', &at);
+    }
+    if (entries.n < 1)
+        parse_fail(p, p->tok.pos, "Must have at least one entry in map.");
+    NormalMapEntry *kept = palloc(p, sizeof *kept * (size_t)entries.n);
+    memcpy(kept, entries.data, sizeof *kept * (size_t)entries.n);
+    n->map = kept;
+    n->nmap = entries.n;
+}
+
+/* slope_map { [value, <height, slope>] ... } */
+static void parse_slope_map(Parser *p, SceneNormal *n)
+{
+    begin_block(p, "slope_map");
+    TempVec entries;
+    tvec_init(&entries, sizeof(SlopeMapEntry));
+    double v;
+    while (blend_map_entry(p, "slope_map", &entries, 0, &v)) {
+        SlopeMapEntry *e = tvec_push(p, &entries);
+        e->value = v;
+        Vec3 hs = parse_vector(p); /* POV-Ray's UV vector: two values */
+        e->height = hs.x;
+        e->slope = hs.y;
+        expect_punct(p, ']', "a slope_map entry");
+    }
+    if (entries.n < 1)
+        parse_fail(p, p->tok.pos, "Must have at least one entry in map.");
+    SlopeMapEntry *kept = palloc(p, sizeof *kept * (size_t)entries.n);
+    memcpy(kept, entries.data, sizeof *kept * (size_t)entries.n);
+    n->slope = kept;
+    n->nslope = entries.n;
+}
+
+/* bump_map { [type] "file" [gamma G] ... once interpolate map_type
+ * bump_size use_color use_index } */
+static void parse_bump_map(Parser *p, SceneNormal *n, const Token *at)
+{
+    begin_block(p, "bump_map");
+    parse_image_source(p, &n->pattern, at, "bump_map", 0);
+    for (;;) {
+        Token *o = next(p);
+        if (is_punct(o, '}'))
+            return;
+        Token here = *o;
+        switch (o->type == TK_WORD ? o->kw : -1) {
+        case KW_once: n->pattern.image_once = 1; break;
+        case KW_interpolate: n->pattern.image_interpolate = image_interpolation(p, &here); break;
+        case KW_map_type: image_map_type(p, &here); break;
+        case KW_bump_size: n->amount = single(parse_float(p)); break;
+        case KW_use_colour: case KW_use_color: break;
+        case KW_use_index:
+            /* POV-Ray takes a palette picture's indices as heights; hstrace
+             * keeps no palette, so its colours' brightness stands in */
+            approximate(p, &here, APPROX_NORMAL, &n->approx);
+            break;
+        default:
+            if (o->type == TK_WORD && o->kw >= 0)
+                unsupported(p, o); /* repeat, offset, ... */
+            fail_expected(p, o, "once, interpolate, map_type, bump_size, use_color, use_index or '}' in 'bump_map'");
+        }
+    }
+}
+
+/* The pattern keyword kw (already read) of a normal. Returns 0 when kw is
+ * no pattern. */
+static int normal_pattern(Parser *p, SceneNormal *n, const Token *at)
+{
+    int kw = at->type == TK_WORD ? at->kw : -1;
+    Pigment *pat = &n->pattern;
+    NormalKind special = NORMAL_NONE;
+    switch (kw) {
+    case KW_bumps: special = NORMAL_BUMPS; break;
+    case KW_dents: special = NORMAL_DENTS; break;
+    case KW_wrinkles: special = NORMAL_WRINKLES; break;
+    case KW_waves: special = NORMAL_WAVES; break;
+    case KW_ripples: special = NORMAL_RIPPLES; break;
+    case KW_quilted: special = NORMAL_QUILTED; break;
+    case KW_average: special = NORMAL_AVERAGE; break;
+    case KW_bump_map: special = NORMAL_BUMP_MAP; break;
+    default: break;
+    }
+    n->nmap = 0;
+    n->map = NULL;
+    if (special != NORMAL_NONE) {
+        n->kind = special;
+        if (special == NORMAL_QUILTED) {
+            n->control0 = n->control1 = 1.0;
+            pat->frequency = 0.0;
+        }
+        if (special == NORMAL_BUMP_MAP) {
+            pat->frequency = 0.0;
+            parse_bump_map(p, n, at);
+        }
+        return 1;
+    }
+    if (kw == KW_image_map)
+        parse_fail(p, at->pos, "Keyword 'image_map' can only be used in a pigment statement.");
+    switch (pattern_support(kw)) {
+    case PAT_EVALUATED:
+        n->kind = NORMAL_PATTERN;
+        pat->wave = WAVE_RAMP;
+        switch (kw) {
+        case KW_gradient: {
+            Token vt = *peek(p);
+            Vec3 g = parse_vector(p);
+            if (v3_length(g) == 0.0)
+                parse_fail(p, vt.pos, "the gradient vector must not be zero");
+            pat->gradient = v3_normalize(g);
+            pat->kind = PIGMENT_GRADIENT;
+            break;
+        }
+        case KW_checker: case KW_hexagon:
+            pat->kind = kw == KW_checker ? PIGMENT_CHECKER : PIGMENT_HEXAGON;
+            pat->frequency = 0.0; /* as POV-Ray: the value is the entry's index */
+            parse_normal_list(p, n, kw == KW_checker ? 2 : 3);
+            break;
+        case KW_bozo: case KW_spotted: pat->kind = PIGMENT_BOZO; break;
+        case KW_granite: pat->kind = PIGMENT_GRANITE; break;
+        case KW_marble: pat->kind = PIGMENT_MARBLE; pat->wave = WAVE_TRIANGLE; break;
+        case KW_wood: pat->kind = PIGMENT_WOOD; pat->wave = WAVE_TRIANGLE; break;
+        case KW_agate:
+            pat->kind = PIGMENT_AGATE;
+            pat->agate_turb = 1.0;
+            (void)classic_turbulence(p, pat); /* agate's own turbulence */
+            break;
+        case KW_spiral1: case KW_spiral2:
+            pat->kind = kw == KW_spiral1 ? PIGMENT_SPIRAL1 : PIGMENT_SPIRAL2;
+            pat->arms = (short)int_as_povray(parse_float(p));
+            pat->wave = WAVE_TRIANGLE;
+            break;
+        default: /* bumps and wrinkles are the normals' own, above */
+            break;
+        }
+        return 1;
+    case PAT_APPROXIMATED: /* brick, crackle, facets, leopard, onion, radial ...: not evaluated */
+        approximate(p, at, APPROX_NORMAL, &n->approx);
+        n->kind = NORMAL_NONE;
+        skip_arguments(p);
+        return 1;
+    case PAT_UNSUPPORTED:
+        unsupported(p, at);
+    case PAT_NONE:
+        break;
+    }
+    return 0;
+}
+
+/* The items of a normal up to `close` ('}' of a block, ']' of a map
+ * entry); kw: where the normal was named, for its errors. */
+static void normal_items(Parser *p, SceneNormal *n, int close, const Token *kw, int need_pattern)
+{
+    int patterned = n->kind != NORMAL_NONE || n->approx;
+    Token *t = next(p);
+    const Value *id = block_identifier(p, t, VAL_NORMAL, "normal");
+    if (id) {
+        *n = *id->normal;
+        patterned = 1;
+        t = next(p);
+    }
+    if (is_kw(t, KW_uv_mapping)) {
+        /* POV-Ray: a new normal made of the rest of the block, seen at the
+         * surface's (u, v, 0) */
+        SceneNormal *entry = start_normal(p, NULL);
+        normal_items(p, entry, close, kw, need_pattern);
+        SceneNormal wrapper = fresh_normal(p);
+        wrapper.kind = NORMAL_UV;
+        wrapper.uv_entry = entry;
+        *n = wrapper;
+        return;
+    }
+    Token at = *t;
+    if (normal_pattern(p, n, &at)) {
+        patterned = 1;
+    } else {
+        unget(p);
+    }
+    parse_comma(p);
+    if (token_starts_float(p, peek(p)))
+        n->amount = single(parse_float(p));
+    for (;;) {
+        t = next(p);
+        if (is_punct(t, close))
+            break;
+        Token here = *t;
+        if (parse_transform_item(p, t, &n->pattern.transform))
+            continue;
+        int k = t->type == TK_WORD ? t->kw : -1;
+        switch (k) {
+        case KW_bump_size: n->amount = single(parse_float(p)); continue;
+        case KW_accuracy: n->accuracy = single(parse_float(p)); continue;
+        case KW_no_bump_scale: n->no_bump_scale = 1; continue;
+        case KW_slope_map:
+            if (n->kind == NORMAL_AVERAGE || n->pattern.kind == PIGMENT_CHECKER ||
+                n->pattern.kind == PIGMENT_HEXAGON || n->kind == NORMAL_BUMP_MAP)
+                parse_fail(p, here.pos, "Cannot use slope_map with this normal type.");
+            parse_slope_map(p, n);
+            continue;
+        case KW_normal_map:
+            if ((n->kind == NORMAL_PATTERN &&
+                 (n->pattern.kind == PIGMENT_CHECKER || n->pattern.kind == PIGMENT_HEXAGON)) ||
+                n->kind == NORMAL_BUMP_MAP)
+                parse_fail(p, here.pos, "Cannot use normal_map with this normal type.");
+            parse_normal_map(p, n, n->kind == NORMAL_AVERAGE);
+            continue;
+        case KW_frequency: n->pattern.frequency = single(parse_float(p)); continue;
+        case KW_phase: n->pattern.phase = single(parse_float(p)); continue;
+        case KW_ramp_wave: n->pattern.wave = WAVE_RAMP; continue;
+        case KW_sine_wave: n->pattern.wave = WAVE_SINE; continue;
+        case KW_triangle_wave: n->pattern.wave = WAVE_TRIANGLE; continue;
+        case KW_scallop_wave: n->pattern.wave = WAVE_SCALLOP; continue;
+        case KW_cubic_wave: n->pattern.wave = WAVE_CUBIC; continue;
+        case KW_poly_wave:
+            n->pattern.wave = WAVE_POLY;
+            n->pattern.wave_exponent = token_starts_float(p, peek(p)) ? single(parse_float(p)) : 1.0;
+            continue;
+        case KW_turbulence: classic_turbulence(p, &n->pattern)->amount = parse_vector(p); continue;
+        case KW_octaves: classic_turbulence(p, &n->pattern)->octaves = octaves_value(parse_float(p)); continue;
+        case KW_omega: classic_turbulence(p, &n->pattern)->omega = single(parse_float(p)); continue;
+        case KW_lambda: classic_turbulence(p, &n->pattern)->lambda = single(parse_float(p)); continue;
+        case KW_warp: parse_warp(p, &n->pattern, &here); continue;
+        case KW_noise_generator: {
+            Token vt = *peek(p);
+            if (!int_from_double(parse_float(p), 0, 3, &n->pattern.noise_generator))
+                parse_fail(p, vt.pos, "Value for noise_generator must be 0, 1, 2, or 3.");
+            continue;
+        }
+        case KW_agate_turb:
+            n->pattern.agate_turb = single(parse_float(p));
+            (void)classic_turbulence(p, &n->pattern);
+            continue;
+        case KW_control0: case KW_control1:
+            if (n->kind != NORMAL_QUILTED)
+                parse_fail(p, here.pos, "Cannot use %s with this pattern.", keyword_name(k));
+            if (k == KW_control0)
+                n->control0 = parse_float(p);
+            else
+                n->control1 = parse_float(p);
+            continue;
+        default:
+            break;
+        }
+        if (k >= 0 && pattern_modifier(k)) {
+            skip_arguments(p); /* modifiers of patterns hstrace does not evaluate */
+            continue;
+        }
+        if (k >= 0 && (pattern_support(k) != PAT_NONE || k == KW_bumps || k == KW_bump_map))
+            parse_fail(p, here.pos, "the pattern must come first in a normal (after its identifier)");
+        if (k >= 0)
+            unsupported(p, t);
+        fail_expected(p, t, close == ']' ? "a normal modifier or ']' in a normal_map entry"
+                                         : "a pattern, a normal modifier or '}' in 'normal'");
+    }
+    if (!patterned && need_pattern)
+        parse_fail(p, kw->pos, "No normal type given.");
+    if (n->kind == NORMAL_NONE) { /* approximated: the normal as it is */
+        n->nmap = 0;
+        n->nslope = 0;
+    }
+    if (n->kind == NORMAL_AVERAGE && n->nmap == 0)
+        parse_fail(p, kw->pos, "Average must have map.");
+}
+
+const SceneNormal *parse_normal(Parser *p, const SceneNormal *from, const Token *kw, int need_pattern)
+{
+    begin_block(p, "normal");
+    SceneNormal *n = start_normal(p, from);
+    normal_items(p, n, '}', kw, need_pattern);
+    return n;
+}
+
+const SceneNormal *normal_transformed(Parser *p, const SceneNormal *n, const Transform *tr)
+{
+    if (!n || n->kind == NORMAL_UV) /* uv space is the surface's own: nothing moves it */
+        return n;
+    SceneNormal *copy = palloc(p, sizeof *copy);
+    *copy = *n;
+    transform_compose(&copy->pattern.transform, tr);
+    return copy;
+}
+
+const SceneNormal *normal_uv_mapped(Parser *p, const SceneNormal *n)
+{
+    if (!n || n->kind == NORMAL_UV)
+        return n;
+    SceneNormal *wrapper = palloc(p, sizeof *wrapper);
+    *wrapper = fresh_normal(p);
+    wrapper->kind = NORMAL_UV;
+    wrapper->uv_entry = n;
+    return wrapper;
+}
