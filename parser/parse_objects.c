@@ -45,6 +45,14 @@ static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
 static SceneTexture *own_texture(Parser *p, SceneObject *o, const Token *t)
 {
     SceneTexture *tex;
+    if (o->texture && o->texture->nmap > 0) {
+        /* POV-Ray lays a new texture over the map: a layered texture_map */
+        Token what = *t;
+        const char *msg = "pigment, normal or finish over a texture_map (a layer on it)";
+        what.text = msg;
+        what.len = (int)strlen(msg);
+        unsupported(p, &what);
+    }
     if (o->texture) {
         tex = palloc(p, sizeof *tex);
         *tex = *o->texture;

@@ -357,6 +357,14 @@ static Value parse_rvalue(Parser *p)
             v.light = light;
             return v;
         }
+        if (t.kw == KW_texture_map || t.kw == KW_material_map) {
+            /* a texture_map is written in its texture; material_map is not supported */
+            const char *what = t.kw == KW_texture_map ? "texture_map identifier (a #declare of a texture_map)"
+                                                      : "material_map (textures chosen by an image's colours)";
+            t.text = what;
+            t.len = (int)strlen(what);
+            unsupported(p, &t);
+        }
         if (is_unsupported_value_keyword(t.kw))
             unsupported(p, &t);
     }
@@ -601,8 +609,15 @@ void parse_default_directive(Parser *p)
             *d = *n;
             break;
         }
-        case KW_pigment: parse_pigment(p, &d->pigment); break;
-        case KW_finish: parse_finish(p, &d->finish); break;
+        case KW_pigment: case KW_finish:
+            if (d->nmap > 0) /* a default texture_map has no pigment or finish of its own */
+                parse_fail(p, t->pos, "#default: %s after a default texture that is a texture_map",
+                           keyword_name(t->kw));
+            if (t->kw == KW_pigment)
+                parse_pigment(p, &d->pigment);
+            else
+                parse_finish(p, &d->finish);
+            break;
         case KW_normal: {
             Token at = *t;
             d->normal = parse_normal(p, d->normal, &at, 0);

@@ -1,4 +1,5 @@
-/* texture, pigment, finish, interior (normal: parse_normal.c).
+/* texture (plain, or patterned by a texture_map), pigment, finish, interior
+ * (normal: parse_normal.c).
  *
  * Each block starts from its identifier when one comes first, otherwise
  * from the default (POV-Ray copies the default texture), then applies what
@@ -576,6 +577,92 @@ void parse_pigment(Parser *p, Pigment *pig)
     pigment_items(p, pig, '}');
 }
 
+/* A pattern hstrace evaluates, at its keyword `kw` (already read), in a
+ * pigment or a texture: the kind and what comes with it (gradient's vector,
+ * the spirals' arms, agate's turbulence), frequency, phase and wave back to
+ * POV-Ray's defaults. Colours (checker's and hexagon's list, the default
+ * colour map) are the caller's. */
+static void start_pattern(Parser *p, Pigment *pig, int kw)
+{
+    pig->frequency = 1.0;
+    pig->phase = 0.0;
+    pig->wave = WAVE_RAMP;
+    switch (kw) {
+    case KW_gradient: {
+        Token vt = *peek(p);
+        Vec3 g = parse_vector(p);
+        if (v3_length(g) == 0.0)
+            parse_fail(p, vt.pos, "the gradient vector must not be zero");
+        pig->gradient = v3_normalize(g);
+        pig->kind = PIGMENT_GRADIENT;
+        break;
+    }
+    case KW_checker: case KW_hexagon:
+        pig->kind = kw == KW_checker ? PIGMENT_CHECKER : PIGMENT_HEXAGON;
+        pig->frequency = 0.0; /* as POV-Ray: the value is the colour's (or texture's) index */
+        break;
+    case KW_bozo: case KW_spotted: case KW_bumps: pig->kind = PIGMENT_BOZO; break;
+    case KW_granite: pig->kind = PIGMENT_GRANITE; break;
+    case KW_wrinkles: pig->kind = PIGMENT_WRINKLES; break;
+    case KW_marble: pig->kind = PIGMENT_MARBLE; pig->wave = WAVE_TRIANGLE; break;
+    case KW_wood: pig->kind = PIGMENT_WOOD; pig->wave = WAVE_TRIANGLE; break;
+    case KW_agate:
+        pig->kind = PIGMENT_AGATE;
+        pig->agate_turb = 1.0;
+        (void)classic_turbulence(p, pig); /* agate's own turbulence */
+        break;
+    case KW_spiral1: case KW_spiral2:
+        pig->kind = kw == KW_spiral1 ? PIGMENT_SPIRAL1 : PIGMENT_SPIRAL2;
+        pig->arms = (short)int_as_povray(parse_float(p)); /* POV-Ray keeps (short)(int)v */
+        pig->wave = WAVE_TRIANGLE;
+        break;
+    }
+}
+
+/* The modifiers every pattern has (POV-Ray's Parse_Pattern), in a pigment
+ * or a patterned texture: frequency, phase, the waves, turbulence and its
+ * octaves, omega and lambda, warp, noise_generator, agate_turb. Returns 1
+ * when t (already read) was one, its arguments read. */
+static int pattern_modifier_item(Parser *p, Pigment *pig, const Token *t)
+{
+    Token here = *t; /* t may not outlive the next token read */
+    switch (here.type == TK_WORD ? here.kw : -1) {
+    /* POV-Ray keeps these in single precision (SNGL): so do the values */
+    case KW_frequency: pig->frequency = single(parse_float(p)); return 1;
+    case KW_phase: pig->phase = single(parse_float(p)); return 1;
+    case KW_ramp_wave: pig->wave = WAVE_RAMP; return 1;
+    case KW_sine_wave: pig->wave = WAVE_SINE; return 1;
+    case KW_triangle_wave: pig->wave = WAVE_TRIANGLE; return 1;
+    case KW_scallop_wave: pig->wave = WAVE_SCALLOP; return 1;
+    case KW_cubic_wave: pig->wave = WAVE_CUBIC; return 1;
+    case KW_poly_wave:
+        pig->wave = WAVE_POLY;
+        pig->wave_exponent = token_starts_float(p, peek(p)) ? single(parse_float(p)) : 1.0;
+        return 1;
+    case KW_turbulence: {
+        PatternTurbulence *turb = classic_turbulence(p, pig);
+        turb->amount = parse_vector(p);
+        return 1;
+    }
+    case KW_octaves: classic_turbulence(p, pig)->octaves = octaves_value(parse_float(p)); return 1;
+    case KW_omega: classic_turbulence(p, pig)->omega = single(parse_float(p)); return 1;
+    case KW_lambda: classic_turbulence(p, pig)->lambda = single(parse_float(p)); return 1;
+    case KW_warp: parse_warp(p, pig, &here); return 1;
+    case KW_noise_generator: {
+        Token vt = *peek(p);
+        if (!int_from_double(parse_float(p), 0, 3, &pig->noise_generator))
+            parse_fail(p, vt.pos, "Value for noise_generator must be 0, 1, 2, or 3.");
+        return 1;
+    }
+    case KW_agate_turb:
+        pig->agate_turb = single(parse_float(p));
+        (void)classic_turbulence(p, pig);
+        return 1;
+    default:
+        return 0;
+    }
+}
+
 /* The items of a pigment up to `close` ('}' of a block, ']' of a
  * pigment_map entry). */
 static void pigment_items(Parser *p, Pigment *pig, int close)
@@ -611,40 +698,9 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         switch (pattern_support(kw)) {
         case PAT_EVALUATED:
             approximated = 0;
-            pig->frequency = 1.0;
-            pig->phase = 0.0;
-            pig->wave = WAVE_RAMP;
-            switch (kw) {
-            case KW_gradient: {
-                Token vt = *peek(p);
-                Vec3 g = parse_vector(p);
-                if (v3_length(g) == 0.0)
-                    parse_fail(p, vt.pos, "the gradient vector must not be zero");
-                pig->gradient = v3_normalize(g);
-                pig->kind = PIGMENT_GRADIENT;
-                break;
-            }
-            case KW_checker: case KW_hexagon:
-                pig->kind = kw == KW_checker ? PIGMENT_CHECKER : PIGMENT_HEXAGON;
-                pig->frequency = 0.0; /* as POV-Ray: the value is the colour's index */
+            start_pattern(p, pig, kw);
+            if (kw == KW_checker || kw == KW_hexagon)
                 parse_colour_list(p, pig, kw == KW_checker ? 2 : 3);
-                break;
-            case KW_bozo: case KW_spotted: case KW_bumps: pig->kind = PIGMENT_BOZO; break;
-            case KW_granite: pig->kind = PIGMENT_GRANITE; break;
-            case KW_wrinkles: pig->kind = PIGMENT_WRINKLES; break;
-            case KW_marble: pig->kind = PIGMENT_MARBLE; pig->wave = WAVE_TRIANGLE; break;
-            case KW_wood: pig->kind = PIGMENT_WOOD; pig->wave = WAVE_TRIANGLE; break;
-            case KW_agate:
-                pig->kind = PIGMENT_AGATE;
-                pig->agate_turb = 1.0;
-                (void)classic_turbulence(p, pig); /* agate's own turbulence */
-                break;
-            case KW_spiral1: case KW_spiral2:
-                pig->kind = kw == KW_spiral1 ? PIGMENT_SPIRAL1 : PIGMENT_SPIRAL2;
-                pig->arms = (short)int_as_povray(parse_float(p)); /* POV-Ray keeps (short)(int)v */
-                pig->wave = WAVE_TRIANGLE;
-                break;
-            }
             if (pig->nmap == 0)
                 set_default_map(p, pig, kw);
             continue;
@@ -670,6 +726,8 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         case PAT_NONE:
             break;
         }
+        if (pattern_modifier_item(p, pig, t))
+            continue;
         switch (kw) {
         case KW_color_map:
         case KW_colour_map:
@@ -678,18 +736,8 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         case KW_pigment_map:
             parse_pigment_map(p, pig, &at);
             continue;
-        /* POV-Ray keeps these in single precision (SNGL): so do the values */
-        case KW_frequency: pig->frequency = single(parse_float(p)); continue;
-        case KW_phase: pig->phase = single(parse_float(p)); continue;
-        case KW_ramp_wave: pig->wave = WAVE_RAMP; continue;
-        case KW_sine_wave: pig->wave = WAVE_SINE; continue;
-        case KW_triangle_wave: pig->wave = WAVE_TRIANGLE; continue;
-        case KW_scallop_wave: pig->wave = WAVE_SCALLOP; continue;
-        case KW_cubic_wave: pig->wave = WAVE_CUBIC; continue;
-        case KW_poly_wave:
-            pig->wave = WAVE_POLY;
-            pig->wave_exponent = token_starts_float(p, peek(p)) ? single(parse_float(p)) : 1.0;
-            continue;
+        case KW_texture_map: case KW_material_map:
+            parse_fail(p, at.pos, "%s can only be used in a texture, not in a pigment", keyword_name(kw));
         case KW_uv_mapping: {
             /* POV-Ray: a new pigment, made of the rest of this block, seen
              * at the surface's (u, v, 0); what came before is dropped. */
@@ -701,25 +749,6 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             approximated = 0;
             continue;
         }
-        case KW_turbulence: {
-            PatternTurbulence *turb = classic_turbulence(p, pig);
-            turb->amount = parse_vector(p);
-            continue;
-        }
-        case KW_octaves: classic_turbulence(p, pig)->octaves = octaves_value(parse_float(p)); continue;
-        case KW_omega: classic_turbulence(p, pig)->omega = single(parse_float(p)); continue;
-        case KW_lambda: classic_turbulence(p, pig)->lambda = single(parse_float(p)); continue;
-        case KW_warp: parse_warp(p, pig, &at); continue;
-        case KW_noise_generator: {
-            Token vt = *peek(p);
-            if (!int_from_double(parse_float(p), 0, 3, &pig->noise_generator))
-                parse_fail(p, vt.pos, "Value for noise_generator must be 0, 1, 2, or 3.");
-            continue;
-        }
-        case KW_agate_turb:
-            pig->agate_turb = single(parse_float(p));
-            (void)classic_turbulence(p, pig);
-            continue;
         default:
             break;
         }
@@ -976,58 +1005,288 @@ void parse_material(Parser *p, const SceneTexture **tex, const Interior **in, co
     (void)at;
 }
 
+/* ---- textures and texture_map ------------------------------------------------- */
+
+/* What hstrace does not do of a texture, at `at`, named by `what`: as any
+ * unsupported keyword, an error, or in a #declare a value that is one when
+ * used. */
+static _Noreturn void texture_unsupported(Parser *p, const Token *at, const char *what)
+{
+    Token t = *at;
+    t.text = tmp_strndup(p, what, strlen(what));
+    t.len = (int)strlen(what);
+    unsupported(p, &t);
+}
+
+/* The notes of `from` (a texture_map's entry) joined to `*to` (the map's),
+ * each place once, so that the report sees them from the map alone. */
+static void join_notes(Parser *p, const ApproxNote **to, const ApproxNote *from)
+{
+    for (; from; from = from->next) {
+        int seen = 0;
+        for (const ApproxNote *n = *to; n && !seen; n = n->next)
+            seen = n == from || (n->kind == from->kind && n->pos.line == from->pos.line &&
+                                 n->pos.column == from->pos.column && n->pos.file == from->pos.file);
+        if (seen)
+            continue;
+        ApproxNote *c = palloc(p, sizeof *c);
+        *c = *from;
+        c->next = *to;
+        *to = c;
+    }
+}
+
+static void texture_items(Parser *p, SceneTexture *tex, int close);
+
+/* The entries of a patterned texture, in the order written: the map's
+ * depth (at most MAX_TEXTURE_MAP_DEPTH) and its entries' notes. */
+static void set_texture_map(Parser *p, SceneTexture *tex, const TextureMapEntry *entries, int n, const Token *at)
+{
+    TextureMapEntry *m = palloc(p, sizeof *m * (size_t)n);
+    int depth = 0;
+    for (int i = 0; i < n; i++) {
+        m[i] = entries[i];
+        const SceneTexture *e = m[i].texture;
+        if (e->map_depth > depth)
+            depth = e->map_depth;
+        join_notes(p, &tex->approx, e->approx);
+        join_notes(p, &tex->approx, e->pigment.approx);
+        join_notes(p, &tex->approx, e->finish.approx);
+    }
+    if (depth + 1 > MAX_TEXTURE_MAP_DEPTH) {
+        char what[96];
+        snprintf(what, sizeof what, "texture_map nested more than %d deep", MAX_TEXTURE_MAP_DEPTH);
+        texture_unsupported(p, at, what);
+    }
+    tex->map = m;
+    tex->nmap = n;
+    tex->map_depth = depth + 1;
+}
+
+/* texture_map { [value texture items] ... } (POV-Ray's Parse_Blend_Map for
+ * textures): each entry a texture as written in texture { }, from the
+ * default texture, a texture identifier, pigment, finish, or a pattern and
+ * a texture_map of its own. */
+static void parse_texture_map(Parser *p, SceneTexture *tex, const Token *at)
+{
+    begin_block(p, "texture_map");
+    nesting_enter(p, at);
+    TempVec entries;
+    tvec_init(&entries, sizeof(TextureMapEntry));
+    double v;
+    while (blend_map_entry(p, "texture_map", &entries, 0, &v)) {
+        SceneTexture *e = new_default_texture(p);
+        e->pos = p->tok.pos;
+        texture_items(p, e, ']');
+        TextureMapEntry *slot = tvec_push(p, &entries);
+        slot->value = v;
+        slot->texture = e;
+    }
+    if (entries.n < 1)
+        parse_fail(p, p->tok.pos, "Must have at least one entry in map.");
+    nesting_leave(p);
+    set_texture_map(p, tex, entries.data, entries.n, at);
+}
+
+/* checker and hexagon in a texture: up to `count` `texture { }` items,
+ * commas optional, the missing ones the default texture (POV-Ray's
+ * Parse_Blend_List for textures); entry i has the value i. */
+static void parse_texture_list(Parser *p, SceneTexture *tex, int count, const Token *at)
+{
+    TextureMapEntry e[3];
+    int i = 0;
+    nesting_enter(p, at);
+    for (; i < count && is_kw(peek(p), KW_texture); i++) {
+        (void)next(p);
+        e[i].value = i;
+        e[i].texture = parse_texture(p);
+        parse_comma(p);
+    }
+    nesting_leave(p);
+    for (; i < count; i++) {
+        SceneTexture *d = new_default_texture(p);
+        d->pos = at->pos;
+        e[i].value = i;
+        e[i].texture = d;
+    }
+    set_texture_map(p, tex, e, count, at);
+}
+
+/* A patterned texture (POV-Ray's Parse_Pattern for a texture), from its
+ * pattern keyword `at` (read) to `close`: the pattern, its modifiers and
+ * transforms, and its texture_map (checker and hexagon: their list of
+ * textures instead). */
+static void parse_patterned_texture(Parser *p, SceneTexture *tex, const Token *at, int close)
+{
+    int kw = at->kw;
+    Pigment *pig = &tex->pigment;
+    /* the pattern of the texture itself: none of the default pigment's colours */
+    const ApproxNote *notes = pig->approx;
+    memset(pig, 0, sizeof *pig);
+    pig->kind = PIGMENT_SOLID;
+    pig->colour = (Colour){ 0, 0, 0, 0, 0 };
+    pig->approx = notes;
+    transform_identity(&pig->transform);
+    tex->normal = NULL; /* its entries have the normals */
+    start_pattern(p, pig, kw);
+    int listed = kw == KW_checker || kw == KW_hexagon;
+    if (listed)
+        parse_texture_list(p, tex, kw == KW_checker ? 2 : 3, at);
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, close))
+            break;
+        Token here = *t;
+        if (parse_transform_item(p, t, &pig->transform))
+            continue;
+        if (pattern_modifier_item(p, pig, t))
+            continue;
+        switch (here.type == TK_WORD ? here.kw : -1) {
+        case KW_texture_map:
+            if (listed)
+                parse_fail(p, here.pos, "texture_map cannot be used with %s (it takes a list of textures)",
+                           keyword_name(kw));
+            parse_texture_map(p, tex, &here);
+            continue;
+        case KW_no_bump_scale:
+            /* POV-Ray then moves the entries' normals through the map's
+             * transforms unnormalised: not modelled */
+            approximate(p, &here, APPROX_NORMAL, &tex->approx);
+            continue;
+        case KW_color_map: case KW_colour_map: case KW_pigment_map:
+            parse_fail(p, here.pos, "%s can only be used in a pigment, not in a texture", keyword_name(here.kw));
+        case KW_pigment: case KW_finish: case KW_normal:
+            parse_fail(p, here.pos, "a patterned texture (%s ... texture_map) has no %s of its own: give it in the "
+                       "textures of its texture_map", keyword_name(kw), keyword_name(here.kw));
+        default:
+            break;
+        }
+        if (here.type == TK_WORD && here.kw >= 0 && pattern_support(here.kw) == PAT_NONE &&
+            !pattern_modifier(here.kw))
+            unsupported(p, &here);
+        fail_expected(p, &here, "a pattern modifier, texture_map, a transform or the end of a patterned texture");
+    }
+    if (tex->nmap == 0)
+        parse_fail(p, at->pos, "Patterned texture must have texture_map.");
+}
+
+/* After a texture_map texture (an identifier, or the default texture when
+ * that is one): only transforms, as POV-Ray's Parse_Texture_Transform;
+ * they move the map's pattern, and with it its textures. */
+static void texture_map_transforms(Parser *p, SceneTexture *tex, int close, const Token *what)
+{
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, close))
+            return;
+        Transform ignored;
+        transform_identity(&ignored);
+        if (parse_transform_item(p, t, tex->pigment.uv_mapping ? &ignored : &tex->pigment.transform))
+            continue;
+        char msg[160];
+        snprintf(msg, sizeof msg, "a transform or the end of the texture after %.*s (a texture_map texture: its "
+                 "pigments and finishes are its entries')", what->len > 40 ? 40 : what->len, what->text);
+        fail_expected(p, t, msg);
+    }
+}
+
+/* The items of a texture up to `close` ('}' of a block, ']' of a
+ * texture_map entry), on `tex` (a copy of the default texture). A
+ * texture_map texture is a pattern first, or a texture identifier of one,
+ * first; anything else is a plain texture. */
+static void texture_items(Parser *p, SceneTexture *tex, int close)
+{
+    int first = 1; /* nothing given yet: a pattern may start a texture_map texture */
+    if (tex->nmap > 0) { /* a default texture that is a texture_map */
+        Token here = p->tok;
+        texture_map_transforms(p, tex, close, &here);
+        return;
+    }
+    for (;;) {
+        Token *t = next(p);
+        if (is_punct(t, close))
+            return;
+        Token here = *t;
+        const Value *id = block_identifier(p, t, VAL_TEXTURE, "texture");
+        if (id) {
+            SourcePos pos = tex->pos;
+            if (id->texture->nmap > 0 && !first)
+                parse_fail(p, here.pos, "'%.*s' is a texture_map texture: it must come first in the texture",
+                           here.len, here.text);
+            *tex = *id->texture;
+            tex->pos = pos;
+            if (tex->nmap > 0) {
+                texture_map_transforms(p, tex, close, &here);
+                return;
+            }
+            first = 0;
+            continue;
+        }
+        int kw = here.type == TK_WORD ? here.kw : -1;
+        switch (kw) {
+        case KW_pigment: parse_pigment(p, &tex->pigment); first = 0; continue;
+        case KW_finish: parse_finish(p, &tex->finish); first = 0; continue;
+        case KW_normal:
+            tex->normal = parse_normal(p, tex->normal, &here, 1);
+            first = 0;
+            continue;
+        case KW_no_bump_scale: continue;
+        case KW_texture: /* `texture { }` in a texture, or around a texture_map entry */
+            fail_expected(p, &here, close == ']' ? "the items of a texture (without 'texture { }' around them) in a "
+                                                   "texture_map entry"
+                                                 : "pigment, normal, finish, a pattern, a transform or '}' in 'texture'");
+        case KW_texture_map:
+            parse_fail(p, here.pos, "texture_map needs a pattern before it (texture { gradient y texture_map { ... } })");
+        case KW_material_map:
+            texture_unsupported(p, &here, "material_map (textures chosen by an image's colours)");
+        default:
+            if (token_starts_colour(p, &here))
+                fail_expected(p, &here, close == ']' ? "a texture's items (pigment { ... } ...), not a colour, in a "
+                                                       "texture_map entry"
+                                                     : "pigment { colour ... }, not a colour, in 'texture'");
+            break;
+        }
+        /* A transform moves the pigment and the normal (a uv-mapped one is
+         * not moved by the texture's transforms). */
+        Transform moved;
+        transform_identity(&moved);
+        if (parse_transform_item(p, t, &moved)) {
+            if (!tex->pigment.uv_mapping)
+                transform_compose(&tex->pigment.transform, &moved);
+            tex->normal = normal_transformed(p, tex->normal, &moved);
+            first = 0;
+            continue;
+        }
+        if (kw >= 0 && pattern_support(kw) != PAT_NONE) {
+            if (!first)
+                parse_fail(p, here.pos, "a texture patterned by %s cannot have a pigment, normal, finish, texture "
+                           "identifier or transform before its pattern", keyword_name(kw));
+            if (pattern_support(kw) == PAT_EVALUATED) {
+                parse_patterned_texture(p, tex, &here, close);
+                return;
+            }
+            /* A pattern hstrace does not evaluate: say that the texture is
+             * patterned by it, not that the pattern is (Arbaro's trees write
+             * patterned textures). */
+            char patterned[96];
+            snprintf(patterned, sizeof patterned, "texture_map (a texture patterned by %.*s)",
+                     here.len > 40 ? 40 : here.len, here.text);
+            texture_unsupported(p, &here, patterned);
+        }
+        if (kw >= 0)
+            unsupported(p, &here);
+        fail_expected(p, &here, "pigment, normal, finish, a pattern, a transform or '}' in 'texture'");
+    }
+}
+
 SceneTexture *parse_texture(Parser *p)
 {
     Token kw = p->tok;
     begin_block(p, "texture");
     SceneTexture *tex = new_default_texture(p);
     tex->pos = kw.pos;
-    for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
-            return tex;
-        const Value *id = block_identifier(p, t, VAL_TEXTURE, "texture");
-        if (id) {
-            *tex = *id->texture;
-            tex->pos = kw.pos;
-            continue;
-        }
-        switch (t->type == TK_WORD ? t->kw : -1) {
-        case KW_pigment: parse_pigment(p, &tex->pigment); break;
-        case KW_finish: parse_finish(p, &tex->finish); break;
-        case KW_normal: {
-            Token at = *t;
-            tex->normal = parse_normal(p, tex->normal, &at, 1);
-            break;
-        }
-        default: {
-            /* A transform moves the pigment and the normal (a uv-mapped
-             * one is not moved by the texture's transforms). */
-            Transform moved;
-            transform_identity(&moved);
-            if (parse_transform_item(p, t, &moved)) {
-                if (!tex->pigment.uv_mapping)
-                    transform_compose(&tex->pigment.transform, &moved);
-                tex->normal = normal_transformed(p, tex->normal, &moved);
-                break;
-            }
-            /* A pattern in a texture is a patterned texture: say that, not
-             * that the pattern is (Arbaro's trees write them). */
-            if (t->type == TK_WORD && t->kw >= 0 && pattern_support(t->kw) != PAT_NONE) {
-                char patterned[96];
-                snprintf(patterned, sizeof patterned, "texture_map (a texture patterned by %.*s)",
-                         t->len > 40 ? 40 : t->len, t->text);
-                Token what = *t;
-                what.text = tmp_strndup(p, patterned, strlen(patterned));
-                what.len = (int)strlen(patterned);
-                unsupported(p, &what);
-            }
-            if (t->type == TK_WORD && t->kw >= 0)
-                unsupported(p, t);
-            fail_expected(p, t, "pigment, normal, finish, a transform or '}' in 'texture'");
-        }
-        }
-    }
+    texture_items(p, tex, '}');
+    return tex;
 }
 
 /* ---- layered textures ------------------------------------------------------ */
@@ -1045,6 +1304,8 @@ static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589
  * the layers stand by their representative colour. */
 SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at)
 {
+    if (top->nmap > 0 || below->nmap > 0)
+        texture_unsupported(p, at, "texture_map in layered textures");
     SceneTexture *r = palloc(p, sizeof *r);
     *r = *top;
     if (pigment_is_opaque(&top->pigment))

@@ -1,7 +1,8 @@
 #!/bin/sh
 # What mesh exporters write (issue 20), in TAP: `material { texture {...}
 # interior {...} }` declared and used, image_map on polygons and uv-mapped
-# meshes, a material identifier first in a
+# meshes, texture_map (patterned textures, see-through ones casting
+# shadows), a material identifier first in a
 # material, transforms in a material that move its texture and not the
 # object, on a polygon, a triangle and mesh objects, against the installed
 # POV-Ray's image of the same scene; and the mistakes: another kind of
@@ -238,4 +239,152 @@ ppm "tex.ppm" map_type 1|'map_type 1 (map_type 0, planar, is supported)' is not 
 ppm "tex.ppm" filter 2, 0.5|'filter of one palette entry (filter all is supported)' is not supported
 ppm "tex.ppm" repeat <2, 2>|'repeat' is not supported
 BADMAPS
+# --- texture_map, as Arbaro's trees and other exporters write it ------------------
+# Patterned textures: a gradient floor of three entries with their own
+# finishes (phong, reflection) and a declared and a patterned entry; bozo
+# with turbulence whose entries are a texture_map (wood) and a declared
+# texture; a declared texture_map texture moved after it and by the
+# object's transforms; a mesh2 with per-triangle textures (a marble map,
+# checker with a list of textures, a plain one); a material's transform.
+cat >"$work/texmap.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 2.2, -4.5> look_at <0, 0.6, 0> }
+light_source { <3, 6, -4> color rgb 1 }
+light_source { <-4, 4, -1> color rgb <0.4, 0.4, 0.5> }
+#declare Bark = texture { pigment { rgb <0.45, 0.3, 0.15> } finish { phong 0.7 phong_size 25 } }
+#declare Moss = texture { pigment { granite color_map { [0 rgb <0.2, 0.5, 0.1>] [1 rgb <0.6, 0.8, 0.2>] } scale 0.4 } }
+#declare Mirror = texture { pigment { rgb <0.8, 0.8, 0.9> } finish { reflection 0.5 specular 0.4 roughness 0.02 } }
+#declare Rings = texture { wood turbulence 0.1 texture_map { [0.3 Bark] [0.7 Moss] } scale 0.2 rotate <90, 0, 0> }
+// the floor: gradient x, three entries with their own finishes, a declared one and a patterned one
+polygon { 4, <-3,0,-2>, <3,0,-2>, <3,0,4>, <-3,0,4>
+  texture { gradient x texture_map {
+      [0.2 Bark]
+      [0.5 Mirror]
+      [0.8 pigment { checker rgb 1 rgb <0.2, 0.2, 0.3> scale 0.25 } finish { diffuse 0.8 }]
+    } scale 2 translate <0.3, 0, 0> } }
+// bozo with turbulence, entries that are a texture_map (wood) and a declared texture
+triangle { <-2,0,1>, <-0.2,0,1>, <-1.1,1.8,1.2> texture { bozo turbulence <0.6, 0.3, 0.2> octaves 4 texture_map { [0.35 Rings] [0.65 Mirror] } scale 0.35 } }
+// a declared texture_map texture, moved after it and by the object's transforms written after it
+#declare Patch = texture { granite frequency 2 sine_wave texture_map { [0 Moss] [0.5 Bark] [1 pigment { rgb <0.9, 0.4, 0.2> }] } }
+triangle { <0,0,0>, <1.6,0,0>, <0.8,1.6,0.2> texture { Patch scale 0.7 rotate <0, 0, 20> } rotate <0, -15, 0> translate <0.3, 0, 1> }
+// mesh2 with per-triangle textures: a texture_map, checker with a list of textures, a plain one
+mesh2 {
+  vertex_vectors { 5, <1.2,0.2,0.6>, <2.6,0.2,0.6>, <2.6,1.5,1.4>, <1.2,1.5,1.4>, <1.9,2.1,1.6> }
+  texture_list { 3,
+    texture { marble turbulence 0.7 texture_map { [0 Bark] [0.5 Mirror] [1 Moss] } scale 0.5 }
+    texture { checker texture { Bark } texture { pigment { rgb <0.2, 0.4, 0.9> } finish { phong 1 } } scale 0.3 }
+    texture { Mirror } }
+  face_indices { 3, <0,1,2>, 0, <0,2,3>, 1, <3,2,4>, 2 }
+}
+// in a material: its transform moves the map; the translate written before it does not
+polygon { 4, <-0.8,0.01,-1.6>, <0.8,0.01,-1.6>, <0.8,0.01,-0.9>, <-0.8,0.01,-0.9> translate <0.5, 0, 0> material { texture { Patch } scale 0.3 } }
+EOF
+run texmap.pov +W160 +H120 --verify-shadows --stats-json texmap.json -o texmap.png
+check "texture_map (gradient, bozo with turbulence, nested maps, declared and patterned entries, mesh2 face textures, transforms): renders, 0 disagreements with the shadow ray" \
+    test "$status $(grep -o '"disagreements": [0-9]*' "$work/texmap.json" | head -n 1 | grep -o '[0-9]*$')" = "0 0"
+if [ -n "$povray" ]; then
+    (cd "$work" && "$povray" +Itexmap.pov +W160 +H120 +Otexmap-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    check "... as POV-Ray renders it, each entry shaded with its own finish (RMSE 0 measured; limit 1e-5)" \
+        "$hstrace" compare "$work/texmap-pov.png" "$work/texmap.png" --max-rmse 1e-5 --max-share 0
+    # The entries' finishes count: the floor as one pigment_map of the same
+    # colours with one finish (what blending the pigments alone gives) is
+    # another image.
+    sed '/^  texture { gradient x texture_map {/,/scale 2 translate/ { s/texture { gradient x texture_map {/pigment { gradient x pigment_map {/; s/\[0.2 Bark\]/[0.2 rgb <0.45, 0.3, 0.15>]/; s/\[0.5 Mirror\]/[0.5 rgb <0.8, 0.8, 0.9>]/; s/\[0.8 pigment { \(checker [^}]*\) } finish { diffuse 0.8 }\]/[0.8 \1]/; }' \
+        "$work/texmap.pov" >"$work/texmap-pigments.pov"
+    run texmap-pigments.pov +W160 +H120 -o texmap-pigments.png
+    check "the floor as a pigment_map: renders" exited 0
+    check_fails "... and not as a pigment_map of the entries' pigments with one finish (outside the limits)" \
+        "$hstrace" compare "$work/texmap-pov.png" "$work/texmap-pigments.png" --max-rmse 1e-5 --max-share 0
+else
+    skip "... as POV-Ray renders it" "povray not installed"
+    skip "... and not as a pigment_map of the entries' colours" "povray not installed"
+fi
+for method in conventional cache volume hst; do
+    run texmap.pov +W160 +H120 --shadows "$method" --volumes always -o "texmap-$method.png"
+    check "texture_map: --shadows $method gives the same image" "$hstrace" compare "$work/texmap.png" "$work/texmap-$method.png" --max-error 0
+done
+# See-through entries: a refracting pane of tinted, clear and opaque bands by
+# gradient with turbulence, and a granite triangle of glass and a bozo map of
+# its own against the sky, their shadows filtered on the floor by each entry's
+# rgb*filter+transmit, blended as POV-Ray blends them; also with an alpha
+# channel (+UA), whose transmittance is blended too.
+cat >"$work/texmap-glass.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 max_trace_level 8 }
+camera { location <0, 2.4, -4.5> look_at <0, 0.5, 0.5> }
+light_source { <1, 5, 6> color rgb 1 }
+light_source { <-5, 3, 3> color rgb <0.5, 0.5, 0.6> }
+background { rgb <0.1, 0.2, 0.4> }
+polygon { 4, <-3,0,-2>, <3,0,-2>, <3,0,3>, <-3,0,3> pigment { checker rgb 0.95 rgb <0.5, 0.5, 0.55> scale 0.5 } }
+#declare Tinted = texture { pigment { rgbf <1, 0.3, 0.2, 0.8> } finish { phong 0.6 } }
+#declare Clear = texture { pigment { rgbt <0.6, 0.9, 1, 0.7> } finish { reflection 0.15 specular 0.5 roughness 0.01 } }
+#declare Opaque = texture { pigment { rgb <0.2, 0.6, 0.2> } }
+// a pane of three kinds of glass by gradient, one opaque band: its shadow filters by each
+polygon { 4, <-2.2,0,0>, <-0.2,0,0>, <-0.2,1.6,0>, <-2.2,1.6,0>
+  texture { gradient y turbulence 0.15 texture_map { [0.2 Tinted] [0.45 Opaque] [0.55 Opaque] [0.8 Clear] } scale 1.6 }
+  interior { ior 1.4 } rotate <0, 15, 0> translate <0, 0, 0.8> }
+// granite with turbulence between glass and a bozo map of its own, seen against the sky
+triangle { <0.2,0,0>, <2.4,0,0>, <1.3,2.2,0>
+  texture { granite turbulence 0.3 texture_map {
+      [0.3 Clear]
+      [0.6 bozo texture_map { [0.3 Tinted] [0.7 pigment { rgbf <0.9, 0.9, 0.2, 0.5> }] } scale 0.2] } scale 1.5 }
+  rotate <0, -20, 0> translate <0, 0, 0.8> }
+EOF
+run texmap-glass.pov +W160 +H120 --verify-shadows --stats-json texmap-glass.json -o texmap-glass.png
+check "texture_map with see-through entries casting shadows: renders, 0 disagreements with the shadow ray" \
+    test "$status $(grep -o '"disagreements": [0-9]*' "$work/texmap-glass.json" | head -n 1 | grep -o '[0-9]*$')" = "0 0"
+run texmap-glass.pov +W160 +H120 +UA -o texmap-glass-ua.png
+codes="$builddir/tests/png_codes"
+if [ -n "$povray" ]; then
+    (cd "$work" && "$povray" +Itexmap-glass.pov +W160 +H120 +Otexmap-glass-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    check "... as POV-Ray renders it, shadows through the entries' filter and transmit included (RMSE 0 measured; limit 1e-5)" \
+        "$hstrace" compare "$work/texmap-glass-pov.png" "$work/texmap-glass.png" --max-rmse 1e-5 --max-share 0
+    (cd "$work" && "$povray" +Itexmap-glass.pov +W160 +H120 +UA +Otexmap-glass-ua-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    if [ -x "$codes" ]; then
+        check "... with +UA: POV-Ray's PNG sample code for sample code, alpha included (0 samples differ measured)" \
+            "$codes" "$work/texmap-glass-ua-pov.png" "$work/texmap-glass-ua.png"
+    else
+        skip "... with +UA: POV-Ray's PNG sample code for sample code" "tests/png_codes not built"
+    fi
+else
+    skip "... as POV-Ray renders it" "povray not installed"
+    skip "... with +UA: POV-Ray's PNG sample code for sample code" "povray not installed"
+fi
+for method in conventional cache volume hst; do
+    run texmap-glass.pov +W160 +H120 --shadows "$method" --volumes always -o "texmap-glass-$method.png"
+    check "texture_map with see-through entries: --shadows $method gives the same image" \
+        "$hstrace" compare "$work/texmap-glass.png" "$work/texmap-glass-$method.png" --max-error 0
+done
+# Mistakes, and what hstrace does not do of texture_map: each names its construct.
+while IFS='|' read -r tex message; do
+    printf '#declare T = texture { pigment { color rgb 1 } }\ntriangle { <0,0,0>, <1,0,0>, <0,1,0> %s }\n' "$tex" >"$work/badtex.pov"
+    rm -f "$work/badtex.png"
+    run badtex.pov +W8 +H6 -o badtex.png
+    check "$tex: status 2, FILE:LINE:COLUMN ($message), no image" \
+        test "$status $(grep -c "^badtex.pov:2:[0-9]*: .*$message" "$work/err") $([ -e "$work/badtex.png" ] && echo image || echo none)" = "2 1 none"
+done <<'BADTEX'
+texture { gradient x }|Patterned texture must have texture_map
+texture { gradient x texture_map { } }|Must have at least one entry in map
+texture { checker texture_map { [0 T] } }|texture_map cannot be used with checker
+pigment { gradient x texture_map { [0 T] } }|texture_map can only be used in a texture
+texture { pigment { rgb 1 } gradient x texture_map { [0 T] } }|cannot have a pigment, normal, finish, texture identifier or transform before its pattern
+texture { gradient x texture_map { [0 texture { T }] } }|expected the items of a texture (without 'texture { }' around them)
+texture { gradient x texture_map { [0 rgb 1] } }|expected a texture's items
+texture { gradient x texture_map { [0 T] } finish { phong 1 } }|has no finish of its own
+texture { gradient x texture_map { [0 T] } color_map { [0 rgb 1] } }|color_map can only be used in a pigment
+texture { material_map { png "x.png" texture { T } } }|'material_map (textures chosen by an image's colours)' is not supported
+texture { average texture_map { [1 T] } }|'texture_map (a texture patterned by average)' is not supported
+texture { gradient x texture_map { [0 T] } } texture { T }|'texture_map in layered textures' is not supported
+texture { gradient x texture_map { [0 T] } } pigment { rgb 1 }|'pigment, normal or finish over a texture_map (a layer on it)' is not supported
+texture { gradient x texture_map { [0 gradient y texture_map { [0 gradient z texture_map { [0 bozo texture_map { [0 granite texture_map { [0 T] }] }] }] }] } }|'texture_map nested more than 4 deep' is not supported
+BADTEX
+printf '#declare T = texture { gradient x texture_map { [0 pigment { rgb 1 }] } }\ntriangle { <0,0,0>, <1,0,0>, <0,1,0> texture { T pigment { rgb 1 } } }\n' >"$work/badtex.pov"
+run badtex.pov +W8 +H6 -o badtex.png
+check "a texture_map texture identifier takes only transforms after it: status 2, FILE:LINE:COLUMN" \
+    exited 2 "^badtex.pov:2:[0-9]*: expected a transform or the end of the texture after T"
+printf '#declare M = texture_map { [0 pigment { rgb 1 }] }\ntriangle { <0,0,0>, <1,0,0>, <0,1,0> texture { gradient x texture_map { M } } }\n' >"$work/badtex.pov"
+run badtex.pov +W8 +H6 -o badtex.png
+check "a declared texture_map, used: status 2, FILE:LINE:COLUMN naming texture_map identifiers" \
+    exited 2 "^badtex.pov:2:[0-9]*: 'texture_map identifier (a #declare of a texture_map)' is not supported"
 tap_end

@@ -12,7 +12,8 @@
 #    material's transforms, bump_map from a PNG and a JPEG, uv-mapped
 #    normals on meshes, per-triangle textures, a bumped glass that
 #    reflects and refracts, #default; the same image as POV-Ray's, every
-#    shadow method the same image, --verify-shadows 0 disagreements.
+#    shadow method the same image, --verify-shadows 0 disagreements; and
+#    a texture_map whose textures have normals.
 # 3. Mistakes: FILE:LINE:COLUMN, status 2, no image.
 #
 # Environment: top_builddir (default .), POVRAY (path or name of povray;
@@ -179,6 +180,43 @@ for method in conventional cache volume hst; do
 done
 run scene.pov +W160 +H120 --threads 1 -o scene-1.png
 check "normals: 1 thread gives the same image as 2" "$hstrace" compare "$work/scene.png" "$work/scene-1.png" --max-error 0
+
+# A texture_map whose textures have normals of their own (a tree's bark
+# and leaves), nested, under turbulence, moved: POV-Ray moves each entry's
+# normal through the maps' transforms.
+cat >"$work/treemap.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 3, -4.5> look_at <0, 0.5, 0> }
+light_source { <3, 6, -4> color rgb 1 }
+light_source { <-4, 3, -1> color rgb 0.5 }
+#declare Bark = texture { pigment { rgb <0.4, 0.25, 0.1> } normal { wrinkles 0.8 scale 0.1 } finish { phong 0.3 } }
+#declare Leaf = texture { pigment { rgb <0.2, 0.6, 0.1> } normal { bumps 0.5 scale <0.05, 0.2, 0.05> rotate 30*z } finish { specular 0.4 } }
+plane { y, 0 texture { gradient x texture_map { [0.3 Bark] [0.7 Leaf] } scale 0.8 rotate 20*y } }
+polygon { 4, <-2, 0.01, 1>, <2, 0.01, 1>, <2, 2, 1.5>, <-2, 2, 1.5>
+  texture { bozo turbulence 0.4 texture_map { [0.2 Bark] [0.5 gradient y texture_map { [0 Leaf] [1 pigment { rgb 0.9 } normal { dents 2 scale 0.2 } finish { reflection 0.2 } ] } scale 0.3 ] [0.8 Leaf scale 2] } scale 0.5 }
+}
+mesh2 {
+  vertex_vectors { 3, <-1.5,0.3,-1>, <-0.3,0.3,-1>, <-0.3,1.5,-0.5> }
+  face_indices { 1, <0,1,2> }
+  texture { granite texture_map { [0.3 Bark] [0.6 Leaf] } scale 0.5 }
+  translate x
+}
+EOF
+run treemap.pov +W160 +H120 --verify-shadows --stats-json treemap.json -o treemap.png
+check "texture_map entries with normals: renders, 0 disagreements with the shadow ray" \
+    test "$status $(grep -o '"disagreements": [0-9]*' "$work/treemap.json" | head -n 1 | grep -o '[0-9]*$')" = "0 0"
+run treemap.pov +W160 +H120 +Q7 -o treemap-flat.png
+# shellcheck disable=SC2016 # the inner shell expands its arguments
+check "... whose normals perturb (differs from +Q7's flat normals by RMSE > 0.01)" \
+    sh -c '! "$1" compare "$2" "$3" --max-rmse 0.01 >/dev/null' sh "$hstrace" "$work/treemap.png" "$work/treemap-flat.png"
+if [ -n "$povray" ]; then
+    pov +Itreemap.pov +W160 +H120 +Otreemap-pov.png
+    check "... as POV-Ray renders it (RMSE 0 measured; limit 1e-5)" \
+        "$hstrace" compare "$work/treemap-pov.png" "$work/treemap.png" --max-rmse 1e-5 --max-share 0
+else
+    skip "... as POV-Ray renders it" "povray not installed"
+fi
 
 # A pattern hstrace does not evaluate in a normal: the flat normal, noted.
 printf 'camera { location <0,0,-3> look_at 0 }\nlight_source { <1,2,-3> rgb 1 }\nplane { z, 0 normal { crackle 0.5 } }\n' \

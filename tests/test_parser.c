@@ -1065,11 +1065,44 @@ static void test_file_io(void)
     rmdir(dir);
 }
 
+/* texture_map in the description: entries as written (not sorted), their
+ * values in single precision, declared and patterned entries, the depth of
+ * nested maps, transforms after the map on its pattern, checker's list. */
+static void test_texture_map(void)
+{
+    Scene *s = parse("#declare A = texture { pigment { rgb <1, 0, 0> } finish { phong 0.5 } }\n"
+                     "triangle { 0, x, y texture { gradient y texture_map { [0.7 A] [0.1 pigment { rgb 0.5 }] "
+                     "[0.3 bozo texture_map { [0 A] [1 A] }] } scale 2 } }\n"
+                     "triangle { 0, x, y texture { checker texture { A } scale 3 } }\n");
+    tap_ok(s != NULL, "texture_map: parses");
+    if (!s)
+        return;
+    const SceneTexture *t = s->objects[0]->texture;
+    tap_ok(t->nmap == 3 && t->map_depth == 2, "three entries, two levels of maps (got %d, %d)", t->nmap, t->map_depth);
+    tap_ok(t->nmap == 3 && t->map[0].value == (double)0.7f && t->map[1].value == (double)0.1f &&
+               t->map[2].value == (double)0.3f,
+           "entries in the order written, values in single precision");
+    tap_ok(t->nmap == 3 && t->map[0].texture->nmap == 0 && t->map[0].texture->finish.phong == 0.5 &&
+               t->map[0].texture->pigment.colour.r == 1.0,
+           "a declared texture as an entry");
+    tap_ok(t->nmap == 3 && t->map[2].texture->nmap == 2 && t->map[2].texture->pigment.kind == PIGMENT_BOZO,
+           "an entry patterned by a texture_map of its own");
+    tap_ok(t->pigment.kind == PIGMENT_GRADIENT && vnear(t->pigment.gradient, 0, 1, 0) &&
+               vnear(transform_point(&t->pigment.transform, v3(1, 1, 1)), 2, 2, 2),
+           "the map's pattern, with the transform written after the map");
+    const SceneTexture *c = s->objects[1]->texture;
+    tap_ok(c->nmap == 2 && c->pigment.kind == PIGMENT_CHECKER && c->map[0].value == 0.0 && c->map[1].value == 1.0 &&
+               c->map[0].texture->finish.phong == 0.5 && c->map[1].texture->finish.phong == 0.0,
+           "checker with one texture: the second the default texture");
+    scene_free(s);
+}
+
 int main(void)
 {
     test_expressions();
     test_colours();
     test_finish_texture();
+    test_texture_map();
     test_directives();
     test_objects();
     test_camera_lights();

@@ -224,12 +224,34 @@ typedef struct {
     Colour fade_colour;
 } Interior;
 
+struct SceneTexture;
+
+/* One [value texture] entry of a texture_map, in the order written (POV-Ray
+ * keeps them so, and its Search_Blend_Map reads them in that order). */
+typedef struct {
+    double value; /* in single precision, as POV-Ray keeps it */
+    const struct SceneTexture *texture;
+} TextureMapEntry;
+
+/* Levels of texture_maps hstrace follows in one texture (a map whose
+ * entries are maps ...): a hit is shaded with at most 2 to this power
+ * textures, two per level, as POV-Ray shades it. */
+#define MAX_TEXTURE_MAP_DEPTH 4
+
 typedef struct SceneTexture {
     Pigment pigment;
     const SceneNormal *normal; /* NULL: the surface's own normal */
     Finish finish;
     SourcePos pos;
-    const ApproxNote *approx; /* the texture's own: normal, layering */
+    const ApproxNote *approx; /* the texture's own: normal, layering; a texture_map's: its entries' too */
+    /* A patterned texture (POV-Ray's texture_map, and checker or hexagon
+     * with a list of textures): its nmap entries. Then `pigment` holds the
+     * pattern only (kind, gradient, arms, frequency, phase, wave,
+     * turbulence, noise_generator, uv_mapping and transform; no colours),
+     * and `finish` is unused. 0: a plain texture. */
+    int nmap;
+    const TextureMapEntry *map;
+    int map_depth;            /* levels of texture_maps from this one down: 0 for a plain texture */
 } SceneTexture;
 
 typedef enum {

@@ -4,6 +4,7 @@
  * and are kept apart (they cannot go into a finite grid). */
 #include "world.h"
 
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,13 @@
 typedef struct {
     World *w;
     int cap_polygons, cap_points, cap_outlines, cap_normals, cap_planes, cap_materials, cap_uvs;
+    int cap_maps, cap_map_entries;
+    /* The texture_maps built so far, by their entries (a hash set of the
+     * description's entry arrays, which copies of a texture share), so
+     * that each is built once however many objects and maps use it. */
+    const TextureMapEntry **map_keys;
+    int *map_index;
+    size_t map_slots, map_used;
     int failed;
 } Builder;
 
@@ -56,14 +64,132 @@ static void resolve_noise_generator(Pigment *pig, int scene_generator)
         pig->noise_generator = scene_generator;
 }
 
+static size_t map_hash(const TextureMapEntry *key, size_t slots)
+{
+    uint64_t h = (uint64_t)(uintptr_t)key * 0x9E3779B97F4A7C15u;
+    return (size_t)(h >> 17) & (slots - 1);
+}
+
+/* The texture_map already built for `key`, or -1. */
+static int find_map(const Builder *b, const TextureMapEntry *key)
+{
+    if (b->map_slots == 0)
+        return -1;
+    for (size_t j = map_hash(key, b->map_slots);; j = (j + 1) & (b->map_slots - 1)) {
+        if (!b->map_keys[j])
+            return -1;
+        if (b->map_keys[j] == key)
+            return b->map_index[j];
+    }
+}
+
+static int remember_map(Builder *b, const TextureMapEntry *key, int index)
+{
+    if ((b->map_used + 1) * 2 > b->map_slots) {
+        size_t slots = b->map_slots ? b->map_slots * 2 : 64;
+        const TextureMapEntry **keys = calloc(slots, sizeof *keys);
+        int *idx = calloc(slots, sizeof *idx);
+        if (!keys || !idx) {
+            free(keys);
+            free(idx);
+            b->failed = 1;
+            return -1;
+        }
+        for (size_t i = 0; i < b->map_slots; i++) {
+            if (!b->map_keys[i])
+                continue;
+            size_t j = map_hash(b->map_keys[i], slots);
+            while (keys[j])
+                j = (j + 1) & (slots - 1);
+            keys[j] = b->map_keys[i];
+            idx[j] = b->map_index[i];
+        }
+        free(b->map_keys);
+        free(b->map_index);
+        b->map_keys = keys;
+        b->map_index = idx;
+        b->map_slots = slots;
+    }
+    size_t j = map_hash(key, b->map_slots);
+    while (b->map_keys[j])
+        j = (j + 1) & (b->map_slots - 1);
+    b->map_keys[j] = key;
+    b->map_index[j] = index;
+    b->map_used++;
+    return 0;
+}
+
+static Finish engine_finish(const Finish *f)
+{
+    Finish r = *f;
+    /* POV-Ray keeps 1/roughness internally; so do we. */
+    r.roughness = f->roughness != 0.0 ? 1.0 / f->roughness : 0.0;
+    return r;
+}
+
+/* The texture_map of tex (nmap > 0) in World.maps: its index, or -1 when
+ * out of memory. Its entries that are texture_maps are built first (the
+ * parser keeps them MAX_TEXTURE_MAP_DEPTH deep at most). */
+static int build_map(Builder *b, const SceneTexture *tex)
+{
+    int found = find_map(b, tex->map);
+    if (found >= 0)
+        return found;
+    World *w = b->w;
+    int n = tex->nmap;
+    int sub[256 + 1];
+    int opaque = 1, uses_uv = 0;
+    if (n > 256)
+        n = 256; /* the parser's limit */
+    for (int i = 0; i < n; i++) {
+        const SceneTexture *e = tex->map[i].texture;
+        sub[i] = -1;
+        if (e->nmap > 0) {
+            sub[i] = build_map(b, e);
+            if (sub[i] < 0)
+                return -1;
+            opaque &= w->maps[sub[i]].opaque;
+            uses_uv |= w->maps[sub[i]].uses_uv;
+        } else {
+            opaque &= pigment_is_opaque(&e->pigment);
+        }
+        uses_uv |= e->pigment.uv_mapping && e->pigment.kind != PIGMENT_SOLID;
+    }
+    if (GROW(b, maps, cap_maps, w->nmaps) || GROW(b, map_entries, cap_map_entries, w->nmap_entries + n))
+        return -1;
+    TextureMap *m = &w->maps[w->nmaps];
+    m->first = w->nmap_entries;
+    m->count = n;
+    m->opaque = opaque;
+    m->uses_uv = uses_uv;
+    for (int i = 0; i < n; i++) {
+        const SceneTexture *e = tex->map[i].texture;
+        MapEntry *me = &w->map_entries[w->nmap_entries++];
+        memset(me, 0, sizeof *me);
+        me->value = tex->map[i].value;
+        me->map = sub[i];
+        me->pattern = e->pigment;
+        resolve_noise_generator(&me->pattern, w->noise_generator);
+        me->finish = engine_finish(&e->finish);
+        me->normal = e->normal && e->normal->kind != NORMAL_NONE ? e->normal : NULL;
+    }
+    if (remember_map(b, tex->map, w->nmaps))
+        return -1;
+    return w->nmaps++;
+}
+
 static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex, const Transform *texture_space,
                         SourcePos pos)
 {
     World *w = b->w;
     if (GROW(b, materials, cap_materials, w->nmaterials))
         return -1;
+    int map = -1;
+    if (tex->nmap > 0 && (map = build_map(b, tex)) < 0)
+        return -1;
     Material *m = &w->materials[w->nmaterials];
     memset(m, 0, sizeof *m);
+    m->map = map;
     m->pigment = tex->pigment.colour;
     if (tex->pigment.kind != PIGMENT_SOLID) {
         m->pattern = tex->pigment;
@@ -78,9 +204,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
         if (tex->normal->kind != NORMAL_UV)
             transform_compose(&m->normal_to_world, texture_space);
     }
-    m->finish = tex->finish;
-    /* POV-Ray keeps 1/roughness internally; so do we. */
-    m->finish.roughness = tex->finish.roughness != 0.0 ? 1.0 / tex->finish.roughness : 0.0;
+    m->finish = engine_finish(&tex->finish);
     Interior def = scene_default_interior();
     const Interior *it = in->interior ? in->interior : &def;
     m->interior_key = in->interior ? (const void *)in->interior : in->top_object;
@@ -88,7 +212,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->fade_distance = it->fade_distance;
     m->fade_power = it->fade_power;
     m->fade_colour = rgb_of(&it->fade_colour);
-    m->opaque = pigment_is_opaque(&tex->pigment);
+    m->opaque = map >= 0 ? w->maps[map].opaque : pigment_is_opaque(&tex->pigment);
     m->no_shadow = in->no_shadow;
     m->no_image = in->no_image;
     m->no_reflection = in->no_reflection;
@@ -238,6 +362,8 @@ static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, in
 static int uses_uv(const World *w, int material)
 {
     const Material *m = &w->materials[material];
+    if (m->map >= 0 && w->maps[m->map].uses_uv)
+        return 1;
     return (m->pattern.kind != PIGMENT_SOLID && m->pattern.uv_mapping) || (m->normal && m->normal->kind == NORMAL_UV);
 }
 
@@ -545,10 +671,14 @@ int world_build(World *w, const Scene *scene, WorldError *err)
         if (flatten_object(&b, scene->objects[i], &root, scene, 0) || b.failed) {
             snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
             err->pos = scene->objects[i]->pos;
+            free(b.map_keys);
+            free(b.map_index);
             world_free(w);
             return -1;
         }
     }
+    free(b.map_keys);
+    free(b.map_index);
     w->nlights = scene->nlights;
     w->lights = calloc((size_t)(scene->nlights > 0 ? scene->nlights : 1), sizeof(Light));
     if (!w->lights) {
@@ -612,6 +742,8 @@ void world_free(World *w)
     free(w->sky);
     free(w->planes);
     free(w->materials);
+    free(w->maps);
+    free(w->map_entries);
     free(w->lights);
     memset(w, 0, sizeof *w);
 }

@@ -12,6 +12,30 @@ typedef struct {
     double r, g, b;
 } RGB;
 
+/* One texture of a texture_map (World.map_entries): its value in the map,
+ * and either a plain texture or a texture_map of its own. */
+typedef struct {
+    double value;
+    int map;              /* its own texture_map (World.maps), or -1: a plain texture */
+    /* A plain texture's pigment, or the pattern of its own texture_map; its
+     * transform leads from the enclosing map's space (where that map's
+     * turbulence left the point) to its pattern, unless it is uv-mapped.
+     * Noise generators resolved. */
+    Pigment pattern;
+    Finish finish;        /* a plain texture's, roughness inverted */
+    /* A plain texture's normal (NULL: none): its transform leads from the
+     * enclosing map's space, as the pigment's. */
+    const SceneNormal *normal;
+} MapEntry;
+
+/* A texture_map (POV-Ray's patterned texture): its entries, in the order
+ * written, World.map_entries[first .. first + count - 1]. */
+typedef struct {
+    int first, count;
+    int opaque;           /* every texture it can show is opaque */
+    int uses_uv;          /* some pattern of it, or of its maps, is uv-mapped */
+} TextureMap;
+
 /* Surface properties shared by all polygons of one object. */
 typedef struct {
     Colour pigment;       /* solid colour (filter/transmit included); a pattern's representative */
@@ -24,6 +48,10 @@ typedef struct {
     const SceneNormal *normal;
     Transform normal_to_world;
     Finish finish;        /* roughness already inverted, as POV-Ray uses it */
+    /* A texture_map (World.maps), or -1: a plain texture. A texture_map's
+     * pattern is `pattern`, to world by `pattern_to_world`; `pigment` and
+     * `finish` are unused (its textures have their own, material_textures_at). */
+    int map;
     double ior;
     /* Identity of the interior: POV-Ray gives each top-level object one,
      * shared by its children unless they name their own. Rays keep a list of
@@ -92,6 +120,10 @@ typedef struct {
     InfinitePlane *planes;
     int nmaterials;
     Material *materials;
+    int nmaps;
+    TextureMap *maps;     /* the materials' texture_maps, each built once */
+    int nmap_entries;
+    MapEntry *map_entries;
     int nlights;
     Light *lights;
     Camera camera;

@@ -248,28 +248,29 @@ static Vec3 warp_point(const SceneNormal *n, const Transform *tr, Vec3 p)
     return pattern_warp(&n->pattern, inverse_transform_point(tr, p));
 }
 
-static Vec3 perturb(const NormalSetting *s, const SceneNormal *n, const Transform *tr, Vec3 p, Vec3 uv, Vec3 normal);
+static Vec3 perturb(const NormalSetting *s, const SceneNormal *n, const Transform *trp, const Transform *trn, Vec3 p,
+                    Vec3 uv, Vec3 normal);
 
 /* The pattern's value selects two normals of the map; their perturbations
  * are blended linearly between the entries' values. */
-static Vec3 normal_map(const NormalSetting *s, const SceneNormal *n, const Transform *tr, Vec3 p, Vec3 uv,
-                       Vec3 normal)
+static Vec3 normal_map(const NormalSetting *s, const SceneNormal *n, const Transform *trp, const Transform *trn,
+                       Vec3 p, Vec3 uv, Vec3 normal)
 {
-    Vec3 tp = warp_point(n, tr, p);
+    Vec3 tp = warp_point(n, trp, p);
     double value = pattern_value_warped(&n->pattern, tp, s->noise_generator);
     int prev, cur;
     search_map(&n->map[0].value, sizeof n->map[0], n->nmap, value, &prev, &cur);
-    normal = warp_normal(n, tr, normal);
+    normal = warp_normal(n, trn, normal);
     Vec3 other = normal;
     const SceneNormal *c = n->map[cur].normal;
-    normal = perturb(s, c, c ? &c->pattern.transform : NULL, tp, uv, normal);
+    normal = perturb(s, c, c ? &c->pattern.transform : NULL, c ? &c->pattern.transform : NULL, tp, uv, normal);
     if (prev != cur) {
         const SceneNormal *q = n->map[prev].normal;
-        other = perturb(s, q, q ? &q->pattern.transform : NULL, tp, uv, other);
+        other = perturb(s, q, q ? &q->pattern.transform : NULL, q ? &q->pattern.transform : NULL, tp, uv, other);
         double b = (value - n->map[prev].value) / (n->map[cur].value - n->map[prev].value), a = 1.0 - b;
         normal = v3(a * other.x + b * normal.x, a * other.y + b * normal.y, a * other.z + b * normal.z);
     }
-    normal = unwarp_normal(n, tr, normal);
+    normal = unwarp_normal(n, trn, normal);
     return v3_normalize(normal);
 }
 
@@ -282,7 +283,8 @@ static Vec3 average(const NormalSetting *s, const SceneNormal *n, Vec3 tp, Vec3 
     for (int i = 0; i < n->nmap; i++) {
         const SceneNormal *e = n->map[i].normal;
         float w = (float)n->map[i].value;
-        Vec3 v = perturb(s, e, e ? &e->pattern.transform : NULL, tp, uv, normal);
+        const Transform *t = e ? &e->pattern.transform : NULL;
+        Vec3 v = perturb(s, e, t, t, tp, uv, normal);
         sum = add_scaled(sum, (double)w, v);
         total += w;
     }
@@ -309,21 +311,24 @@ Vec3 normal_pattern_displace(const NormalSetting *s, const SceneNormal *n, Vec3 
     }
 }
 
-/* POV-Ray's Perturb_Normal, for normal n whose pattern space `tr` takes to
- * the space of p and normal. */
-static Vec3 perturb(const NormalSetting *s, const SceneNormal *n, const Transform *tr, Vec3 p, Vec3 uv, Vec3 normal)
+/* POV-Ray's Perturb_Normal, for normal n whose pattern space `trp` takes
+ * to the space of p, and `trn` to the space of the normal (the same but
+ * for a texture_map's entries, whose normals come from world through the
+ * map's transforms). */
+static Vec3 perturb(const NormalSetting *s, const SceneNormal *n, const Transform *trp, const Transform *trn, Vec3 p,
+                    Vec3 uv, Vec3 normal)
 {
     if (!n || n->kind == NORMAL_NONE) /* a map's missing entry, or a pattern not evaluated */
         return normal;
     if (n->kind == NORMAL_UV) {
         /* the entry at the surface's (u, v, 0), the normal's own warps unused */
         const SceneNormal *e = n->uv_entry;
-        return v3_normalize(perturb(s, e, &e->pattern.transform, uv, uv, normal));
+        return v3_normalize(perturb(s, e, &e->pattern.transform, &e->pattern.transform, uv, uv, normal));
     }
     if (n->nmap > 0 && n->kind != NORMAL_AVERAGE)
-        return normal_map(s, n, tr, p, uv, normal);
-    normal = warp_normal(n, tr, normal);
-    Vec3 tp = warp_point(n, tr, p);
+        return normal_map(s, n, trp, trn, p, uv, normal);
+    normal = warp_normal(n, trn, normal);
+    Vec3 tp = warp_point(n, trp, p);
     if (n->kind == NORMAL_AVERAGE) {
         normal = average(s, n, tp, uv, normal);
     } else if (n->kind != NORMAL_PATTERN) {
@@ -339,12 +344,20 @@ static Vec3 perturb(const NormalSetting *s, const SceneNormal *n, const Transfor
             normal = add_scaled(normal, v * amount, pyramid[i]);
         }
     }
-    return unwarp_normal(n, tr, normal);
+    return unwarp_normal(n, trn, normal);
 }
 
 Vec3 normal_perturb(const NormalSetting *s, const SceneNormal *n, const Transform *to_texture, Vec3 point, Vec3 uv,
                     Vec3 normal)
 {
-    Vec3 r = perturb(s, n, to_texture, point, uv, normal);
+    Vec3 r = perturb(s, n, to_texture, to_texture, point, uv, normal);
     return v3_normalize(r); /* with no_bump_scale, POV-Ray normalises after */
+}
+
+Vec3 normal_perturb_in(const NormalSetting *s, const SceneNormal *n, const Transform *parent_to_world, Vec3 point,
+                       Vec3 uv, Vec3 normal)
+{
+    Transform to_world = n->pattern.transform;
+    transform_compose(&to_world, parent_to_world);
+    return v3_normalize(perturb(s, n, &n->pattern.transform, &to_world, point, uv, normal));
 }

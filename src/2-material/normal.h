@@ -26,6 +26,14 @@ NormalSetting normal_setting_of(const World *w);
 Vec3 normal_perturb(const NormalSetting *s, const SceneNormal *n, const Transform *to_texture, Vec3 point, Vec3 uv,
                     Vec3 normal);
 
+/* The same for the normal of a texture_map's entry: `parent_to_world`
+ * takes the map's pattern space (where its turbulence left the point) to
+ * world, `point` is in that space; the normal's own transform leads from
+ * its pattern space to the map's, as POV-Ray's Warp_Normal through the
+ * map's transforms and then the normal's. */
+Vec3 normal_perturb_in(const NormalSetting *s, const SceneNormal *n, const Transform *parent_to_world, Vec3 point,
+                       Vec3 uv, Vec3 normal);
+
 /* The perturbation of a normal of the patterns made for normals, at a
  * point of its pattern space (warped) and a normal there: what
  * normal_perturb adds before mapping back (for the pattern tests). */

@@ -2,7 +2,8 @@
  * hexagon_pattern, gradient_pattern, the noise patterns, spiral1/2_pattern,
  * Warp_EPoint's turbulence, Evaluate_TPat's frequency/phase/wave,
  * Search_Blend_Map, the uv coordinates of UVCoord, image_map's lookup and
- * interpolation): the same small offsets
+ * interpolation, the textures of a texture_map as ComputeOneTextureColour
+ * picks and weighs them): the same small offsets
  * and the same order of operations, so that pattern borders fall where
  * POV-Ray puts them. */
 #include "pigment.h"
@@ -11,6 +12,7 @@
 
 #include "convert.h"
 #include "noise.h"
+#include "normal.h"
 
 
 /* POV-Ray's FLOOR macro: floor() written so that -0 and exact negative
@@ -396,6 +398,140 @@ Colour material_colour_at(const World *w, const Material *m, int polygon, Vec3 w
         return m->pigment;
     Vec3 at = m->pattern.uv_mapping ? surface_uv(w, polygon, world_point) : world_point;
     return pigment_at(&m->pattern, inverse_transform_point(&m->pattern_to_world, at));
+}
+
+/* ---- texture_map (POV-Ray's ComputeOneTextureColour) ----------------------- */
+
+/* What the textures' normals need: the surface normal facing the ray, and
+ * whether to perturb it (NULL: normals are not asked for, as by shadow
+ * rays). */
+typedef struct {
+    Vec3 normal;
+    int perturb;
+    NormalSetting setting;
+} NormalAsk;
+
+static int map_textures(const World *w, int map, const Pigment *pattern, Vec3 p, int polygon, Vec3 world_point,
+                        double weight, const Transform *chain, const NormalAsk *ask, SurfaceTexture *out, int n);
+
+/* Entry e of a texture_map, seen at p (the point in the map's space, after
+ * the map's turbulence; chain: that space to world): its plain textures
+ * appended to out[n ...]. */
+static int entry_textures(const World *w, const MapEntry *e, Vec3 p, int polygon, Vec3 world_point, double weight,
+                          const Transform *chain, const NormalAsk *ask, SurfaceTexture *out, int n)
+{
+    if (n >= MAX_SURFACE_TEXTURES)
+        return n; /* the parser keeps maps shallow enough never to come here */
+    const Pigment *pig = &e->pattern;
+    Vec3 q = p;
+    if (pig->kind != PIGMENT_SOLID || e->map >= 0) {
+        /* A uv-mapped pigment reads the surface's uv, whatever the maps
+         * around it did to the point (POV-Ray's UV_MAP_PATTERN). */
+        Vec3 at = pig->uv_mapping ? surface_uv(w, polygon, world_point) : p;
+        q = inverse_transform_point(&pig->transform, at);
+    }
+    if (e->map >= 0) {
+        Transform inner = pig->transform; /* the inner map's space to world */
+        if (ask && !pig->uv_mapping)
+            transform_compose(&inner, chain);
+        return map_textures(w, e->map, pig, q, polygon, world_point, weight, &inner, ask, out, n);
+    }
+    out[n].weight = weight;
+    out[n].colour = pigment_at(pig, q);
+    out[n].finish = &e->finish;
+    if (ask) {
+        out[n].normal = ask->normal;
+        if (ask->perturb && e->normal) {
+            Vec3 uv = e->normal->kind == NORMAL_UV ? surface_uv(w, polygon, world_point) : v3(0, 0, 0);
+            out[n].normal = normal_perturb_in(&ask->setting, e->normal, chain, p, uv, ask->normal);
+        }
+    }
+    return n + 1;
+}
+
+/* A texture_map of pattern `pattern` at p (in its pattern space, before
+ * its turbulence): the entries around the pattern's value there (POV-Ray's
+ * Search_Blend_Map), weighed as ComputeOneTextureColour blends them. Its
+ * entries see the point as its turbulence leaves it (POV-Ray's tpoint). */
+static int map_textures(const World *w, int map, const Pigment *pattern, Vec3 p, int polygon, Vec3 world_point,
+                        double weight, const Transform *chain, const NormalAsk *ask, SurfaceTexture *out, int n)
+{
+    const TextureMap *tm = &w->maps[map];
+    const MapEntry *e = &w->map_entries[tm->first];
+    Vec3 tp = warp_point(pattern, p);
+    double v = pattern_value_warped(pattern, tp, NOISE_RANGE_CORRECTED);
+    int last = tm->count - 1, cur = 0, prev = 0;
+    if (v >= e[last].value) {
+        cur = prev = last;
+    } else {
+        while (v > e[cur].value)
+            prev = cur++;
+    }
+    if (v == e[cur].value)
+        prev = cur;
+    if (prev == cur)
+        return entry_textures(w, &e[cur], tp, polygon, world_point, weight, chain, ask, out, n);
+    double f = (v - e[prev].value) / (e[cur].value - e[prev].value);
+    n = entry_textures(w, &e[cur], tp, polygon, world_point, weight * f, chain, ask, out, n);
+    return entry_textures(w, &e[prev], tp, polygon, world_point, weight * (1.0 - f), chain, ask, out, n);
+}
+
+static int textures_at(const World *w, const Material *m, int polygon, Vec3 world_point, const NormalAsk *ask,
+                       SurfaceTexture out[MAX_SURFACE_TEXTURES])
+{
+    if (m->map < 0) {
+        out[0].weight = 1.0;
+        out[0].colour = material_colour_at(w, m, polygon, world_point);
+        out[0].finish = &m->finish;
+        if (ask) {
+            out[0].normal = ask->normal;
+            if (ask->perturb && m->normal) {
+                Vec3 uv = m->normal->kind == NORMAL_UV ? surface_uv(w, polygon, world_point) : v3(0, 0, 0);
+                out[0].normal = normal_perturb(&ask->setting, m->normal, &m->normal_to_world, world_point, uv,
+                                               ask->normal);
+            }
+        }
+        return 1;
+    }
+    Vec3 at = m->pattern.uv_mapping ? surface_uv(w, polygon, world_point) : world_point;
+    Vec3 p = inverse_transform_point(&m->pattern_to_world, at);
+    return map_textures(w, m->map, &m->pattern, p, polygon, world_point, 1.0, &m->pattern_to_world, ask, out, 0);
+}
+
+int material_textures_at(const World *w, const Material *m, int polygon, Vec3 world_point,
+                         SurfaceTexture out[MAX_SURFACE_TEXTURES])
+{
+    return textures_at(w, m, polygon, world_point, NULL, out);
+}
+
+int material_textures_normals_at(const World *w, const Material *m, int polygon, Vec3 world_point, Vec3 normal,
+                                 int perturb, SurfaceTexture out[MAX_SURFACE_TEXTURES])
+{
+    NormalAsk ask = { normal, perturb, normal_setting_of(w) };
+    return textures_at(w, m, polygon, world_point, &ask, out);
+}
+
+RGB material_filter_at(const World *w, const Material *m, int polygon, Vec3 world_point, int *blocks)
+{
+    SurfaceTexture t[MAX_SURFACE_TEXTURES];
+    int n = material_textures_at(w, m, polygon, world_point, t);
+    const Colour *c = &t[0].colour;
+    RGB through = { c->r * c->filter + c->transmit, c->g * c->filter + c->transmit, c->b * c->filter + c->transmit };
+    *blocks = c->filter == 0.0 && c->transmit == 0.0;
+    if (n == 1)
+        return through;
+    /* POV-Ray's ComputeShadowTexture for each texture, blended by weight */
+    through.r *= t[0].weight;
+    through.g *= t[0].weight;
+    through.b *= t[0].weight;
+    for (int i = 1; i < n; i++) {
+        c = &t[i].colour;
+        through.r += t[i].weight * (c->r * c->filter + c->transmit);
+        through.g += t[i].weight * (c->g * c->filter + c->transmit);
+        through.b += t[i].weight * (c->b * c->filter + c->transmit);
+        *blocks &= c->filter == 0.0 && c->transmit == 0.0;
+    }
+    return through;
 }
 
 /* The sky's pigment i at the unit direction's point p. */

@@ -1,7 +1,8 @@
 /* Pigments: POV-Ray 3.7's checker, hexagon, gradient, noise (bozo, granite,
  * wrinkles, agate, marble, wood) and spiral patterns with turbulence and
  * colour maps, evaluated at a point (pattern.cpp, warps.cpp and pigment.cpp
- * there). */
+ * there); and the textures a texture_map shows at a point (trace.cpp's
+ * ComputeOneTextureColour). */
 #ifndef HST_PIGMENT_H
 #define HST_PIGMENT_H
 
@@ -39,6 +40,41 @@ Vec3 surface_uv(const World *w, int polygon, Vec3 world_point);
 /* A material's colour at a world-space point on polygon `polygon` (-1: an
  * infinite plane). */
 Colour material_colour_at(const World *w, const Material *m, int polygon, Vec3 world_point);
+
+/* One plain texture a material shows at a point, as POV-Ray shades it: its
+ * share of the surface's colour (a texture_map blends the colours its
+ * textures are shaded with by these weights), its pigment's colour there
+ * and its finish. */
+typedef struct {
+    double weight;
+    Colour colour;
+    const Finish *finish;
+    Vec3 normal;          /* its shading normal (see material_textures_at) */
+} SurfaceTexture;
+
+#define MAX_SURFACE_TEXTURES (1 << MAX_TEXTURE_MAP_DEPTH)
+
+/* The plain textures of a material at a world-space point on polygon
+ * `polygon` (-1: a plane): for a plain texture itself (weight 1); for a
+ * texture_map, at each level the two entries around the pattern's value
+ * there, or the one it falls on (POV-Ray's ComputeOneTextureColour and
+ * Search_Blend_Map). Returns how many, 1 to MAX_SURFACE_TEXTURES; their
+ * weights sum to 1. */
+int material_textures_at(const World *w, const Material *m, int polygon, Vec3 world_point,
+                         SurfaceTexture out[MAX_SURFACE_TEXTURES]);
+/* The same with each texture's shading normal: `normal` (the surface's,
+ * facing the ray) perturbed by the texture's normal when `perturb` (+Q8),
+ * as POV-Ray moves it through the maps' transforms to the entry's normal
+ * and back. */
+int material_textures_normals_at(const World *w, const Material *m, int polygon, Vec3 world_point, Vec3 normal,
+                                 int perturb, SurfaceTexture out[MAX_SURFACE_TEXTURES]);
+
+/* What a see-through material lets through at a point, per channel, for
+ * shadow rays: rgb * filter + transmit of its pigment, or of each texture
+ * of a texture_map blended by their weights (POV-Ray's ComputeShadowTexture
+ * through ComputeOneTextureColour). *blocks: no texture there has filter
+ * or transmit (no light gets through). */
+RGB material_filter_at(const World *w, const Material *m, int polygon, Vec3 world_point, int *blocks);
 
 /* What a sky sphere and the background show in direction `dir` (unit),
  * without an alpha channel (POV-Ray 3.7's ComputeSky, version >= 3.7). */

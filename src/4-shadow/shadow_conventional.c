@@ -1,8 +1,8 @@
 /* The conventional (Whitted) shadow test: a shadow ray from the shading
  * point toward the light, through the hierarchy (or the grid), stopped by
  * the first opaque polygon. Transparent polygons on the way filter the light
- * (POV-Ray multiplies rgb*filter + transmit of each), in the order the light
- * passes them. */
+ * (POV-Ray multiplies rgb*filter + transmit of each, a texture_map's
+ * textures' blended), in the order the light passes them. */
 #include "shadow.h"
 
 #include <stdlib.h>
@@ -17,16 +17,17 @@
  * 1 when the light is now fully blocked. */
 static int pass_through(const World *w, const Material *m, int polygon, const ShadowQuery *q, double t, RGB *light)
 {
-    Colour here = m->opaque ? m->pigment
-                            : material_colour_at(w, m, polygon, v3_add(q->point, v3_scale(q->to_light, t)));
-    if (m->opaque || (here.filter == 0.0 && here.transmit == 0.0)) {
+    int blocks = 1;
+    RGB through = { 0, 0, 0 };
+    if (!m->opaque)
+        through = material_filter_at(w, m, polygon, v3_add(q->point, v3_scale(q->to_light, t)), &blocks);
+    if (blocks) {
         light->r = light->g = light->b = 0.0;
         return 1;
     }
-    const Colour *c = &here;
-    light->r *= c->r * c->filter + c->transmit;
-    light->g *= c->g * c->filter + c->transmit;
-    light->b *= c->b * c->filter + c->transmit;
+    light->r *= through.r;
+    light->g *= through.g;
+    light->b *= through.b;
     return 0;
 }
 

@@ -1,5 +1,7 @@
 /* Shading, following POV-Ray 3.7's Trace::ComputeLightedTexture for plain
- * one-layer textures, so that images compare pixel for pixel. Where POV-Ray
+ * one-layer textures, and its ComputeOneTextureColour for texture_maps (each
+ * texture around the map's value shaded in full, the colours blended), so
+ * that images compare pixel for pixel. Where POV-Ray
  * has a tolerance (EPSILON) we use the same value, and say so. */
 #include "shade.h"
 
@@ -201,12 +203,35 @@ static int visible(RGB lc)
     return fabs(lc.r) > POV_EPSILON || fabs(lc.g) > POV_EPSILON || fabs(lc.b) > POV_EPSILON;
 }
 
-/* Diffuse, phong and specular from every light (ComputeDiffuseLight). */
+/* One plain texture shaded at a hit, as POV-Ray's ComputeLightedTexture
+ * shades a one-layer texture: a texture_map's hit is shaded with each of
+ * the textures around its pattern's value, and their colours blended by
+ * weight. Each texture has its own pigment colour, finish and normal. */
+typedef struct {
+    double weight;        /* its share of the blend (1: a plain texture) */
+    Colour colour;        /* its pigment's colour here, filter and transmit included */
+    RGB pigment;
+    const Finish *finish;
+    Vec3 normal;          /* its shading normal, facing the arriving ray */
+    double att;           /* its own light's share: 1 - filter - transmit */
+    RGB reflec;           /* its reflectivity, and the weight of its reflected ray */
+    double reflect_weight;
+    RGB acc;              /* its light so far: ambient and emission, then the lights' */
+} LitTexture;
+
+static int has_highlights_or_diffuse(const Finish *f)
+{
+    return f->diffuse != 0.0 || f->specular != 0.0 || f->phong != 0.0;
+}
+
+/* Diffuse, phong and specular from every light (ComputeDiffuseLight), for
+ * each of the n textures of the hit: one shadow decision per light, which
+ * all of them share (POV-Ray's light colour cache of the intersection),
+ * asked when some texture that takes light faces it. */
 static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, const Segment *seg, Vec3 eye_dir,
-                         Vec3 normal, RGB pigment, double attenuation, RGB *acc)
+                         Vec3 normal, LitTexture *lit, int n)
 {
     const World *w = ctx->shadow.tracer.world;
-    const Finish *f = &m->finish;
     for (int li = 0; li < w->nlights; li++) {
         const Light *l = &w->lights[li];
         Vec3 to_light;
@@ -217,7 +242,11 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
         ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, normal };
         /* A light behind the surface (as seen from the eye) adds nothing and
          * needs no shadow test; methods that carry state still see it. */
-        int faces_away = !m->double_illuminate && v3_dot(normal, to_light) < POV_EPSILON;
+        int faces_away = 1;
+        for (int i = 0; i < n; i++)
+            if (has_highlights_or_diffuse(lit[i].finish) &&
+                (m->double_illuminate || v3_dot(lit[i].normal, to_light) >= POV_EPSILON))
+                faces_away = 0;
         if (faces_away || (fabs(lc.r) < POV_EPSILON && fabs(lc.g) < POV_EPSILON && fabs(lc.b) < POV_EPSILON)) {
             int asked = shadows && ctx->shadow.method->skip;
             if (asked)
@@ -236,10 +265,23 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
             if (ctx->aov && ctx->shadow.state_depth == 1 && (through.r != 1.0 || through.g != 1.0 || through.b != 1.0)) {
                 /* --aov: what this shadow took, as a +Q3 render would show it. */
                 RGB u = { 0, 0, 0 }, s = { 0, 0, 0 };
-                if (visible(unshadowed))
-                    add_light(f, l, eye_dir, normal, to_light, pigment, attenuation, unshadowed, &u);
-                if (visible(lc))
-                    add_light(f, l, eye_dir, normal, to_light, pigment, attenuation, lc, &s);
+                for (int i = 0; i < n; i++) {
+                    const LitTexture *t = &lit[i];
+                    if (!has_highlights_or_diffuse(t->finish) ||
+                        (!m->double_illuminate && v3_dot(t->normal, to_light) < POV_EPSILON))
+                        continue;
+                    RGB ut = { 0, 0, 0 }, st = { 0, 0, 0 };
+                    if (visible(unshadowed))
+                        add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, unshadowed, &ut);
+                    if (visible(lc))
+                        add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, lc, &st);
+                    u.r += t->weight * ut.r;
+                    u.g += t->weight * ut.g;
+                    u.b += t->weight * ut.b;
+                    s.r += t->weight * st.r;
+                    s.g += t->weight * st.g;
+                    s.b += t->weight * st.b;
+                }
                 aov_record_loss(ctx->aov, (const double[3]){ u.r, u.g, u.b }, (const double[3]){ s.r, s.g, s.b });
             }
         } else {
@@ -247,7 +289,12 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
         }
         if (!visible(lc))
             continue;
-        add_light(f, l, eye_dir, normal, to_light, pigment, attenuation, lc, acc);
+        for (int i = 0; i < n; i++) {
+            LitTexture *t = &lit[i];
+            if (has_highlights_or_diffuse(t->finish) &&
+                (m->double_illuminate || v3_dot(t->normal, to_light) >= POV_EPSILON))
+                add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, lc, &t->acc);
+        }
     }
 }
 
@@ -483,78 +530,58 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
         fog_apply(w, ray->org, ray->dir, hit.t, out);
 }
 
-static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const Segment *seg, double weight,
-                      int level, Radiance *out)
+/* A texture's reflectivity (computed before lighting, as POV-Ray does)
+ * and its own light: ambient and emission, reduced where it is see-through. */
+static void texture_own_light(ShadeContext *ctx, const Ray *ray, const Material *m, double weight, LitTexture *t)
 {
     const World *w = ctx->shadow.tracer.world;
-    const Hit hit = *hitp;
-    const LightState *state = (const LightState *)seg->state;
-    const Material *m = &w->materials[hit_material(w, &hit)];
-    const Finish *f = &m->finish;
-    Vec3 raw = hit.kind == HIT_POLYGON ? polygon_shading_normal(w, &w->polygons[hit.index], hit.point)
-                                       : w->planes[hit.index].normal;
-    if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
-        raw = v3_neg(raw);
-    Vec3 normal = raw;
-    if (m->normal && ctx->quality.normal) {
-        const int polygon = hit.kind == HIT_POLYGON ? hit.index : -1;
-        const NormalSetting setting = normal_setting_of(w);
-        Vec3 uv = m->normal->kind == NORMAL_UV ? surface_uv(w, polygon, hit.point) : v3(0, 0, 0);
-        normal = normal_perturb(&setting, m->normal, &m->normal_to_world, hit.point, uv, raw);
-    }
-    const Colour surface = material_colour_at(w, m, hit.kind == HIT_POLYGON ? hit.index : -1, hit.point);
-    const Colour *pc = &surface;
-    RGB pigment = { pc->r, pc->g, pc->b };
-    if (ctx->aov && ctx->shadow.state_depth == 1)
-        aov_record_hit(ctx->aov, hit.t, hit.point, normal);
-
-    if (ctx->quality.full_ambient) {
-        skip_all_lights(ctx, &hit, seg);
-        out->r = pigment.r;
-        out->g = pigment.g;
-        out->b = pigment.b;
-        return;
-    }
-
-    /* Reflectivity is computed before lighting, as POV-Ray does. */
-    double cos_incidence = -v3_dot(ray->dir, normal);
-    double reflect_weight = weight;
-    RGB reflec = f->reflection_fresnel
-                     ? reflectivity_fresnel(f, cos_incidence, refraction_ratio_peek(ray, m), &reflect_weight)
-                     : reflectivity(f, cos_incidence, &reflect_weight);
+    const Finish *f = t->finish;
+    double cos_incidence = -v3_dot(ray->dir, t->normal);
+    t->reflect_weight = weight;
+    t->reflec = f->reflection_fresnel
+                    ? reflectivity_fresnel(f, cos_incidence, refraction_ratio_peek(ray, m), &t->reflect_weight)
+                    : reflectivity(f, cos_incidence, &t->reflect_weight);
     if (f->reflection_metallic != 0.0) {
         double x = fabs(acos(cos_incidence)) / (M_PI / 2.0);
         double F = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
         F = fmin(1.0, fmax(0.0, F));
         double k = f->reflection_metallic * (1.0 - F);
-        reflec.r *= 1.0 + k * (pigment.r - 1.0);
-        reflec.g *= 1.0 + k * (pigment.g - 1.0);
-        reflec.b *= 1.0 + k * (pigment.b - 1.0);
+        t->reflec.r *= 1.0 + k * (t->pigment.r - 1.0);
+        t->reflec.g *= 1.0 + k * (t->pigment.g - 1.0);
+        t->reflec.b *= 1.0 + k * (t->pigment.b - 1.0);
     }
-
-    /* The surface's own light, reduced where it is see-through. */
+    const Colour *pc = &t->colour;
     double att = 1.0 - pc->filter - pc->transmit;
+    t->att = att;
     /* POV-Ray's radiosity (at +Q9, its "advanced light") takes ambient's place */
     RGB amb = w->radiosity_replaces_ambient && ctx->quality.volume ? (RGB){ 0, 0, 0 } : w->ambient_light;
-    RGB acc;
-    acc.r = pigment.r * (f->ambient[0] * amb.r * att + f->emission[0] * att);
-    acc.g = pigment.g * (f->ambient[1] * amb.g * att + f->emission[1] * att);
-    acc.b = pigment.b * (f->ambient[2] * amb.b * att + f->emission[2] * att);
-    if (f->diffuse != 0.0 || f->specular != 0.0 || f->phong != 0.0)
-        direct_light(ctx, m, &hit, seg, ray->dir, normal, pigment, att, &acc);
-    else
-        skip_all_lights(ctx, &hit, seg);
-    out->r = acc.r;
-    out->g = acc.g;
-    out->b = acc.b;
+    t->acc.r = t->pigment.r * (f->ambient[0] * amb.r * att + f->emission[0] * att);
+    t->acc.g = t->pigment.g * (f->ambient[1] * amb.g * att + f->emission[1] * att);
+    t->acc.b = t->pigment.b * (f->ambient[2] * amb.b * att + f->emission[2] * att);
+}
+
+/* A lit texture's colour: its light, then what shows through it (the
+ * refracted or transmitted ray) and what it reflects, each traced with its
+ * own weight as POV-Ray traces them for each texture of a texture_map. */
+static void texture_colour(ShadeContext *ctx, const Ray *ray, const Hit *hit, const LightState *state,
+                           const Material *m, Vec3 raw, double weight, int level, const LitTexture *t, Radiance *out)
+{
+    const World *w = ctx->shadow.tracer.world;
+    const Finish *f = t->finish;
+    const Colour *pc = &t->colour;
+    const RGB pigment = t->pigment;
+    out->r = t->acc.r;
+    out->g = t->acc.g;
+    out->b = t->acc.b;
+    out->transmit = 0.0;
 
     /* What shows through: rgb*filter + transmit. */
     RGB fil = { pigment.r * pc->filter + pc->transmit, pigment.g * pc->filter + pc->transmit,
                 pigment.b * pc->filter + pc->transmit };
     if (f->conserve_energy) {
-        fil.r *= fmin(1.0, 1.0 - reflec.r);
-        fil.g *= fmin(1.0, 1.0 - reflec.g);
-        fil.b *= fmin(1.0, 1.0 - reflec.b);
+        fil.r *= fmin(1.0, 1.0 - t->reflec.r);
+        fil.g *= fmin(1.0, 1.0 - t->reflec.g);
+        fil.b *= fmin(1.0, 1.0 - t->reflec.b);
     }
     double trans = fmin(1.0, fabs(greyscale(fil.r, fil.g, fil.b)));
 
@@ -562,16 +589,16 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
     if (trans > w->adc_bailout && ctx->quality.refraction) {
         double w1 = fmax(fabs(fil.r), fmax(fabs(fil.g), fabs(fil.b)));
         Radiance rfr = { 0, 0, 0, 0 };
-        tir = trace_refraction(ctx, ray, &hit, state, m, normal, raw, weight * w1, level, &rfr);
+        tir = trace_refraction(ctx, ray, hit, state, m, t->normal, raw, weight * w1, level, &rfr);
         RGB attc = { 1.0, 1.0, 1.0 };
         if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON) {
             if (m->fade_power >= 1000) {
-                double depth = hit.t / m->fade_distance;
+                double depth = hit->t / m->fade_distance;
                 attc.r = exp(-(1.0 - m->fade_colour.r) * depth);
                 attc.g = exp(-(1.0 - m->fade_colour.g) * depth);
                 attc.b = exp(-(1.0 - m->fade_colour.b) * depth);
             } else {
-                double a = 1.0 + pow(hit.t / m->fade_distance, m->fade_power);
+                double a = 1.0 + pow(hit->t / m->fade_distance, m->fade_power);
                 attc.r = m->fade_colour.r + (1.0 - m->fade_colour.r) / a;
                 attc.g = m->fade_colour.g + (1.0 - m->fade_colour.g) / a;
                 attc.b = m->fade_colour.b + (1.0 - m->fade_colour.b) / a;
@@ -591,20 +618,120 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
 
     /* Reflection, skipped after total internal reflection (the layer's
      * normal is the top normal for one-layer textures). */
-    if (ctx->quality.reflection && !tir && !(reflec.r == 0.0 && reflec.g == 0.0 && reflec.b == 0.0)) {
+    if (ctx->quality.reflection && !tir && !(t->reflec.r == 0.0 && t->reflec.g == 0.0 && t->reflec.b == 0.0)) {
         Radiance rfl;
-        trace_reflection(ctx, ray, &hit, state, normal, raw, reflect_weight, level, &rfl);
+        trace_reflection(ctx, ray, hit, state, t->normal, raw, t->reflect_weight, level, &rfl);
         double e = f->reflection_exponent;
         if (e != 1.0 && e > 0.0) {
-            out->r += reflec.r * pow(rfl.r, e);
-            out->g += reflec.g * pow(rfl.g, e);
-            out->b += reflec.b * pow(rfl.b, e);
+            out->r += t->reflec.r * pow(rfl.r, e);
+            out->g += t->reflec.g * pow(rfl.g, e);
+            out->b += t->reflec.b * pow(rfl.b, e);
         } else {
-            out->r += reflec.r * rfl.r;
-            out->g += reflec.g * rfl.g;
-            out->b += reflec.b * rfl.b;
+            out->r += t->reflec.r * rfl.r;
+            out->g += t->reflec.g * rfl.g;
+            out->b += t->reflec.b * rfl.b;
         }
     }
+}
+
+/* The hit shaded with its n textures (one, or a texture_map's): each
+ * texture's reflectivity and own light, the lights once for all of them,
+ * then each one's refraction and reflection, the colours blended by weight
+ * (POV-Ray's ComputeOneTextureColour), the alpha channel's transmittance
+ * too. */
+static void shade_textures(ShadeContext *ctx, const Ray *ray, const Hit *hit, const Segment *seg, const Material *m,
+                           Vec3 raw, Vec3 normal, LitTexture *lit, int n, double weight, int level, Radiance *out)
+{
+    const LightState *state = (const LightState *)seg->state;
+    if (ctx->quality.full_ambient) {
+        skip_all_lights(ctx, hit, seg);
+        out->r = out->g = out->b = 0.0; /* the pigment colour: a texture_map's textures' blended */
+        for (int i = 0; i < n; i++) {
+            out->r += lit[i].weight * lit[i].pigment.r;
+            out->g += lit[i].weight * lit[i].pigment.g;
+            out->b += lit[i].weight * lit[i].pigment.b;
+        }
+        return;
+    }
+    int lighted = 0;
+    for (int i = 0; i < n; i++) {
+        texture_own_light(ctx, ray, m, weight, &lit[i]);
+        lighted |= has_highlights_or_diffuse(lit[i].finish);
+    }
+    if (lighted)
+        direct_light(ctx, m, hit, seg, ray->dir, normal, lit, n);
+    else
+        skip_all_lights(ctx, hit, seg);
+    if (n == 1) {
+        texture_colour(ctx, ray, hit, state, m, raw, weight, level, &lit[0], out);
+        return;
+    }
+    out->r = out->g = out->b = out->transmit = 0.0;
+    for (int i = 0; i < n; i++) {
+        Radiance c;
+        texture_colour(ctx, ray, hit, state, m, raw, weight, level, &lit[i], &c);
+        out->r += lit[i].weight * c.r;
+        out->g += lit[i].weight * c.g;
+        out->b += lit[i].weight * c.b;
+        out->transmit += lit[i].weight * c.transmit;
+    }
+}
+
+static void lit_texture(LitTexture *t, const SurfaceTexture *s)
+{
+    t->weight = s->weight;
+    t->colour = s->colour;
+    t->pigment = (RGB){ s->colour.r, s->colour.g, s->colour.b };
+    t->finish = s->finish;
+    t->normal = s->normal;
+}
+
+/* A texture_map's hit: shaded with the textures around its value here. Apart
+ * (never inlined), so that plain textures' hits, which recurse through
+ * shade_hit as deep as the ray tree, keep a small stack frame. */
+__attribute__((noinline)) static void shade_map_hit(ShadeContext *ctx, const Ray *ray, const Hit *hit,
+                                                    const Segment *seg, const Material *m, Vec3 raw, Vec3 normal,
+                                                    double weight, int level, Radiance *out)
+{
+    const World *w = ctx->shadow.tracer.world;
+    SurfaceTexture found[MAX_SURFACE_TEXTURES];
+    LitTexture lit[MAX_SURFACE_TEXTURES];
+    int n = material_textures_normals_at(w, m, hit->kind == HIT_POLYGON ? hit->index : -1, hit->point, normal,
+                                         ctx->quality.normal, found);
+    for (int i = 0; i < n; i++)
+        lit_texture(&lit[i], &found[i]);
+    shade_textures(ctx, ray, hit, seg, m, raw, normal, lit, n, weight, level, out);
+}
+
+static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const Segment *seg, double weight,
+                      int level, Radiance *out)
+{
+    const World *w = ctx->shadow.tracer.world;
+    const Hit hit = *hitp;
+    const Material *m = &w->materials[hit_material(w, &hit)];
+    Vec3 raw = hit.kind == HIT_POLYGON ? polygon_shading_normal(w, &w->polygons[hit.index], hit.point)
+                                       : w->planes[hit.index].normal;
+    if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
+        raw = v3_neg(raw);
+    Vec3 normal = raw;
+    if (m->map >= 0) {
+        if (ctx->aov && ctx->shadow.state_depth == 1)
+            aov_record_hit(ctx->aov, hit.t, hit.point, normal);
+        shade_map_hit(ctx, ray, &hit, seg, m, raw, normal, weight, level, out);
+        return;
+    }
+    const int polygon = hit.kind == HIT_POLYGON ? hit.index : -1;
+    if (m->normal && ctx->quality.normal) {
+        const NormalSetting setting = normal_setting_of(w);
+        Vec3 uv = m->normal->kind == NORMAL_UV ? surface_uv(w, polygon, hit.point) : v3(0, 0, 0);
+        normal = normal_perturb(&setting, m->normal, &m->normal_to_world, hit.point, uv, raw);
+    }
+    if (ctx->aov && ctx->shadow.state_depth == 1)
+        aov_record_hit(ctx->aov, hit.t, hit.point, normal);
+    const SurfaceTexture own = { 1.0, material_colour_at(w, m, polygon, hit.point), &m->finish, normal };
+    LitTexture lit;
+    lit_texture(&lit, &own);
+    shade_textures(ctx, ray, &hit, seg, m, raw, raw, &lit, 1, weight, level, out);
 }
 
 void shade_counters_add(ShadeCounters *t, const ShadeCounters *p)

@@ -1,6 +1,7 @@
 /* Shading: POV-Ray 3.7's classic model for one-layer textures (ambient,
  * emission, diffuse with brilliance, phong, specular, reflection, refraction
- * with ior, filter and transmit, max_trace_level, adc_bailout, light fading).
+ * with ior, filter and transmit, max_trace_level, adc_bailout, light fading),
+ * and its blend of them for texture_maps.
  * Shadows are asked of the context's shadow method. */
 #ifndef HST_SHADE_H
 #define HST_SHADE_H
