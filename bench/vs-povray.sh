@@ -12,7 +12,9 @@ command -v hyperfine >/dev/null || { echo "vs-povray: hyperfine not found (Debia
 command -v povray >/dev/null || { echo "vs-povray: povray not found (Debian package: povray)" >&2; exit 3; }
 work=$(mktemp -d "${TMPDIR:-/tmp}/hstbench.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-cp "$src"/scenes/*.pov "$work/"
+# with what the scenes include and map (oldcolors.inc, textures/)
+cp "$src"/scenes/*.pov "$src"/scenes/*.inc "$work/"
+cp -R "$src/scenes/textures" "$work/"
 out="$here/vs-povray.md"
 {
     echo "# hstrace against POV-Ray"

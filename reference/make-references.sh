@@ -16,6 +16,11 @@
 #            scenes/hard/grazing.pov for a hard case (a bare name found only
 #            in scenes/hard/ is taken from there too). Default: every
 #            scenes/*.pov, then every scenes/hard/*.pov
+# POV-Ray is given the scene's own folder as a library path (+L, as
+# `hstrace vs-povray` gives it), so that the includes and pictures a scene
+# names relative to its folder (scenes/oldcolors.inc, scenes/textures/) are
+# found from the scratch folder it renders in, as hstrace finds them from
+# any current folder.
 # A scene may carry one line "// povray-reference-options: OPTIONS": extra
 # povray options for its reference (far-coordinates.pov renders its
 # reference at the origin with Declare=Offset=0, where POV-Ray is exact).
@@ -79,7 +84,7 @@ for scene in $list; do
         for attempt in 1 2 3; do
             # shellcheck disable=SC2086 # $extra holds separate options
             if (cd "$work/$sub" && "$povray" "+I$name.pov" "+O$name$suffix.exr" +FE -A -D -GA +WT1 \
-                "+W$width" "+H$height" "+Q$q" $extra >"$name$suffix.log" 2>&1); then
+                "+L$scenes/$sub" "+W$width" "+H$height" "+Q$q" $extra >"$name$suffix.log" 2>&1); then
                 break
             fi
             if [ $attempt = 3 ] || ! grep -q "Timed out waiting for worker thread startup" "$work/$sub$name$suffix.log"; then

@@ -7,7 +7,11 @@
 # object, on a polygon, a triangle and mesh objects, against the installed
 # POV-Ray's image of the same scene; and the mistakes: another kind of
 # identifier in a material, a material identifier after its first item,
-# interior_texture.
+# interior_texture; and image_map's bad pictures (a missing file, junk, the
+# damaged ones of tests/hostile/images: truncated PNG and JPEG, 0x0 and
+# oversized headers): status 2 at the file name, which the message names,
+# and no image. (The project's exporter-style scenes, scenes/poseray.pov
+# among them, are held to POV-Ray by tests/regress.sh.)
 #
 # Environment: top_builddir (default .), POVRAY (path or name of povray;
 # default povray).
@@ -224,6 +228,13 @@ for method in conventional cache volume hst; do
     check "image_map: --shadows $method gives the same image" "$hstrace" compare "$work/imagemap.png" "$work/imagemap-$method.png" --max-error 0
 done
 echo junk >"$work/junk.png"
+# The damaged pictures of issue 20 (tests/hostile/images/make-bad-images.py):
+# truncated in their data, declaring 0x0 pixels or more than the readers
+# take (refused from the header, before anything is allocated).
+for f in png-truncated.png png-0x0.png png-100000x100000.png jpg-truncated.jpg jpg-0x0.jpg jpg-65535x65535.jpg \
+    jpg-65500x65500.jpg; do
+    cp "$srcdir/tests/hostile/images/$f" "$work/"
+done
 while IFS='|' read -r map message; do
     printf 'camera { location <0,0,-3> look_at 0 }\ntriangle { <0,0,0>, <1,0,0>, <0,1,0> pigment { image_map { %s } } }\n' \
         "$map" >"$work/badmap.pov"
@@ -233,6 +244,13 @@ while IFS='|' read -r map message; do
 done <<'BADMAPS'
 png "nothere.png"|cannot find the image 'nothere.png'
 png "junk.png"|image_map: cannot read .*junk.png.*not a PNG file
+png "png-truncated.png"|image_map: cannot read .*png-truncated.png.: PNG data is truncated
+png "png-0x0.png"|image_map: cannot read .*png-0x0.png.: unsupported PNG size 0x0
+png "png-100000x100000.png"|image_map: cannot read .*png-100000x100000.png.: unsupported PNG size 100000x100000
+jpeg "jpg-truncated.jpg"|image_map: cannot read .*jpg-truncated.jpg.: Premature end of JPEG file
+jpeg "jpg-0x0.jpg"|image_map: cannot read .*jpg-0x0.jpg.: Empty JPEG image
+jpeg "jpg-65535x65535.jpg"|image_map: cannot read .*jpg-65535x65535.jpg.: Maximum supported image dimension is 65500 pixels
+jpeg "jpg-65500x65500.jpg"|image_map: cannot read .*jpg-65500x65500.jpg.: unsupported JPEG size 65500x65500
 gif "tex.gif"|'gif' is not supported
 ppm "tex.ppm" interpolate 3|'interpolate 3 (bicubic; 0, 2 and 4 are supported)' is not supported
 ppm "tex.ppm" map_type 1|'map_type 1 (map_type 0, planar, is supported)' is not supported

@@ -8,9 +8,12 @@
 # Then paths that are no regular files -- a FIFO (which would wait for a
 # writer for ever), a directory, a device (/dev/zero, read for 4 GB
 # before) -- as the scene, an #include and an #fopen: refused at once, with
-# status 3 and the position of the name; the images fuzzing found
-# (tests/hostile/images), which `hstrace compare` refuses with a message;
-# and the budgets' options given something that is no budget.
+# status 3 and the position of the name; as an image_map's picture (a
+# FIFO hung the parse before) and to `hstrace compare`: refused at once,
+# status 2; the images fuzzing found and the damaged ones of issue 20
+# (tests/hostile/images; make-bad-images.py there writes the latter),
+# which `hstrace compare` refuses with a message; and the budgets'
+# options given something that is no budget.
 #
 # A scene's header says what it must do, in comment lines:
 #   // expect: status N
@@ -90,6 +93,20 @@ for target in $fifo folder.pov /dev/zero; do
     check_status "#fopen F \"$target\" read: status 3" "$status" 3
     check "#fopen F \"$target\" read: at the name ($(head -1 "$work/err"))" \
         says "^fopen.pov:1:10: '$target' is $kind, not a file to read\$"
+    case $target in
+    fifo.pov) why="a FIFO, not a regular file" ;;
+    folder.pov) why="Is a directory" ;;
+    *) why="a device, not a regular file" ;;
+    esac
+    printf 'triangle { 0, x, y pigment { image_map { png "%s" } } }\n' "$target" >"$work/files/picture.pov"
+    run picture.pov
+    check_status "image_map { png \"$target\" }: status 2 within $limit s" "$status" 2
+    check "image_map { png \"$target\" }: at the name ($(head -1 "$work/err"))" \
+        says "^picture.pov:1:46: image_map: cannot read '[./]*$target': $why\$"
+    (cd "$work/files" && exec timeout -s KILL $limit "$hstrace" compare "$target" "$target") >/dev/null 2>"$work/err"
+    status=$?
+    check_status "hstrace compare $target $target: status 2 within $limit s" "$status" 2
+    check "hstrace compare $target $target: says so ($(head -1 "$work/err"))" says "^hstrace compare: $target: $why\$"
     printf '#fopen F "%s" write\n#write (F, "x")\n' "$target" >"$work/files/fwrite.pov"
     run fwrite.pov
     check_status "#fopen F \"$target\" write: status 3" "$status" 3
@@ -106,7 +123,11 @@ if [ -r /proc/self/status ]; then
         says "^/proc/self/status:1:1: expected a float, a vector or a string"
 fi
 
-# Images the fuzzers of tests/fuzz found hostile (tests/hostile/images),
+# Images the fuzzers of tests/fuzz found hostile, and the damaged ones of
+# issue 20 (truncated in their data, declaring 0x0 pixels or more than the
+# readers take: 65536 a side, 2^28 in all, refused from the header before
+# anything is allocated; an interlaced PNG, reserved whole, whose file
+# cannot inflate to its size), all in tests/hostile/images, and a missing file,
 # read by `hstrace compare`: an error with a message, status 2, quickly,
 # and no memory used beyond what the file holds (the pixels of an image
 # are reserved up front, calloc'd, and touched only as its data arrives:
@@ -122,6 +143,15 @@ png-huge-truncated.png|Not enough image data
 exr-huge-window.exr|truncated EXR file: its 2051x65536 data window needs 4096 chunks, the file holds 460 bytes
 exr-huge-reservation.exr|Invalid size 50331649
 jpg-arithmetic-bomb.jpg|JPEG data of 238 bytes is too small for 1801x44267 pixels
+png-truncated.png|PNG data is truncated (the file ends early)
+png-0x0.png|unsupported PNG size 0x0
+png-100000x100000.png|unsupported PNG size 100000x100000
+png-interlaced-16384x16384.png|interlaced PNG data of [0-9]* bytes is too small for 16384x16384 pixels
+jpg-truncated.jpg|Premature end of JPEG file
+jpg-0x0.jpg|Empty JPEG image (DNL not supported)
+jpg-65535x65535.jpg|Maximum supported image dimension is 65500 pixels
+jpg-65500x65500.jpg|unsupported JPEG size 65500x65500
+no-such-image.png|No such file or directory
 IMAGES
 
 # The budgets' options, given something that is no budget: bad usage.

@@ -91,7 +91,7 @@ POV
 # the measured count and at least 1, so that a long-double reference that
 # stops deciding fails. "-": not asserted (sustain may rightly stay at 0 in
 # the hard cases, see the header; only the hard cases are checked against
-# the reference).
+# the reference). poseray was measured on 2026-12-02, when it was added.
 counts='
 # scene                        sustain >=        volume >=         coherent >=       reference ties <=
 cards                          20285 (40571)     86148 (172296)    73737 (147475)    - (-)
@@ -99,6 +99,7 @@ desk                           18045 (36091)     90088 (180177)    71625 (143251
 glasses                        33792 (67584)     89013 (178027)    54556 (109112)    - (-)
 holes                          7029 (14058)      27290 (54580)     13743 (27486)     - (-)
 mesh2                          34452 (68904)     16904 (33809)     7413 (14826)      - (-)
+poseray                        19992 (39985)     13884 (27769)     7974 (15949)      - (-)
 stars                          24475 (48951)     112375 (224750)   94278 (188557)    - (-)
 filtered                       19334 (38668)     93965 (187930)    21565 (43131)     - (-)
 contact                        8896 (17792)      35660 (71321)     29964 (59928)     - (-)

@@ -167,10 +167,38 @@ static ImageFormat sniff(int fd, const char *path)
     return n < 8 || by_name == IMAGE_FORMAT_TGA ? by_name : IMAGE_FORMAT_UNKNOWN;
 }
 
+/* Opens a picture to read: a regular file only. O_NONBLOCK, so that a FIFO
+ * is refused at once rather than waited on for a writer (an image_map
+ * naming one hung the parse); a device (/dev/zero) could be read for
+ * ever. Returns the descriptor, or -1 with the message. */
+static int open_image(const char *path, char *err, int errlen)
+{
+    struct stat st;
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    const char *irregular = fstat(fd, &st) != 0    ? strerror(errno)
+                            : S_ISDIR(st.st_mode)  ? strerror(EISDIR)
+                            : S_ISFIFO(st.st_mode) ? "a FIFO, not a regular file"
+                            : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device, not a regular file"
+                            : !S_ISREG(st.st_mode) ? "not a regular file"
+                                                   : NULL;
+    if (irregular) {
+        close(fd);
+        image_set_error(err, errlen, "cannot read '%s': %s", path, irregular);
+        return -1;
+    }
+    int flags = fcntl(fd, F_GETFL);
+    if (flags >= 0)
+        (void)fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    return fd;
+}
+
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen)
 {
     char why[256];
-    struct stat st;
     ImageFormat fmt;
     int fd, rc;
 
@@ -184,16 +212,9 @@ int image_read(const char *path, Image *img, double display_gamma, char *err, in
         image_set_error(err, errlen, "cannot read an image: no file name given");
         return -1;
     }
-    fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0) {
-        image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+    fd = open_image(path, err, errlen);
+    if (fd < 0)
         return -1;
-    }
-    if (fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
-        close(fd);
-        image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(EISDIR));
-        return -1;
-    }
     fmt = sniff(fd, path);
     why[0] = '\0';
     /* POV-Ray's defaults (the PNG reader looks at its chunks itself) */
@@ -235,11 +256,9 @@ int image_read_exr_channels(const char *path, const char *const *names, int n, f
                             int *height, char *err, int errlen)
 {
     char why[256];
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0) {
-        image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+    int fd = open_image(path, err, errlen);
+    if (fd < 0)
         return -1;
-    }
     why[0] = '\0';
     int rc = sniff(fd, path) == IMAGE_FORMAT_EXR
                  ? image_exr_read_planes(fd, names, n, planes, width, height, why, (int)sizeof why)
@@ -253,24 +272,12 @@ int image_read_exr_channels(const char *path, const char *const *names, int n, f
 int image_read_exr_file(const char *path, ImageExrFile *f, int y0, int y1, char *err, int errlen)
 {
     char why[256];
-    struct stat st;
     memset(f, 0, sizeof *f);
     if (err != NULL && errlen > 0)
         err[0] = '\0';
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0) {
-        image_set_error(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+    int fd = open_image(path, err, errlen);
+    if (fd < 0)
         return -1;
-    }
-    /* Only regular files: a FIFO or a device could block or never end. */
-    const char *irregular = fstat(fd, &st) != 0 ? strerror(errno)
-                            : S_ISDIR(st.st_mode) ? strerror(EISDIR)
-                            : !S_ISREG(st.st_mode) ? "not a regular file" : NULL;
-    if (irregular) {
-        close(fd);
-        image_set_error(err, errlen, "cannot read '%s': %s", path, irregular);
-        return -1;
-    }
     why[0] = '\0';
     int rc = sniff(fd, path) == IMAGE_FORMAT_EXR ? image_exr_read_file(fd, f, y0, y1, why, (int)sizeof why)
                                                  : (snprintf(why, sizeof why, "not an EXR file"), -1);

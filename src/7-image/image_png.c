@@ -125,6 +125,31 @@ int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, ch
     return 0;
 }
 
+/* What libpng reads: the first chunk's start (read ahead, so that the size
+ * its IHDR declares is checked before libpng acts on it), then the file. A
+ * short read is a truncated file, said so (libpng's own reader says "Read
+ * Error"). */
+typedef struct {
+    FILE *fp;
+    unsigned char head[24]; /* length, "IHDR", width, height, bit depth, ... */
+    size_t head_len, head_pos;
+} PngSource;
+
+static void png_source_read(png_structp png, png_bytep data, size_t n)
+{
+    PngSource *src = png_get_io_ptr(png);
+    size_t k = 0;
+    while (k < n && src->head_pos < src->head_len)
+        data[k++] = src->head[src->head_pos++];
+    if (k < n && fread(data + k, 1, n - k, src->fp) != n - k)
+        png_error(png, ferror(src->fp) ? "read error" : "PNG data is truncated (the file ends early)");
+}
+
+static unsigned long png_be32(const unsigned char *p)
+{
+    return (unsigned long)p[0] << 24 | (unsigned long)p[1] << 16 | (unsigned long)p[2] << 8 | p[3];
+}
+
 /* Working state of a read, kept behind one pointer so that nothing the error
  * path needs lives in a local changed after setjmp. */
 typedef struct {
@@ -132,6 +157,10 @@ typedef struct {
     png_infop info;
     unsigned char *row;
     float *lut;
+    PngSource src;
+    long file_bytes; /* what the file holds after its signature; -1: unknown */
+    size_t raw_rowbytes; /* a row as stored (before expansion to RGB) */
+    char msg[128];
 } PngRead;
 
 int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen)
@@ -152,6 +181,29 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
         free(st);
         image_set_error(err, errlen, "not a PNG file (bad signature or truncated)");
         return -1;
+    }
+    /* The size in the header, refused before anything is allocated for it:
+     * an empty image (which libpng cannot even write) or one past
+     * IMAGE_MAX_DIM a side or IMAGE_MAX_PIXELS in all. */
+    st->src.fp = fp;
+    st->file_bytes = -1;
+    {
+        long here = ftell(fp);
+        if (here >= 0 && fseek(fp, 0, SEEK_END) == 0) {
+            st->file_bytes = ftell(fp) - here;
+            if (fseek(fp, here, SEEK_SET) != 0)
+                st->file_bytes = -1;
+        }
+    }
+    st->src.head_len = fread(st->src.head, 1, sizeof st->src.head, fp);
+    if (st->src.head_len == sizeof st->src.head && memcmp(st->src.head + 4, "IHDR", 4) == 0) {
+        unsigned long hw = png_be32(st->src.head + 8), hh = png_be32(st->src.head + 12);
+        if (hw == 0 || hh == 0 || hw > IMAGE_MAX_DIM || hh > IMAGE_MAX_DIM ||
+            (unsigned long long)hw * hh > (unsigned long long)IMAGE_MAX_PIXELS) {
+            free(st);
+            image_set_error(err, errlen, "unsupported PNG size %lux%lu", hw, hh);
+            return -1;
+        }
     }
     st->png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &pe, on_png_error, on_png_warning);
     st->info = st->png ? png_create_info_struct(st->png) : NULL;
@@ -183,9 +235,10 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
         png_set_keep_unknown_chunks(st->png, PNG_HANDLE_CHUNK_NEVER, NULL, 0);
         png_set_keep_unknown_chunks(st->png, PNG_HANDLE_CHUNK_NEVER, skip, (int)(sizeof skip / 5));
     }
-    png_init_io(st->png, fp);
+    png_set_read_fn(st->png, &st->src, png_source_read);
     png_set_sig_bytes(st->png, 8);
     png_read_info(st->png, st->info);
+    st->raw_rowbytes = png_get_rowbytes(st->png, st->info);
     w = png_get_image_width(st->png, st->info);
     h = png_get_image_height(st->png, st->info);
     if ((unsigned long)w * h > (unsigned long)IMAGE_MAX_PIXELS)
@@ -222,7 +275,17 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
     st->lut = image_transfer_decode_table(&t, max);
     /* The image grows with the rows decoded (a non-interlaced file): a few
      * corrupt bytes may claim 2^28 pixels, and memory follows the data the
-     * file holds, not its header. Interlaced files need all rows at once. */
+     * file holds, not its header. Interlaced files need all rows at once,
+     * reserved before their data is read: first the file must be able to
+     * hold them. Deflate makes at most 1032 bytes of one (258 per 2 bits),
+     * so a file of a few hundred bytes cannot inflate to the 805 MB of
+     * rows, as stored, of a 16384x16384 RGB header (it reserved 5 GB). */
+    if (passes > 1 && st->file_bytes >= 0 &&
+        (double)st->raw_rowbytes * (double)h > 1032.0 * (double)st->file_bytes + 65536.0) {
+        snprintf(st->msg, sizeof st->msg, "interlaced PNG data of %ld bytes is too small for %lux%lu pixels",
+                 st->file_bytes, (unsigned long)w, (unsigned long)h);
+        png_error(st->png, st->msg);
+    }
     int rows_cap = passes > 1 || h < 64 ? (int)h : 64;
     if (st->lut == NULL || image_alloc(img, (int)w, rows_cap) != 0)
         png_error(st->png, "out of memory");
