@@ -200,39 +200,9 @@ static int normal_pattern(Parser *p, SceneNormal *n, const Token *at)
     switch (pattern_support(kw)) {
     case PAT_EVALUATED:
         n->kind = NORMAL_PATTERN;
-        pat->wave = WAVE_RAMP;
-        switch (kw) {
-        case KW_gradient: {
-            Token vt = *peek(p);
-            Vec3 g = parse_vector(p);
-            if (v3_length(g) == 0.0)
-                parse_fail(p, vt.pos, "the gradient vector must not be zero");
-            pat->gradient = v3_normalize(g);
-            pat->kind = PIGMENT_GRADIENT;
-            break;
-        }
-        case KW_checker: case KW_hexagon:
-            pat->kind = kw == KW_checker ? PIGMENT_CHECKER : PIGMENT_HEXAGON;
-            pat->frequency = 0.0; /* as POV-Ray: the value is the entry's index */
+        start_pattern(p, pat, kw); /* bumps and wrinkles are the normals' own, above */
+        if (kw == KW_checker || kw == KW_hexagon)
             parse_normal_list(p, n, kw == KW_checker ? 2 : 3);
-            break;
-        case KW_bozo: case KW_spotted: pat->kind = PIGMENT_BOZO; break;
-        case KW_granite: pat->kind = PIGMENT_GRANITE; break;
-        case KW_marble: pat->kind = PIGMENT_MARBLE; pat->wave = WAVE_TRIANGLE; break;
-        case KW_wood: pat->kind = PIGMENT_WOOD; pat->wave = WAVE_TRIANGLE; break;
-        case KW_agate:
-            pat->kind = PIGMENT_AGATE;
-            pat->agate_turb = 1.0;
-            (void)classic_turbulence(p, pat); /* agate's own turbulence */
-            break;
-        case KW_spiral1: case KW_spiral2:
-            pat->kind = kw == KW_spiral1 ? PIGMENT_SPIRAL1 : PIGMENT_SPIRAL2;
-            pat->arms = (short)int_as_povray(parse_float(p));
-            pat->wave = WAVE_TRIANGLE;
-            break;
-        default: /* bumps and wrinkles are the normals' own, above */
-            break;
-        }
         return 1;
     case PAT_APPROXIMATED: /* brick, crackle, facets, leopard, onion, radial ...: not evaluated */
         approximate(p, at, APPROX_NORMAL, &n->approx);
@@ -286,7 +256,9 @@ static void normal_items(Parser *p, SceneNormal *n, int close, const Token *kw, 
         Token here = *t;
         if (parse_transform_item(p, t, &n->pattern.transform))
             continue;
-        int k = t->type == TK_WORD ? t->kw : -1;
+        if (pattern_modifier_item(p, &n->pattern, t))
+            continue;
+        int k = here.type == TK_WORD ? here.kw : -1;
         switch (k) {
         case KW_bump_size: n->amount = single(parse_float(p)); continue;
         case KW_accuracy: n->accuracy = single(parse_float(p)); continue;
@@ -303,32 +275,6 @@ static void normal_items(Parser *p, SceneNormal *n, int close, const Token *kw, 
                 n->kind == NORMAL_BUMP_MAP)
                 parse_fail(p, here.pos, "Cannot use normal_map with this normal type.");
             parse_normal_map(p, n, n->kind == NORMAL_AVERAGE);
-            continue;
-        case KW_frequency: n->pattern.frequency = single(parse_float(p)); continue;
-        case KW_phase: n->pattern.phase = single(parse_float(p)); continue;
-        case KW_ramp_wave: n->pattern.wave = WAVE_RAMP; continue;
-        case KW_sine_wave: n->pattern.wave = WAVE_SINE; continue;
-        case KW_triangle_wave: n->pattern.wave = WAVE_TRIANGLE; continue;
-        case KW_scallop_wave: n->pattern.wave = WAVE_SCALLOP; continue;
-        case KW_cubic_wave: n->pattern.wave = WAVE_CUBIC; continue;
-        case KW_poly_wave:
-            n->pattern.wave = WAVE_POLY;
-            n->pattern.wave_exponent = token_starts_float(p, peek(p)) ? single(parse_float(p)) : 1.0;
-            continue;
-        case KW_turbulence: classic_turbulence(p, &n->pattern)->amount = parse_vector(p); continue;
-        case KW_octaves: classic_turbulence(p, &n->pattern)->octaves = octaves_value(parse_float(p)); continue;
-        case KW_omega: classic_turbulence(p, &n->pattern)->omega = single(parse_float(p)); continue;
-        case KW_lambda: classic_turbulence(p, &n->pattern)->lambda = single(parse_float(p)); continue;
-        case KW_warp: parse_warp(p, &n->pattern, &here); continue;
-        case KW_noise_generator: {
-            Token vt = *peek(p);
-            if (!int_from_double(parse_float(p), 0, 3, &n->pattern.noise_generator))
-                parse_fail(p, vt.pos, "Value for noise_generator must be 0, 1, 2, or 3.");
-            continue;
-        }
-        case KW_agate_turb:
-            n->pattern.agate_turb = single(parse_float(p));
-            (void)classic_turbulence(p, &n->pattern);
             continue;
         case KW_control0: case KW_control1:
             if (n->kind != NORMAL_QUILTED)

@@ -582,7 +582,7 @@ void parse_pigment(Parser *p, Pigment *pig)
  * the spirals' arms, agate's turbulence), frequency, phase and wave back to
  * POV-Ray's defaults. Colours (checker's and hexagon's list, the default
  * colour map) are the caller's. */
-static void start_pattern(Parser *p, Pigment *pig, int kw)
+void start_pattern(Parser *p, Pigment *pig, int kw)
 {
     pig->frequency = 1.0;
     pig->phase = 0.0;
@@ -623,7 +623,7 @@ static void start_pattern(Parser *p, Pigment *pig, int kw)
  * or a patterned texture: frequency, phase, the waves, turbulence and its
  * octaves, omega and lambda, warp, noise_generator, agate_turb. Returns 1
  * when t (already read) was one, its arguments read. */
-static int pattern_modifier_item(Parser *p, Pigment *pig, const Token *t)
+int pattern_modifier_item(Parser *p, Pigment *pig, const Token *t)
 {
     Token here = *t; /* t may not outlive the next token read */
     switch (here.type == TK_WORD ? here.kw : -1) {

@@ -516,6 +516,12 @@ const Value *block_identifier(Parser *p, const Token *t, ValueKind kind, const c
 /* How hstrace treats a pattern keyword in a pigment. */
 typedef enum { PAT_NONE, PAT_EVALUATED, PAT_APPROXIMATED, PAT_UNSUPPORTED } PatternSupport;
 PatternSupport pattern_support(int kw);
+/* An evaluated pattern at its keyword kw (read): its kind and arguments,
+ * frequency, phase and wave at POV-Ray's defaults. */
+void start_pattern(Parser *p, Pigment *pig, int kw);
+/* frequency, phase, waves, turbulence, warp, noise_generator ... at t
+ * (read): 1 when it was one, its arguments read. */
+int pattern_modifier_item(Parser *p, Pigment *pig, const Token *t);
 int pattern_modifier(int kw);     /* a modifier of patterns hstrace does not evaluate */
 void skip_arguments(Parser *p);   /* such a keyword's arguments */
 /* POV-Ray's Check_Turb: the turbulence `turbulence`, `octaves` ... change. */

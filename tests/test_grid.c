@@ -48,6 +48,7 @@
 
 #include "fixtures.h"
 #include "grid.h"
+#include "image.h"
 #include "intersect.h"
 #include "parser.h"
 #include "tap.h"
@@ -777,7 +778,8 @@ static void real_scenes(TestRng *rng)
     char include[1024];
     snprintf(include, sizeof include, "%s/data/include", top ? top : ".");
     const char *inc[2] = { include, "/usr/share/povray-3.7/include" };
-    ParseOptions opts = { .include_dirs = inc, .ninclude_dirs = 2, .image_width = 320, .image_height = 240 };
+    ParseOptions opts = { .include_dirs = inc, .ninclude_dirs = 2, .image_width = 320, .image_height = 240,
+                          .load_image = image_read_for_scene };
     Tally t;
     memset(&t, 0, sizeof t);
     int scenes = 0, failed = 0;

@@ -286,3 +286,25 @@ int image_read_exr_file(const char *path, ImageExrFile *f, int y0, int y1, char 
         image_set_error(err, errlen, "cannot read '%s': %s", path, why[0] ? why : "unreadable image");
     return rc;
 }
+
+int image_read_for_scene(void *user, const char *path, double decoding_gamma, int *width, int *height, float **rgba,
+                         char *err, int errlen)
+{
+    (void)user;
+    Image img;
+    if (image_read(path, &img, decoding_gamma, err, errlen))
+        return -1;
+    size_t n = (size_t)img.width * (size_t)img.height;
+    for (size_t i = 0; i < n; i++) { /* the image layer holds premultiplied */
+        float *px = img.rgba + 4 * i;
+        if (px[3] > 0.0f && px[3] < 1.0f) {
+            px[0] /= px[3];
+            px[1] /= px[3];
+            px[2] /= px[3];
+        }
+    }
+    *width = img.width;
+    *height = img.height;
+    *rgba = img.rgba; /* the parser frees it */
+    return 0;
+}

@@ -80,6 +80,12 @@ int image_write(const char *path, const Image *img, const ImageWriteOptions *opt
 #define IMAGE_GAMMA_AS_POVRAY (-1.0)
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen);
 
+/* The parser's ParseOptions.load_image: a picture of image_map or bump_map
+ * read as image_read reads it and handed over as straight (not
+ * premultiplied) RGBA, *rgba malloc'd; `user` is unused. */
+int image_read_for_scene(void *user, const char *path, double decoding_gamma, int *width, int *height, float **rgba,
+                         char *err, int errlen);
+
 /* Reads the named channels of a scanline EXR (part 0) as float planes of
  * width*height samples (malloc'd, row 0 at the top; half and uint are
  * converted). Returns 0; 1 when the file is readable but lacks one of them

@@ -61,30 +61,6 @@ static char *default_output(const char *scene, const char *ext)
     return out;
 }
 
-/* ParseOptions.load_image: an image_map's file through the image layer,
- * handed over as straight RGBA (the image layer holds premultiplied). */
-static int load_image_file(void *user, const char *path, double decoding_gamma, int *width, int *height, float **rgba,
-                           char *err, int errlen)
-{
-    (void)user;
-    Image img;
-    if (image_read(path, &img, decoding_gamma, err, errlen))
-        return -1;
-    size_t n = (size_t)img.width * (size_t)img.height;
-    for (size_t i = 0; i < n; i++) {
-        float *px = img.rgba + 4 * i;
-        if (px[3] > 0.0f && px[3] < 1.0f) {
-            px[0] /= px[3];
-            px[1] /= px[3];
-            px[2] /= px[3];
-        }
-    }
-    *width = img.width;
-    *height = img.height;
-    *rgba = img.rgba; /* the parser frees it */
-    return 0;
-}
-
 /* What rank 0's volume plan chose, for the other ranks of a distributed
  * render: the plan's choices rest on timings, which differ between ranks,
  * and every rank must decide (and count, for the analysis channels) alike. */
@@ -224,7 +200,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     popt.image_width = o->width;
     popt.image_height = o->height;
     popt.strict = o->strict;
-    popt.load_image = load_image_file;
+    popt.load_image = image_read_for_scene;
     popt.quiet_debug = !o->debug_console;
     popt.quiet_warnings = !o->warning_console;
     popt.max_memory = o->max_memory;
