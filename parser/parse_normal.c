@@ -291,6 +291,12 @@ static void normal_items(Parser *p, SceneNormal *n, int close, const Token *kw, 
             skip_arguments(p); /* modifiers of patterns hstrace does not evaluate */
             continue;
         }
+        if (k >= 0 && n->kind == NORMAL_NONE && n->approx && pattern_support(k) != PAT_NONE) {
+            /* a pattern not evaluated: its arguments may name other
+             * patterns (`magnet 1 mandel 50`) */
+            skip_arguments(p);
+            continue;
+        }
         if (k >= 0 && (pattern_support(k) != PAT_NONE || k == KW_bumps || k == KW_bump_map))
             parse_fail(p, here.pos, "the pattern must come first in a normal (after its identifier)");
         if (k >= 0)
