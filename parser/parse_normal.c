@@ -15,8 +15,6 @@
 
 #include "parser_internal.h"
 
-static double single(double v) { return (double)(float)v; }
-
 /* A normal with nothing given (POV-Ray's Create_Tnormal). */
 static SceneNormal fresh_normal(Parser *p)
 {
@@ -104,9 +102,7 @@ static void parse_normal_map(Parser *p, SceneNormal *n, int average)
     }
     if (entries.n < 1)
         parse_fail(p, p->tok.pos, "Must have at least one entry in map.");
-    NormalMapEntry *kept = palloc(p, sizeof *kept * (size_t)entries.n);
-    memcpy(kept, entries.data, sizeof *kept * (size_t)entries.n);
-    n->map = kept;
+    n->map = tvec_keep(p, &entries);
     n->nmap = entries.n;
 }
 
@@ -127,9 +123,7 @@ static void parse_slope_map(Parser *p, SceneNormal *n)
     }
     if (entries.n < 1)
         parse_fail(p, p->tok.pos, "Must have at least one entry in map.");
-    SlopeMapEntry *kept = palloc(p, sizeof *kept * (size_t)entries.n);
-    memcpy(kept, entries.data, sizeof *kept * (size_t)entries.n);
-    n->slope = kept;
+    n->slope = tvec_keep(p, &entries);
     n->nslope = entries.n;
 }
 

@@ -273,6 +273,14 @@ void *tvec_push(Parser *p, TempVec *v)
     return slot;
 }
 
+void *tvec_keep(Parser *p, const TempVec *v)
+{
+    void *kept = palloc(p, v->elem * (size_t)(v->n ? v->n : 1));
+    if (v->n)
+        memcpy(kept, v->data, v->elem * (size_t)v->n);
+    return kept;
+}
+
 /* ---- #declare ------------------------------------------------------------ */
 
 static int is_unsupported_value_keyword(int kw)

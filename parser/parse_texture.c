@@ -49,9 +49,6 @@ void skip_normal(Parser *p)
 
 /* ---- pigments ------------------------------------------------------------ */
 
-/* A value as POV-Ray stores it in a float (SNGL): colour map values,
- * frequency, phase, omega, lambda ... land where POV-Ray's do. */
-static double single(double v) { return (double)(float)v; }
 
 PatternSupport pattern_support(int kw)
 {

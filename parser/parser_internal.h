@@ -339,6 +339,11 @@ void *tmp_alloc(Parser *p, size_t size);    /* temporary arena, checked */
 char *tmp_strndup(Parser *p, const char *s, size_t n);
 void tvec_init(TempVec *v, size_t elem);
 void *tvec_push(Parser *p, TempVec *v); /* returns the new zeroed slot */
+/* The elements as a copy in the scene's arena (they outlive the parse). */
+void *tvec_keep(Parser *p, const TempVec *v);
+/* A value as POV-Ray stores it in a float (SNGL): map values, frequency,
+ * phase, bump_size ... land where POV-Ray's do. */
+static inline double single(double v) { return (double)(float)v; }
 const char *describe_token(Parser *p, const Token *t);
 
 /* limits.c: the guards on what a scene may use while it is parsed. */

@@ -351,7 +351,7 @@ Vec3 normal_perturb(const NormalSetting *s, const SceneNormal *n, const Transfor
                     Vec3 normal)
 {
     Vec3 r = perturb(s, n, to_texture, to_texture, point, uv, normal);
-    return v3_normalize(r); /* with no_bump_scale, POV-Ray normalises after */
+    return n->no_bump_scale ? v3_normalize(r) : r; /* else UnWarp_Normal has normalised it */
 }
 
 Vec3 normal_perturb_in(const NormalSetting *s, const SceneNormal *n, const Transform *parent_to_world, Vec3 point,
@@ -359,5 +359,6 @@ Vec3 normal_perturb_in(const NormalSetting *s, const SceneNormal *n, const Trans
 {
     Transform to_world = n->pattern.transform;
     transform_compose(&to_world, parent_to_world);
-    return v3_normalize(perturb(s, n, &n->pattern.transform, &to_world, point, uv, normal));
+    Vec3 r = perturb(s, n, &n->pattern.transform, &to_world, point, uv, normal);
+    return n->no_bump_scale ? v3_normalize(r) : r;
 }

@@ -476,21 +476,24 @@ static int map_textures(const World *w, int map, const Pigment *pattern, Vec3 p,
     return entry_textures(w, &e[prev], tp, polygon, world_point, weight * (1.0 - f), chain, ask, out, n);
 }
 
+SurfaceTexture material_plain_texture_at(const World *w, const Material *m, int polygon, Vec3 world_point,
+                                         Vec3 normal, int perturb)
+{
+    SurfaceTexture t = { 1.0, material_colour_at(w, m, polygon, world_point), &m->finish, normal };
+    if (perturb && m->normal) {
+        const NormalSetting setting = normal_setting_of(w);
+        Vec3 uv = m->normal->kind == NORMAL_UV ? surface_uv(w, polygon, world_point) : v3(0, 0, 0);
+        t.normal = normal_perturb(&setting, m->normal, &m->normal_to_world, world_point, uv, normal);
+    }
+    return t;
+}
+
 static int textures_at(const World *w, const Material *m, int polygon, Vec3 world_point, const NormalAsk *ask,
                        SurfaceTexture out[MAX_SURFACE_TEXTURES])
 {
     if (m->map < 0) {
-        out[0].weight = 1.0;
-        out[0].colour = material_colour_at(w, m, polygon, world_point);
-        out[0].finish = &m->finish;
-        if (ask) {
-            out[0].normal = ask->normal;
-            if (ask->perturb && m->normal) {
-                Vec3 uv = m->normal->kind == NORMAL_UV ? surface_uv(w, polygon, world_point) : v3(0, 0, 0);
-                out[0].normal = normal_perturb(&ask->setting, m->normal, &m->normal_to_world, world_point, uv,
-                                               ask->normal);
-            }
-        }
+        out[0] = material_plain_texture_at(w, m, polygon, world_point, ask ? ask->normal : v3(0, 0, 0),
+                                           ask && ask->perturb);
         return 1;
     }
     Vec3 at = m->pattern.uv_mapping ? surface_uv(w, polygon, world_point) : world_point;

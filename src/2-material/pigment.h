@@ -62,6 +62,11 @@ typedef struct {
  * weights sum to 1. */
 int material_textures_at(const World *w, const Material *m, int polygon, Vec3 world_point,
                          SurfaceTexture out[MAX_SURFACE_TEXTURES]);
+/* A plain texture (m->map < 0) at a point, with its shading normal:
+ * `normal` (the surface's, facing the ray) perturbed by the texture's
+ * normal when `perturb` (+Q8). */
+SurfaceTexture material_plain_texture_at(const World *w, const Material *m, int polygon, Vec3 world_point,
+                                         Vec3 normal, int perturb);
 /* The same with each texture's shading normal: `normal` (the surface's,
  * facing the ray) perturbed by the texture's normal when `perturb` (+Q8),
  * as POV-Ray moves it through the maps' transforms to the entry's normal

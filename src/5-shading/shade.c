@@ -10,7 +10,6 @@
 #include "aov_pixel.h"
 #include "fog.h"
 #include "intersect.h"
-#include "normal.h"
 #include "pigment.h"
 #include "shadow.h"
 #include "shadow_coherence.h"
@@ -219,6 +218,9 @@ typedef struct {
     RGB acc;              /* its light so far: ambient and emission, then the lights' */
 } LitTexture;
 
+/* direct_light keeps the textures that take a light as bits of one word */
+_Static_assert(MAX_SURFACE_TEXTURES <= 32, "a texture per bit of an unsigned");
+
 static int has_highlights_or_diffuse(const Finish *f)
 {
     return f->diffuse != 0.0 || f->specular != 0.0 || f->phong != 0.0;
@@ -242,11 +244,13 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
         ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, normal };
         /* A light behind the surface (as seen from the eye) adds nothing and
          * needs no shadow test; methods that carry state still see it. */
-        int faces_away = 1;
+        /* the textures that take this light: lit, and facing it */
+        unsigned takes = 0;
         for (int i = 0; i < n; i++)
             if (has_highlights_or_diffuse(lit[i].finish) &&
                 (m->double_illuminate || v3_dot(lit[i].normal, to_light) >= POV_EPSILON))
-                faces_away = 0;
+                takes |= 1u << i;
+        int faces_away = takes == 0;
         if (faces_away || (fabs(lc.r) < POV_EPSILON && fabs(lc.g) < POV_EPSILON && fabs(lc.b) < POV_EPSILON)) {
             int asked = shadows && ctx->shadow.method->skip;
             if (asked)
@@ -267,8 +271,7 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
                 RGB u = { 0, 0, 0 }, s = { 0, 0, 0 };
                 for (int i = 0; i < n; i++) {
                     const LitTexture *t = &lit[i];
-                    if (!has_highlights_or_diffuse(t->finish) ||
-                        (!m->double_illuminate && v3_dot(t->normal, to_light) < POV_EPSILON))
+                    if (!(takes & (1u << i)))
                         continue;
                     RGB ut = { 0, 0, 0 }, st = { 0, 0, 0 };
                     if (visible(unshadowed))
@@ -291,8 +294,7 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
             continue;
         for (int i = 0; i < n; i++) {
             LitTexture *t = &lit[i];
-            if (has_highlights_or_diffuse(t->finish) &&
-                (m->double_illuminate || v3_dot(t->normal, to_light) >= POV_EPSILON))
+            if (takes & (1u << i))
                 add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, lc, &t->acc);
         }
     }
@@ -713,22 +715,16 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
                                        : w->planes[hit.index].normal;
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
-    Vec3 normal = raw;
     if (m->map >= 0) {
         if (ctx->aov && ctx->shadow.state_depth == 1)
-            aov_record_hit(ctx->aov, hit.t, hit.point, normal);
-        shade_map_hit(ctx, ray, &hit, seg, m, raw, normal, weight, level, out);
+            aov_record_hit(ctx->aov, hit.t, hit.point, raw); /* a map's textures have normals each */
+        shade_map_hit(ctx, ray, &hit, seg, m, raw, raw, weight, level, out);
         return;
     }
-    const int polygon = hit.kind == HIT_POLYGON ? hit.index : -1;
-    if (m->normal && ctx->quality.normal) {
-        const NormalSetting setting = normal_setting_of(w);
-        Vec3 uv = m->normal->kind == NORMAL_UV ? surface_uv(w, polygon, hit.point) : v3(0, 0, 0);
-        normal = normal_perturb(&setting, m->normal, &m->normal_to_world, hit.point, uv, raw);
-    }
+    const SurfaceTexture own =
+        material_plain_texture_at(w, m, hit.kind == HIT_POLYGON ? hit.index : -1, hit.point, raw, ctx->quality.normal);
     if (ctx->aov && ctx->shadow.state_depth == 1)
-        aov_record_hit(ctx->aov, hit.t, hit.point, normal);
-    const SurfaceTexture own = { 1.0, material_colour_at(w, m, polygon, hit.point), &m->finish, normal };
+        aov_record_hit(ctx->aov, hit.t, hit.point, own.normal);
     LitTexture lit;
     lit_texture(&lit, &own);
     shade_textures(ctx, ray, &hit, seg, m, raw, raw, &lit, 1, weight, level, out);
