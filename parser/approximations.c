@@ -1,7 +1,7 @@
 /* What hstrace approximates, and the report of it.
  *
  * The parser hangs an ApproxNote on the description wherever it approximates
- * (a pigment's bozo, a texture's normal, a light's area_light ...). After
+ * (a pigment's bozo, a texture's normal, a light's photons ...). After
  * parsing, the notes reachable from what the scene instantiates are counted
  * here, once per place in the files, so that an include file's unused
  * declarations report nothing. */
@@ -23,7 +23,6 @@ static const struct {
     [APPROX_PHOTONS] = { "photons", "photon mapping ignored" },
     [APPROX_RADIOSITY] = { "radiosity", "radiosity and subsurface light transport ignored: no light gathered from "
                                         "other surfaces, and (as POV-Ray 3.7 with radiosity) no finish's ambient" },
-    [APPROX_AREA_LIGHT] = { "area_light", "area light rendered as a point light at its centre" },
     [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
     [APPROX_FOG] = { "fog", "fog between lights and surfaces (media_attenuation) ignored" },
 };

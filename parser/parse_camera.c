@@ -174,6 +174,8 @@ void transform_light(SceneLight *l, const Transform *tr)
 {
     l->location = transform_point(tr, l->location);
     l->point_at = transform_point(tr, l->point_at);
+    l->area.axis1 = transform_direction(tr, l->area.axis1);
+    l->area.axis2 = transform_direction(tr, l->area.axis2);
 }
 
 SceneLight *parse_light_source(Parser *p, const Token *kw)
@@ -183,6 +185,7 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
     l->kind = LIGHT_POINT;
     l->pos = kw->pos;
     l->point_at = (Vec3){ 0.0, 0.0, 1.0 }; /* POV-Ray's default */
+    l->area.adaptive = 100; /* POV-Ray's: subdivide to every sample */
     l->location = parse_vector(p);
     parse_comma(p);
     parse_colour(p, &l->colour, 0);
@@ -253,30 +256,47 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
             begin_block(p, "photons");
             skip_block_body(p);
             break;
-        case KW_area_light: { /* a point light at its centre, where POV-Ray puts the grid's middle */
-            approximate(p, t, APPROX_AREA_LIGHT, &l->approx);
+        case KW_area_light: { /* POV-Ray's Parse_Light_Source: sizes truncated to integers */
+            SourcePos area_at = t->pos; /* t is the parser's current token: parse_float moves it */
             area = 1;
-            (void)parse_vector(p);
+            l->area.axis1 = parse_vector(p);
             parse_comma(p);
-            (void)parse_vector(p);
+            l->area.axis2 = parse_vector(p);
             parse_comma(p);
-            (void)parse_float(p);
-            parse_comma(p);
-            (void)parse_float(p);
+            double size[2];
+            for (int k = 0; k < 2; k++) {
+                if (k)
+                    parse_comma(p);
+                SourcePos at = peek(p)->pos;
+                size[k] = parse_float(p);
+                /* POV-Ray refuses 0; a negative size would index its
+                 * sample grid out of bounds, so it is refused alike. */
+                if (!(size[k] >= 1.0))
+                    parse_fail(p, at, "area size must be greater than zero (POV-Ray: \"Area size must be greater "
+                                      "than zero.\"), not %g", size[k]);
+            }
+            if (size[0] * size[1] > (double)MAX_AREA_LIGHT_SAMPLES)
+                parse_fail(p, area_at, "an area_light of %g x %g samples is more than hstrace's limit of %d",
+                           size[0], size[1], MAX_AREA_LIGHT_SAMPLES);
+            l->area.size1 = (int)size[0];
+            l->area.size2 = (int)size[1];
             break;
         }
-        case KW_adaptive: case KW_jitter: case KW_circular: case KW_orient: case KW_area_illumination:
-            /* area_light's modifiers, in any order around it. Without an
-             * area_light POV-Ray ignores them (orient and area_illumination
-             * with a warning), except circular, which it refuses. */
-            if (t->kw == KW_circular && !circular) {
-                circular = 1;
+        /* area_light's modifiers, in any order around it. Without an
+         * area_light POV-Ray ignores them (orient, circular and
+         * area_illumination with a warning), but circular at the end it
+         * refuses. */
+        case KW_adaptive: l->area.adaptive = (int)parse_float(p); break;
+        case KW_jitter: l->area.jitter = 1; break;
+        case KW_orient: l->area.orient = 1; break;
+        case KW_circular:
+            if (!circular)
                 circular_at = t->pos;
-            }
-            if (t->kw == KW_adaptive)
-                (void)parse_float(p);
-            else if (t->kw == KW_area_illumination && token_starts_float(p, peek(p)))
-                (void)parse_float(p);
+            circular = 1;
+            l->area.circular = 1;
+            break;
+        case KW_area_illumination:
+            l->area.full_area = token_starts_float(p, peek(p)) ? parse_float(p) > 0.0 : 1;
             break;
         default:
             if (t->type == TK_WORD && t->kw >= 0)
@@ -284,8 +304,10 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
             fail_expected(p, t, "a light_source item or '}' in 'light_source'");
         }
     }
-    if (circular && !area)
-        parse_fail(p, circular_at, "'circular' without an area_light (POV-Ray: \"Circular area light must have more "
-                                   "than 1 point per axis\")");
+    if (circular && (!area || l->area.size1 <= 1 || l->area.size2 <= 1))
+        parse_fail(p, circular_at, "'circular' %s (POV-Ray: \"Circular area light must have more than 1 point per "
+                                   "axis\")", area ? "with an area_light of 1 point along an axis" : "without an area_light");
+    if (!area)
+        l->area = (AreaLight){ .adaptive = 100 }; /* the modifiers change nothing */
     return l;
 }

@@ -285,7 +285,7 @@ cat >"$work/approx.pov" <<'POV'
 #version 3.7;
 #declare Bumpy = texture { pigment { rgb 1 } normal { crackle 0.5 scale 0.1 } }
 camera { location <0, 1, -4> look_at 0 }
-light_source { <2, 4, -3> rgb 1 area_light x, y, 2, 2 }
+light_source { <2, 4, -3> rgb 1 photons { reflection on } }
 plane { y, -1 pigment { crackle color_map { [0 rgb 0] [1 rgb 1] } } }
 triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> texture { Bumpy } }
 POV
@@ -293,13 +293,13 @@ run "$work/approx.pov" --width 40 --height 30 -o "$work/a.png" --stats --stats-j
 check "approximated features render by default" exited 0
 check "a warning names the approximated pattern at FILE:LINE:COLUMN" \
     grep -q "approx.pov:5:25: warning: 'crackle' approximated: pattern shown as one colour" "$work/err"
-check "--stats lists the area_light approximation with its position" \
-    grep -q "area light rendered as a point light at its centre: 1 place, first 'area_light' at .*approx.pov:4:33" "$work/err"
+check "--stats lists the photons approximation with its position" \
+    grep -q "photon mapping ignored: 1 place, first 'photons' at .*approx.pov:4:33" "$work/err"
 check "--stats-json lists the normal approximation with its position" \
     grep -q '"kind": "normal", "count": 1, "first": ".*approx.pov:2:55", "what": "'"'"'crackle'"'"'"' "$work/a.json"
 run "$work/approx.pov" --width 40 --height 30 -o "$work/s.png" --strict
 check "--strict: the first approximation is an error at FILE:LINE:COLUMN, status 2" \
-    exited 2 "approx.pov:4:33: 'area_light' is only approximated by hstrace (area light rendered as a point light at its centre); --strict makes it an error"
+    exited 2 "approx.pov:4:33: 'photons' is only approximated by hstrace (photon mapping ignored); --strict makes it an error"
 check "--strict: no image" [ ! -e "$work/s.png" ]
 
 # hstrace's own colors.inc when POV-Ray's include folder is absent.

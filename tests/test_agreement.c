@@ -171,7 +171,7 @@ static int decide_one(ShadowContext *ctx, const World *w, const Hit *hit, const 
         distance *= v3_dot(l->direction, to_light);
         to_light = l->direction;
     }
-    ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
+    ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0), &w->lights[li] };
     ctx->method->test(ctx, &q, through);
     return through->r == 0.0 && through->g == 0.0 && through->b == 0.0;
 }

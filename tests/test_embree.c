@@ -164,7 +164,7 @@ int main(void)
                 skipped++;
                 continue;
             }
-            ShadowQuery q = { at, &surface, &seg, li, to_light, distance, v3(0, 1, 0) };
+            ShadowQuery q = { at, &surface, &seg, li, to_light, distance, v3(0, 1, 0), &w.lights[li] };
             RGB want, got;
             shadow_conventional_test(&ctx, &q, &want);
             shadow_embree_test(&ctx, &q, &got);

@@ -669,8 +669,35 @@ static void test_errors(void)
                          "light_source { x, 1 circular orient area_light x, y, 3, 3 }\n");
         tap_ok(s && s->nlights == 2 && vnear(s->lights[1].location, 1, 0, 0),
                "jitter, adaptive, orient, area_illumination without an area_light, and before it, as POV-Ray");
+        tap_ok(s && s->lights[0].area.size1 == 0 && !s->lights[0].area.jitter && !s->lights[0].area.orient,
+               "... and on a point light they change nothing");
+        tap_ok(s && s->lights[1].area.size1 == 3 && s->lights[1].area.size2 == 3 && s->lights[1].area.circular &&
+                   s->lights[1].area.orient && s->lights[1].area.adaptive == 100 && !s->lights[1].area.jitter,
+               "circular and orient before the area_light are its own; adaptive 100 (every sample) unless given");
         scene_free(s);
     }
+    {
+        /* Sizes truncated as POV-Ray's (int)Parse_Float; the axes turn and
+         * scale with the light as directions, not as points. */
+        Scene *s = parse("light_source { <1, 2, 3>, 1 area_light <2, 0, 0>, <0, 0, 1>, 4.9, 2.2 adaptive 2.7 jitter "
+                         "area_illumination off rotate 90*z translate <5, 0, 0> scale 2 }\n");
+        const SceneLight *l = s ? &s->lights[0] : NULL;
+        tap_ok(l && l->area.size1 == 4 && l->area.size2 == 2 && l->area.adaptive == 2 && l->area.jitter &&
+                   !l->area.full_area,
+               "area_light: sizes and adaptive truncated, jitter, area_illumination off");
+        tap_ok(l && vnear(l->area.axis1, 0, 4, 0) && vnear(l->area.axis2, 0, 0, 2) && vnear(l->location, 6, 2, 6),
+               "area_light: the axes rotated and scaled, not translated");
+        scene_free(s);
+    }
+    expect_error("light_source { 0, 1 area_light x, y, 0, 3 }", 1, 38, "area size must be greater than zero",
+                 "an area_light of 0 samples, as POV-Ray");
+    expect_error("light_source { 0, 1 area_light x, y, 3, -2 }", 1, 41, "area size must be greater than zero",
+                 "an area_light of negative samples");
+    expect_error("light_source { 0, 1 area_light x, y, 2000, 2000 }", 1, 21, "more than hstrace's limit",
+                 "an area_light of 4 million samples");
+    expect_error("light_source { 0, 1 area_light x, y, 1, 5 circular }", 1, 43,
+                 "'circular' with an area_light of 1 point along an axis",
+                 "circular with 1 point along an axis, as POV-Ray");
     expect_error("light_source { 0, 1 circular jitter }", 1, 21, "'circular' without an area_light",
                  "circular without an area_light, as POV-Ray");
     expect_error("#declare I = 0;\n#while (1)\n#end\n", 2, 1, "loop iterations", "runaway #while");

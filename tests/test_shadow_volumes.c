@@ -253,7 +253,7 @@ static void check_cards(Scene *s, const CardProbe *probes, int nprobes, const ch
             const Light *l = &w.lights[0];
             Vec3 d = v3_sub(l->location, h.point);
             double distance = v3_length(d);
-            ShadowQuery q = { h.point, &h, &seg, 0, v3_scale(d, 1.0 / distance), distance, v3(0, 1, 0) };
+            ShadowQuery q = { h.point, &h, &seg, 0, v3_scale(d, 1.0 / distance), distance, v3(0, 1, 0), &w.lights[0] };
             RGB got;
             m->test(&ctx, &q, &got);
             if (fabs(got.r - pr->want.r) > 1e-12 || fabs(got.g - pr->want.g) > 1e-12 ||

@@ -159,7 +159,7 @@ static int render_with(const Fixture *f, const ShadowMethod *m, int verify, int 
     ro.width = 96;
     ro.height = 72;
     ro.threads = threads;
-    ro.quality = (Quality){ 1, 1, 1, 0, 0, 1 }; /* +Q8: shadows, reflection, refraction, normals */
+    ro.quality = (Quality){ 1, 1, 1, 0, 0, 1, 1 }; /* +Q8: shadows, reflection, refraction, normals, area lights */
     ro.shadow = m;
     ro.verify = verify;
     Image img;

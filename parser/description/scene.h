@@ -39,7 +39,6 @@ typedef enum {
     APPROX_CAUSTICS,      /* interior caustics, dispersion: ignored */
     APPROX_PHOTONS,       /* photons { } blocks: ignored */
     APPROX_RADIOSITY,     /* global radiosity / subsurface: ignored */
-    APPROX_AREA_LIGHT,    /* area_light: a point light at its centre */
     APPROX_FOCAL_BLUR,    /* camera aperture / normal: a pinhole camera */
     APPROX_FOG,           /* fog on light rays (media_attenuation) */
     APPROX_KINDS
@@ -349,6 +348,23 @@ typedef enum {
     BEAM_CYLINDER, /* radius, falloff: distances from the axis; the light is parallel */
 } LightBeam;
 
+/* area_light <axis1>, <axis2>, size1, size2 and its modifiers, as POV-Ray
+ * 3.7 keeps them (LightSource's Area_* fields): a grid of size1 x size2
+ * point lights spanning axis1 x axis2 around the light's location. */
+typedef struct {
+    Vec3 axis1, axis2;  /* world space, transformed as directions */
+    int size1, size2;   /* samples along each axis; 0: not an area light */
+    int adaptive;       /* POV-Ray's Adaptive_Level: 100 (every sample) unless given */
+    int jitter;         /* each sample moved at random within its cell */
+    int circular;       /* the grid squeezed into a disc */
+    int orient;         /* the grid turned to face each shading point */
+    int full_area;      /* area_illumination: shading from each sample, not the centre */
+} AreaLight;
+
+/* The most samples one area light may have (hstrace's limit: each shading
+ * point keeps a colour per sample while it samples the light). */
+#define MAX_AREA_LIGHT_SAMPLES (1 << 20)
+
 typedef struct SceneLight {
     LightKind kind;
     SourcePos pos;
@@ -361,7 +377,8 @@ typedef struct SceneLight {
     int shadowless;
     double fade_distance; /* 0: no fading */
     double fade_power;
-    const ApproxNote *approx; /* area_light, photons */
+    AreaLight area;
+    const ApproxNote *approx; /* photons, media_attenuation */
 } SceneLight;
 
 typedef enum {

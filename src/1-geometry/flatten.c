@@ -651,6 +651,8 @@ static void build_lights(World *w, const Scene *scene)
         l->beam_radius = sl->beam_radius;
         l->beam_falloff = sl->beam_falloff;
         l->beam_tightness = sl->beam_tightness;
+        l->point_at = sl->point_at;
+        l->area = sl->area;
     }
 }
 

@@ -92,12 +92,14 @@ typedef struct {
     LightKind kind;
     Vec3 location;
     Vec3 direction;       /* parallel: unit vector from the scene toward the light */
+    Vec3 point_at;        /* as given: a parallel area light's samples point from it */
     RGB colour;
     int shadowless;
     double fade_distance, fade_power;
     LightBeam beam;       /* spotlight or cylinder: intensity across the beam, whose axis
                            * runs from location toward point_at (-direction) */
     double beam_radius, beam_falloff, beam_tightness; /* as in SceneLight */
+    AreaLight area;       /* area.size1 == 0: a point light */
 } Light;
 
 typedef struct {

@@ -31,6 +31,16 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
     ctx->filtered = malloc(sizeof *ctx->filtered * (size_t)see_through);
     if (!ctx->filtered)
         return -1;
+    size_t samples = 0;
+    for (int i = 0; i < w->nlights; i++)
+        if ((size_t)w->lights[i].area.size1 * (size_t)w->lights[i].area.size2 > samples)
+            samples = (size_t)w->lights[i].area.size1 * (size_t)w->lights[i].area.size2;
+    if (samples) {
+        ctx->area_colour = malloc(samples * sizeof *ctx->area_colour);
+        ctx->area_known = malloc(samples);
+        if (!ctx->area_colour || !ctx->area_known)
+            return -1;
+    }
     if (volumes) {
         ctx->volumes = volumes;
         int most = 1;
@@ -52,6 +62,8 @@ void shadow_context_free(ShadowContext *ctx)
 {
     tracer_free(&ctx->tracer);
     free(ctx->light_cache);
+    free(ctx->area_colour);
+    free(ctx->area_known);
     free(ctx->filtered);
     free(ctx->bucket);
     free(ctx->sp_stamp);
@@ -78,6 +90,8 @@ void shadow_counters_add(ShadowCounters *t, const ShadowCounters *p)
     t->shadow_unsure += p->shadow_unsure;
     t->shadow_coherent += p->shadow_coherent;
     t->shadow_touching += p->shadow_touching;
+    t->area_points += p->area_points;
+    t->area_samples += p->area_samples;
     t->shadow_in_plane += p->shadow_in_plane;
     t->shadow_coherence_unsure += p->shadow_coherence_unsure;
     t->shadow_no_count += p->shadow_no_count;

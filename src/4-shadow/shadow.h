@@ -43,6 +43,8 @@ typedef struct {
     Vec3 to_light;       /* unit direction toward the light */
     double distance;     /* to the light (parallel: to the light's plane) */
     Vec3 normal;         /* shading normal, facing the arriving ray */
+    const Light *source; /* the point light the ray is aimed at: &World.lights[light], or
+                          * one sample of that area light (area_light.h) */
 } ShadowQuery;
 
 /* How a decision was made (statistics, --verify-shadows, --aov). A test
@@ -74,6 +76,8 @@ typedef struct {
     uint64_t shadow_in_plane;     /* segments in the plane of their start polygon: left to the shadow ray */
     uint64_t shadow_no_count;     /* volume: no count possible (depth unknown, outside the box) */
     uint64_t shadow_deferred;     /* states left unknown where nobody needed the answer */
+    uint64_t area_points;         /* shading points that sampled an area light */
+    uint64_t area_samples;        /* ... the samples they decided (each one of shadow_queries) */
     uint64_t shadow_verified;     /* decisions checked against the shadow ray */
     uint64_t shadow_disagreements;
     uint64_t shadow_disagreements_by_scheme[SCHEME_COUNT];
@@ -122,6 +126,10 @@ typedef struct ShadowContext {
     uint32_t *bucket;          /* room for any light's shadow polygons */
     struct PixelCoherence *coherence; /* hst's pixel coherence, or NULL when off */
     const struct EmbreeScene *embree; /* the embree method's scene (shared, read-only), or NULL */
+    /* Area lights: the samples decided at the current point, a colour per
+     * sample of the largest (area_light.c); NULL without area lights. */
+    RGB *area_colour;
+    unsigned char *area_known;
     /* Light states along the ray tree: one row of nlights per recursion depth. */
     LightState *states;
     int state_depth, state_capacity;

@@ -42,7 +42,7 @@ static void verify(ShadowContext *ctx, const ShadowQuery *q, RGB got)
     if (ctx->verify > 1) {
         /* The verdicts compared: is any light taken away? */
         const World *w = ctx->tracer.world;
-        RefAnswer ref = shadow_reference(w, q->surface, &w->lights[q->light], ctx->reference_eps);
+        RefAnswer ref = shadow_reference(w, q->surface, q->source, ctx->reference_eps);
         int got_blocked = got.r != 1.0 || got.g != 1.0 || got.b != 1.0;
         int ray_blocked = want.r != 1.0 || want.g != 1.0 || want.b != 1.0;
         if (ref == REF_TIE)

@@ -3,6 +3,8 @@
  * eye's depth count. */
 #include "shadow_volumes.h"
 
+#include "area_light.h"
+
 #include <float.h>
 #include <math.h>
 #include <pthread.h>
@@ -637,7 +639,8 @@ static void *build_lights(void *arg)
 static int light_can_have_volumes(const World *w, const Grid *g, int li, double tol, int *cuts)
 {
     *cuts = 0;
-    if (w->lights[li].shadowless)
+    /* an area light's samples are point lights of their own, decided by the shadow ray (area_light.h) */
+    if (w->lights[li].shadowless || light_is_area(&w->lights[li]))
         return 0;
     if (parallel_plane_cuts_box(&w->lights[li], g, tol)) {
         *cuts = 1;

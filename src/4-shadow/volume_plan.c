@@ -1,6 +1,8 @@
 /* Deciding, per light, whether shadow volumes pay (volume_plan.h). */
 #include "volume_plan.h"
 
+#include "area_light.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +31,7 @@ const char *volume_plan_decision_name(int decision)
 {
     switch (decision) {
     case PLAN_IMPOSSIBLE: return "no volumes possible";
+    case PLAN_AREA_LIGHT: return "an area light: no volumes, every sample decided by the shadow ray";
     case PLAN_ALWAYS: return "built (--volumes always)";
     case PLAN_KEPT: return "built and kept";
     case PLAN_WONT_PAY: return "not built: what its volumes could save does not repay their build";
@@ -76,6 +79,7 @@ static int asks(const World *w, const VolumePlan *plan, int i, int li, ShadowQue
     q->point = h->point;
     q->surface = h;
     q->light = li;
+    q->source = l;
     q->to_light = to_light;
     q->distance = distance;
     q->normal = plan->normal[i];
@@ -206,8 +210,8 @@ int volume_plan_bound(VolumePlan *plan, const World *w)
         LightPlan *lp = &plan->light[li];
         lp->gain_bound = lp->queries * (lp->c_ray - plan->c_touch);
         plan->build[li] = 0;
-        if (w->lights[li].shadowless) {
-            lp->decision = PLAN_IMPOSSIBLE;
+        if (w->lights[li].shadowless || light_is_area(&w->lights[li])) {
+            lp->decision = w->lights[li].shadowless ? PLAN_IMPOSSIBLE : PLAN_AREA_LIGHT;
         } else if (!(lp->gain_bound > 0.0)) {
             lp->decision = PLAN_WONT_PAY;
         } else {
@@ -361,7 +365,9 @@ int volume_plan_build(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, cons
     if (o->mode == VOLUMES_ALWAYS) {
         for (int li = 0; li < w->nlights; li++) {
             plan->build[li] = 1;
-            plan->light[li].decision = w->lights[li].shadowless ? PLAN_IMPOSSIBLE : PLAN_ALWAYS;
+            plan->light[li].decision = w->lights[li].shadowless        ? PLAN_IMPOSSIBLE
+                                       : light_is_area(&w->lights[li]) ? PLAN_AREA_LIGHT
+                                                                       : PLAN_ALWAYS;
         }
         return build_and_calibrate(plan, sv, cost, w, g, bvh, eye, o, 1);
     }

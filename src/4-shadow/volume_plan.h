@@ -39,6 +39,7 @@ typedef enum { VOLUMES_AUTO, VOLUMES_ALWAYS } VolumesMode;
 
 typedef enum {
     PLAN_IMPOSSIBLE,      /* no volumes possible: a shadowless light, or a parallel light whose plane cuts the scene */
+    PLAN_AREA_LIGHT,      /* an area light: its samples are decided by the shadow ray (area_light.h) */
     PLAN_ALWAYS,          /* built because --volumes always asked */
     PLAN_KEPT,            /* built, and the pilot measured hst cheaper than the shadow ray: kept */
     PLAN_WONT_PAY,        /* its bound says the volumes cannot repay their build: not built */

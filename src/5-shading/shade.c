@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "aov_pixel.h"
+#include "area_light.h"
 #include "fog.h"
 #include "intersect.h"
 #include "pigment.h"
@@ -147,7 +148,7 @@ static void skip_all_lights(ShadeContext *ctx, const Hit *hit, const Segment *se
         const Light *l = &w->lights[li];
         Vec3 to_light;
         double distance = light_direction(l, hit->point, &to_light);
-        ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0) };
+        ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, v3(0, 0, 0), &w->lights[li] };
         if (ask && !l->shadowless) {
             shadow_decide_skip(&ctx->shadow, &q, 0);
             note_light(ctx, &q, 1, 0, NULL);
@@ -226,29 +227,67 @@ static int has_highlights_or_diffuse(const Finish *f)
     return f->diffuse != 0.0 || f->specular != 0.0 || f->phong != 0.0;
 }
 
+/* area_illumination (POV-Ray's ComputeFullAreaDiffuseLight): the light
+ * that arrived, lc (shadowed, not yet attenuated), shared among the
+ * samples, and each sample's share attenuated and shaded from where the
+ * sample is, for the textures in `takes` that face it. */
+static void add_full_area_light(const Light *l, int li, const Material *m, Vec3 p, Vec3 eye_dir, Vec3 centre_dir,
+                                RGB lc, LitTexture *lit, int n, unsigned takes)
+{
+    Vec3 axis1, axis2;
+    area_light_axes(l, centre_dir, &axis1, &axis2);
+    double samples = (double)l->area.size1 * (double)l->area.size2;
+    RGB share = { lc.r / samples, lc.g / samples, lc.b / samples };
+    for (int v = 0; v < l->area.size2; v++) {
+        for (int u = 0; u < l->area.size1; u++) {
+            double ju = (double)u, jv = (double)v;
+            if (l->area.jitter) {
+                double du, dv;
+                area_light_jitter(p, li, u, v, 1, &du, &dv);
+                ju += du;
+                jv += dv;
+            }
+            Light sample;
+            Vec3 to_light;
+            double distance = area_light_sample_ray(l, area_light_offset(l, axis1, axis2, ju, jv), p, &sample, &to_light);
+            double fade = light_attenuation(l, p, to_light, distance);
+            RGB slc = { share.r * fade, share.g * fade, share.b * fade };
+            for (int i = 0; i < n; i++) {
+                LitTexture *t = &lit[i];
+                if ((takes & (1u << i)) && (m->double_illuminate || v3_dot(t->normal, to_light) >= POV_EPSILON))
+                    add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, slc, &t->acc);
+            }
+        }
+    }
+}
+
 /* Diffuse, phong and specular from every light (ComputeDiffuseLight), for
  * each of the n textures of the hit: one shadow decision per light, which
  * all of them share (POV-Ray's light colour cache of the intersection),
- * asked when some texture that takes light faces it. */
+ * asked when some texture that takes light faces it. An area light (at
+ * +Q5 and above) is decided sample by sample (area_light.h); it shades
+ * from its centre, or with area_illumination from each sample. */
 static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, const Segment *seg, Vec3 eye_dir,
                          Vec3 normal, LitTexture *lit, int n)
 {
     const World *w = ctx->shadow.tracer.world;
     for (int li = 0; li < w->nlights; li++) {
         const Light *l = &w->lights[li];
+        int area = ctx->quality.area_lights && light_is_area(l);
+        int full_area = area && l->area.full_area; /* attenuated and facing per sample */
         Vec3 to_light;
         double distance = light_direction(l, hit->point, &to_light);
-        double fade = light_attenuation(l, hit->point, to_light, distance);
+        double fade = full_area ? 1.0 : light_attenuation(l, hit->point, to_light, distance);
         RGB lc = { l->colour.r * fade, l->colour.g * fade, l->colour.b * fade };
         int shadows = ctx->quality.shadows && !l->shadowless;
-        ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, normal };
+        ShadowQuery q = { hit->point, hit, seg, li, to_light, distance, normal, l };
         /* A light behind the surface (as seen from the eye) adds nothing and
          * needs no shadow test; methods that carry state still see it. */
         /* the textures that take this light: lit, and facing it */
         unsigned takes = 0;
         for (int i = 0; i < n; i++)
             if (has_highlights_or_diffuse(lit[i].finish) &&
-                (m->double_illuminate || v3_dot(lit[i].normal, to_light) >= POV_EPSILON))
+                (full_area || m->double_illuminate || v3_dot(lit[i].normal, to_light) >= POV_EPSILON))
                 takes |= 1u << i;
         int faces_away = takes == 0;
         if (faces_away || (fabs(lc.r) < POV_EPSILON && fabs(lc.g) < POV_EPSILON && fabs(lc.b) < POV_EPSILON)) {
@@ -260,12 +299,20 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
         }
         if (shadows) {
             RGB through;
-            shadow_decide(&ctx->shadow, &q, &through);
-            note_light(ctx, &q, 1, 0, &through);
             RGB unshadowed = lc;
-            lc.r *= through.r;
-            lc.g *= through.g;
-            lc.b *= through.b;
+            if (area) {
+                lc = area_light_shadow(&ctx->shadow, &q, lc);
+                /* the share that arrived, for the analysis channels */
+                through.r = unshadowed.r != 0.0 ? lc.r / unshadowed.r : 1.0;
+                through.g = unshadowed.g != 0.0 ? lc.g / unshadowed.g : 1.0;
+                through.b = unshadowed.b != 0.0 ? lc.b / unshadowed.b : 1.0;
+            } else {
+                shadow_decide(&ctx->shadow, &q, &through);
+                lc.r *= through.r;
+                lc.g *= through.g;
+                lc.b *= through.b;
+            }
+            note_light(ctx, &q, 1, 0, &through);
             if (ctx->aov && ctx->shadow.state_depth == 1 && (through.r != 1.0 || through.g != 1.0 || through.b != 1.0)) {
                 /* --aov: what this shadow took, as a +Q3 render would show it. */
                 RGB u = { 0, 0, 0 }, s = { 0, 0, 0 };
@@ -273,17 +320,24 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
                     const LitTexture *t = &lit[i];
                     if (!(takes & (1u << i)))
                         continue;
-                    RGB ut = { 0, 0, 0 }, st = { 0, 0, 0 };
-                    if (visible(unshadowed))
-                        add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, unshadowed, &ut);
-                    if (visible(lc))
-                        add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, lc, &st);
-                    u.r += t->weight * ut.r;
-                    u.g += t->weight * ut.g;
-                    u.b += t->weight * ut.b;
-                    s.r += t->weight * st.r;
-                    s.g += t->weight * st.g;
-                    s.b += t->weight * st.b;
+                    LitTexture ut = *t, st = *t;
+                    ut.acc = st.acc = (RGB){ 0, 0, 0 };
+                    if (full_area) {
+                        add_full_area_light(l, li, m, hit->point, eye_dir, to_light, unshadowed, &ut, 1, 1u);
+                        if (visible(lc))
+                            add_full_area_light(l, li, m, hit->point, eye_dir, to_light, lc, &st, 1, 1u);
+                    } else {
+                        if (visible(unshadowed))
+                            add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, unshadowed, &ut.acc);
+                        if (visible(lc))
+                            add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, lc, &st.acc);
+                    }
+                    u.r += t->weight * ut.acc.r;
+                    u.g += t->weight * ut.acc.g;
+                    u.b += t->weight * ut.acc.b;
+                    s.r += t->weight * st.acc.r;
+                    s.g += t->weight * st.acc.g;
+                    s.b += t->weight * st.acc.b;
                 }
                 aov_record_loss(ctx->aov, (const double[3]){ u.r, u.g, u.b }, (const double[3]){ s.r, s.g, s.b });
             }
@@ -292,6 +346,10 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
         }
         if (!visible(lc))
             continue;
+        if (full_area) {
+            add_full_area_light(l, li, m, hit->point, eye_dir, to_light, lc, lit, n, takes);
+            continue;
+        }
         for (int i = 0; i < n; i++) {
             LitTexture *t = &lit[i];
             if (takes & (1u << i))

@@ -18,6 +18,7 @@ typedef struct {
     int full_ambient;   /* Q <= 1: pigment colour only */
     int volume;         /* Q >= 9: fog, and POV-Ray's "advanced light" (radiosity) */
     int normal;         /* Q >= 8: normal perturbation */
+    int area_lights;    /* Q >= 5: area lights sampled (below, a point light at the centre) */
 } Quality;
 
 /* The secondary rays shading sent, for the statistics (summed over threads). */

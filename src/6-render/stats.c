@@ -45,7 +45,7 @@ static void print_plan(FILE *f, const VolumePlan *p)
     for (int i = 0; i < p->nlights; i++) {
         const LightPlan *l = &p->light[i];
         fprintf(f, "    light %d   %s", i, volume_plan_decision_name(l->decision));
-        if (l->decision == PLAN_IMPOSSIBLE) {
+        if (l->decision == PLAN_IMPOSSIBLE || l->decision == PLAN_AREA_LIGHT) {
             fprintf(f, "\n");
             continue;
         }
@@ -121,6 +121,11 @@ void stats_print(FILE *f, const StatsReport *r)
     for (int i = 0; i < SCHEME_COUNT; i++)
         fprintf(f, "  %s %llu", shadow_scheme_names[i], (unsigned long long)s->shadow.shadow_schemes[i]);
     fprintf(f, "\n");
+    if (s->shadow.area_points)
+        fprintf(f, "  area lights %llu shading points sampled them: %llu samples decided (%.2f a point), each one of"
+                   " the queries\n",
+                (unsigned long long)s->shadow.area_points, (unsigned long long)s->shadow.area_samples,
+                (double)s->shadow.area_samples / (double)s->shadow.area_points);
     if (r->plan)
         print_plan(f, r->plan);
     if (r->volumes) {
@@ -278,6 +283,8 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
             (unsigned long long)s->shadow.shadow_deferred, (unsigned long long)s->shadow.shadow_coherent,
             (unsigned long long)s->shadow.shadow_coherence_unsure, (unsigned long long)s->shadow.shadow_touching,
             (unsigned long long)s->shadow.shadow_in_plane);
+    fprintf(f, "    \"area_points\": %llu, \"area_samples\": %llu,\n", (unsigned long long)s->shadow.area_points,
+            (unsigned long long)s->shadow.area_samples);
     fprintf(f, "    \"verified\": %llu, \"disagreements\": %llu, \"disagreements_by_scheme\": {",
             (unsigned long long)s->shadow.shadow_verified, (unsigned long long)s->shadow.shadow_disagreements);
     for (int i = 0; i < SCHEME_COUNT; i++)

@@ -38,7 +38,7 @@ static Quality quality_from_level(int q)
     /* POV-Ray's QUALITY_n flags (povray.h): shadows from 4, refraction
      * from 6, reflection and normals from 8, fog at 9; 0-1 show the bare
      * pigment colour. */
-    Quality r = { q >= 4, q >= 6, q >= 8, q <= 1, q >= 9, q >= 8 };
+    Quality r = { q >= 4, q >= 6, q >= 8, q <= 1, q >= 9, q >= 8, q >= 5 };
     return r;
 }
 

@@ -59,7 +59,7 @@ static void render_tiny(const Scene *scene)
         ropt.width = 4;
         ropt.height = 3;
         ropt.threads = 1;
-        Quality q = { 1, 1, 1, 0, 1, 1 }; /* +Q9, normals too */
+        Quality q = { 1, 1, 1, 0, 1, 1, 1 }; /* +Q9, normals and area lights too */
         ropt.quality = q;
         ropt.shadow = shadow_method_find("hst");
         ropt.bvh = &bvh;

@@ -1,0 +1,55 @@
+/* Area lights as POV-Ray 3.7 samples them (Trace::TraceAreaLightShadowRay,
+ * TraceAreaLightSubsetShadowRay and ComputeFullAreaDiffuseLight): a grid
+ * of size1 x size2 point lights spanning axis1 x axis2 around the light's
+ * location, each a shadow decision of its own. The grid's four corners are
+ * decided first; a region is split in four while it is wider than one
+ * sample and either its level is below `adaptive` (100 unless given: every
+ * sample) or two neighbouring corners differ by more than 0.1 (the sum of
+ * the channels' differences); a region's light is the mean of its four
+ * corners' (a corner shared by regions counts in each). Samples decided
+ * once per shading point are kept and reused, as POV-Ray's lightGrid
+ * (ShadowContext.area_colour).
+ *
+ * Every sample is decided through shadow_decide, by the render's method,
+ * so --verify-shadows checks each against the shadow ray. The shadow
+ * volumes belong to point lights: an area light has none, and the
+ * methods that keep them decide its samples by the shadow ray.
+ *
+ * jitter: POV-Ray moves each sample by a random offset of up to half a
+ * cell along each axis, from a random number generator, so its images
+ * differ from run to run. hstrace draws the offsets from a hash of the
+ * shading point, the light and the sample, so that its image is the same
+ * for any thread count and every run; it matches POV-Ray's statistically. */
+#ifndef HST_AREA_LIGHT_H
+#define HST_AREA_LIGHT_H
+
+#include "shadow.h"
+
+static inline int light_is_area(const Light *l) { return l->area.size1 > 0; }
+
+/* The axes the grid spans seen from a point whose unit direction toward
+ * the light's centre is centre_dir: the light's own, or with orient,
+ * turned to face the point (a square of axis1's length). */
+void area_light_axes(const Light *l, Vec3 centre_dir, Vec3 *axis1, Vec3 *axis2);
+
+/* The offset from the light's centre of the sample at grid position
+ * (u, v), given with its jitter added, along axes axis1, axis2. */
+Vec3 area_light_offset(const Light *l, Vec3 axis1, Vec3 axis2, double u, double v);
+
+/* POV-Ray's jitter for the sample (u, v) of light `light` seen from p, in
+ * [-0.5, 0.5) along each axis; stream tells apart the shadow's samples and
+ * area_illumination's, which POV-Ray draws afresh. */
+void area_light_jitter(Vec3 p, int light, int u, int v, int stream, double *ju, double *jv);
+
+/* The point light at the light's centre plus offset as the shadow ray
+ * from p sees it: *sample (l moved there; a parallel light's direction
+ * from point_at to it), the unit direction toward it, and the distance
+ * (parallel: to its plane), as POV-Ray's ComputeOneWhiteLightRay. */
+double area_light_sample_ray(const Light *l, Vec3 offset, Vec3 p, Light *sample, Vec3 *to_light);
+
+/* The light of colour lc (already attenuated by beam and distance at the
+ * centre) that arrives at q's point from area light q->light, sampled as
+ * POV-Ray samples it; q asks about the centre (to_light, distance). */
+RGB area_light_shadow(ShadowContext *ctx, const ShadowQuery *q, RGB lc);
+
+#endif
