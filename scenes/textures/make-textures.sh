@@ -1,6 +1,7 @@
 #!/bin/sh
-# Writes the pictures that scenes/poseray.pov maps on its mesh, as a mesh
-# exporter would ship them beside its scene: crate.png (64x64, 8-bit RGB),
+# Writes the pictures that scenes/poseray.pov maps on its mesh (and that
+# scenes/water.pov's quay takes as its bump_map), as a mesh exporter would
+# ship them beside its scene: crate.png (64x64, 8-bit RGB),
 # planks of a wood pattern, and stone.jpg (64x64, baseline JPEG at
 # quality 85, the default), veined marble. Each is a render of a small
 # procedural scene (below) seen flat on by an orthographic camera, lit by
