@@ -190,7 +190,7 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
     parse_comma(p);
     parse_colour(p, &l->colour, 0);
     int area = 0, circular = 0;
-    SourcePos circular_at = { 0 };
+    SourcePos circular_at = { 0 }, orient_at = { 0 };
     for (;;) {
         Token *t = next(p);
         if (is_punct(t, '}'))
@@ -288,7 +288,10 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
          * refuses. */
         case KW_adaptive: l->area.adaptive = (int)parse_float(p); break;
         case KW_jitter: l->area.jitter = 1; break;
-        case KW_orient: l->area.orient = 1; break;
+        case KW_orient:
+            l->area.orient = 1;
+            orient_at = t->pos;
+            break;
         case KW_circular:
             if (!circular)
                 circular_at = t->pos;
@@ -309,5 +312,17 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
                                    "axis\")", area ? "with an area_light of 1 point along an axis" : "without an area_light");
     if (!area)
         l->area = (AreaLight){ .adaptive = 100 }; /* the modifiers change nothing */
+    if (l->area.orient) {
+        /* POV-Ray's Parse_Object_Mods: orient makes the light circular, and
+         * takes axis 1's length for both axes */
+        if (!l->area.circular)
+            parse_warning(p, orient_at, "orient makes the area light circular (POV-Ray: \"Orient can only be used with "
+                                        "circular area lights. This area light is now circular.\")");
+        if (fabs(v3_length(l->area.axis1) - v3_length(l->area.axis2)) > 1e-10)
+            parse_warning(p, orient_at, "with orient, only the first axis's length is used for both");
+        l->area.circular = 1;
+        if (l->area.size1 <= 1 || l->area.size2 <= 1)
+            l->area.circular = 0; /* POV-Ray: warns, and the light is not circular after all */
+    }
     return l;
 }

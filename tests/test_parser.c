@@ -689,6 +689,15 @@ static void test_errors(void)
                "area_light: the axes rotated and scaled, not translated");
         scene_free(s);
     }
+    {
+        /* POV-Ray's Parse_Object_Mods: orient makes the light circular,
+         * unless an axis has one sample (then it warns, and neither) */
+        Scene *s = parse("light_source { 0, 1 area_light x, 2*z, 3, 3 orient }\n"
+                         "light_source { 0, 1 area_light x, z, 1, 3 orient }\n");
+        tap_ok(s && s->lights[0].area.circular && s->lights[0].area.orient && !s->lights[1].area.circular,
+               "orient makes an area light circular, unless an axis has one sample, as POV-Ray");
+        scene_free(s);
+    }
     expect_error("light_source { 0, 1 area_light x, y, 0, 3 }", 1, 38, "area size must be greater than zero",
                  "an area_light of 0 samples, as POV-Ray");
     expect_error("light_source { 0, 1 area_light x, y, 3, -2 }", 1, 41, "area size must be greater than zero",
