@@ -108,9 +108,9 @@ static void honest_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 }
 
 static const ShadowMethod always_lit = { "always-lit", "planted: no shadows, claims volumes", 0, always_lit_test,
-                                         NULL, 0 };
-static const ShadowMethod flipping = { "flipping", "planted: every Nth decision inverted", 0, flipping_test, NULL, 0 };
-static const ShadowMethod honest = { "honest", "the shadow ray, through a planted method", 0, honest_test, NULL, 0 };
+                                         NULL, 0, 0 };
+static const ShadowMethod flipping = { "flipping", "planted: every Nth decision inverted", 0, flipping_test, NULL, 0, 0 };
+static const ShadowMethod honest = { "honest", "the shadow ray, through a planted method", 0, honest_test, NULL, 0, 0 };
 
 typedef struct {
     Scene *scene;

@@ -10,10 +10,16 @@
  * once per shading point are kept and reused, as POV-Ray's lightGrid
  * (ShadowContext.area_colour).
  *
- * Every sample is decided through shadow_decide, by the render's method,
- * so --verify-shadows checks each against the shadow ray. The shadow
+ * Every sample is decided by the render's method's test and counted and
+ * verified as shadow_decide does, so --verify-shadows checks each against
+ * the shadow ray; the shadow-testing time is the whole sampling's, point
+ * by point, for every method alike. The shadow
  * volumes belong to point lights: an area light has none, and the
- * methods that keep them decide its samples by the shadow ray.
+ * methods that keep them decide its samples by the shadow ray. hst builds
+ * a beam from the point to the whole light instead (area_light_beam.h):
+ * where it proves every sample lit, or every one blocked, no sample's ray
+ * is traced (with --verify-shadows each is still checked); elsewhere each
+ * sample's ray is tested against the beam's candidates only.
  *
  * jitter: POV-Ray moves each sample by a random offset of up to half a
  * cell along each axis, from a random number generator, so its images
@@ -41,11 +47,40 @@ Vec3 area_light_offset(const Light *l, Vec3 axis1, Vec3 axis2, double u, double 
  * area_illumination's, which POV-Ray draws afresh. */
 void area_light_jitter(Vec3 p, int light, int u, int v, int stream, double *ju, double *jv);
 
-/* The point light at the light's centre plus offset as the shadow ray
- * from p sees it: *sample (l moved there; a parallel light's direction
- * from point_at to it), the unit direction toward it, and the distance
- * (parallel: to its plane), as POV-Ray's ComputeOneWhiteLightRay. */
-double area_light_sample_ray(const Light *l, Vec3 offset, Vec3 p, Light *sample, Vec3 *to_light);
+/* The shadow ray from p toward the light's centre moved by offset: the
+ * unit direction toward it, and the distance (parallel: to its plane), as
+ * POV-Ray's ComputeOneWhiteLightRay. */
+double area_light_sample_ray(const Light *l, Vec3 offset, Vec3 p, Vec3 *to_light);
+/* *sample, a copy of l, moved there: the point light that ray is aimed at
+ * (a parallel light's direction that ray's). */
+void area_light_sample_light(const Light *l, Vec3 offset, Vec3 to_light, Light *sample);
+
+/* The samples an area light's sampling visits when they all agree (the
+ * corners of every region it is split into, by level alone), and the
+ * levels of means that makes; scratch: room for its samples. */
+void area_light_uniform_shape(const Light *l, unsigned char *scratch, int *visits, int *levels);
+
+/* The most polygons an hst beam gathers before it gives up (its samples
+ * then decided by the shadow ray through the hierarchy). */
+#define AREA_BEAM_CAP 256
+
+/* hst's beam for light l: the method asks for it, and the light has a
+ * beam to build (at least 2 x 2 samples). */
+static inline int area_light_beamed(const ShadowContext *ctx, const Light *l)
+{
+    return ctx->area_candidates && l->area.size1 > 1 && l->area.size2 > 1;
+}
+
+/* Some light of w would have hst's beam (at +Q5 and above). */
+static inline int world_has_beams(const World *w)
+{
+    for (int i = 0; i < w->nlights; i++) {
+        const Light *l = &w->lights[i];
+        if (!l->shadowless && l->area.size1 > 1 && l->area.size2 > 1)
+            return 1;
+    }
+    return 0;
+}
 
 /* The light of colour lc (already attenuated by beam and distance at the
  * centre) that arrives at q's point from area light q->light, sampled as

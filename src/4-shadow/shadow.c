@@ -1,6 +1,8 @@
 /* The registry of shadow methods, and a thread's shadow-testing context. */
 #include "shadow.h"
 
+#include "area_light.h"
+
 #include <stdlib.h>
 #include <string.h>
 
@@ -38,8 +40,19 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
     if (samples) {
         ctx->area_colour = malloc(samples * sizeof *ctx->area_colour);
         ctx->area_known = malloc(samples);
-        if (!ctx->area_colour || !ctx->area_known)
+        ctx->area_uniform_visits = calloc((size_t)nl, sizeof *ctx->area_uniform_visits);
+        ctx->area_uniform_levels = calloc((size_t)nl, sizeof *ctx->area_uniform_levels);
+        if (!ctx->area_colour || !ctx->area_known || !ctx->area_uniform_visits || !ctx->area_uniform_levels)
             return -1;
+        for (int i = 0; i < w->nlights; i++)
+            if (light_is_area(&w->lights[i]))
+                area_light_uniform_shape(&w->lights[i], ctx->area_known, &ctx->area_uniform_visits[i],
+                                         &ctx->area_uniform_levels[i]);
+        if (method->area_beam) {
+            ctx->area_candidates = malloc(AREA_BEAM_CAP * sizeof *ctx->area_candidates);
+            if (!ctx->area_candidates)
+                return -1;
+        }
     }
     if (volumes) {
         ctx->volumes = volumes;
@@ -64,6 +77,9 @@ void shadow_context_free(ShadowContext *ctx)
     free(ctx->light_cache);
     free(ctx->area_colour);
     free(ctx->area_known);
+    free(ctx->area_candidates);
+    free(ctx->area_uniform_visits);
+    free(ctx->area_uniform_levels);
     free(ctx->filtered);
     free(ctx->bucket);
     free(ctx->sp_stamp);
@@ -92,6 +108,11 @@ void shadow_counters_add(ShadowCounters *t, const ShadowCounters *p)
     t->shadow_touching += p->shadow_touching;
     t->area_points += p->area_points;
     t->area_samples += p->area_samples;
+    t->area_beams += p->area_beams;
+    t->area_beam_lit += p->area_beam_lit;
+    t->area_beam_umbra += p->area_beam_umbra;
+    t->area_beam_candidates += p->area_beam_candidates;
+    t->area_beam_overflows += p->area_beam_overflows;
     t->shadow_in_plane += p->shadow_in_plane;
     t->shadow_coherence_unsure += p->shadow_coherence_unsure;
     t->shadow_no_count += p->shadow_no_count;
@@ -112,21 +133,21 @@ static void shadow_none_test(ShadowContext *ctx, const ShadowQuery *q, RGB *ligh
     light->r = light->g = light->b = 1.0;
 }
 
-const char *const shadow_scheme_names[SCHEME_COUNT] = { "sustain", "self-shadow", "volume", "conventional",
-                                                        "cache hit" };
+const char *const shadow_scheme_names[SCHEME_COUNT] = { "sustain",  "self-shadow", "volume",    "conventional",
+                                                        "cache hit", "area lit",   "area umbra", "area beam" };
 
 /* The first is the default. */
 static const ShadowMethod methods[] = {
     { "hst", "the paper's hybrid: sustain, self-shadow, shadow volume or shadow ray, switched by N_th", 1,
-      shadow_hst_test, shadow_hst_skip, 0 },
-    { "conventional", "a shadow ray per light through the grid (exact reference)", 0, shadow_conventional_test, NULL, 0 },
+      shadow_hst_test, shadow_hst_skip, 0, 1 },
+    { "conventional", "a shadow ray per light through the grid (exact reference)", 0, shadow_conventional_test, NULL, 0, 0 },
     { "cache", "shadow rays that first try the light's last opaque blocker (as POV-Ray does)", 0, shadow_cache_test,
-      NULL, 0 },
+      NULL, 0, 0 },
     { "volume", "shadow volumes: a depth count carried along every segment", 1, shadow_volume_test,
-      shadow_volume_skip, 0 },
+      shadow_volume_skip, 0, 0 },
     { "embree", "Embree 3's float shadow ray with the shadow ray's rules (not exact: for comparison)", 0,
-      shadow_embree_test, NULL, 1 },
-    { "none", "no shadows: every light reaches every point", 0, shadow_none_test, NULL, 0 },
+      shadow_embree_test, NULL, 1, 0 },
+    { "none", "no shadows: every light reaches every point", 0, shadow_none_test, NULL, 0, 0 },
 };
 
 const ShadowMethod *shadow_method_find(const char *name)

@@ -54,6 +54,10 @@ typedef struct {
 typedef enum {
     SCHEME_NONE = -1,
     SCHEME_SUSTAIN, SCHEME_SELF_SHADOW, SCHEME_VOLUME, SCHEME_CONVENTIONAL, SCHEME_CACHE_HIT,
+    /* hst's area lights (area_light_beam.h): samples proved lit or in umbra
+     * with the rest of the light by its beam, or decided by a shadow ray
+     * against the beam's candidates */
+    SCHEME_AREA_LIT, SCHEME_AREA_UMBRA, SCHEME_AREA_BEAM,
     SCHEME_COUNT
 } ShadowScheme;
 
@@ -78,6 +82,10 @@ typedef struct {
     uint64_t shadow_deferred;     /* states left unknown where nobody needed the answer */
     uint64_t area_points;         /* shading points that sampled an area light */
     uint64_t area_samples;        /* ... the samples they decided (each one of shadow_queries) */
+    uint64_t area_beams;          /* ... of the points, those hst built a beam for */
+    uint64_t area_beam_lit, area_beam_umbra; /* ... and proved lit, or in umbra, by it */
+    uint64_t area_beam_candidates; /* ... the polygons the beams gathered */
+    uint64_t area_beam_overflows;  /* ... beams abandoned for too many candidates */
     uint64_t shadow_verified;     /* decisions checked against the shadow ray */
     uint64_t shadow_disagreements;
     uint64_t shadow_disagreements_by_scheme[SCHEME_COUNT];
@@ -130,6 +138,9 @@ typedef struct ShadowContext {
      * sample of the largest (area_light.c); NULL without area lights. */
     RGB *area_colour;
     unsigned char *area_known;
+    uint32_t *area_candidates;  /* hst: a beam's candidates (AREA_BEAM_CAP) */
+    int *area_uniform_visits;   /* per light: the samples its sampling visits when all agree */
+    int *area_uniform_levels;   /* ... and the levels of means over them */
     /* Light states along the ray tree: one row of nlights per recursion depth. */
     LightState *states;
     int state_depth, state_capacity;
@@ -155,6 +166,9 @@ typedef struct ShadowMethod {
      * the shadow ray are a figure to report, not a bug. 0: every decision
      * must be the shadow ray's. */
     int inexact;
+    /* 1: area lights by their beam's proofs (hst, area_light_beam.h); 0:
+     * each sample by test. */
+    int area_beam;
 } ShadowMethod;
 
 /* The record of one decision, the same for every method, for the analysis
@@ -185,6 +199,11 @@ void shadow_conventional_test(ShadowContext *ctx, const ShadowQuery *q, RGB *lig
  * both multiply into *light and return 1 when it is fully blocked. */
 int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+/* The polygon part against a list of candidates instead of the hierarchy:
+ * the same answer as shadow_polygons_test when the list holds every
+ * polygon (no_shadow ones and q's own left out) the ray can meet. */
+int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const uint32_t *candidates, int n,
+                               RGB *light);
 /* The end of the polygon part: folds the see-through polygons the ray met,
  * ctx->filtered[0..nfiltered) in any order (each polygon once), into *light
  * in the order the light passes them (by distance, then index), once per

@@ -105,6 +105,28 @@ int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     return shadow_fold_filtered(ctx, q, light);
 }
 
+int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const uint32_t *candidates, int n,
+                               RGB *light)
+{
+    const World *w = ctx->tracer.world;
+    ctx->stats.shadow_rays++;
+    double tmin = trace_min_distance(q->point);
+    ShadowWalk sw = { ctx, q, -1 };
+    ctx->nfiltered = 0;
+    RayFrame frame = ray_frame(q->point, q->to_light);
+    for (int i = 0; i < n; i++) {
+        /* the hierarchy's leaf test, polygon by polygon (bvh_traverse.h) */
+        ctx->stats.shadow_polygon_tests++;
+        double t = intersect_polygon_in(w, &w->polygons[candidates[i]], &frame, q->distance);
+        if (t > tmin && meet_polygon(&sw, candidates[i], t)) {
+            light->r = light->g = light->b = 0.0;
+            ctx->last_blocker = sw.blocker;
+            return 1;
+        }
+    }
+    return shadow_fold_filtered(ctx, q, light);
+}
+
 int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->tracer.world;

@@ -24,7 +24,7 @@ static inline void timer_stop(ShadowContext *ctx, double t0)
 
 /* --verify-shadows: the shadow ray's answer beside the method's;
  * --verify-reference: and the long-double reference's beside both. */
-static void verify(ShadowContext *ctx, const ShadowQuery *q, RGB got)
+void shadow_verify(ShadowContext *ctx, const ShadowQuery *q, RGB got)
 {
     int scheme = ctx->last_scheme;
     RGB want;
@@ -62,7 +62,7 @@ void shadow_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *through)
     timer_stop(ctx, t0);
     ctx->stats.shadow_queries++;
     if (ctx->verify)
-        verify(ctx, q, *through);
+        shadow_verify(ctx, q, *through);
 }
 
 void shadow_decide_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away)

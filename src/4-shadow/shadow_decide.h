@@ -11,6 +11,11 @@
 /* How much of q's light arrives (shadow.h); sets ctx->last_scheme. */
 void shadow_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *through);
 
+/* --verify-shadows for a decision made without the method's test (hst's
+ * area lights): `got` against the shadow ray's answer (and the reference's
+ * with --verify-reference), by ctx->last_scheme. */
+void shadow_verify(ShadowContext *ctx, const ShadowQuery *q, RGB got);
+
 /* The shading needs no answer for q's light: the method keeps its states
  * consistent (ShadowMethod.skip, which must not be NULL here). */
 void shadow_decide_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away);

@@ -31,7 +31,7 @@ const char *volume_plan_decision_name(int decision)
 {
     switch (decision) {
     case PLAN_IMPOSSIBLE: return "no volumes possible";
-    case PLAN_AREA_LIGHT: return "an area light: no volumes, every sample decided by the shadow ray";
+    case PLAN_AREA_LIGHT: return "an area light: no volumes; hst's beam, or the shadow ray, decides its samples";
     case PLAN_ALWAYS: return "built (--volumes always)";
     case PLAN_KEPT: return "built and kept";
     case PLAN_WONT_PAY: return "not built: what its volumes could save does not repay their build";

@@ -8,7 +8,8 @@
 #include "shadow.h"
 
 const char aov_code_legend[] = "0 none (no hit), 1 sustain, 2 self-shadow, 3 volume, 4 conventional, 5 cache hit, "
-                               "6 faces away (not tested), 7 untested (shadows off, shadowless or dark light)";
+                               "6 faces away (not tested), 7 untested (shadows off, shadowless or dark light), "
+                               "8 area lit, 9 area umbra, 10 area beam (an area light's samples, by hst's beam)";
 
 AovCode aov_code_of_scheme(int scheme)
 {
@@ -18,6 +19,9 @@ AovCode aov_code_of_scheme(int scheme)
     case SCHEME_VOLUME: return AOV_CODE_VOLUME;
     case SCHEME_CONVENTIONAL: return AOV_CODE_CONVENTIONAL;
     case SCHEME_CACHE_HIT: return AOV_CODE_CACHE_HIT;
+    case SCHEME_AREA_LIT: return AOV_CODE_AREA_LIT;
+    case SCHEME_AREA_UMBRA: return AOV_CODE_AREA_UMBRA;
+    case SCHEME_AREA_BEAM: return AOV_CODE_AREA_BEAM;
     default: return AOV_CODE_UNTESTED;
     }
 }

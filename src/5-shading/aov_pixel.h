@@ -21,6 +21,9 @@ typedef enum {
     AOV_CODE_FACES_AWAY = 6,   /* the surface faces away from the light: no method decided */
     AOV_CODE_UNTESTED = 7,     /* no test: shadows off (+Q3 or below, --shadows none), a
                                 * shadowless light, a light adding nothing there */
+    AOV_CODE_AREA_LIT = 8,     /* hst: every sample of an area light proved lit by its beam */
+    AOV_CODE_AREA_UMBRA = 9,   /* hst: ... proved blocked (the point in the light's umbra) */
+    AOV_CODE_AREA_BEAM = 10,   /* hst: ... decided sample by sample against the beam's candidates */
     AOV_NCODES
 } AovCode;
 

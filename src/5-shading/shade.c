@@ -247,9 +247,8 @@ static void add_full_area_light(const Light *l, int li, const Material *m, Vec3 
                 ju += du;
                 jv += dv;
             }
-            Light sample;
             Vec3 to_light;
-            double distance = area_light_sample_ray(l, area_light_offset(l, axis1, axis2, ju, jv), p, &sample, &to_light);
+            double distance = area_light_sample_ray(l, area_light_offset(l, axis1, axis2, ju, jv), p, &to_light);
             double fade = light_attenuation(l, p, to_light, distance);
             RGB slc = { share.r * fade, share.g * fade, share.b * fade };
             for (int i = 0; i < n; i++) {

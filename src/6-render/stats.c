@@ -1,6 +1,8 @@
 /* Statistics: summing per-thread counters and printing the report. */
 #include "stats.h"
 
+#include "area_light.h"
+
 #include "json_write.h"
 
 #include <errno.h>
@@ -126,6 +128,16 @@ void stats_print(FILE *f, const StatsReport *r)
                    " the queries\n",
                 (unsigned long long)s->shadow.area_points, (unsigned long long)s->shadow.area_samples,
                 (double)s->shadow.area_samples / (double)s->shadow.area_points);
+    if (s->shadow.area_beams || s->shadow.area_beam_overflows)
+        fprintf(f, "  area beams  %llu points (%.1f%% of them): %llu proved lit, %llu in umbra (%.1f%% uniform), the rest"
+                   " sampled against %.1f candidate polygons a beam; %llu beams gave up (over %d candidates)\n",
+                (unsigned long long)s->shadow.area_beams,
+                100.0 * (double)s->shadow.area_beams / (double)(s->shadow.area_points ? s->shadow.area_points : 1),
+                (unsigned long long)s->shadow.area_beam_lit, (unsigned long long)s->shadow.area_beam_umbra,
+                100.0 * (double)(s->shadow.area_beam_lit + s->shadow.area_beam_umbra) /
+                    (double)(s->shadow.area_beams ? s->shadow.area_beams : 1),
+                (double)s->shadow.area_beam_candidates / (double)(s->shadow.area_beams ? s->shadow.area_beams : 1),
+                (unsigned long long)s->shadow.area_beam_overflows, AREA_BEAM_CAP);
     if (r->plan)
         print_plan(f, r->plan);
     if (r->volumes) {
@@ -283,8 +295,12 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
             (unsigned long long)s->shadow.shadow_deferred, (unsigned long long)s->shadow.shadow_coherent,
             (unsigned long long)s->shadow.shadow_coherence_unsure, (unsigned long long)s->shadow.shadow_touching,
             (unsigned long long)s->shadow.shadow_in_plane);
-    fprintf(f, "    \"area_points\": %llu, \"area_samples\": %llu,\n", (unsigned long long)s->shadow.area_points,
-            (unsigned long long)s->shadow.area_samples);
+    fprintf(f, "    \"area_points\": %llu, \"area_samples\": %llu, \"area_beams\": %llu, \"area_beam_lit\": %llu, "
+               "\"area_beam_umbra\": %llu, \"area_beam_candidates\": %llu, \"area_beam_overflows\": %llu,\n",
+            (unsigned long long)s->shadow.area_points, (unsigned long long)s->shadow.area_samples,
+            (unsigned long long)s->shadow.area_beams, (unsigned long long)s->shadow.area_beam_lit,
+            (unsigned long long)s->shadow.area_beam_umbra, (unsigned long long)s->shadow.area_beam_candidates,
+            (unsigned long long)s->shadow.area_beam_overflows);
     fprintf(f, "    \"verified\": %llu, \"disagreements\": %llu, \"disagreements_by_scheme\": {",
             (unsigned long long)s->shadow.shadow_verified, (unsigned long long)s->shadow.shadow_disagreements);
     for (int i = 0; i < SCHEME_COUNT; i++)

@@ -22,6 +22,7 @@
 #include "provenance.h"
 #include "render.h"
 #include "cost_model.h"
+#include "area_light.h"
 #include "shadow.h"
 #include "shadow_embree.h"
 #include "shadow_volumes.h"
@@ -357,10 +358,11 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     ropt.y1 = o->area_y1;
     ropt.threads = threads;
     ropt.quality = quality_from_level(o->quality);
-    /* hst with no light whose volumes pay is the shadow ray alone: render
-     * it as conventional does, without hst's per-decision wrapper (the
-     * decisions, images and analysis codes are the same). */
-    ropt.shadow = method->uses_volumes && !have_volumes && method->test == shadow_hst_test
+    /* hst with no light whose volumes pay (and no area light for its
+     * beams) is the shadow ray alone: render it as conventional does,
+     * without hst's per-decision wrapper (the decisions, images and
+     * analysis codes are the same). */
+    ropt.shadow = method->uses_volumes && !have_volumes && method->test == shadow_hst_test && !world_has_beams(&world)
                       ? shadow_method_find("conventional")
                       : method;
     ropt.bvh = &bvh;
