@@ -240,7 +240,7 @@ shadows_volume() { method_is volume && gt "$(scheme "$(sj volume)" volume)" 0 &&
 shadows_hst() { method_is hst && gt "$(scheme "$(sj hst)" sustain)" 0 && gt "$(scheme "$(sj hst)" volume)" 0; }
 shadows_none() {
     method_is none && [ "$(json "$(sj none)" shadow_rays)" = 0 ] && ! same_pixels "$work/sh-none.exr" "$work/sh-hst.exr" &&
-        [ "$(schemes "$(sj none)")" = '"sustain": 0, "self-shadow": 0, "volume": 0, "conventional": 0, "cache hit": 0' ]
+        [ "$(schemes "$(sj none)")" = '"sustain": 0, "self-shadow": 0, "volume": 0, "conventional": 0, "cache hit": 0, "area lit": 0, "area umbra": 0, "area beam": 0' ]
 }
 same_shadows() {
     for m in conventional cache volume; do same_pixels "$work/sh-$m.exr" "$work/sh-hst.exr" || return 1; done

@@ -5,34 +5,54 @@
 
 #include "intersect.h"
 
-/* How far outside the nominal grid a sample can be, in units of its axis:
- * half the axis, plus half a cell with jitter, plus circular's nudge. */
-static double half_extent(const Light *l, int size)
+/* Where along one axis (in units of the axis, 0 the centre) the samples
+ * with grid indices lo..hi can lie: their nominal places, half a cell more
+ * each way with jitter, and circular's remapping, which nudges by 0.001
+ * and then pulls each sample toward the centre by a factor between
+ * 1/sqrt(2) and 1 (so [x * 0.7071, x] holds it); widened for rounding. */
+static void extent(const Light *l, int size, int lo, int hi, double *from, double *to)
 {
-    if (size <= 1)
-        return 0.0;
-    double h = 0.5;
-    if (l->area.jitter)
-        h += 0.5 / (double)(size - 1);
-    if (l->area.circular)
-        h += 0.001 + 0.5 / (double)(size - 1); /* its shift, and a margin for the rescaling's rounding */
-    return h * (1.0 + 1e-9);
+    if (size <= 1) {
+        *from = *to = 0.0;
+        return;
+    }
+    double jit = l->area.jitter ? 0.5 : 0.0;
+    double a = ((double)lo - jit) / (double)(size - 1) - 0.5, b = ((double)hi + jit) / (double)(size - 1) - 0.5;
+    if (l->area.circular) {
+        a += 0.001;
+        b += 0.001;
+        double s = 0.7071;
+        double lo2 = fmin(fmin(a, b), fmin(a * s, b * s)), hi2 = fmax(fmax(a, b), fmax(a * s, b * s));
+        a = lo2;
+        b = hi2;
+    }
+    double pad = 1e-9 * (1.0 + fmax(fabs(a), fabs(b)));
+    *from = a - pad;
+    *to = b + pad;
 }
+
+/* plain comparisons: libm's fmin and fmax are calls, in the hot tests */
+static inline double min2(double a, double b) { return a < b ? a : b; }
+static inline double max2(double a, double b) { return a > b ? a : b; }
 
 static double scale_of(Vec3 v) { return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z))); }
 
 int area_beam_init(AreaBeam *b, const Light *l, Vec3 p, Vec3 axis1, Vec3 axis2, double tol)
 {
-    Vec3 e1 = v3_scale(axis1, half_extent(l, l->area.size1));
-    Vec3 e2 = v3_scale(axis2, half_extent(l, l->area.size2));
+    double f0, f1, g0, g1;
+    extent(l, l->area.size1, 0, l->area.size1 - 1, &f0, &f1);
+    extent(l, l->area.size2, 0, l->area.size2 - 1, &g0, &g1);
     Vec3 c = l->location;
     b->apex = p;
     b->parallel = l->kind == LIGHT_PARALLEL;
-    b->corner[0] = v3_sub(v3_sub(c, e1), e2);
-    b->corner[1] = v3_sub(v3_add(c, e1), e2);
-    b->corner[2] = v3_add(v3_add(c, e1), e2);
-    b->corner[3] = v3_add(v3_sub(c, e1), e2);
-    double scale = fmax(scale_of(p), scale_of(c)) + v3_length(e1) + v3_length(e2);
+    b->corner[0] = v3_add(v3_add(c, v3_scale(axis1, f0)), v3_scale(axis2, g0));
+    b->corner[1] = v3_add(v3_add(c, v3_scale(axis1, f1)), v3_scale(axis2, g0));
+    b->corner[2] = v3_add(v3_add(c, v3_scale(axis1, f1)), v3_scale(axis2, g1));
+    b->corner[3] = v3_add(v3_add(c, v3_scale(axis1, f0)), v3_scale(axis2, g1));
+    /* the middle of the samples' parallelogram (circular's nudge moves it
+     * off the light's centre), inside the pyramid */
+    Vec3 mid = v3_add(v3_add(c, v3_scale(axis1, 0.5 * (f0 + f1))), v3_scale(axis2, 0.5 * (g0 + g1)));
+    double scale = fmax(scale_of(p), scale_of(c)) + v3_length(axis1) + v3_length(axis2);
     if (b->parallel)
         scale = fmax(scale, scale_of(l->point_at));
     b->margin = 4.0 * fmax(tol, 1e-9 * (1.0 + scale));
@@ -49,7 +69,7 @@ int area_beam_init(AreaBeam *b, const Light *l, Vec3 p, Vec3 axis1, Vec3 axis2, 
     n = v3_scale(n, 1.0 / nl);
     /* the sides: through the point, along each pair of neighbouring
      * corners' rays, the centre's ray inside */
-    Vec3 axis = v3_sub(c, from);
+    Vec3 axis = v3_sub(mid, from);
     if (fabs(v3_dot(n, axis)) <= 4.0 * b->margin)
         return -1; /* the point (point_at) in the light's plane */
     for (int k = 0; k < 4; k++) {
@@ -65,7 +85,7 @@ int area_beam_init(AreaBeam *b, const Light *l, Vec3 p, Vec3 axis1, Vec3 axis2, 
     }
     if (!b->parallel) {
         /* the base: the light's plane, the point on the inside */
-        double height = v3_dot(n, v3_sub(c, p));
+        double height = v3_dot(n, v3_sub(mid, p));
         if (height < 0.0)
             n = v3_neg(n);
         b->normal[4] = n;
@@ -177,33 +197,56 @@ int area_beam_planes_clear(const AreaBeam *b, const World *w, int exclude)
     return 1;
 }
 
-/* 2-D: the quadrilateral q[0..3] (convex, either orientation) and the
- * segment a-b are apart by more than m: some edge line of the quad, or the
- * segment's own line, has them on its two sides. */
-static int apart_2d(const double q[4][2], const double a[2], const double b[2], double m)
+/* 2-D: a convex quadrilateral, its edges' outward unit normals and its
+ * box, for the tests of a polygon's edges against it. */
+typedef struct {
+    double q[4][2];
+    double nx[4], ny[4], off[4]; /* outward: nx * x + ny * y - off > 0 beyond edge k */
+    double lo[2], hi[2];
+} Quad2;
+
+static void quad_prepare(Quad2 *g)
 {
-    double turn = 0.0; /* the quad's orientation */
+    double turn = 0.0;
     for (int k = 0; k < 4; k++) {
-        const double *p0 = q[k], *p1 = q[(k + 1) % 4];
+        const double *p0 = g->q[k], *p1 = g->q[(k + 1) % 4];
         turn += p0[0] * p1[1] - p1[0] * p0[1];
     }
     for (int k = 0; k < 4; k++) {
-        const double *p0 = q[k], *p1 = q[(k + 1) % 4];
+        const double *p0 = g->q[k], *p1 = g->q[(k + 1) % 4];
         double ex = p1[0] - p0[0], ey = p1[1] - p0[1], len = sqrt(ex * ex + ey * ey);
-        if (!(len > 0.0))
-            continue;
-        /* outward: the side away from the quad */
-        double sa = (ex * (a[1] - p0[1]) - ey * (a[0] - p0[0])) / len;
-        double sb = (ex * (b[1] - p0[1]) - ey * (b[0] - p0[0])) / len;
-        if (turn > 0.0 ? (sa < -m && sb < -m) : (sa > m && sb > m))
-            return 1;
+        double nx = len > 0.0 ? ey / len : 0.0, ny = len > 0.0 ? -ex / len : 0.0;
+        if (turn < 0.0) {
+            nx = -nx;
+            ny = -ny;
+        }
+        g->nx[k] = nx;
+        g->ny[k] = ny;
+        g->off[k] = nx * p0[0] + ny * p0[1];
     }
+    for (int a = 0; a < 2; a++) {
+        g->lo[a] = min2(min2(g->q[0][a], g->q[1][a]), min2(g->q[2][a], g->q[3][a]));
+        g->hi[a] = max2(max2(g->q[0][a], g->q[1][a]), max2(g->q[2][a], g->q[3][a]));
+    }
+}
+
+/* The quad and the segment a-b are apart by more than m: their boxes are,
+ * or some edge line of the quad, or the segment's own line, has them on
+ * its two sides. */
+static int apart_2d(const Quad2 *g, const double a[2], const double b[2], double m)
+{
+    if (max2(a[0], b[0]) < g->lo[0] - m || min2(a[0], b[0]) > g->hi[0] + m || max2(a[1], b[1]) < g->lo[1] - m ||
+        min2(a[1], b[1]) > g->hi[1] + m)
+        return 1;
+    for (int k = 0; k < 4; k++)
+        if (g->nx[k] * a[0] + g->ny[k] * a[1] - g->off[k] > m && g->nx[k] * b[0] + g->ny[k] * b[1] - g->off[k] > m)
+            return 1;
     double ex = b[0] - a[0], ey = b[1] - a[1], len = sqrt(ex * ex + ey * ey);
     if (!(len > 0.0))
         return 0;
     int below = 0, above = 0;
     for (int k = 0; k < 4; k++) {
-        double sk = (ex * (q[k][1] - a[1]) - ey * (q[k][0] - a[0])) / len;
+        double sk = (ex * (g->q[k][1] - a[1]) - ey * (g->q[k][0] - a[0])) / len;
         below += sk < -m;
         above += sk > m;
     }
@@ -218,8 +261,8 @@ int area_beam_classify(const AreaBeam *b, const World *w, uint32_t pi)
         return BEAM_PARTIAL;
     /* the corners' rays where they cross the polygon's plane, in its 2-D projection */
     int iu = p->axis_u, iv = p->axis_v;
-    double q[4][2];
-    int inside = 0, outside = 0;
+    Quad2 quad;
+    Vec3 xs[4];
     for (int k = 0; k < 4; k++) {
         Vec3 x;
         if (b->parallel) {
@@ -235,28 +278,32 @@ int area_beam_classify(const AreaBeam *b, const World *w, uint32_t pi)
                 return BEAM_PARTIAL; /* the plane is not strictly between the point and this corner */
             x = v3_add(b->apex, v3_scale(v3_sub(b->corner[k], b->apex), sp / (sp - sk)));
         }
-        q[k][0] = v3_comp(x, iu);
-        q[k][1] = v3_comp(x, iv);
-        int c = polygon_classify_point(w, p, x, b->margin);
-        inside += c == 1;
-        outside += c == 0;
+        xs[k] = x;
+        quad.q[k][0] = v3_comp(x, iu);
+        quad.q[k][1] = v3_comp(x, iv);
     }
-    if (inside != 4 && outside != 4)
-        return BEAM_PARTIAL;
-    /* No border crosses the quadrilateral: it lies wholly on one side, in
-     * the polygon or beside it (in a hole, or outside). The rays to the
-     * light's parallelogram cross the plane inside that quadrilateral. */
+    /* beside the polygon's box: beside the polygon */
+    double m = b->margin;
+    quad_prepare(&quad);
+    if (quad.hi[0] < v3_comp(p->bbox_min, iu) - m || quad.lo[0] > v3_comp(p->bbox_max, iu) + m ||
+        quad.hi[1] < v3_comp(p->bbox_min, iv) - m || quad.lo[1] > v3_comp(p->bbox_max, iv) + m)
+        return BEAM_MISSES;
+    /* No border comes within the margin of the quadrilateral: it lies
+     * wholly on one side, in the polygon or beside it (in a hole, or
+     * outside), as any of its points does. The rays to the light's
+     * parallelogram cross the plane inside that quadrilateral. */
     for (int k = 0; k < polygon_outline_count(p); k++) {
         int n;
         const Vec3 *v = polygon_outline(w, p, k, &n);
         for (int i = 0; i < n; i++) {
             double a[2] = { v3_comp(v[i], iu), v3_comp(v[i], iv) };
             double c[2] = { v3_comp(v[(i + 1) % n], iu), v3_comp(v[(i + 1) % n], iv) };
-            if (!apart_2d(q, a, c, b->margin))
+            if (!apart_2d(&quad, a, c, m))
                 return BEAM_PARTIAL;
         }
     }
-    if (inside == 4)
+    int inside = polygon_contains(w, p, xs[0]);
+    if (inside)
         return b->parallel ? BEAM_PARTIAL : BEAM_COVERED;
     return BEAM_MISSES;
 }

@@ -50,6 +50,7 @@ typedef struct {
  * proves points lit, never in umbra. */
 int area_beam_init(AreaBeam *b, const Light *l, Vec3 p, Vec3 axis1, Vec3 axis2, double tol);
 
+
 /* The polygons the samples' rays may meet: every one the exact test could
  * find along any of them, and perhaps some more; `exclude` (the point's
  * own polygon, or -1) and no_shadow ones left out. Writes at most cap of
