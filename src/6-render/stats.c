@@ -6,6 +6,7 @@
 #include "json_write.h"
 
 #include <errno.h>
+#include <math.h>
 #include <string.h>
 
 #include "cost_model.h"
@@ -26,6 +27,15 @@ void stats_add(RenderStats *t, const RenderStats *p)
 
 /* "Others" is the render loop's CPU time that was not shadow testing, plus
  * writing the image: the paper's split (finding hits, shading, output). */
+/* v with 3 decimals, or null where it is not finite (JSON has no infinity). */
+static void finite_or_null(char *buf, size_t size, double v)
+{
+    if (isfinite(v))
+        snprintf(buf, size, "%.3f", v);
+    else
+        snprintf(buf, size, "null");
+}
+
 static double others_seconds(const StatsReport *r)
 {
     double o = r->render.render_seconds - r->render.shadow.shadow_seconds;
@@ -339,13 +349,20 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
     }
     if (r->cost) {
         const CostModel *c = r->cost;
+        /* N_th is infinite where no count was timed (no volumes): JSON's null */
+        char nth[32], nth_ray[32];
+        finite_or_null(nth, sizeof nth, c->nth);
+        finite_or_null(nth_ray, sizeof nth_ray, c->nth_ray);
         fprintf(f, ",\n  \"cost_model\": {\"c_s_ns\": %.3f, \"c_i_ns\": %.3f, \"c_c_ns\": %.3f, \"c_o_ns\": %.3f, "
-                   "\"p\": %.6f, \"alpha\": %.4f, \"n_c\": %.3f, \"n_o\": %.3f, \"nth_eq7\": %.3f, \"c_ray_ns\": %.3f, "
-                   "\"c_g_ns\": %.3f, \"nth_shadow_ray\": %.3f, \"seconds\": %.6f, \"samples\": %d},\n  \"nth\": ",
-                c->c_s * 1e9, c->c_i * 1e9, c->c_c * 1e9, c->c_o * 1e9, c->p, c->alpha, c->n_c, c->n_o, c->nth,
-                c->c_ray * 1e9, c->c_g * 1e9, c->nth_ray, c->seconds, c->samples);
-        if (r->nth >= 0.0)
-            fprintf(f, "%.3f", r->nth);
+                   "\"p\": %.6f, \"alpha\": %.4f, \"n_c\": %.3f, \"n_o\": %.3f, \"nth_eq7\": %s, \"c_ray_ns\": %.3f, "
+                   "\"c_g_ns\": %.3f, \"nth_shadow_ray\": %s, \"seconds\": %.6f, \"samples\": %d},\n  \"nth\": ",
+                c->c_s * 1e9, c->c_i * 1e9, c->c_c * 1e9, c->c_o * 1e9, c->p, c->alpha, c->n_c, c->n_o, nth,
+                c->c_ray * 1e9, c->c_g * 1e9, nth_ray, c->seconds, c->samples);
+        if (r->nth >= 0.0) {
+            char v[32];
+            finite_or_null(v, sizeof v, r->nth);
+            fprintf(f, "%s", v);
+        }
         else
             fprintf(f, "\"per-point\"");
     }
