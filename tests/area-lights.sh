@@ -21,6 +21,8 @@
 #    included: where they prove a point lit or in umbra, each sample is
 #    still checked); the same image from every method; --stats reports the
 #    samples, the lights' plans and the beams, which must keep proving.
+# 4. Random scenes (seeded) of occluders under random area lights of every
+#    kind: hst's beams against every sample's shadow ray, 0 disagreements.
 #
 # Environment: top_srcdir, top_builddir (default .), POVRAY (path or name of
 # povray; default povray).
@@ -155,6 +157,56 @@ for method in conventional cache volume hst embree; do
         above "${samples:-0}" "$((10 * $(json_number "$work/v-$method.json" area_points)))"
 done
 : "$methods"
+# --- 4. random scenes: the beams' proofs against every sample's ray ---------------
+# Random occluders (a strip of triangles sharing edges, a polygon with a
+# hole, boxes, a see-through pane, triangles in the light's plane) under a
+# random area light of every kind; hst's answers against the shadow ray's
+# for every sample (--verify-shadows), and the beams must prove some points.
+proved=0
+for seed in 1 2 3 4 5 6 7 8 9 10 11 12; do
+    awk -v seed="$seed" 'BEGIN {
+        srand(seed)
+        kinds[0] = ""; kinds[1] = "jitter"; kinds[2] = "circular"; kinds[3] = "circular orient"
+        kinds[4] = "adaptive 0"; kinds[5] = "adaptive 1 jitter"; kinds[6] = "orient circular jitter"
+        n1 = 2 + int(rand() * 7); n2 = 2 + int(rand() * 7)
+        k = kinds[int(rand() * 7)]
+        if (k ~ /circular/) { n2 = n1 }
+        lx = rand() * 4 - 2; ly = 3 + rand() * 3; lz = rand() * 4 - 3
+        s1 = 0.3 + rand() * 1.5; s2 = 0.3 + rand() * 1.5
+        printf "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+        printf "camera { location <0, 3, -5> look_at <0, 0.5, 0> angle 55 }\n"
+        kind = rand()
+        printf "light_source { <%.4f, %.4f, %.4f> rgb 1 ", lx, ly, lz
+        if (kind < 0.2) printf "parallel point_at <0, 0, 0> "
+        else if (kind < 0.35) printf "spotlight point_at <0, 0, 0> radius 25 falloff 40 "
+        printf "area_light <%.4f, 0, %.4f>, <%.4f, %.4f, %.4f>, %d, %d %s }\n", s1, rand() - 0.5, rand() - 0.5, rand() * 0.5, s2, n1, n2, k
+        printf "plane { y, 0 pigment { rgb 0.8 } }\n"
+        printf "mesh {\n"
+        x = rand() * 2 - 1.5; z = rand() * 2 - 1; h = 0.8 + rand()
+        for (i = 0; i < 6; i++) {
+            printf "  triangle { <%.4f, %.4f, %.4f>, <%.4f, %.4f, %.4f>, <%.4f, %.4f, %.4f> }\n", \
+                x + i * 0.3, h, z, x + i * 0.3 + 0.3, h + (i % 2) * 0.2, z, x + i * 0.3, h + 0.1, z + 0.5
+            printf "  triangle { <%.4f, %.4f, %.4f>, <%.4f, %.4f, %.4f>, <%.4f, %.4f, %.4f> }\n", \
+                x + i * 0.3 + 0.3, h + (i % 2) * 0.2, z, x + i * 0.3 + 0.3, h + 0.1 + rand() * 0.3, z + 0.5, x + i * 0.3, h + 0.1, z + 0.5
+        }
+        printf "  pigment { rgb <0.9, 0.5, 0.3> } }\n"
+        hx = rand() * 2 - 1; hy = 1 + rand() * 1.5
+        printf "polygon { 10, <-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1>, <-0.4, -0.3>, <0.5, -0.3>, <0.5, 0.4>, <-0.4, 0.4>, <-0.4, -0.3>\n"
+        printf "  pigment { rgb 0.6 } rotate <%.2f, %.2f, 0> translate <%.4f, %.4f, %.4f> }\n", 60 + rand() * 60, rand() * 90, hx, hy, rand()
+        printf "box { <-0.3, 0, -0.3>, <0.3, %.4f, 0.3> rotate %.2f*y translate <%.4f, 0, %.4f> pigment { rgb 0.5 } }\n", 0.3 + rand(), rand() * 90, rand() * 3 - 1.5, rand() * 2 - 1.5
+        printf "polygon { 5, <-0.5, 0>, <0.5, 0>, <0.5, 0.7>, <-0.5, 0.7>, <-0.5, 0> pigment { rgbf <0.4, 0.8, 0.6, 0.7> } rotate %.2f*y translate <%.4f, 0, %.4f> }\n", rand() * 180, rand() * 2 - 1, rand() * 2 - 2
+        printf "triangle { <%.4f, %.4f, %.4f>, <%.4f, %.4f, %.4f>, <%.4f, %.4f, %.4f> pigment { rgb 0.4 } }\n", lx - 1, ly, lz - 1, lx + 1, ly, lz - 1, lx, ly, lz + 1.5
+    }' >"$work/r$seed.pov"
+    run "r$seed.pov" +W48 +H36 --verify-shadows --stats-json "r$seed.json" -o "r$seed.exr"
+    check "random scene $seed: renders" exited 0
+    check "random scene $seed: hst agrees with the shadow ray on every sample" \
+        same_count "$(json_number "$work/r$seed.json" disagreements)" 0
+    lit=$(json_number "$work/r$seed.json" area_beam_lit)
+    umbra=$(json_number "$work/r$seed.json" area_beam_umbra)
+    proved=$((proved + ${lit:-0} + ${umbra:-0}))
+done
+check "random scenes: the beams proved $proved points uniform (more than 0)" above "$proved" 0
+
 run "$scenes/soft.pov" +W64 +H48 --stats -o s.exr
 check "--stats: the area lights' samples" grep -q "area lights .* shading points sampled them: .* samples decided" "$work/err"
 check "--stats: each area light's plan says it has no volumes, the beam or the shadow ray deciding" \
