@@ -141,7 +141,7 @@ static void parse_bump_map(Parser *p, SceneNormal *n, const Token *at)
         switch (o->type == TK_WORD ? o->kw : -1) {
         case KW_once: n->pattern.image_once = 1; break;
         case KW_interpolate: n->pattern.image_interpolate = image_interpolation(p, &here); break;
-        case KW_map_type: image_map_type(p, &here); break;
+        case KW_map_type: n->pattern.image_map_type = image_map_type(p, &here); break;
         case KW_bump_size: n->amount = single(parse_float(p)); break;
         case KW_use_colour: case KW_use_color: break;
         case KW_use_index:

@@ -214,18 +214,19 @@ int image_interpolation(Parser *p, const Token *at)
     return v;
 }
 
-void image_map_type(Parser *p, const Token *at)
+int image_map_type(Parser *p, const Token *at)
 {
+    /* POV-Ray's Parse_Image_Map: 0 planar, 1 spherical, 2 cylindrical, 5
+     * torus; any other value it refuses */
     int v = (int)parse_float(p);
-    if (v != 0) {
-        char what[64];
-        snprintf(what, sizeof what, "map_type %d (map_type 0, planar, is supported)", v);
-        image_map_unsupported(p, at, what);
-    }
+    if (v != 0 && v != 1 && v != 2 && v != 5)
+        parse_fail(p, at->pos, "invalid map_type %d (POV-Ray: \"Invalid map_type value.\"; 0 planar, 1 spherical, "
+                               "2 cylindrical and 5 torus are valid)", v);
+    return v;
 }
 
 /* After 'image_map': POV-Ray 3.7's Parse_Image_Map for what exporters
- * write: the picture, then once, interpolate 0/2/4, map_type 0,
+ * write: the picture, then once, interpolate 0/2/4, map_type,
  * use_colour/use_index, filter all F, transmit all T. */
 static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
 {
@@ -239,7 +240,7 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
         switch (o->type == TK_WORD ? o->kw : -1) {
         case KW_once: pig->image_once = 1; break;
         case KW_interpolate: pig->image_interpolate = image_interpolation(p, &here); break;
-        case KW_map_type: image_map_type(p, &here); break;
+        case KW_map_type: pig->image_map_type = image_map_type(p, &here); break;
         case KW_use_colour: case KW_use_color: case KW_use_index: break;
         case KW_filter: case KW_transmit: {
             if (!is_kw(peek(p), KW_all)) {

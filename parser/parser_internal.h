@@ -538,7 +538,7 @@ int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int opti
 /* A picture of image_map or bump_map (`block`), after its '{'. */
 void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct);
 int image_interpolation(Parser *p, const Token *at); /* after 'interpolate' */
-void image_map_type(Parser *p, const Token *at);     /* after 'map_type': 0 only */
+int image_map_type(Parser *p, const Token *at);      /* after 'map_type': its value */
 
 /* parse_normal.c */
 /* After 'normal' (kw): the normal `from` (NULL: the default texture's)

@@ -223,6 +223,34 @@ if [ -n "$povray" ]; then
 else
     skip "... as POV-Ray renders it" "povray not installed"
 fi
+# map_type 1 (spherical), 2 (cylindrical) and 5 (torus) on boxes, once
+# and interpolated too (any other type is an error, as in POV-Ray: below).
+cat >"$work/maptypes.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 2, -5> look_at <0, 0.3, 0> }
+light_source { <3, 5, -4> color rgb 1 }
+plane { y, -1 pigment { color rgb 0.7 } }
+box { -0.6, 0.6 pigment { image_map { "desk-alpha.png" map_type 1 interpolate 2 } } rotate <20, 30, 0> translate <-1.6, 0, 0> }
+box { -0.6, 0.6 pigment { image_map { ppm "tex.ppm" map_type 2 } scale <1, 0.5, 1> } rotate <-15, 40, 0> }
+box { <-0.6, -0.3, -0.6>, <0.6, 0.3, 0.6> pigment { image_map { jpeg "desk-pic.jpg" map_type 2 once } } rotate 25*y translate <0, 1.2, 0.5> }
+box { <-1.3, -0.25, -1.3>, <1.3, 0.25, 1.3> pigment { image_map { tga "desk-pic.tga" map_type 5 interpolate 4 } } rotate <30, 20, 0> scale 0.6 translate <1.6, 0, 0> }
+box { -0.3, 0.3 pigment { image_map { ppm "tex.ppm" map_type 0 } } translate <1.6, 1.2, 0> }
+EOF
+run maptypes.pov +W160 +H120 -o maptypes.png
+check "image_map map_type 1, 2, 5 and 0: renders" exited 0
+sed 's/map_type [125]/map_type 0/' "$work/maptypes.pov" >"$work/maptypes-flat.pov"
+run maptypes-flat.pov +W160 +H120 -o maptypes-flat.png
+# shellcheck disable=SC2016 # the inner shell expands its arguments
+check "... and not as planar ones (differs from all map_type 0 by RMSE > 0.01)" \
+    sh -c '! "$1" compare "$2" "$3" --max-rmse 0.01 >/dev/null' sh "$hstrace" "$work/maptypes.png" "$work/maptypes-flat.png"
+if [ -n "$povray" ]; then
+    (cd "$work" && "$povray" +Imaptypes.pov +W160 +H120 +Omaptypes-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    check "... as POV-Ray maps them (spherical, cylindrical, torus, planar)" \
+        "$hstrace" compare "$work/maptypes-pov.png" "$work/maptypes.png" --max-rmse 1e-5 --max-share 0
+else
+    skip "... as POV-Ray maps them" "povray not installed"
+fi
 for method in conventional cache volume hst; do
     run imagemap.pov +W160 +H120 --shadows "$method" --volumes always -o "imagemap-$method.png"
     check "image_map: --shadows $method gives the same image" "$hstrace" compare "$work/imagemap.png" "$work/imagemap-$method.png" --max-error 0
@@ -253,7 +281,7 @@ jpeg "jpg-65535x65535.jpg"|image_map: cannot read .*jpg-65535x65535.jpg.: Maximu
 jpeg "jpg-65500x65500.jpg"|image_map: cannot read .*jpg-65500x65500.jpg.: unsupported JPEG size 65500x65500
 gif "tex.gif"|'gif' is not supported
 ppm "tex.ppm" interpolate 3|'interpolate 3 (bicubic; 0, 2 and 4 are supported)' is not supported
-ppm "tex.ppm" map_type 1|'map_type 1 (map_type 0, planar, is supported)' is not supported
+ppm "tex.ppm" map_type 3|invalid map_type 3 (POV-Ray: "Invalid map_type value."
 ppm "tex.ppm" filter 2, 0.5|'filter of one palette entry (filter all is supported)' is not supported
 ppm "tex.ppm" repeat <2, 2>|'repeat' is not supported
 BADMAPS

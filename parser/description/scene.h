@@ -138,6 +138,7 @@ typedef struct {
      * bilinear, 4 normalised distance), filter all and transmit all. */
     const SceneImage *image;
     int image_once, image_interpolate;
+    int image_map_type;   /* POV-Ray's map_type: 0 planar, 1 spherical, 2 cylindrical, 5 torus */
     double image_filter_all, image_transmit_all;
     const ApproxNote *approx;
 } Pigment;

@@ -284,14 +284,82 @@ static void image_pixel(const Pigment *pig, double xc, double yc, float out[5])
     out[4] = (1.0f - px[3]) + (float)pig->image_transmit_all; /* transmit all adds to the alpha channel's */
 }
 
+/* The angle of (x, z) from the x axis about y, in [0, 2 pi), as POV-Ray's
+ * image mappers take it; -1 where (x, z) is 0. */
+static double angle_about_y(double x, double z)
+{
+    double len = sqrt(x * x + z * z);
+    if (len == 0.0)
+        return -1.0;
+    if (z == 0.0)
+        return x > 0 ? 0.0 : M_PI;
+    double theta = acos(x / len);
+    return z < 0.0 ? 2.0 * M_PI - theta : theta;
+}
+
+/* POV-Ray's mappers (imageutil.cpp): the picture's coordinates of p, 0
+ * where p is off it. Planar with POV-Ray's gradient <1, -1, 0>: x across,
+ * y up. */
+static int image_map_coordinates(const Pigment *pig, Vec3 p, double w, double h, double *u, double *v)
+{
+    double x = p.x, y = p.y, z = p.z;
+    switch (pig->image_map_type) {
+    case 1: { /* spherical: longitude about y, latitude from the x-z plane */
+        double len = sqrt(x * x + y * y + z * z);
+        if (len == 0.0)
+            return 0;
+        x /= len;
+        y /= len;
+        z /= len;
+        double phi = 0.5 + asin(y) / M_PI;
+        double theta = angle_about_y(x, z);
+        theta = theta < 0.0 ? 0.0 : theta / (2.0 * M_PI); /* at a pole any u will do */
+        *u = theta * w;
+        *v = phi * h;
+        return 1;
+    }
+    case 2: { /* cylindrical about y, one picture's height from y 0 to 1 */
+        if (pig->image_once && (y < 0.0 || y > 1.0))
+            return 0;
+        *v = fmod(y * h, h);
+        double len = sqrt(x * x + y * y + z * z);
+        if (len == 0.0)
+            return 0;
+        double theta = angle_about_y(x / len, z / len);
+        if (theta < 0.0)
+            return 0;
+        *u = theta / (2.0 * M_PI) * w;
+        return 1;
+    }
+    case 5: { /* torus of major radius 1 about y */
+        double theta = angle_about_y(x, z);
+        if (theta < 0.0)
+            return 0;
+        theta = 0.0 - theta;
+        double r = sqrt(x * x + z * z) - 1.0, len = sqrt(r * r + y * y);
+        double phi = acos(-r / len);
+        if (y > 0.0)
+            phi = 2.0 * M_PI - phi;
+        *u = -(theta / (2.0 * M_PI)) * w;
+        *v = phi / (2.0 * M_PI) * h;
+        return 1;
+    }
+    default:
+        if (pig->image_once && (x < 0.0 || x > 1.0 || y < 0.0 || y > 1.0))
+            return 0;
+        *u = fmod(x * w, w);
+        *v = fmod(y * h, h);
+        return 1;
+    }
+}
+
 int image_map_position(const Pigment *pig, Vec3 p, double *x, double *y)
 {
     const SceneImage *im = pig->image;
     const double w = (double)im->width, h = (double)im->height;
-    /* planar_image_map with POV-Ray's gradient <1, -1, 0>: x across, y up */
-    if (pig->image_once && (p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0))
+    double xc = 0.0, yc = 0.0;
+    if (!image_map_coordinates(pig, p, w, h, &xc, &yc))
         return 0;
-    double xc = fmod(p.x * w, w), yc = fmod(p.y * h, h);
     /* map_pos */
     xc += POV_EPSILON;
     yc += POV_EPSILON;
