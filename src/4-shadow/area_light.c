@@ -24,7 +24,8 @@ void area_light_axes(const Light *l, Vec3 centre_dir, Vec3 *axis1, Vec3 *axis2)
     *axis2 = v3_scale(a2, length);
 }
 
-Vec3 area_light_offset(const Light *l, Vec3 axis1, Vec3 axis2, double u, double v)
+/* The offset of grid position (u, v), jitter included. */
+static Vec3 grid_offset(const Light *l, Vec3 axis1, Vec3 axis2, double u, double v)
 {
     const AreaLight *a = &l->area;
     if (a->circular) {
@@ -57,7 +58,7 @@ static uint64_t bits_of(double d)
     return b;
 }
 
-void area_light_jitter(Vec3 p, int light, int u, int v, int stream, double *ju, double *jv)
+static void jitter(Vec3 p, int light, int u, int v, int stream, double *ju, double *jv)
 {
     uint64_t h = mix64(bits_of(p.x) + 0x9e3779b97f4a7c15ull);
     h = mix64(h ^ bits_of(p.y));
@@ -67,6 +68,18 @@ void area_light_jitter(Vec3 p, int light, int u, int v, int stream, double *ju, 
     /* two 26-bit fractions of one hash: [0, 1) each */
     *ju = (double)(h >> 38) / (double)(1u << 26) - 0.5;
     *jv = (double)((h >> 12) & ((1u << 26) - 1)) / (double)(1u << 26) - 0.5;
+}
+
+Vec3 area_light_sample_offset(const Light *l, int light, Vec3 p, Vec3 axis1, Vec3 axis2, int u, int v, int stream)
+{
+    double ju = (double)u, jv = (double)v;
+    if (l->area.jitter) {
+        double du, dv;
+        jitter(p, light, u, v, stream, &du, &dv);
+        ju += du;
+        jv += dv;
+    }
+    return grid_offset(l, axis1, axis2, ju, jv);
 }
 
 double area_light_sample_ray(const Light *l, Vec3 offset, Vec3 p, Vec3 *to_light)
@@ -147,15 +160,8 @@ static RGB sample_at(Sampling *s, int u, int v)
     int at = u * l->area.size2 + v;
     if (s->ctx->area_known[at])
         return s->ctx->area_colour[at];
-    double ju = (double)u, jv = (double)v;
-    if (l->area.jitter) {
-        double du, dv;
-        area_light_jitter(s->q->point, s->q->light, u, v, 0, &du, &dv);
-        ju += du;
-        jv += dv;
-    }
     ShadowQuery q = *s->q;
-    Vec3 offset = area_light_offset(l, s->axis1, s->axis2, ju, jv);
+    Vec3 offset = area_light_sample_offset(l, q.light, q.point, s->axis1, s->axis2, u, v, 0);
     q.distance = area_light_sample_ray(l, offset, q.point, &q.to_light);
     area_light_sample_light(l, offset, q.to_light, &s->sample);
     q.source = &s->sample;
@@ -173,6 +179,14 @@ static double colour_distance(RGB a, RGB b) { return fabs(a.r - b.r) + fabs(a.g 
 /* POV-Ray's mean of a region's four corners */
 static double mean4(double a, double b, double c, double d) { return (a + b + c + d) * 0.25; }
 
+/* POV-Ray's halves of [a, b]: [a, floor of the midpoint] and [its ceiling,
+ * b] (so a region one sample wide splits into its two columns). */
+static void halves(int a, int b, int *low_end, int *high_start)
+{
+    *low_end = (int)floor((a + b) / 2.0);
+    *high_start = (int)ceil((a + b) / 2.0);
+}
+
 /* The region [u1, u2] x [v1, v2] of the grid at subdivision level `level`. */
 static RGB sample_region(Sampling *s, int u1, int v1, int u2, int v2, int level)
 {
@@ -180,10 +194,9 @@ static RGB sample_region(Sampling *s, int u1, int v1, int u2, int v2, int level)
     if ((u2 - u1 > 1 || v2 - v1 > 1) &&
         (level < s->light->area.adaptive || colour_distance(c[0], c[1]) > 0.1 || colour_distance(c[1], c[3]) > 0.1 ||
          colour_distance(c[3], c[2]) > 0.1 || colour_distance(c[2], c[0]) > 0.1)) {
-        /* POV-Ray's halves: floor and ceil of the midpoint (so a region
-         * one sample wide splits into its two columns) */
-        int ul = (int)floor((u1 + u2) / 2.0), uh = (int)ceil((u1 + u2) / 2.0);
-        int vl = (int)floor((v1 + v2) / 2.0), vh = (int)ceil((v1 + v2) / 2.0);
+        int ul, uh, vl, vh;
+        halves(u1, u2, &ul, &uh);
+        halves(v1, v2, &vl, &vh);
         c[0] = sample_region(s, u1, v1, ul, vl, level + 1);
         c[1] = sample_region(s, uh, v1, u2, vl, level + 1);
         c[2] = sample_region(s, u1, vh, ul, v2, level + 1);
@@ -194,6 +207,14 @@ static RGB sample_region(Sampling *s, int u1, int v1, int u2, int v2, int level)
     return mean;
 }
 
+/* The whole grid sampled, from no sample known. */
+static RGB sample_grid(Sampling *s)
+{
+    const Light *l = s->light;
+    memset(s->ctx->area_known, 0, (size_t)l->area.size1 * (size_t)l->area.size2);
+    return sample_region(s, 0, 0, l->area.size1 - 1, l->area.size2 - 1, 0);
+}
+
 /* The corners sample_region visits when every sample agrees: it splits by
  * level alone. */
 static void mark_uniform(const Light *l, unsigned char *seen, int u1, int v1, int u2, int v2, int level)
@@ -201,8 +222,9 @@ static void mark_uniform(const Light *l, unsigned char *seen, int u1, int v1, in
     seen[u1 * l->area.size2 + v1] = seen[u2 * l->area.size2 + v1] = 1;
     seen[u1 * l->area.size2 + v2] = seen[u2 * l->area.size2 + v2] = 1;
     if ((u2 - u1 > 1 || v2 - v1 > 1) && level < l->area.adaptive) {
-        int ul = (int)floor((u1 + u2) / 2.0), uh = (int)ceil((u1 + u2) / 2.0);
-        int vl = (int)floor((v1 + v2) / 2.0), vh = (int)ceil((v1 + v2) / 2.0);
+        int ul, uh, vl, vh;
+        halves(u1, u2, &ul, &uh);
+        halves(v1, v2, &vl, &vh);
         mark_uniform(l, seen, u1, v1, ul, vl, level + 1);
         mark_uniform(l, seen, uh, v1, u2, vl, level + 1);
         mark_uniform(l, seen, u1, vh, ul, v2, level + 1);
@@ -249,14 +271,14 @@ static RGB beam_sampling(Sampling *s)
     int li = q->light;
     AreaBeam beam;
     if (area_beam_init(&beam, s->light, q->point, s->axis1, s->axis2, grid_tolerance(ctx->tracer.grid)))
-        return sample_region(s, 0, 0, s->light->area.size1 - 1, s->light->area.size2 - 1, 0);
+        return sample_grid(s);
     int exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
     int n = area_beam_gather(&beam, w, ctx->tracer.bvh, exclude, ctx->area_candidates, AREA_BEAM_CAP,
                              &ctx->tracer.stats.nodes_visited);
     if (n < 0) {
         ctx->stats.area_beam_overflows++;
         s->by = BY_METHOD;
-        return sample_region(s, 0, 0, s->light->area.size1 - 1, s->light->area.size2 - 1, 0);
+        return sample_grid(s);
     }
     ctx->stats.area_beams++;
     ctx->stats.area_beam_candidates += (uint64_t)n;
@@ -289,7 +311,7 @@ static RGB beam_sampling(Sampling *s)
             /* every sample the sampling visits, checked against its ray */
             s->by = BY_PROOF;
             s->scheme = scheme;
-            (void)sample_region(s, 0, 0, s->light->area.size1 - 1, s->light->area.size2 - 1, 0);
+            (void)sample_grid(s);
             return answer;
         }
         uint64_t visits = (uint64_t)ctx->area_uniform_visits[li];
@@ -302,7 +324,7 @@ static RGB beam_sampling(Sampling *s)
     s->by = BY_BEAM;
     s->candidates = ctx->area_candidates;
     s->ncandidates = n;
-    return sample_region(s, 0, 0, s->light->area.size1 - 1, s->light->area.size2 - 1, 0);
+    return sample_grid(s);
 }
 
 RGB area_light_shadow(ShadowContext *ctx, const ShadowQuery *q, RGB lc)
@@ -310,11 +332,9 @@ RGB area_light_shadow(ShadowContext *ctx, const ShadowQuery *q, RGB lc)
     const Light *l = &ctx->tracer.world->lights[q->light];
     Sampling s = { ctx, q, l, l->area.axis1, l->area.axis2, lc, BY_METHOD, NULL, 0, 0, 0.0, *l };
     area_light_axes(l, q->to_light, &s.axis1, &s.axis2);
-    memset(ctx->area_known, 0, (size_t)l->area.size1 * (size_t)l->area.size2);
     ctx->stats.area_points++;
     double t0 = clock_wall();
-    RGB c = area_light_beamed(ctx, l) ? beam_sampling(&s)
-                                      : sample_region(&s, 0, 0, l->area.size1 - 1, l->area.size2 - 1, 0);
+    RGB c = area_light_beamed(ctx, l) ? beam_sampling(&s) : sample_grid(&s);
     ctx->stats.shadow_seconds += clock_wall() - t0 - s.verify_seconds;
     return c;
 }

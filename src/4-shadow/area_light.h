@@ -32,20 +32,21 @@
 #include "shadow.h"
 
 static inline int light_is_area(const Light *l) { return l->area.size1 > 0; }
+/* An area light with a beam to build for hst: at least 2 x 2 samples. */
+static inline int light_has_beam(const Light *l) { return l->area.size1 > 1 && l->area.size2 > 1; }
 
 /* The axes the grid spans seen from a point whose unit direction toward
  * the light's centre is centre_dir: the light's own, or with orient,
  * turned to face the point (a square of axis1's length). */
 void area_light_axes(const Light *l, Vec3 centre_dir, Vec3 *axis1, Vec3 *axis2);
 
-/* The offset from the light's centre of the sample at grid position
- * (u, v), given with its jitter added, along axes axis1, axis2. */
-Vec3 area_light_offset(const Light *l, Vec3 axis1, Vec3 axis2, double u, double v);
-
-/* POV-Ray's jitter for the sample (u, v) of light `light` seen from p, in
- * [-0.5, 0.5) along each axis; stream tells apart the shadow's samples and
- * area_illumination's, which POV-Ray draws afresh. */
-void area_light_jitter(Vec3 p, int light, int u, int v, int stream, double *ju, double *jv);
+/* The offset from the light's centre of sample (u, v) of light `light`
+ * as seen from p, along axes axis1, axis2 (area_light_axes): the grid
+ * position, with jitter moved by up to half a cell along each axis. The
+ * jitter is POV-Ray's random offset, here drawn from a hash of p, the
+ * light and the sample; stream tells apart the shadow's samples (0) and
+ * area_illumination's (1), which POV-Ray draws afresh. */
+Vec3 area_light_sample_offset(const Light *l, int light, Vec3 p, Vec3 axis1, Vec3 axis2, int u, int v, int stream);
 
 /* The shadow ray from p toward the light's centre moved by offset: the
  * unit direction toward it, and the distance (parallel: to its plane), as
@@ -68,7 +69,7 @@ void area_light_uniform_shape(const Light *l, unsigned char *scratch, int *visit
  * beam to build (at least 2 x 2 samples). */
 static inline int area_light_beamed(const ShadowContext *ctx, const Light *l)
 {
-    return ctx->area_candidates && l->area.size1 > 1 && l->area.size2 > 1;
+    return ctx->area_candidates && light_has_beam(l);
 }
 
 /* Some light of w would have hst's beam (at +Q5 and above). */
@@ -76,7 +77,7 @@ static inline int world_has_beams(const World *w)
 {
     for (int i = 0; i < w->nlights; i++) {
         const Light *l = &w->lights[i];
-        if (!l->shadowless && l->area.size1 > 1 && l->area.size2 > 1)
+        if (!l->shadowless && light_has_beam(l))
             return 1;
     }
     return 0;

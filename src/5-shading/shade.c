@@ -240,15 +240,9 @@ static void add_full_area_light(const Light *l, int li, const Material *m, Vec3 
     RGB share = { lc.r / samples, lc.g / samples, lc.b / samples };
     for (int v = 0; v < l->area.size2; v++) {
         for (int u = 0; u < l->area.size1; u++) {
-            double ju = (double)u, jv = (double)v;
-            if (l->area.jitter) {
-                double du, dv;
-                area_light_jitter(p, li, u, v, 1, &du, &dv);
-                ju += du;
-                jv += dv;
-            }
             Vec3 to_light;
-            double distance = area_light_sample_ray(l, area_light_offset(l, axis1, axis2, ju, jv), p, &to_light);
+            double distance =
+                area_light_sample_ray(l, area_light_sample_offset(l, li, p, axis1, axis2, u, v, 1), p, &to_light);
             double fade = light_attenuation(l, p, to_light, distance);
             RGB slc = { share.r * fade, share.g * fade, share.b * fade };
             for (int i = 0; i < n; i++) {
