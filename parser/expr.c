@@ -469,6 +469,11 @@ const char *value_kind_name(ValueKind k)
     case VAL_SKY_SPHERE: return "a sky_sphere";
     case VAL_TRANSFORM: return "a transform";
     case VAL_NORMAL: return "a normal";
+    case VAL_COLOUR_MAP: return "a color_map";
+    case VAL_PIGMENT_MAP: return "a pigment_map";
+    case VAL_TEXTURE_MAP: return "a texture_map";
+    case VAL_NORMAL_MAP: return "a normal_map";
+    case VAL_SLOPE_MAP: return "a slope_map";
     case VAL_MACRO: return "a macro";
     case VAL_ARRAY: return "an array";
     case VAL_FILE: return "a file identifier";

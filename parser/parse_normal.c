@@ -88,9 +88,15 @@ static void parse_normal_list(Parser *p, SceneNormal *n, int count)
 
 /* normal_map { [value normal items] ... } and average's list, whose
  * values may be left out (1). */
-static void parse_normal_map(Parser *p, SceneNormal *n, int average)
+void parse_normal_map(Parser *p, SceneNormal *n, int average)
 {
     begin_block(p, "normal_map");
+    const Value *id = map_identifier(p, VAL_NORMAL_MAP, "normal_map");
+    if (id) {
+        n->map = id->normal->map;
+        n->nmap = id->normal->nmap;
+        return;
+    }
     TempVec entries;
     tvec_init(&entries, sizeof(NormalMapEntry));
     double v;
@@ -107,9 +113,15 @@ static void parse_normal_map(Parser *p, SceneNormal *n, int average)
 }
 
 /* slope_map { [value, <height, slope>] ... } */
-static void parse_slope_map(Parser *p, SceneNormal *n)
+void parse_slope_map(Parser *p, SceneNormal *n)
 {
     begin_block(p, "slope_map");
+    const Value *id = map_identifier(p, VAL_SLOPE_MAP, "slope_map");
+    if (id) {
+        n->slope = id->normal->slope;
+        n->nslope = id->normal->nslope;
+        return;
+    }
     TempVec entries;
     tvec_init(&entries, sizeof(SlopeMapEntry));
     double v;
@@ -143,12 +155,8 @@ static void parse_bump_map(Parser *p, SceneNormal *n, const Token *at)
         case KW_interpolate: n->pattern.image_interpolate = image_interpolation(p, &here); break;
         case KW_map_type: n->pattern.image_map_type = image_map_type(p, &here); break;
         case KW_bump_size: n->amount = single(parse_float(p)); break;
-        case KW_use_colour: case KW_use_color: break;
-        case KW_use_index:
-            /* POV-Ray takes a palette picture's indices as heights; hstrace
-             * keeps no palette, so its colours' brightness stands in */
-            approximate(p, &here, APPROX_NORMAL, &n->approx);
-            break;
+        case KW_use_colour: case KW_use_color: n->pattern.image_use_index = 0; break;
+        case KW_use_index: n->pattern.image_use_index = 1; break;
         default:
             if (o->type == TK_WORD && o->kw >= 0)
                 unsupported(p, o); /* repeat, offset, ... */

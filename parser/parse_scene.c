@@ -287,8 +287,7 @@ static int is_unsupported_value_keyword(int kw)
 {
     switch (kw) {
     case KW_function: case KW_spline: case KW_pattern: case KW_media: case KW_density:
-    case KW_fog: case KW_rainbow: case KW_color_map: case KW_colour_map:
-    case KW_pigment_map: case KW_normal_map: case KW_slope_map: case KW_texture_map: case KW_material_map:
+    case KW_fog: case KW_rainbow:
     case KW_density_map: case KW_photons: case KW_radiosity: case KW_interior_texture:
     case KW_trace: case KW_min_extent: case KW_max_extent: case KW_vturbulence: case KW_file_exists:
     case KW_datetime: case KW_now:
@@ -356,6 +355,32 @@ static Value parse_rvalue(Parser *p)
             return v;
         case KW_array:
             return parse_array(p, &t);
+        case KW_color_map: case KW_colour_map: case KW_pigment_map:
+            v.kind = t.kw == KW_pigment_map ? VAL_PIGMENT_MAP : VAL_COLOUR_MAP;
+            v.pigment = palloc(p, sizeof *v.pigment);
+            memset(v.pigment, 0, sizeof *v.pigment);
+            if (t.kw == KW_pigment_map)
+                parse_pigment_map(p, v.pigment, &t);
+            else
+                parse_colour_map(p, v.pigment);
+            return v;
+        case KW_texture_map:
+            v.kind = VAL_TEXTURE_MAP;
+            v.texture = palloc(p, sizeof *v.texture);
+            memset(v.texture, 0, sizeof *v.texture);
+            parse_texture_map(p, v.texture, &t);
+            return v;
+        case KW_normal_map: case KW_slope_map: {
+            SceneNormal *n = palloc(p, sizeof *n);
+            memset(n, 0, sizeof *n);
+            v.kind = t.kw == KW_normal_map ? VAL_NORMAL_MAP : VAL_SLOPE_MAP;
+            if (t.kw == KW_normal_map)
+                parse_normal_map(p, n, 0);
+            else
+                parse_slope_map(p, n);
+            v.normal = n;
+            return v;
+        }
         default:
             break;
         }
@@ -365,14 +390,9 @@ static Value parse_rvalue(Parser *p)
             v.light = light;
             return v;
         }
-        if (t.kw == KW_texture_map || t.kw == KW_material_map) {
-            /* a texture_map is written in its texture; material_map is not supported */
-            const char *what = t.kw == KW_texture_map ? "texture_map identifier (a #declare of a texture_map)"
-                                                      : "material_map (textures chosen by an image's colours)";
-            t.text = what;
-            t.len = (int)strlen(what);
-            unsupported(p, &t);
-        }
+        if (t.kw == KW_material_map) /* POV-Ray's Parse_RValue has no case for it either */
+            parse_fail(p, t.pos, "a material_map cannot be declared on its own: write it in a texture "
+                                 "(#declare T = texture { material_map { ... } })");
         if (is_unsupported_value_keyword(t.kw))
             unsupported(p, &t);
     }

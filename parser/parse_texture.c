@@ -24,6 +24,9 @@ SceneTexture *new_default_texture(Parser *p)
     return t;
 }
 
+static void join_notes(Parser *p, const ApproxNote **to, const ApproxNote *from);
+static void set_texture_map(Parser *p, SceneTexture *tex, const TextureMapEntry *entries, int n, const Token *at);
+
 /* The identifier at t when it holds `kind`; errors for other identifiers. */
 const Value *block_identifier(Parser *p, const Token *t, ValueKind kind, const char *block)
 {
@@ -135,6 +138,7 @@ void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *bl
     Token name_at = *peek(p);
     char *name = parse_string(p);
     double decoding_gamma = gamma_correct ? -1.0 : 1.0; /* -1: POV-Ray's default for the file's type */
+    int premultiplied = -1;                             /* -1: the format's own reading */
     for (;;) {
         Token *o = next(p);
         if (is_kw(o, KW_gamma)) {
@@ -148,9 +152,7 @@ void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *bl
                     parse_fail(p, vt.pos, "gamma value must be positive.");
             }
         } else if (is_kw(o, KW_premultiplied)) {
-            Token vt = *peek(p);
-            if ((int)parse_float(p) != 0)
-                image_map_unsupported(p, &vt, "premultiplied 1 (an image of premultiplied alpha)");
+            premultiplied = (int)parse_float(p) != 0; /* POV-Ray's premultiplyOverride */
         } else {
             unget(p);
             break;
@@ -162,22 +164,35 @@ void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *bl
     if (!path)
         parse_fail(p, name_at.pos, "cannot find the image '%s' (looked in the current folder, the scene's folder and the "
                    "include folders)", name);
-    int w = 0, h = 0;
-    float *rgba = NULL;
+    LoadedPicture pic;
     char why[256] = "";
-    if (p->opts->load_image(p->opts->load_image_user, path, decoding_gamma, &w, &h, &rgba, why, (int)sizeof why)) {
-        free(rgba);
+    if (p->opts->load_image(p->opts->load_image_user, path, decoding_gamma, premultiplied, &pic, why, (int)sizeof why)) {
+        free(pic.rgba);
+        free(pic.index);
         parse_fail(p, name_at.pos, "%s: %s", block, why[0] ? why : "unreadable image");
     }
+    const int w = pic.width, h = pic.height;
     SceneImage *im = palloc(p, sizeof *im);
     size_t n = (size_t)w * (size_t)h * 4;
     float *kept = NULL;
-    if (n > 0) {
-        /* in the scene's arena: the parse's memory budget counts it */
-        kept = palloc(p, n * sizeof *kept);
-        memcpy(kept, rgba, n * sizeof *kept);
+    unsigned char *index = NULL;
+    /* in the scene's arena: the parse's memory budget counts them (a
+     * failed palloc leaves by the parse's error path: free the file's first) */
+    if (n > 0 && !(kept = arena_alloc(p->arena, n * sizeof *kept))) {
+        free(pic.rgba);
+        free(pic.index);
+        parse_fail_memory(p, name_at.pos);
     }
-    free(rgba);
+    if (n > 0)
+        memcpy(kept, pic.rgba, n * sizeof *kept);
+    free(pic.rgba);
+    if (pic.index && !(index = arena_alloc(p->arena, (size_t)w * (size_t)h))) {
+        free(pic.index);
+        parse_fail_memory(p, name_at.pos);
+    }
+    if (pic.index)
+        memcpy(index, pic.index, (size_t)w * (size_t)h);
+    free(pic.index);
     double wg = gamma_correct ? scene_working_gamma(p->scene) : 1.0;
     double sum[3] = { 0, 0, 0 };
     for (size_t i = 0; i < (size_t)w * (size_t)h; i++) {
@@ -192,6 +207,21 @@ void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *bl
     im->height = h;
     im->rgba = kept;
     im->path = path;
+    im->premultiplied = pic.premultiplied;
+    if (index) {
+        /* POV-Ray's colour map: each entry's colour in the working space,
+         * filter 0 and transmit 1 - alpha (what `filter N`, `transmit all`
+         * ... change) */
+        im->index = index;
+        im->npalette = pic.ncolours;
+        im->palette = palloc(p, sizeof *im->palette * (size_t)pic.ncolours);
+        for (int i = 0; i < pic.ncolours; i++) {
+            for (int c = 0; c < 3; c++)
+                im->palette[i][c] = to_working(pic.palette[i][c], wg);
+            im->palette[i][3] = 0.0f;
+            im->palette[i][4] = 1.0f - pic.palette[i][3];
+        }
+    }
     pig->kind = PIGMENT_IMAGE_MAP;
     pig->image = im;
     pig->nmap = 0;
@@ -243,18 +273,32 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
         case KW_map_type: pig->image_map_type = image_map_type(p, &here); break;
         case KW_use_colour: case KW_use_color: case KW_use_index: break;
         case KW_filter: case KW_transmit: {
-            if (!is_kw(peek(p), KW_all)) {
-                char what[64];
-                snprintf(what, sizeof what, "%s of one palette entry (%s all is supported)", keyword_name(here.kw),
-                         keyword_name(here.kw));
-                image_map_unsupported(p, &here, what);
+            /* POV-Ray's Parse_Image_Map: `filter all F` adds F to every
+             * pixel's filter (a colour-mapped picture: sets every entry's
+             * to F); `filter N, F` sets entry N's, colour-mapped only.
+             * transmit the same. */
+            const int slot = here.kw == KW_filter ? 3 : 4;
+            SceneImage *im = (SceneImage *)pig->image; /* this image_map's own, read just now */
+            if (is_kw(peek(p), KW_all)) {
+                (void)next(p);
+                double v = parse_float(p);
+                if (slot == 3)
+                    pig->image_filter_all = v;
+                else
+                    pig->image_transmit_all = v;
+                for (int i = 0; i < im->npalette; i++)
+                    im->palette[i][slot] = (float)v;
+                break;
             }
-            (void)next(p);
-            double v = parse_float(p);
-            if (here.kw == KW_filter)
-                pig->image_filter_all = v;
-            else
-                pig->image_transmit_all = v;
+            Token rt = *peek(p);
+            int reg = (int)(parse_float(p) + 0.01);
+            if (im->npalette == 0)
+                parse_fail(p, here.pos, "Keyword '%s' cannot be used with non color-mapped image.",
+                           keyword_name(here.kw));
+            if (reg < 0 || reg >= im->npalette)
+                parse_fail(p, rt.pos, "%s color register value out of range.", slot == 3 ? "FILTER" : "TRANSMIT");
+            parse_comma(p);
+            im->palette[reg][slot] = (float)parse_float(p);
             break;
         }
         default:
@@ -431,7 +475,8 @@ int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int opti
         Symbol *s = symbol_find(p, t->text, t->len);
         if (s && s->value.kind == VAL_UNSUPPORTED)
             use_unsupported(p, t, &s->value);
-        parse_fail(p, t->pos, "%s identifiers are not supported by hstrace", map);
+        parse_fail(p, t->pos, "expected '[' or '}' in '%s', found '%.*s' (a declared %s stands alone: %s { Name })",
+                   map, t->len, t->text, map, map);
     }
     if (!is_punct(t, '[')) {
         char what[48];
@@ -445,9 +490,35 @@ int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int opti
     return 1;
 }
 
-static void parse_colour_map(Parser *p, Pigment *pig)
+const Value *map_identifier(Parser *p, ValueKind kind, const char *map)
+{
+    Token *t = peek(p);
+    if (t->type != TK_WORD || t->kw >= 0)
+        return NULL;
+    Token at = *t;
+    Symbol *s = token_symbol(p, &at);
+    if (!s || s->value.kind == VAL_MACRO)
+        return NULL; /* undeclared: blend_map_entry says so; a macro's call is read as entries */
+    (void)next(p);
+    if (s->value.kind == VAL_UNSUPPORTED)
+        use_unsupported(p, &at, &s->value);
+    if (s->value.kind != kind)
+        parse_fail(p, at.pos, "'%.*s' is %s, not a %s (POV-Ray: \"Wrong identifier type\")", at.len, at.text,
+                   value_kind_name(s->value.kind), map);
+    char after[64];
+    snprintf(after, sizeof after, "a declared %s in '%s'", map, map);
+    expect_punct(p, '}', after);
+    return &s->value;
+}
+
+void parse_colour_map(Parser *p, Pigment *pig)
 {
     begin_block(p, "color_map");
+    const Value *id = map_identifier(p, VAL_COLOUR_MAP, "color_map");
+    if (id) {
+        set_map(p, pig, id->pigment->map, id->pigment->nmap);
+        return;
+    }
     TempVec entries;
     tvec_init(&entries, sizeof(ColourMapEntry));
     double v;
@@ -534,9 +605,15 @@ static void pigment_items(Parser *p, Pigment *pig, int close);
  * full, and the map blends the entries' colours. That is POV-Ray's result
  * wherever the entries are plain colours; an entry with a pattern of its
  * own is shown as its representative colour, reported as an approximation. */
-static void parse_pigment_map(Parser *p, Pigment *pig, const Token *at)
+void parse_pigment_map(Parser *p, Pigment *pig, const Token *at)
 {
     begin_block(p, "pigment_map");
+    const Value *id = map_identifier(p, VAL_PIGMENT_MAP, "pigment_map");
+    if (id) {
+        set_map(p, pig, id->pigment->map, id->pigment->nmap);
+        join_notes(p, &pig->approx, id->pigment->approx);
+        return;
+    }
     TempVec entries;
     tvec_init(&entries, sizeof(ColourMapEntry));
     int patterned = 0;
@@ -1065,9 +1142,14 @@ static void set_texture_map(Parser *p, SceneTexture *tex, const TextureMapEntry 
  * textures): each entry a texture as written in texture { }, from the
  * default texture, a texture identifier, pigment, finish, or a pattern and
  * a texture_map of its own. */
-static void parse_texture_map(Parser *p, SceneTexture *tex, const Token *at)
+void parse_texture_map(Parser *p, SceneTexture *tex, const Token *at)
 {
     begin_block(p, "texture_map");
+    const Value *id = map_identifier(p, VAL_TEXTURE_MAP, "texture_map");
+    if (id) {
+        set_texture_map(p, tex, id->texture->map, id->texture->nmap, at);
+        return;
+    }
     nesting_enter(p, at);
     TempVec entries;
     tvec_init(&entries, sizeof(TextureMapEntry));
@@ -1168,6 +1250,56 @@ static void parse_patterned_texture(Parser *p, SceneTexture *tex, const Token *a
         parse_fail(p, at->pos, "Patterned texture must have texture_map.");
 }
 
+/* material_map { [type] "file" [gamma G] [premultiplied B] once
+ * interpolate map_type texture { } ... } after 'material_map' (`at`), as
+ * POV-Ray's Parse_Material_Map: the picture (read as data, not gamma
+ * corrected, as POV-Ray reads it), then the textures it chooses among. */
+static void parse_material_map(Parser *p, SceneTexture *tex, const Token *at)
+{
+    begin_block(p, "material_map");
+    nesting_enter(p, at);
+    Pigment *pig = &tex->pigment;
+    const ApproxNote *notes = pig->approx;
+    memset(pig, 0, sizeof *pig);
+    transform_identity(&pig->transform);
+    pig->approx = notes;
+    tex->normal = NULL; /* its textures have the normals */
+    parse_image_source(p, pig, at, "material_map", 0);
+    TempVec entries;
+    tvec_init(&entries, sizeof(TextureMapEntry));
+    for (;;) {
+        Token *o = next(p);
+        if (is_punct(o, '}'))
+            break;
+        Token here = *o;
+        int kw = o->type == TK_WORD ? o->kw : -1;
+        if (entries.n > 0 && kw != KW_texture) /* the picture's options come before the textures */
+            fail_expected(p, &here, "texture or '}' in 'material_map'");
+        switch (kw) {
+        case KW_once: pig->image_once = 1; continue;
+        case KW_interpolate: pig->image_interpolate = image_interpolation(p, &here); continue;
+        case KW_map_type: pig->image_map_type = image_map_type(p, &here); continue;
+        case KW_texture: {
+            if (entries.n >= 256)
+                parse_fail(p, here.pos, "more than 256 textures in a material_map");
+            TextureMapEntry *slot = tvec_push(p, &entries);
+            slot->value = entries.n - 1;
+            slot->texture = parse_texture(p);
+            continue;
+        }
+        case KW_repeat: case KW_offset:
+            unsupported(p, &here);
+        default:
+            fail_expected(p, &here, "once, interpolate, map_type or texture in 'material_map'");
+        }
+    }
+    if (entries.n < 1)
+        parse_fail(p, p->tok.pos, "a material_map needs at least one texture (POV-Ray: \"texture expected\")");
+    nesting_leave(p);
+    set_texture_map(p, tex, entries.data, entries.n, at);
+    tex->material_map = 1;
+}
+
 /* After a texture_map texture (an identifier, or the default texture when
  * that is one): only transforms, as POV-Ray's Parse_Texture_Transform;
  * they move the map's pattern, and with it its textures. */
@@ -1200,11 +1332,27 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
         texture_map_transforms(p, tex, close, &here);
         return;
     }
+    int only_ids = 1; /* nothing but identifiers so far: a pigment, normal or finish one may follow */
     for (;;) {
         Token *t = next(p);
         if (is_punct(t, close))
             return;
         Token here = *t;
+        /* POV-Ray's [pnf_ids]: `texture { Jade }` with Jade a pigment (old
+         * scenes and textures.inc's pigments write them so), before the
+         * texture's blocks */
+        const Symbol *pnf = here.type == TK_WORD && here.kw < 0 && only_ids ? token_symbol(p, &here) : NULL;
+        if (pnf && (pnf->value.kind == VAL_PIGMENT || pnf->value.kind == VAL_FINISH || pnf->value.kind == VAL_NORMAL) &&
+            tex->nmap == 0) {
+            if (pnf->value.kind == VAL_PIGMENT)
+                tex->pigment = *pnf->value.pigment;
+            else if (pnf->value.kind == VAL_FINISH)
+                tex->finish = *pnf->value.finish;
+            else
+                tex->normal = pnf->value.normal;
+            first = 0;
+            continue;
+        }
         const Value *id = block_identifier(p, t, VAL_TEXTURE, "texture");
         if (id) {
             SourcePos pos = tex->pos;
@@ -1222,11 +1370,11 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
         }
         int kw = here.type == TK_WORD ? here.kw : -1;
         switch (kw) {
-        case KW_pigment: parse_pigment(p, &tex->pigment); first = 0; continue;
-        case KW_finish: parse_finish(p, &tex->finish); first = 0; continue;
+        case KW_pigment: parse_pigment(p, &tex->pigment); first = only_ids = 0; continue;
+        case KW_finish: parse_finish(p, &tex->finish); first = only_ids = 0; continue;
         case KW_normal:
             tex->normal = parse_normal(p, tex->normal, &here, 1);
-            first = 0;
+            first = only_ids = 0;
             continue;
         case KW_no_bump_scale: continue;
         case KW_texture: /* `texture { }` in a texture, or around a texture_map entry */
@@ -1236,7 +1384,12 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
         case KW_texture_map:
             parse_fail(p, here.pos, "texture_map needs a pattern before it (texture { gradient y texture_map { ... } })");
         case KW_material_map:
-            texture_unsupported(p, &here, "material_map (textures chosen by an image's colours)");
+            if (!first)
+                parse_fail(p, here.pos, "material_map must come first in its texture (only transforms may follow "
+                                        "it)");
+            parse_material_map(p, tex, &here);
+            texture_map_transforms(p, tex, close, &here);
+            return;
         default:
             if (token_starts_colour(p, &here))
                 fail_expected(p, &here, close == ']' ? "a texture's items (pigment { ... } ...), not a colour, in a "
@@ -1252,7 +1405,7 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
             if (!tex->pigment.uv_mapping)
                 transform_compose(&tex->pigment.transform, &moved);
             tex->normal = normal_transformed(p, tex->normal, &moved);
-            first = 0;
+            first = only_ids = 0;
             continue;
         }
         if (kw >= 0 && pattern_support(kw) != PAT_NONE) {

@@ -41,13 +41,16 @@ typedef struct {
     /* The frame being rendered; NULL: a still, as POV-Ray renders one
      * without animation switches (clock 0, clock_delta 1, ...). */
     const ParseAnimation *animation;
-    /* Reads an image_map's file (found through the folders above) into
-     * straight (not premultiplied) RGBA in linear light, *rgba malloc'd
-     * (the parser frees it). decoding_gamma: -1 POV-Ray's default for the
-     * file's type (IMAGE_GAMMA_AS_POVRAY of image.h), 0 sRGB (`gamma srgb`),
-     * else a power law (`gamma G`); linear formats (EXR, HDR) ignore it. Returns 0, or -1 with the reason in err (the
-     * parser names the file and the position). NULL: image_map is refused. */
-    int (*load_image)(void *user, const char *path, double decoding_gamma, int *width, int *height, float **rgba,
+    /* Reads the file of an image_map, bump_map or material_map (found
+     * through the folders above) into *out (scene.h's LoadedPicture; the
+     * parser frees its rgba and index). decoding_gamma: -1 POV-Ray's
+     * default for the file's type (IMAGE_GAMMA_AS_POVRAY of image.h), 0
+     * sRGB (`gamma srgb`), else a power law (`gamma G`); linear formats
+     * (EXR, HDR) ignore it. premultiplied: -1 the format's own reading
+     * (EXR premultiplied, the others straight), else `premultiplied`'s
+     * value. Returns 0, or -1 with the reason in err (the parser names the
+     * file and the position). NULL: pictures are refused. */
+    int (*load_image)(void *user, const char *path, double decoding_gamma, int premultiplied, LoadedPicture *out,
                       char *err, int errlen);
     void *load_image_user;
     /* POV-Ray's console streams turned off (-GD, -GW, -GA): #debug text

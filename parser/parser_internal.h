@@ -99,6 +99,15 @@ typedef enum {
     VAL_SKY_SPHERE,
     VAL_TRANSFORM,
     VAL_NORMAL,      /* parsed and forgotten: normals are not modelled */
+    /* Declared blend maps (POV-Ray's COLOUR_MAP_ID ... NORMAL_MAP_ID): a
+     * colour_map or pigment_map in `pigment` (its map, nmap and notes), a
+     * texture_map in `texture` (map, nmap, map_depth), a normal_map or
+     * slope_map in `normal` (map / slope). */
+    VAL_COLOUR_MAP,
+    VAL_PIGMENT_MAP,
+    VAL_TEXTURE_MAP,
+    VAL_NORMAL_MAP,
+    VAL_SLOPE_MAP,
     VAL_UNSUPPORTED, /* a declaration of something hstrace cannot render */
     VAL_MACRO,
     VAL_ARRAY,
@@ -535,6 +544,16 @@ int octaves_value(double v);
 void parse_warp(Parser *p, Pigment *pig, const Token *at); /* after 'warp' */
 /* A blend map's next entry: 0 at its '}', else 1 after '[' and the value. */
 int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int optional, double *value);
+/* After a map's '{': a declared map of `kind` and the '}' after it (POV-Ray
+ * takes one identifier in place of the entries), or NULL. */
+const Value *map_identifier(Parser *p, ValueKind kind, const char *map);
+/* The maps after their keyword `at` (read), into a pigment, a patterned
+ * texture or a normal; also what #declare reads for a declared map. */
+void parse_colour_map(Parser *p, Pigment *pig);
+void parse_pigment_map(Parser *p, Pigment *pig, const Token *at);
+void parse_texture_map(Parser *p, SceneTexture *tex, const Token *at);
+void parse_normal_map(Parser *p, SceneNormal *n, int average);
+void parse_slope_map(Parser *p, SceneNormal *n);
 /* A picture of image_map or bump_map (`block`), after its '{'. */
 void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct);
 int image_interpolation(Parser *p, const Token *at); /* after 'interpolate' */

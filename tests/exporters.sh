@@ -191,8 +191,20 @@ VERSIONS
 # PNG with alpha, JPEG and Targa with alpha.
 printf 'P3\n4 3\n255\n255 0 0  0 255 0  0 0 255  255 255 0\n0 255 255  255 0 255  128 128 128  255 255 255\n10 20 30  200 100 50  50 200 100  0 0 0\n' \
     >"$work/tex.ppm"
+# Colour-mapped pictures (tests/make-indexed.pl): 8-bit and 4-bit palette
+# PNGs, one with a half transparent entry, and an 8-bit BMP.
+for args in "png p8.png" "png p4.png 4" "png pt.png trns" "bmp p8.bmp"; do
+    # shellcheck disable=SC2086 # split into words on purpose
+    set -- $args
+    kind=$1 name=$2
+    shift 2
+    perl "$srcdir/tests/make-indexed.pl" "$kind" "$work/$name" "$@" ||
+        { echo "Bail out! tests/make-indexed.pl failed (perl's Compress::Zlib, Debian package perl)"; exit 1; }
+done
+head -c 90 "$work/p8.png" >"$work/p8-truncated.png" # its palette read, its pixels cut short
 cp "$srcdir/scenes/desk.pov" "$work/desk.pov"
 run desk.pov +W40 +H30 +FN +UA +Odesk-alpha
+run desk.pov +W40 +H30 +UA -o desk-alpha.exr
 run desk.pov +W40 +H30 +FJ +Odesk-pic
 run desk.pov +W40 +H30 +FT +UA +Odesk-pic
 cat >"$work/imagemap.pov" <<'EOF'
@@ -282,9 +294,157 @@ jpeg "jpg-65500x65500.jpg"|image_map: cannot read .*jpg-65500x65500.jpg.: unsupp
 gif "tex.gif"|'gif' is not supported
 ppm "tex.ppm" interpolate 3|'interpolate 3 (bicubic; 0, 2 and 4 are supported)' is not supported
 ppm "tex.ppm" map_type 3|invalid map_type 3 (POV-Ray: "Invalid map_type value."
-ppm "tex.ppm" filter 2, 0.5|'filter of one palette entry (filter all is supported)' is not supported
+ppm "tex.ppm" filter 2, 0.5|Keyword 'filter' cannot be used with non color-mapped image
+png "p8.png" transmit 6, 0.5|TRANSMIT color register value out of range
+png "p8-truncated.png"|image_map: cannot read .*p8-truncated.png.: PNG data is truncated
 ppm "tex.ppm" repeat <2, 2>|'repeat' is not supported
 BADMAPS
+# --- colour-mapped pictures, material_map, premultiplied --------------------------
+# POV-Ray 3.7 keeps palette PNGs and 8-bit BMPs indexed: `filter N, F` and
+# `transmit N, T` set one entry's, `filter all` sets every entry's;
+# material_map picks one texture per point by the entry there (entries 1
+# and 4 have the same colour, told apart only by their index), or by red
+# times 255 of a picture without a palette; `premultiplied 1` reads a
+# PNG's colours as premultiplied, `premultiplied 0` an EXR's as straight
+# (interpolated first, divided after); bump_map's use_index takes the
+# entries as heights.
+cat >"$work/palette.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0.5, 1.2, -2.6> look_at <0.5, 0.45, 0> }
+light_source { <2, 5, -4> color rgb 1 }
+plane { y, -0.01 pigment { checker color rgb <0.9, 0.8, 0.7> color rgb 0.3 scale 0.25 } }
+polygon { 4, <-1,0,0>, <0,0,0>, <0,1,0>, <-1,1,0> pigment { image_map { png "p8.png" filter 2, 0.6 transmit 3, 0.5 } translate <-1,0,0> } }
+polygon { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> pigment { image_map { png "pt.png" interpolate 2 transmit all 0.2 filter 1, 0.9 } } }
+polygon { 4, <1,0,0>, <2,0,0>, <2,1,0>, <1,1,0> pigment { image_map { bmp "p8.bmp" filter all 0.3 transmit 4, 0.7 } scale 0.5 translate <1,0,0> } }
+polygon { 4, <-1,0,-0.6>, <2,0,-0.6>, <2,0.5,-0.7>, <-1,0.5,-0.7>
+  texture { material_map { png "p4.png"
+      texture { pigment { color rgb <1,0,0> } }
+      texture { pigment { color rgb <0,1,0> } finish { phong 0.9 } }
+      texture { pigment { gradient x colour_map { [0 rgb 0] [1 rgb <0,0,1>] } scale 0.1 } }
+      texture { pigment { color rgb <1,1,0> } }
+      texture { pigment { color rgbt <1,0,1,0.6> } }
+    } scale <3,0.5,1> translate <-1,0,0> } }
+polygon { 4, <-1,1.1,0.1>, <2,1.1,0.1>, <2,1.6,0.1>, <-1,1.6,0.1>
+  texture { material_map { png "desk-alpha.png" once
+      texture { pigment { color rgb <1,0.5,0> } }
+      texture { pigment { color rgb <0,0.5,1> } }
+      texture { pigment { color rgb <0.5,1,0> } }
+    } scale <3,0.5,1> translate <-1,1.1,0> } }
+EOF
+# fade.png and fade.exr: a picture of alpha from 1 to 0.05 across, and a
+# band of 0.3 over it, with +UA (PNG straight, EXR premultiplied).
+cat >"$work/fade.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <0.5, 0.5, -1> look_at <0.5, 0.5, 0> right x up y }
+polygon { 4, <0,0>, <1,0>, <1,1>, <0,1>
+  pigment { gradient x colour_map { [0 rgbt <1,0.2,0.1,0>] [0.5 rgbt <0.2,0.9,0.3,0.5>] [1 rgbt <0.1,0.3,1,0.95>] } }
+  finish { ambient 1 diffuse 0 } }
+polygon { 4, <0,0>, <1,0>, <1,0.3>, <0,0.3> pigment { rgbt <1,1,1,0.7> } finish { ambient 1 diffuse 0 } translate -0.01*z }
+EOF
+run fade.pov +W16 +H12 +UA +FN +Ofade
+run fade.pov +W16 +H12 +UA -o fade.exr
+cat >"$work/premul.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0.5, 1.0, -2.6> look_at <0.5, 0.5, 0> }
+light_source { <2, 5, -4> color rgb 1 }
+plane { y, -0.01 pigment { checker color rgb <0.9, 0.8, 0.7> color rgb 0.3 scale 0.25 } }
+polygon { 4, <-1,0,0>, <0,0,0>, <0,1,0>, <-1,1,0> pigment { image_map { png "fade.png" premultiplied 1 interpolate 2 } translate <-1,0,0> } }
+polygon { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> pigment { image_map { exr "fade.exr" interpolate 2 } } }
+polygon { 4, <1,0,0>, <2,0,0>, <2,1,0>, <1,1,0> pigment { image_map { exr "fade.exr" premultiplied 0 } translate <1,0,0> } }
+polygon { 4, <-1,1.1,0>, <0.4,1.1,0>, <0.4,1.8,0>, <-1,1.8,0> pigment { rgb 0.8 } normal { bump_map { png "p8.png" use_index bump_size 0.3 } scale <1.4,0.7,1> translate <-1,1.1,0> } }
+polygon { 4, <0.6,1.1,0>, <2,1.1,0>, <2,1.8,0>, <0.6,1.8,0> pigment { rgb 0.8 } normal { bump_map { png "fade.png" premultiplied 1 interpolate 2 bump_size 2 } scale <1.4,0.7,1> translate <0.6,1.1,0> } }
+EOF
+# Interpolated indices, seen flat on (a perspective view puts hit points a
+# rounding apart from POV-Ray's, and an interpolated index truncated near
+# a whole number can then name its neighbour): 6 textures, interpolate 2
+# and 4, and 3 textures (indices past them wrap, as POV-Ray's modulo does).
+cat >"$work/mmflat.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <1, 0.5, -1> look_at <1, 0.5, 0> right 2*x up y }
+#macro Textures(N)
+  texture { pigment { color rgb <1,0,0> } finish { ambient 1 diffuse 0 } }
+  texture { pigment { color rgb <0,1,0> } finish { ambient 1 diffuse 0 } }
+  texture { pigment { color rgb <0,0,1> } finish { ambient 1 diffuse 0 } }
+  #if (N > 3)
+  texture { pigment { color rgb <1,1,0> } finish { ambient 1 diffuse 0 } }
+  texture { pigment { color rgb <0,1,1> } finish { ambient 1 diffuse 0 } }
+  texture { pigment { color rgb <1,0,1> } finish { ambient 1 diffuse 0 } }
+  #end
+#end
+polygon { 4, <0,0.5>, <1,0.5>, <1,1>, <0,1> texture { material_map { png "p8.png" interpolate 2 Textures(6) } } }
+polygon { 4, <1,0.5>, <2,0.5>, <2,1>, <1,1> texture { material_map { png "p8.png" interpolate 4 Textures(6) } translate x } }
+polygon { 4, <0,0>, <1,0>, <1,0.5>, <0,0.5> texture { material_map { png "p8.png" interpolate 2 Textures(3) } } }
+polygon { 4, <1,0>, <2,0>, <2,0.5>, <1,0.5> texture { material_map { png "p8.png" Textures(3) } translate x } }
+EOF
+for scene in palette premul mmflat; do
+    run "$scene.pov" +W160 +H120 --verify-shadows --stats-json "$scene.json" -o "$scene.png"
+    check "$scene.pov: renders, 0 disagreements with the shadow ray" \
+        test "$status $(grep -o '"disagreements": [0-9]*' "$work/$scene.json" | head -n 1 | grep -o '[0-9]*$')" = "0 0"
+done
+if [ -n "$povray" ]; then
+    for scene in palette premul mmflat; do
+        (cd "$work" && "$povray" "+I$scene.pov" +W160 +H120 "+O$scene-pov.png" -D -GA +WT1 >/dev/null 2>&1)
+    done
+    check "palette pictures (per-entry filter and transmit, filter all, a tRNS entry, 8 and 4 bits, BMP) and material_map (by index, by red, once): as POV-Ray renders them (RMSE 0 measured)" \
+        "$hstrace" compare "$work/palette-pov.png" "$work/palette.png" --max-rmse 1e-5 --max-share 0
+    check "premultiplied 1 (PNG), an EXR's own premultiplied alpha and premultiplied 0, interpolated; bump_map use_index: as POV-Ray (RMSE 0 measured)" \
+        "$hstrace" compare "$work/premul-pov.png" "$work/premul.png" --max-rmse 1e-5 --max-share 0
+    check "material_map's interpolated indices and its wrap past the textures, seen flat on: pixel for pixel" \
+        "$hstrace" compare "$work/mmflat-pov.png" "$work/mmflat.png" --max-error 0
+    # Each reading must matter: the same scenes without it are off POV-Ray.
+    while IFS='|' read -r scene from to what; do
+        sed "s/$from/$to/" "$work/$scene.pov" >"$work/$scene-off.pov"
+        run "$scene-off.pov" +W160 +H120 -o "$scene-off.png"
+        check_fails "$what: without it, the image is off POV-Ray's" \
+            "$hstrace" compare "$work/$scene-pov.png" "$work/$scene-off.png" --max-rmse 1e-5 --max-share 0
+    done <<'OFF'
+palette|filter 2, 0.6 transmit 3, 0.5|filter all 0.6|one entry's filter and transmit
+palette|texture { pigment { color rgb <0,1,0> } finish { phong 0.9 } }||entries by index (1 and 4 share their colour)
+premul|premultiplied 1 interpolate 2 }|interpolate 2 }|premultiplied 1
+premul|premultiplied 0 ||premultiplied 0
+premul|use_index ||use_index
+OFF
+else
+    skip "palette pictures and material_map: as POV-Ray renders them" "povray not installed"
+    skip "premultiplied and use_index: as POV-Ray" "povray not installed"
+    skip "material_map's interpolated indices" "povray not installed"
+fi
+for method in conventional cache volume hst; do
+    run palette.pov +W160 +H120 --shadows "$method" --volumes always -o "palette-$method.png"
+    check "palette.pov: --shadows $method gives the same image" "$hstrace" compare "$work/palette.png" "$work/palette-$method.png" --max-error 0
+done
+
+# --- declared maps: color_map, pigment_map, texture_map, normal_map, slope_map ----
+cat >"$work/maps.pov" <<'EOF'
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0,1.2,-4> look_at <0,0.3,0> }
+light_source { <-2,5,-4> color rgb 1 }
+#declare CM = color_map { [0 rgb <1,0,0>] [0.5 rgb <1,1,0>] [1 rgb <0,0,1>] }
+#declare PM = pigment_map { [0 rgb <0.2,0.8,0.2>] [1 rgb <0.1,0.1,0.6>] }
+#declare TM = texture_map { [0 pigment { rgb <1,0.5,0> } finish { phong 0.8 }] [1 pigment { gradient y color_map { CM } } ] }
+#declare NM = normal_map { [0 bumps 0.5 scale 0.1] [1 dents 0.8 scale 0.2] }
+#declare SM = slope_map { [0 <0,1>] [0.5 <1,0>] [1 <0,-1>] }
+polygon { 4, <-3,0,-2>,<3,0,-2>,<3,0,4>,<-3,0,4> pigment { gradient x color_map { CM } scale 3 } }
+polygon { 4, <-2,0,1>,<-0.1,0,1>,<-0.1,1.5,1>,<-2,1.5,1> pigment { gradient y pigment_map { PM } } }
+polygon { 4, <0.1,0,1>,<2,0,1>,<2,1.5,1>,<0.1,1.5,1> texture { gradient x texture_map { TM } scale 2 } }
+triangle { <-1.5,0.1,-1>,<0,0.1,-1.2>,<-0.7,1.2,-0.8> pigment { rgb 0.8 } normal { gradient x normal_map { NM } } }
+triangle { <0,0.1,-1.2>,<1.5,0.1,-1>,<0.7,1.2,-0.8> pigment { rgb 0.8 } normal { gradient y 1 slope_map { SM } scale 0.3 } }
+EOF
+run maps.pov +W160 +H120 -o maps.png
+check "declared color_map, pigment_map, texture_map, normal_map and slope_map, used in braces: renders" exited 0
+if [ -n "$povray" ]; then
+    (cd "$work" && "$povray" +Imaps.pov +W160 +H120 +Omaps-pov.png -D -GA +WT1 >/dev/null 2>&1)
+    check "... as POV-Ray renders them (RMSE 0 measured)" \
+        "$hstrace" compare "$work/maps-pov.png" "$work/maps.png" --max-rmse 1e-5 --max-share 0
+else
+    skip "... as POV-Ray renders them" "povray not installed"
+fi
+
 # --- texture_map, as Arbaro's trees and other exporters write it ------------------
 # Patterned textures: a gradient floor of three entries with their own
 # finishes (phong, reflection) and a declared and a patterned entry; bozo
@@ -404,7 +564,7 @@ for method in conventional cache volume hst; do
 done
 # Mistakes, and what hstrace does not do of texture_map: each names its construct.
 while IFS='|' read -r tex message; do
-    printf '#declare T = texture { pigment { color rgb 1 } }\ntriangle { <0,0,0>, <1,0,0>, <0,1,0> %s }\n' "$tex" >"$work/badtex.pov"
+    printf '#declare T = texture { pigment { color rgb 1 } } #declare C = color_map { [0 rgb 1] }\ntriangle { <0,0,0>, <1,0,0>, <0,1,0> %s }\n' "$tex" >"$work/badtex.pov"
     rm -f "$work/badtex.png"
     run badtex.pov +W8 +H6 -o badtex.png
     check "$tex: status 2, FILE:LINE:COLUMN ($message), no image" \
@@ -419,7 +579,12 @@ texture { gradient x texture_map { [0 texture { T }] } }|expected the items of a
 texture { gradient x texture_map { [0 rgb 1] } }|expected a texture's items
 texture { gradient x texture_map { [0 T] } finish { phong 1 } }|has no finish of its own
 texture { gradient x texture_map { [0 T] } color_map { [0 rgb 1] } }|color_map can only be used in a pigment
-texture { material_map { png "x.png" texture { T } } }|'material_map (textures chosen by an image's colours)' is not supported
+texture { material_map { png "p8.png" } }|a material_map needs at least one texture
+texture { pigment { rgb 1 } material_map { png "p8.png" texture { T } } }|material_map must come first in its texture
+texture { material_map { png "p8.png" texture { T } once } }|expected texture or '}' in 'material_map', found 'once'
+texture { material_map { png "nothere.png" texture { T } } }|cannot find the image 'nothere.png'
+texture { material_map { png "p8-truncated.png" texture { T } } }|material_map: cannot read .*p8-truncated.png.: PNG data is truncated
+texture { gradient x texture_map { C } }|'C' is a color_map, not a texture_map
 texture { average texture_map { [1 T] } }|'texture_map (a texture patterned by average)' is not supported
 texture { gradient x texture_map { [0 T] } } texture { T }|'texture_map in layered textures' is not supported
 texture { gradient x texture_map { [0 T] } } pigment { rgb 1 }|'pigment, normal or finish over a texture_map (a layer on it)' is not supported
@@ -429,8 +594,8 @@ printf '#declare T = texture { gradient x texture_map { [0 pigment { rgb 1 }] } 
 run badtex.pov +W8 +H6 -o badtex.png
 check "a texture_map texture identifier takes only transforms after it: status 2, FILE:LINE:COLUMN" \
     exited 2 "^badtex.pov:2:[0-9]*: expected a transform or the end of the texture after T"
-printf '#declare M = texture_map { [0 pigment { rgb 1 }] }\ntriangle { <0,0,0>, <1,0,0>, <0,1,0> texture { gradient x texture_map { M } } }\n' >"$work/badtex.pov"
+printf '#declare M = material_map { png "p8.png" texture { } }\n' >"$work/badtex.pov"
 run badtex.pov +W8 +H6 -o badtex.png
-check "a declared texture_map, used: status 2, FILE:LINE:COLUMN naming texture_map identifiers" \
-    exited 2 "^badtex.pov:2:[0-9]*: 'texture_map identifier (a #declare of a texture_map)' is not supported"
+check "a material_map declared on its own (POV-Ray has no such identifier): status 2, FILE:LINE:COLUMN" \
+    exited 2 "^badtex.pov:1:[0-9]*: a material_map cannot be declared on its own"
 tap_end

@@ -315,7 +315,8 @@ static void test_unsupported(void)
     expect_error("rainbow { angle 42 width 5 distance 100 }", 1, 1, "'rainbow' is not supported by hstrace", "rainbow");
     expect_error("box { 0, 1 pigment { image_map { png \"x.png\" } } }", 1, 22, "'image_map' is not supported",
                  "image_map");
-    expect_error("box { 0, 1 texture { material_map { png \"x.png\" } } }", 1, 22, "'material_map (textures chosen by an image's colours)' is not supported", "material_map");
+    expect_error("box { 0, 1 texture { material_map { png \"x.png\" } } }", 1, 22, "'material_map' is not supported",
+                 "material_map without the image layer");
     expect_error("#declare S = sky_sphere { pigment { image_map { png \"x.png\" } } }\nsky_sphere { S }", 2, 14,
                  "'image_map' is not supported by hstrace (declared at", "a declared sky_sphere using image_map");
     /* POV-Ray ignores jitter without an area_light, but refuses circular */

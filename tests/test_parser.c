@@ -203,9 +203,16 @@ static void test_directives(void)
               "box { 0, 1 texture { T_Gold_1A } }\n");
     tap_ok(s && s->nobjects == 1, "textures, metals, shapes, woods, glass, stones .inc parse");
     scene_free(s);
-    expect_error("#include \"textures.inc\"\nbox { 0, 1 texture { Jade } }", 2, 22,
-                 "is not supported by hstrace (declared at /usr/share/povray-3.7/include/textures.inc:",
-                 "a pattern texture from textures.inc used in the scene");
+    /* textures.inc's Jade is a pigment (marble with a declared color_map):
+     * POV-Ray takes a pigment identifier in a texture, as the texture's
+     * pigment; its color_map identifier is no texture */
+    s = parse("#include \"textures.inc\"\nbox { 0, 1 texture { Jade } }");
+    tap_ok(s && s->nobjects == 1 && s->objects[0]->texture && s->objects[0]->texture->pigment.kind == PIGMENT_MARBLE &&
+               s->objects[0]->texture->pigment.nmap == 4,
+           "texture { Jade }: textures.inc's pigment (marble, its declared 4-entry color_map) as the texture's");
+    scene_free(s);
+    expect_error("#include \"textures.inc\"\nbox { 0, 1 texture { Jade_Map } }", 2, 22,
+                 "'Jade_Map' cannot be used in a texture", "a color_map identifier in a texture");
 }
 
 static void test_objects(void)

@@ -80,9 +80,16 @@ Colour colour_map_at(const ColourMapEntry *map, int n, double value)
 
 int pigment_is_opaque(const Pigment *pig)
 {
-    if (pig->kind == PIGMENT_IMAGE_MAP) /* `once` shows nothing (clear) outside the picture */
-        return !pig->image_once && !pig->image->has_alpha && pig->image_filter_all == 0.0 &&
-               pig->image_transmit_all == 0.0;
+    if (pig->kind == PIGMENT_IMAGE_MAP) { /* `once` shows nothing (clear) outside the picture */
+        const SceneImage *im = pig->image;
+        if (im->npalette > 0) { /* the entries' own filter and transmit are all there is */
+            for (int i = 0; i < im->npalette; i++)
+                if (im->palette[i][3] != 0.0f || im->palette[i][4] != 0.0f)
+                    return 0;
+            return !pig->image_once;
+        }
+        return !pig->image_once && !im->has_alpha && pig->image_filter_all == 0.0 && pig->image_transmit_all == 0.0;
+    }
     if (pig->kind == PIGMENT_SOLID)
         return pig->colour.filter == 0.0 && pig->colour.transmit == 0.0;
     for (int i = 0; i < pig->nmap; i++)

@@ -86,7 +86,31 @@ typedef struct {
     const float *rgba;
     int has_alpha;    /* some pixel's alpha is below 1 */
     const char *path; /* as found through the include folders */
+    /* rgba's colours are premultiplied by alpha: POV-Ray then interpolates
+     * them so and divides by alpha after (imageutil.cpp's image_colour_at) */
+    int premultiplied;
+    /* A colour-mapped picture (POV-Ray's IsIndexed: a PNG or BMP of a
+     * palette): each pixel's entry, and the entries as POV-Ray's colour map
+     * holds them, colour, filter and transmit (1 - alpha, or what `filter
+     * N, F`, `transmit all T` ... set). npalette 0: not colour-mapped,
+     * rgba alone counts. */
+    const unsigned char *index;
+    int npalette;
+    float (*palette)[5];
 } SceneImage;
+
+/* What a picture loader hands the parser (ParseOptions.load_image): the
+ * colours as the file stores them, decoded to linear light, straight or
+ * premultiplied by alpha as `premultiplied` says; a colour-mapped one's
+ * palette (straight RGBA) and indices. rgba and index are malloc'd. */
+typedef struct {
+    int width, height;
+    float *rgba;
+    int premultiplied;
+    int ncolours;
+    float palette[256][4];
+    unsigned char *index;
+} LoadedPicture;
 
 /* Turbulence of a pattern (POV-Ray's TURB warp): `turbulence` written in
  * the pigment (classic: marble, wood, agate and the spirals also add its
@@ -139,6 +163,7 @@ typedef struct {
     const SceneImage *image;
     int image_once, image_interpolate;
     int image_map_type;   /* POV-Ray's map_type: 0 planar, 1 spherical, 2 cylindrical, 5 torus */
+    int image_use_index;  /* bump_map's use_index: a colour-mapped picture's entries are its heights */
     double image_filter_all, image_transmit_all;
     const ApproxNote *approx;
 } Pigment;
@@ -252,6 +277,11 @@ typedef struct SceneTexture {
     int nmap;
     const TextureMapEntry *map;
     int map_depth;            /* levels of texture_maps from this one down: 0 for a plain texture */
+    /* POV-Ray's material_map: `pigment` is its picture (PIGMENT_IMAGE_MAP,
+     * with once, interpolate and map_type), and a point shows the one entry
+     * the picture's palette entry (or red times 255) there names, unblended
+     * (imageutil.cpp's material_map); the entries' values are 0, 1, ... */
+    int material_map;
 } SceneTexture;
 
 typedef enum {

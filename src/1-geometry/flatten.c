@@ -162,6 +162,7 @@ static int build_map(Builder *b, const SceneTexture *tex)
     m->count = n;
     m->opaque = opaque;
     m->uses_uv = uses_uv;
+    m->material_map = tex->material_map;
     for (int i = 0; i < n; i++) {
         const SceneTexture *e = tex->map[i].texture;
         MapEntry *me = &w->map_entries[w->nmap_entries++];

@@ -34,6 +34,7 @@ typedef struct {
     int first, count;
     int opaque;           /* every texture it can show is opaque */
     int uses_uv;          /* some pattern of it, or of its maps, is uv-mapped */
+    int material_map;     /* a material_map: its pattern is a picture choosing one entry */
 } TextureMap;
 
 /* Surface properties shared by all polygons of one object. */

@@ -142,7 +142,8 @@ static Vec3 bump_map(const SceneNormal *n, Vec3 p, Vec3 normal)
     double x, y;
     if (!image_map_position(pig, p, &x, &y))
         return normal;
-    Colour c1 = image_colour_at(pig, x, y);
+    int i1, i2, i3; /* palette entries (-1: none) */
+    Colour c1 = image_colour_index_at(pig, x, y, &i1, 1);
     x -= 1.0;
     y += 1.0;
     if (x < 0.0)
@@ -153,17 +154,23 @@ static Vec3 bump_map(const SceneNormal *n, Vec3 p, Vec3 normal)
         y += ih;
     else if (y >= ih)
         y -= ih;
-    Colour c2 = image_colour_at(pig, x, y);
+    Colour c2 = image_colour_index_at(pig, x, y, &i2, 1);
     x += 2.0;
     if (x < 0.0)
         x += iw;
     else if (x >= iw)
         x -= iw;
-    Colour c3 = image_colour_at(pig, x, y);
+    Colour c3 = image_colour_index_at(pig, x, y, &i3, 1);
     const float amount = (float)n->amount;
     Vec3 p1 = v3(0.0, (double)(amount * greyscale(c1)), 0.0);
     Vec3 p2 = v3(-1.0, (double)(amount * greyscale(c2)), 1.0);
     Vec3 p3 = v3(1.0, (double)(amount * greyscale(c3)), 1.0);
+    if (pig->image_use_index && i1 != -1 && i2 != -1 && i3 != -1) {
+        /* use_index on a colour-mapped picture: the entries are the heights */
+        p1.y = n->amount * i1;
+        p2.y = n->amount * i2;
+        p3.y = n->amount * i3;
+    }
     Vec3 bump = v3_normalize(v3_cross(v3_sub(p3, p2), v3_sub(p1, p2)));
 
     Vec3 yp = normal;

@@ -264,8 +264,11 @@ static double pov_wrap(double v, double limit)
 
 /* A pixel's colour (no_interpolation), at a place already on the picture
  * (or, with once, clamped to its edge), as float colour and filter and
- * transmit, POV-Ray's COLC. */
-static void image_pixel(const Pigment *pig, double xc, double yc, float out[5])
+ * transmit, POV-Ray's COLC, and its palette entry (-1: the picture is not
+ * colour-mapped). A colour-mapped picture shows its entry's colour, filter
+ * and transmit; another adds `filter all` and `transmit all` to its own
+ * (transmit 1 - alpha). */
+static int image_pixel(const Pigment *pig, double xc, double yc, float out[5])
 {
     const SceneImage *im = pig->image;
     int ix, iy;
@@ -276,12 +279,20 @@ static void image_pixel(const Pigment *pig, double xc, double yc, float out[5])
         ix = (int)pov_wrap(xc, (double)im->width);
         iy = (int)pov_wrap(yc, (double)im->height);
     }
-    const float *px = im->rgba + ((size_t)iy * (size_t)im->width + (size_t)ix) * 4;
+    const size_t at = (size_t)iy * (size_t)im->width + (size_t)ix;
+    if (im->npalette > 0) {
+        const int entry = im->index[at];
+        for (int k = 0; k < 5; k++)
+            out[k] = im->palette[entry][k];
+        return entry;
+    }
+    const float *px = im->rgba + at * 4;
     out[0] = px[0];
     out[1] = px[1];
     out[2] = px[2];
     out[3] = 0.0f + (float)pig->image_filter_all;
     out[4] = (1.0f - px[3]) + (float)pig->image_transmit_all; /* transmit all adds to the alpha channel's */
+    return -1;
 }
 
 /* The angle of (x, z) from the x axis about y, in [0, 2 pi), as POV-Ray's
@@ -378,21 +389,24 @@ static Colour image_map_at(const Pigment *pig, Vec3 p)
     return image_colour_at(pig, xc, yc);
 }
 
-Colour image_colour_at(const Pigment *pig, double xc, double yc)
+Colour image_colour_index_at(const Pigment *pig, double xc, double yc, int *index, int as_stored)
 {
     float c[5];
     if (pig->image_interpolate == 0) {
-        image_pixel(pig, xc, yc, c);
+        *index = image_pixel(pig, xc, yc, c);
     } else {
-        /* Interp: the four pixels around, weighed in double */
+        /* Interp: the four pixels around, weighed in double, their palette
+         * entries too (as POV-Ray weighs them, -1 for a picture that has
+         * none, then truncates) */
         xc += 0.5;
         yc += 0.5;
         int ix = (int)xc, iy = (int)yc;
         float corner[4][5];
-        image_pixel(pig, (double)ix, (double)iy, corner[0]);
-        image_pixel(pig, (double)ix - 1, (double)iy, corner[1]);
-        image_pixel(pig, (double)ix, (double)iy - 1, corner[2]);
-        image_pixel(pig, (double)ix - 1, (double)iy - 1, corner[3]);
+        int entry[4];
+        entry[0] = image_pixel(pig, (double)ix, (double)iy, corner[0]);
+        entry[1] = image_pixel(pig, (double)ix - 1, (double)iy, corner[1]);
+        entry[2] = image_pixel(pig, (double)ix, (double)iy - 1, corner[2]);
+        entry[3] = image_pixel(pig, (double)ix - 1, (double)iy - 1, corner[3]);
         double f[4], a = xc - (int)xc, b = yc - (int)yc;
         if (pig->image_interpolate == 2) { /* bilinear */
             f[0] = a * b;
@@ -408,14 +422,50 @@ Colour image_colour_at(const Pigment *pig, double xc, double yc)
             for (int i = 0; i < 4; i++)
                 f[i] = wt[i] / sum;
         }
+        double weighed_index = 0.0;
         for (int k = 0; k < 5; k++) {
             double v = 0.0;
             for (int i = 0; i < 4; i++)
                 v += (double)corner[i][k] * f[i];
             c[k] = (float)v;
         }
+        for (int i = 0; i < 4; i++)
+            weighed_index += entry[i] * f[i];
+        *index = (int)weighed_index;
+    }
+    if (pig->image->premultiplied && !as_stored) {
+        /* interpolated as stored; the colour un-premultiplied after, by the
+         * alpha its transmit leaves (image_colour_at) */
+        float alpha = 1.0f - c[4];
+        if (alpha > 1e-10f) {
+            c[0] /= alpha;
+            c[1] /= alpha;
+            c[2] /= alpha;
+        }
     }
     return (Colour){ c[0], c[1], c[2], c[3], c[4] };
+}
+
+Colour image_colour_at(const Pigment *pig, double xc, double yc)
+{
+    int index;
+    return image_colour_index_at(pig, xc, yc, &index, 0);
+}
+
+int material_map_number(const Pigment *pig, Vec3 p, int count)
+{
+    double xc, yc;
+    int number = 0; /* off the picture: the first texture */
+    if (image_map_position(pig, p, &xc, &yc)) {
+        int index;
+        Colour c = image_colour_index_at(pig, xc, yc, &index, 1);
+        number = index == -1 ? (int)(c.r * 255.0) : index;
+    }
+    if (number > count)
+        number %= count;
+    /* POV-Ray walks its list that far, stopping at the last texture (and
+     * never moving for a negative number) */
+    return number < 0 ? 0 : number > count - 1 ? count - 1 : number;
 }
 
 Colour pigment_at(const Pigment *pig, Vec3 p)
@@ -519,14 +569,18 @@ static int entry_textures(const World *w, const MapEntry *e, Vec3 p, int polygon
 
 /* A texture_map of pattern `pattern` at p (in its pattern space, before
  * its turbulence): the entries around the pattern's value there (POV-Ray's
- * Search_Blend_Map), weighed as ComputeOneTextureColour blends them. Its
- * entries see the point as its turbulence leaves it (POV-Ray's tpoint). */
+ * Search_Blend_Map), weighed as ComputeOneTextureColour blends them; a
+ * material_map's one entry. Its entries see the point as its turbulence
+ * leaves it (POV-Ray's tpoint). */
 static int map_textures(const World *w, int map, const Pigment *pattern, Vec3 p, int polygon, Vec3 world_point,
                         double weight, const Transform *chain, const NormalAsk *ask, SurfaceTexture *out, int n)
 {
     const TextureMap *tm = &w->maps[map];
     const MapEntry *e = &w->map_entries[tm->first];
     Vec3 tp = warp_point(pattern, p);
+    if (tm->material_map) /* one entry, by the picture there (ComputeOneTextureColour's BITMAP_PATTERN) */
+        return entry_textures(w, &e[material_map_number(pattern, tp, tm->count)], tp, polygon, world_point, weight,
+                              chain, ask, out, n);
     double v = pattern_value_warped(pattern, tp, NOISE_RANGE_CORRECTED);
     int last = tm->count - 1, cur = 0, prev = 0;
     if (v >= e[last].value) {

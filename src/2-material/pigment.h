@@ -28,6 +28,15 @@ double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator);
 int image_map_position(const Pigment *pig, Vec3 p, double *x, double *y);
 /* Its colour there, interpolated as the pigment says. */
 Colour image_colour_at(const Pigment *pig, double x, double y);
+/* The same, and the palette entry there (interpolated and truncated as
+ * POV-Ray does; -1 for a picture that is not colour-mapped). as_stored:
+ * a premultiplied picture's colour left premultiplied, as POV-Ray hands
+ * it to bump_map and material_map (image_map's colours are divided). */
+Colour image_colour_index_at(const Pigment *pig, double x, double y, int *index, int as_stored);
+/* A material_map's texture at point p of its pattern space, 0 to count - 1:
+ * the palette entry there, or the red of a picture without one times 255
+ * (POV-Ray's material_map, imageutil.cpp). */
+int material_map_number(const Pigment *pig, Vec3 p, int count);
 
 /* The colour at a point in pattern space (solid pigments: their colour). */
 Colour pigment_at(const Pigment *pig, Vec3 p);

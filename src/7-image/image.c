@@ -1,5 +1,6 @@
 /* Format detection, and the atomic write / read dispatch. */
 #include "image.h"
+#include "scene.h"
 
 #include <errno.h>
 #include <math.h>
@@ -198,6 +199,11 @@ static int open_image(const char *path, char *err, int errlen)
 
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen)
 {
+    return image_read_ex(path, img, display_gamma, NULL, err, errlen);
+}
+
+int image_read_ex(const char *path, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen)
+{
     char why[256];
     ImageFormat fmt;
     int fd, rc;
@@ -207,6 +213,11 @@ int image_read(const char *path, Image *img, double display_gamma, char *err, in
     if (img != NULL) {
         img->width = img->height = 0;
         img->rgba = NULL;
+    }
+    if (ex != NULL) {
+        ex->premultiplied = !ex->keep_straight;
+        ex->ncolours = 0;
+        ex->index = NULL;
     }
     if (path == NULL || img == NULL) {
         image_set_error(err, errlen, "cannot read an image: no file name given");
@@ -223,6 +234,8 @@ int image_read(const char *path, Image *img, double display_gamma, char *err, in
     if (fmt == IMAGE_FORMAT_EXR) {
         rc = image_exr_read(fd, img, why, (int)sizeof why);
         close(fd);
+        if (ex != NULL)
+            ex->premultiplied = 1; /* as stored */
     } else if (fmt != IMAGE_FORMAT_UNKNOWN) {
         FILE *fp = fdopen(fd, "rb");
         if (fp == NULL) {
@@ -231,9 +244,9 @@ int image_read(const char *path, Image *img, double display_gamma, char *err, in
             return -1;
         }
         switch (fmt) {
-        case IMAGE_FORMAT_PNG: rc = image_png_read(fp, img, display_gamma, why, (int)sizeof why); break;
-        case IMAGE_FORMAT_TGA: rc = image_tga_read(fp, img, display_gamma, why, (int)sizeof why); break;
-        case IMAGE_FORMAT_BMP: rc = image_bmp_read(fp, img, display_gamma, why, (int)sizeof why); break;
+        case IMAGE_FORMAT_PNG: rc = image_png_read(fp, img, display_gamma, ex, why, (int)sizeof why); break;
+        case IMAGE_FORMAT_TGA: rc = image_tga_read(fp, img, display_gamma, ex, why, (int)sizeof why); break;
+        case IMAGE_FORMAT_BMP: rc = image_bmp_read(fp, img, display_gamma, ex, why, (int)sizeof why); break;
         case IMAGE_FORMAT_JPEG: rc = image_jpeg_read(fp, img, display_gamma, why, (int)sizeof why); break;
         case IMAGE_FORMAT_HDR: rc = image_hdr_read(fp, img, why, (int)sizeof why); break;
         default: rc = image_ppm_read(fp, img, display_gamma, why, (int)sizeof why); break;
@@ -246,6 +259,11 @@ int image_read(const char *path, Image *img, double display_gamma, char *err, in
     }
     if (rc != 0) {
         image_free(img);
+        if (ex != NULL) {
+            free(ex->index);
+            ex->index = NULL;
+            ex->ncolours = 0;
+        }
         image_set_error(err, errlen, "cannot read '%s': %s", path, why[0] ? why : "unreadable image");
         return -1;
     }
@@ -287,24 +305,26 @@ int image_read_exr_file(const char *path, ImageExrFile *f, int y0, int y1, char 
     return rc;
 }
 
-int image_read_for_scene(void *user, const char *path, double decoding_gamma, int *width, int *height, float **rgba,
-                         char *err, int errlen)
+int image_read_for_scene(void *user, const char *path, double decoding_gamma, int premultiplied,
+                         LoadedPicture *out, char *err, int errlen)
 {
     (void)user;
     Image img;
-    if (image_read(path, &img, decoding_gamma, err, errlen))
+    ImageReadExtras ex;
+    memset(&ex, 0, sizeof ex);
+    ex.keep_straight = 1;
+    memset(out, 0, sizeof *out);
+    if (image_read_ex(path, &img, decoding_gamma, &ex, err, errlen))
         return -1;
-    size_t n = (size_t)img.width * (size_t)img.height;
-    for (size_t i = 0; i < n; i++) { /* the image layer holds premultiplied */
-        float *px = img.rgba + 4 * i;
-        if (px[3] > 0.0f && px[3] < 1.0f) {
-            px[0] /= px[3];
-            px[1] /= px[3];
-            px[2] /= px[3];
-        }
-    }
-    *width = img.width;
-    *height = img.height;
-    *rgba = img.rgba; /* the parser frees it */
+    out->width = img.width;
+    out->height = img.height;
+    out->rgba = img.rgba; /* the parser frees it, and the index */
+    /* POV-Ray's premultiplyOverride: the file's colours read the other way */
+    out->premultiplied = premultiplied < 0 ? ex.premultiplied : premultiplied;
+    out->ncolours = ex.ncolours;
+    out->index = ex.index;
+    for (int i = 0; i < ex.ncolours; i++)
+        for (int c = 0; c < 4; c++)
+            out->palette[i][c] = ex.palette[i][c];
     return 0;
 }

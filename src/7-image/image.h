@@ -6,6 +6,7 @@
 
 #include "colour.h"
 #include "image_buffer.h"
+#include "scene.h"
 
 typedef enum {
     IMAGE_FORMAT_UNKNOWN, IMAGE_FORMAT_EXR, IMAGE_FORMAT_PNG, IMAGE_FORMAT_PPM,
@@ -80,10 +81,31 @@ int image_write(const char *path, const Image *img, const ImageWriteOptions *opt
 #define IMAGE_GAMMA_AS_POVRAY (-1.0)
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen);
 
-/* The parser's ParseOptions.load_image: a picture of image_map or bump_map
- * read as image_read reads it and handed over as straight (not
- * premultiplied) RGBA, *rgba malloc'd; `user` is unused. */
-int image_read_for_scene(void *user, const char *path, double decoding_gamma, int *width, int *height, float **rgba,
+/* What image_read_ex can say besides the pixels. */
+typedef struct {
+    /* In: leave the colours of the formats with straight alpha (PNG,
+     * Targa, BMP) as the file has them, not premultiplied. */
+    int keep_straight;
+    /* Out: the colours returned are premultiplied by alpha (with
+     * keep_straight: only an EXR's, as stored; otherwise always). */
+    int premultiplied;
+    /* Out: a colour-mapped picture (a PNG or BMP of a palette, as POV-Ray
+     * 3.7 keeps them indexed): its entries' colours, decoded as the pixels
+     * are, and straight alpha; each pixel's entry (width*height, row 0 at
+     * the top, malloc'd). ncolours 0, index NULL: not colour-mapped. */
+    int ncolours;
+    float palette[256][4];
+    unsigned char *index;
+} ImageReadExtras;
+
+/* image_read with the extras above (NULL: image_read itself). */
+int image_read_ex(const char *path, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen);
+/* The parser's ParseOptions.load_image (scene.h's LoadedPicture): a
+ * picture of image_map, bump_map or material_map with its colours as the
+ * file stores them, and POV-Ray 3.7's reading of them (premultiplied for
+ * EXR, straight for the others, unless `premultiplied` says otherwise);
+ * `user` is unused. */
+int image_read_for_scene(void *user, const char *path, double decoding_gamma, int premultiplied, LoadedPicture *out,
                          char *err, int errlen);
 
 /* Reads the named channels of a scanline EXR (part 0) as float planes of

@@ -78,7 +78,7 @@ fail:
     return -1;
 }
 
-int image_bmp_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen)
+int image_bmp_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen)
 {
     unsigned char h[BMP_FILE_HEADER + BMP_INFO_HEADER];
     unsigned char palette[256][4];
@@ -142,9 +142,13 @@ int image_bmp_read(FILE *fp, Image *img, double display_gamma, char *err, int er
     image_transfer_init(&t, display_gamma);
     lut = image_transfer_decode_table(&t, 255);
     row = malloc(stride);
-    if (lut == NULL || row == NULL || image_alloc(img, (int)w, (int)ht) != 0) {
+    /* 8 bits: kept indexed for whoever asks (POV-Ray 3.7 keeps BMP palettes so) */
+    unsigned char *index = bits == 8 && ex != NULL ? malloc((size_t)w * (size_t)ht) : NULL;
+    if (lut == NULL || row == NULL || (bits == 8 && ex != NULL && index == NULL) ||
+        image_alloc(img, (int)w, (int)ht) != 0) {
         free(lut);
         free(row);
+        free(index);
         image_set_error(err, errlen, "out of memory for a %ldx%ld image", w, ht);
         return -1;
     }
@@ -152,13 +156,17 @@ int image_bmp_read(FILE *fp, Image *img, double display_gamma, char *err, int er
         if (fread(row, 1, stride, fp) != stride) {
             free(lut);
             free(row);
+            free(index);
             image_set_error(err, errlen, "BMP pixel data is truncated");
             return -1;
         }
         long y = top ? r : ht - 1 - r;
         float *px = img->rgba + (size_t)y * (size_t)w * 4;
         for (long x = 0; x < w; x++, px += 4) {
-            const unsigned char *b = bits == 8 ? palette[row[x] < ncolours ? row[x] : 0] : row + x * (bits / 8);
+            int entry = bits == 8 && row[x] < ncolours ? row[x] : 0;
+            if (index != NULL)
+                index[(size_t)y * (size_t)w + (size_t)x] = (unsigned char)entry;
+            const unsigned char *b = bits == 8 ? palette[entry] : row + x * (bits / 8);
             px[0] = lut[b[2]];
             px[1] = lut[b[1]];
             px[2] = lut[b[0]];
@@ -169,18 +177,31 @@ int image_bmp_read(FILE *fp, Image *img, double display_gamma, char *err, int er
                 any_alpha = 1;
         }
     }
+    if (index != NULL) {
+        ex->ncolours = ncolours;
+        for (int i = 0; i < ncolours; i++) {
+            ex->palette[i][0] = lut[palette[i][2]];
+            ex->palette[i][1] = lut[palette[i][1]];
+            ex->palette[i][2] = lut[palette[i][0]];
+            ex->palette[i][3] = 1.0f;
+        }
+        ex->index = index;
+    }
     free(lut);
     free(row);
     /* A 32-bit file whose fourth bytes are all zero carries no alpha (BI_RGB
      * calls the byte unused); otherwise alpha is straight, stored
-     * premultiplied. */
+     * premultiplied unless the caller keeps it straight. */
+    int keep = ex != NULL && ex->keep_straight;
     for (size_t i = 0; i < (size_t)w * (size_t)ht; i++) {
         float *px = img->rgba + 4 * i;
         if (bits == 32 && !any_alpha)
             px[3] = 1.0f;
-        px[0] *= px[3];
-        px[1] *= px[3];
-        px[2] *= px[3];
+        if (!keep) {
+            px[0] *= px[3];
+            px[1] *= px[3];
+            px[2] *= px[3];
+        }
     }
     return 0;
 }

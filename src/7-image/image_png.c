@@ -161,9 +161,15 @@ typedef struct {
     long file_bytes; /* what the file holds after its signature; -1: unknown */
     size_t raw_rowbytes; /* a row as stored (before expansion to RGB) */
     char msg[128];
+    /* A palette picture read indexed (ImageReadExtras): its entries as
+     * stored, and the indices, grown with the rows as the image is. */
+    int ncolours;
+    png_color plte[256];
+    unsigned char trns[256];
+    unsigned char *index;
 } PngRead;
 
-int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen)
+int image_png_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen)
 {
     PngErr pe = { err, errlen };
     PngRead *st = calloc(1, sizeof *st);
@@ -217,6 +223,7 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
         png_destroy_read_struct(&st->png, &st->info, NULL);
         free(st->row);
         free(st->lut);
+        free(st->index);
         free(st);
         image_free(img);
         if (err != NULL && errlen > 0 && err[0] == '\0')
@@ -244,15 +251,34 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
     if ((unsigned long)w * h > (unsigned long)IMAGE_MAX_PIXELS)
         png_error(st->png, "image too large");
 
-    /* Everything to 8 or 16-bit RGB or RGBA, 16-bit samples big-endian. */
-    png_set_expand(st->png);
-    png_set_gray_to_rgb(st->png);
+    if (ex != NULL && png_get_color_type(st->png, st->info) == PNG_COLOR_TYPE_PALETTE) {
+        /* Kept indexed, as POV-Ray 3.7 keeps palette PNGs: one byte per
+         * pixel, each the entry it shows, the entries' colours below. */
+        png_colorp plte = NULL;
+        int n = 0;
+        if (!png_get_PLTE(st->png, st->info, &plte, &n) || n < 1 || n > 256)
+            png_error(st->png, "palette PNG without a valid PLTE chunk");
+        st->ncolours = n;
+        memcpy(st->plte, plte, sizeof *plte * (size_t)n);
+        memset(st->trns, 255, sizeof st->trns);
+        png_bytep trns = NULL;
+        int ntrns = 0;
+        if (png_get_valid(st->png, st->info, PNG_INFO_tRNS) && png_get_tRNS(st->png, st->info, &trns, &ntrns, NULL) &&
+            trns != NULL)
+            memcpy(st->trns, trns, (size_t)(ntrns < n ? ntrns : n));
+        png_set_packing(st->png);
+    } else {
+        /* Everything to 8 or 16-bit RGB or RGBA, 16-bit samples big-endian. */
+        png_set_expand(st->png);
+        png_set_gray_to_rgb(st->png);
+    }
     passes = png_set_interlace_handling(st->png);
     png_read_update_info(st->png, st->info);
     depth = png_get_bit_depth(st->png, st->info);
     ctype = png_get_color_type(st->png, st->info);
     nch = png_get_channels(st->png, st->info);
-    if ((depth != 8 && depth != 16) || (nch != 3 && nch != 4) || !(ctype & PNG_COLOR_MASK_COLOR))
+    if (st->ncolours > 0 ? depth != 8 || nch != 1
+                         : (depth != 8 && depth != 16) || (nch != 3 && nch != 4) || !(ctype & PNG_COLOR_MASK_COLOR))
         png_error(st->png, "unsupported PNG layout");
     wide = depth == 16;
     max = wide ? 65535u : 255u;
@@ -307,10 +333,18 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
                 for (png_uint_32 y = 0; y < h; y++)
                     png_read_row(st->png, all + rb * y, NULL);
         }
+        int index_rows = 0;
         for (png_uint_32 y = 0; y < h; y++) {
             const unsigned char *in;
             if (image_grow_rows(img, (int)y, (int)h, &rows_cap))
                 png_error(st->png, "out of memory");
+            if (st->ncolours > 0 && (int)y >= index_rows) { /* the indices grow as the rows do */
+                unsigned char *more = realloc(st->index, (size_t)rows_cap * w);
+                if (more == NULL)
+                    png_error(st->png, "out of memory");
+                st->index = more;
+                index_rows = rows_cap;
+            }
             float *px = img->rgba + (size_t)y * w * 4;
             if (passes > 1) {
                 in = st->row + png_get_rowbytes(st->png, st->info) * y;
@@ -320,15 +354,26 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
             }
             for (png_uint_32 x = 0; x < w; x++, px += 4) {
                 unsigned v[4] = { 0, 0, 0, max };
-                for (int c = 0; c < nch; c++) {
-                    v[c] = wide ? (unsigned)(in[0] << 8 | in[1]) : in[0];
-                    in += wide ? 2 : 1;
+                if (st->ncolours > 0) {
+                    /* an index past the palette (a damaged file) shows entry 0 */
+                    unsigned i = in[x] < st->ncolours ? in[x] : 0;
+                    st->index[(size_t)y * w + x] = (unsigned char)i;
+                    v[0] = st->plte[i].red;
+                    v[1] = st->plte[i].green;
+                    v[2] = st->plte[i].blue;
+                    v[3] = st->trns[i];
+                } else {
+                    for (int c = 0; c < nch; c++) {
+                        v[c] = wide ? (unsigned)(in[0] << 8 | in[1]) : in[0];
+                        in += wide ? 2 : 1;
+                    }
                 }
-                /* PNG alpha is straight; the image holds premultiplied. */
-                float a = (float)v[3] / (float)max;
-                px[0] = st->lut[v[0]] * a;
-                px[1] = st->lut[v[1]] * a;
-                px[2] = st->lut[v[2]] * a;
+                /* PNG alpha is straight; the image holds premultiplied
+                 * unless the caller keeps it straight. */
+                float a = (float)v[3] / (float)max, k = ex != NULL && ex->keep_straight ? 1.0f : a;
+                px[0] = st->lut[v[0]] * k;
+                px[1] = st->lut[v[1]] * k;
+                px[2] = st->lut[v[2]] * k;
                 px[3] = a;
             }
         }
@@ -336,6 +381,18 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, char *err, int er
     img->height = (int)h;
     png_read_end(st->png, NULL);
     png_destroy_read_struct(&st->png, &st->info, NULL);
+    if (ex != NULL && st->ncolours > 0) {
+        ex->ncolours = st->ncolours;
+        for (int i = 0; i < st->ncolours; i++) {
+            ex->palette[i][0] = st->lut[st->plte[i].red];
+            ex->palette[i][1] = st->lut[st->plte[i].green];
+            ex->palette[i][2] = st->lut[st->plte[i].blue];
+            ex->palette[i][3] = (float)st->trns[i] / 255.0f;
+        }
+        ex->index = st->index;
+        st->index = NULL;
+    }
+    free(st->index);
     free(st->row);
     free(st->lut);
     free(st);

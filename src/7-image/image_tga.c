@@ -144,7 +144,7 @@ static int next_pixel(TgaStream *s, unsigned char out[4])
     return 0;
 }
 
-int image_tga_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen)
+int image_tga_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen)
 {
     unsigned char h[TGA_HEADER];
     ImageTransfer t;
@@ -245,10 +245,13 @@ int image_tga_read(FILE *fp, Image *img, double display_gamma, char *err, int er
                 if (s.bpp == 4 && alpha_bits == 8)
                     a = (float)b[3] / 255.0f;
             }
-            /* Targa alpha is straight; the image holds premultiplied. */
-            px[0] *= a;
-            px[1] *= a;
-            px[2] *= a;
+            /* Targa alpha is straight; the image holds premultiplied
+             * unless the caller keeps it straight. */
+            if (ex == NULL || !ex->keep_straight) {
+                px[0] *= a;
+                px[1] *= a;
+                px[2] *= a;
+            }
             px[3] = a;
         }
     }

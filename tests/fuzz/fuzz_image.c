@@ -45,12 +45,25 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FILE *fp = fmemopen((void *)data, size, "rb");
     if (!fp)
         return 0;
+    /* PNG, Targa and BMP are read twice: as the image layer reads them,
+     * and as a scene's picture is (straight colours, a palette kept
+     * indexed: image_read_for_scene) */
+    ImageReadExtras ex = { .keep_straight = 1 };
 #if defined(FUZZ_PNG)
-    (void)image_png_read(fp, &img, 0.0, err, (int)sizeof err);
+    (void)image_png_read(fp, &img, 0.0, NULL, err, (int)sizeof err);
+    image_free(&img);
+    rewind(fp);
+    (void)image_png_read(fp, &img, 0.0, &ex, err, (int)sizeof err);
 #elif defined(FUZZ_TGA)
-    (void)image_tga_read(fp, &img, 0.0, err, (int)sizeof err);
+    (void)image_tga_read(fp, &img, 0.0, NULL, err, (int)sizeof err);
+    image_free(&img);
+    rewind(fp);
+    (void)image_tga_read(fp, &img, 0.0, &ex, err, (int)sizeof err);
 #elif defined(FUZZ_BMP)
-    (void)image_bmp_read(fp, &img, 0.0, err, (int)sizeof err);
+    (void)image_bmp_read(fp, &img, 0.0, NULL, err, (int)sizeof err);
+    image_free(&img);
+    rewind(fp);
+    (void)image_bmp_read(fp, &img, 0.0, &ex, err, (int)sizeof err);
 #elif defined(FUZZ_JPG)
     (void)image_jpeg_read(fp, &img, 0.0, err, (int)sizeof err);
 #elif defined(FUZZ_HDR)
@@ -59,6 +72,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     (void)image_ppm_read(fp, &img, 0.0, err, (int)sizeof err);
 #endif
     image_free(&img); /* as image_read does, whatever the answer */
+    free(ex.index);
     fclose(fp);
 #endif
     return 0;
