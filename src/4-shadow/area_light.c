@@ -2,6 +2,7 @@
 #include "area_light.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "area_light_beam.h"
@@ -80,6 +81,24 @@ Vec3 area_light_sample_offset(const Light *l, int light, Vec3 p, Vec3 axis1, Vec
         jv += dv;
     }
     return grid_offset(l, axis1, axis2, ju, jv);
+}
+
+int area_light_fixed_offsets(const Light *l, Vec3 **offsets)
+{
+    *offsets = NULL;
+    const size_t n = (size_t)l->area.size1 * (size_t)l->area.size2;
+    if (!light_is_area(l) || l->area.jitter || l->area.orient || n > AREA_FIXED_CAP)
+        return 0;
+    Vec3 *o = malloc(n * sizeof *o);
+    if (!o)
+        return -1;
+    const Vec3 nowhere = v3(0.0, 0.0, 0.0); /* no jitter: the point is not asked */
+    for (int u = 0; u < l->area.size1; u++)
+        for (int v = 0; v < l->area.size2; v++)
+            o[(size_t)u * (size_t)l->area.size2 + (size_t)v] =
+                area_light_sample_offset(l, 0, nowhere, l->area.axis1, l->area.axis2, u, v, 0);
+    *offsets = o;
+    return 0;
 }
 
 double area_light_sample_ray(const Light *l, Vec3 offset, Vec3 p, Vec3 *to_light)
@@ -161,7 +180,7 @@ static RGB sample_at(Sampling *s, int u, int v)
     if (s->ctx->area_known[at])
         return s->ctx->area_colour[at];
     ShadowQuery q = *s->q;
-    Vec3 offset = area_light_sample_offset(l, q.light, q.point, s->axis1, s->axis2, u, v, 0);
+    Vec3 offset = area_light_offset(s->ctx, l, q.light, q.point, s->axis1, s->axis2, u, v, 0);
     q.distance = area_light_sample_ray(l, offset, q.point, &q.to_light);
     area_light_sample_light(l, offset, q.to_light, &s->sample);
     q.source = &s->sample;

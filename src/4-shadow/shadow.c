@@ -42,8 +42,13 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
         ctx->area_known = malloc(samples);
         ctx->area_uniform_visits = calloc((size_t)nl, sizeof *ctx->area_uniform_visits);
         ctx->area_uniform_levels = calloc((size_t)nl, sizeof *ctx->area_uniform_levels);
-        if (!ctx->area_colour || !ctx->area_known || !ctx->area_uniform_visits || !ctx->area_uniform_levels)
+        ctx->area_fixed_offsets = calloc((size_t)nl, sizeof *ctx->area_fixed_offsets);
+        if (!ctx->area_colour || !ctx->area_known || !ctx->area_uniform_visits || !ctx->area_uniform_levels ||
+            !ctx->area_fixed_offsets)
             return -1;
+        for (int i = 0; i < w->nlights; i++)
+            if (area_light_fixed_offsets(&w->lights[i], &ctx->area_fixed_offsets[i]))
+                return -1;
         for (int i = 0; i < w->nlights; i++)
             if (light_is_area(&w->lights[i]))
                 area_light_uniform_shape(&w->lights[i], ctx->area_known, &ctx->area_uniform_visits[i],
@@ -73,6 +78,7 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
 
 void shadow_context_free(ShadowContext *ctx)
 {
+    const int nlights = ctx->tracer.world ? ctx->tracer.world->nlights : 0; /* before the tracer goes */
     tracer_free(&ctx->tracer);
     free(ctx->light_cache);
     free(ctx->area_colour);
@@ -80,6 +86,10 @@ void shadow_context_free(ShadowContext *ctx)
     free(ctx->area_candidates);
     free(ctx->area_uniform_visits);
     free(ctx->area_uniform_levels);
+    if (ctx->area_fixed_offsets)
+        for (int i = 0; i < nlights; i++)
+            free(ctx->area_fixed_offsets[i]);
+    free(ctx->area_fixed_offsets);
     free(ctx->filtered);
     free(ctx->bucket);
     free(ctx->sp_stamp);

@@ -159,8 +159,10 @@ static void skip_all_lights(ShadeContext *ctx, const Hit *hit, const Segment *se
 }
 
 /* Light l's diffuse, phong and specular terms for light colour lc. */
-static void add_light(const Finish *f, const Light *l, Vec3 eye_dir, Vec3 normal, Vec3 to_light, RGB pigment,
-                      double attenuation, RGB lc, RGB *acc)
+/* add_light's diffuse term alone (inlined where area_illumination adds
+ * it for every sample). */
+static inline void add_diffuse(const Finish *f, Vec3 normal, Vec3 to_light, RGB pigment, double attenuation, RGB lc,
+                               RGB *acc)
 {
     if (f->diffuse > 0.0) {
         double c = fabs(v3_dot(normal, to_light));
@@ -169,6 +171,19 @@ static void add_light(const Finish *f, const Light *l, Vec3 eye_dir, Vec3 normal
         acc->g += intensity * pigment.g * lc.g;
         acc->b += intensity * pigment.b * lc.b;
     }
+}
+
+/* The finish adds only diffuse light from l: no phong or specular (or a
+ * fill light, which gives no highlights). */
+static int diffuse_only(const Finish *f, const Light *l)
+{
+    return l->shadowless || (!(f->phong > 0.0) && !(f->specular > 0.0));
+}
+
+static void add_light(const Finish *f, const Light *l, Vec3 eye_dir, Vec3 normal, Vec3 to_light, RGB pigment,
+                      double attenuation, RGB lc, RGB *acc)
+{
+    add_diffuse(f, normal, to_light, pigment, attenuation, lc, acc);
     if (l->shadowless)
         return; /* POV-Ray's fill lights give no highlights */
     if (f->phong > 0.0) {
@@ -231,23 +246,30 @@ static int has_highlights_or_diffuse(const Finish *f)
  * that arrived, lc (shadowed, not yet attenuated), shared among the
  * samples, and each sample's share attenuated and shaded from where the
  * sample is, for the textures in `takes` that face it. */
-static void add_full_area_light(const Light *l, int li, const Material *m, Vec3 p, Vec3 eye_dir, Vec3 centre_dir,
-                                RGB lc, LitTexture *lit, int n, unsigned takes)
+static void add_full_area_light(const ShadowContext *sc, const Light *l, int li, const Material *m, Vec3 p,
+                                Vec3 eye_dir, Vec3 centre_dir, RGB lc, LitTexture *lit, int n, unsigned takes)
 {
     Vec3 axis1, axis2;
     area_light_axes(l, centre_dir, &axis1, &axis2);
     double samples = (double)l->area.size1 * (double)l->area.size2;
     RGB share = { lc.r / samples, lc.g / samples, lc.b / samples };
+    unsigned plain = 0; /* the textures whose finish adds diffuse light only: the inlined term */
+    for (int i = 0; i < n; i++)
+        plain |= (unsigned)diffuse_only(lit[i].finish, l) << i;
     for (int v = 0; v < l->area.size2; v++) {
         for (int u = 0; u < l->area.size1; u++) {
             Vec3 to_light;
             double distance =
-                area_light_sample_ray(l, area_light_sample_offset(l, li, p, axis1, axis2, u, v, 1), p, &to_light);
+                area_light_sample_ray(l, area_light_offset(sc, l, li, p, axis1, axis2, u, v, 1), p, &to_light);
             double fade = light_attenuation(l, p, to_light, distance);
             RGB slc = { share.r * fade, share.g * fade, share.b * fade };
             for (int i = 0; i < n; i++) {
                 LitTexture *t = &lit[i];
-                if ((takes & (1u << i)) && (m->double_illuminate || v3_dot(t->normal, to_light) >= POV_EPSILON))
+                if (!(takes & (1u << i)) || !(m->double_illuminate || v3_dot(t->normal, to_light) >= POV_EPSILON))
+                    continue;
+                if (plain & (1u << i))
+                    add_diffuse(t->finish, t->normal, to_light, t->pigment, t->att, slc, &t->acc);
+                else
                     add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, slc, &t->acc);
             }
         }
@@ -316,9 +338,9 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
                     LitTexture ut = *t, st = *t;
                     ut.acc = st.acc = (RGB){ 0, 0, 0 };
                     if (full_area) {
-                        add_full_area_light(l, li, m, hit->point, eye_dir, to_light, unshadowed, &ut, 1, 1u);
+                        add_full_area_light(&ctx->shadow, l, li, m, hit->point, eye_dir, to_light, unshadowed, &ut, 1, 1u);
                         if (visible(lc))
-                            add_full_area_light(l, li, m, hit->point, eye_dir, to_light, lc, &st, 1, 1u);
+                            add_full_area_light(&ctx->shadow, l, li, m, hit->point, eye_dir, to_light, lc, &st, 1, 1u);
                     } else {
                         if (visible(unshadowed))
                             add_light(t->finish, l, eye_dir, t->normal, to_light, t->pigment, t->att, unshadowed, &ut.acc);
@@ -340,7 +362,7 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
         if (!visible(lc))
             continue;
         if (full_area) {
-            add_full_area_light(l, li, m, hit->point, eye_dir, to_light, lc, lit, n, takes);
+            add_full_area_light(&ctx->shadow, l, li, m, hit->point, eye_dir, to_light, lc, lit, n, takes);
             continue;
         }
         for (int i = 0; i < n; i++) {
