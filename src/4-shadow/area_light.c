@@ -26,7 +26,10 @@ void area_light_axes(const Light *l, Vec3 centre_dir, Vec3 *axis1, Vec3 *axis2)
 }
 
 /* The offset of grid position (u, v), jitter included. */
-static Vec3 grid_offset(const Light *l, Vec3 axis1, Vec3 axis2, double u, double v)
+/* A sample's place on the grid, (u, v) in cells, as the factors of the
+ * two axes that make its offset (grid_offset): what the point cannot
+ * change unless it jitters, kept per thread (area_light_fixed_factors). */
+static void grid_factors(const Light *l, double u, double v, double *f1, double *f2)
 {
     const AreaLight *a = &l->area;
     if (a->circular) {
@@ -35,11 +38,31 @@ static Vec3 grid_offset(const Light *l, Vec3 axis1, Vec3 axis2, double u, double
         u = u / (a->size1 - 1) - 0.5 + 0.001;
         v = v / (a->size2 - 1) - 0.5 + 0.001;
         double scale = (fabs(u) > fabs(v) ? fabs(u) : fabs(v)) / sqrt(u * u + v * v);
-        return v3_add(v3_scale(axis1, u * scale), v3_scale(axis2, v * scale));
+        *f1 = u * scale;
+        *f2 = v * scale;
+        return;
     }
-    Vec3 o1 = a->size1 > 1 ? v3_scale(axis1, u / (double)(a->size1 - 1) - 0.5) : v3(0.0, 0.0, 0.0);
-    Vec3 o2 = a->size2 > 1 ? v3_scale(axis2, v / (double)(a->size2 - 1) - 0.5) : v3(0.0, 0.0, 0.0);
+    *f1 = a->size1 > 1 ? u / (double)(a->size1 - 1) - 0.5 : 0.0;
+    *f2 = a->size2 > 1 ? v / (double)(a->size2 - 1) - 0.5 : 0.0;
+}
+
+Vec3 area_light_offset_of(const Light *l, Vec3 axis1, Vec3 axis2, const double f[2])
+{
+    const AreaLight *a = &l->area;
+    if (a->circular)
+        return v3_add(v3_scale(axis1, f[0]), v3_scale(axis2, f[1]));
+    /* a light one sample wide has no offset along that axis (not 0 times
+     * the axis, whose zeros may carry a sign) */
+    Vec3 o1 = a->size1 > 1 ? v3_scale(axis1, f[0]) : v3(0.0, 0.0, 0.0);
+    Vec3 o2 = a->size2 > 1 ? v3_scale(axis2, f[1]) : v3(0.0, 0.0, 0.0);
     return v3_add(o1, o2);
+}
+
+static Vec3 grid_offset(const Light *l, Vec3 axis1, Vec3 axis2, double u, double v)
+{
+    double f[2];
+    grid_factors(l, u, v, &f[0], &f[1]);
+    return area_light_offset_of(l, axis1, axis2, f);
 }
 
 static uint64_t mix64(uint64_t x)
@@ -83,21 +106,21 @@ Vec3 area_light_sample_offset(const Light *l, int light, Vec3 p, Vec3 axis1, Vec
     return grid_offset(l, axis1, axis2, ju, jv);
 }
 
-int area_light_fixed_offsets(const Light *l, Vec3 **offsets)
+int area_light_fixed_factors(const Light *l, double (**factors)[2])
 {
-    *offsets = NULL;
+    *factors = NULL;
     const size_t n = (size_t)l->area.size1 * (size_t)l->area.size2;
-    if (!light_is_area(l) || l->area.jitter || l->area.orient || n > AREA_FIXED_CAP)
+    if (!light_is_area(l) || l->area.jitter || n > AREA_FIXED_CAP)
         return 0;
-    Vec3 *o = malloc(n * sizeof *o);
-    if (!o)
+    double(*f)[2] = malloc(n * sizeof *f);
+    if (!f)
         return -1;
-    const Vec3 nowhere = v3(0.0, 0.0, 0.0); /* no jitter: the point is not asked */
     for (int u = 0; u < l->area.size1; u++)
-        for (int v = 0; v < l->area.size2; v++)
-            o[(size_t)u * (size_t)l->area.size2 + (size_t)v] =
-                area_light_sample_offset(l, 0, nowhere, l->area.axis1, l->area.axis2, u, v, 0);
-    *offsets = o;
+        for (int v = 0; v < l->area.size2; v++) {
+            double *at = f[(size_t)u * (size_t)l->area.size2 + (size_t)v];
+            grid_factors(l, (double)u, (double)v, &at[0], &at[1]);
+        }
+    *factors = f;
     return 0;
 }
 

@@ -48,20 +48,26 @@ void area_light_axes(const Light *l, Vec3 centre_dir, Vec3 *axis1, Vec3 *axis2);
  * area_illumination's (1), which POV-Ray draws afresh. */
 Vec3 area_light_sample_offset(const Light *l, int light, Vec3 p, Vec3 axis1, Vec3 axis2, int u, int v, int stream);
 
-/* The most samples of a light whose offsets a thread keeps
- * (ShadowContext.area_fixed_offsets). */
+/* The offset of the sample whose place on the grid is f (the factors of
+ * axis1 and axis2, POV-Ray's grid and circular mapping), along the axes
+ * seen from a point. */
+Vec3 area_light_offset_of(const Light *l, Vec3 axis1, Vec3 axis2, const double f[2]);
+/* The most samples of a light whose places a thread keeps
+ * (ShadowContext.area_fixed_factors). */
 #define AREA_FIXED_CAP 65536
-/* *offsets: light l's samples' offsets (area_light_sample_offset, index
- * u * size2 + v) when no point moves them (no jitter, no orient) and they
- * are few enough, malloc'd; NULL otherwise. Returns 0, -1 out of memory. */
-int area_light_fixed_offsets(const Light *l, Vec3 **offsets);
+/* *factors: light l's samples' places on the grid (index u * size2 + v)
+ * when no point moves them (no jitter; orient turns the axes only) and
+ * they are few enough, malloc'd; NULL otherwise. Returns 0, -1 out of
+ * memory. */
+int area_light_fixed_factors(const Light *l, double (**factors)[2]);
 /* area_light_sample_offset through ctx's table when the light has one:
  * the same value, without the grid's divisions. */
 static inline Vec3 area_light_offset(const ShadowContext *ctx, const Light *l, int light, Vec3 p, Vec3 axis1,
                                      Vec3 axis2, int u, int v, int stream)
 {
-    const Vec3 *fixed = ctx->area_fixed_offsets ? ctx->area_fixed_offsets[light] : NULL;
-    return fixed ? fixed[u * l->area.size2 + v] : area_light_sample_offset(l, light, p, axis1, axis2, u, v, stream);
+    const double(*fixed)[2] = ctx->area_fixed_factors ? ctx->area_fixed_factors[light] : NULL;
+    return fixed ? area_light_offset_of(l, axis1, axis2, fixed[u * l->area.size2 + v])
+                 : area_light_sample_offset(l, light, p, axis1, axis2, u, v, stream);
 }
 
 /* The shadow ray from p toward the light's centre moved by offset: the

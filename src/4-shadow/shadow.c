@@ -42,12 +42,12 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
         ctx->area_known = malloc(samples);
         ctx->area_uniform_visits = calloc((size_t)nl, sizeof *ctx->area_uniform_visits);
         ctx->area_uniform_levels = calloc((size_t)nl, sizeof *ctx->area_uniform_levels);
-        ctx->area_fixed_offsets = calloc((size_t)nl, sizeof *ctx->area_fixed_offsets);
+        ctx->area_fixed_factors = calloc((size_t)nl, sizeof *ctx->area_fixed_factors);
         if (!ctx->area_colour || !ctx->area_known || !ctx->area_uniform_visits || !ctx->area_uniform_levels ||
-            !ctx->area_fixed_offsets)
+            !ctx->area_fixed_factors)
             return -1;
         for (int i = 0; i < w->nlights; i++)
-            if (area_light_fixed_offsets(&w->lights[i], &ctx->area_fixed_offsets[i]))
+            if (area_light_fixed_factors(&w->lights[i], &ctx->area_fixed_factors[i]))
                 return -1;
         for (int i = 0; i < w->nlights; i++)
             if (light_is_area(&w->lights[i]))
@@ -86,10 +86,10 @@ void shadow_context_free(ShadowContext *ctx)
     free(ctx->area_candidates);
     free(ctx->area_uniform_visits);
     free(ctx->area_uniform_levels);
-    if (ctx->area_fixed_offsets)
+    if (ctx->area_fixed_factors)
         for (int i = 0; i < nlights; i++)
-            free(ctx->area_fixed_offsets[i]);
-    free(ctx->area_fixed_offsets);
+            free(ctx->area_fixed_factors[i]);
+    free(ctx->area_fixed_factors);
     free(ctx->filtered);
     free(ctx->bucket);
     free(ctx->sp_stamp);

@@ -139,11 +139,11 @@ typedef struct ShadowContext {
     RGB *area_colour;
     unsigned char *area_known;
     uint32_t *area_candidates;  /* hst: a beam's candidates (AREA_BEAM_CAP) */
-    /* Per light: its samples' offsets from the centre (index u * size2 +
-     * v) when they are the same from every point (no jitter, no orient)
-     * and there are at most AREA_FIXED_CAP of them; else NULL. The grid's
-     * divisions done once per thread, not per sample (area_light.h). */
-    Vec3 **area_fixed_offsets;
+    /* Per light: its samples' places on the grid (index u * size2 + v)
+     * when they are the same from every point (no jitter) and there are at
+     * most AREA_FIXED_CAP of them; else NULL. The grid's divisions done
+     * once per thread, not per sample (area_light.h). */
+    double (**area_fixed_factors)[2];
     int *area_uniform_visits;   /* per light: the samples its sampling visits when all agree */
     int *area_uniform_levels;   /* ... and the levels of means over them */
     /* Light states along the ray tree: one row of nlights per recursion depth. */
