@@ -123,7 +123,7 @@ static _Noreturn void image_map_unsupported(Parser *p, const Token *at, const ch
  * gamma_correct: colours (image_map) are decoded by the file's gamma and
  * taken to the scene's working gamma; data (bump_map) are the file's
  * values as they are, or decoded by a `gamma` given, and left linear. */
-void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct)
+SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct)
 {
     Token *t = next(p);
     int kw = t->type == TK_WORD ? t->kw : -1;
@@ -232,6 +232,7 @@ void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *bl
     /* where one colour must stand for the picture: its mean */
     double count = (double)w * (double)h;
     pig->colour = (Colour){ sum[0] / count, sum[1] / count, sum[2] / count, 0.0, 0.0 };
+    return im;
 }
 
 int image_interpolation(Parser *p, const Token *at)
@@ -261,7 +262,7 @@ int image_map_type(Parser *p, const Token *at)
 static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
 {
     begin_block(p, "image_map");
-    parse_image_source(p, pig, at, "image_map", 1);
+    SceneImage *im = parse_image_source(p, pig, at, "image_map", 1); /* its own: filter N ... may change it */
     for (;;) {
         Token *o = next(p);
         if (is_punct(o, '}'))
@@ -278,7 +279,6 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
              * to F); `filter N, F` sets entry N's, colour-mapped only.
              * transmit the same. */
             const int slot = here.kw == KW_filter ? 3 : 4;
-            SceneImage *im = (SceneImage *)pig->image; /* this image_map's own, read just now */
             if (is_kw(peek(p), KW_all)) {
                 (void)next(p);
                 double v = parse_float(p);

@@ -554,8 +554,10 @@ void parse_pigment_map(Parser *p, Pigment *pig, const Token *at);
 void parse_texture_map(Parser *p, SceneTexture *tex, const Token *at);
 void parse_normal_map(Parser *p, SceneNormal *n, int average);
 void parse_slope_map(Parser *p, SceneNormal *n);
-/* A picture of image_map or bump_map (`block`), after its '{'. */
-void parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct);
+/* A picture of image_map, bump_map or material_map (`block`), after its
+ * '{', into pig; the picture, the parse's own (a colour-mapped one's
+ * entries are the image_map's to change). */
+SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct);
 int image_interpolation(Parser *p, const Token *at); /* after 'interpolate' */
 int image_map_type(Parser *p, const Token *at);      /* after 'map_type': its value */
 
