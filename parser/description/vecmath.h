@@ -34,6 +34,15 @@ static inline Vec3 v3_normalize(Vec3 a)
 }
 /* a + b * s: the ray-point idiom. */
 static inline Vec3 v3_madd(Vec3 a, Vec3 b, double s) { return v3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
+/* fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z))), the same value (a NaN
+ * component is ignored, as fmax ignores it), inline: fmax is a call into
+ * libm, and this runs several times per ray. */
+static inline double v3_max_abs(Vec3 a)
+{
+    double x = fabs(a.x), y = fabs(a.y), z = fabs(a.z);
+    double m = (y > z || z != z) ? y : z;
+    return (x > m || m != m) ? x : m;
+}
 static inline double v3_comp(Vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
 static inline Vec3 v3_min(Vec3 a, Vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
 static inline Vec3 v3_max(Vec3 a, Vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }

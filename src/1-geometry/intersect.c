@@ -63,22 +63,30 @@ int polygon_contains(const World *w, const Polygon *p, Vec3 q)
  * ray meets the polygon at its own start point or only grazes it edge-on,
  * and a distance computed from two rounding errors would be arbitrary (a
  * camera in the plane of a polygon would see it at random points). */
-static inline double plane_distance(const Polygon *p, const RayFrame *f)
+static inline double plane_distance_nd(Vec3 normal, double d, const RayFrame *f)
 {
-    double num = p->d - v3_dot(p->normal, f->org);
-    double denom = v3_dot(p->normal, f->dir);
-    if (denom == 0.0 || fabs(num) <= 1e-12 * (f->org_scale + fabs(p->d)))
+    double num = d - v3_dot(normal, f->org);
+    double denom = v3_dot(normal, f->dir);
+    if (denom == 0.0 || fabs(num) <= 1e-12 * (f->org_scale + fabs(d)))
         return -1.0;
     return num / denom;
 }
 
+static inline double plane_distance(const Polygon *p, const RayFrame *f)
+{
+    return plane_distance_nd(p->normal, p->d, f);
+}
+
 RayFrame ray_frame(Vec3 org, Vec3 dir)
 {
-    double d[3] = { dir.x, dir.y, dir.z };
+    /* Made once per ray, shadow rays included: components by index and the
+     * next axis from a table rather than comp()'s branches and a modulo. */
+    static const int next_axis[3] = { 1, 2, 0 };
+    const double d[3] = { dir.x, dir.y, dir.z }, o[3] = { org.x, org.y, org.z };
     RayFrame f;
     f.kz = fabs(d[0]) > fabs(d[1]) ? (fabs(d[0]) > fabs(d[2]) ? 0 : 2) : (fabs(d[1]) > fabs(d[2]) ? 1 : 2);
-    f.kx = (f.kz + 1) % 3;
-    f.ky = (f.kx + 1) % 3;
+    f.kx = next_axis[f.kz];
+    f.ky = next_axis[f.kx];
     if (d[f.kz] < 0.0) { /* keep the winding */
         int swap = f.kx;
         f.kx = f.ky;
@@ -88,18 +96,25 @@ RayFrame ray_frame(Vec3 org, Vec3 dir)
     f.sy = d[f.ky] / d[f.kz];
     f.org = org;
     f.dir = dir;
-    f.ox = comp(org, f.kx);
-    f.oy = comp(org, f.ky);
-    f.oz = comp(org, f.kz);
-    f.org_scale = 1.0 + fmax(fabs(org.x), fmax(fabs(org.y), fabs(org.z)));
+    f.ox = o[f.kx];
+    f.oy = o[f.ky];
+    f.oz = o[f.kz];
+    f.org_scale = 1.0 + v3_max_abs(org);
     return f;
+}
+
+/* A point's coordinate on axis a (0, 1, 2: x, y, z), by index. */
+static inline double vcomp(const Vec3 *p, int a)
+{
+    const double c[3] = { p->x, p->y, p->z };
+    return c[a];
 }
 
 static inline void frame_project(const RayFrame *f, const Vec3 *p, double *x, double *y)
 {
-    double z = comp(*p, f->kz) - f->oz;
-    *x = (comp(*p, f->kx) - f->ox) - f->sx * z;
-    *y = (comp(*p, f->ky) - f->oy) - f->sy * z;
+    double z = vcomp(p, f->kz) - f->oz;
+    *x = (vcomp(p, f->kx) - f->ox) - f->sx * z;
+    *y = (vcomp(p, f->ky) - f->oy) - f->sy * z;
 }
 
 /* Twice the signed area of (origin, a, b) in the frame: where the ray passes
@@ -119,9 +134,9 @@ static inline double edge_function(double ax, double ay, double bx, double by)
  * leaks, and no camera ray slips into a closed mesh between its faces).
  * Points on an edge count as inside. The distance comes from the plane, as
  * for other polygons. */
-static double intersect_triangle(const Polygon *p, const Vec3 *v, const RayFrame *f, double tmax)
+static inline double intersect_triangle_nd(Vec3 normal, double d, const Vec3 *v, const RayFrame *f, double tmax)
 {
-    double t = plane_distance(p, f);
+    double t = plane_distance_nd(normal, d, f);
     if (!(t > 0.0 && t < tmax))
         return -1.0;
     double ax, ay, bx, by, cx, cy;
@@ -136,6 +151,11 @@ static double intersect_triangle(const Polygon *p, const Vec3 *v, const RayFrame
     return t;
 }
 
+static double intersect_triangle(const Polygon *p, const Vec3 *v, const RayFrame *f, double tmax)
+{
+    return intersect_triangle_nd(p->normal, p->d, v, f, tmax);
+}
+
 /* Polygons with outlines (holes cut by later outlines, even-odd): the same
  * frame, and a crossing count along the frame's +x half-line. Each edge's
  * crossing is decided by its end points' sides of the x axis (half-open, so
@@ -143,6 +163,27 @@ static double intersect_triangle(const Polygon *p, const Vec3 *v, const RayFrame
  * so two polygons sharing an edge see it cross or not alike, and a ray
  * through a shared edge is inside one of them. A ray meeting an edge or
  * vertex exactly is inside (inclusive, as for triangles). */
+/* One outline's part of that count: flips *inside at each crossing;
+ * returns 1 when the ray meets the outline's border. */
+static inline int outline_crossings(const Vec3 *pts, int n, const RayFrame *f, int *inside)
+{
+    double px, py;
+    frame_project(f, &pts[n - 1], &px, &py);
+    for (int i = 0; i < n; i++) {
+        double qx, qy;
+        frame_project(f, &pts[i], &qx, &qy);
+        double e = edge_function(px, py, qx, qy);
+        if (e == 0.0 && fmin(px, qx) <= 0.0 && fmax(px, qx) >= 0.0 && fmin(py, qy) <= 0.0 && fmax(py, qy) >= 0.0 &&
+            (px != qx || py != qy))
+            return 1; /* on the border */
+        if ((py > 0.0) != (qy > 0.0) && (e > 0.0) == (qy > py))
+            *inside = !*inside;
+        px = qx;
+        py = qy;
+    }
+    return 0;
+}
+
 static double intersect_outlines(const World *w, const Polygon *p, const RayFrame *f, double tmax)
 {
     double t = plane_distance(p, f);
@@ -152,22 +193,41 @@ static double intersect_outlines(const World *w, const Polygon *p, const RayFram
     for (int k = 0; k < p->noutlines; k++) {
         int n;
         const Vec3 *pts = polygon_outline(w, p, k, &n);
-        double px, py;
-        frame_project(f, &pts[n - 1], &px, &py);
-        for (int i = 0; i < n; i++) {
-            double qx, qy;
-            frame_project(f, &pts[i], &qx, &qy);
-            double e = edge_function(px, py, qx, qy);
-            if (e == 0.0 && fmin(px, qx) <= 0.0 && fmax(px, qx) >= 0.0 && fmin(py, qy) <= 0.0 && fmax(py, qy) >= 0.0 &&
-                (px != qx || py != qy))
-                return t; /* on the border */
-            if ((py > 0.0) != (qy > 0.0) && (e > 0.0) == (qy > py))
-                inside = !inside;
-            px = qx;
-            py = qy;
-        }
+        if (outline_crossings(pts, n, f, &inside))
+            return t; /* on the border */
     }
     return inside ? t : -1.0;
+}
+
+double intersect_packed(const PackedPolygon *pp, const RayFrame *f, double tmax)
+{
+    if (pp->n == 3)
+        return intersect_triangle_nd(pp->normal, pp->d, pp->v, f, tmax);
+    double t = plane_distance_nd(pp->normal, pp->d, f);
+    if (!(t > 0.0 && t < tmax))
+        return -1.0;
+    int inside = 0;
+    if (outline_crossings(pp->v, pp->n, f, &inside))
+        return t; /* on the border */
+    return inside ? t : -1.0;
+}
+
+int polygon_pack(const World *w, const Polygon *p, PackedPolygon *pp)
+{
+    int n;
+    const Vec3 *pts = polygon_outline(w, p, 0, &n);
+    if (polygon_outline_count(p) != 1 || n > PACKED_POINTS || n < 3)
+        return 0;
+    /* A one-outline polygon of three points is only ever a triangle
+     * (flatten.c), and tested as one. */
+    if (n == 3 && p->first_outline >= 0)
+        return 0;
+    for (int i = 0; i < n; i++)
+        pp->v[i] = pts[i];
+    pp->n = n;
+    pp->normal = p->normal;
+    pp->d = p->d;
+    return 1;
 }
 
 double intersect_polygon_in(const World *w, const Polygon *p, const RayFrame *f, double tmax)

@@ -26,6 +26,26 @@ RayFrame ray_frame(Vec3 org, Vec3 dir);
  * beyond are not looked at (negative). */
 double intersect_polygon_in(const World *w, const Polygon *p, const RayFrame *f, double tmax);
 
+/* A polygon's plane and points side by side, copied from the polygon and
+ * its points, so that a test reads one record instead of the polygon, then
+ * its outline's start, then its points (the hierarchy keeps one per leaf
+ * item, bvh.h): triangles, and polygons of one outline of up to
+ * PACKED_POINTS points (a box's faces). */
+#define PACKED_POINTS 4
+typedef struct {
+    Vec3 v[PACKED_POINTS];
+    Vec3 normal;
+    double d;
+    int n;                /* 3: a triangle; more: one outline of n points */
+} PackedPolygon;
+
+/* Packs p when it is such a polygon (1), else 0. */
+int polygon_pack(const World *w, const Polygon *p, PackedPolygon *pp);
+
+/* intersect_polygon_in for the polygon pp was packed from: the same
+ * arithmetic on the same numbers, so the same answer, bit for bit. */
+double intersect_packed(const PackedPolygon *pp, const RayFrame *f, double tmax);
+
 /* The distance along the frame's ray to p's plane, as intersect_polygon_in
  * computes it (bit for bit), or -1 when the ray runs parallel to the plane
  * or starts in it. For tests made elsewhere (Embree's, in float) that need

@@ -482,6 +482,22 @@ int bvh_build(Bvh *b, const World *w, int threads)
         free(c.nodes);
         return -1;
     }
+    BvhPrim *prims = malloc(sizeof *prims * (size_t)(n > 0 ? n : 1));
+    if (!prims) {
+        free(order);
+        free(c.nodes);
+        return -1;
+    }
+    for (int k = 0; k < n; k++) {
+        const Polygon *p = &w->polygons[order[k]];
+        const Material *m = &w->materials[p->material];
+        BvhPrim *pr = &prims[k];
+        memset(pr, 0, sizeof *pr);
+        pr->hide = (m->no_image ? HIDE_NO_IMAGE : 0u) | (m->no_reflection ? HIDE_NO_REFLECTION : 0u) |
+                   (m->no_shadow ? HIDE_NO_SHADOW : 0u);
+        pr->packed = (uint32_t)polygon_pack(w, p, &pr->poly);
+    }
+    b->prims = prims;
     b->nodes = c.nodes;
     b->nnodes = c.nnodes;
     b->items = order;
@@ -494,6 +510,7 @@ void bvh_free(Bvh *b)
 {
     free(b->nodes);
     free(b->items);
+    free(b->prims);
     memset(b, 0, sizeof *b);
 }
 
@@ -520,6 +537,16 @@ BvhRay bvh_ray(Vec3 org, Vec3 dir)
 #endif
     }
     return r;
+}
+
+void bvh_ray_scalar(BvhRay *r, Vec3 org, Vec3 dir)
+{
+    const double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };
+    for (int a = 0; a < 3; a++) {
+        r->org[a] = o[a];
+        r->inv[a] = 1.0 / d[a];
+        r->neg[a] = signbit(r->inv[a]) != 0;
+    }
 }
 
 unsigned bvh_node_hits_plain(const BvhNode *n, const BvhRay *r, double t0, double t1, double enter[BVH_WIDTH])

@@ -19,6 +19,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "intersect.h"
 #include "world.h"
 
 #define BVH_WIDTH 4
@@ -39,10 +40,28 @@ typedef struct {
     uint32_t child[BVH_WIDTH];
 } BvhNode;
 
+/* Objects a ray passes through (Tracer.hide, trace_segment_hits): no_image
+ * ones for image rays, no_reflection ones for reflection rays, no_shadow
+ * ones for shadow rays. */
+enum { HIDE_NO_IMAGE = 1u, HIDE_NO_REFLECTION = 2u, HIDE_NO_SHADOW = 4u };
+
+/* What a leaf's test needs of one polygon, beside it in leaf order: the
+ * HIDE_* bits its material answers to, and, for a triangle or a polygon of
+ * one short outline, its plane and points (the leaf test then reads this
+ * record alone rather than the polygon, its material and its points: fewer
+ * loads and cache lines per test; the same arithmetic, so the same
+ * answers, intersect.h). */
+typedef struct {
+    PackedPolygon poly;   /* set when `packed` */
+    uint32_t hide;        /* HIDE_* bits of its material */
+    uint32_t packed;      /* 1: poly holds it; 0: test the polygon itself */
+} BvhPrim;
+
 typedef struct {
     BvhNode *nodes;       /* nodes[0] is the root (none when there are no polygons) */
     int nnodes;
     uint32_t *items;      /* polygon indices, leaf by leaf */
+    BvhPrim *prims;       /* prims[k] for polygon items[k] */
     int nitems;
     int depth;            /* of the deepest node */
 } Bvh;
@@ -69,6 +88,10 @@ typedef struct {
 } BvhRay;
 
 BvhRay bvh_ray(Vec3 org, Vec3 dir);
+/* bvh_ray without the SSE2 lanes (org2, inv2, left unset), for the AVX2
+ * box test, which broadcasts org and inv itself: made once per ray,
+ * shadow rays included, so the copies it would not read are not made. */
+void bvh_ray_scalar(BvhRay *r, Vec3 org, Vec3 dir);
 
 /* Which of node n's children the ray meets for some t in [t0, t1]: bit k for
  * child k; enter[k] is where it enters child k's box (meaningful where the

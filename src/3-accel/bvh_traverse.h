@@ -1,6 +1,7 @@
 /* The hierarchy's traversals, written once and compiled by tracer.c once
  * per box test: BVH_TRAVERSE_NAME(f) names the functions, BVH_TRAVERSE_NODE_HITS
- * is the box test (bvh.h), BVH_TRAVERSE_TARGET the instruction set they are
+ * is the box test (bvh.h), BVH_TRAVERSE_RAY makes the ray it wants,
+ * BVH_TRAVERSE_TARGET the instruction set they are
  * compiled for. No include guard: it is meant to be included twice. */
 
 /* The nearest polygon by the hierarchy: nearer children first, those the
@@ -12,7 +13,8 @@ BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, Ve
     if (b->nnodes == 0)
         return;
     RayFrame frame = ray_frame(org, dir);
-    BvhRay br = bvh_ray(org, dir);
+    BvhRay br;
+    BVH_TRAVERSE_RAY(&br, org, dir);
     Pending stack[BVH_STACK];
     int sp = 0;
     stack[sp].child = 0;
@@ -35,7 +37,7 @@ BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, Ve
         uint32_t first = bvh_leaf_first(p.child), end = first + bvh_leaf_count(p.child);
         for (uint32_t k = first; k < end; k++)
             if ((int)b->items[k] != exclude)
-                try_nearer(tr, &frame, b->items[k], tmin, plane_t, hit, best);
+                try_nearer_prim(tr, &frame, &b->prims[k], b->items[k], tmin, plane_t, hit, best);
     }
 }
 
@@ -50,7 +52,8 @@ BVH_TRAVERSE_TARGET static int BVH_TRAVERSE_NAME(segment_hits_in_bvh)(Tracer *tr
     const Bvh *b = tr->bvh;
     if (b->nnodes == 0)
         return 0;
-    BvhRay br = bvh_ray(org, dir);
+    BvhRay br;
+    BVH_TRAVERSE_RAY(&br, org, dir);
     uint32_t stack[BVH_STACK];
     int sp = 0;
     stack[sp++] = 0;
@@ -69,10 +72,11 @@ BVH_TRAVERSE_TARGET static int BVH_TRAVERSE_NAME(segment_hits_in_bvh)(Tracer *tr
         uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
         for (uint32_t k = first; k < end; k++) {
             uint32_t pi = b->items[k];
-            if ((int)pi == exclude || (hide && material_hidden(&w->materials[w->polygons[pi].material], hide)))
+            const BvhPrim *pr = &b->prims[k];
+            if ((int)pi == exclude || (pr->hide & hide))
                 continue;
             ++*tests;
-            double t = intersect_polygon_in(w, &w->polygons[pi], frame, tmax); /* negative at tmax or beyond */
+            double t = prim_test(w, pr, pi, frame, tmax); /* negative at tmax or beyond */
             if (t > tmin && visit(user, pi, t))
                 return 1;
         }

@@ -158,6 +158,25 @@ static inline void try_nearer(Tracer *tr, const RayFrame *frame, uint32_t pi, do
         take_nearer(hit, best, pi, t);
 }
 
+/* The exact test of the polygon a leaf item holds (bvh.h): on its packed
+ * copy where there is one, else the polygon's own test. */
+static inline double prim_test(const World *w, const BvhPrim *pr, uint32_t pi, const RayFrame *frame, double tmax)
+{
+    return pr->packed ? intersect_packed(&pr->poly, frame, tmax) : intersect_polygon_in(w, &w->polygons[pi], frame, tmax);
+}
+
+/* try_nearer for a leaf item, from its record. */
+static inline void try_nearer_prim(Tracer *tr, const RayFrame *frame, const BvhPrim *pr, uint32_t pi, double tmin,
+                                   double plane_t, Hit *hit, double *best)
+{
+    if (pr->hide & tr->hide)
+        return;
+    tr->stats.polygon_tests++;
+    double t = prim_test(tr->world, pr, pi, frame, test_limit(hit, *best, plane_t));
+    if (t > tmin)
+        take_nearer(hit, best, pi, t);
+}
+
 /* The nearest polygon by the grid: cell by cell, a hit inside a cell
  * ending the walk. */
 static void nearest_in_grid(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double plane_t, int exclude, Hit *hit,
@@ -222,18 +241,22 @@ static inline int push_children(Pending *stack, int sp, const BvhNode *n, unsign
  * has it: the same answers, bit for bit (bvh.h). */
 #define BVH_TRAVERSE_NAME(f) f##_sse2
 #define BVH_TRAVERSE_NODE_HITS bvh_node_hits
+#define BVH_TRAVERSE_RAY(r, org, dir) (*(r) = bvh_ray(org, dir))
 #define BVH_TRAVERSE_TARGET
 #include "bvh_traverse.h"
 #undef BVH_TRAVERSE_NAME
 #undef BVH_TRAVERSE_NODE_HITS
+#undef BVH_TRAVERSE_RAY
 #undef BVH_TRAVERSE_TARGET
 #if BVH_HAVE_AVX2_PATH
 #define BVH_TRAVERSE_NAME(f) f##_avx2
 #define BVH_TRAVERSE_NODE_HITS bvh_node_hits_avx2
+#define BVH_TRAVERSE_RAY bvh_ray_scalar
 #define BVH_TRAVERSE_TARGET __attribute__((target("avx2")))
 #include "bvh_traverse.h"
 #undef BVH_TRAVERSE_NAME
 #undef BVH_TRAVERSE_NODE_HITS
+#undef BVH_TRAVERSE_RAY
 #undef BVH_TRAVERSE_TARGET
 #else
 #define nearest_in_bvh_avx2 nearest_in_bvh_sse2

@@ -20,10 +20,7 @@ typedef struct {
     Vec3 point;
 } Hit;
 
-/* Objects a ray passes through (Tracer.hide, trace_segment_hits): no_image
- * ones for image rays, no_reflection ones for reflection rays, no_shadow
- * ones for shadow rays. */
-enum { HIDE_NO_IMAGE = 1u, HIDE_NO_REFLECTION = 2u, HIDE_NO_SHADOW = 4u };
+/* (HIDE_NO_IMAGE, HIDE_NO_REFLECTION and HIDE_NO_SHADOW: bvh.h) */
 
 /* What the ray queries did, for the statistics (summed over threads). */
 typedef struct {
@@ -103,8 +100,7 @@ static inline int bucket_admit(Tracer *t, uint32_t id, uint32_t pi)
  * point: a few thousand ulps of the coordinates involved. */
 static inline double trace_min_distance(Vec3 org)
 {
-    double m = fmax(fabs(org.x), fmax(fabs(org.y), fabs(org.z)));
-    return 1e-9 * (1.0 + m);
+    return 1e-9 * (1.0 + v3_max_abs(org));
 }
 
 /* Nearest hit along org + t*dir, t in (min distance, tmax); `from` is the

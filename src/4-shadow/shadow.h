@@ -217,6 +217,12 @@ int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const u
 int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 
 void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
+/* The last-blocker cache (shadow_cache.c), for the methods that fire shadow
+ * rays: 1 when the opaque polygon that last blocked q's light blocks q's
+ * shadow ray too (then the ray's answer is "no light"); after a shadow
+ * ray, remember its blocker when it was opaque and blocked fully. */
+int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q);
+void shadow_cache_remember(ShadowContext *ctx, const ShadowQuery *q, const RGB *light);
 void shadow_volume_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
 void shadow_volume_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away);
 void shadow_hst_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);

@@ -359,11 +359,14 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     ropt.threads = threads;
     ropt.quality = quality_from_level(o->quality);
     /* hst with no light whose volumes pay (and no area light for its
-     * beams) is the shadow ray alone: render it as conventional does,
-     * without hst's per-decision wrapper (the decisions, images and
-     * analysis codes are the same). */
+     * beams) is the shadow ray alone: render it as the cache method does,
+     * the shadow ray with the light's last opaque blocker tried first
+     * (exact: shadow_cache.c), without hst's per-decision wrapper. The
+     * decisions and images are the same; the analysis codes show the
+     * cache's hits (on desk.pov 1.46 of the 1.54 million blocked rays,
+     * each one polygon test instead of a walk through the hierarchy). */
     ropt.shadow = method->uses_volumes && !have_volumes && method->test == shadow_hst_test && !world_has_beams(&world)
-                      ? shadow_method_find("conventional")
+                      ? shadow_method_find("cache")
                       : method;
     ropt.bvh = &bvh;
     ropt.volumes = have_volumes ? &volumes : NULL;
