@@ -483,7 +483,10 @@ int bvh_build(Bvh *b, const World *w, int threads)
         return -1;
     }
     BvhPrim *prims = malloc(sizeof *prims * (size_t)(n > 0 ? n : 1));
-    if (!prims) {
+    PackedPolygon *packed = n <= BVH_PACK_MAX ? malloc(sizeof *packed * (size_t)(n > 0 ? n : 1)) : NULL;
+    if (!prims || (n <= BVH_PACK_MAX && !packed)) {
+        free(prims);
+        free(packed);
         free(order);
         free(c.nodes);
         return -1;
@@ -492,12 +495,12 @@ int bvh_build(Bvh *b, const World *w, int threads)
         const Polygon *p = &w->polygons[order[k]];
         const Material *m = &w->materials[p->material];
         BvhPrim *pr = &prims[k];
-        memset(pr, 0, sizeof *pr);
         pr->hide = (m->no_image ? HIDE_NO_IMAGE : 0u) | (m->no_reflection ? HIDE_NO_REFLECTION : 0u) |
                    (m->no_shadow ? HIDE_NO_SHADOW : 0u);
-        pr->packed = (uint32_t)polygon_pack(w, p, &pr->poly);
+        pr->packed = packed ? (uint32_t)polygon_pack(w, p, &packed[k]) : 0u;
     }
     b->prims = prims;
+    b->packed = packed;
     b->nodes = c.nodes;
     b->nnodes = c.nnodes;
     b->items = order;
@@ -511,6 +514,7 @@ void bvh_free(Bvh *b)
     free(b->nodes);
     free(b->items);
     free(b->prims);
+    free(b->packed);
     memset(b, 0, sizeof *b);
 }
 

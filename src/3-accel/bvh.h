@@ -46,22 +46,29 @@ typedef struct {
 enum { HIDE_NO_IMAGE = 1u, HIDE_NO_REFLECTION = 2u, HIDE_NO_SHADOW = 4u };
 
 /* What a leaf's test needs of one polygon, beside it in leaf order: the
- * HIDE_* bits its material answers to, and, for a triangle or a polygon of
- * one short outline, its plane and points (the leaf test then reads this
- * record alone rather than the polygon, its material and its points: fewer
- * loads and cache lines per test; the same arithmetic, so the same
+ * HIDE_* bits its material answers to, and whether Bvh.packed holds its
+ * plane and points (a triangle or a polygon of one short outline): the
+ * leaf test then reads that record rather than the polygon, its material
+ * and its points (fewer loads per test; the same arithmetic, so the same
  * answers, intersect.h). */
 typedef struct {
-    PackedPolygon poly;   /* set when `packed` */
     uint32_t hide;        /* HIDE_* bits of its material */
-    uint32_t packed;      /* 1: poly holds it; 0: test the polygon itself */
+    uint32_t packed;      /* 1: Bvh.packed[k] holds it; 0: test the polygon itself */
 } BvhPrim;
+
+/* The most polygons whose packed copies a hierarchy keeps: each costs
+ * about 130 bytes, a few per cent of speed on small scenes and, measured
+ * on 10^6 triangles, 90 MB and half a second of building for nothing
+ * there (the polygons of a big mesh are in cache no more than their
+ * copies). */
+#define BVH_PACK_MAX (1 << 17)
 
 typedef struct {
     BvhNode *nodes;       /* nodes[0] is the root (none when there are no polygons) */
     int nnodes;
     uint32_t *items;      /* polygon indices, leaf by leaf */
     BvhPrim *prims;       /* prims[k] for polygon items[k] */
+    PackedPolygon *packed; /* packed[k] where prims[k].packed; NULL above BVH_PACK_MAX polygons */
     int nitems;
     int depth;            /* of the deepest node */
 } Bvh;

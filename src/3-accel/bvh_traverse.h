@@ -37,7 +37,7 @@ BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, Ve
         uint32_t first = bvh_leaf_first(p.child), end = first + bvh_leaf_count(p.child);
         for (uint32_t k = first; k < end; k++)
             if ((int)b->items[k] != exclude)
-                try_nearer_prim(tr, &frame, &b->prims[k], b->items[k], tmin, plane_t, hit, best);
+                try_nearer_prim(tr, &frame, k, b->items[k], tmin, plane_t, hit, best);
     }
 }
 
@@ -72,11 +72,10 @@ BVH_TRAVERSE_TARGET static int BVH_TRAVERSE_NAME(segment_hits_in_bvh)(Tracer *tr
         uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
         for (uint32_t k = first; k < end; k++) {
             uint32_t pi = b->items[k];
-            const BvhPrim *pr = &b->prims[k];
-            if ((int)pi == exclude || (pr->hide & hide))
+            if ((int)pi == exclude || (b->prims[k].hide & hide))
                 continue;
             ++*tests;
-            double t = prim_test(w, pr, pi, frame, tmax); /* negative at tmax or beyond */
+            double t = prim_test(w, b, k, pi, frame, tmax); /* negative at tmax or beyond */
             if (t > tmin && visit(user, pi, t))
                 return 1;
         }

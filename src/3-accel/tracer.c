@@ -160,19 +160,21 @@ static inline void try_nearer(Tracer *tr, const RayFrame *frame, uint32_t pi, do
 
 /* The exact test of the polygon a leaf item holds (bvh.h): on its packed
  * copy where there is one, else the polygon's own test. */
-static inline double prim_test(const World *w, const BvhPrim *pr, uint32_t pi, const RayFrame *frame, double tmax)
+static inline double prim_test(const World *w, const Bvh *b, uint32_t k, uint32_t pi, const RayFrame *frame,
+                               double tmax)
 {
-    return pr->packed ? intersect_packed(&pr->poly, frame, tmax) : intersect_polygon_in(w, &w->polygons[pi], frame, tmax);
+    return b->prims[k].packed ? intersect_packed(&b->packed[k], frame, tmax)
+                              : intersect_polygon_in(w, &w->polygons[pi], frame, tmax);
 }
 
 /* try_nearer for a leaf item, from its record. */
-static inline void try_nearer_prim(Tracer *tr, const RayFrame *frame, const BvhPrim *pr, uint32_t pi, double tmin,
+static inline void try_nearer_prim(Tracer *tr, const RayFrame *frame, uint32_t k, uint32_t pi, double tmin,
                                    double plane_t, Hit *hit, double *best)
 {
-    if (pr->hide & tr->hide)
+    if (tr->bvh->prims[k].hide & tr->hide)
         return;
     tr->stats.polygon_tests++;
-    double t = prim_test(tr->world, pr, pi, frame, test_limit(hit, *best, plane_t));
+    double t = prim_test(tr->world, tr->bvh, k, pi, frame, test_limit(hit, *best, plane_t));
     if (t > tmin)
         take_nearer(hit, best, pi, t);
 }
