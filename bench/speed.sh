@@ -49,7 +49,7 @@ if [ -f "$examples/objects/chesmsh.pov" ]; then
     cp -R "$examples/objects" "$work/objects"
 fi
 python3 - "$build" "$work" "$here" "$runs" "$povray" <<'PY'
-import json, os, platform, shutil, statistics, subprocess, sys, time
+import json, os, platform, re, shutil, statistics, subprocess, sys, time
 
 build, work, here, runs, povray = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), sys.argv[5]
 hstrace = os.path.join(build, "hstrace")
@@ -217,7 +217,7 @@ with open(out, "w") as o:
     o.write("Nanoseconds per shadow decision: shadow-testing time over shadow queries (`--stats-json`; the "
             "time is taken on every 8th decision and scaled). *none* decides nothing and measures the fixed "
             "cost of a decision (the call and the clock). "
-            + (f"*embree* is Embree {version.split('Embree ')[-1].rstrip(')')}'s `rtcOccluded1` with the shadow "
+            + (f"*embree* is Embree {re.search(r'Embree ([0-9.]+)', version).group(1)}'s `rtcOccluded1` with the shadow "
                "ray's rules; *embree vs ray* is how many of its decisions differ from the exact shadow ray's "
                "(`--verify-shadows`, 640x480, 2 threads). " if have_embree else
                "This hstrace was built without Embree: no embree column. ")
