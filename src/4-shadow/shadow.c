@@ -22,11 +22,10 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
     ctx->method = method;
     ctx->last_blocker = -1;
     int nl = w->nlights > 0 ? w->nlights : 1;
-    ctx->light_cache = malloc(sizeof(int) * (size_t)nl);
+    ctx->light_cache = malloc(sizeof *ctx->light_cache * (size_t)nl);
     if (!ctx->light_cache)
         return -1;
-    for (int i = 0; i < nl; i++)
-        ctx->light_cache[i] = -1;
+    shadow_cache_forget(ctx, nl);
     int see_through = 1;
     for (int i = 0; i < w->npolygons; i++)
         see_through += !w->materials[w->polygons[i].material].opaque;

@@ -100,6 +100,16 @@ typedef struct {
 
 void shadow_counters_add(ShadowCounters *total, const ShadowCounters *part);
 
+/* The cache method's memory of one light: the opaque polygon that last
+ * blocked it, and how often trying it first has paid in this tile (a
+ * shading point's neighbours on a mesh of small triangles are seldom
+ * blocked by the same one, and a miss costs a polygon test). */
+typedef struct {
+    int blocker;               /* the polygon, or -1 */
+    unsigned tries, hits;      /* cache tries in this tile and the hits among them */
+    unsigned skipped;          /* queries the cache sat out since its last try */
+} LightCache;
+
 /* A see-through polygon a shadow ray met, at distance t. */
 typedef struct {
     double t;
@@ -116,7 +126,7 @@ typedef struct ShadowContext {
     int last_blocker;          /* polygon that blocked the last shadow ray, or -1 */
     int last_filtered;         /* transparent polygons the last shadow ray passed */
     unsigned shadow_timer;     /* decisions so far, for timing every 8th */
-    int *light_cache;          /* cache method: last opaque blocker per light, or -1 */
+    LightCache *light_cache;   /* cache method: per light, the last opaque blocker and how often it pays */
     FilteredHit *filtered;     /* the shadow ray's see-through polygons, one slot for each of the world's */
     int nfiltered;
     int verify;                /* 1: check every decision against the shadow ray (--verify-shadows);
@@ -223,6 +233,10 @@ void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_thro
  * ray, remember its blocker when it was opaque and blocked fully. */
 int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q);
 void shadow_cache_remember(ShadowContext *ctx, const ShadowQuery *q, const RGB *light);
+/* Empties the caches of lights [0, nlights) and their tallies: at every
+ * tile's start, so that what the cache does for a pixel does not depend on
+ * the tiles its thread rendered before. */
+void shadow_cache_forget(ShadowContext *ctx, int nlights);
 void shadow_volume_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
 void shadow_volume_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away);
 void shadow_hst_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);

@@ -120,8 +120,7 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
      * what it decides and counts for a pixel (the analysis channels, the
      * statistics) does not depend on which tiles this thread rendered
      * before: the same for any thread count. */
-    for (int i = 0; i < job->world->nlights; i++)
-        ctx->shadow.light_cache[i] = -1;
+    shadow_cache_forget(&ctx->shadow, job->world->nlights);
     if (opt->aa.method)
         return antialiased_tile(ctx, loop, job, x0, y0, x1, y1);
     /* What the cache and pixel coherence carry from pixel to pixel (the
