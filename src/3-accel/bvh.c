@@ -37,15 +37,29 @@ static inline void box_grow(Box *b, const float lo[3], const float hi[3])
     }
 }
 
+/* box_grow as if the boxes came in the opposite order: on a tie the new
+ * value wins (<= for <), so that growing over items from last to first
+ * keeps, of equal bounds (+0 and -0), the one a first-to-last box_grow
+ * keeps, bit for bit; a NaN is ignored, as there. */
+static inline void box_grow_back(Box *b, const float lo[3], const float hi[3])
+{
+    for (int a = 0; a < 3; a++) {
+        b->lo[a] = lo[a] <= b->lo[a] ? lo[a] : b->lo[a];
+        b->hi[a] = hi[a] >= b->hi[a] ? hi[a] : b->hi[a];
+    }
+}
+
 static inline void box_join(Box *b, const Box *c) { box_grow(b, c->lo, c->hi); }
 
-static inline double box_area(const Box *b)
+static inline double area_of(const float lo[3], const float hi[3])
 {
     double e[3];
     for (int a = 0; a < 3; a++)
-        e[a] = b->hi[a] > b->lo[a] ? (double)b->hi[a] - (double)b->lo[a] : 0.0;
+        e[a] = hi[a] > lo[a] ? (double)hi[a] - (double)lo[a] : 0.0;
     return 2.0 * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
 }
+
+static inline double box_area(const Box *b) { return area_of(b->lo, b->hi); }
 
 /* The float nearest x on the side away from the box's inside. */
 static float round_down(double x)
@@ -60,11 +74,26 @@ static float round_up(double x)
     return (double)f < x ? nextafterf(f, HUGE_VALF) : f;
 }
 
+/* The SSE2 passes of the build (binning, partition) do per item in one
+ * vector operation what the plain ones do per axis, with the same float
+ * operations, so the same results bit for bit; bvh_build_plain uses the
+ * plain ones everywhere (tests/test_bvh.c compares the two). */
+#if defined(__SSE2__)
+#define BUILD_SSE 1
+#else
+#define BUILD_SSE 0
+#endif
+
 /* A polygon as the build moves it: its box and centre, records partitioned
- * in place so that every pass reads memory in order. */
+ * in place so that every pass reads memory in order. 48 bytes, lo, hi and
+ * centre each 16-byte aligned, so that they load as vectors: lo's fourth
+ * lane is the polygon's index (masked off before it meets a bound), the
+ * others' are 0. */
 typedef struct {
-    float lo[3], hi[3], centre[3];
+    _Alignas(16) float lo[3];
     uint32_t polygon;
+    float hi[3], hi_pad;
+    float centre[3], centre_pad;
 } BuildItem;
 
 /* A node of the binary tree the build makes first. */
@@ -80,6 +109,7 @@ typedef struct {
     int nnodes, cap;
     int depth;
     int threads;          /* this builder may hand subtrees to threads of its own, up to this many in all */
+    int plain;            /* bvh_build_plain: the reference passes, one axis at a time, every bin swept */
 } Builder;
 
 /* Subtrees of fewer items are built on the thread that reaches them. */
@@ -105,6 +135,382 @@ static inline int bin_of(float c, float lo, float scale)
 {
     float x = (c - lo) * scale;
     return x >= 0.0f ? (x < (float)BINS ? (int)x : BINS - 1) : 0;
+}
+
+/* Per axis and bin: the items and their boxes' union (the fourth lanes
+ * unused). The bins serve only the SAH costs, through areas, which do not
+ * depend on the sign of a zero bound: so the union may be taken in any
+ * order (a box's bound that is -0 in one order may be +0 in another). */
+typedef struct {
+    _Alignas(16) float lo[4];
+    float hi[4];
+} BinBox;
+
+typedef struct {
+    int n[3][BINS];
+    BinBox b[3][BINS];
+} Bins;
+
+static void bins_empty(Bins *bn)
+{
+    for (int a = 0; a < 3; a++)
+        for (int k = 0; k < BINS; k++) {
+            bn->n[a][k] = 0;
+            for (int l = 0; l < 4; l++) {
+                bn->b[a][k].lo[l] = HUGE_VALF;
+                bn->b[a][k].hi[l] = -HUGE_VALF;
+            }
+        }
+}
+
+static inline void binbox_join(BinBox *b, const BinBox *c)
+{
+    for (int a = 0; a < 3; a++) {
+        b->lo[a] = c->lo[a] < b->lo[a] ? c->lo[a] : b->lo[a];
+        b->hi[a] = c->hi[a] > b->hi[a] ? c->hi[a] : b->hi[a];
+    }
+}
+
+/* Bins items it[0, count) by their centres, cb being the centres' union;
+ * scale[a] is BINS over cb's extent on axis a (0 where it cannot split). */
+static void bin_items_plain(Bins *bn, const BuildItem *it, int count, const Box *cb, const float scale[3])
+{
+    for (int i = 0; i < count; i++)
+        for (int a = 0; a < 3; a++) {
+            int k = bin_of(it[i].centre[a], cb->lo[a], scale[a]);
+            BinBox *b = &bn->b[a][k];
+            bn->n[a][k]++;
+            for (int l = 0; l < 3; l++) {
+                b->lo[l] = it[i].lo[l] < b->lo[l] ? it[i].lo[l] : b->lo[l];
+                b->hi[l] = it[i].hi[l] > b->hi[l] ? it[i].hi[l] : b->hi[l];
+            }
+        }
+}
+
+#if BUILD_SSE
+/* All lanes but the fourth. */
+static inline __m128 lanes3(void) { return _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)); }
+
+static inline __m128 load3(const float v[3]) { return _mm_setr_ps(v[0], v[1], v[2], 0.0f); }
+
+static inline void store3(float v[3], __m128 x)
+{
+    float t[4];
+    _mm_storeu_ps(t, x);
+    v[0] = t[0];
+    v[1] = t[1];
+    v[2] = t[2];
+}
+
+/* The three bins of an item's centre c: bin_of lane by lane, (c - lo) *
+ * scale, then maxps(x, 0) sends NaN (maxps returns its second operand when
+ * either is NaN) and negatives (and -0) to 0, minps(., 15) sends 15 and
+ * above (+inf too) to the last bin, and truncation does the rest, as
+ * (int) does on [0, 15]. */
+static inline __m128i bins_of(__m128 c, __m128 lo, __m128 scale)
+{
+    __m128 x = _mm_mul_ps(_mm_sub_ps(c, lo), scale);
+    x = _mm_min_ps(_mm_max_ps(x, _mm_setzero_ps()), _mm_set1_ps((float)(BINS - 1)));
+    return _mm_cvttps_epi32(x);
+}
+
+/* minps(a, b) is a < b ? a : b and maxps(a, b) a > b ? a : b, operand for
+ * operand the plain passes' choices (the box's old bound on a tie or a
+ * NaN). */
+static inline void binbox_grow_sse(BinBox *b, __m128 lo, __m128 hi)
+{
+    _mm_store_ps(b->lo, _mm_min_ps(lo, _mm_load_ps(b->lo)));
+    _mm_store_ps(b->hi, _mm_max_ps(hi, _mm_load_ps(b->hi)));
+}
+
+/* One item into bins bn. */
+static inline void bin_item_sse(Bins *bn, const BuildItem *it, __m128 lo, __m128 sc, __m128 mask)
+{
+    __m128i k = bins_of(_mm_load_ps(it->centre), lo, sc);
+    __m128 l = _mm_and_ps(_mm_load_ps(it->lo), mask), h = _mm_load_ps(it->hi);
+    int k0 = _mm_cvtsi128_si32(k), k1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(k, 1)),
+        k2 = _mm_cvtsi128_si32(_mm_shuffle_epi32(k, 2));
+    bn->n[0][k0]++;
+    bn->n[1][k1]++;
+    bn->n[2][k2]++;
+    binbox_grow_sse(&bn->b[0][k0], l, h);
+    binbox_grow_sse(&bn->b[1][k1], l, h);
+    binbox_grow_sse(&bn->b[2][k2], l, h);
+}
+
+static void bin_items_sse(Bins *bn, const BuildItem *it, int count, const Box *cb, const float scale[3])
+{
+    const __m128 lo = load3(cb->lo), sc = load3(scale), mask = lanes3();
+    for (int i = 0; i < count; i++)
+        bin_item_sse(bn, &it[i], lo, sc, mask);
+}
+
+#define SMALL_BIN 16
+
+/* bin_items_sse for a node of at most SMALL_BIN items, which leave most
+ * bins empty: only the bins the items fall in are made empty before they
+ * are grown (and only those are read: best_split sweeps over the bins that
+ * hold items), instead of all 48. */
+static void bin_items_small_sse(Bins *bn, const BuildItem *it, int count, const Box *cb, const float scale[3])
+{
+    const __m128 lo = load3(cb->lo), sc = load3(scale), mask = lanes3();
+    const __m128 inf = _mm_set1_ps(HUGE_VALF), ninf = _mm_set1_ps(-HUGE_VALF);
+    _Alignas(16) int k[SMALL_BIN][4];
+    memset(bn->n, 0, sizeof bn->n);
+    for (int i = 0; i < count; i++) {
+        _mm_store_si128((__m128i *)k[i], bins_of(_mm_load_ps(it[i].centre), lo, sc));
+        for (int a = 0; a < 3; a++) {
+            bn->n[a][k[i][a]]++;
+            _mm_store_ps(bn->b[a][k[i][a]].lo, inf);
+            _mm_store_ps(bn->b[a][k[i][a]].hi, ninf);
+        }
+    }
+    for (int i = 0; i < count; i++) {
+        __m128 l = _mm_and_ps(_mm_load_ps(it[i].lo), mask), h = _mm_load_ps(it[i].hi);
+        for (int a = 0; a < 3; a++)
+            binbox_grow_sse(&bn->b[a][k[i][a]], l, h);
+    }
+}
+#endif
+
+static void bin_items(const Builder *bd, Bins *bn, const BuildItem *it, int count, const Box *cb, const float scale[3])
+{
+#if BUILD_SSE
+    if (!bd->plain) {
+        if (count <= SMALL_BIN) {
+            bin_items_small_sse(bn, it, count, cb, scale);
+        } else {
+            bins_empty(bn);
+            bin_items_sse(bn, it, count, cb, scale);
+        }
+        return;
+    }
+#else
+    (void)bd; /* one way to bin */
+#endif
+    bins_empty(bn);
+    bin_items_plain(bn, it, count, cb, scale);
+}
+
+/* Bit k set for each bin k of n that holds items. */
+static inline unsigned used_bins(const int n[BINS])
+{
+#if BUILD_SSE && BINS == 16
+    const __m128i zero = _mm_setzero_si128();
+    __m128i e0 = _mm_packs_epi32(_mm_cmpeq_epi32(_mm_loadu_si128((const __m128i *)n), zero),
+                                 _mm_cmpeq_epi32(_mm_loadu_si128((const __m128i *)(n + 4)), zero));
+    __m128i e1 = _mm_packs_epi32(_mm_cmpeq_epi32(_mm_loadu_si128((const __m128i *)(n + 8)), zero),
+                                 _mm_cmpeq_epi32(_mm_loadu_si128((const __m128i *)(n + 12)), zero));
+    return ~(unsigned)_mm_movemask_epi8(_mm_packs_epi16(e0, e1)) & 0xFFFFu;
+#else
+    unsigned m = 0;
+    for (int k = 0; k < BINS; k++)
+        m |= (unsigned)(n[k] != 0) << k;
+    return m;
+#endif
+}
+
+/* The index of m's lowest set bit (m not 0). */
+static inline int lowest_bit(unsigned m)
+{
+#if defined(__GNUC__)
+    return __builtin_ctz(m);
+#else
+    int k = 0;
+    while (!(m & 1u)) {
+        m >>= 1;
+        k++;
+    }
+    return k;
+#endif
+}
+
+/* The binned split of least SAH cost, if below *best_cost: sets *best_axis,
+ * *best_bin (the first bin of the right part) and *best_cost. Axes in
+ * order, on each the boundaries from the top bin down, the first of equal
+ * costs kept. `every`: sweep over every bin (the plain build); otherwise
+ * over the bins that hold items, which tries the same boundaries that can
+ * win: an empty bin changes neither the union nor the counts, so the
+ * boundary below it costs exactly what the one above it does, tried just
+ * before (or neither splits). Small nodes leave most bins empty. */
+static void best_split(const Bins *bn, const Box *bounds, const int splittable[3], int every, int *best_axis,
+                       int *best_bin, double *best_cost)
+{
+    double leaf_area = box_area(bounds);
+    /* The cost is 1 + (1.5 x) / leaf_area, x = left_area nl + right_area s,
+     * each step rounded upward or downward alike: never less for a larger
+     * x. So a boundary whose x is at least the best's cannot win, and its
+     * division is spared (a NaN x fails the test and is computed, to no
+     * avail, as before). */
+    double best_x = 0.0;
+    int have_x = 0;
+    for (int a = 0; a < 3; a++) {
+        if (!splittable[a])
+            continue;
+        int used[BINS], nu = 0;
+        if (every) {
+            for (int k = 0; k < BINS; k++)
+                used[nu++] = k;
+        } else {
+            for (unsigned m = used_bins(bn->n[a]); m; m &= m - 1)
+                used[nu++] = lowest_bit(m);
+        }
+        /* Sweep: areas and counts left of each boundary, then right. */
+        double left_area[BINS];
+        int left_n[BINS];
+        BinBox acc;
+        for (int l = 0; l < 3; l++) {
+            acc.lo[l] = HUGE_VALF;
+            acc.hi[l] = -HUGE_VALF;
+        }
+        int s = 0;
+        for (int u = 0; u < nu - 1; u++) {
+            binbox_join(&acc, &bn->b[a][used[u]]);
+            s += bn->n[a][used[u]];
+            left_area[u] = area_of(acc.lo, acc.hi);
+            left_n[u] = s;
+        }
+        for (int l = 0; l < 3; l++) {
+            acc.lo[l] = HUGE_VALF;
+            acc.hi[l] = -HUGE_VALF;
+        }
+        s = 0;
+        for (int u = nu - 1; u > 0; u--) {
+            int k = used[u];
+            binbox_join(&acc, &bn->b[a][k]);
+            s += bn->n[a][k];
+            int nl = left_n[u - 1];
+            if (nl == 0 || s == 0)
+                continue;
+            double x = left_area[u - 1] * nl + area_of(acc.lo, acc.hi) * s;
+            if (!every && have_x && x >= best_x)
+                continue;
+            double cost = COST_TRAVERSE + COST_INTERSECT * x / leaf_area;
+            if (cost < *best_cost) {
+                *best_cost = cost;
+                *best_axis = a;
+                *best_bin = k;
+                best_x = x;
+                have_x = 1;
+            }
+        }
+    }
+}
+
+/* Partition of it[0, count): items whose centre falls in a bin below
+ * `split` on axis a go left; returns how many, with the halves' bounds
+ * (lb, rb: those of their boxes, lcb, rcb: of their centres). The plain
+ * pass grows rb over the right half afterwards, first to last; the fast
+ * ones as the items reach their places there, last to first, by
+ * box_grow_back, which gives the same bounds bit for bit. */
+static int partition_plain(BuildItem *it, int count, int a, float clo, float scale, int split, Box *lb, Box *lcb,
+                           Box *rb, Box *rcb)
+{
+    int i = 0, j = count - 1;
+    while (i <= j) {
+        if (bin_of(it[i].centre[a], clo, scale) < split) {
+            box_grow(lb, it[i].lo, it[i].hi);
+            box_grow(lcb, it[i].centre, it[i].centre);
+            i++;
+        } else {
+            BuildItem t = it[i];
+            it[i] = it[j];
+            it[j--] = t;
+        }
+    }
+    for (int k = i; k < count; k++) {
+        box_grow(rb, it[k].lo, it[k].hi);
+        box_grow(rcb, it[k].centre, it[k].centre);
+    }
+    return i;
+}
+
+#if BUILD_SSE
+/* minps/maxps where the new value wins ties: box_grow_back's choice (a
+ * NaN new value still loses, as cmpleps/cmpgeps are false for it). */
+static inline __m128 min_back(__m128 x, __m128 b)
+{
+    __m128 take = _mm_cmple_ps(x, b);
+    return _mm_or_ps(_mm_and_ps(take, x), _mm_andnot_ps(take, b));
+}
+
+static inline __m128 max_back(__m128 x, __m128 b)
+{
+    __m128 take = _mm_cmpge_ps(x, b);
+    return _mm_or_ps(_mm_and_ps(take, x), _mm_andnot_ps(take, b));
+}
+
+static int partition_sse(BuildItem *it, int count, int a, float clo, float scale, int split, Box *lb, Box *lcb,
+                         Box *rb, Box *rcb)
+{
+    const __m128 mask = lanes3();
+    __m128 lb_lo = load3(lb->lo), lb_hi = load3(lb->hi), lc_lo = load3(lcb->lo), lc_hi = load3(lcb->hi);
+    __m128 rb_lo = load3(rb->lo), rb_hi = load3(rb->hi), rc_lo = load3(rcb->lo), rc_hi = load3(rcb->hi);
+    int i = 0, j = count - 1;
+    while (i <= j) {
+        __m128 l = _mm_load_ps(it[i].lo), h = _mm_load_ps(it[i].hi), c = _mm_load_ps(it[i].centre);
+        __m128 lm = _mm_and_ps(l, mask);
+        if (bin_of(it[i].centre[a], clo, scale) < split) {
+            lb_lo = _mm_min_ps(lm, lb_lo);
+            lb_hi = _mm_max_ps(h, lb_hi);
+            lc_lo = _mm_min_ps(c, lc_lo);
+            lc_hi = _mm_max_ps(c, lc_hi);
+            i++;
+        } else {
+            /* it[i] goes to it[j], its place: j only comes down. */
+            it[i] = it[j];
+            _mm_store_ps(it[j].lo, l);
+            _mm_store_ps(it[j].hi, h);
+            _mm_store_ps(it[j].centre, c);
+            j--;
+            rb_lo = min_back(lm, rb_lo);
+            rb_hi = max_back(h, rb_hi);
+            rc_lo = _mm_min_ps(c, rc_lo); /* centre bounds: order does not matter (Bins) */
+            rc_hi = _mm_max_ps(c, rc_hi);
+        }
+    }
+    store3(lb->lo, lb_lo);
+    store3(lb->hi, lb_hi);
+    store3(lcb->lo, lc_lo);
+    store3(lcb->hi, lc_hi);
+    store3(rb->lo, rb_lo);
+    store3(rb->hi, rb_hi);
+    store3(rcb->lo, rc_lo);
+    store3(rcb->hi, rc_hi);
+    return i;
+}
+#else
+static int partition_fused(BuildItem *it, int count, int a, float clo, float scale, int split, Box *lb, Box *lcb,
+                           Box *rb, Box *rcb)
+{
+    int i = 0, j = count - 1;
+    while (i <= j) {
+        if (bin_of(it[i].centre[a], clo, scale) < split) {
+            box_grow(lb, it[i].lo, it[i].hi);
+            box_grow(lcb, it[i].centre, it[i].centre);
+            i++;
+        } else {
+            BuildItem t = it[i];
+            it[i] = it[j];
+            it[j--] = t;
+            box_grow_back(rb, t.lo, t.hi);
+            box_grow(rcb, t.centre, t.centre); /* centre bounds: order does not matter (Bins) */
+        }
+    }
+    return i;
+}
+#endif
+
+static int partition(const Builder *bd, BuildItem *it, int count, int a, float clo, float scale, int split, Box *lb,
+                     Box *lcb, Box *rb, Box *rcb)
+{
+    if (bd->plain)
+        return partition_plain(it, count, a, clo, scale, split, lb, lcb, rb, rcb);
+#if BUILD_SSE
+    return partition_sse(it, count, a, clo, scale, split, lb, lcb, rb, rcb);
+#else
+    return partition_fused(it, count, a, clo, scale, split, lb, lcb, rb, rcb);
+#endif
 }
 
 /* items[first, first + count), whose boxes' union is `bounds` and whose
@@ -141,6 +547,7 @@ static int build_halves(Builder *bd, int first, int mid, int count, int depth, c
         memset(&h, 0, sizeof h);
         h.sub.items = bd->items;
         h.sub.threads = bd->threads / 2;
+        h.sub.plain = bd->plain;
         h.first = first + mid;
         h.count = count - mid;
         h.depth = depth;
@@ -214,54 +621,10 @@ static int build(Builder *bd, int first, int count, int depth, const Box *bounds
         splittable[a] = ext > 0.0f && ext < HUGE_VALF && (float)BINS / ext < HUGE_VALF;
         scale[a] = splittable[a] ? (float)BINS / ext : 0.0f;
     }
-    /* Per axis and bin: the items and their boxes' union. */
-    int n[3][BINS];
-    Box b[3][BINS];
     if (count > 1 && !halve_only) {
-        for (int a = 0; a < 3; a++)
-            for (int k = 0; k < BINS; k++) {
-                n[a][k] = 0;
-                box_empty(&b[a][k]);
-            }
-        for (int i = 0; i < count; i++)
-            for (int a = 0; a < 3; a++) {
-                int k = bin_of(it[i].centre[a], cbounds->lo[a], scale[a]);
-                n[a][k]++;
-                box_grow(&b[a][k], it[i].lo, it[i].hi);
-            }
-        double leaf_area = box_area(bounds);
-        for (int a = 0; a < 3; a++) {
-            if (!splittable[a])
-                continue;
-            /* Sweep: areas and counts left of each boundary, then right. */
-            double left_area[BINS];
-            int left_n[BINS];
-            Box acc;
-            box_empty(&acc);
-            int s = 0;
-            for (int k = 0; k < BINS - 1; k++) {
-                box_join(&acc, &b[a][k]);
-                s += n[a][k];
-                left_area[k] = box_area(&acc);
-                left_n[k] = s;
-            }
-            box_empty(&acc);
-            s = 0;
-            for (int k = BINS - 1; k > 0; k--) {
-                box_join(&acc, &b[a][k]);
-                s += n[a][k];
-                int nl = left_n[k - 1];
-                if (nl == 0 || s == 0)
-                    continue;
-                double cost = COST_TRAVERSE +
-                              COST_INTERSECT * (left_area[k - 1] * nl + box_area(&acc) * s) / leaf_area;
-                if (cost < best_cost) {
-                    best_cost = cost;
-                    best_axis = a;
-                    best_bin = k;
-                }
-            }
-        }
+        Bins bn;
+        bin_items(bd, &bn, it, count, cbounds, scale);
+        best_split(&bn, bounds, splittable, bd->plain, &best_axis, &best_bin, &best_cost);
     }
     int by_sah = best_axis >= 0 && best_cost < COST_INTERSECT * count;
     if (!by_sah) {
@@ -297,23 +660,7 @@ static int build(Builder *bd, int first, int count, int depth, const Box *bounds
         }
     } else {
         int a = best_axis;
-        int i = 0, j = count - 1;
-        while (i <= j) {
-            if (bin_of(it[i].centre[a], cbounds->lo[a], scale[a]) < best_bin) {
-                box_grow(&lb, it[i].lo, it[i].hi);
-                box_grow(&lcb, it[i].centre, it[i].centre);
-                i++;
-            } else {
-                BuildItem t = it[i];
-                it[i] = it[j];
-                it[j--] = t;
-            }
-        }
-        mid = i;
-        for (int k = mid; k < count; k++) {
-            box_grow(&rb, it[k].lo, it[k].hi);
-            box_grow(&rcb, it[k].centre, it[k].centre);
-        }
+        mid = partition(bd, it, count, a, cbounds->lo[a], scale[a], best_bin, &lb, &lcb, &rb, &rcb);
         if (mid == 0 || mid == count) {
             /* cannot happen with both halves non-empty by construction; stay safe */
             mid = count / 2;
@@ -414,14 +761,16 @@ static int collapse(Collapser *c, uint32_t bi, int depth)
     return ni;
 }
 
-int bvh_build(Bvh *b, const World *w, int threads)
+static int build_bvh(Bvh *b, const World *w, int threads, int plain)
 {
     memset(b, 0, sizeof *b);
     int n = w->npolygons;
     Builder bd;
     memset(&bd, 0, sizeof bd);
     bd.threads = threads > 1 ? threads : 1;
-    bd.items = malloc(sizeof *bd.items * (size_t)(n > 0 ? n : 1));
+    bd.plain = plain;
+    /* 16-byte aligned for the vector loads (sizeof (BuildItem) is 48). */
+    bd.items = aligned_alloc(16, sizeof *bd.items * (size_t)(n > 0 ? n : 1));
     uint32_t *order = malloc(sizeof *order * (size_t)(n > 0 ? n : 1));
     if (!bd.items || !order) {
         free(bd.items);
@@ -442,6 +791,8 @@ int bvh_build(Bvh *b, const World *w, int threads)
             it->centre[a] = (float)(0.5 * (lo[a] + hi[a]));
         }
         it->polygon = (uint32_t)i;
+        it->hi_pad = 0.0f;
+        it->centre_pad = 0.0f;
         box_grow(&bounds, it->lo, it->hi);
         box_grow(&cbounds, it->centre, it->centre);
     }
@@ -508,6 +859,10 @@ int bvh_build(Bvh *b, const World *w, int threads)
     b->depth = c.depth;
     return 0;
 }
+
+int bvh_build(Bvh *b, const World *w, int threads) { return build_bvh(b, w, threads, 0); }
+
+int bvh_build_plain(Bvh *b, const World *w, int threads) { return build_bvh(b, w, threads, 1); }
 
 void bvh_free(Bvh *b)
 {

@@ -77,6 +77,10 @@ typedef struct {
  * subtrees on up to `threads` threads; the hierarchy is the same for any
  * number. Returns 0, or -1 when out of memory. */
 int bvh_build(Bvh *b, const World *w, int threads);
+/* bvh_build by the plain passes alone (no SIMD, every bin swept, the right
+ * half's bounds in a pass of their own): the reference bvh_build must
+ * equal bit for bit (tests/test_bvh.c). */
+int bvh_build_plain(Bvh *b, const World *w, int threads);
 void bvh_free(Bvh *b);
 
 /* The deepest the binary tree is built (the 4-wide one is about half), and
