@@ -761,6 +761,34 @@ static int collapse(Collapser *c, uint32_t bi, int depth)
     return ni;
 }
 
+/* The margin every polygon's box grows by, beyond rounding to float.
+ * The polygon test's distance t is the ray's distance to the polygon's
+ * stored plane, (d - n.org) / (n.dir), whose rounding (and the stored
+ * plane's own, at the vertices) can put the computed hit a few units of
+ * 2^-53 of the coordinates' size outside the polygon's exact box: a box
+ * face on a coordinate that float holds exactly (0, integers: the box
+ * faces of a city, a vertex at -0) then gets no slack from the rounding
+ * to float, and a polygon whose computed t is the nearest could sit in a
+ * box the ray enters just beyond that t, and be culled (tests/test_bvh.c's
+ * soup of zero coordinates: one ray in 6672 took the next polygon, 2e-16
+ * farther). 2^-32 of the largest coordinate a polygon or the camera (where
+ * rays start) has covers that error up to rays within 1e-6 of the plane's
+ * direction; it is 2e-10 of the scene's size, too little to cost a box
+ * test. A scene beyond float's range gets none (its boxes are infinite). */
+static double box_margin(const World *w)
+{
+    const Camera *c = &w->camera;
+    double s = fabs(c->location.x) + fabs(c->location.y) + fabs(c->location.z) + v3_length(c->right) +
+               v3_length(c->up) + v3_length(c->direction);
+    for (int i = 0; i < w->npolygons; i++) {
+        const Polygon *p = &w->polygons[i];
+        const double m[6] = { p->bbox_min.x, p->bbox_min.y, p->bbox_min.z, p->bbox_max.x, p->bbox_max.y, p->bbox_max.z };
+        for (int k = 0; k < 6; k++)
+            s = fabs(m[k]) > s ? fabs(m[k]) : s;
+    }
+    return isfinite(s) ? s * 0x1p-32 : 0.0;
+}
+
 static int build_bvh(Bvh *b, const World *w, int threads, int plain)
 {
     memset(b, 0, sizeof *b);
@@ -780,14 +808,15 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     Box bounds, cbounds;
     box_empty(&bounds);
     box_empty(&cbounds);
+    const double margin = box_margin(w);
     for (int i = 0; i < n; i++) {
         const Polygon *p = &w->polygons[i];
         BuildItem *it = &bd.items[i];
         double lo[3] = { p->bbox_min.x, p->bbox_min.y, p->bbox_min.z };
         double hi[3] = { p->bbox_max.x, p->bbox_max.y, p->bbox_max.z };
         for (int a = 0; a < 3; a++) {
-            it->lo[a] = round_down(lo[a]);
-            it->hi[a] = round_up(hi[a]);
+            it->lo[a] = round_down(lo[a] - margin);
+            it->hi[a] = round_up(hi[a] + margin);
             it->centre[a] = (float)(0.5 * (lo[a] + hi[a]));
         }
         it->polygon = (uint32_t)i;
