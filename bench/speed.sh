@@ -8,7 +8,7 @@
 #   - ns per shadow decision for each method (conventional, cache, volume,
 #     hst, embree; none for the fixed cost of a decision): shadow-testing
 #     time over shadow queries of --stats-json, 640x480, 1 thread (shadow
-#     testing is timed on every 8th decision and scaled); with conventional's
+#     testing is timed on every 31st decision and scaled); with conventional's
 #     ray/polygon tests per shadow ray, and embree's disagreements with the
 #     exact shadow ray from one more render with --verify-shadows;
 #   - the whole render at 1280x960 on 2 threads, every method and POV-Ray 3.7
@@ -215,7 +215,7 @@ with open(out, "w") as o:
 
     o.write("\n## Shadow decisions (640x480, 1 thread)\n\n")
     o.write("Nanoseconds per shadow decision: shadow-testing time over shadow queries (`--stats-json`; the "
-            "time is taken on every 8th decision and scaled). *none* decides nothing and measures the fixed "
+            "time is taken on every 31st decision and scaled). *none* decides nothing and measures the fixed "
             "cost of a decision (the call and the clock). "
             + (f"*embree* is Embree {re.search(r'Embree ([0-9.]+)', version).group(1)}'s `rtcOccluded1` with the shadow "
                "ray's rules; *embree vs ray* is how many of its decisions differ from the exact shadow ray's "

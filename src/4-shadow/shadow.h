@@ -125,7 +125,7 @@ typedef struct ShadowContext {
     int last_scheme;           /* how the last decision was made (ShadowScheme) */
     int last_blocker;          /* polygon that blocked the last shadow ray, or -1 */
     int last_filtered;         /* transparent polygons the last shadow ray passed */
-    unsigned shadow_timer;     /* decisions so far, for timing every 8th */
+    unsigned shadow_timer;     /* decisions until the next timed one (shadow_decide.c) */
     LightCache *light_cache;   /* cache method: per light, the last opaque blocker and how often it pays */
     FilteredHit *filtered;     /* the shadow ray's see-through polygons, one slot for each of the world's */
     int nfiltered;
