@@ -219,7 +219,10 @@ typedef struct {
  * taken first. */
 static inline int push_children(Pending *stack, int sp, const BvhNode *n, unsigned mask, const double *enter)
 {
-    Pending hit[BVH_WIDTH];
+    /* Sorted where they will lie on the stack: sorting into a local array
+     * and copying it over became a memcpy call per node (4% of desk.pov's
+     * whole render). */
+    Pending *hit = stack + sp;
     int m = 0;
     for (int k = 0; k < BVH_WIDTH; k++) {
         if (!(mask & (1u << k)) || n->child[k] == BVH_EMPTY)
@@ -233,9 +236,7 @@ static inline int push_children(Pending *stack, int sp, const BvhNode *n, unsign
         hit[i].child = n->child[k];
         hit[i].enter = enter[k];
     }
-    for (int i = 0; i < m; i++)
-        stack[sp++] = hit[i];
-    return sp;
+    return sp + m;
 }
 
 /* The hierarchy's two traversals (bvh_traverse.h), once with the SSE2 box
