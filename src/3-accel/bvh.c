@@ -37,18 +37,6 @@ static inline void box_grow(Box *b, const float lo[3], const float hi[3])
     }
 }
 
-/* box_grow as if the boxes came in the opposite order: on a tie the new
- * value wins (<= for <), so that growing over items from last to first
- * keeps, of equal bounds (+0 and -0), the one a first-to-last box_grow
- * keeps, bit for bit; a NaN is ignored, as there. */
-static inline void box_grow_back(Box *b, const float lo[3], const float hi[3])
-{
-    for (int a = 0; a < 3; a++) {
-        b->lo[a] = lo[a] <= b->lo[a] ? lo[a] : b->lo[a];
-        b->hi[a] = hi[a] >= b->hi[a] ? hi[a] : b->hi[a];
-    }
-}
-
 static inline void box_join(Box *b, const Box *c) { box_grow(b, c->lo, c->hi); }
 
 static inline double area_of(const float lo[3], const float hi[3])
@@ -151,15 +139,20 @@ typedef struct {
     BinBox b[3][BINS];
 } Bins;
 
+static inline void binbox_empty(BinBox *b)
+{
+    for (int l = 0; l < 4; l++) {
+        b->lo[l] = HUGE_VALF;
+        b->hi[l] = -HUGE_VALF;
+    }
+}
+
 static void bins_empty(Bins *bn)
 {
     for (int a = 0; a < 3; a++)
         for (int k = 0; k < BINS; k++) {
             bn->n[a][k] = 0;
-            for (int l = 0; l < 4; l++) {
-                bn->b[a][k].lo[l] = HUGE_VALF;
-                bn->b[a][k].hi[l] = -HUGE_VALF;
-            }
+            binbox_empty(&bn->b[a][k]);
         }
 }
 
@@ -359,10 +352,7 @@ static void best_split(const Bins *bn, const Box *bounds, const int splittable[3
         double left_area[BINS];
         int left_n[BINS];
         BinBox acc;
-        for (int l = 0; l < 3; l++) {
-            acc.lo[l] = HUGE_VALF;
-            acc.hi[l] = -HUGE_VALF;
-        }
+        binbox_empty(&acc);
         int s = 0;
         for (int u = 0; u < nu - 1; u++) {
             binbox_join(&acc, &bn->b[a][used[u]]);
@@ -370,10 +360,7 @@ static void best_split(const Bins *bn, const Box *bounds, const int splittable[3
             left_area[u] = area_of(acc.lo, acc.hi);
             left_n[u] = s;
         }
-        for (int l = 0; l < 3; l++) {
-            acc.lo[l] = HUGE_VALF;
-            acc.hi[l] = -HUGE_VALF;
-        }
+        binbox_empty(&acc);
         s = 0;
         for (int u = nu - 1; u > 0; u--) {
             int k = used[u];
@@ -400,9 +387,11 @@ static void best_split(const Bins *bn, const Box *bounds, const int splittable[3
 /* Partition of it[0, count): items whose centre falls in a bin below
  * `split` on axis a go left; returns how many, with the halves' bounds
  * (lb, rb: those of their boxes, lcb, rcb: of their centres). The plain
- * pass grows rb over the right half afterwards, first to last; the fast
- * ones as the items reach their places there, last to first, by
- * box_grow_back, which gives the same bounds bit for bit. */
+ * pass grows rb over the right half afterwards, first to last; the SSE2
+ * one as the items reach their places there, last to first, the new value
+ * winning ties (<= for <), which keeps of equal bounds (+0 and -0) the one
+ * the first-to-last pass keeps: the same bounds bit for bit. Without SSE2
+ * the plain pass is the only one. */
 static int partition_plain(BuildItem *it, int count, int a, float clo, float scale, int split, Box *lb, Box *lcb,
                            Box *rb, Box *rcb)
 {
@@ -426,8 +415,8 @@ static int partition_plain(BuildItem *it, int count, int a, float clo, float sca
 }
 
 #if BUILD_SSE
-/* minps/maxps where the new value wins ties: box_grow_back's choice (a
- * NaN new value still loses, as cmpleps/cmpgeps are false for it). */
+/* minps/maxps where the new value wins ties (a NaN new value still
+ * loses, as cmpleps/cmpgeps are false for it). */
 static inline __m128 min_back(__m128 x, __m128 b)
 {
     __m128 take = _mm_cmple_ps(x, b);
@@ -479,26 +468,6 @@ static int partition_sse(BuildItem *it, int count, int a, float clo, float scale
     store3(rcb->hi, rc_hi);
     return i;
 }
-#else
-static int partition_fused(BuildItem *it, int count, int a, float clo, float scale, int split, Box *lb, Box *lcb,
-                           Box *rb, Box *rcb)
-{
-    int i = 0, j = count - 1;
-    while (i <= j) {
-        if (bin_of(it[i].centre[a], clo, scale) < split) {
-            box_grow(lb, it[i].lo, it[i].hi);
-            box_grow(lcb, it[i].centre, it[i].centre);
-            i++;
-        } else {
-            BuildItem t = it[i];
-            it[i] = it[j];
-            it[j--] = t;
-            box_grow_back(rb, t.lo, t.hi);
-            box_grow(rcb, t.centre, t.centre); /* centre bounds: order does not matter (Bins) */
-        }
-    }
-    return i;
-}
 #endif
 
 static int partition(const Builder *bd, BuildItem *it, int count, int a, float clo, float scale, int split, Box *lb,
@@ -509,7 +478,7 @@ static int partition(const Builder *bd, BuildItem *it, int count, int a, float c
 #if BUILD_SSE
     return partition_sse(it, count, a, clo, scale, split, lb, lcb, rb, rcb);
 #else
-    return partition_fused(it, count, a, clo, scale, split, lb, lcb, rb, rcb);
+    return partition_plain(it, count, a, clo, scale, split, lb, lcb, rb, rcb);
 #endif
 }
 
@@ -778,13 +747,10 @@ static int collapse(Collapser *c, uint32_t bi, int depth)
 static double box_margin(const World *w)
 {
     const Camera *c = &w->camera;
-    double s = fabs(c->location.x) + fabs(c->location.y) + fabs(c->location.z) + v3_length(c->right) +
-               v3_length(c->up) + v3_length(c->direction);
+    double s = v3_max_abs(c->location) + v3_length(c->right) + v3_length(c->up) + v3_length(c->direction);
     for (int i = 0; i < w->npolygons; i++) {
         const Polygon *p = &w->polygons[i];
-        const double m[6] = { p->bbox_min.x, p->bbox_min.y, p->bbox_min.z, p->bbox_max.x, p->bbox_max.y, p->bbox_max.z };
-        for (int k = 0; k < 6; k++)
-            s = fabs(m[k]) > s ? fabs(m[k]) : s;
+        s = fmax(s, fmax(v3_max_abs(p->bbox_min), v3_max_abs(p->bbox_max)));
     }
     return isfinite(s) ? s * 0x1p-32 : 0.0;
 }
