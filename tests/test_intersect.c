@@ -1,13 +1,113 @@
-/* Ray/polygon intersection and the inside test, holes included. */
+/* Ray/polygon intersection and the inside test, holes included; and the
+ * outline boxes' shortcut (World.outline_box: an outline the ray is
+ * certainly outside of is passed over) against the full crossing count,
+ * on lattices (a square with 3 x 3 holes) and stars (one concave outline)
+ * turned and moved far from the origin, for rays aimed at random points, at their vertices and at
+ * points on their edges: the same hits at the same distances, bit for bit. */
 #include <math.h>
+#include <string.h>
 
 #include "fixtures.h"
 #include "intersect.h"
 #include "tap.h"
 #include "world.h"
 
+/* A 2.4-wide square with a 3 x 3 grid of 0.6-wide square holes, in z = 0. */
+static SceneObject *lattice(Scene *s)
+{
+    Vec3 pts[50];
+    int starts[11], n = 0;
+    const double outer[4][2] = { { -1.2, -1.2 }, { 1.2, -1.2 }, { 1.2, 1.2 }, { -1.2, 1.2 } };
+    starts[0] = 0;
+    for (int c = 0; c <= 4; c++)
+        pts[n++] = v3(outer[c % 4][0], outer[c % 4][1], 0);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double x = -1.05 + i * 0.75, y = -1.05 + j * 0.75;
+            const double hole[4][2] = { { x, y }, { x + 0.6, y }, { x + 0.6, y + 0.6 }, { x, y + 0.6 } };
+            starts[1 + 3 * i + j] = n;
+            for (int c = 0; c <= 4; c++)
+                pts[n++] = v3(hole[c % 4][0], hole[c % 4][1], 0);
+        }
+    starts[10] = n;
+    return fixture_polygon(s, pts, n, starts, 10);
+}
+
+/* A five-pointed star, concave, of one outline of 10 points, in z = 0. */
+static SceneObject *star(Scene *s)
+{
+    Vec3 pts[11];
+    for (int i = 0; i <= 10; i++) {
+        double r = i % 2 ? 0.5 : 1.3, a = 2.0 * M_PI * (i % 10) / 10.0;
+        pts[i] = v3(r * cos(a), r * sin(a), 0);
+    }
+    int starts[] = { 0, 11 };
+    return fixture_polygon(s, pts, 11, starts, 1);
+}
+
+/* Rays at lattices and stars turned and moved: with and without the outline boxes,
+ * the same answer, bit for bit. Returns the disagreements; counts hits and
+ * misses. */
+static int outline_boxes_agree(int *hits, int *misses)
+{
+    TestRng rng = { 0x2545f4914f6cdd1dull };
+    int wrong = 0;
+    for (int shape = 0; shape < 12; shape++) {
+        Scene *s = fixture_scene(2);
+        SceneObject *o = shape % 3 == 2 ? star(s) : lattice(s);
+        Vec3 turn = v3(rng_range(&rng, -180, 180), rng_range(&rng, -180, 180), rng_range(&rng, -180, 180));
+        transform_rotate(&o->transform, turn);
+        double far = shape < 4 ? 0.0 : shape < 8 ? 100.0 : 1e6;
+        Vec3 move = v3(rng_range(&rng, -far, far), rng_range(&rng, -far, far), rng_range(&rng, -far, far));
+        transform_translate(&o->transform, move);
+        World w;
+        WorldError err;
+        if (world_build(&w, s, &err) != 0 || w.npolygons != 1 || !w.outline_box) {
+            scene_free(s);
+            return -1;
+        }
+        const Polygon *p = &w.polygons[0];
+        OutlineBox *boxes = w.outline_box;
+        for (int r = 0; r < 4000; r++) {
+            /* the target: a random point of the lattice's box, a vertex, or a point on an edge */
+            Vec3 target;
+            int k = (int)(rng_uniform(&rng) * p->npoints) % p->npoints;
+            Vec3 a = w.points[p->first_point + k], b = w.points[p->first_point + (k + 1) % p->npoints];
+            double kind = rng_uniform(&rng);
+            if (kind < 0.4)
+                target = v3(rng_range(&rng, p->bbox_min.x, p->bbox_max.x),
+                            rng_range(&rng, p->bbox_min.y, p->bbox_max.y),
+                            rng_range(&rng, p->bbox_min.z, p->bbox_max.z));
+            else if (kind < 0.7)
+                target = a;
+            else
+                target = v3_add(a, v3_scale(v3_sub(b, a), rng_uniform(&rng)));
+            Vec3 from = v3_add(target, v3(rng_range(&rng, -5, 5), rng_range(&rng, -5, 5), rng_range(&rng, -5, 5)));
+            Vec3 dir = v3_sub(target, from);
+            w.outline_box = boxes;
+            double fast = intersect_polygon(&w, p, from, dir);
+            w.outline_box = NULL;
+            double full = intersect_polygon(&w, p, from, dir);
+            w.outline_box = boxes;
+            if (memcmp(&fast, &full, sizeof fast) != 0)
+                wrong++;
+            *hits += full >= 0.0;
+            *misses += full < 0.0;
+        }
+        world_free(&w);
+        scene_free(s);
+    }
+    return wrong;
+}
+
 int main(void)
 {
+    int hits = 0, misses = 0;
+    int wrong = outline_boxes_agree(&hits, &misses);
+    tap_ok(wrong == 0, "outline boxes (lattices and stars): the same hits as the full crossing count (%d differ)", wrong);
+    tap_ok(hits > 10000 && misses > 10000, "outline boxes: rays both hit (%d) and miss (%d) the lattices", hits,
+           misses);
+
     Scene *s = fixture_scene(8);
     /* A 4x4 square frame with a 2x2 hole, in the z = 0 plane (POV-Ray
      * polygon semantics: two closed outlines, even-odd inside). */

@@ -12,7 +12,7 @@
 
 typedef struct {
     World *w;
-    int cap_polygons, cap_points, cap_outlines, cap_normals, cap_planes, cap_materials, cap_uvs;
+    int cap_polygons, cap_points, cap_outlines, cap_outline_boxes, cap_normals, cap_planes, cap_materials, cap_uvs;
     int cap_maps, cap_map_entries;
     /* The texture_maps built so far, by their entries (a hash set of the
      * description's entry arrays, which copies of a texture share), so
@@ -336,8 +336,10 @@ static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, in
         return 0; /* no area, nothing to hit */
     if (n == 3 && noutlines == 1)
         return add_triangle(b, pts[0], pts[1], pts[2], NULL, material);
+    const int boxed = polygon_has_outline_boxes(noutlines, n);
     if (GROW(b, polygons, cap_polygons, w->npolygons) || GROW(b, points, cap_points, w->npoints + n) ||
-        GROW(b, outline_start, cap_outlines, w->noutline_starts + noutlines + 1))
+        GROW(b, outline_start, cap_outlines, w->noutline_starts + noutlines + 1) ||
+        (boxed && GROW(b, outline_box, cap_outline_boxes, w->noutline_starts + noutlines + 1)))
         return -1;
     Polygon *p = &w->polygons[w->npolygons];
     memset(p, 0, sizeof *p);
@@ -351,6 +353,14 @@ static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, in
     p->smooth_normals = -1;
     p->uv = -1;
     p->material = material;
+    for (int k = 0; boxed && k < noutlines; k++) {
+        OutlineBox box = { pts[starts[k]], pts[starts[k]] };
+        for (int i = starts[k] + 1; i < starts[k + 1]; i++) {
+            box.lo = v3_min(box.lo, pts[i]);
+            box.hi = v3_max(box.hi, pts[i]);
+        }
+        w->outline_box[w->noutline_starts + k] = box;
+    }
     for (int k = 0; k <= noutlines; k++)
         w->outline_start[w->noutline_starts++] = w->npoints + starts[k];
     memcpy(&w->points[w->npoints], pts, sizeof(Vec3) * (size_t)n);
@@ -738,6 +748,7 @@ void world_free(World *w)
     free(w->polygons);
     free(w->points);
     free(w->outline_start);
+    free(w->outline_box);
     free(w->vertex_normals);
     free(w->uvs);
     if (w->sky)

@@ -5,6 +5,8 @@
  * dominant axis. */
 #include "intersect.h"
 
+#include <string.h>
+
 static inline double comp(Vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
 
 /* Twice the signed area of (a, b, q) in the projection. */
@@ -103,18 +105,37 @@ RayFrame ray_frame(Vec3 org, Vec3 dir)
     return f;
 }
 
-/* A point's coordinate on axis a (0, 1, 2: x, y, z), by index. */
-static inline double vcomp(const Vec3 *p, int a)
+/* A point's coordinate at byte offset `at` (axis * sizeof(double)) of
+ * its Vec3: one load. Copying the point into an array to index it, as
+ * this did, cost a store and a reload per coordinate, and the polygon
+ * tests run per shadow ray. */
+_Static_assert(sizeof(Vec3) == 3 * sizeof(double), "a Vec3 is three doubles, unpadded");
+static inline double coord_at(const Vec3 *p, size_t at)
 {
-    const double c[3] = { p->x, p->y, p->z };
-    return c[a];
+    double c;
+    memcpy(&c, (const unsigned char *)p + at, sizeof c);
+    return c;
 }
 
-static inline void frame_project(const RayFrame *f, const Vec3 *p, double *x, double *y)
+/* The frame's axes as byte offsets into a Vec3, and its shear, read once
+ * per polygon rather than per point. */
+typedef struct {
+    size_t x, y, z;
+    double ox, oy, oz, sx, sy;
+} FrameAxes;
+
+static inline FrameAxes frame_axes(const RayFrame *f)
 {
-    double z = vcomp(p, f->kz) - f->oz;
-    *x = (vcomp(p, f->kx) - f->ox) - f->sx * z;
-    *y = (vcomp(p, f->ky) - f->oy) - f->sy * z;
+    FrameAxes a = { (size_t)f->kx * sizeof(double), (size_t)f->ky * sizeof(double), (size_t)f->kz * sizeof(double),
+                    f->ox, f->oy, f->oz, f->sx, f->sy };
+    return a;
+}
+
+static inline void frame_project(const FrameAxes *a, const Vec3 *p, double *x, double *y)
+{
+    double z = coord_at(p, a->z) - a->oz;
+    *x = (coord_at(p, a->x) - a->ox) - a->sx * z;
+    *y = (coord_at(p, a->y) - a->oy) - a->sy * z;
 }
 
 /* Twice the signed area of (origin, a, b) in the frame: where the ray passes
@@ -140,9 +161,10 @@ static inline double intersect_triangle_nd(Vec3 normal, double d, const Vec3 *v,
     if (!(t > 0.0 && t < tmax))
         return -1.0;
     double ax, ay, bx, by, cx, cy;
-    frame_project(f, &v[0], &ax, &ay);
-    frame_project(f, &v[1], &bx, &by);
-    frame_project(f, &v[2], &cx, &cy);
+    const FrameAxes axes = frame_axes(f);
+    frame_project(&axes, &v[0], &ax, &ay);
+    frame_project(&axes, &v[1], &bx, &by);
+    frame_project(&axes, &v[2], &cx, &cy);
     double u = edge_function(bx, by, cx, cy), vv = edge_function(cx, cy, ax, ay), ww = edge_function(ax, ay, bx, by);
     if ((u < 0.0 || vv < 0.0 || ww < 0.0) && (u > 0.0 || vv > 0.0 || ww > 0.0))
         return -1.0;
@@ -167,21 +189,47 @@ static double intersect_triangle(const Polygon *p, const Vec3 *v, const RayFrame
  * returns 1 when the ray meets the outline's border. */
 static inline int outline_crossings(const Vec3 *pts, int n, const RayFrame *f, int *inside)
 {
+    const FrameAxes axes = frame_axes(f);
+    int in = *inside; /* a local, so that its stores do not make the frame's fields be read again */
     double px, py;
-    frame_project(f, &pts[n - 1], &px, &py);
+    frame_project(&axes, &pts[n - 1], &px, &py);
     for (int i = 0; i < n; i++) {
         double qx, qy;
-        frame_project(f, &pts[i], &qx, &qy);
+        frame_project(&axes, &pts[i], &qx, &qy);
         double e = edge_function(px, py, qx, qy);
         if (e == 0.0 && fmin(px, qx) <= 0.0 && fmax(px, qx) >= 0.0 && fmin(py, qy) <= 0.0 && fmax(py, qy) >= 0.0 &&
             (px != qx || py != qy))
             return 1; /* on the border */
         if ((py > 0.0) != (qy > 0.0) && (e > 0.0) == (qy > py))
-            *inside = !*inside;
+            in = !in;
         px = qx;
         py = qy;
     }
+    *inside = in;
     return 0;
+}
+
+/* Whether every point of an outline inside box b lies left of the ray in
+ * its frame (x < 0), or above it, or below it (y > 0, y < 0), as
+ * frame_project computes the points: then the outline adds no crossing to
+ * the count and the ray is not on its border (outline_crossings: an edge
+ * whose ends have x < 0 gives an edge function of the sign that says its
+ * crossing is on -x; the long double refinement keeps that sign where the
+ * products underflow), and it can be passed over. Exact, not a margin:
+ * the rounded projection is monotone in each coordinate (each operation
+ * rounds monotonically), so the box's corner that is furthest that way
+ * bounds every point's projection as computed. */
+static inline int frame_box_outside(const FrameAxes *a, const OutlineBox *b)
+{
+    double zlo = coord_at(&b->lo, a->z) - a->oz, zhi = coord_at(&b->hi, a->z) - a->oz;
+    double xmax = (coord_at(&b->hi, a->x) - a->ox) - a->sx * (a->sx >= 0.0 ? zlo : zhi);
+    if (xmax < 0.0)
+        return 1;
+    double ymin = (coord_at(&b->lo, a->y) - a->oy) - a->sy * (a->sy >= 0.0 ? zhi : zlo);
+    if (ymin > 0.0)
+        return 1;
+    double ymax = (coord_at(&b->hi, a->y) - a->oy) - a->sy * (a->sy >= 0.0 ? zlo : zhi);
+    return ymax < 0.0;
 }
 
 static double intersect_outlines(const World *w, const Polygon *p, const RayFrame *f, double tmax)
@@ -189,10 +237,15 @@ static double intersect_outlines(const World *w, const Polygon *p, const RayFram
     double t = plane_distance(p, f);
     if (!(t > 0.0 && t < tmax))
         return -1.0;
+    const FrameAxes axes = frame_axes(f);
+    const OutlineBox *boxes =
+        w->outline_box && polygon_has_outline_boxes(p->noutlines, p->npoints) ? &w->outline_box[p->first_outline] : NULL;
     int inside = 0;
     for (int k = 0; k < p->noutlines; k++) {
         int n;
         const Vec3 *pts = polygon_outline(w, p, k, &n);
+        if (boxes && frame_box_outside(&axes, &boxes[k]))
+            continue;
         if (outline_crossings(pts, n, f, &inside))
             return t; /* on the border */
     }

@@ -108,6 +108,16 @@ typedef struct {
     Vec3 location, direction, up, right;
 } Camera;
 
+/* The box of one outline's points: the least and largest coordinates. */
+typedef struct {
+    Vec3 lo, hi;
+} OutlineBox;
+
+/* Whether a polygon's outlines have boxes (World.outline_box): when it has
+ * holes, or one outline of 5 points or more; a box costs three of the
+ * crossing count's projections, more than a quad's whole count saves. */
+static inline int polygon_has_outline_boxes(int noutlines, int npoints) { return noutlines > 1 || npoints >= 5; }
+
 typedef struct {
     int npolygons;
     Polygon *polygons;
@@ -115,6 +125,11 @@ typedef struct {
     Vec3 *points;
     int noutline_starts;
     int *outline_start;   /* per polygon with outlines: noutlines+1 indices into points */
+    OutlineBox *outline_box; /* beside outline_start, for the polygons polygon_has_outline_boxes
+                              * names (others' entries unset, and past the last such polygon's
+                              * none): entry k the box of outline k's points, for
+                              * intersect_outlines to pass over an outline a ray is certainly
+                              * outside of; NULL: none kept (the full count everywhere) */
     int nvertex_normals;
     Vec3 *vertex_normals;
     int nuvs;

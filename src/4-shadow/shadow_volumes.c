@@ -822,7 +822,8 @@ static int sample_world(World *s, const World *w, int first, int n)
     }
     s->points = malloc(sizeof *s->points * (size_t)(npts > 0 ? npts : 1));
     s->outline_start = malloc(sizeof *s->outline_start * (size_t)(nstarts > 0 ? nstarts : 1));
-    if (!s->polygons || !s->points || !s->outline_start)
+    s->outline_box = w->outline_box ? malloc(sizeof *s->outline_box * (size_t)(nstarts > 0 ? nstarts : 1)) : NULL;
+    if (!s->polygons || !s->points || !s->outline_start || (w->outline_box && !s->outline_box))
         return -1;
     s->npoints = npts;
     s->noutline_starts = nstarts;
@@ -831,8 +832,11 @@ static int sample_world(World *s, const World *w, int first, int n)
         Polygon p = w->polygons[first + i];
         memcpy(&s->points[pt], &w->points[p.first_point], sizeof *s->points * (size_t)p.npoints);
         if (p.first_outline >= 0) {
-            for (int k = 0; k <= p.noutlines; k++)
+            for (int k = 0; k <= p.noutlines; k++) {
                 s->outline_start[st + k] = w->outline_start[p.first_outline + k] - p.first_point + pt;
+                if (s->outline_box && k < p.noutlines && polygon_has_outline_boxes(p.noutlines, p.npoints))
+                    s->outline_box[st + k] = w->outline_box[p.first_outline + k];
+            }
             p.first_outline = st;
             st += p.noutlines + 1;
         }
@@ -848,6 +852,7 @@ static void sample_world_free(World *s)
     free(s->polygons);
     free(s->points);
     free(s->outline_start);
+    free(s->outline_box);
 }
 
 /* The fastest of a few timings: on a shared machine a timing can only be

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "aov_pixel.h"
+#include "area_diffuse.h"
 #include "area_light.h"
 #include "fog.h"
 #include "intersect.h"
@@ -242,6 +243,31 @@ static int has_highlights_or_diffuse(const Finish *f)
     return f->diffuse != 0.0 || f->specular != 0.0 || f->phong != 0.0;
 }
 
+/* add_full_area_light's loop through area_diffuse when it applies (a
+ * light of one strength over its samples, every texture that takes it
+ * diffuse only, with brilliance 1): 1 when done, 0 to do it here. */
+static int add_area_diffuse(const ShadowContext *sc, const Light *l, int li, const Material *m, Vec3 p, Vec3 axis1,
+                            Vec3 axis2, RGB share, LitTexture *lit, int n, unsigned takes, unsigned plain)
+{
+    const double(*factors)[2] = sc->area_fixed_factors ? sc->area_fixed_factors[li] : NULL;
+    if (!area_diffuse_applies(l, factors))
+        return 0;
+    AreaDiffuseTexture t[MAX_SURFACE_TEXTURES];
+    int nt = 0;
+    for (int i = 0; i < n; i++) {
+        if (!(takes & (1u << i)))
+            continue;
+        const Finish *f = lit[i].finish;
+        if (!(plain & (1u << i)) || f->brilliance != 1.0)
+            return 0;
+        if (f->diffuse > 0.0) /* else it adds nothing (add_diffuse) */
+            t[nt++] = (AreaDiffuseTexture){ lit[i].normal, lit[i].pigment, f->diffuse, lit[i].att, &lit[i].acc };
+    }
+    AreaDiffuseSamples s = { l, factors, axis1, axis2, p, share, m->double_illuminate };
+    area_diffuse(&s, t, nt);
+    return 1;
+}
+
 /* area_illumination (POV-Ray's ComputeFullAreaDiffuseLight): the light
  * that arrived, lc (shadowed, not yet attenuated), shared among the
  * samples, and each sample's share attenuated and shaded from where the
@@ -256,6 +282,8 @@ static void add_full_area_light(const ShadowContext *sc, const Light *l, int li,
     unsigned plain = 0; /* the textures whose finish adds diffuse light only: the inlined term */
     for (int i = 0; i < n; i++)
         plain |= (unsigned)diffuse_only(lit[i].finish, l) << i;
+    if (add_area_diffuse(sc, l, li, m, p, axis1, axis2, share, lit, n, takes, plain))
+        return;
     for (int v = 0; v < l->area.size2; v++) {
         for (int u = 0; u < l->area.size1; u++) {
             Vec3 to_light;
