@@ -209,27 +209,29 @@ static inline int outline_crossings(const Vec3 *pts, int n, const RayFrame *f, i
     return 0;
 }
 
-/* Whether every point of an outline inside box b lies left of the ray in
- * its frame (x < 0), or above it, or below it (y > 0, y < 0), as
- * frame_project computes the points: then the outline adds no crossing to
- * the count and the ray is not on its border (outline_crossings: an edge
- * whose ends have x < 0 gives an edge function of the sign that says its
- * crossing is on -x; the long double refinement keeps that sign where the
- * products underflow), and it can be passed over. Exact, not a margin:
- * the rounded projection is monotone in each coordinate (each operation
- * rounds monotonically), so the box's corner that is furthest that way
- * bounds every point's projection as computed. */
+/* Whether every point of an outline inside box b lies on one side of the
+ * ray in its frame (x < 0, x > 0, y > 0 or y < 0), as frame_project
+ * computes the points: then the outline cannot flip the count, and the
+ * ray is not on its border, so it can be passed over. Where all x < 0, no
+ * edge crosses +x: an edge from y < 0 to y > 0 has an edge function that
+ * is a sum of two terms <= 0 (and the long double refinement keeps that
+ * sign where the products underflow), and the other way >= 0, both the
+ * sign that puts the crossing on -x. Where all x > 0, every edge that
+ * changes sides crosses +x, and a closed outline changes sides an even
+ * number of times. Where all y > 0, or all y < 0, no edge changes sides.
+ * Exact, not a margin: the rounded projection is monotone in each
+ * coordinate (each operation rounds monotonically), so the box's corner
+ * furthest that way bounds every point's projection as computed. */
 static inline int frame_box_outside(const FrameAxes *a, const OutlineBox *b)
 {
     double zlo = coord_at(&b->lo, a->z) - a->oz, zhi = coord_at(&b->hi, a->z) - a->oz;
-    double xmax = (coord_at(&b->hi, a->x) - a->ox) - a->sx * (a->sx >= 0.0 ? zlo : zhi);
-    if (xmax < 0.0)
-        return 1;
     double ymin = (coord_at(&b->lo, a->y) - a->oy) - a->sy * (a->sy >= 0.0 ? zhi : zlo);
-    if (ymin > 0.0)
-        return 1;
     double ymax = (coord_at(&b->hi, a->y) - a->oy) - a->sy * (a->sy >= 0.0 ? zlo : zhi);
-    return ymax < 0.0;
+    if (ymin > 0.0 || ymax < 0.0)
+        return 1;
+    double xmin = (coord_at(&b->lo, a->x) - a->ox) - a->sx * (a->sx >= 0.0 ? zhi : zlo);
+    double xmax = (coord_at(&b->hi, a->x) - a->ox) - a->sx * (a->sx >= 0.0 ? zlo : zhi);
+    return xmin > 0.0 || xmax < 0.0;
 }
 
 static double intersect_outlines(const World *w, const Polygon *p, const RayFrame *f, double tmax)
