@@ -375,8 +375,8 @@ RGB area_light_shadow(ShadowContext *ctx, const ShadowQuery *q, RGB lc)
     Sampling s = { ctx, q, l, l->area.axis1, l->area.axis2, lc, BY_METHOD, NULL, 0, 0, 0.0, *l };
     area_light_axes(l, q->to_light, &s.axis1, &s.axis2);
     ctx->stats.area_points++;
-    double t0 = clock_wall();
+    double t0 = shadow_timer_start(ctx);
     RGB c = area_light_beamed(ctx, l) ? beam_sampling(&s) : sample_grid(&s);
-    ctx->stats.shadow_seconds += clock_wall() - t0 - s.verify_seconds;
+    shadow_timer_stop(ctx, t0, s.verify_seconds);
     return c;
 }

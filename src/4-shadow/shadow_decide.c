@@ -1,34 +1,7 @@
 /* Timed, counted and verified shadow decisions (shadow_decide.h). */
 #include "shadow_decide.h"
 
-#include "clock.h"
 #include "shadow_reference.h"
-
-/* Shadow-testing time is estimated from every 31st decision, timed and
- * scaled: reading the clock around each one would cost as much as a cheap
- * decision (sustain) itself, and would inflate every method's figure. The
- * monotonic clock is read in user space (vDSO); the thread CPU clock would
- * be a system call. The stride is prime so that it does not keep step with
- * a shading point's lights (with 8, a scene of 4 or 8 lights timed the same
- * light's decisions over and over); at 31 the clock costs about 1.5 ns a
- * decision instead of 6. */
-#define SHADOW_TIMING_STRIDE 31
-
-static inline double timer_start(ShadowContext *ctx)
-{
-    if (ctx->shadow_timer) {
-        ctx->shadow_timer--;
-        return -1.0;
-    }
-    ctx->shadow_timer = SHADOW_TIMING_STRIDE - 1;
-    return clock_wall();
-}
-
-static inline void timer_stop(ShadowContext *ctx, double t0)
-{
-    if (t0 >= 0.0)
-        ctx->stats.shadow_seconds += SHADOW_TIMING_STRIDE * (clock_wall() - t0);
-}
 
 /* --verify-shadows: the shadow ray's answer beside the method's;
  * --verify-reference: and the long-double reference's beside both. */
@@ -65,9 +38,9 @@ void shadow_verify(ShadowContext *ctx, const ShadowQuery *q, RGB got)
 
 void shadow_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *through)
 {
-    double t0 = timer_start(ctx);
+    double t0 = shadow_timer_start(ctx);
     ctx->method->test(ctx, q, through);
-    timer_stop(ctx, t0);
+    shadow_timer_stop(ctx, t0, 0.0);
     ctx->stats.shadow_queries++;
     if (ctx->verify)
         shadow_verify(ctx, q, *through);
@@ -75,8 +48,8 @@ void shadow_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *through)
 
 void shadow_decide_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away)
 {
-    double t0 = timer_start(ctx);
+    double t0 = shadow_timer_start(ctx);
     ctx->last_scheme = SCHEME_NONE;
     ctx->method->skip(ctx, q, faces_away);
-    timer_stop(ctx, t0);
+    shadow_timer_stop(ctx, t0, 0.0);
 }
