@@ -162,6 +162,7 @@ typedef struct {
     Decider by;
     const uint32_t *candidates; /* BY_BEAM */
     int ncandidates;
+    int planes_clear;           /* BY_BEAM: no infinite plane can come between the point and a sample */
     int scheme;                 /* BY_PROOF: SCHEME_AREA_LIT or SCHEME_AREA_UMBRA */
     double verify_seconds;      /* spent checking decisions made here */
     Light sample;               /* the light moved to the current sample */
@@ -177,7 +178,7 @@ static void decide(Sampling *s, const ShadowQuery *q, RGB *through)
         ctx->method->test(ctx, q, through);
     } else if (s->by == BY_BEAM) {
         *through = (RGB){ 1.0, 1.0, 1.0 };
-        if (shadow_planes_test(ctx, q, through) ||
+        if ((!s->planes_clear && shadow_planes_test(ctx, q, through)) ||
             shadow_polygons_test_among(ctx, q, s->candidates, s->ncandidates, through))
             ctx->stats.shadow_blocked++;
         ctx->last_scheme = SCHEME_AREA_BEAM;
@@ -337,9 +338,12 @@ static RGB beam_sampling(Sampling *s)
         if (how != BEAM_MISSES)
             ctx->area_candidates[kept++] = pi;
     }
+    int planes_clear = 0;
     if (scheme < 0) {
         n = kept;
-        if (n == 0 && area_beam_planes_clear(&beam, w, q->surface->kind == HIT_PLANE ? q->surface->index : -1))
+        /* what proves a point lit also spares each sample's ray the planes */
+        planes_clear = area_beam_planes_clear(&beam, w, q->surface->kind == HIT_PLANE ? q->surface->index : -1);
+        if (n == 0 && planes_clear)
             scheme = SCHEME_AREA_LIT;
     }
     if (scheme >= 0) {
@@ -364,6 +368,7 @@ static RGB beam_sampling(Sampling *s)
         return answer;
     }
     s->by = BY_BEAM;
+    s->planes_clear = planes_clear;
     s->candidates = ctx->area_candidates;
     s->ncandidates = n;
     return sample_grid(s);
@@ -372,7 +377,7 @@ static RGB beam_sampling(Sampling *s)
 RGB area_light_shadow(ShadowContext *ctx, const ShadowQuery *q, RGB lc)
 {
     const Light *l = &ctx->tracer.world->lights[q->light];
-    Sampling s = { ctx, q, l, l->area.axis1, l->area.axis2, lc, BY_METHOD, NULL, 0, 0, 0.0, *l };
+    Sampling s = { ctx, q, l, l->area.axis1, l->area.axis2, lc, BY_METHOD, NULL, 0, 0, 0, 0.0, *l };
     area_light_axes(l, q->to_light, &s.axis1, &s.axis2);
     ctx->stats.area_points++;
     double t0 = shadow_timer_start(ctx);
