@@ -228,22 +228,6 @@ int checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *w
     return n;
 }
 
-/* A signed number read raw, or 0. */
-static int raw_number(Parser *p, double *v)
-{
-    Token t;
-    lex_raw(p, &t);
-    double sign = 1.0;
-    if (is_punct(&t, '-') || is_punct(&t, '+')) {
-        sign = t.punct == '-' ? -1.0 : 1.0;
-        lex_raw(p, &t);
-    }
-    if (t.type != TK_NUMBER)
-        return 0;
-    *v = sign * t.number;
-    return 1;
-}
-
 /* The common case of big scenes (mesh2 lists): a vector written as three
  * plain numbers, `<1, -2.5, 3e2>`, not followed by an operator. Read from the
  * raw text it skips the expression machinery; anything else (identifiers,
@@ -255,29 +239,17 @@ static int plain_vector(Parser *p, Vec3 *out)
     if (p->ungot && !had_angle)
         return 0;
     LexMark m = lex_mark(p);
-    Token t;
     double c[3];
-    if (!had_angle) {
-        lex_raw(p, &t);
-        if (!is_punct(&t, '<'))
-            goto no;
-    }
-    for (int i = 0; i < 3; i++) {
-        if (!raw_number(p, &c[i]) || !isfinite(c[i])) /* 1e309: the general path reports it */
-            goto no;
-        lex_raw(p, &t);
-        if (!is_punct(&t, i < 2 ? ',' : '>'))
-            goto no;
-    }
+    if (!lex_plain_vector(p, had_angle, c))
+        return 0;
     int after = lex_peek_char(p);
-    if (after == '+' || after == '-' || after == '*' || after == '/' || after == '.' || after == '#')
-        goto no; /* an operator, or a directive (a macro's #end) that may lead to one */
+    if (after == '+' || after == '-' || after == '*' || after == '/' || after == '.' || after == '#') {
+        lex_seek(p, m); /* an operator, or a directive (a macro's #end) that may lead to one */
+        return 0;
+    }
     p->ungot = 0;
     *out = v3(c[0], c[1], c[2]);
     return 1;
-no:
-    lex_seek(p, m);
-    return 0;
 }
 
 Vec3 parse_vector(Parser *p)

@@ -3,6 +3,7 @@
  * Every file is read whole into the temporary arena, so a token's spelling can
  * point into its buffer and #while can jump back by offset. */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -201,6 +202,12 @@ int lex_peek_char(Parser *p)
     return peek_char(f, 0);
 }
 
+size_t lex_bytes_left(Parser *p)
+{
+    const SourceFile *f = &p->files[p->depth - 1];
+    return f->size - f->offset;
+}
+
 size_t lex_offset(Parser *p)
 {
     return p->files[p->depth - 1].offset;
@@ -274,21 +281,37 @@ static int decimal_fast(const char *s, size_t len, double *out)
 static void lex_number(Parser *p, SourceFile *f, Token *t)
 {
     /* A number holds no newline: scan it with a local index, then move the
-     * column once. */
+     * column once. The digits of the common number (no exponent) are
+     * gathered as they are scanned, as decimal_fast gathers them, so that
+     * it is converted in the same pass. */
+    static const double pow10[] = { 1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22 };
     size_t start = f->offset, i = start, size = f->size;
     const char *b = f->buf;
-    while (i < size && is_digit((unsigned char)b[i]))
-        i++;
+    unsigned long long m = 0;
+    int digits = 0, frac = 0;
+    for (; i < size && is_digit((unsigned char)b[i]); i++)
+        if (m != 0 || b[i] != '0') { /* leading zeros do not count as digits */
+            digits++;
+            m = m * 10 + (unsigned long long)(b[i] - '0');
+        }
     if (i < size && b[i] == '.') {
         i++;
-        while (i < size && is_digit((unsigned char)b[i]))
-            i++;
+        for (; i < size && is_digit((unsigned char)b[i]); i++) {
+            frac++;
+            if (m != 0 || b[i] != '0') {
+                digits++;
+                m = m * 10 + (unsigned long long)(b[i] - '0');
+            }
+        }
     }
+    int exponent = 0;
     if (i < size && (b[i] == 'e' || b[i] == 'E')) {
         size_t k = i + 1;
         if (k < size && (b[k] == '+' || b[k] == '-'))
             k++;
         if (k < size && is_digit((unsigned char)b[k])) {
+            exponent = 1;
             i = k;
             while (i < size && is_digit((unsigned char)b[i]))
                 i++;
@@ -299,6 +322,12 @@ static void lex_number(Parser *p, SourceFile *f, Token *t)
     size_t len = f->offset - start;
     t->type = TK_NUMBER;
     t->len = (int)len;
+    /* decimal_fast's rule: at most 15 digits (m is exact, and so is m /
+     * 10^frac, one rounding); with an exponent, decimal_fast itself. */
+    if (!exponent && digits <= 15 && frac <= 22) {
+        t->number = (double)m / pow10[frac];
+        return;
+    }
     if (decimal_fast(f->buf + start, len, &t->number))
         return;
     char tmp[128];
@@ -307,6 +336,66 @@ static void lex_number(Parser *p, SourceFile *f, Token *t)
     memcpy(tmp, f->buf + start, len);
     tmp[len] = '\0';
     t->number = strtod(tmp, NULL);
+}
+
+/* One punctuation character c (',' '<' '>') as the token scan_token would
+ * make of it: '<' and '>' before '=' are another token (<=, >=). */
+static int plain_punct(Parser *p, SourceFile *f, int c)
+{
+    size_t from = f->offset; /* lex_token's count includes the blanks before */
+    skip_space(p, f);
+    if (peek_char(f, 0) != c || ((c == '<' || c == '>') && peek_char(f, 1) == '='))
+        return 0;
+    SourcePos pos = here(f);
+    advance(f);
+    limits_count_token(p, f, from, pos);
+    return 1;
+}
+
+int lex_plain_vector(Parser *p, int had_angle, double c[3])
+{
+    SourceFile *f = &p->files[p->depth - 1];
+    LexMark m = lex_mark(p);
+    if (!had_angle && !plain_punct(p, f, '<'))
+        goto unexpected;
+    for (int i = 0; i < 3; i++) {
+        size_t from = f->offset;
+        skip_space(p, f);
+        SourcePos pos = here(f);
+        int ch = peek_char(f, 0);
+        double sign = 1.0;
+        if (ch == '-' || ch == '+') { /* a sign is a token of its own */
+            sign = ch == '-' ? -1.0 : 1.0;
+            advance(f);
+            limits_count_token(p, f, from, pos);
+            from = f->offset;
+            skip_space(p, f);
+            pos = here(f);
+            ch = peek_char(f, 0);
+        }
+        if (!(is_digit(ch) || (ch == '.' && is_digit(peek_char(f, 1)))))
+            goto unexpected;
+        Token t;
+        t.pos = pos;
+        lex_number(p, f, &t);
+        limits_count_token(p, f, from, pos);
+        c[i] = sign * t.number;
+        if (!isfinite(c[i]))
+            goto no; /* 1e309: the general path reports it */
+        if (!plain_punct(p, f, i < 2 ? ',' : '>'))
+            goto unexpected;
+    }
+    return 1;
+unexpected: {
+    /* The token that is not the plain vector's, read as lex_raw reads it
+     * (counted, and failing where it would), so that what the budgets see
+     * and report does not depend on which path reads the text. */
+    Token t;
+    lex_token(p, f, &t);
+}
+no:
+    lex_seek(p, m);
+    return 0;
 }
 
 /* The value of the string literal whose quote stands at `at` in its

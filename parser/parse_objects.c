@@ -453,10 +453,21 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
     return o;
 }
 
+/* Room for the n items a mesh2 list announces, but for no more than the
+ * text left could write (a plain vector takes at least 7 bytes, `<0,0,0>`):
+ * a count far beyond its list fails where the list ends, as it would
+ * without the room, not for want of memory. */
+static void reserve_list(Parser *p, TempVec *out, int n)
+{
+    size_t could = lex_bytes_left(p) / 7 + 1;
+    tvec_reserve(p, out, (size_t)n < could ? n : (int)(could < (1u << 28) ? could : (1u << 28)));
+}
+
 static void parse_vector_list(Parser *p, TempVec *out, const char *what)
 {
     begin_block(p, what);
     int n = parse_count(p, what, 0);
+    reserve_list(p, out, n);
     for (int i = 0; i < n; i++) {
         parse_comma(p);
         *(Vec3 *)tvec_push(p, out) = parse_vector(p);
@@ -514,6 +525,7 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
             begin_block(p, "face_indices");
             int n = parse_count(p, "face_indices", 1);
             mb.faces.n = 0;
+            reserve_list(p, &mb.faces, n);
             for (int i = 0; i < n; i++) {
                 parse_comma(p);
                 Token vt = *peek(p);

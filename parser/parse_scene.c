@@ -273,6 +273,21 @@ void *tvec_push(Parser *p, TempVec *v)
     return slot;
 }
 
+void tvec_reserve(Parser *p, TempVec *v, int n)
+{
+    if (n <= v->cap)
+        return;
+    if (n > (1 << 28))
+        n = 1 << 28; /* tvec_push's own limit */
+    void *d = arena_alloc_uninit(p->temp, v->elem * (size_t)n); /* each slot is zeroed when pushed */
+    if (!d)
+        out_of_memory(p);
+    if (v->n)
+        memcpy(d, v->data, v->elem * (size_t)v->n);
+    v->data = d;
+    v->cap = n;
+}
+
 void *tvec_keep(Parser *p, const TempVec *v)
 {
     void *kept = palloc(p, v->elem * (size_t)(v->n ? v->n : 1));

@@ -348,6 +348,10 @@ void *tmp_alloc(Parser *p, size_t size);    /* temporary arena, checked */
 char *tmp_strndup(Parser *p, const char *s, size_t n);
 void tvec_init(TempVec *v, size_t elem);
 void *tvec_push(Parser *p, TempVec *v); /* returns the new zeroed slot */
+/* Room for n elements in all, made at once: a list whose count is written
+ * first (mesh2's) then grows in one step, not by doubling (each doubling
+ * copies the list and leaves the old copy in the arena). */
+void tvec_reserve(Parser *p, TempVec *v, int n);
 /* The elements as a copy in the scene's arena (they outlive the parse). */
 void *tvec_keep(Parser *p, const TempVec *v);
 /* A value as POV-Ray stores it in a float (SNGL): map values, frequency,
@@ -444,6 +448,15 @@ void lex_raw(Parser *p, Token *t); /* TK_EOF at the end of the current file */
 void lex_token(Parser *p, SourceFile *f, Token *t);
 LexMark lex_mark(Parser *p);
 void lex_seek(Parser *p, LexMark m);
+/* A vector of three plain numbers, `<1, -2.5, 3e2>`, read straight from
+ * the text (the '<' already read when had_angle): the tokens lex_raw would
+ * read, counted as it counts them, and the same numbers, without making
+ * them tokens. Returns 1 positioned after the '>' (what follows is not
+ * looked at), or 0 positioned where it started (the text is something
+ * else: the caller reads it by the general path). */
+int lex_plain_vector(Parser *p, int had_angle, double c[3]);
+/* The bytes of the current file (or macro) after the lexer's position. */
+size_t lex_bytes_left(Parser *p);
 int lex_skip_semicolon(Parser *p); /* consume a ';' if it comes next */
 /* Whether the next token is keyword kw, looking at the raw text so that no
  * directive is carried out early (the current #declare is not stored yet). */

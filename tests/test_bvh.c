@@ -180,8 +180,9 @@ static void compare_ray(Tracer *grid, Tracer *tree, Vec3 org, Vec3 dir, const Hi
             t->grid_wrong++;
     }
     /* Whether the hit point lies on another polygon too (the shadow
-     * volumes' rule), against asking every polygon (the tracer asks those
-     * of the nearby cells). */
+     * volumes' rule), against asking every polygon: the hierarchy's tracer
+     * asks the polygons whose boxes come near, the grid's those of the
+     * nearby cells. */
     if (fb) {
         const World *w = tree->world;
         double tol = grid_tolerance(grid->grid) * 1e3; /* wide enough that the answer is often yes */

@@ -574,6 +574,42 @@ static int build(const Scene *s, World *w, Grid *g, const int *res, int extra_po
     return 0;
 }
 
+/* grid_register on several threads: each takes a run of the polygons, and
+ * the cells' lists must come out as one thread's, item for item, whatever
+ * the count (60,000 triangles: enough that 2, 3 and 8 threads all start). */
+static void registration_threads(TestRng *rng)
+{
+    Scene *s = fixture_scene(60000);
+    random_triangles(s, rng, 60000);
+    World w;
+    WorldError err;
+    if (world_build(&w, s, &err)) {
+        tap_ok(0, "60,000 triangles build");
+        fixture_scene_free(s);
+        return;
+    }
+    Grid one;
+    grid_build_box(&one, &w, NULL, NULL, 0);
+    tap_ok(!grid_registered(&one), "grid_build_box registers nothing");
+    tap_ok(grid_register(&one, &w, 1) == 0 && grid_registered(&one), "registered on 1 thread");
+    static const int counts[] = { 2, 3, 8 };
+    for (int k = 0; k < 3; k++) {
+        Grid many;
+        grid_build_box(&many, &w, NULL, NULL, 0);
+        int ok = grid_register(&many, &w, counts[k]) == 0 && many.nitems == one.nitems &&
+                 memcmp(many.cell_start, one.cell_start, sizeof(uint32_t) * ((size_t)one.ncells + 1)) == 0 &&
+                 memcmp(many.items, one.items, sizeof(uint32_t) * one.nitems) == 0;
+        tap_ok(ok, "registered on %d threads: the same %zu registrations, cell by cell, in the same order",
+               counts[k], one.nitems);
+        uint32_t *before = many.items;
+        tap_ok(grid_register(&many, &w, counts[k]) == 0 && many.items == before, "registering again does nothing");
+        grid_free(&many);
+    }
+    grid_free(&one);
+    world_free(&w);
+    fixture_scene_free(s);
+}
+
 /* Polygons placed on the cell boundaries of a known 8x8x8 grid, each with
  * the cells it touches and the cells it enters written out. */
 typedef struct {
@@ -867,6 +903,7 @@ int main(void)
     }
     touching_cases(&rng);
     boundary_plane_rays();
+    registration_threads(&rng);
     real_scenes(&rng);
 
     /* The walk finds the same nearest hit as testing every polygon. */

@@ -382,8 +382,64 @@ static void test_fallback_colors(void)
     scene_free(mine);
 }
 
+/* A big mesh's faces are made on several threads (flatten.c, fill_faces):
+ * the world must be the one-thread world, bit for bit: degenerate faces
+ * dropped in place, face textures, a mesh before and an object after. */
+static void test_mesh_threads(void)
+{
+    const int n = 160; /* n x n quads: 51,200 triangles, four times: up to 4 runs of faces */
+    size_t cap = (size_t)n * n * 4 * 64 + (size_t)(n + 1) * (n + 1) * 32 + 4096;
+    char *text = malloc(cap);
+    if (!text) {
+        tap_ok(0, "memory for the mesh");
+        return;
+    }
+    size_t len = (size_t)snprintf(text, cap, "triangle { 0, x, y }\nmesh2 { vertex_vectors { %d", (n + 1) * (n + 1));
+    for (int j = 0; j <= n; j++)
+        for (int i = 0; i <= n; i++)
+            len += (size_t)snprintf(text + len, cap - len, ", <%d, %g, %d>", i, ((i * 7 + j * 13) % 11) * 0.05, j);
+    len += (size_t)snprintf(text + len, cap - len, " }\n texture_list { 2, texture { pigment { rgb x } } "
+                                                   "texture { pigment { rgb y } } }\n face_indices { %d", 8 * n * n);
+    for (int r = 0; r < 4; r++) /* every face four times: 204,800 faces */
+        for (int j = 0; j < n; j++)
+            for (int i = 0; i < n; i++) {
+                int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+                /* every 97th face degenerate: a vertex twice */
+                int k = (r * n + j) * n + i;
+                len += (size_t)snprintf(text + len, cap - len, ", <%d, %d, %d>, %d, <%d, %d, %d>", a, b,
+                                        k % 97 ? d : b, k % 3 == 0, a, d, c);
+            }
+    snprintf(text + len, cap - len, " }\n rotate <10, 20, 30> }\nbox { -1, 1 }\n");
+    Scene *s = parse(text);
+    free(text);
+    World one;
+    WorldError we;
+    int built = s && world_build_threads(&one, s, 1, &we) == 0;
+    tap_ok(built && one.npolygons > 200000 && one.ndegenerate > 1000,
+           "a mesh of 204,800 faces builds on one thread (%d polygons, %d degenerate)", built ? one.npolygons : 0,
+           built ? one.ndegenerate : 0);
+    static const int counts[] = { 2, 3, 8 };
+    for (int k = 0; built && k < 3; k++) {
+        World many;
+        int ok = world_build_threads(&many, s, counts[k], &we) == 0;
+        ok = ok && many.npolygons == one.npolygons && many.npoints == one.npoints &&
+             many.ndegenerate == one.ndegenerate &&
+             memcmp(&many.bounds_min, &one.bounds_min, sizeof one.bounds_min) == 0 &&
+             memcmp(&many.bounds_max, &one.bounds_max, sizeof one.bounds_max) == 0 &&
+             memcmp(many.polygons, one.polygons, sizeof *one.polygons * (size_t)one.npolygons) == 0 &&
+             memcmp(many.points, one.points, sizeof *one.points * (size_t)one.npoints) == 0;
+        tap_ok(ok, "... and on %d threads: the same polygons, points, degenerate count and bounds, bit for bit",
+               counts[k]);
+        world_free(&many);
+    }
+    if (built)
+        world_free(&one);
+    scene_free(s);
+}
+
 int main(void)
 {
+    test_mesh_threads();
     test_pattern_values();
     test_pigments();
     test_texture_binding();

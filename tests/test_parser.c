@@ -568,6 +568,54 @@ static void test_number_lexing(void)
     tap_ok(bad == 0, "%d numbers read exactly as strtod reads them (%d differ)", tried, bad);
 }
 
+/* Plain vectors, `<1, -2.5, 3e2>`, are read straight from the text (the
+ * lexer's fast path); anything else by the expression parser. Each text
+ * here must give the bits the expression parser gives it in parentheses,
+ * where the fast path never applies, whichever of the two reads it. */
+static void test_plain_vectors(void)
+{
+    static const char *const cases[] = {
+        "<1, -2.5, 3e2>", "< 1 ,2,3 >", "<\n1,\n-\n2,3\n>", "</*a*/1,/*b*/2//c\n,3/*d*/>", "<-0, +0, .5>",
+        "<1e-3,1E+3,0.000001>", "<-1e-300, 1e300, 123456789012345678901234567890>", "<1, 2, 3> + x",
+        "<1, 2, 3>*2", "<1, 2, 3> - <1, 1, 1>", "<1,2,3>/2", "<1, 2>", "<x.x, 2, 3>", "<1, - -2, 3>",
+        "<1, 2, 3 + 1>", "<1 + 1, 2, 3>", "<1, 2, 3.>", "<1.5.5, 2>", "<2*3, 2, 3>", "<1, 2 3>",
+    };
+    int same = 0, n = (int)(sizeof cases / sizeof cases[0]);
+    for (int i = 0; i < n; i++) {
+        char text[256], ref[256];
+        snprintf(text, sizeof text, "box { 0, %s }", cases[i]);
+        snprintf(ref, sizeof ref, "box { 0, (%s) }", cases[i]);
+        ParseError e1, e2;
+        Scene *a = parse_scene_string("t.pov", text, &opts, &e1);
+        Scene *b = parse_scene_string("t.pov", ref, &opts, &e2);
+        int ok = a && b && memcmp(&a->objects[0]->u.box.corner2, &b->objects[0]->u.box.corner2, sizeof(Vec3)) == 0;
+        if (!ok)
+            tap_diag("%s: %s", cases[i], a && b ? "differs" : !a ? e1.message : e2.message);
+        same += ok;
+        scene_free(a);
+        scene_free(b);
+    }
+    tap_ok(same == n, "%d vectors read straight from the text or by the expression parser give the same bits (%d differ)",
+           n, n - same);
+    /* what the fast path gives up on is reported where the general path reports it */
+    static const struct {
+        const char *text;
+        int line, column;
+    } errors[] = {
+        { "box { 0, <1, 2, 3 }", 1, 19 },
+        { "box { 0, <1, 2, 1e309> }", 1, 10 },
+        { "box {\n 0, <1,\n 2, } }", 3, 5 },
+    };
+    for (int i = 0; i < 3; i++) {
+        ParseError e;
+        Scene *a = parse_scene_string("t.pov", errors[i].text, &opts, &e);
+        tap_ok(!a && e.line == errors[i].line && e.column == errors[i].column, "%s: error at %d:%d (%s at %d:%d)",
+               errors[i].text, errors[i].line, errors[i].column, a ? "none" : e.message, a ? 0 : e.line,
+               a ? 0 : e.column);
+        scene_free(a);
+    }
+}
+
 static void test_switch(void)
 {
     const char *scene = "#switch (V)\n"
@@ -1153,6 +1201,7 @@ int main(void)
     test_arrays();
     test_switch();
     test_number_lexing();
+    test_plain_vectors();
     test_strings_and_functions();
     test_errors();
     test_macro_files();

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "parallel.h"
 
 typedef struct {
     World *w;
@@ -21,6 +22,7 @@ typedef struct {
     int *map_index;
     size_t map_slots, map_used;
     int failed;
+    int threads;          /* a big mesh's faces are made on up to this many (fill_faces) */
 } Builder;
 
 /* Grows *array (of `size`-byte items) so that index `need` fits. */
@@ -264,41 +266,60 @@ static int degenerate(Builder *b, double twice_area, double size_squared)
     return 1;
 }
 
-/* A triangle in world space; degenerate ones are dropped (they can hit
- * nothing and have no normal). Returns 0, or -1 on allocation failure. */
-static int add_triangle(Builder *b, Vec3 a, Vec3 c1, Vec3 c2, const Vec3 *normals, int material)
+/* Triangle a, c1, c2 as the polygon record p and its points pts[0..2]
+ * (numbered from first_point), box included; 0 when it is degenerate (then
+ * nothing is written). add_triangle and the parallel fill of a mesh's
+ * faces (fill_faces) both make their triangles here. */
+static int triangle_record(Vec3 a, Vec3 c1, Vec3 c2, int material, int first_point, Polygon *p, Vec3 *pts)
 {
-    World *w = b->w;
     Vec3 e1 = v3_sub(c1, a), e2 = v3_sub(c2, a), e3 = v3_sub(c2, c1);
     Vec3 n = v3_cross(e1, e2);
     double len = v3_length(n);
-    if (degenerate(b, len, fmax(v3_dot(e1, e1), fmax(v3_dot(e2, e2), v3_dot(e3, e3)))))
+    double size_squared = fmax(v3_dot(e1, e1), fmax(v3_dot(e2, e2), v3_dot(e3, e3)));
+    if (!(len > DEGENERATE_AREA_SHARE * size_squared && isfinite(len)))
         return 0;
-    if (GROW(b, polygons, cap_polygons, w->npolygons) || GROW(b, points, cap_points, w->npoints + 3))
-        return -1;
-    Polygon *p = &w->polygons[w->npolygons];
     memset(p, 0, sizeof *p);
     p->normal = v3(n.x / len, n.y / len, n.z / len);
     p->d = v3_dot(p->normal, a);
     choose_axes(p);
-    p->first_point = w->npoints;
+    p->first_point = first_point;
     p->npoints = 3;
     p->first_outline = -1;
     p->noutlines = 1;
     p->smooth_normals = -1;
     p->uv = -1;
     p->material = material;
-    w->points[w->npoints++] = a;
-    w->points[w->npoints++] = c1;
-    w->points[w->npoints++] = c2;
+    pts[0] = a;
+    pts[1] = c1;
+    pts[2] = c2;
+    p->bbox_min = v3_min(v3_min(a, c1), c2);
+    p->bbox_max = v3_max(v3_max(a, c1), c2);
+    return 1;
+}
+
+/* A triangle in world space; degenerate ones are dropped (they can hit
+ * nothing and have no normal). Returns 0, or -1 on allocation failure. */
+static int add_triangle(Builder *b, Vec3 a, Vec3 c1, Vec3 c2, const Vec3 *normals, int material)
+{
+    World *w = b->w;
+    if (GROW(b, polygons, cap_polygons, w->npolygons) || GROW(b, points, cap_points, w->npoints + 3))
+        return -1;
+    Polygon *p = &w->polygons[w->npolygons];
+    if (!triangle_record(a, c1, c2, material, w->npoints, p, &w->points[w->npoints])) {
+        w->ndegenerate++;
+        return 0;
+    }
+    w->npoints += 3;
     if (normals) {
         if (GROW(b, vertex_normals, cap_normals, w->nvertex_normals + 3))
             return -1;
+        p = &w->polygons[w->npolygons];
         p->smooth_normals = w->nvertex_normals;
         for (int i = 0; i < 3; i++)
             w->vertex_normals[w->nvertex_normals++] = normals[i];
     }
-    finish_polygon_bounds(w, p);
+    w->bounds_min = v3_min(w->bounds_min, p->bbox_min);
+    w->bounds_max = v3_max(w->bounds_max, p->bbox_max);
     w->npolygons++;
     return 0;
 }
@@ -513,6 +534,115 @@ static int flatten_triangle(Builder *b, const SceneObject *o, const Inherited *i
     return add_triangle(b, v[0], v[1], v[2], smooth ? n : NULL, material);
 }
 
+/* ---- a big mesh's flat faces, on several threads ------------------------ */
+
+/* A run of faces [first, end) of a mesh whose faces are all flat and need
+ * no uv: face f's triangle goes to polygon slot base + f and its points to
+ * point slot 3 (base_points + f), made by triangle_record as add_triangle
+ * makes it; a face that makes none (degenerate, or a bad index) leaves its
+ * slot empty (npoints 0) and fill_faces closes the gaps afterwards, so the
+ * world is the one add_triangle, face by face, builds. */
+typedef struct {
+    World *w;
+    const SceneObject *o;
+    const Inherited *in;
+    const int *face_material;
+    int material, base, base_points;
+    int first, end;
+    int made, degenerate;
+    Vec3 lo, hi;          /* the union of the boxes made, in face order */
+} FaceRun;
+
+static void *fill_face_run(void *arg)
+{
+    FaceRun *r = arg;
+    World *w = r->w;
+    const SceneObject *o = r->o;
+    const int nt = o->u.mesh.ntextures;
+    r->lo = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
+    r->hi = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+    for (int f = r->first; f < r->end; f++) {
+        const MeshFace *face = &o->u.mesh.faces[f];
+        Polygon *p = &w->polygons[r->base + f];
+        int first_point = r->base_points + 3 * f;
+        Vec3 v[3];
+        int bad = 0;
+        for (int i = 0; i < 3 && !bad; i++) {
+            int vi = face->v[i];
+            bad = vi < 0 || vi >= o->u.mesh.nvertices;
+            if (!bad)
+                v[i] = transform_point(&r->in->transform, o->u.mesh.vertices[vi]);
+        }
+        int m = (face->texture >= 0 && face->texture < nt) ? r->face_material[face->texture] : r->material;
+        if (bad || !triangle_record(v[0], v[1], v[2], m, first_point, p, &w->points[first_point])) {
+            p->npoints = 0; /* a gap */
+            r->degenerate += !bad;
+            continue;
+        }
+        r->lo = v3_min(r->lo, p->bbox_min);
+        r->hi = v3_max(r->hi, p->bbox_max);
+        r->made++;
+    }
+    return NULL;
+}
+
+/* Faces per thread, at least: below, a thread's start costs more. */
+#define FACES_PER_THREAD_MIN 50000
+
+/* Whether fill_faces may make the mesh's triangles: more than one thread
+ * to be had and work for them, no smooth normals, and no material of its
+ * faces reading uv coordinates (both are added face by face). */
+static int faces_fill_in_parallel(const Builder *b, const SceneObject *o, int material, const int *face_material)
+{
+    if (b->threads < 2 || o->u.mesh.nfaces < 2 * FACES_PER_THREAD_MIN || o->u.mesh.nnormals > 0 ||
+        uses_uv(b->w, material))
+        return 0;
+    for (int i = 0; i < o->u.mesh.ntextures; i++)
+        if (uses_uv(b->w, face_material[i]))
+            return 0;
+    return 1;
+}
+
+/* The mesh's faces as triangles, in runs on b->threads threads (room for
+ * them all is there already): the same polygons, points, count of
+ * degenerate faces and bounds as add_triangle face by face. */
+static void fill_faces(Builder *b, const SceneObject *o, const Inherited *in, int material, const int *face_material)
+{
+    World *w = b->w;
+    const int nf = o->u.mesh.nfaces;
+    FaceRun runs[PARALLEL_MAX_JOBS];
+    int nr = parallel_jobs(nf, FACES_PER_THREAD_MIN, b->threads);
+    for (int k = 0; k < nr; k++)
+        runs[k] = (FaceRun){ .w = w, .o = o, .in = in, .face_material = face_material, .material = material,
+                             .base = w->npolygons, .base_points = w->npoints, .first = (int)((long long)nf * k / nr),
+                             .end = (int)((long long)nf * (k + 1) / nr) };
+    parallel_run(nr, fill_face_run, runs, sizeof runs[0]);
+    int made = 0;
+    for (int k = 0; k < nr; k++) {
+        made += runs[k].made;
+        w->ndegenerate += runs[k].degenerate;
+        if (runs[k].made) {
+            w->bounds_min = v3_min(w->bounds_min, runs[k].lo);
+            w->bounds_max = v3_max(w->bounds_max, runs[k].hi);
+        }
+    }
+    /* The gaps closed, in order: rare (a degenerate face), so on one thread. */
+    if (made < nf) {
+        int to = w->npolygons;
+        for (int f = 0; f < nf; f++) {
+            Polygon p = w->polygons[w->npolygons + f];
+            if (p.npoints == 0)
+                continue;
+            int first_point = w->npoints + 3 * (to - w->npolygons);
+            memmove(&w->points[first_point], &w->points[p.first_point], 3 * sizeof *w->points);
+            p.first_point = first_point;
+            w->polygons[to++] = p;
+        }
+    }
+    w->npolygons += made;
+    w->npoints += 3 * made;
+}
+
 static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
     const int nt = o->u.mesh.ntextures;
@@ -533,7 +663,19 @@ static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, i
             }
         }
     }
+    /* Room for every face at once (rather than by doublings, each copying
+     * what is there): a big mesh is most of the world. */
     int rc = 0;
+    World *w = b->w;
+    if (o->u.mesh.nfaces > 0 &&
+        (GROW(b, polygons, cap_polygons, w->npolygons + o->u.mesh.nfaces - 1) ||
+         GROW(b, points, cap_points, w->npoints + 3 * o->u.mesh.nfaces - 1)))
+        rc = -1;
+    if (rc == 0 && faces_fill_in_parallel(b, o, material, face_material)) {
+        fill_faces(b, o, in, material, face_material);
+        free(face_material);
+        return 0;
+    }
     for (int f = 0; f < o->u.mesh.nfaces && rc == 0; f++) {
         const MeshFace *face = &o->u.mesh.faces[f];
         Vec3 v[3], on[3], n[3];
@@ -667,7 +809,9 @@ static void build_lights(World *w, const Scene *scene)
     }
 }
 
-int world_build(World *w, const Scene *scene, WorldError *err)
+int world_build(World *w, const Scene *scene, WorldError *err) { return world_build_threads(w, scene, 1, err); }
+
+int world_build_threads(World *w, const Scene *scene, int threads, WorldError *err)
 {
     memset(w, 0, sizeof *w);
     memset(err, 0, sizeof *err);
@@ -675,7 +819,7 @@ int world_build(World *w, const Scene *scene, WorldError *err)
     w->bounds_max = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
     w->noise_generator = scene_noise_generator(scene);
     w->number_of_waves = scene->globals.number_of_waves;
-    Builder b = { .w = w };
+    Builder b = { .w = w, .threads = threads };
     Inherited root;
     memset(&root, 0, sizeof root);
     transform_identity(&root.transform);

@@ -177,6 +177,9 @@ typedef struct {
 
 /* Returns 0, or -1 with err filled (e.g. out of memory). */
 int world_build(World *w, const Scene *scene, WorldError *err);
+/* world_build with a big mesh's faces made on up to `threads` threads:
+ * the same world, bit for bit, for any number (tests/test_modelling.c). */
+int world_build_threads(World *w, const Scene *scene, int threads, WorldError *err);
 void world_free(World *w);
 
 #endif

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "convert.h"
+#include "parallel.h"
 
 void grid_choose_resolution(const World *w, Vec3 lo, Vec3 hi, int res[3])
 {
@@ -113,7 +114,7 @@ int grid_cell_coord(const Grid *g, double x, int axis)
     return int_floor_clamped((x - v3_comp(g->min, axis)) * v3_comp(g->inv_cell_size, axis), 0, g->n[axis] - 1);
 }
 
-int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int nextra)
+void grid_build_box(Grid *g, const World *w, const int *res, const Vec3 *extra, int nextra)
 {
     memset(g, 0, sizeof *g);
     Vec3 lo = w->bounds_min, hi = w->bounds_max;
@@ -144,21 +145,46 @@ int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int n
     ext = v3_sub(hi, lo);
     g->cell_size = v3(ext.x / g->n[0], ext.y / g->n[1], ext.z / g->n[2]);
     g->inv_cell_size = v3(1.0 / g->cell_size.x, 1.0 / g->cell_size.y, 1.0 / g->cell_size.z);
+}
 
-    size_t cap = (size_t)w->npolygons * 2 + 16, count = 0;
-    Registration *regs = malloc(cap * sizeof *regs);
-    g->cell_start = calloc((size_t)g->ncells + 1, sizeof(uint32_t));
-    if (!regs || !g->cell_start) {
-        free(regs);
-        grid_free(g);
-        return -1;
+/* The registrations of polygons [first, end), in polygon order and, per
+ * polygon, in cell order: what one thread of grid_register makes. */
+typedef struct {
+    const Grid *g;
+    const World *w;
+    int first, end;
+    Registration *regs;
+    size_t count, cap;
+    int failed;
+} RegisterJob;
+
+static int push_registration(RegisterJob *j, uint32_t cell, uint32_t polygon)
+{
+    if (j->count == j->cap) {
+        size_t cap = j->cap ? j->cap * 2 : 1024;
+        Registration *n = realloc(j->regs, cap * sizeof *n);
+        if (!n)
+            return -1;
+        j->regs = n;
+        j->cap = cap;
     }
+    j->regs[j->count].cell = cell;
+    j->regs[j->count].polygon = polygon;
+    j->count++;
+    return 0;
+}
+
+static void *register_polygons(void *arg)
+{
+    RegisterJob *j = arg;
+    const Grid *g = j->g;
+    const World *w = j->w;
     /* Cells are tested grown by a hair (below), so that a polygon lying on
      * a cell face is registered on both sides of it; the candidate cells
      * come from the polygon's box grown by the same hair, or a box starting
      * exactly on a boundary could be rounded into the upper cell only. */
-    Vec3 hair = v3_scale(g->cell_size, 1e-9);
-    for (int pi = 0; pi < w->npolygons; pi++) {
+    Vec3 hair = v3_scale(g->cell_size, 1e-9), lo = g->min;
+    for (int pi = j->first; pi < j->end; pi++) {
         const Polygon *p = &w->polygons[pi];
         int c0[3], c1[3];
         for (int a = 0; a < 3; a++) {
@@ -175,42 +201,84 @@ int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int n
                         if (!polygon_overlaps_box(w, p, v3_sub(clo, hair), v3_add(chi, hair)))
                             continue;
                     }
-                    if (count == cap) {
-                        cap *= 2;
-                        Registration *n = realloc(regs, cap * sizeof *regs);
-                        if (!n) {
-                            free(regs);
-                            grid_free(g);
-                            return -1;
-                        }
-                        regs = n;
-                    }
                     int c[3] = { x, y, z };
-                    regs[count].cell = (uint32_t)grid_cell_index(g, c);
-                    regs[count].polygon = (uint32_t)pi;
-                    count++;
+                    if (push_registration(j, (uint32_t)grid_cell_index(g, c), (uint32_t)pi)) {
+                        j->failed = 1;
+                        return NULL;
+                    }
                 }
+    }
+    return NULL;
+}
+
+/* Below this many polygons a thread's start costs more than its share. */
+#define REGISTER_PER_THREAD_MIN 20000
+
+int grid_register(Grid *g, const World *w, int threads)
+{
+    if (g->cell_start)
+        return 0;
+    int nt = parallel_jobs(w->npolygons, REGISTER_PER_THREAD_MIN, threads);
+    RegisterJob jobs[PARALLEL_MAX_JOBS];
+    /* Contiguous runs of polygons, one per thread: concatenated in thread
+     * order they are the one thread's list, so the cells' lists below are
+     * the same for any thread count. */
+    for (int t = 0; t < nt; t++)
+        jobs[t] = (RegisterJob){ g, w, (int)((long long)w->npolygons * t / nt),
+                                 (int)((long long)w->npolygons * (t + 1) / nt), NULL, 0, 0, 0 };
+    parallel_run(nt, register_polygons, jobs, sizeof jobs[0]);
+    size_t count = 0;
+    int failed = 0;
+    for (int t = 0; t < nt; t++) {
+        count += jobs[t].count;
+        failed |= jobs[t].failed;
+    }
+    g->cell_start = failed ? NULL : calloc((size_t)g->ncells + 1, sizeof(uint32_t));
+    g->items = g->cell_start ? malloc((count ? count : 1) * sizeof(uint32_t)) : NULL;
+    uint32_t *fill = g->items ? malloc(((size_t)g->ncells + 1) * sizeof(uint32_t)) : NULL;
+    if (count > UINT32_MAX || !fill) {
+        for (int t = 0; t < nt; t++)
+            free(jobs[t].regs);
+        free(fill);
+        free(g->cell_start);
+        free(g->items);
+        g->cell_start = NULL;
+        g->items = NULL;
+        return -1;
     }
     /* Counting sort into compressed rows: polygons keep index order per cell,
      * so walks and results do not depend on anything but the scene. */
-    for (size_t i = 0; i < count; i++)
-        g->cell_start[regs[i].cell + 1]++;
+    for (int t = 0; t < nt; t++)
+        for (size_t i = 0; i < jobs[t].count; i++)
+            g->cell_start[jobs[t].regs[i].cell + 1]++;
     for (int c = 0; c < g->ncells; c++)
         g->cell_start[c + 1] += g->cell_start[c];
-    g->items = malloc((count ? count : 1) * sizeof(uint32_t));
-    uint32_t *fill = malloc(((size_t)g->ncells + 1) * sizeof(uint32_t));
-    if (!g->items || !fill) {
-        free(regs);
-        free(fill);
+    memcpy(fill, g->cell_start, ((size_t)g->ncells + 1) * sizeof(uint32_t));
+    for (int t = 0; t < nt; t++) {
+        for (size_t i = 0; i < jobs[t].count; i++)
+            g->items[fill[jobs[t].regs[i].cell]++] = jobs[t].regs[i].polygon;
+        free(jobs[t].regs);
+    }
+    g->nitems = count;
+    free(fill);
+    return 0;
+}
+
+long grid_count_registrations(const Grid *g, const World *w)
+{
+    RegisterJob j = { g, w, 0, w->npolygons, NULL, 0, 0, 0 };
+    register_polygons(&j);
+    free(j.regs);
+    return j.failed ? -1 : (long)j.count;
+}
+
+int grid_build(Grid *g, const World *w, const int *res, const Vec3 *extra, int nextra)
+{
+    grid_build_box(g, w, res, extra, nextra);
+    if (grid_register(g, w, 1)) {
         grid_free(g);
         return -1;
     }
-    memcpy(fill, g->cell_start, ((size_t)g->ncells + 1) * sizeof(uint32_t));
-    for (size_t i = 0; i < count; i++)
-        g->items[fill[regs[i].cell]++] = regs[i].polygon;
-    g->nitems = count;
-    free(fill);
-    free(regs);
     return 0;
 }
 

@@ -50,13 +50,59 @@ static inline int touches(const World *w, uint32_t pi, Vec3 x, double tol)
     return fabs(v3_dot(p->normal, x) - p->d) <= tol && polygon_classify_point(w, p, x, tol) != 0;
 }
 
-/* The uncached part of trace_point_touches_other. */
+/* touches_other by the hierarchy: the polygons whose boxes reach within
+ * 5 tol of x on every axis, which hold every polygon the grid's nearby
+ * cells would offer that can touch x (the argument below), since a node's
+ * box, rounded outward, holds its polygons' boxes. The same answer as the
+ * grid's, without the grid's registrations. */
+static int touches_other_in_bvh(Tracer *t, const Hit *hit, double tol)
+{
+    const World *w = t->world;
+    const Bvh *b = t->bvh;
+    if (b->nnodes == 0)
+        return 0;
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; a++) {
+        lo[a] = v3_comp(hit->point, a) - 5.0 * tol;
+        hi[a] = v3_comp(hit->point, a) + 5.0 * tol;
+    }
+    int own = hit->kind == HIT_POLYGON ? hit->index : -1;
+    uint32_t stack[BVH_STACK];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const BvhNode *n = &b->nodes[stack[--sp]];
+        t->stats.nodes_visited++;
+        for (int k = 0; k < BVH_WIDTH; k++) {
+            uint32_t c = n->child[k];
+            if (c == BVH_EMPTY || !(n->lo[0][k] <= hi[0] && n->hi[0][k] >= lo[0] && n->lo[1][k] <= hi[1] &&
+                                    n->hi[1][k] >= lo[1] && n->lo[2][k] <= hi[2] && n->hi[2][k] >= lo[2]))
+                continue;
+            if (!bvh_is_leaf(c)) {
+                stack[sp++] = c;
+                continue;
+            }
+            for (uint32_t i = 0, first = bvh_leaf_first(c); i < bvh_leaf_count(c); i++) {
+                uint32_t pi = b->items[first + i];
+                if ((int)pi != own && touches(w, pi, hit->point, tol))
+                    return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+/* The uncached part of trace_point_touches_other: by the hierarchy where
+ * the tracer has one, else by the grid's registrations (the reference
+ * tests/test_bvh.c compares it with). */
 static int touches_other(Tracer *t, const Hit *hit, double tol)
 {
     const World *w = t->world;
     const Grid *g = t->grid;
     if (hit->kind == HIT_POLYGON && polygon_classify_point(w, &w->polygons[hit->index], hit->point, tol) < 0)
         return 1; /* on its own polygon's border: on the neighbours' too */
+    if (t->bvh)
+        return touches_other_in_bvh(t, hit, tol);
     /* A point beyond the grid's box touches nothing: the box holds every
      * polygon. (Hits on an infinite plane near the horizon lie there, 1e16
      * units away.) A polygon that holds the point within tol has a point y

@@ -127,11 +127,14 @@ int shadow_volumes_usable_lights(const ShadowVolumes *sv);
  * building: the same code (welding, edges' uses, silhouettes, wedges
  * registered in the grid) timed on a run of `sample` consecutive polygons
  * and scaled by the polygons' points, whole over sample; filling a light's
- * cells timed at the grid's full size. */
+ * cells timed at the grid's full size. Where g has no polygons registered
+ * yet, their registration (grid_register, which volumes need) is shared
+ * cost too: timed on the sample, scaled by the polygons, with one fill. */
 typedef struct {
     int sample_polygons;
     double scale;                /* points in the scene over points in the sample */
-    double shared_seconds;       /* welding and edges' uses, once for all lights */
+    double shared_seconds;       /* welding and edges' uses, register_seconds, once for all lights */
+    double register_seconds;     /* the polygons' registration in the grid (0: registered already) */
     double *light_seconds;       /* per light (0: not estimated), filling included */
     double *light_registrations; /* per light, estimated */
     double fill_seconds;         /* filling one light's cells (in light_seconds) */

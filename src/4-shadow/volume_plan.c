@@ -321,11 +321,20 @@ static double nth_for(const VolumePlanOptions *o, const CostModel *cost)
 /* A fresh build of the lights plan->build asks for, calibrated. full: eq.
  * (7)'s values too (else only N_th's, for a trial; per-point N_th needs
  * them all). */
-static int build_and_calibrate(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, const World *w, const Grid *g,
+static int build_and_calibrate(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, const World *w, Grid *g,
                                const Bvh *bvh, const Vec3 *eye, const VolumePlanOptions *o, int full)
 {
     shadow_volumes_free(sv);
+    /* The polygons' registrations in the grid, which the calibration and
+     * the render's pixel coherence read, made with the first volumes. */
     double t0 = clock_wall();
+    if (!grid_registered(g)) {
+        if (grid_register(g, w, o->threads))
+            return -1;
+        plan->register_seconds = clock_wall() - t0;
+        plan->build_seconds += plan->register_seconds;
+        t0 = clock_wall();
+    }
     if (shadow_volumes_build(sv, w, g, eye, o->threads, plan->build) ||
         shadow_volumes_set_precision(sv, (PlanePrecision)o->precision))
         return -1;
@@ -346,7 +355,7 @@ static int most_promising(const VolumePlan *plan)
     return best;
 }
 
-int volume_plan_build(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, const World *w, const Grid *g,
+int volume_plan_build(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, const World *w, Grid *g,
                       const Bvh *bvh, const Vec3 *eye, const VolumePlanOptions *o)
 {
     double start = clock_wall();
@@ -394,6 +403,7 @@ int volume_plan_build(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, cons
             return -1;
         plan->sample_polygons = est.sample_polygons;
         plan->shared_estimate = est.shared_seconds;
+        plan->register_estimate = est.register_seconds;
         double b = est.light_seconds[best];
         shadow_volumes_estimate_free(&est);
         double together = 0.0;
@@ -437,7 +447,7 @@ int volume_plan_build(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, cons
     plan->tried = best;
     double before = plan->build_seconds;
     int status = build_and_calibrate(plan, sv, cost, w, g, bvh, eye, o, 0);
-    double trial_build = plan->build_seconds - before;
+    double trial_build = plan->build_seconds - before - plan->register_seconds; /* the others' builds share it */
     if (status == 0 && sv->light[best].usable)
         status = measure_hst(plan, w, g, bvh, sv, nth_for(o, cost), cost);
     LightPlan *tp = &plan->light[best];

@@ -72,11 +72,14 @@ typedef struct VolumePlan {
     double pixels;          /* camera rays the image will shoot */
     double c_touch;         /* the touching check, per decision */
     double c_record;        /* recording the cells one camera ray pierces */
-    double shared_estimate; /* welding and edges' uses, once for all lights (0: not estimated) */
+    double shared_estimate; /* welding, edges' uses and the polygons' registration, once for all lights
+                               (0: not estimated) */
+    double register_estimate; /* the polygons' registration in the grid, of that */
     int sample_polygons;    /* the build estimate's sample */
     int tried;              /* the light tried first, or -1 */
     int builds;             /* shadow_volumes_build calls made */
-    double build_seconds;   /* ... their wall time */
+    double build_seconds;   /* ... their wall time, with register_seconds */
+    double register_seconds; /* registering the polygons in the grid (grid_register), before the first build */
     double seconds;         /* planning's own cost: pilots and estimates */
     /* The pilot's points. */
     int npoints;
@@ -99,8 +102,10 @@ typedef struct {
 /* Plans, builds into sv and calibrates cost (eq. 7 included) the volumes
  * that pay; with VOLUMES_ALWAYS, every light's. On return sv holds at
  * least one usable light, or nothing (zeroed: no volumes at all, and
- * cost->seconds is 0). Returns 0, or -1 when out of memory. */
-int volume_plan_build(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, const World *w, const Grid *g,
+ * cost->seconds is 0). Before the first build it registers the polygons
+ * in g (grid_register), which only volumes need. Returns 0, or -1 when out
+ * of memory. */
+int volume_plan_build(VolumePlan *plan, ShadowVolumes *sv, CostModel *cost, const World *w, Grid *g,
                       const Bvh *bvh, const Vec3 *eye, const VolumePlanOptions *o);
 
 void volume_plan_free(VolumePlan *plan);

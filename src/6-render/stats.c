@@ -51,9 +51,10 @@ static void print_plan(FILE *f, const VolumePlan *p)
         return;
     }
     fprintf(f, "  volume plan %d pilot rays for %.0f pixels; touching check %.1f ns a decision, recording cells %.1f ns"
-               " a camera ray; welding and edges' uses estimated %.1f ms (sample of %d polygons); planned in %.1f ms\n",
+               " a camera ray; welding, edges' uses and registering the polygons estimated %.1f ms (of which"
+               " registering %.1f ms; sample of %d polygons); planned in %.1f ms\n",
             p->pilot_rays, p->pixels, p->c_touch * 1e9, p->c_record * 1e9, p->shared_estimate * 1e3,
-            p->sample_polygons, p->seconds * 1e3);
+            p->register_estimate * 1e3, p->sample_polygons, p->seconds * 1e3);
     for (int i = 0; i < p->nlights; i++) {
         const LightPlan *l = &p->light[i];
         fprintf(f, "    light %d   %s", i, volume_plan_decision_name(l->decision));
@@ -75,9 +76,10 @@ static void json_plan(FILE *f, const VolumePlan *p)
     fprintf(f, ",\n  \"volume_plan\": {\"mode\": \"%s\"", p->mode == VOLUMES_ALWAYS ? "always" : "auto");
     if (p->mode == VOLUMES_AUTO) {
         fprintf(f, ", \"pilot_rays\": %d, \"pixels\": %.0f, \"touch_ns\": %.3f, \"record_ns\": %.3f, "
-                   "\"shared_estimate_s\": %.6f, \"sample_polygons\": %d, \"seconds\": %.6f, \"lights\": [",
-                p->pilot_rays, p->pixels, p->c_touch * 1e9, p->c_record * 1e9, p->shared_estimate, p->sample_polygons,
-                p->seconds);
+                   "\"shared_estimate_s\": %.6f, \"register_estimate_s\": %.6f, \"sample_polygons\": %d, "
+                   "\"seconds\": %.6f, \"lights\": [",
+                p->pilot_rays, p->pixels, p->c_touch * 1e9, p->c_record * 1e9, p->shared_estimate,
+                p->register_estimate, p->sample_polygons, p->seconds);
         for (int i = 0; i < p->nlights; i++) {
             const LightPlan *l = &p->light[i];
             fprintf(f, "%s\n    {\"decision\": \"%s\", \"volumes\": %s, \"queries\": %.0f, \"shadow_ray_ns\": %.3f, "
@@ -107,8 +109,12 @@ void stats_print(FILE *f, const StatsReport *r)
                 approx_kind_effect(a->kind), a->count, a->count == 1 ? "" : "s", a->what, a->first.file,
                 a->first.line, a->first.column);
     }
-    fprintf(f, "  grid        %dx%dx%d cells, %llu registrations\n", r->grid[0], r->grid[1], r->grid[2],
-            (unsigned long long)r->grid_registrations);
+    if (r->grid_registered)
+        fprintf(f, "  grid        %dx%dx%d cells, %llu registrations\n", r->grid[0], r->grid[1], r->grid[2],
+                (unsigned long long)r->grid_registrations);
+    else
+        fprintf(f, "  grid        %dx%dx%d cells, polygons not registered (no shadow volumes: the hierarchy serves)\n",
+                r->grid[0], r->grid[1], r->grid[2]);
     if (r->ranks > 1 && r->rank_render) {
         /* A distributed render: the counters below are all ranks' */
         fprintf(f, "  ranks       %d, each threads %d; pixels per rank", r->ranks, r->threads);
@@ -118,6 +124,8 @@ void stats_print(FILE *f, const StatsReport *r)
     }
     fprintf(f, "  time (s)    parse %.3f  preprocessing %.3f  shadow testing %.3f  others %.3f  total %.3f  (wall %.3f)\n",
             r->parse_seconds, r->preprocess_seconds, s->shadow.shadow_seconds, others, total, r->wall_seconds);
+    fprintf(f, "              preprocessing: world %.3f  hierarchy %.3f  volume plan %.3f (building volumes %.3f)\n",
+            r->world_seconds, r->hierarchy_seconds, r->plan_seconds, r->volumes_seconds);
     fprintf(f, "              shadow testing and others are CPU time summed over threads\n");
     fprintf(f, "  rays        camera %llu  reflected %llu  refracted %llu  transmitted %llu\n",
             (unsigned long long)s->camera_rays, (unsigned long long)s->shading.reflected_rays,
@@ -282,9 +290,11 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
         fprintf(f, "\n  ],\n");
     }
     fprintf(f, "  \"time\": {\"parse\": %.6f, \"preprocessing\": %.6f, \"shadow_testing\": %.6f, \"others\": %.6f, "
-               "\"total\": %.6f, \"wall\": %.6f},\n",
+               "\"total\": %.6f, \"wall\": %.6f, \"world\": %.6f, \"hierarchy\": %.6f, \"volume_plan\": %.6f, "
+               "\"building_volumes\": %.6f},\n",
             r->parse_seconds, r->preprocess_seconds, s->shadow.shadow_seconds, others,
-            r->parse_seconds + r->preprocess_seconds + s->shadow.shadow_seconds + others, r->wall_seconds);
+            r->parse_seconds + r->preprocess_seconds + s->shadow.shadow_seconds + others, r->wall_seconds,
+            r->world_seconds, r->hierarchy_seconds, r->plan_seconds, r->volumes_seconds);
     fprintf(f, "  \"rays\": {\"camera\": %llu, \"reflected\": %llu, \"refracted\": %llu, \"transmitted\": %llu},\n",
             (unsigned long long)s->camera_rays, (unsigned long long)s->shading.reflected_rays,
             (unsigned long long)s->shading.refracted_rays, (unsigned long long)s->shading.transmitted_rays);

@@ -28,12 +28,17 @@ typedef struct {
     int width, height, threads;
     int grid[3];
     uint64_t grid_registrations;
+    int grid_registered;              /* the polygons registered in its cells (grid_register) */
     int npolygons, nplanes, nlights;
     int ndegenerate;             /* polygons dropped at build: no area up to rounding */
     int napproximations;         /* what the scene uses that hstrace approximates */
     const SceneApproximation *approximations;
     double parse_seconds, preprocess_seconds, output_seconds, wall_seconds;
     double volumes_seconds;           /* silhouettes and shadow polygon registration (in preprocessing) */
+    /* The parts of preprocessing, wall time: the world (polygons from the
+     * scene description), the hierarchy, and the volume plan (pilot,
+     * estimates, and the builds of volumes_seconds). */
+    double world_seconds, hierarchy_seconds, plan_seconds;
     const struct VolumePlan *plan;    /* which lights got volumes and why; NULL unless the method uses them */
     const struct ShadowVolumes *volumes; /* NULL unless the method uses them */
     const struct EmbreeScene *embree;    /* NULL unless the method is embree */

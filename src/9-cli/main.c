@@ -75,7 +75,7 @@ typedef struct {
  * dropped, with the same planes, cost model and N_th. Returns 0, or -1 when
  * out of memory (on this rank). */
 static int share_volume_choices(ShadowVolumes *sv, CostModel *cost, double *nth, int *have_volumes, const World *w,
-                                const Grid *g, const Vec3 *eye, int threads, int precision)
+                                Grid *g, const Vec3 *eye, int threads, int precision)
 {
     VolumeChoice c;
     memset(&c, 0, sizeof c);
@@ -100,7 +100,8 @@ static int share_volume_choices(ShadowVolumes *sv, CostModel *cost, double *nth,
         *nth = c.nth;
         *cost = c.cost;
         if (c.have_volumes) {
-            status = shadow_volumes_build(sv, w, g, eye, threads, flags) ||
+            /* the registrations pixel coherence reads (rank 0's plan made its own) */
+            status = grid_register(g, w, threads) || shadow_volumes_build(sv, w, g, eye, threads, flags) ||
                      shadow_volumes_set_precision(sv, (PlanePrecision)precision);
             for (int li = 0; status == 0 && li < n; li++)
                 if (flags[n + li])
@@ -134,6 +135,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     CostModel cost;
     AovImage aov;
     Provenance prov;
+    SceneHash scene_hash = { 0 };
     RenderStats *per_rank = NULL;
     MpiTileWaits *waits = NULL;
     long *requests = NULL;
@@ -229,6 +231,9 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     report.width = o->width;
     report.height = o->height;
 
+    /* The EXR header's hash of the scene file, beside the parse. */
+    int spare_core = (o->threads > 0 ? o->threads : render_default_threads()) > 1;
+    scene_hash_start(&scene_hash, o->scene, spare_core && image_format_from_path(output) == IMAGE_FORMAT_EXR);
     double t = clock_wall();
     ParseError perr;
     scene = parse_scene_file(o->scene, &popt, &perr);
@@ -255,27 +260,29 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     t = clock_wall();
     double working_gamma = scene_working_gamma(scene);
     WorldError werr;
-    if (world_build(&world, scene, &werr)) {
+    /* Each rank takes its share of this machine's cores. */
+    int threads = o->threads > 0 ? o->threads : render_default_threads();
+    if (o->threads <= 0 && mpi_job_size() > 1)
+        threads = threads / mpi_job_local_size() > 1 ? threads / mpi_job_local_size() : 1;
+    if (world_build_threads(&world, scene, threads, &werr)) {
         fprintf(stderr, "hstrace: %s\n", werr.message);
         status = EXIT_IO;
         goto done;
     }
     world.alpha_background = o->output_alpha;
+    report.world_seconds = clock_wall() - t;
     /* The grid box holds the camera (depth counts start there) and the part
      * of every infinite plane under the geometry, where shadows fall. */
     Vec3 extra[1 + 8 * 16];
     int nextra = grid_extra_points(&world, extra, (int)(sizeof extra / sizeof extra[0]));
-    if (grid_build(&grid, &world, o->grid[0] ? o->grid : NULL, extra, nextra)) {
-        fprintf(stderr, "hstrace: out of memory while building the grid\n");
-        status = EXIT_IO;
-        goto done;
-    }
+    /* The polygons are registered in its cells only if shadow volumes are
+     * built (volume_plan_build): every other query goes through the hierarchy. */
+    grid_build_box(&grid, &world, o->grid[0] ? o->grid : NULL, extra, nextra);
     grid_set_tolerance(&grid, o->tolerance);
-    /* Each rank takes its share of this machine's cores. */
-    int threads = o->threads > 0 ? o->threads : render_default_threads();
-    if (o->threads <= 0 && mpi_job_size() > 1)
-        threads = threads / mpi_job_local_size() > 1 ? threads / mpi_job_local_size() : 1;
-    if (bvh_build(&bvh, &world, threads)) {
+    double t_hierarchy = clock_wall();
+    int bvh_failed = bvh_build(&bvh, &world, threads);
+    report.hierarchy_seconds = clock_wall() - t_hierarchy;
+    if (bvh_failed) {
         fprintf(stderr, "hstrace: out of memory while building the hierarchy\n");
         status = EXIT_IO;
         goto done;
@@ -295,7 +302,10 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         po.threads = threads;
         po.precision = o->plane_precision;
         po.nth = o->nth == NTH_PER_POINT ? VOLUME_PLAN_NTH_PER_POINT : o->nth == NTH_AUTO ? VOLUME_PLAN_NTH_AUTO : o->nth;
-        if (volume_plan_build(&plan, &volumes, &cost, &world, &grid, &bvh, plan_eye, &po)) {
+        double t_plan = clock_wall();
+        int plan_failed = volume_plan_build(&plan, &volumes, &cost, &world, &grid, &bvh, plan_eye, &po);
+        report.plan_seconds = clock_wall() - t_plan;
+        if (plan_failed) {
             fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
             status = EXIT_IO;
             goto done;
@@ -335,6 +345,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     report.preprocess_seconds = clock_wall() - t;
     memcpy(report.grid, grid.n, sizeof report.grid);
     report.grid_registrations = grid.nitems;
+    report.grid_registered = grid_registered(&grid);
     report.npolygons = world.npolygons;
     report.ndegenerate = world.ndegenerate;
     report.nplanes = world.nplanes;
@@ -467,7 +478,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     wopt.nchannels = aov.nchannels;
     report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */
     if (image_format_from_path(output) == IMAGE_FORMAT_EXR) {
-        if (provenance_build(&prov, argc, argv, o, anim, &report)) {
+        if (provenance_build(&prov, argc, argv, o, anim, &report, &scene_hash)) {
             fprintf(stderr, "hstrace: out of memory\n");
             status = EXIT_IO;
         }
@@ -496,6 +507,10 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     }
 
 done:
+    if (scene_hash.state == 1) { /* its thread joined on every way out */
+        uint64_t unused;
+        (void)scene_hash_finish(&scene_hash, &unused);
+    }
     free(per_rank);
     free(waits);
     free(requests);

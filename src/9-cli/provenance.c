@@ -32,6 +32,33 @@ int provenance_hash_file(const char *path, uint64_t *hash)
     return 0;
 }
 
+static void *hash_in_background(void *arg)
+{
+    SceneHash *h = arg;
+    h->status = provenance_hash_file(h->path, &h->hash);
+    return NULL;
+}
+
+void scene_hash_start(SceneHash *h, const char *path, int background)
+{
+    memset(h, 0, sizeof *h);
+    h->path = path;
+    h->status = -1;
+    if (background && pthread_create(&h->thread, NULL, hash_in_background, h) == 0)
+        h->state = 1;
+}
+
+int scene_hash_finish(SceneHash *h, uint64_t *hash)
+{
+    if (h->state == 1)
+        pthread_join(h->thread, NULL);
+    else if (h->state == 0 && h->path)
+        h->status = provenance_hash_file(h->path, &h->hash);
+    h->state = 2;
+    *hash = h->hash;
+    return h->status;
+}
+
 static const char *const aov_group_list[AOV_NGROUPS] = { "Z", "N", "P", "shadow", "hst", "depth", "cost" };
 static const char *const precision_names[] = { "double", "float", "float-naive" };
 
@@ -150,7 +177,7 @@ static char *plan_summary(const VolumePlan *plan)
 }
 
 int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, const ParseAnimation *anim,
-                     const StatsReport *r)
+                     const StatsReport *r, SceneHash *scene_hash)
 {
     memset(p, 0, sizeof *p);
     p->command_line = shell_quote_words(argc, argv);
@@ -160,7 +187,7 @@ int provenance_build(Provenance *p, int argc, char **argv, const Options *opt, c
         return -1;
     }
     uint64_t h;
-    if (provenance_hash_file(opt->scene, &h) == 0)
+    if (scene_hash_finish(scene_hash, &h) == 0)
         snprintf(p->scene_hash, sizeof p->scene_hash, "fnv1a64:%016llx", (unsigned long long)h);
     else
         snprintf(p->scene_hash, sizeof p->scene_hash, "unreadable");
