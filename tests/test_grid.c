@@ -46,6 +46,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cell_lists.h"
 #include "fixtures.h"
 #include "grid.h"
 #include "image.h"
@@ -574,6 +575,70 @@ static int build(const Scene *s, World *w, Grid *g, const int *res, int extra_po
     return 0;
 }
 
+/* The sparse per-cell lists the shadow volumes keep (cell_lists.h), against
+ * dense offsets for every cell made here: random registrations over grids
+ * whose cell counts are and are not multiples of 64, the first and the last
+ * cell included, and none at all. */
+static void sparse_cell_lists(TestRng *rng)
+{
+    static const int sizes[] = { 1, 64, 1000, 4096 * 3 + 17 };
+    int bad = 0, lists = 0;
+    for (int k = 0; k < 4; k++) {
+        int ncells = sizes[k];
+        for (int round = 0; round < 3; round++) {
+            size_t n = round == 0 ? 0 : round == 1 ? 5 : (size_t)ncells * 2;
+            uint32_t *pairs = malloc(sizeof(uint32_t) * 2 * (n ? n : 1));
+            uint32_t *dense = calloc((size_t)ncells + 1, sizeof(uint32_t));
+            if (!pairs || !dense) {
+                free(pairs);
+                free(dense);
+                bad++;
+                continue;
+            }
+            for (size_t i = 0; i < n; i++) {
+                uint32_t c = (uint32_t)(rng_range(rng, 0, ncells) * 0.999999);
+                if (i == 0)
+                    c = 0;
+                if (i == 1)
+                    c = (uint32_t)ncells - 1;
+                pairs[2 * i] = c;
+                pairs[2 * i + 1] = (uint32_t)i;
+                dense[c + 1]++;
+            }
+            for (int c = 0; c < ncells; c++)
+                dense[c + 1] += dense[c];
+            CellLists cl;
+            if (cell_lists_build(&cl, ncells, &pairs[0], &pairs[1], 2 * sizeof(uint32_t), n)) {
+                bad++;
+            } else {
+                /* cell by cell: the same length, and the items in registration order */
+                for (int c = 0; c < ncells; c++) {
+                    uint32_t b, e;
+                    cell_lists_get(&cl, (uint32_t)c, &b, &e);
+                    lists++;
+                    if (e - b != dense[c + 1] - dense[c]) {
+                        bad++;
+                        continue;
+                    }
+                    uint32_t prev = 0;
+                    for (uint32_t j = b; j < e; j++) {
+                        uint32_t it = cl.items[j];
+                        if (it >= n || pairs[2 * it] != (uint32_t)c || (j > b && it <= prev))
+                            bad++;
+                        prev = it;
+                    }
+                }
+                if (cl.nitems != n)
+                    bad++;
+                cell_lists_free(&cl);
+            }
+            free(pairs);
+            free(dense);
+        }
+    }
+    tap_ok(bad == 0, "sparse cell lists: every cell's list as dense offsets give it (%d lists, %d wrong)", lists, bad);
+}
+
 /* grid_register on several threads: each takes a run of the polygons, and
  * the cells' lists must come out as one thread's, item for item, whatever
  * the count (60,000 triangles: enough that 2, 3 and 8 threads all start). */
@@ -904,6 +969,7 @@ int main(void)
     touching_cases(&rng);
     boundary_plane_rays();
     registration_threads(&rng);
+    sparse_cell_lists(&rng);
     real_scenes(&rng);
 
     /* The walk finds the same nearest hit as testing every polygon. */

@@ -24,14 +24,15 @@ uint32_t shadow_bucket_registrations(const ShadowContext *ctx, int light)
 int shadow_bucket_fill_in(ShadowContext *ctx, int light, const uint32_t *cells, int ncells, int limit)
 {
     const LightVolumes *lv = &ctx->volumes->light[light];
-    if (!lv->cell_start)
+    if (!cell_lists_built(&lv->cells))
         return 0;
     uint32_t id = stamp_next(ctx->sp_stamp, ctx->volumes->npolygons, &ctx->sp_id);
     int n = 0;
     for (int k = 0; k < ncells; k++) {
-        uint32_t c = cells[k];
-        for (uint32_t j = lv->cell_start[c]; j < lv->cell_start[c + 1]; j++) {
-            uint32_t s = lv->items[j];
+        uint32_t begin, end;
+        cell_lists_get(&lv->cells, cells[k], &begin, &end);
+        for (uint32_t j = begin; j < end; j++) {
+            uint32_t s = lv->cells.items[j];
             if (ctx->sp_stamp[s] == id)
                 continue;
             ctx->sp_stamp[s] = id;
@@ -47,12 +48,13 @@ int shadow_bucket_fill_in(ShadowContext *ctx, int light, const uint32_t *cells, 
 uint32_t shadow_bucket_registrations_in(const ShadowContext *ctx, int light, const uint32_t *cells, int ncells)
 {
     const LightVolumes *lv = &ctx->volumes->light[light];
-    if (!lv->cell_start)
+    if (!cell_lists_built(&lv->cells))
         return 0;
     uint32_t n = 0;
     for (int k = 0; k < ncells; k++) {
-        uint32_t c = cells[k];
-        n += lv->cell_start[c + 1] - lv->cell_start[c];
+        uint32_t begin, end;
+        cell_lists_get(&lv->cells, cells[k], &begin, &end);
+        n += end - begin;
     }
     return n;
 }

@@ -341,25 +341,15 @@ static int register_shadow_polygon(RegList *regs, const Grid *g, const Vec3 wedg
     return 0;
 }
 
-/* Counting sort into compressed rows; items keep their order per cell. */
+/* The light's lists per cell (cell_lists.h); items keep their order per cell. */
 static int fill_cells(LightVolumes *lv, const Grid *g, RegList *regs)
 {
-    lv->cell_start = calloc((size_t)g->ncells + 1, sizeof(uint32_t));
-    lv->items = malloc((regs->n ? regs->n : 1) * sizeof(uint32_t));
-    uint32_t *fill = malloc(((size_t)g->ncells + 1) * sizeof(uint32_t));
-    if (!lv->cell_start || !lv->items || !fill) {
-        free(fill);
+    const Registration *r = regs->r;
+    Registration none = { 0, 0 };
+    if (cell_lists_build(&lv->cells, g->ncells, r ? &r->cell : &none.cell, r ? &r->item : &none.item, sizeof *r,
+                         regs->n))
         return -1;
-    }
-    for (size_t i = 0; i < regs->n; i++)
-        lv->cell_start[regs->r[i].cell + 1]++;
-    for (int c = 0; c < g->ncells; c++)
-        lv->cell_start[c + 1] += lv->cell_start[c];
-    memcpy(fill, lv->cell_start, ((size_t)g->ncells + 1) * sizeof(uint32_t));
-    for (size_t i = 0; i < regs->n; i++)
-        lv->items[fill[regs->r[i].cell]++] = regs->r[i].item;
     lv->nitems = regs->n;
-    free(fill);
     return 0;
 }
 
@@ -737,9 +727,9 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
             polygons[li] = NULL;
         }
         lv->first = base;
-        if (lv->items && base)
-            for (uint32_t k = 0; k < lv->cell_start[g->ncells]; k++)
-                lv->items[k] += (uint32_t)base;
+        if (lv->cells.items && base)
+            for (size_t k = 0; k < lv->cells.nitems; k++)
+                lv->cells.items[k] += (uint32_t)base;
         base += npolygons[li];
     }
     sv->npolygons = base;
@@ -771,8 +761,7 @@ void shadow_volumes_free(ShadowVolumes *sv)
 {
     if (sv->light) {
         for (int i = 0; i < sv->nlights; i++) {
-            free(sv->light[i].cell_start);
-            free(sv->light[i].items);
+            cell_lists_free(&sv->light[i].cells);
             free(sv->light[i].occluder);
         }
     }
@@ -786,11 +775,8 @@ void shadow_volumes_free(ShadowVolumes *sv)
 void shadow_volumes_drop_light(ShadowVolumes *sv, int li)
 {
     LightVolumes *lv = &sv->light[li];
-    free(lv->cell_start);
-    free(lv->items);
+    cell_lists_free(&lv->cells);
     free(lv->occluder);
-    lv->cell_start = NULL;
-    lv->items = NULL;
     lv->occluder = NULL;
     lv->nitems = 0;
     lv->usable = 0;
@@ -926,7 +912,8 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
         est->light_seconds[li] = best * est->scale;
     }
     /* Filling a light's cells: its offsets span the whole grid, whatever
-     * the sample, so that part is timed at full size (with no items). */
+     * the sample (its occupancy masks), so that part is timed at full size
+     * (with no items). */
     est->fill_seconds = HUGE_VAL;
     for (int round = 0; status == 0 && round < ESTIMATE_ROUNDS; round++) {
         memset(&lv, 0, sizeof lv);
@@ -934,8 +921,7 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
         double t0 = clock_thread_cpu();
         status = fill_cells(&lv, g, &none);
         est->fill_seconds = fmin(est->fill_seconds, clock_thread_cpu() - t0);
-        free(lv.cell_start);
-        free(lv.items);
+        cell_lists_free(&lv.cells);
     }
     for (int li = 0; status == 0 && li < w->nlights; li++)
         if (est->light_seconds[li] > 0.0)

@@ -21,6 +21,7 @@
 
 #include <stdint.h>
 
+#include "cell_lists.h"
 #include "grid.h"
 #include "world.h"
 
@@ -63,9 +64,8 @@ typedef struct {
     int not_wanted;       /* the build was asked to leave it out (volume_plan.h) */
     int dropped;          /* built, then dropped (shadow_volumes_drop_light) */
     int first, count;     /* shadow polygons of this light: polygons[first .. first+count) */
-    uint32_t *cell_start; /* ncells + 1 offsets into items */
-    uint32_t *items;      /* global shadow polygon indices, grouped by cell */
-    size_t nitems;
+    CellLists cells;      /* per grid cell: global shadow polygon indices */
+    size_t nitems;        /* registrations (cells.nitems) */
     OccluderSide *occluder; /* per world polygon */
     /* The eye's depth count, computed once. */
     int eye_known;

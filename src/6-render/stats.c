@@ -168,7 +168,7 @@ void stats_print(FILE *f, const StatsReport *r)
                 fprintf(f, "    light %d   no shadow volumes: a parallel light whose plane cuts the scene; shadow rays only\n", i);
                 continue;
             }
-            if (!lv->cell_start)
+            if (!cell_lists_built(&lv->cells))
                 continue;
             fprintf(f, "    light %d   %d shadow polygons (%d edges cancelled), %zu cell registrations, eye depth ",
                     i, lv->count, lv->cancelled_edges, lv->nitems);
