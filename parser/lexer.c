@@ -278,16 +278,14 @@ static int decimal_fast(const char *s, size_t len, double *out)
     return 1;
 }
 
-static void lex_number(Parser *p, SourceFile *f, Token *t)
+int lex_number_text(const char *b, size_t start, size_t size, size_t *end, double *value)
 {
-    /* A number holds no newline: scan it with a local index, then move the
-     * column once. The digits of the common number (no exponent) are
-     * gathered as they are scanned, as decimal_fast gathers them, so that
-     * it is converted in the same pass. */
+    /* The digits of the common number (no exponent) are gathered as they
+     * are scanned, as decimal_fast gathers them, so that it is converted
+     * in the same pass. */
     static const double pow10[] = { 1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                                     1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22 };
-    size_t start = f->offset, i = start, size = f->size;
-    const char *b = f->buf;
+    size_t i = start;
     unsigned long long m = 0;
     int digits = 0, frac = 0;
     for (; i < size && is_digit((unsigned char)b[i]); i++)
@@ -317,25 +315,36 @@ static void lex_number(Parser *p, SourceFile *f, Token *t)
                 i++;
         }
     }
-    f->col += (int)(i - start);
-    f->offset = i;
-    size_t len = f->offset - start;
-    t->type = TK_NUMBER;
-    t->len = (int)len;
+    *end = i;
+    size_t len = i - start;
     /* decimal_fast's rule: at most 15 digits (m is exact, and so is m /
      * 10^frac, one rounding); with an exponent, decimal_fast itself. */
     if (!exponent && digits <= 15 && frac <= 22) {
-        t->number = (double)m / pow10[frac];
-        return;
+        *value = (double)m / pow10[frac];
+        return 1;
     }
-    if (decimal_fast(f->buf + start, len, &t->number))
-        return;
+    if (decimal_fast(b + start, len, value))
+        return 1;
     char tmp[128];
     if (len >= sizeof tmp)
-        parse_fail(p, t->pos, "number too long");
-    memcpy(tmp, f->buf + start, len);
+        return 0;
+    memcpy(tmp, b + start, len);
     tmp[len] = '\0';
-    t->number = strtod(tmp, NULL);
+    *value = strtod(tmp, NULL);
+    return 1;
+}
+
+static void lex_number(Parser *p, SourceFile *f, Token *t)
+{
+    /* A number holds no newline: the column moves once. */
+    size_t start = f->offset, end;
+    int ok = lex_number_text(f->buf, start, f->size, &end, &t->number);
+    f->col += (int)(end - start);
+    f->offset = end;
+    t->type = TK_NUMBER;
+    t->len = (int)(end - start);
+    if (!ok)
+        parse_fail(p, t->pos, "number too long");
 }
 
 /* One punctuation character c (',' '<' '>') as the token scan_token would

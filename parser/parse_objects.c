@@ -468,7 +468,12 @@ static void parse_vector_list(Parser *p, TempVec *out, const char *what)
     begin_block(p, what);
     int n = parse_count(p, what, 0);
     reserve_list(p, out, n);
-    for (int i = 0; i < n; i++) {
+    int i = 0;
+    if (out->n == 0 && out->cap >= n && lex_plain_vector_list(p, n, out->data, NULL, 0)) {
+        out->n = n; /* all of them at once (plain_lists.c) */
+        i = n;
+    }
+    for (; i < n; i++) {
         parse_comma(p);
         *(Vec3 *)tvec_push(p, out) = parse_vector(p);
     }
@@ -526,7 +531,12 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
             int n = parse_count(p, "face_indices", 1);
             mb.faces.n = 0;
             reserve_list(p, &mb.faces, n);
-            for (int i = 0; i < n; i++) {
+            int i = 0;
+            if (mb.faces.cap >= n && lex_plain_vector_list(p, n, NULL, mb.faces.data, mb.vertices.n)) {
+                mb.faces.n = n; /* all of them at once (plain_lists.c) */
+                i = n;
+            }
+            for (; i < n; i++) {
                 parse_comma(p);
                 Token vt = *peek(p);
                 Vec3 idx = parse_vector(p);

@@ -41,6 +41,9 @@ typedef struct {
     /* The frame being rendered; NULL: a still, as POV-Ray renders one
      * without animation switches (clock 0, clock_delta 1, ...). */
     const ParseAnimation *animation;
+    /* Threads a long list of plain vectors (mesh2's) may be read on
+     * (0 or 1: the calling thread alone); the scene is the same for any. */
+    int threads;
     /* Reads the file of an image_map, bump_map or material_map (found
      * through the folders above) into *out (scene.h's LoadedPicture; the
      * parser frees its rgba and index). decoding_gamma: -1 POV-Ray's

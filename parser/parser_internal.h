@@ -457,6 +457,19 @@ void lex_seek(Parser *p, LexMark m);
 int lex_plain_vector(Parser *p, int had_angle, double c[3]);
 /* The bytes of the current file (or macro) after the lexer's position. */
 size_t lex_bytes_left(Parser *p);
+/* The number whose text starts at b[start] (a digit, or '.' and a digit),
+ * as the lexer reads it: its end in *end, its value in *value. Returns 0
+ * when the text is too long to convert (an error at the number). */
+int lex_number_text(const char *b, size_t start, size_t size, size_t *end, double *value);
+/* plain_lists.c: the n items of a long list of plain vectors, `<1, -2.5,
+ * 3e2>` with optional commas between, read on ParseOptions.threads threads
+ * into out (vertex_vectors) or, with faces, as faces' vertex indices below
+ * nvertices: 1 positioned after the n-th vector's '>', as the item by item
+ * reading would leave it (the tokens counted); 0, positioned where it
+ * started, when the text is anything else (a comment, an identifier, an
+ * index out of range, more or fewer than n vectors ...): the caller reads
+ * it item by item, which reports what is wrong. */
+int lex_plain_vector_list(Parser *p, int n, Vec3 *out, MeshFace *faces, int nvertices);
 int lex_skip_semicolon(Parser *p); /* consume a ';' if it comes next */
 /* Whether the next token is keyword kw, looking at the raw text so that no
  * directive is carried out early (the current #declare is not stored yet). */

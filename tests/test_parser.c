@@ -616,6 +616,109 @@ static void test_plain_vectors(void)
     }
 }
 
+/* A mesh2 of nv vertices and nf faces, written as exporters write them
+ * (blanks, newlines, signs, exponents), with `lead` right after each
+ * list's count and `tail` after the mesh. */
+static char *big_mesh2(int nv, int nf, const char *lead, const char *tail)
+{
+    size_t cap = (size_t)nv * 48 + (size_t)nf * 40 + 4096, len = 0;
+    char *t = malloc(cap);
+    if (!t)
+        return NULL;
+    unsigned seed = 7;
+    len += (size_t)snprintf(t + len, cap - len, "mesh2 {\n  vertex_vectors { %d,%s", nv, lead);
+    for (int i = 0; i < nv; i++) {
+        seed = seed * 1103515245u + 12345u;
+        double x = (double)(seed >> 8) / 65536.0 - 128.0, y = (double)(seed % 1000) * 1e-3;
+        len += (size_t)snprintf(t + len, cap - len, i % 5 == 0 ? "\n    <%.6g, %g, -%de-2>," : " <%.9g,%g , %d>,",
+                                x, y, i % 1000);
+    }
+    len += (size_t)snprintf(t + len, cap - len, "\n  }\n  face_indices { %d,%s", nf, lead);
+    for (int i = 0; i < nf; i++)
+        len += (size_t)snprintf(t + len, cap - len, i % 7 == 0 ? "\n<%d, %d, %d>," : " <%d,%d,%d>", i % nv,
+                                (i * 7 + 1) % nv, (i * 13 + 2) % nv);
+    snprintf(t + len, cap - len, "\n  }\n}\n%s", tail);
+    return t;
+}
+
+/* mesh2's long lists are read on several threads (plain_lists.c): the same
+ * scene as item by item (a comment before the first item makes the reading
+ * item by item), for 1 to 8 threads, with the lexer where item by item
+ * leaves it (an error after the mesh is reported at the same place); and
+ * what the fast reading gives up on is read, or reported, as before. */
+static void test_plain_lists(void)
+{
+    const int nv = 60000, nf = 120000; /* about 4 MB: up to 4 pieces */
+    char *ref_text = big_mesh2(nv, nf, " /* item by item */", "bogus");
+    ParseError e;
+    ParseOptions o = opts;
+    Scene *ref = ref_text ? parse_scene_string("t.pov", ref_text, &o, &e) : NULL;
+    int ref_line = ref ? 0 : e.line, ref_col = ref ? 0 : e.column;
+    free(ref_text);
+    o.max_loop_iterations = 0;
+    /* the reference read again, to have its scene (the text ends in an error) */
+    ref_text = big_mesh2(nv, nf, " /* item by item */", "");
+    ref = ref_text ? parse_scene_string("t.pov", ref_text, &opts, &e) : NULL;
+    free(ref_text);
+    tap_ok(ref && ref->nobjects == 1 && ref->objects[0]->u.mesh.nvertices == nv &&
+               ref->objects[0]->u.mesh.nfaces == nf && ref_line > 0,
+           "a mesh2 of %d vertices and %d faces, item by item (then an error at %d:%d)", nv, nf, ref_line, ref_col);
+    static const int counts[] = { 1, 2, 3, 8 };
+    for (int k = 0; ref && k < 4; k++) {
+        o = opts;
+        o.threads = counts[k];
+        char *text = big_mesh2(nv, nf, "", "");
+        Scene *s = text ? parse_scene_string("t.pov", text, &o, &e) : NULL;
+        free(text);
+        const SceneObject *a = s && s->nobjects == 1 ? s->objects[0] : NULL, *r = ref->objects[0];
+        int same = a && a->u.mesh.nvertices == nv && a->u.mesh.nfaces == nf &&
+                   memcmp(a->u.mesh.vertices, r->u.mesh.vertices, sizeof(Vec3) * (size_t)nv) == 0 &&
+                   memcmp(a->u.mesh.faces, r->u.mesh.faces, sizeof(MeshFace) * (size_t)nf) == 0;
+        scene_free(s);
+        text = big_mesh2(nv, nf, "", "bogus");
+        s = text ? parse_scene_string("t.pov", text, &o, &e) : NULL;
+        free(text);
+        tap_ok(same && !s && e.line == ref_line && e.column == ref_col,
+               "... on %d thread%s: the same vertices and faces, bit for bit, and the error after at %d:%d", counts[k],
+               counts[k] == 1 ? "" : "s", s ? 0 : e.line, s ? 0 : e.column);
+        scene_free(s);
+    }
+    scene_free(ref);
+    /* what the fast reading leaves to the item-by-item one (the positions
+     * are those hstrace reported before lists had a fast reading) */
+    static const struct {
+        const char *text, *what;
+        int ok, line, column;
+    } cases[] = {
+        { "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0> x, <0,1,0> } face_indices { 1, <0,1,2> } }", "an identifier",
+          0, 1, 49 },
+        { "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0>, <1,1,0> } face_indices { 1, <0,1,2> } }",
+          "one vector too many", 0, 1, 56 },
+        { "mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }",
+          "one vector too few", 0, 1, 55 },
+        { "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,3> } }",
+          "a face index out of range", 0, 1, 75 },
+        { "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>+x, <0,1,0> } face_indices { 1, <0,1,2> } }",
+          "an operator after a vector", 1, 0, 0 },
+        { "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0> // a comment\n, <0,1,0> } face_indices { 1, <0,1,2>, } }",
+          "a comment inside", 1, 0, 0 },
+    };
+    for (int i = 0; i < 6; i++) {
+        o = opts;
+        o.threads = 2;
+        Scene *s = parse_scene_string("t.pov", cases[i].text, &o, &e);
+        ParseError e1;
+        Scene *s1 = parse_scene_string("t.pov", cases[i].text, &opts, &e1);
+        int ok = cases[i].ok ? s != NULL && s1 != NULL
+                             : !s && !s1 && e.line == cases[i].line && e.column == cases[i].column &&
+                                   strcmp(e.message, e1.message) == 0;
+        tap_ok(ok, "mesh2 with %s: %s (%s at %d:%d)", cases[i].what, cases[i].ok ? "read" : "the same error",
+               s ? "no error" : e.message, s ? 0 : e.line, s ? 0 : e.column);
+        scene_free(s);
+        scene_free(s1);
+    }
+}
+
 static void test_switch(void)
 {
     const char *scene = "#switch (V)\n"
@@ -1202,6 +1305,7 @@ int main(void)
     test_switch();
     test_number_lexing();
     test_plain_vectors();
+    test_plain_lists();
     test_strings_and_functions();
     test_errors();
     test_macro_files();

@@ -223,6 +223,11 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     popt.declares = declares;
     popt.ndeclares = o->ndeclares;
     popt.animation = anim;
+    /* Each rank takes its share of this machine's cores. */
+    int threads = o->threads > 0 ? o->threads : render_default_threads();
+    if (o->threads <= 0 && mpi_job_size() > 1)
+        threads = threads / mpi_job_local_size() > 1 ? threads / mpi_job_local_size() : 1;
+    popt.threads = threads;
 
     StatsReport report;
     memset(&report, 0, sizeof report);
@@ -232,7 +237,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     report.height = o->height;
 
     /* The EXR header's hash of the scene file, beside the parse. */
-    int spare_core = (o->threads > 0 ? o->threads : render_default_threads()) > 1;
+    int spare_core = threads > 1;
     scene_hash_start(&scene_hash, o->scene, spare_core && image_format_from_path(output) == IMAGE_FORMAT_EXR);
     double t = clock_wall();
     ParseError perr;
@@ -260,10 +265,6 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     t = clock_wall();
     double working_gamma = scene_working_gamma(scene);
     WorldError werr;
-    /* Each rank takes its share of this machine's cores. */
-    int threads = o->threads > 0 ? o->threads : render_default_threads();
-    if (o->threads <= 0 && mpi_job_size() > 1)
-        threads = threads / mpi_job_local_size() > 1 ? threads / mpi_job_local_size() : 1;
     if (world_build_threads(&world, scene, threads, &werr)) {
         fprintf(stderr, "hstrace: %s\n", werr.message);
         status = EXIT_IO;
