@@ -337,16 +337,15 @@ static int add_mesh_texture(Parser *p, MeshBuilder *mb, const SceneTexture *t)
 
 static void finish_mesh(Parser *p, SceneObject *o, MeshBuilder *mb)
 {
+    /* mesh2's lists are read into the scene's arena (reserve_list): kept as they are */
     o->u.mesh.nvertices = mb->vertices.n;
-    o->u.mesh.vertices = vec3_array(p, &mb->vertices);
+    o->u.mesh.vertices = tvec_kept(p, &mb->vertices);
     o->u.mesh.nnormals = mb->normals.n;
-    o->u.mesh.normals = vec3_array(p, &mb->normals);
+    o->u.mesh.normals = tvec_kept(p, &mb->normals);
     o->u.mesh.nfaces = mb->faces.n;
-    o->u.mesh.faces = palloc(p, sizeof(MeshFace) * (size_t)(mb->faces.n ? mb->faces.n : 1));
-    if (mb->faces.n)
-        memcpy(o->u.mesh.faces, mb->faces.data, sizeof(MeshFace) * (size_t)mb->faces.n);
+    o->u.mesh.faces = tvec_kept(p, &mb->faces);
     o->u.mesh.nuvs = mb->uvs.n;
-    o->u.mesh.uvs = vec3_array(p, &mb->uvs);
+    o->u.mesh.uvs = tvec_kept(p, &mb->uvs);
     o->u.mesh.ntextures = mb->textures.n;
     o->u.mesh.textures = palloc(p, sizeof(SceneTexture *) * (size_t)(mb->textures.n ? mb->textures.n : 1));
     if (mb->textures.n)
@@ -460,7 +459,7 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
 static void reserve_list(Parser *p, TempVec *out, int n)
 {
     size_t could = lex_bytes_left(p) / 7 + 1;
-    tvec_reserve(p, out, (size_t)n < could ? n : (int)(could < (1u << 28) ? could : (1u << 28)));
+    tvec_reserve_kept(p, out, (size_t)n < could ? n : (int)(could < (1u << 28) ? could : (1u << 28)));
 }
 
 static void parse_vector_list(Parser *p, TempVec *out, const char *what)

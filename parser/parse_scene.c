@@ -267,25 +267,38 @@ void *tvec_push(Parser *p, TempVec *v)
             memcpy(d, v->data, v->elem * (size_t)v->n);
         v->data = d;
         v->cap = cap;
+        v->in_scene = 0;
     }
     void *slot = (char *)v->data + v->elem * (size_t)v->n++;
     memset(slot, 0, v->elem);
     return slot;
 }
 
-void tvec_reserve(Parser *p, TempVec *v, int n)
+static void reserve_in(Parser *p, TempVec *v, int n, Arena *a)
 {
     if (n <= v->cap)
         return;
     if (n > (1 << 28))
         n = 1 << 28; /* tvec_push's own limit */
-    void *d = arena_alloc_uninit(p->temp, v->elem * (size_t)n); /* each slot is zeroed when pushed */
+    void *d = arena_alloc_uninit(a, v->elem * (size_t)n); /* each slot is zeroed when pushed */
     if (!d)
         out_of_memory(p);
     if (v->n)
         memcpy(d, v->data, v->elem * (size_t)v->n);
     v->data = d;
     v->cap = n;
+    v->in_scene = a == p->arena;
+}
+
+void tvec_reserve(Parser *p, TempVec *v, int n) { reserve_in(p, v, n, p->temp); }
+
+void tvec_reserve_kept(Parser *p, TempVec *v, int n) { reserve_in(p, v, n, p->arena); }
+
+void *tvec_kept(Parser *p, const TempVec *v)
+{
+    if (v->in_scene && v->n > 0)
+        return v->data;
+    return tvec_keep(p, v);
 }
 
 void *tvec_keep(Parser *p, const TempVec *v)

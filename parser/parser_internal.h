@@ -212,6 +212,7 @@ typedef struct {
     void *data;
     int n, cap;
     size_t elem;
+    int in_scene;   /* data is in the scene's arena (tvec_reserve_kept), until it grows */
 } TempVec;
 
 /* An entry of the parser's open-addressing tables (literals, names). */
@@ -352,6 +353,12 @@ void *tvec_push(Parser *p, TempVec *v); /* returns the new zeroed slot */
  * first (mesh2's) then grows in one step, not by doubling (each doubling
  * copies the list and leaves the old copy in the arena). */
 void tvec_reserve(Parser *p, TempVec *v, int n);
+/* tvec_reserve in the scene's arena: a list that is kept as it is read
+ * (mesh2's) is then not copied at its end (tvec_kept). */
+void tvec_reserve_kept(Parser *p, TempVec *v, int n);
+/* The elements in the scene's arena: the list's own (no copy) where
+ * tvec_reserve_kept made its room and it did not grow beyond, else a copy. */
+void *tvec_kept(Parser *p, const TempVec *v);
 /* The elements as a copy in the scene's arena (they outlive the parse). */
 void *tvec_keep(Parser *p, const TempVec *v);
 /* A value as POV-Ray stores it in a float (SNGL): map values, frequency,

@@ -836,6 +836,8 @@ int world_build_threads(World *w, const Scene *scene, int threads, WorldError *e
     }
     free(b.map_keys);
     free(b.map_index);
+    for (int i = 0; i < w->npolygons; i++)
+        w->nsee_through += !w->materials[w->polygons[i].material].opaque;
     w->nlights = scene->nlights;
     w->lights = calloc((size_t)(scene->nlights > 0 ? scene->nlights : 1), sizeof(Light));
     if (!w->lights) {

@@ -168,6 +168,8 @@ typedef struct {
     int number_of_waves;  /* global_settings: the sources of waves and ripples normals */
     Vec3 bounds_min, bounds_max; /* of all polygons; empty when min > max */
     int ndegenerate;      /* polygons dropped at build: no area, up to rounding */
+    int nsee_through;     /* polygons whose material is not opaque (a shadow ray meets at most these, each
+                             once: the room for what it filters) */
 } World;
 
 typedef struct {

@@ -26,10 +26,8 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
     if (!ctx->light_cache)
         return -1;
     shadow_cache_forget(ctx, nl);
-    int see_through = 1;
-    for (int i = 0; i < w->npolygons; i++)
-        see_through += !w->materials[w->polygons[i].material].opaque;
-    ctx->filtered = malloc(sizeof *ctx->filtered * (size_t)see_through);
+    /* counted once, by world_build: a context per thread, and the plan's */
+    ctx->filtered = malloc(sizeof *ctx->filtered * (size_t)(w->nsee_through + 1));
     if (!ctx->filtered)
         return -1;
     size_t samples = 0;
