@@ -44,7 +44,13 @@ static inline double v3_max_abs(Vec3 a)
     return (x > m || m != m) ? x : m;
 }
 static inline double v3_comp(Vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
-static inline Vec3 v3_min(Vec3 a, Vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
-static inline Vec3 v3_max(Vec3 a, Vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
+/* fmin and fmax as C defines them (a NaN loses to a number; of two equal
+ * values, +0 and -0, b), written out: the compiler calls the library for
+ * fmin and fmax, and on 10^6 polygons' boxes the calls were 2% of the
+ * set-up. */
+static inline double min_of(double a, double b) { return (a < b || b != b) ? a : b; }
+static inline double max_of(double a, double b) { return (a > b || b != b) ? a : b; }
+static inline Vec3 v3_min(Vec3 a, Vec3 b) { return v3(min_of(a.x, b.x), min_of(a.y, b.y), min_of(a.z, b.z)); }
+static inline Vec3 v3_max(Vec3 a, Vec3 b) { return v3(max_of(a.x, b.x), max_of(a.y, b.y), max_of(a.z, b.z)); }
 
 #endif
