@@ -630,13 +630,14 @@ static void fill_faces(Builder *b, const SceneObject *o, const Inherited *in, in
     if (made < nf) {
         int to = w->npolygons;
         for (int f = 0; f < nf; f++) {
-            Polygon p = w->polygons[w->npolygons + f];
-            if (p.npoints == 0)
+            const Polygon *p = &w->polygons[w->npolygons + f];
+            if (p->npoints == 0)
                 continue;
             int first_point = w->npoints + 3 * (to - w->npolygons);
-            memmove(&w->points[first_point], &w->points[p.first_point], 3 * sizeof *w->points);
-            p.first_point = first_point;
-            w->polygons[to++] = p;
+            memmove(&w->points[first_point], &w->points[p->first_point], 3 * sizeof *w->points);
+            /* moved as bytes, padding included, as add_triangle leaves it */
+            memmove(&w->polygons[to], p, sizeof *p);
+            w->polygons[to++].first_point = first_point;
         }
     }
     w->npolygons += made;
