@@ -4,7 +4,7 @@
  * scene, and reading them item by item was the one part of a render left
  * on one thread.
  *
- * The text is first measured: the run of characters a plain list is made
+ * The text is first measured (on threads too): the run of characters a plain list is made
  * of (digits, signs, '.', 'e', commas, angle brackets and blanks: no
  * comment, identifier or directive). It is cut into pieces at '<', one per
  * thread; each piece counts its vectors, then reads them into their places,
@@ -41,6 +41,9 @@ typedef struct {
     long tokens;
     size_t after;             /* just after its last vector's '>' */
     int failed;
+    size_t stop;              /* measuring: where the plain characters stop, or `to` */
+    int newlines;             /* counting lines: '\n's in [from, to), and the last one's offset */
+    size_t last_newline;
 } Piece;
 
 static size_t skip_blanks(const char *b, size_t i, size_t to)
@@ -48,6 +51,28 @@ static size_t skip_blanks(const char *b, size_t i, size_t to)
     while (i < to && is_blank(b[i]))
         i++;
     return i;
+}
+
+static void *measure_piece(void *arg)
+{
+    Piece *pc = arg;
+    size_t i = pc->from;
+    while (i < pc->to && plain_chars[(unsigned char)pc->b[i]])
+        i++;
+    pc->stop = i;
+    return NULL;
+}
+
+static void *count_newlines(void *arg)
+{
+    Piece *pc = arg;
+    int n = 0;
+    for (const char *q = pc->b + pc->from, *end = pc->b + pc->to; (q = memchr(q, '\n', (size_t)(end - q))) != NULL; q++) {
+        n++;
+        pc->last_newline = (size_t)(q - pc->b);
+    }
+    pc->newlines = n;
+    return NULL;
 }
 
 static void *count_piece(void *arg)
@@ -148,6 +173,41 @@ static void run_pieces(Piece *pieces, int n, void *(*fn)(void *))
     }
 }
 
+/* How many threads' pieces `bytes` of text make. */
+static int pieces_for(size_t bytes, int threads)
+{
+    size_t n = bytes / PIECE_MIN_BYTES < (size_t)threads ? bytes / PIECE_MIN_BYTES : (size_t)threads;
+    return n > MAX_PIECES ? MAX_PIECES : n < 1 ? 1 : (int)n;
+}
+
+/* [from, to) cut into n pieces of about equal size. */
+static void cut_even(Piece *pieces, int n, const char *b, size_t from, size_t to)
+{
+    for (int k = 0; k < n; k++)
+        pieces[k] = (Piece){ .b = b, .from = from + (to - from) * (size_t)k / (size_t)n,
+                             .to = from + (to - from) * (size_t)(k + 1) / (size_t)n };
+}
+
+/* Where the run of plain characters from `start` ends: measured block by
+ * block (a list is most of a big scene, but not all of the text after it),
+ * each block's pieces on threads. */
+static size_t plain_run_end(const char *b, size_t start, size_t size, int threads)
+{
+    Piece pieces[MAX_PIECES];
+    for (size_t from = start; from < size;) {
+        size_t block = (size_t)threads * PIECE_MIN_BYTES;
+        size_t to = size - from < block ? size : from + block;
+        int n = pieces_for(to - from, threads);
+        cut_even(pieces, n, b, from, to);
+        run_pieces(pieces, n, measure_piece);
+        for (int k = 0; k < n; k++)
+            if (pieces[k].stop < pieces[k].to)
+                return pieces[k].stop;
+        from = to;
+    }
+    return size;
+}
+
 int lex_plain_vector_list(Parser *p, int n, Vec3 *out, MeshFace *faces, int nvertices)
 {
     /* Not where the budgets of repeated text or of time must see each
@@ -159,16 +219,10 @@ int lex_plain_vector_list(Parser *p, int n, Vec3 *out, MeshFace *faces, int nver
     if (f->offset < f->repeated_to)
         return 0;
     const char *b = f->buf;
-    size_t start = f->offset, end = start;
-    while (end < f->size && plain_chars[(unsigned char)b[end]])
-        end++;
     int threads = p->opts->threads > 1 ? p->opts->threads : 1;
+    size_t start = f->offset, end = plain_run_end(b, start, f->size, threads);
     size_t bytes = end - start;
-    int npieces = bytes / PIECE_MIN_BYTES < (size_t)threads ? (int)(bytes / PIECE_MIN_BYTES) : threads;
-    if (npieces > MAX_PIECES)
-        npieces = MAX_PIECES;
-    if (npieces < 1)
-        npieces = 1;
+    int npieces = pieces_for(bytes, threads);
     /* Cut at '<': a piece starts at a vector (or where the list does). */
     Piece pieces[MAX_PIECES];
     size_t cut = start;
@@ -201,11 +255,15 @@ int lex_plain_vector_list(Parser *p, int n, Vec3 *out, MeshFace *faces, int nver
             after = pieces[k].after;
     }
     /* Where the item-by-item reading would stand: after the n-th '>'. */
+    int nl_pieces = pieces_for(after - start, threads);
+    cut_even(pieces, nl_pieces, b, start, after);
+    run_pieces(pieces, nl_pieces, count_newlines);
     int newlines = 0;
     size_t last_newline = 0;
-    for (const char *q = b + start, *stop = b + after; (q = memchr(q, '\n', (size_t)(stop - q))) != NULL; q++) {
-        newlines++;
-        last_newline = (size_t)(q - b);
+    for (int k = 0; k < nl_pieces; k++) {
+        newlines += pieces[k].newlines;
+        if (pieces[k].newlines)
+            last_newline = pieces[k].last_newline;
     }
     f->line += newlines;
     f->col = newlines ? (int)(after - last_newline) : f->col + (int)(after - start);

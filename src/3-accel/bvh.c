@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -123,7 +124,10 @@ typedef struct {
     BinNode *nodes;
     int nnodes, cap;
     int depth;
-    int threads;          /* this builder may hand subtrees to threads of its own, up to this many in all */
+    /* Threads that may start now (shared by every builder of one build):
+     * a split hands its second half to a new thread while one is free, so
+     * that a thread done early takes a share of what is left. */
+    atomic_int *free_threads;
     int plain;            /* bvh_build_plain: the reference passes, one axis at a time, every bin swept */
 } Builder;
 
@@ -526,23 +530,34 @@ static void *build_half(void *arg)
 {
     Half *h = arg;
     h->failed = build(&h->sub, h->first, h->count, h->depth, &h->bounds, &h->cbounds);
+    atomic_fetch_add(h->sub.free_threads, 1); /* this thread is done */
     return NULL;
 }
 
+/* Takes one of the free threads, if any. */
+static int take_thread(atomic_int *free_threads)
+{
+    int n = atomic_load(free_threads);
+    while (n > 0)
+        if (atomic_compare_exchange_weak(free_threads, &n, n - 1))
+            return 1;
+    return 0;
+}
+
 /* Both halves of a split: the second on another thread when it is big and
- * threads are left, its nodes then appended after the first's, so that the
- * layout is the one a single thread makes. Returns the second's root
- * index, or -1 when out of memory. */
+ * a thread is free, its nodes then appended after the first's, so that the
+ * layout is the one a single thread makes, whichever thread built what.
+ * Returns the second's root index, or -1 when out of memory. */
 static int build_halves(Builder *bd, int first, int mid, int count, int depth, const Box *lb, const Box *lcb,
                         const Box *rb, const Box *rcb)
 {
     pthread_t tid;
     Half h;
     int spawned = 0;
-    if (bd->threads > 1 && count - mid >= PARALLEL_MIN && mid >= PARALLEL_MIN) {
+    if (count - mid >= PARALLEL_MIN && mid >= PARALLEL_MIN && take_thread(bd->free_threads)) {
         memset(&h, 0, sizeof h);
         h.sub.items = bd->items;
-        h.sub.threads = bd->threads / 2;
+        h.sub.free_threads = bd->free_threads;
         h.sub.plain = bd->plain;
         h.first = first + mid;
         h.count = count - mid;
@@ -550,6 +565,8 @@ static int build_halves(Builder *bd, int first, int mid, int count, int depth, c
         h.bounds = *rb;
         h.cbounds = *rcb;
         spawned = pthread_create(&tid, NULL, build_half, &h) == 0;
+        if (!spawned)
+            atomic_fetch_add(bd->free_threads, 1);
     }
     if (!spawned) {
         if (build(bd, first, mid, depth, lb, lcb))
@@ -559,11 +576,11 @@ static int build_halves(Builder *bd, int first, int mid, int count, int depth, c
             return -1;
         return second;
     }
-    int keep = bd->threads;
-    bd->threads -= h.sub.threads;
     int failed = build(bd, first, mid, depth, lb, lcb);
-    bd->threads = keep;
+    /* Waiting, this thread works no more: another split may use it. */
+    atomic_fetch_add(bd->free_threads, 1);
     pthread_join(tid, NULL);
+    atomic_fetch_sub(bd->free_threads, 1);
     int second = bd->nnodes;
     if (!failed && !h.failed) {
         while (bd->cap < bd->nnodes + h.sub.nnodes) {
@@ -685,6 +702,8 @@ typedef struct {
     BvhNode *nodes;
     int nnodes, cap;
     int depth;
+    int fixed;       /* nodes is part of a bigger array: never grown */
+    uint32_t offset; /* added to the interior indices it stores: the place of nodes[0] in that array */
 } Collapser;
 
 static void set_child_box(BvhNode *n, int k, const Box *b)
@@ -695,32 +714,19 @@ static void set_child_box(BvhNode *n, int k, const Box *b)
     }
 }
 
-/* The 4-wide node for binary interior node bi; returns its index, or -1
- * when out of memory. */
-static int collapse(Collapser *c, uint32_t bi, int depth)
+/* The children binary interior node bi's 4-wide node takes: its two, then,
+ * while there is room, the largest interior one replaced by its own two.
+ * Returns how many. */
+static int wide_children(const BinNode *bin, uint32_t bi, uint32_t kids[BVH_WIDTH])
 {
-    if (c->nnodes == c->cap) {
-        int cap = c->cap ? c->cap * 2 : 64;
-        BvhNode *n = realloc(c->nodes, sizeof *n * (size_t)cap);
-        if (!n)
-            return -1;
-        c->nodes = n;
-        c->cap = cap;
-    }
-    int ni = c->nnodes++;
-    if (depth > c->depth)
-        c->depth = depth;
-    /* The two children, then, while there is room, the largest interior
-     * one replaced by its own two. */
-    uint32_t kids[BVH_WIDTH];
     int n = 2;
     kids[0] = bi + 1;
-    kids[1] = c->bin[bi].index;
+    kids[1] = bin[bi].index;
     while (n < BVH_WIDTH) {
         int best = -1;
         double best_area = -1.0;
         for (int k = 0; k < n; k++) {
-            const BinNode *b = &c->bin[kids[k]];
+            const BinNode *b = &bin[kids[k]];
             double area = box_area(&b->box);
             if (b->count == 0 && area > best_area) {
                 best = k;
@@ -731,8 +737,15 @@ static int collapse(Collapser *c, uint32_t bi, int depth)
             break;
         uint32_t x = kids[best];
         kids[best] = x + 1;
-        kids[n++] = c->bin[x].index;
+        kids[n++] = bin[x].index;
     }
+    return n;
+}
+
+/* The 4-wide node over those children: their boxes and leaves; an interior
+ * child's index is the caller's to fill in. */
+static BvhNode wide_node(const BinNode *bin, const uint32_t *kids, int n)
+{
     BvhNode node;
     for (int k = 0; k < BVH_WIDTH; k++) {
         node.child[k] = BVH_EMPTY;
@@ -742,19 +755,214 @@ static int collapse(Collapser *c, uint32_t bi, int depth)
         }
     }
     for (int k = 0; k < n; k++) {
-        const BinNode *b = &c->bin[kids[k]];
+        const BinNode *b = &bin[kids[k]];
         set_child_box(&node, k, &b->box);
-        if (b->count) {
+        if (b->count)
             node.child[k] = BVH_LEAF | (uint32_t)(b->count - 1) << BVH_COUNT_SHIFT | b->index;
+    }
+    return node;
+}
+
+/* The 4-wide node for binary interior node bi, its subtrees' after it,
+ * depth first; returns its index, or -1 when out of memory. */
+static int collapse(Collapser *c, uint32_t bi, int depth)
+{
+    if (c->nnodes == c->cap) {
+        if (c->fixed)
+            return -1; /* its size was counted: cannot happen */
+        int cap = c->cap ? c->cap * 2 : 64;
+        BvhNode *n = realloc(c->nodes, sizeof *n * (size_t)cap);
+        if (!n)
+            return -1;
+        c->nodes = n;
+        c->cap = cap;
+    }
+    int ni = c->nnodes++;
+    if (depth > c->depth)
+        c->depth = depth;
+    uint32_t kids[BVH_WIDTH];
+    int n = wide_children(c->bin, bi, kids);
+    BvhNode node = wide_node(c->bin, kids, n);
+    for (int k = 0; k < n; k++) {
+        if (c->bin[kids[k]].count)
+            continue;
+        int sub = collapse(c, kids[k], depth + 1);
+        if (sub < 0)
+            return -1;
+        node.child[k] = (uint32_t)sub + c->offset;
+    }
+    c->nodes[ni] = node;
+    return ni;
+}
+
+/* The 4-wide nodes collapse makes of bi's subtree. */
+static int count_wide_nodes(const BinNode *bin, uint32_t bi)
+{
+    uint32_t kids[BVH_WIDTH];
+    int n = wide_children(bin, bi, kids), count = 1;
+    for (int k = 0; k < n; k++)
+        if (bin[kids[k]].count == 0)
+            count += count_wide_nodes(bin, kids[k]);
+    return count;
+}
+
+/* ---- the same collapse on threads ------------------------------------- */
+
+/* A big hierarchy is collapsed on threads: the 4-wide nodes of its top
+ * COLLAPSE_TOP_LEVELS levels are made here, and the subtrees below them on
+ * threads that each take the next subtree left (the biggest first). The
+ * subtrees' nodes are counted first, on the threads too, so that each is
+ * made straight into its place in the whole array, the place the
+ * one-thread collapse gives it (after its parent, after the subtrees of
+ * its parent's earlier children): the same nodes at the same places,
+ * whichever thread made them. */
+#define COLLAPSE_TOP_LEVELS 3
+#define COLLAPSE_SUBTREES_MAX 64 /* BVH_WIDTH^COLLAPSE_TOP_LEVELS */
+#define COLLAPSE_PARALLEL_MIN (4 * PARALLEL_MIN) /* binary nodes: below, one thread */
+
+typedef struct {
+    uint32_t bin;   /* the subtree's binary root */
+    int depth;      /* its 4-wide root's depth */
+    uint32_t size;  /* binary nodes in it: the biggest are taken first */
+    int count;      /* its 4-wide nodes */
+    int base;       /* the first one's place */
+    int deepest;    /* its deepest 4-wide node's depth */
+    int failed;
+} Subtree;
+
+typedef struct {
+    Subtree *subs;
+    const int *order; /* the subtrees, biggest first */
+    int nsubs;
+    atomic_int next;
+    const BinNode *bin;
+    BvhNode *nodes;   /* the whole array, once counted */
+} SubtreeQueue;
+
+typedef struct {
+    SubtreeQueue *q;
+} SubtreeWorker;
+
+/* The binary nodes of bi's subtree: in depth-first order they run from bi
+ * to its last descendant, the end of its chain of second children. */
+static uint32_t subtree_size(const BinNode *bin, uint32_t bi)
+{
+    uint32_t x = bi;
+    while (bin[x].count == 0)
+        x = bin[x].index;
+    return x + 1 - bi;
+}
+
+/* The subtrees below the top `levels` levels of bi's 4-wide node, in the
+ * order the one-thread collapse reaches them; *ntop counts the top's nodes. */
+static int list_subtrees(const BinNode *bin, uint32_t bi, int depth, int levels, Subtree *subs, int n, int *ntop)
+{
+    (*ntop)++;
+    uint32_t kids[BVH_WIDTH];
+    int m = wide_children(bin, bi, kids);
+    for (int k = 0; k < m; k++) {
+        if (bin[kids[k]].count)
+            continue;
+        if (levels == 1)
+            subs[n++] = (Subtree){ .bin = kids[k], .depth = depth + 1, .size = subtree_size(bin, kids[k]) };
+        else
+            n = list_subtrees(bin, kids[k], depth + 1, levels - 1, subs, n, ntop);
+    }
+    return n;
+}
+
+static void *count_subtrees(void *arg)
+{
+    SubtreeQueue *q = ((SubtreeWorker *)arg)->q;
+    for (int i; (i = atomic_fetch_add(&q->next, 1)) < q->nsubs;) {
+        Subtree *s = &q->subs[q->order[i]];
+        s->count = count_wide_nodes(q->bin, s->bin);
+    }
+    return NULL;
+}
+
+static void *collapse_subtrees(void *arg)
+{
+    SubtreeQueue *q = ((SubtreeWorker *)arg)->q;
+    for (int i; (i = atomic_fetch_add(&q->next, 1)) < q->nsubs;) {
+        Subtree *s = &q->subs[q->order[i]];
+        Collapser c = { .bin = q->bin, .nodes = q->nodes + s->base, .cap = s->count, .fixed = 1,
+                        .offset = (uint32_t)s->base };
+        s->failed = collapse(&c, s->bin, s->depth) < 0 || c.nnodes != s->count;
+        s->deepest = c.depth;
+    }
+    return NULL;
+}
+
+/* The top's 4-wide nodes, as collapse makes them, with the subtrees'
+ * places kept for them. */
+static int place_top(Collapser *c, uint32_t bi, int depth, int levels, Subtree *subs, int *next)
+{
+    int ni = c->nnodes++;
+    if (depth > c->depth)
+        c->depth = depth;
+    uint32_t kids[BVH_WIDTH];
+    int n = wide_children(c->bin, bi, kids);
+    BvhNode node = wide_node(c->bin, kids, n);
+    for (int k = 0; k < n; k++) {
+        if (c->bin[kids[k]].count)
+            continue;
+        if (levels == 1) {
+            Subtree *s = &subs[(*next)++];
+            s->base = c->nnodes;
+            c->nnodes += s->count;
+            node.child[k] = (uint32_t)s->base;
         } else {
-            int sub = collapse(c, kids[k], depth + 1);
-            if (sub < 0)
-                return -1;
-            node.child[k] = (uint32_t)sub;
+            node.child[k] = (uint32_t)place_top(c, kids[k], depth + 1, levels - 1, subs, next);
         }
     }
     c->nodes[ni] = node;
     return ni;
+}
+
+/* collapse(c, 0, 1) on up to `threads` threads, into c->nodes (which it
+ * allocates). Returns 0, or -1 when out of memory. */
+static int collapse_on_threads(Collapser *c, int threads)
+{
+    Subtree subs[COLLAPSE_SUBTREES_MAX];
+    int order[COLLAPSE_SUBTREES_MAX];
+    int ntop = 0;
+    int nsubs = list_subtrees(c->bin, 0, 1, COLLAPSE_TOP_LEVELS, subs, 0, &ntop);
+    /* Biggest first, so that no thread is left with a big one at the end. */
+    for (int i = 0; i < nsubs; i++) {
+        int k = i;
+        while (k > 0 && subs[order[k - 1]].size < subs[i].size) {
+            order[k] = order[k - 1];
+            k--;
+        }
+        order[k] = i;
+    }
+    SubtreeQueue q = { subs, order, nsubs, 0, c->bin, NULL };
+    SubtreeWorker workers[PARALLEL_MAX_JOBS];
+    int nw = threads < nsubs ? threads : nsubs;
+    nw = nw > PARALLEL_MAX_JOBS ? PARALLEL_MAX_JOBS : nw < 1 ? 1 : nw;
+    for (int t = 0; t < nw; t++)
+        workers[t].q = &q;
+    parallel_run(nw, count_subtrees, workers, sizeof workers[0]);
+    long total = ntop;
+    for (int i = 0; i < nsubs; i++)
+        total += subs[i].count;
+    c->nodes = total <= INT32_MAX ? malloc(sizeof *c->nodes * (size_t)total) : NULL;
+    if (!c->nodes)
+        return -1;
+    c->cap = (int)total;
+    int next = 0;
+    place_top(c, 0, 1, COLLAPSE_TOP_LEVELS, subs, &next);
+    q.nodes = c->nodes;
+    atomic_store(&q.next, 0);
+    parallel_run(nw, collapse_subtrees, workers, sizeof workers[0]);
+    int failed = 0;
+    for (int i = 0; i < nsubs; i++) {
+        failed |= subs[i].failed;
+        if (subs[i].deepest > c->depth)
+            c->depth = subs[i].deepest;
+    }
+    return failed ? -1 : 0;
 }
 
 /* The margin every polygon's box grows by, beyond rounding to float.
@@ -828,6 +1036,31 @@ static void *make_items(void *arg)
     return NULL;
 }
 
+/* The leaf items' records [first, end), in leaf order: what a query hides,
+ * and the packed form of the polygon test (bvh.h). */
+typedef struct {
+    const World *w;
+    const uint32_t *order;
+    BvhPrim *prims;
+    PackedPolygon *packed;
+    int first, end;
+} PrimJob;
+
+static void *make_prims(void *arg)
+{
+    PrimJob *j = arg;
+    const World *w = j->w;
+    for (int k = j->first; k < j->end; k++) {
+        const Polygon *p = &w->polygons[j->order[k]];
+        const Material *m = &w->materials[p->material];
+        BvhPrim *pr = &j->prims[k];
+        pr->hide = (m->no_image ? HIDE_NO_IMAGE : 0u) | (m->no_reflection ? HIDE_NO_REFLECTION : 0u) |
+                   (m->no_shadow ? HIDE_NO_SHADOW : 0u);
+        pr->packed = j->packed ? (uint32_t)polygon_pack(w, p, &j->packed[k]) : 0u;
+    }
+    return NULL;
+}
+
 /* Polygons per set-up thread, at least. */
 #define SETUP_PER_THREAD_MIN 50000
 
@@ -837,7 +1070,9 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     int n = w->npolygons;
     Builder bd;
     memset(&bd, 0, sizeof bd);
-    bd.threads = threads > 1 ? threads : 1;
+    threads = threads > 1 ? threads : 1;
+    atomic_int free_threads = threads - 1;
+    bd.free_threads = &free_threads;
     bd.plain = plain;
     /* 16-byte aligned for the vector loads (sizeof (BuildItem) is 48). */
     bd.items = aligned_alloc(16, sizeof *bd.items * (size_t)(n > 0 ? n : 1));
@@ -848,7 +1083,7 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
         return -1;
     }
     SetupJob jobs[PARALLEL_MAX_JOBS];
-    int nj = parallel_jobs(n, SETUP_PER_THREAD_MIN, bd.threads);
+    int nj = parallel_jobs(n, SETUP_PER_THREAD_MIN, threads);
     double max_abs = 0.0;
     for (int k = 0; k < nj; k++) {
         jobs[k] = (SetupJob){ .w = w, .items = bd.items };
@@ -879,7 +1114,8 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     /* Room for them all at once: a 4-wide node per binary interior node at
      * most, about a third of them used (pages never touched cost nothing);
      * growing by doublings copied 20 MB on 10^6 polygons. */
-    if (!failed && n > 0 && !bd.nodes[0].count) {
+    int on_threads = threads > 1 && bd.nnodes >= COLLAPSE_PARALLEL_MIN;
+    if (!failed && n > 0 && !bd.nodes[0].count && !on_threads) {
         c.cap = bd.nnodes / 2 + 1;
         c.nodes = malloc(sizeof *c.nodes * (size_t)c.cap);
         if (!c.nodes)
@@ -905,6 +1141,8 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
                 c.nnodes = 1;
                 c.depth = 1;
             }
+        } else if (on_threads) {
+            failed = collapse_on_threads(&c, threads) < 0;
         } else {
             failed = collapse(&c, 0, 1) < 0;
         }
@@ -924,14 +1162,11 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
         free(c.nodes);
         return -1;
     }
-    for (int k = 0; k < n; k++) {
-        const Polygon *p = &w->polygons[order[k]];
-        const Material *m = &w->materials[p->material];
-        BvhPrim *pr = &prims[k];
-        pr->hide = (m->no_image ? HIDE_NO_IMAGE : 0u) | (m->no_reflection ? HIDE_NO_REFLECTION : 0u) |
-                   (m->no_shadow ? HIDE_NO_SHADOW : 0u);
-        pr->packed = packed ? (uint32_t)polygon_pack(w, p, &packed[k]) : 0u;
-    }
+    PrimJob pj[PARALLEL_MAX_JOBS];
+    nj = parallel_jobs(n, SETUP_PER_THREAD_MIN, threads);
+    for (int k = 0; k < nj; k++)
+        pj[k] = (PrimJob){ w, order, prims, packed, (int)((long long)n * k / nj), (int)((long long)n * (k + 1) / nj) };
+    parallel_run(nj, make_prims, pj, sizeof pj[0]);
     b->prims = prims;
     b->packed = packed;
     b->nodes = c.nodes;
