@@ -34,25 +34,6 @@ void grid_choose_resolution(const World *w, Vec3 lo, Vec3 hi, int res[3])
             res[a] = res[a] > 1 ? res[a] * 3 / 4 : 1;
 }
 
-/* Sutherland-Hodgman: clip the convex-or-not outline in `in` against the
- * half space where coordinate `axis` is >= (sign>0) or <= (sign<0) `bound`. */
-int clip_against(const Vec3 *in, int n, Vec3 *out, int axis, double bound, int sign)
-{
-    int m = 0;
-    for (int i = 0; i < n; i++) {
-        Vec3 a = in[i], b = in[(i + 1) % n];
-        double da = sign * (v3_comp(a, axis) - bound);
-        double db = sign * (v3_comp(b, axis) - bound);
-        if (da >= 0)
-            out[m++] = a;
-        if ((da >= 0) != (db >= 0)) {
-            double t = da / (da - db);
-            out[m++] = v3_add(a, v3_scale(v3_sub(b, a), t));
-        }
-    }
-    return m;
-}
-
 static int outline_overlaps_box_buf(const Vec3 *pts, int n, Vec3 lo, Vec3 hi, Vec3 *buf_a, Vec3 *buf_b)
 {
     memcpy(buf_a, pts, sizeof(Vec3) * (size_t)n);
@@ -108,11 +89,6 @@ int polygon_overlaps_box(const World *w, const Polygon *p, Vec3 lo, Vec3 hi)
 typedef struct {
     uint32_t cell, polygon;
 } Registration;
-
-int grid_cell_coord(const Grid *g, double x, int axis)
-{
-    return int_floor_clamped((x - v3_comp(g->min, axis)) * v3_comp(g->inv_cell_size, axis), 0, g->n[axis] - 1);
-}
 
 void grid_build_box(Grid *g, const World *w, const int *res, const Vec3 *extra, int nextra)
 {

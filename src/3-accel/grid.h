@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "convert.h"
 #include "world.h"
 
 typedef struct {
@@ -59,15 +60,40 @@ int polygon_overlaps_box(const World *w, const Polygon *p, Vec3 lo, Vec3 hi);
 
 /* Sutherland-Hodgman: clips the outline in[0..n) against the half space
  * where coordinate `axis` is >= bound (sign > 0) or <= bound (sign < 0);
- * out needs room for n + 1 points. Returns the new point count. */
-int clip_against(const Vec3 *in, int n, Vec3 *out, int axis, double bound, int sign);
+ * out needs room for n + 1 points. Returns the new point count. Inline:
+ * a shadow polygon's registration clips it some thirty times, each on an
+ * axis and side the caller knows. */
+static inline int clip_against(const Vec3 *in, int n, Vec3 *out, int axis, double bound, int sign)
+{
+    int m = 0;
+    if (n <= 0)
+        return 0;
+    /* each point's signed distance once: the next edge starts where this one ends */
+    double d0 = sign * (v3_comp(in[0], axis) - bound), da = d0;
+    for (int i = 0; i < n; i++) {
+        const Vec3 *a = &in[i], *b = &in[i + 1 < n ? i + 1 : 0];
+        double db = i + 1 < n ? sign * (v3_comp(*b, axis) - bound) : d0;
+        if (da >= 0)
+            out[m++] = *a;
+        if ((da >= 0) != (db >= 0)) {
+            double t = da / (da - db);
+            out[m++] = v3_add(*a, v3_scale(v3_sub(*b, *a), t));
+        }
+        da = db;
+    }
+    return m;
+}
 
 /* Overlap of a planar outline of at most 8 points with [lo, hi] (exact
  * clipping; longer outlines are taken to overlap). */
 int outline_overlaps_box(const Vec3 *pts, int n, Vec3 lo, Vec3 hi);
 
-/* The cell coordinate holding x on `axis`, clamped to the grid. */
-int grid_cell_coord(const Grid *g, double x, int axis);
+/* The cell coordinate holding x on `axis`, clamped to the grid (inline:
+ * registration asks it several times per shadow polygon). */
+static inline int grid_cell_coord(const Grid *g, double x, int axis)
+{
+    return int_floor_clamped((x - v3_comp(g->min, axis)) * v3_comp(g->inv_cell_size, axis), 0, g->n[axis] - 1);
+}
 
 /* Distances below this are too close to call: shadow tests treat such
  * configurations by one rule (fall back to the shadow ray; edge-on polygons

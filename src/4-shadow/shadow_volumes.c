@@ -141,6 +141,7 @@ typedef struct {
     int polygon;
     int8_t swapped;        /* the polygon's outline runs from b to a */
     int8_t interior_left;  /* as PolygonEdge's, for the outline's direction */
+    int8_t edge_flat;      /* on an edge's first use: its polygons all lie in one plane (faces_flat) */
 } EdgeUse;
 
 /* Every polygon's uses of welded edges, by (lo, hi); the uses of one edge
@@ -153,19 +154,30 @@ typedef struct {
 /* A use as one light sees it. */
 typedef struct {
     const EdgeUse *use;
-    int8_t sign;     /* +1: the polygon lies on the positive side of the edge's plane */
+    Vec3 plane;      /* the unit normal of the plane through the edge and the light (edge_plane) */
+    int8_t sign;     /* +1: the polygon lies on the positive side of that plane */
     int8_t channel;  /* 1 opaque, 2 transparent */
 } LightEdgeUse;
 
+/* Polygons sharing an edge lie in one plane when their normals are
+ * parallel (to the first one's). */
+static int normals_parallel(Vec3 n0, Vec3 n) { return v3_length(v3_cross(n0, n)) <= 1e-12; }
+
 /* The faces of a cancelled edge that are not all in one plane are bent
- * (see OccluderSide). They share the edge, so parallel normals mean one
- * plane. */
-static void mark_bent(LightVolumes *lv, const World *w, const LightEdgeUse *u, size_t n)
+ * (see OccluderSide). When the light takes all `all` uses of the edge, the
+ * answer is the one edge_uses_build found for every light (the same
+ * normals, in the same order); else it is worked out for these n. */
+static void mark_bent(LightVolumes *lv, const World *w, const LightEdgeUse *u, size_t n, const EdgeUse *first,
+                      size_t all)
 {
-    Vec3 n0 = w->polygons[u[0].use->polygon].normal;
     int flat = 1;
-    for (size_t k = 1; k < n && flat; k++)
-        flat = v3_length(v3_cross(n0, w->polygons[u[k].use->polygon].normal)) <= 1e-12;
+    if (n == all) {
+        flat = first->edge_flat;
+    } else {
+        Vec3 n0 = w->polygons[u[0].use->polygon].normal;
+        for (size_t k = 1; k < n && flat; k++)
+            flat = normals_parallel(n0, w->polygons[u[k].use->polygon].normal);
+    }
     if (!flat)
         for (size_t k = 0; k < n; k++)
             lv->occluder[u[k].use->polygon].bent = 1;
@@ -178,8 +190,10 @@ static int edge_plane(const Light *l, Vec3 a, Vec3 b, Vec3 *normal)
     Vec3 n = l->kind == LIGHT_PARALLEL ? v3_cross(v3_sub(b, a), l->direction)
                                        : v3_cross(v3_sub(a, l->location), v3_sub(b, l->location));
     double len = v3_length(n);
+    /* the larger of the two distances as one root of the larger square: the same bits */
+    Vec3 la = v3_sub(a, l->location), lb = v3_sub(b, l->location);
     double scale = v3_length(v3_sub(b, a)) *
-                   (l->kind == LIGHT_PARALLEL ? 1.0 : fmax(v3_length(v3_sub(a, l->location)), v3_length(v3_sub(b, l->location))));
+                   (l->kind == LIGHT_PARALLEL ? 1.0 : sqrt(max_of(v3_dot(la, la), v3_dot(lb, lb))));
     if (!(len > 1e-12 * scale)) /* the light on the edge's line: no plane */
         return 0;
     *normal = v3_scale(n, 1.0 / len);
@@ -282,8 +296,8 @@ static void extent(const Vec3 *pts, int n, int axis, double *lo, double *hi)
     *hi = -HUGE_VAL;
     for (int i = 0; i < n; i++) {
         double v = v3_comp(pts[i], axis);
-        *lo = fmin(*lo, v);
-        *hi = fmax(*hi, v);
+        *lo = min_of(*lo, v);
+        *hi = max_of(*hi, v);
     }
 }
 
@@ -391,6 +405,12 @@ static int eye_crosses(const World *w, const Polygon *p, const Light *l, Vec3 ey
         t = se / (se - sl);
     }
     Vec3 x = v3_add(eye, v3_scale(dir, t));
+    /* Well outside the polygon's box (twice tol: rounding of the distances
+     * below cannot bring it within tol): neither inside nor near its border,
+     * which both lie in the box. Most crossings of the plane end here. */
+    for (int a = 0; a < 3; a++)
+        if (v3_comp(x, a) < v3_comp(p->bbox_min, a) - 2.0 * tol || v3_comp(x, a) > v3_comp(p->bbox_max, a) + 2.0 * tol)
+            return 0;
     int m = polygon_edges(w, p, edges);
     for (int i = 0; i < m; i++)
         if (point_segment_distance(x, w->points[edges[i].a], w->points[edges[i].b]) <= tol)
@@ -456,12 +476,23 @@ static int edge_uses_build(EdgeUses *eu, const World *w, const int *weld, int nc
         }
         eu->uses[k] = u;
     }
+    /* Each edge's flatness, for mark_bent. */
+    for (size_t e = 0, e_end; e < eu->n; e = e_end) {
+        Vec3 n0 = w->polygons[eu->uses[e].polygon].normal;
+        int flat = 1;
+        for (e_end = e + 1; e_end < eu->n && eu->uses[e_end].lo == eu->uses[e].lo && eu->uses[e_end].hi == eu->uses[e].hi;
+             e_end++)
+            flat = flat && normals_parallel(n0, w->polygons[eu->uses[e_end].polygon].normal);
+        eu->uses[e].edge_flat = (int8_t)flat;
+    }
     return 0;
 }
 
+/* One light's volumes. regs is the caller's scratch list of registrations,
+ * kept from light to light (its pages are touched once, not per light). */
 static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, const Grid *g, const Light *l,
-                       const EdgeUses *eu, const Vec3 *eye, PolygonEdge *edges, ShadowPolygon **all, int *nall,
-                       int *cap_all, int fill)
+                       const EdgeUses *eu, const Vec3 *eye, PolygonEdge *edges, RegList *regs, ShadowPolygon **all,
+                       int *nall, int *cap_all, int fill)
 {
     double tol = sv->tolerance;
     lv->occluder = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof *lv->occluder);
@@ -487,7 +518,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
         }
     }
 
-    RegList regs = { NULL, 0, 0 };
+    regs->n = 0;
     Vec3 ext = v3_sub(g->max, g->min);
     double diagonal = v3_length(ext);
     lv->first = *nall; /* moved along when the lights' polygons are put together */
@@ -499,16 +530,27 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
     if (!uses)
         status = -1;
     for (size_t e = 0; e < eu->n && status == 0;) {
-        size_t e_end = e;
+        size_t e_first = e, e_end = e;
         size_t nuses = 0;
+        /* The uses of an edge mostly have its ends at the same coordinates
+         * (a mesh's faces copy their vertices): their plane is computed once. */
+        Vec3 last_a = v3(0, 0, 0), last_b = last_a, last_n = last_a;
+        int have_last = 0, last_ok = 0;
         for (; e_end < eu->n && eu->uses[e_end].lo == eu->uses[e].lo && eu->uses[e_end].hi == eu->uses[e].hi; e_end++) {
             const EdgeUse *u = &eu->uses[e_end];
             const OccluderSide *o = &lv->occluder[u->polygon];
             if (!o->channel)
                 continue;
-            Vec3 n;
-            if (!edge_plane(l, w->points[u->a], w->points[u->b], &n))
+            const Vec3 *pa = &w->points[u->a], *pb = &w->points[u->b];
+            if (!have_last || memcmp(pa, &last_a, sizeof last_a) != 0 || memcmp(pb, &last_b, sizeof last_b) != 0) {
+                last_a = *pa;
+                last_b = *pb;
+                last_ok = edge_plane(l, last_a, last_b, &last_n);
+                have_last = 1;
+            }
+            if (!last_ok)
                 continue;
+            Vec3 n = last_n;
             /* The polygon's side of the edge, in its plane. */
             const Polygon *p = &w->polygons[u->polygon];
             int a = u->swapped ? u->b : u->a, b = u->swapped ? u->a : u->b;
@@ -524,7 +566,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
                 }
                 uses = bigger;
             }
-            uses[nuses++] = (LightEdgeUse){ u, (int8_t)(v3_dot(n, inward) > 0.0 ? 1 : -1), o->channel };
+            uses[nuses++] = (LightEdgeUse){ u, n, (int8_t)(v3_dot(n, inward) > 0.0 ? 1 : -1), o->channel };
         }
         e = e_end;
         if (nuses == 0 || status)
@@ -539,7 +581,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
         }
         if (wo == 0 && wt == 0) {
             lv->cancelled_edges++;
-            mark_bent(lv, w, uses + i, j - i);
+            mark_bent(lv, w, uses + i, j - i, &eu->uses[e_first], e - e_first);
             continue;
         }
         lv->silhouette_edges++;
@@ -553,23 +595,21 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
             *all = n;
             *cap_all = cap;
         }
-        Vec3 a = w->points[uses[i].use->a], b = w->points[uses[i].use->b], n;
-        edge_plane(l, a, b, &n);
+        Vec3 a = w->points[uses[i].use->a], b = w->points[uses[i].use->b];
         ShadowPolygon *sp = &(*all)[*nall];
-        make_shadow_polygon(sp, l, a, b, n);
+        make_shadow_polygon(sp, l, a, b, uses[i].plane);
         sp->weight_opaque = (int16_t)wo;
         sp->weight_transparent = (int16_t)wt;
         Vec3 q[4];
         wedge_outline(l, a, b, diagonal, q);
-        status = register_shadow_polygon(&regs, g, q, (uint32_t)*nall, tol);
+        status = register_shadow_polygon(regs, g, q, (uint32_t)*nall, tol);
         (*nall)++;
     }
     free(uses);
     lv->count = *nall - lv->first;
-    lv->nitems = regs.n;
+    lv->nitems = regs->n;
     if (status == 0 && fill)
-        status = fill_cells(lv, g, &regs);
-    free(regs.r);
+        status = fill_cells(lv, g, regs);
     return status;
 }
 
@@ -611,15 +651,17 @@ static void *build_lights(void *arg)
         j->status = -1;
         return NULL;
     }
+    RegList regs = { NULL, 0, 0 };
     for (int li = j->first_light; li < w->nlights && j->status == 0; li += j->stride) {
         LightVolumes *lv = &j->sv->light[li];
         if (!lv->usable)
             continue;
         int cap = 0;
         j->npolygons[li] = 0;
-        j->status = build_light(j->sv, lv, w, j->g, &w->lights[li], j->uses, j->eye, edges, &j->polygons[li],
+        j->status = build_light(j->sv, lv, w, j->g, &w->lights[li], j->uses, j->eye, edges, &regs, &j->polygons[li],
                                 &j->npolygons[li], &cap, 1);
     }
+    free(regs.r);
     free(edges);
     return NULL;
 }
@@ -893,6 +935,7 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
         est->shared_seconds = fmin(est->shared_seconds, (clock_thread_cpu() - t0) * est->scale);
     }
     /* Each wanted light's silhouettes and registrations on the sample. */
+    RegList regs = { NULL, 0, 0 };
     for (int li = 0; status == 0 && li < w->nlights; li++) {
         int cuts;
         if (!light_can_have_volumes(w, g, li, sv.tolerance, &cuts) || (want && !want[li]))
@@ -903,7 +946,8 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
             ShadowPolygon *polygons = NULL;
             int npolygons = 0, cap = 0;
             double t0 = clock_thread_cpu();
-            status = build_light(&sv, &lv, &s, g, &w->lights[li], &uses, eye, edges, &polygons, &npolygons, &cap, 0);
+            status = build_light(&sv, &lv, &s, g, &w->lights[li], &uses, eye, edges, &regs, &polygons, &npolygons,
+                                 &cap, 0);
             best = fmin(best, clock_thread_cpu() - t0);
             est->light_registrations[li] = (double)lv.nitems * est->scale;
             free(lv.occluder);
@@ -911,6 +955,7 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
         }
         est->light_seconds[li] = best * est->scale;
     }
+    free(regs.r);
     /* Filling a light's cells: its offsets span the whole grid, whatever
      * the sample (its occupancy masks), so that part is timed at full size
      * (with no items). */
