@@ -432,6 +432,23 @@ static void test_mesh_threads(void)
                counts[k]);
         world_free(&many);
     }
+    /* Once the world is made, the mesh's lists go back (scene.h) and the
+     * mesh keeps none (the world has copies of its own: under the
+     * sanitizers a render after the release would catch a use of them). */
+    if (built) {
+        SceneObject *mesh = s->nobjects == 3 ? s->objects[1] : NULL;
+        scene_release_mesh_lists(s);
+        tap_ok(mesh && mesh->kind == OBJ_MESH && mesh->u.mesh.nvertices == 0 && mesh->u.mesh.nfaces == 0 &&
+                   !mesh->u.mesh.vertices && !mesh->u.mesh.faces,
+               "the mesh's lists released after the world is built");
+    }
+    /* Only an allocation with a block to itself is given back, once. */
+    Arena *a = arena_new();
+    char *big = a ? arena_alloc(a, 1 << 20) : NULL, *small = a ? arena_alloc(a, 64) : NULL;
+    tap_ok(big && small && arena_release(a, big) == 1 && arena_release(a, big) == 0 && arena_release(a, small) == 0 &&
+               arena_release(a, small + 16) == 0,
+           "arena_release: a big allocation goes back, once; a small one or a pointer into one stays");
+    arena_free(a);
     if (built)
         world_free(&one);
     scene_free(s);

@@ -74,6 +74,27 @@ void *arena_alloc_uninit(Arena *a, size_t size)
     return p;
 }
 
+int arena_release(Arena *a, void *p)
+{
+    /* A block made for one allocation bigger than the usual block holds it
+     * alone (it is made full): only such a block can go. */
+    for (Block **at = a ? &a->head : NULL; at && *at; at = &(*at)->next) {
+        Block *b = *at;
+        if ((void *)b->data != p)
+            continue;
+        if (b->size <= 65536 || b->used != b->size)
+            return 0;
+        *at = b->next;
+        size_t whole = sizeof(Block) + b->size;
+        a->taken -= whole;
+        if (a->budget)
+            a->budget->used -= whole;
+        free(b);
+        return 1;
+    }
+    return 0;
+}
+
 char *arena_strdup(Arena *a, const char *s)
 {
     size_t n = strlen(s) + 1;

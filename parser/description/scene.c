@@ -36,6 +36,30 @@ void scene_free(Scene *scene)
     arena_free(a);
 }
 
+static void release_mesh_lists(Arena *a, SceneObject *o)
+{
+    if (!o)
+        return;
+    if (o->kind == OBJ_MESH) {
+        arena_release(a, o->u.mesh.vertices);
+        arena_release(a, o->u.mesh.normals);
+        arena_release(a, o->u.mesh.uvs);
+        arena_release(a, o->u.mesh.faces);
+        o->u.mesh.vertices = o->u.mesh.normals = o->u.mesh.uvs = NULL;
+        o->u.mesh.faces = NULL;
+        o->u.mesh.nvertices = o->u.mesh.nnormals = o->u.mesh.nuvs = o->u.mesh.nfaces = 0;
+    } else if (o->kind == OBJ_UNION) {
+        for (int i = 0; i < o->u.csg.nchildren; i++)
+            release_mesh_lists(a, o->u.csg.children[i]);
+    }
+}
+
+void scene_release_mesh_lists(Scene *scene)
+{
+    for (int i = 0; scene && i < scene->nobjects; i++)
+        release_mesh_lists(scene->arena, scene->objects[i]);
+}
+
 double scene_working_gamma(const Scene *s)
 {
     const GlobalSettings *g = &s->globals;

@@ -36,10 +36,11 @@ typedef struct {
      * (border_orientation below). */
     Vec3 end[2];          /* the edge's ends a, b */
     Vec3 toward[2];       /* unit, from each end toward the light (point: toward its location; parallel: its direction) */
-    int8_t inside_sign[2]; /* orient sign, for a crossing toward +normal, of points inside the wedge */
     Vec3 edge_normal;     /* in-plane unit normal of the edge, pointing away from the light */
     double edge_d;        /* dot(edge_normal, x) - edge_d >= 0 beyond the edge */
+    /* the small fields together, at the end: 168 bytes, no padding between */
     int16_t weight_opaque, weight_transparent; /* count change, negative -> positive side */
+    int8_t inside_sign[2]; /* orient sign, for a crossing toward +normal, of points inside the wedge */
 } ShadowPolygon;
 
 /* A polygon's relation to one light. */

@@ -271,6 +271,9 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         goto done;
     }
     world.alpha_background = o->output_alpha;
+    /* The world has its own copy of the meshes now: their lists go before
+     * the hierarchy's build, where the memory peaks. */
+    scene_release_mesh_lists(scene);
     report.world_seconds = clock_wall() - t;
     /* The grid box holds the camera (depth counts start there) and the part
      * of every infinite plane under the geometry, where shadows fall. */
