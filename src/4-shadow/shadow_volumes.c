@@ -7,12 +7,12 @@
 
 #include <float.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "clock.h"
 #include "intersect.h"
+#include "parallel.h"
 
 /* ---- welding vertices by exact position ---------------------------------- */
 
@@ -154,8 +154,7 @@ typedef struct {
 /* A use as one light sees it. */
 typedef struct {
     const EdgeUse *use;
-    Vec3 plane;      /* the unit normal of the plane through the edge and the light (edge_plane) */
-    int8_t sign;     /* +1: the polygon lies on the positive side of that plane */
+    int8_t sign;     /* +1: the polygon lies on the positive side of the plane through the edge and the light */
     int8_t channel;  /* 1 opaque, 2 transparent */
 } LightEdgeUse;
 
@@ -488,13 +487,43 @@ static int edge_uses_build(EdgeUses *eu, const World *w, const int *weld, int nc
     return 0;
 }
 
-/* One light's volumes. regs is the caller's scratch list of registrations,
- * kept from light to light (its pages are touched once, not per light). */
-static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, const Grid *g, const Light *l,
-                       const EdgeUses *eu, const Vec3 *eye, PolygonEdge *edges, RegList *regs, ShadowPolygon **all,
-                       int *nall, int *cap_all, int fill)
+/* A silhouette edge as a light's first pass finds it: the use its shadow
+ * polygon is made from (the first of the edge's uses the light takes), and
+ * the count change across it. */
+typedef struct {
+    uint32_t use; /* index in EdgeUses.uses */
+    int16_t weight_opaque, weight_transparent;
+} Silhouette;
+
+typedef struct {
+    Silhouette *s;
+    size_t n, cap;
+} SilhouetteList;
+
+static int silhouette_push(SilhouetteList *l, Silhouette s)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? l->cap * 2 : 1024;
+        Silhouette *bigger = realloc(l->s, cap * sizeof *bigger);
+        if (!bigger)
+            return -1;
+        l->s = bigger;
+        l->cap = cap;
+    }
+    l->s[l->n++] = s;
+    return 0;
+}
+
+/* A light's first pass: which side of it each polygon faces (and whether
+ * the eye's segment to it crosses the polygon), then edge by edge whether
+ * the uses cancel (bent faces marked) or make a silhouette. */
+static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, const Light *l, const EdgeUses *eu,
+                          const Vec3 *eye, PolygonEdge *edges, SilhouetteList *sil)
 {
     double tol = sv->tolerance;
+    sil->n = 0;
+    if (eu->n > UINT32_MAX)
+        return -1;
     lv->occluder = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof *lv->occluder);
     if (!lv->occluder)
         return -1;
@@ -518,10 +547,6 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
         }
     }
 
-    regs->n = 0;
-    Vec3 ext = v3_sub(g->max, g->min);
-    double diagonal = v3_length(ext);
-    lv->first = *nall; /* moved along when the lights' polygons are put together */
     int status = 0;
     /* Edge by edge: the uses by polygons that cast this light's shadows and
      * whose edge has a plane through the light. */
@@ -566,7 +591,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
                 }
                 uses = bigger;
             }
-            uses[nuses++] = (LightEdgeUse){ u, n, (int8_t)(v3_dot(n, inward) > 0.0 ? 1 : -1), o->channel };
+            uses[nuses++] = (LightEdgeUse){ u, (int8_t)(v3_dot(n, inward) > 0.0 ? 1 : -1), o->channel };
         }
         e = e_end;
         if (nuses == 0 || status)
@@ -585,31 +610,61 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
             continue;
         }
         lv->silhouette_edges++;
-        if (*nall == *cap_all) {
-            int cap = *cap_all ? *cap_all * 2 : 1024;
-            ShadowPolygon *n = realloc(*all, (size_t)cap * sizeof *n);
-            if (!n) {
-                status = -1;
-                break;
-            }
-            *all = n;
-            *cap_all = cap;
-        }
-        Vec3 a = w->points[uses[i].use->a], b = w->points[uses[i].use->b];
-        ShadowPolygon *sp = &(*all)[*nall];
-        make_shadow_polygon(sp, l, a, b, uses[i].plane);
-        sp->weight_opaque = (int16_t)wo;
-        sp->weight_transparent = (int16_t)wt;
-        Vec3 q[4];
-        wedge_outline(l, a, b, diagonal, q);
-        status = register_shadow_polygon(regs, g, q, (uint32_t)*nall, tol);
-        (*nall)++;
+        status = silhouette_push(sil, (Silhouette){ (uint32_t)(uses[i].use - eu->uses), (int16_t)wo, (int16_t)wt });
     }
     free(uses);
-    lv->count = *nall - lv->first;
+    return status;
+}
+
+/* A light's second pass: its shadow polygons, made into out[0 .. sil->n)
+ * (shadow polygons first .. first + n of all lights') and registered in
+ * the cells they cross, as they are numbered among all lights'. regs is
+ * the caller's scratch list, kept from light to light (its pages are
+ * touched once, not per light). */
+static int make_light_polygons(ShadowVolumes *sv, LightVolumes *lv, const World *w, const Grid *g, const Light *l,
+                               const EdgeUses *eu, const SilhouetteList *sil, ShadowPolygon *out, size_t first,
+                               RegList *regs, int fill)
+{
+    double tol = sv->tolerance;
+    double diagonal = v3_length(v3_sub(g->max, g->min));
+    regs->n = 0;
+    lv->first = (int)first;
+    lv->count = (int)sil->n;
+    int status = 0;
+    for (size_t k = 0; k < sil->n && status == 0; k++) {
+        const EdgeUse *u = &eu->uses[sil->s[k].use];
+        Vec3 a = w->points[u->a], b = w->points[u->b], n;
+        edge_plane(l, a, b, &n); /* the plane the first pass found for this use: it has one */
+        ShadowPolygon *sp = &out[k];
+        make_shadow_polygon(sp, l, a, b, n);
+        sp->weight_opaque = sil->s[k].weight_opaque;
+        sp->weight_transparent = sil->s[k].weight_transparent;
+        Vec3 q[4];
+        wedge_outline(l, a, b, diagonal, q);
+        status = register_shadow_polygon(regs, g, q, (uint32_t)(first + k), tol);
+    }
     lv->nitems = regs->n;
     if (status == 0 && fill)
         status = fill_cells(lv, g, regs);
+    return status;
+}
+
+/* One light's volumes, both passes, into an array of its own (*all, *nall
+ * shadow polygons numbered from 0): the build's estimate (volume_plan.h)
+ * times it on a sample. */
+static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, const Grid *g, const Light *l,
+                       const EdgeUses *eu, const Vec3 *eye, PolygonEdge *edges, RegList *regs, ShadowPolygon **all,
+                       int *nall, int fill)
+{
+    SilhouetteList sil = { NULL, 0, 0 };
+    int status = classify_light(sv, lv, w, l, eu, eye, edges, &sil);
+    *all = status == 0 ? malloc(sizeof **all * (sil.n > 0 ? sil.n : 1)) : NULL;
+    if (status == 0 && !*all)
+        status = -1;
+    if (status == 0)
+        status = make_light_polygons(sv, lv, w, g, l, eu, &sil, *all, 0, regs, fill);
+    *nall = status == 0 ? (int)sil.n : 0;
+    free(sil.s);
     return status;
 }
 
@@ -627,8 +682,10 @@ static int parallel_plane_cuts_box(const Light *l, const Grid *g, double tol)
     return 0;
 }
 
-/* One light's shadow volumes, built on a thread of its own: into arrays of
- * its own, its shadow polygons numbered from 0. */
+/* The lights' volumes on threads, each light on one, in two passes with all
+ * lights' first passes done before any second: their silhouettes counted,
+ * every light's shadow polygons are made straight into their places in
+ * the one array (no light's copied there afterwards). */
 typedef struct {
     ShadowVolumes *sv;
     const World *w;
@@ -637,12 +694,12 @@ typedef struct {
     const Vec3 *eye;
     int maxpts;
     int first_light, stride;  /* the lights i = first_light + k * stride */
-    ShadowPolygon **polygons; /* per light */
-    int *npolygons;
+    SilhouetteList *sil;      /* per light */
+    const size_t *first;      /* per light: its first shadow polygon's index (second pass) */
     int status;
 } LightJob;
 
-static void *build_lights(void *arg)
+static void *classify_lights(void *arg)
 {
     LightJob *j = arg;
     const World *w = j->w;
@@ -651,18 +708,23 @@ static void *build_lights(void *arg)
         j->status = -1;
         return NULL;
     }
-    RegList regs = { NULL, 0, 0 };
-    for (int li = j->first_light; li < w->nlights && j->status == 0; li += j->stride) {
-        LightVolumes *lv = &j->sv->light[li];
-        if (!lv->usable)
-            continue;
-        int cap = 0;
-        j->npolygons[li] = 0;
-        j->status = build_light(j->sv, lv, w, j->g, &w->lights[li], j->uses, j->eye, edges, &regs, &j->polygons[li],
-                                &j->npolygons[li], &cap, 1);
-    }
-    free(regs.r);
+    for (int li = j->first_light; li < w->nlights && j->status == 0; li += j->stride)
+        if (j->sv->light[li].usable)
+            j->status = classify_light(j->sv, &j->sv->light[li], w, &w->lights[li], j->uses, j->eye, edges, &j->sil[li]);
     free(edges);
+    return NULL;
+}
+
+static void *make_lights_polygons(void *arg)
+{
+    LightJob *j = arg;
+    const World *w = j->w;
+    RegList regs = { NULL, 0, 0 };
+    for (int li = j->first_light; li < w->nlights && j->status == 0; li += j->stride)
+        if (j->sv->light[li].usable)
+            j->status = make_light_polygons(j->sv, &j->sv->light[li], w, j->g, &w->lights[li], j->uses, &j->sil[li],
+                                            j->sv->polygons + j->first[li], j->first[li], &regs, 1);
+    free(regs.r);
     return NULL;
 }
 
@@ -691,15 +753,15 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     sv->nlights = w->nlights;
     int nl = w->nlights > 0 ? w->nlights : 1;
     sv->light = calloc((size_t)nl, sizeof *sv->light);
-    ShadowPolygon **polygons = calloc((size_t)nl, sizeof *polygons);
-    int *npolygons = calloc((size_t)nl, sizeof *npolygons);
+    SilhouetteList *sil = calloc((size_t)nl, sizeof *sil);
+    size_t *first = calloc((size_t)nl, sizeof *first);
     int nclasses = 0;
     int *weld = weld_points(w, &nclasses);
     int maxpts = 3;
     for (int i = 0; i < w->npolygons; i++)
         if (w->polygons[i].npoints + 3 > maxpts)
             maxpts = w->polygons[i].npoints + 3;
-    int status = !sv->light || !polygons || !npolygons || !weld ? -1 : 0;
+    int status = !sv->light || !sil || !first || !weld ? -1 : 0;
     sv->nwelded_vertices = nclasses;
     /* The edges' uses, for every light alike. */
     EdgeUses uses = { NULL, 0 };
@@ -708,6 +770,7 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
         status = edges && edge_uses_build(&uses, w, weld, nclasses, edges) == 0 ? 0 : -1;
         free(edges);
     }
+    free(weld);
     int usable = 0;
     for (int li = 0; status == 0 && li < w->nlights; li++) {
         if (!light_can_have_volumes(w, g, li, sv->tolerance, &sv->light[li].plane_cuts_scene))
@@ -724,66 +787,38 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     int nthreads = threads < 1 ? 1 : threads;
     if (nthreads > usable)
         nthreads = usable > 0 ? usable : 1;
-    enum { MAX_BUILD_THREADS = 64 };
-    if (nthreads > MAX_BUILD_THREADS)
-        nthreads = MAX_BUILD_THREADS;
-    LightJob jobs[MAX_BUILD_THREADS];
-    pthread_t tids[MAX_BUILD_THREADS];
-    int spawned[MAX_BUILD_THREADS] = { 0 };
-    for (int t = 0; status == 0 && t < nthreads; t++) {
-        jobs[t] = (LightJob){ sv, w, g, &uses, eye, maxpts, t, nthreads, polygons, npolygons, 0 };
-        if (t > 0)
-            spawned[t] = pthread_create(&tids[t], NULL, build_lights, &jobs[t]) == 0;
-        if (t > 0 && !spawned[t])
-            build_lights(&jobs[t]); /* no thread to be had: here, then */
-    }
+    if (nthreads > PARALLEL_MAX_JOBS)
+        nthreads = PARALLEL_MAX_JOBS;
+    LightJob jobs[PARALLEL_MAX_JOBS];
+    for (int t = 0; t < nthreads; t++)
+        jobs[t] = (LightJob){ sv, w, g, &uses, eye, maxpts, t, nthreads, sil, first, 0 };
     if (status == 0)
-        build_lights(&jobs[0]);
-    for (int t = 0; status == 0 && t < nthreads; t++) {
-        if (spawned[t])
-            pthread_join(tids[t], NULL);
-    }
-    for (int t = 0; status == 0 && t < nthreads; t++)
+        parallel_run(nthreads, classify_lights, jobs, sizeof jobs[0]);
+    for (int t = 0; t < nthreads; t++)
         if (jobs[t].status)
             status = -1;
-    free(uses.uses); /* before the polygons are put together: the peak is there */
-    uses.uses = NULL;
-    /* The lights' shadow polygons put together, in light order: the first
-     * light's array grows to take each next one, which is freed at once,
-     * so that at most one light's polygons exist twice. */
-    int base = 0;
+    /* Every light's place in the one array, in light order. */
+    size_t total = 0;
     for (int li = 0; status == 0 && li < w->nlights; li++) {
-        LightVolumes *lv = &sv->light[li];
-        if (npolygons[li] && !sv->polygons) {
-            sv->polygons = polygons[li];
-            polygons[li] = NULL;
-        } else if (npolygons[li]) {
-            ShadowPolygon *grown = realloc(sv->polygons, sizeof *grown * ((size_t)base + (size_t)npolygons[li]));
-            if (!grown) {
-                status = -1;
-                break;
-            }
-            sv->polygons = grown;
-            memcpy(&sv->polygons[base], polygons[li], sizeof *sv->polygons * (size_t)npolygons[li]);
-            free(polygons[li]);
-            polygons[li] = NULL;
-        }
-        lv->first = base;
-        if (lv->cells.items && base)
-            for (size_t k = 0; k < lv->cells.nitems; k++)
-                lv->cells.items[k] += (uint32_t)base;
-        base += npolygons[li];
+        first[li] = total;
+        total += sil[li].n;
     }
-    sv->npolygons = base;
-    if (status == 0 && !sv->polygons) {
-        sv->polygons = malloc(sizeof *sv->polygons);
+    if (status == 0 && total > INT32_MAX)
+        status = -1; /* shadow polygons are numbered in 32 bits, and counted in int */
+    if (status == 0) {
+        sv->polygons = malloc(sizeof *sv->polygons * (total > 0 ? total : 1));
         status = sv->polygons ? 0 : -1;
     }
-    for (int li = 0; polygons && li < w->nlights; li++)
-        free(polygons[li]);
-    free(polygons);
-    free(npolygons);
-    free(weld);
+    if (status == 0)
+        parallel_run(nthreads, make_lights_polygons, jobs, sizeof jobs[0]);
+    for (int t = 0; t < nthreads; t++)
+        if (jobs[t].status)
+            status = -1;
+    sv->npolygons = (int)total;
+    for (int li = 0; sil && li < w->nlights; li++)
+        free(sil[li].s);
+    free(sil);
+    free(first);
     free(uses.uses);
     if (status == 0) {
         sv->planes = malloc(sizeof *sv->planes * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
@@ -944,10 +979,9 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
         for (int round = 0; status == 0 && round < ESTIMATE_ROUNDS; round++) {
             memset(&lv, 0, sizeof lv);
             ShadowPolygon *polygons = NULL;
-            int npolygons = 0, cap = 0;
+            int npolygons = 0;
             double t0 = clock_thread_cpu();
-            status = build_light(&sv, &lv, &s, g, &w->lights[li], &uses, eye, edges, &regs, &polygons, &npolygons,
-                                 &cap, 0);
+            status = build_light(&sv, &lv, &s, g, &w->lights[li], &uses, eye, edges, &regs, &polygons, &npolygons, 0);
             best = fmin(best, clock_thread_cpu() - t0);
             est->light_registrations[li] = (double)lv.nitems * est->scale;
             free(lv.occluder);
