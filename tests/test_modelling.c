@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "big_memory.h"
 #include "parser.h"
 #include "pigment.h"
 #include "tap.h"
@@ -454,8 +455,68 @@ static void test_mesh_threads(void)
     scene_free(s);
 }
 
+/* Whether the kernel marks [p, p + bytes) as asking for huge pages: the
+ * smaps entry of the mapping that holds p says "hg" among its VmFlags.
+ * -1 when this system does not tell (no /proc/self/smaps). */
+static int marked_huge(const void *p)
+{
+    FILE *f = fopen("/proc/self/smaps", "r");
+    if (!f)
+        return -1;
+    char line[512];
+    int inside = 0, marked = 0;
+    while (fgets(line, sizeof line, f)) {
+        unsigned long lo, hi;
+        if (sscanf(line, "%lx-%lx ", &lo, &hi) == 2 && strchr(line, '-') < strchr(line, ' '))
+            inside = (unsigned long)p >= lo && (unsigned long)p < hi;
+        else if (inside && strncmp(line, "VmFlags:", 8) == 0)
+            marked = strstr(line, " hg") != NULL;
+    }
+    fclose(f);
+    return marked;
+}
+
+/* big_malloc and big_realloc are malloc and realloc whose big arrays ask
+ * for huge pages; where the system offers them on request (THP "madvise"
+ * or "always"), the kernel must have taken the advice for the array's
+ * inside, and a grown array keeps its contents. */
+static void test_big_memory(void)
+{
+    const size_t n = BIG_MEMORY_MIN / sizeof(double) + 1000;
+    double *a = big_malloc(n * sizeof *a);
+    for (size_t i = 0; a && i < n; i++)
+        a[i] = (double)i * 0.5;
+    double *b = a ? big_realloc(a, 3 * n * sizeof *b) : NULL;
+    int kept = b != NULL;
+    for (size_t i = 0; kept && i < n; i++)
+        kept = b[i] == (double)i * 0.5;
+    tap_ok(kept, "big_realloc keeps a %zu-byte array's contents as it grows it", n * sizeof *a);
+    char mode[128] = "";
+    FILE *f = fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
+    if (f) {
+        if (!fgets(mode, sizeof mode, f))
+            mode[0] = 0;
+        fclose(f);
+    }
+    int offered = strstr(mode, "[madvise]") || strstr(mode, "[always]");
+    int marked = b ? marked_huge((const char *)b + n * sizeof *b) : 0;
+    if (offered && marked >= 0)
+        tap_ok(marked == 1, "a grown big array asks for huge pages (VmFlags hg; the system's mode: %.*s)",
+               (int)strcspn(mode, "\n"), mode);
+    else
+        tap_ok(1, "a grown big array asks for huge pages # SKIP this system offers none on request");
+    /* Small arrays and pointers anywhere in a page are taken as they are. */
+    char *small = big_malloc(100);
+    big_memory_advise(small ? small + 1 : NULL, 99);
+    big_memory_advise(b ? (char *)b + 3 : NULL, 3 * n * sizeof *b - 7);
+    tap_ok(small != NULL, "small arrays and unaligned ranges are taken as they are");
+    free(small);
+    free(b);
+}
+
 int main(void)
 {
+    test_big_memory();
     test_mesh_threads();
     test_pattern_values();
     test_pigments();

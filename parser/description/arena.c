@@ -1,6 +1,7 @@
 /* A bump allocator: a scene's many small pieces are freed in one call, which
  * also keeps error paths (the parser unwinds with longjmp) free of leaks. */
 #include "scene.h"
+#include "big_memory.h"
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -58,7 +59,7 @@ void *arena_alloc_uninit(Arena *a, size_t size)
             a->budget->exceeded = 1;
             return NULL;
         }
-        b = malloc(whole);
+        b = big_malloc(whole);
         if (!b)
             return NULL;
         a->taken += whole;

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "big_memory.h"
 #include "parallel.h"
 
 typedef struct {
@@ -36,7 +37,7 @@ static int grow(void **array, int *cap, int need, size_t size)
             return -1;
         ncap *= 2;
     }
-    void *p = realloc(*array, (size_t)ncap * size);
+    void *p = big_realloc(*array, (size_t)ncap * size);
     if (!p)
         return -1;
     *array = p;

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "big_memory.h"
 #include "parallel.h"
 
 #define BINS 16
@@ -134,11 +135,26 @@ typedef struct {
 /* Subtrees of fewer items are built on the thread that reaches them. */
 #define PARALLEL_MIN 20000
 
+/* Room for the nodes of a tree over `count` items made at once: a binary
+ * tree whose leaves hold at least one item has at most 2 count - 1 nodes.
+ * Pages never written cost nothing, and the array never moves (growing it by
+ * doublings copied and faulted in every node again). 0, or -1 when out of
+ * memory (then new_node grows the array as needed). */
+static int reserve_nodes(Builder *bd, int count)
+{
+    size_t cap = count > 0 ? 2 * (size_t)count - 1 : 1;
+    if (cap > INT32_MAX)
+        return -1;
+    bd->nodes = big_malloc(sizeof *bd->nodes * cap);
+    bd->cap = bd->nodes ? (int)cap : 0;
+    return bd->nodes ? 0 : -1;
+}
+
 static int new_node(Builder *bd)
 {
     if (bd->nnodes == bd->cap) {
         int cap = bd->cap ? bd->cap * 2 : 64;
-        BinNode *n = realloc(bd->nodes, sizeof *n * (size_t)cap);
+        BinNode *n = big_realloc(bd->nodes, sizeof *n * (size_t)cap);
         if (!n)
             return -1;
         bd->nodes = n;
@@ -562,6 +578,7 @@ static int build_halves(Builder *bd, int first, int mid, int count, int depth, c
         h.first = first + mid;
         h.count = count - mid;
         h.depth = depth;
+        (void)reserve_nodes(&h.sub, h.count);
         h.bounds = *rb;
         h.cbounds = *rcb;
         spawned = pthread_create(&tid, NULL, build_half, &h) == 0;
@@ -585,7 +602,7 @@ static int build_halves(Builder *bd, int first, int mid, int count, int depth, c
     if (!failed && !h.failed) {
         while (bd->cap < bd->nnodes + h.sub.nnodes) {
             int cap = bd->cap ? bd->cap * 2 : 64;
-            BinNode *n = realloc(bd->nodes, sizeof *n * (size_t)cap);
+            BinNode *n = big_realloc(bd->nodes, sizeof *n * (size_t)cap);
             if (!n) {
                 failed = 1;
                 break;
@@ -771,7 +788,7 @@ static int collapse(Collapser *c, uint32_t bi, int depth)
         if (c->fixed)
             return -1; /* its size was counted: cannot happen */
         int cap = c->cap ? c->cap * 2 : 64;
-        BvhNode *n = realloc(c->nodes, sizeof *n * (size_t)cap);
+        BvhNode *n = big_realloc(c->nodes, sizeof *n * (size_t)cap);
         if (!n)
             return -1;
         c->nodes = n;
@@ -947,7 +964,7 @@ static int collapse_on_threads(Collapser *c, int threads)
     long total = ntop;
     for (int i = 0; i < nsubs; i++)
         total += subs[i].count;
-    c->nodes = total <= INT32_MAX ? malloc(sizeof *c->nodes * (size_t)total) : NULL;
+    c->nodes = total <= INT32_MAX ? big_malloc(sizeof *c->nodes * (size_t)total) : NULL;
     if (!c->nodes)
         return -1;
     c->cap = (int)total;
@@ -1074,12 +1091,15 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     atomic_int free_threads = threads - 1;
     bd.free_threads = &free_threads;
     bd.plain = plain;
+    (void)reserve_nodes(&bd, n);
     /* 16-byte aligned for the vector loads (sizeof (BuildItem) is 48). */
     bd.items = aligned_alloc(16, sizeof *bd.items * (size_t)(n > 0 ? n : 1));
-    uint32_t *order = malloc(sizeof *order * (size_t)(n > 0 ? n : 1));
+    big_memory_advise(bd.items, sizeof *bd.items * (size_t)(n > 0 ? n : 1));
+    uint32_t *order = big_malloc(sizeof *order * (size_t)(n > 0 ? n : 1));
     if (!bd.items || !order) {
         free(bd.items);
         free(order);
+        free(bd.nodes);
         return -1;
     }
     SetupJob jobs[PARALLEL_MAX_JOBS];
@@ -1117,7 +1137,7 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     int on_threads = threads > 1 && bd.nnodes >= COLLAPSE_PARALLEL_MIN;
     if (!failed && n > 0 && !bd.nodes[0].count && !on_threads) {
         c.cap = bd.nnodes / 2 + 1;
-        c.nodes = malloc(sizeof *c.nodes * (size_t)c.cap);
+        c.nodes = big_malloc(sizeof *c.nodes * (size_t)c.cap);
         if (!c.nodes)
             c.cap = 0; /* collapse grows it, or fails, as before */
     }
@@ -1153,8 +1173,8 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
         free(c.nodes);
         return -1;
     }
-    BvhPrim *prims = malloc(sizeof *prims * (size_t)(n > 0 ? n : 1));
-    PackedPolygon *packed = n <= BVH_PACK_MAX ? malloc(sizeof *packed * (size_t)(n > 0 ? n : 1)) : NULL;
+    BvhPrim *prims = big_malloc(sizeof *prims * (size_t)(n > 0 ? n : 1));
+    PackedPolygon *packed = n <= BVH_PACK_MAX ? big_malloc(sizeof *packed * (size_t)(n > 0 ? n : 1)) : NULL;
     if (!prims || (n <= BVH_PACK_MAX && !packed)) {
         free(prims);
         free(packed);

@@ -1,5 +1,6 @@
 /* Sparse cell lists (cell_lists.h). */
 #include "cell_lists.h"
+#include "big_memory.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -15,9 +16,9 @@ int cell_lists_build(CellLists *cl, int ncells, const uint32_t *cell, const uint
     memset(cl, 0, sizeof *cl);
     cl->nblocks = (ncells + 63) / 64;
     size_t nb = (size_t)(cl->nblocks > 0 ? cl->nblocks : 1);
-    cl->occupied = calloc(nb, sizeof *cl->occupied);
-    cl->block_rank = malloc(nb * sizeof *cl->block_rank);
-    cl->items = malloc((n ? n : 1) * sizeof *cl->items);
+    cl->occupied = big_calloc(nb, sizeof *cl->occupied);
+    cl->block_rank = big_malloc(nb * sizeof *cl->block_rank);
+    cl->items = big_malloc((n ? n : 1) * sizeof *cl->items);
     if (!cl->occupied || !cl->block_rank || !cl->items) {
         cell_lists_free(cl);
         return -1;
@@ -32,8 +33,8 @@ int cell_lists_build(CellLists *cl, int ncells, const uint32_t *cell, const uint
         rank += cell_lists_popcount(cl->occupied[b]);
     }
     cl->noccupied = rank;
-    cl->list_start = calloc((size_t)rank + 1, sizeof *cl->list_start);
-    uint32_t *fill = malloc(((size_t)rank + 1) * sizeof *fill);
+    cl->list_start = big_calloc((size_t)rank + 1, sizeof *cl->list_start);
+    uint32_t *fill = big_malloc(((size_t)rank + 1) * sizeof *fill);
     if (!cl->list_start || !fill) {
         free(fill);
         cell_lists_free(cl);

@@ -1,5 +1,6 @@
 /* Grid construction (exact polygon/cell registration) and the 3DDDA set-up. */
 #include "grid.h"
+#include "big_memory.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -68,8 +69,8 @@ int polygon_overlaps_box(const World *w, const Polygon *p, Vec3 lo, Vec3 hi)
     /* Clip buffers: an n-gon clipped by 6 planes has at most n + 6 points. */
     int maxn = p->npoints + 8;
     Vec3 stack_a[32], stack_b[32];
-    Vec3 *a = maxn <= 32 ? stack_a : malloc(sizeof(Vec3) * (size_t)maxn);
-    Vec3 *b = maxn <= 32 ? stack_b : malloc(sizeof(Vec3) * (size_t)maxn);
+    Vec3 *a = maxn <= 32 ? stack_a : big_malloc(sizeof(Vec3) * (size_t)maxn);
+    Vec3 *b = maxn <= 32 ? stack_b : big_malloc(sizeof(Vec3) * (size_t)maxn);
     int hit = 1; /* when memory is short, register conservatively */
     if (a && b) {
         if (p->first_outline < 0) {
@@ -138,7 +139,7 @@ static int push_registration(RegisterJob *j, uint32_t cell, uint32_t polygon)
 {
     if (j->count == j->cap) {
         size_t cap = j->cap ? j->cap * 2 : 1024;
-        Registration *n = realloc(j->regs, cap * sizeof *n);
+        Registration *n = big_realloc(j->regs, cap * sizeof *n);
         if (!n)
             return -1;
         j->regs = n;
@@ -209,9 +210,9 @@ int grid_register(Grid *g, const World *w, int threads)
         count += jobs[t].count;
         failed |= jobs[t].failed;
     }
-    g->cell_start = failed ? NULL : calloc((size_t)g->ncells + 1, sizeof(uint32_t));
-    g->items = g->cell_start ? malloc((count ? count : 1) * sizeof(uint32_t)) : NULL;
-    uint32_t *fill = g->items ? malloc(((size_t)g->ncells + 1) * sizeof(uint32_t)) : NULL;
+    g->cell_start = failed ? NULL : big_calloc((size_t)g->ncells + 1, sizeof(uint32_t));
+    g->items = g->cell_start ? big_malloc((count ? count : 1) * sizeof(uint32_t)) : NULL;
+    uint32_t *fill = g->items ? big_malloc(((size_t)g->ncells + 1) * sizeof(uint32_t)) : NULL;
     if (count > UINT32_MAX || !fill) {
         for (int t = 0; t < nt; t++)
             free(jobs[t].regs);

@@ -2,6 +2,7 @@
  * shadow polygons clipped to the grid box and registered per light, and the
  * eye's depth count. */
 #include "shadow_volumes.h"
+#include "big_memory.h"
 
 #include "area_light.h"
 
@@ -42,11 +43,11 @@ static int same_point(Vec3 a, Vec3 b)
 static int *weld_points(const World *w, int *nclasses)
 {
     int n = w->npoints;
-    int *weld = malloc(sizeof(int) * (size_t)(n > 0 ? n : 1));
+    int *weld = big_malloc(sizeof(int) * (size_t)(n > 0 ? n : 1));
     size_t cap = 16;
     while (cap < (size_t)n * 2)
         cap *= 2;
-    int *table = malloc(sizeof(int) * cap); /* holds a representative point index */
+    int *table = big_malloc(sizeof(int) * cap); /* holds a representative point index */
     if (!weld || !table) {
         free(weld);
         free(table);
@@ -240,7 +241,7 @@ static int reg_push(RegList *l, uint32_t cell, uint32_t item)
 {
     if (l->n == l->cap) {
         size_t cap = l->cap ? l->cap * 2 : 1024;
-        Registration *r = realloc(l->r, cap * sizeof *r);
+        Registration *r = big_realloc(l->r, cap * sizeof *r);
         if (!r)
             return -1;
         l->r = r;
@@ -428,7 +429,7 @@ static int edge_uses_build(EdgeUses *eu, const World *w, const int *weld, int nc
 {
     eu->uses = NULL;
     eu->n = 0;
-    size_t *start = calloc((size_t)nclasses + 1, sizeof *start);
+    size_t *start = big_calloc((size_t)nclasses + 1, sizeof *start);
     if (!start)
         return -1;
     for (int pi = 0; pi < w->npolygons; pi++) {
@@ -442,7 +443,7 @@ static int edge_uses_build(EdgeUses *eu, const World *w, const int *weld, int nc
     for (int c = 0; c < nclasses; c++)
         start[c + 1] += start[c];
     eu->n = start[nclasses];
-    eu->uses = malloc(sizeof *eu->uses * (eu->n > 0 ? eu->n : 1));
+    eu->uses = big_malloc(sizeof *eu->uses * (eu->n > 0 ? eu->n : 1));
     if (!eu->uses) {
         free(start);
         return -1;
@@ -504,7 +505,7 @@ static int silhouette_push(SilhouetteList *l, Silhouette s)
 {
     if (l->n == l->cap) {
         size_t cap = l->cap ? l->cap * 2 : 1024;
-        Silhouette *bigger = realloc(l->s, cap * sizeof *bigger);
+        Silhouette *bigger = big_realloc(l->s, cap * sizeof *bigger);
         if (!bigger)
             return -1;
         l->s = bigger;
@@ -524,7 +525,7 @@ static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, c
     sil->n = 0;
     if (eu->n > UINT32_MAX)
         return -1;
-    lv->occluder = calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof *lv->occluder);
+    lv->occluder = big_calloc((size_t)(w->npolygons > 0 ? w->npolygons : 1), sizeof *lv->occluder);
     if (!lv->occluder)
         return -1;
     lv->eye_known = eye != NULL;
@@ -551,7 +552,7 @@ static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, c
     /* Edge by edge: the uses by polygons that cast this light's shadows and
      * whose edge has a plane through the light. */
     size_t cap_group = 16;
-    LightEdgeUse *uses = malloc(cap_group * sizeof *uses);
+    LightEdgeUse *uses = big_malloc(cap_group * sizeof *uses);
     if (!uses)
         status = -1;
     for (size_t e = 0; e < eu->n && status == 0;) {
@@ -584,7 +585,7 @@ static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, c
                 inward = v3_neg(inward);
             if (nuses == cap_group) {
                 cap_group *= 2;
-                LightEdgeUse *bigger = realloc(uses, cap_group * sizeof *uses);
+                LightEdgeUse *bigger = big_realloc(uses, cap_group * sizeof *uses);
                 if (!bigger) {
                     status = -1;
                     break;
@@ -658,7 +659,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
 {
     SilhouetteList sil = { NULL, 0, 0 };
     int status = classify_light(sv, lv, w, l, eu, eye, edges, &sil);
-    *all = status == 0 ? malloc(sizeof **all * (sil.n > 0 ? sil.n : 1)) : NULL;
+    *all = status == 0 ? big_malloc(sizeof **all * (sil.n > 0 ? sil.n : 1)) : NULL;
     if (status == 0 && !*all)
         status = -1;
     if (status == 0)
@@ -703,7 +704,7 @@ static void *classify_lights(void *arg)
 {
     LightJob *j = arg;
     const World *w = j->w;
-    PolygonEdge *edges = malloc(sizeof *edges * (size_t)j->maxpts);
+    PolygonEdge *edges = big_malloc(sizeof *edges * (size_t)j->maxpts);
     if (!edges) {
         j->status = -1;
         return NULL;
@@ -752,9 +753,9 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     sv->box_max = g->max;
     sv->nlights = w->nlights;
     int nl = w->nlights > 0 ? w->nlights : 1;
-    sv->light = calloc((size_t)nl, sizeof *sv->light);
-    SilhouetteList *sil = calloc((size_t)nl, sizeof *sil);
-    size_t *first = calloc((size_t)nl, sizeof *first);
+    sv->light = big_calloc((size_t)nl, sizeof *sv->light);
+    SilhouetteList *sil = big_calloc((size_t)nl, sizeof *sil);
+    size_t *first = big_calloc((size_t)nl, sizeof *first);
     int nclasses = 0;
     int *weld = weld_points(w, &nclasses);
     int maxpts = 3;
@@ -766,7 +767,7 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     /* The edges' uses, for every light alike. */
     EdgeUses uses = { NULL, 0 };
     if (status == 0) {
-        PolygonEdge *edges = malloc(sizeof *edges * (size_t)maxpts);
+        PolygonEdge *edges = big_malloc(sizeof *edges * (size_t)maxpts);
         status = edges && edge_uses_build(&uses, w, weld, nclasses, edges) == 0 ? 0 : -1;
         free(edges);
     }
@@ -806,7 +807,7 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     if (status == 0 && total > INT32_MAX)
         status = -1; /* shadow polygons are numbered in 32 bits, and counted in int */
     if (status == 0) {
-        sv->polygons = malloc(sizeof *sv->polygons * (total > 0 ? total : 1));
+        sv->polygons = big_malloc(sizeof *sv->polygons * (total > 0 ? total : 1));
         status = sv->polygons ? 0 : -1;
     }
     if (status == 0)
@@ -821,7 +822,7 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
     free(first);
     free(uses.uses);
     if (status == 0) {
-        sv->planes = malloc(sizeof *sv->planes * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
+        sv->planes = big_malloc(sizeof *sv->planes * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
         if (!sv->planes)
             status = -1;
         for (int i = 0; status == 0 && i < sv->npolygons; i++)
@@ -876,16 +877,16 @@ static int sample_world(World *s, const World *w, int first, int n)
 {
     *s = *w;
     s->npolygons = n;
-    s->polygons = malloc(sizeof *s->polygons * (size_t)(n > 0 ? n : 1));
+    s->polygons = big_malloc(sizeof *s->polygons * (size_t)(n > 0 ? n : 1));
     int npts = 0, nstarts = 0;
     for (int i = first; i < first + n; i++) {
         npts += w->polygons[i].npoints;
         if (w->polygons[i].first_outline >= 0)
             nstarts += w->polygons[i].noutlines + 1;
     }
-    s->points = malloc(sizeof *s->points * (size_t)(npts > 0 ? npts : 1));
-    s->outline_start = malloc(sizeof *s->outline_start * (size_t)(nstarts > 0 ? nstarts : 1));
-    s->outline_box = w->outline_box ? malloc(sizeof *s->outline_box * (size_t)(nstarts > 0 ? nstarts : 1)) : NULL;
+    s->points = big_malloc(sizeof *s->points * (size_t)(npts > 0 ? npts : 1));
+    s->outline_start = big_malloc(sizeof *s->outline_start * (size_t)(nstarts > 0 ? nstarts : 1));
+    s->outline_box = w->outline_box ? big_malloc(sizeof *s->outline_box * (size_t)(nstarts > 0 ? nstarts : 1)) : NULL;
     if (!s->polygons || !s->points || !s->outline_start || (w->outline_box && !s->outline_box))
         return -1;
     s->npoints = npts;
@@ -926,8 +927,8 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
                             VolumesEstimate *est)
 {
     memset(est, 0, sizeof *est);
-    est->light_seconds = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_seconds);
-    est->light_registrations = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_registrations);
+    est->light_seconds = big_calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_seconds);
+    est->light_registrations = big_calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_registrations);
     if (!est->light_seconds || !est->light_registrations)
         return -1;
     if (w->npolygons == 0)
@@ -949,7 +950,7 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
     for (int i = 0; i < s.npolygons; i++)
         if (s.polygons[i].npoints + 3 > maxpts)
             maxpts = s.polygons[i].npoints + 3;
-    PolygonEdge *edges = status == 0 ? malloc(sizeof *edges * (size_t)maxpts) : NULL;
+    PolygonEdge *edges = status == 0 ? big_malloc(sizeof *edges * (size_t)maxpts) : NULL;
     if (!edges)
         status = -1;
     ShadowVolumes sv;
@@ -1048,7 +1049,7 @@ int shadow_volumes_set_precision(ShadowVolumes *sv, PlanePrecision p)
     if (p == PLANES_DOUBLE)
         return 0;
     if (!sv->planes_f) {
-        sv->planes_f = malloc(sizeof *sv->planes_f * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
+        sv->planes_f = big_malloc(sizeof *sv->planes_f * (size_t)(sv->npolygons > 0 ? sv->npolygons : 1));
         if (!sv->planes_f)
             return -1;
         for (int i = 0; i < sv->npolygons; i++) {
