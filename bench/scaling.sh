@@ -6,7 +6,7 @@
 # maximum resident set, from wait4), and for hstrace the preprocessing and
 # shadow-testing split of --stats-json. 320x240, 1 thread, EXR output;
 # every figure is the median of RUNS runs, the programs interleaved within
-# each run (default 3). hst is the default (only the volumes the cost model
+# each round, each round starting one program further on (default 3 runs). hst is the default (only the volumes the cost model
 # expects to pay), hst-always builds every light's. Then the biggest cell
 # at 1280x960, and on 1 and 2 threads. Plots with gnuplot (Debian: gnuplot-nox) when present.
 # Writes bench/scaling.md and bench/scaling.{svg,png}.
@@ -33,7 +33,7 @@ python3 - "$build/hstrace" "$work" "$here" "$triangles" "$lights" "$runs" <<'PY'
 import json, os, shutil, statistics, subprocess, sys, time
 
 hstrace, work, here, triangles, lights, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4].split(), sys.argv[5].split(), int(sys.argv[6])
-# hst runs right after conventional in every round: the pair the figure compares sees the same load.
+# hst runs next to conventional in every round: the pair the figure compares sees the same load.
 methods = ["conventional", "hst", "cache", "volume", "hst-always"]
 povray = shutil.which("povray")
 size = ["--width", "320", "--height", "240", "--threads", "1"]
@@ -74,10 +74,15 @@ def measure(m, scene, extra, js):
 def medians_of(cases, scene, label):
     """Every case (key, method, options) measured RUNS times, interleaved
     (A B C A B C ...), so that a change of load falls on all of them alike;
-    the medians by key."""
+    the medians by key. Each round starts one case further on (A B C, B C A,
+    C A B, ...): on this kind of machine the first big run after an idle
+    spell or after another program's exit is up to 50% slower (the virtual
+    machine backing freed memory again), and a fixed order put that on the
+    same case, conventional, in every round."""
     samples = {key: [] for key, _, _ in cases}
     for r in range(runs):
-        for key, m, extra in cases:
+        k = r % len(cases)
+        for key, m, extra in cases[k:] + cases[:k]:
             samples[key].append(measure(m, scene, extra, f"{work}/{m}.json"))
     per = {}
     for key in samples:
@@ -121,7 +126,7 @@ with open(out, "w") as f:
     f.write("# Scaling: time and memory against triangles and lights\n\n")
     f.write(f"Made by `make bench` (`bench/scaling.sh`) on {time.strftime('%Y-%m-%d', time.gmtime())}, "
             f"{os.cpu_count()} cores. The scene of `scenes/make-mesh.sh TRIANGLES LIGHTS`, 320x240, 1 thread, "
-            f"EXR output; median of {runs} run(s) per cell. *Wall* and *peak memory* are the whole process's "
+            f"EXR output; median of {runs} run(s) per cell, the programs interleaved, each round starting one program further on. *Wall* and *peak memory* are the whole process's "
             "(from wait4); *prep.* is hstrace's parse plus preprocessing (grid, silhouettes, shadow-polygon "
             "registration, cost-model calibration), *shadow* its shadow-testing time (--stats-json).")
     if not povray:
@@ -146,15 +151,15 @@ with open(out, "w") as f:
     worst = max(per["hst"][0] / per["conventional"][0] for _, _, per in rows)
     over = sum(1 for _, _, per in rows if per["hst"][0] > 1.02 * per["conventional"][0])
     f.write(f"\nWorst hst/conventional wall ratio (of the medians) {worst:.3f}; cells above 1.02: {over} of {len(rows)}.\n\n")
-    # The same comparison run by run: hst over the conventional run just
-    # before it in the same round, the median of those ratios per cell (a
-    # slow spell of the machine that falls on one round changes one pair).
+    # The same comparison run by run: hst over the conventional run of the
+    # same round (next to it), the median of those ratios per cell (a slow
+    # spell of the machine that falls on one round changes one pair).
     def paired(per):
         return statistics.median(h / c for h, c in zip(per["hst"][5], per["conventional"][5]))
     pworst = max(paired(per) for _, _, per in rows)
     pover = sum(1 for _, _, per in rows if paired(per) > 1.02)
     f.write("**hst against conventional, run by run** (the median over the rounds of hst's wall time over the "
-            "conventional run just before it)\n\n| triangles | lights | hst / conventional |\n|---|---|---|\n")
+            "conventional run of the same round, next to it)\n\n| triangles | lights | hst / conventional |\n|---|---|---|\n")
     for exact, l, per in rows:
         f.write(f"| {exact} | {l} | {paired(per):.3f} |\n")
     f.write(f"\nWorst paired ratio {pworst:.3f}; cells above 1.02: {pover} of {len(rows)}.\n\n")

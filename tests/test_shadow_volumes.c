@@ -17,12 +17,19 @@
  * against the colour written here from POV-Ray's rule (Trace::
  * ComputeShadowColour: the light is multiplied, per transparent surface the
  * shadow ray meets, by rgb * filter + transmit, whatever the angle), and
- * the shadow volumes' two depth counts against the cards counted by hand. */
+ * the shadow volumes' two depth counts against the cards counted by hand.
+ *
+ * And the build's shortcut for triangles (an edge use's side from the
+ * light's side of the triangle's plane) against the plain build (every
+ * side from the plane through the edge and the light), volume for volume,
+ * on the random scenes and on the project's scenes, hard cases included. */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "fixtures.h"
 #include "grid.h"
 #include "intersect.h"
+#include "parser.h"
 #include "shadow.h"
 #include "shadow_volumes.h"
 #include "tap.h"
@@ -429,11 +436,56 @@ static int same_volumes(const ShadowVolumes *a, const ShadowVolumes *b, const Wo
     return 1;
 }
 
+/* A scene file's volumes, every light's, built with the triangles'
+ * shortcut and the plain way: the same volumes. */
+static void check_plain_on_file(const char *srcdir, const char *rel)
+{
+    char path[1024], inc[1024];
+    snprintf(path, sizeof path, "%s/%s", srcdir, rel);
+    snprintf(inc, sizeof inc, "%s/data/include", srcdir);
+    const char *dirs[] = { "/usr/share/povray-3.7/include", inc };
+    ParseOptions po = { .include_dirs = dirs, .ninclude_dirs = 2, .image_width = 320, .image_height = 240 };
+    ParseError perr;
+    Scene *sc = parse_scene_file(path, &po, &perr);
+    if (!sc) {
+        tap_ok(0, "%s parses (%s:%d:%d: %s)", rel, perr.file, perr.line, perr.column, perr.message);
+        return;
+    }
+    World w;
+    WorldError err;
+    if (world_build(&w, sc, &err)) {
+        tap_ok(0, "%s: world builds (%s)", rel, err.message);
+        scene_free(sc);
+        return;
+    }
+    Vec3 extra[1 + 8 * 16];
+    int nextra = grid_extra_points(&w, extra, (int)(sizeof extra / sizeof extra[0]));
+    Grid g;
+    ShadowVolumes fast, plain;
+    int built = grid_build(&g, &w, NULL, extra, nextra) == 0;
+    int fast_ok = built && shadow_volumes_build(&fast, &w, &g, &w.camera.location, 1, NULL) == 0;
+    int plain_ok = built && shadow_volumes_build_plain(&plain, &w, &g, &w.camera.location, 1, NULL) == 0;
+    int lights = 0;
+    for (int li = 0; fast_ok && li < fast.nlights; li++)
+        lights += fast.light[li].usable;
+    tap_ok(fast_ok && plain_ok && same_volumes(&fast, &plain, &w),
+           "%s: the volumes are the plain build's, polygon for polygon (%d shadow polygons, %d lights with volumes)",
+           rel, fast_ok ? fast.npolygons : -1, lights);
+    if (fast_ok)
+        shadow_volumes_free(&fast);
+    if (plain_ok)
+        shadow_volumes_free(&plain);
+    if (built)
+        grid_free(&g);
+    world_free(&w);
+    scene_free(sc);
+}
+
 int main(void)
 {
     TestRng rng = { 0x2545F4914F6CDD1Dull };
     int scenes = 12, samples = 0, unsure = 0, wrong = 0, eye_wrong = 0, eye_checked = 0;
-    int cancelled = 0, silhouettes = 0, usable = 0, same_volumes_wrong = 0;
+    int cancelled = 0, silhouettes = 0, usable = 0, same_volumes_wrong = 0, plain_wrong = 0;
     for (int sc = 0; sc < scenes; sc++) {
         Scene *s = fixture_scene(128);
         add_scene(s, &rng);
@@ -474,6 +526,13 @@ int main(void)
             }
             same_volumes_wrong += !same_volumes(&sv, &sv2, &w);
             shadow_volumes_free(&sv2);
+        }
+        ShadowVolumes plain;
+        if (shadow_volumes_build_plain(&plain, &w, &g, &w.camera.location, 1, NULL) == 0) {
+            plain_wrong += !same_volumes(&sv, &plain, &w);
+            shadow_volumes_free(&plain);
+        } else {
+            plain_wrong++;
         }
         for (int li = 0; li < w.nlights; li++) {
             const Light *l = &w.lights[li];
@@ -519,6 +578,8 @@ int main(void)
            same_volumes_wrong, 2 * scenes);
     tap_ok(eye_checked > 0 && eye_wrong == 0, "the eye's count equals the direct count (%d wrong of %d)", eye_wrong,
            eye_checked);
+    tap_ok(plain_wrong == 0, "the volumes are the plain build's, polygon for polygon (%d of %d scenes differ)",
+           plain_wrong, scenes);
 
     for (int far = 0; far < 2; far++)
         for (int parallel = 0; parallel < 2; parallel++) {
@@ -532,5 +593,17 @@ int main(void)
                    parallel ? "parallel" : "point", far ? ", at 1e5" : "", tested, undecided, wrong_here);
         }
     transparent_cards();
+
+    const char *srcdir = getenv("top_srcdir");
+    static const char *const files[] = {
+        "scenes/desk.pov", "scenes/glasses.pov", "scenes/stars.pov", "scenes/cards.pov", "scenes/holes.pov",
+        "scenes/mesh2.pov", "scenes/tree.pov",
+        "scenes/hard/boundary-columns.pov", "scenes/hard/contact.pov", "scenes/hard/degenerate.pov",
+        "scenes/hard/far-coordinates.pov", "scenes/hard/grazing.pov", "scenes/hard/inside-volume.pov",
+        "scenes/hard/light-in-plane.pov", "scenes/hard/long-shadows.pov", "scenes/hard/mirrors.pov",
+        "scenes/hard/shared-edges-perspective.pov", "scenes/hard/shared-edges.pov", "scenes/hard/transparent.pov",
+    };
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++)
+        check_plain_on_file(srcdir ? srcdir : ".", files[i]);
     return tap_done();
 }

@@ -200,6 +200,60 @@ static int edge_plane(const Light *l, Vec3 a, Vec3 b, Vec3 *normal)
     return 1;
 }
 
+/* Whether edge_plane finds a plane for (a, b), most often without its
+ * square roots: when the squared lengths say the cross product's length is
+ * more than twice the bound, the rounded roots cannot bring it below once
+ * the bound (each rounding moves a root by a relative 2^-53, and the squares
+ * are normal numbers, so no step loses more); else edge_plane decides. */
+static int edge_has_plane(const Light *l, Vec3 a, Vec3 b)
+{
+    Vec3 la = v3_sub(a, l->location), lb = v3_sub(b, l->location), ab = v3_sub(b, a);
+    Vec3 n = l->kind == LIGHT_PARALLEL ? v3_cross(ab, l->direction) : v3_cross(la, lb);
+    double n2 = v3_dot(n, n);
+    double scale2 = v3_dot(ab, ab) * (l->kind == LIGHT_PARALLEL ? 1.0 : max_of(v3_dot(la, la), v3_dot(lb, lb)));
+    double bound2 = 4e-24 * scale2; /* (2e-12)^2 */
+    if (isfinite(n2) && isfinite(scale2) && bound2 >= DBL_MIN && n2 > bound2)
+        return 1;
+    Vec3 unused;
+    return edge_plane(l, a, b, &unused);
+}
+
+/* The side of the plane through a use's edge and the light (edge_plane's,
+ * from the canonical ends A, B) that its polygon lies on: +1 or -1, the sign
+ * of n . inward, inward the polygon's direction across the edge in its plane
+ * (N x (b - a) for the outline's order a, b, turned by interior_left).
+ *
+ * The plain way computes both vectors (use_side_by_plane). For a triangle
+ * the answer follows from the light's side of its plane: A and B lie in it
+ * (N . x = d), so by (p x q) . (r x s) = (p . r)(q . s) - (p . s)(q . r),
+ * with n ~ (A - L) x (B - L) for a point light at L,
+ *     n . (N x (B - A)) = -(N . L - d) |B - A|^2,
+ * and with n ~ (B - A) x dir for a parallel light, -(N . dir) |B - A|^2.
+ * The sign is minus the light's side (light_side, nonzero: within the
+ * tolerance of the plane the polygon casts nothing), turned when the
+ * outline runs from B to A and when the interior lies right of it. The
+ * rounded product agrees wherever the light is well off the plane; where
+ * it is not, this is the exact answer it approximates. shadow_volumes_build_plain
+ * takes the plain way everywhere; tests/test_shadow_volumes.c compares the
+ * two builds. */
+static int8_t triangle_use_side(int light_side, int swapped, int interior_left)
+{
+    int side = -light_side;
+    if (swapped)
+        side = -side;
+    if (!interior_left)
+        side = -side;
+    return (int8_t)side;
+}
+
+static int8_t use_side_by_plane(const World *w, const Polygon *p, int a, int b, int interior_left, Vec3 n)
+{
+    Vec3 inward = v3_cross(p->normal, v3_sub(w->points[b], w->points[a]));
+    if (!interior_left)
+        inward = v3_neg(inward);
+    return (int8_t)(v3_dot(n, inward) > 0.0 ? 1 : -1);
+}
+
 static Vec3 unit(Vec3 v)
 {
     double len = v3_length(v);
@@ -519,7 +573,7 @@ static int silhouette_push(SilhouetteList *l, Silhouette s)
  * the eye's segment to it crosses the polygon), then edge by edge whether
  * the uses cancel (bent faces marked) or make a silhouette. */
 static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, const Light *l, const EdgeUses *eu,
-                          const Vec3 *eye, PolygonEdge *edges, SilhouetteList *sil)
+                          const Vec3 *eye, PolygonEdge *edges, SilhouetteList *sil, int plain)
 {
     double tol = sv->tolerance;
     sil->n = 0;
@@ -559,9 +613,10 @@ static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, c
         size_t e_first = e, e_end = e;
         size_t nuses = 0;
         /* The uses of an edge mostly have its ends at the same coordinates
-         * (a mesh's faces copy their vertices): their plane is computed once. */
+         * (a mesh's faces copy their vertices): whether they have a plane,
+         * and the plane where it is needed, is found once. */
         Vec3 last_a = v3(0, 0, 0), last_b = last_a, last_n = last_a;
-        int have_last = 0, last_ok = 0;
+        int have_last = 0, last_ok = 0, have_n = 0;
         for (; e_end < eu->n && eu->uses[e_end].lo == eu->uses[e].lo && eu->uses[e_end].hi == eu->uses[e].hi; e_end++) {
             const EdgeUse *u = &eu->uses[e_end];
             const OccluderSide *o = &lv->occluder[u->polygon];
@@ -571,18 +626,23 @@ static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, c
             if (!have_last || memcmp(pa, &last_a, sizeof last_a) != 0 || memcmp(pb, &last_b, sizeof last_b) != 0) {
                 last_a = *pa;
                 last_b = *pb;
-                last_ok = edge_plane(l, last_a, last_b, &last_n);
+                have_n = plain;
+                last_ok = plain ? edge_plane(l, last_a, last_b, &last_n) : edge_has_plane(l, last_a, last_b);
                 have_last = 1;
             }
             if (!last_ok)
                 continue;
-            Vec3 n = last_n;
-            /* The polygon's side of the edge, in its plane. */
+            /* The polygon's side of the plane. */
             const Polygon *p = &w->polygons[u->polygon];
-            int a = u->swapped ? u->b : u->a, b = u->swapped ? u->a : u->b;
-            Vec3 inward = v3_cross(p->normal, v3_sub(w->points[b], w->points[a]));
-            if (!u->interior_left)
-                inward = v3_neg(inward);
+            int8_t side;
+            if (!plain && p->first_outline < 0) {
+                side = triangle_use_side(o->light_side, u->swapped, u->interior_left);
+            } else {
+                if (!have_n)
+                    have_n = edge_plane(l, last_a, last_b, &last_n);
+                side = use_side_by_plane(w, p, u->swapped ? u->b : u->a, u->swapped ? u->a : u->b, u->interior_left,
+                                         last_n);
+            }
             if (nuses == cap_group) {
                 cap_group *= 2;
                 LightEdgeUse *bigger = big_realloc(uses, cap_group * sizeof *uses);
@@ -592,7 +652,7 @@ static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, c
                 }
                 uses = bigger;
             }
-            uses[nuses++] = (LightEdgeUse){ u, (int8_t)(v3_dot(n, inward) > 0.0 ? 1 : -1), o->channel };
+            uses[nuses++] = (LightEdgeUse){ u, side, o->channel };
         }
         e = e_end;
         if (nuses == 0 || status)
@@ -658,7 +718,7 @@ static int build_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, cons
                        int *nall, int fill)
 {
     SilhouetteList sil = { NULL, 0, 0 };
-    int status = classify_light(sv, lv, w, l, eu, eye, edges, &sil);
+    int status = classify_light(sv, lv, w, l, eu, eye, edges, &sil, 0);
     *all = status == 0 ? big_malloc(sizeof **all * (sil.n > 0 ? sil.n : 1)) : NULL;
     if (status == 0 && !*all)
         status = -1;
@@ -697,6 +757,7 @@ typedef struct {
     int first_light, stride;  /* the lights i = first_light + k * stride */
     SilhouetteList *sil;      /* per light */
     const size_t *first;      /* per light: its first shadow polygon's index (second pass) */
+    int plain;                /* shadow_volumes_build_plain: every use's side by its plane */
     int status;
 } LightJob;
 
@@ -711,7 +772,8 @@ static void *classify_lights(void *arg)
     }
     for (int li = j->first_light; li < w->nlights && j->status == 0; li += j->stride)
         if (j->sv->light[li].usable)
-            j->status = classify_light(j->sv, &j->sv->light[li], w, &w->lights[li], j->uses, j->eye, edges, &j->sil[li]);
+            j->status = classify_light(j->sv, &j->sv->light[li], w, &w->lights[li], j->uses, j->eye, edges, &j->sil[li],
+                                       j->plain);
     free(edges);
     return NULL;
 }
@@ -744,8 +806,8 @@ static int light_can_have_volumes(const World *w, const Grid *g, int li, double 
     return 1;
 }
 
-int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads,
-                         const int8_t *want)
+static int build_volumes(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads,
+                         const int8_t *want, int plain)
 {
     memset(sv, 0, sizeof *sv);
     sv->tolerance = grid_tolerance(g);
@@ -792,7 +854,7 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
         nthreads = PARALLEL_MAX_JOBS;
     LightJob jobs[PARALLEL_MAX_JOBS];
     for (int t = 0; t < nthreads; t++)
-        jobs[t] = (LightJob){ sv, w, g, &uses, eye, maxpts, t, nthreads, sil, first, 0 };
+        jobs[t] = (LightJob){ sv, w, g, &uses, eye, maxpts, t, nthreads, sil, first, plain, 0 };
     if (status == 0)
         parallel_run(nthreads, classify_lights, jobs, sizeof jobs[0]);
     for (int t = 0; t < nthreads; t++)
@@ -833,6 +895,18 @@ int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const
         return -1;
     }
     return 0;
+}
+
+int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads,
+                         const int8_t *want)
+{
+    return build_volumes(sv, w, g, eye, threads, want, 0);
+}
+
+int shadow_volumes_build_plain(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads,
+                               const int8_t *want)
+{
+    return build_volumes(sv, w, g, eye, threads, want, 1);
 }
 
 void shadow_volumes_free(ShadowVolumes *sv)

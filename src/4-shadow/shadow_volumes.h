@@ -116,6 +116,12 @@ typedef struct ShadowVolumes {
  * then. Returns 0, or -1 when out of memory. */
 int shadow_volumes_build(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads,
                          const int8_t *want);
+/* The same volumes the plain way: the side of every edge use found from
+ * the plane through the edge and the light, where the build above finds a
+ * triangle's from the light's side of its plane (the reference that tests
+ * compare it with, volume for volume). */
+int shadow_volumes_build_plain(ShadowVolumes *sv, const World *w, const Grid *g, const Vec3 *eye, int threads,
+                               const int8_t *want);
 void shadow_volumes_free(ShadowVolumes *sv);
 
 /* Frees light li's registrations and turns its volumes off: from then on
