@@ -6,14 +6,18 @@
 # maximum resident set, from wait4), and for hstrace the preprocessing and
 # shadow-testing split of --stats-json. 320x240, 1 thread, EXR output;
 # every figure is the median of RUNS runs, the programs interleaved within
-# each round, each round starting one program further on (default 3 runs). hst is the default (only the volumes the cost model
+# each round, each round in an order of its own (default 3 runs). Then hst
+# against conventional in instructions (callgrind, when valgrind is there)
+# on a few cells, a measure the machine's load does not move. hst is the default (only the volumes the cost model
 # expects to pay), hst-always builds every light's. Then the biggest cell
 # at 1280x960, and on 1 and 2 threads. Plots with gnuplot (Debian: gnuplot-nox) when present.
 # Writes bench/scaling.md and bench/scaling.{svg,png}.
 #
 # usage: bench/scaling.sh [BUILDDIR]   (default: the current folder)
 #   env: SCALING_TRIANGLES (default "100 1000 10000 100000 1000000"),
-#        SCALING_LIGHTS (default "1 2 4 8"), SCALING_RUNS (default 3)
+#        SCALING_LIGHTS (default "1 2 4 8"), SCALING_RUNS (default 3),
+#        SCALING_CALLGRIND (cells TRIANGLES:LIGHTS, default
+#        "10000:8 100000:1 100000:8 1000000:1 1000000:8"; "" for none)
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/.." && pwd)
@@ -30,10 +34,10 @@ for n in $triangles; do
     done
 done
 python3 - "$build/hstrace" "$work" "$here" "$triangles" "$lights" "$runs" <<'PY'
-import json, os, shutil, statistics, subprocess, sys, time
+import json, os, random, re, shutil, statistics, subprocess, sys, time
 
 hstrace, work, here, triangles, lights, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4].split(), sys.argv[5].split(), int(sys.argv[6])
-# hst runs next to conventional in every round: the pair the figure compares sees the same load.
+# Every round takes the programs in an order of its own (medians_of).
 methods = ["conventional", "hst", "cache", "volume", "hst-always"]
 povray = shutil.which("povray")
 size = ["--width", "320", "--height", "240", "--threads", "1"]
@@ -74,15 +78,17 @@ def measure(m, scene, extra, js):
 def medians_of(cases, scene, label):
     """Every case (key, method, options) measured RUNS times, interleaved
     (A B C A B C ...), so that a change of load falls on all of them alike;
-    the medians by key. Each round starts one case further on (A B C, B C A,
-    C A B, ...): on this kind of machine the first big run after an idle
-    spell or after another program's exit is up to 50% slower (the virtual
-    machine backing freed memory again), and a fixed order put that on the
-    same case, conventional, in every round."""
+    the medians by key. Each round takes the cases in an order of its own (a
+    shuffle, the same for the same round in every bench run): on this kind
+    of machine a big run that follows a long one (POV-Ray's, or a spell
+    of idling) is up to 50% slower, its memory backed by the virtual
+    machine's host again, and a fixed order, or a rotation of one, put that
+    on the same case, conventional, in every round."""
     samples = {key: [] for key, _, _ in cases}
     for r in range(runs):
-        k = r % len(cases)
-        for key, m, extra in cases[k:] + cases[:k]:
+        order = list(cases)
+        random.Random(7919 * (r + 1) + len(cases)).shuffle(order)
+        for key, m, extra in order:
             samples[key].append(measure(m, scene, extra, f"{work}/{m}.json"))
     per = {}
     for key in samples:
@@ -120,13 +126,38 @@ by_threads = medians_of([(f"{m}@{t}", m, ["--width", "320", "--height", "240", "
                         big, f"{big_exact} triangles on 1 and 2 threads")
 threads = {t: {m: by_threads[f"{m}@{t}"] for m in ("conventional", "hst", "hst-always")} for t in ("1", "2")}
 
+# The same comparison in instructions (callgrind), which the machine's load
+# does not change: hst over conventional on one thread, for a few cells.
+valgrind = shutil.which("valgrind")
+counted = []
+for cell in os.environ.get("SCALING_CALLGRIND", "10000:8 100000:1 100000:8 1000000:1 1000000:8").split():
+    n, l = cell.split(":")
+    scene = f"mesh-{n}-{l}.pov"
+    if not valgrind or not os.path.exists(os.path.join(work, scene)):
+        continue
+    ir = {}
+    for m in ("conventional", "hst"):
+        proc = subprocess.run([valgrind, "--tool=callgrind", "--callgrind-out-file=/dev/null", *hstrace_cmd(m, scene, size),
+                               "-o", f"{work}/h.exr", "--stats-json", f"{work}/cg.json"], cwd=work, capture_output=True,
+                              text=True)
+        found = re.search(r"Collected : (\d+)", proc.stderr)
+        if proc.returncode != 0 or not found:
+            sys.exit(f"scaling: callgrind failed on {scene} ({m})")
+        ir[m] = int(found.group(1))
+    # hst's cost model times what it weighs, under valgrind as natively: how many lights it built volumes for.
+    built = sum(1 for x in json.load(open(f"{work}/cg.json")).get("volume_plan", {}).get("lights", []) if x["volumes"])
+    with open(os.path.join(work, scene)) as f:
+        exact = next(int(line.split()[-1]) for line in f if line.startswith("// triangles:"))
+    counted.append((exact, int(l), ir["conventional"], ir["hst"], built))
+    print(f"scaling: callgrind {exact} triangles, {l} lights done", file=sys.stderr)
+
 have = methods + (["povray"] if povray else [])
 out = os.path.join(here, "scaling.md")
 with open(out, "w") as f:
     f.write("# Scaling: time and memory against triangles and lights\n\n")
     f.write(f"Made by `make bench` (`bench/scaling.sh`) on {time.strftime('%Y-%m-%d', time.gmtime())}, "
             f"{os.cpu_count()} cores. The scene of `scenes/make-mesh.sh TRIANGLES LIGHTS`, 320x240, 1 thread, "
-            f"EXR output; median of {runs} run(s) per cell, the programs interleaved, each round starting one program further on. *Wall* and *peak memory* are the whole process's "
+            f"EXR output; median of {runs} run(s) per cell, the programs interleaved, each round in an order of its own. *Wall* and *peak memory* are the whole process's "
             "(from wait4); *prep.* is hstrace's parse plus preprocessing (grid, silhouettes, shadow-polygon "
             "registration, cost-model calibration), *shadow* its shadow-testing time (--stats-json).")
     if not povray:
@@ -152,17 +183,26 @@ with open(out, "w") as f:
     over = sum(1 for _, _, per in rows if per["hst"][0] > 1.02 * per["conventional"][0])
     f.write(f"\nWorst hst/conventional wall ratio (of the medians) {worst:.3f}; cells above 1.02: {over} of {len(rows)}.\n\n")
     # The same comparison run by run: hst over the conventional run of the
-    # same round (next to it), the median of those ratios per cell (a slow
-    # spell of the machine that falls on one round changes one pair).
+    # same round, the median of those ratios per cell (a slow spell of the
+    # machine that falls on one round changes one pair).
     def paired(per):
         return statistics.median(h / c for h, c in zip(per["hst"][5], per["conventional"][5]))
     pworst = max(paired(per) for _, _, per in rows)
     pover = sum(1 for _, _, per in rows if paired(per) > 1.02)
     f.write("**hst against conventional, run by run** (the median over the rounds of hst's wall time over the "
-            "conventional run of the same round, next to it)\n\n| triangles | lights | hst / conventional |\n|---|---|---|\n")
+            "conventional run of the same round)\n\n| triangles | lights | hst / conventional |\n|---|---|---|\n")
     for exact, l, per in rows:
         f.write(f"| {exact} | {l} | {paired(per):.3f} |\n")
     f.write(f"\nWorst paired ratio {pworst:.3f}; cells above 1.02: {pover} of {len(rows)}.\n\n")
+    if counted:
+        f.write("**hst against conventional in instructions** (`valgrind --tool=callgrind`, the whole run, "
+                "1 thread, 320x240; the count does not depend on the machine's load, but hst's cost model "
+                "decides by times it measures, here as valgrind runs the code: *volumes* says for how many "
+                "lights it built them)\n\n"
+                "| triangles | lights | conventional | hst | hst / conventional | volumes |\n|---|---|---|---|---|---|\n")
+        for exact, l, c, h, b in counted:
+            f.write(f"| {exact} | {l} | {c:,} | {h:,} | {h / c:.4f} | {b} of {l} |\n")
+        f.write(f"\nWorst {max(h / c for _, _, c, h, _ in counted):.4f}.\n\n")
     f.write(f"**{big_exact} triangles, {big_l} lights at 1280x960, 1 thread** (median of {runs})\n\n")
     f.write("| program | wall (s) | CPU (s) | parse + preprocessing (s) | shadow testing (s) | peak (MiB) | wall / conventional |\n")
     f.write("|---|---|---|---|---|---|---|\n")
