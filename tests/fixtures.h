@@ -3,10 +3,13 @@
 #ifndef HST_TEST_FIXTURES_H
 #define HST_TEST_FIXTURES_H
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "parser.h"
 #include "scene.h"
+#include "world.h"
 
 static inline Scene *fixture_scene(int capacity)
 {
@@ -91,5 +94,31 @@ static inline double rng_uniform(TestRng *r)
     return (double)(r->s >> 11) / 9007199254740992.0;
 }
 static inline double rng_range(TestRng *r, double lo, double hi) { return lo + (hi - lo) * rng_uniform(r); }
+
+/* A scene file of the tree (rel, below srcdir) parsed at 320x240, with
+ * POV-Ray's include files where Debian puts them and hstrace's own, and its
+ * world built into *w: the scene (scene_free it after world_free), or NULL
+ * with why[] saying what failed. */
+static inline Scene *fixture_scene_file(const char *srcdir, const char *rel, World *w, char *why, size_t whylen)
+{
+    char path[1024], inc[1024];
+    snprintf(path, sizeof path, "%s/%s", srcdir, rel);
+    snprintf(inc, sizeof inc, "%s/data/include", srcdir);
+    const char *dirs[] = { "/usr/share/povray-3.7/include", inc };
+    ParseOptions po = { .include_dirs = dirs, .ninclude_dirs = 2, .image_width = 320, .image_height = 240 };
+    ParseError perr;
+    Scene *sc = parse_scene_file(path, &po, &perr);
+    if (!sc) {
+        snprintf(why, whylen, "%s parses (%s:%d:%d: %s)", rel, perr.file, perr.line, perr.column, perr.message);
+        return NULL;
+    }
+    WorldError err;
+    if (world_build(w, sc, &err)) {
+        snprintf(why, whylen, "%s: world builds (%s)", rel, err.message);
+        scene_free(sc);
+        return NULL;
+    }
+    return sc;
+}
 
 #endif

@@ -399,22 +399,11 @@ static void check_world(const char *name, const World *w, int avx2)
 
 static void check_scene_file(const char *srcdir, const char *rel)
 {
-    char path[1024], inc[1024];
-    snprintf(path, sizeof path, "%s/%s", srcdir, rel);
-    snprintf(inc, sizeof inc, "%s/data/include", srcdir);
-    const char *dirs[] = { "/usr/share/povray-3.7/include", inc };
-    ParseOptions po = { .include_dirs = dirs, .ninclude_dirs = 2, .image_width = 320, .image_height = 240 };
-    ParseError err;
-    Scene *sc = parse_scene_file(path, &po, &err);
-    if (!sc) {
-        tap_ok(0, "%s parses (%s:%d:%d: %s)", rel, err.file, err.line, err.column, err.message);
-        return;
-    }
     World w;
-    WorldError we;
-    if (world_build(&w, sc, &we)) {
-        tap_ok(0, "%s: world builds (%s)", rel, we.message);
-        scene_free(sc);
+    char why[4096];
+    Scene *sc = fixture_scene_file(srcdir, rel, &w, why, sizeof why);
+    if (!sc) {
+        tap_ok(0, "%s", why);
         return;
     }
     check_same_as_plain(rel, &w);

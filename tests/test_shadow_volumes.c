@@ -29,7 +29,6 @@
 #include "fixtures.h"
 #include "grid.h"
 #include "intersect.h"
-#include "parser.h"
 #include "shadow.h"
 #include "shadow_volumes.h"
 #include "tap.h"
@@ -440,22 +439,11 @@ static int same_volumes(const ShadowVolumes *a, const ShadowVolumes *b, const Wo
  * shortcut and the plain way: the same volumes. */
 static void check_plain_on_file(const char *srcdir, const char *rel)
 {
-    char path[1024], inc[1024];
-    snprintf(path, sizeof path, "%s/%s", srcdir, rel);
-    snprintf(inc, sizeof inc, "%s/data/include", srcdir);
-    const char *dirs[] = { "/usr/share/povray-3.7/include", inc };
-    ParseOptions po = { .include_dirs = dirs, .ninclude_dirs = 2, .image_width = 320, .image_height = 240 };
-    ParseError perr;
-    Scene *sc = parse_scene_file(path, &po, &perr);
-    if (!sc) {
-        tap_ok(0, "%s parses (%s:%d:%d: %s)", rel, perr.file, perr.line, perr.column, perr.message);
-        return;
-    }
     World w;
-    WorldError err;
-    if (world_build(&w, sc, &err)) {
-        tap_ok(0, "%s: world builds (%s)", rel, err.message);
-        scene_free(sc);
+    char why[4096];
+    Scene *sc = fixture_scene_file(srcdir, rel, &w, why, sizeof why);
+    if (!sc) {
+        tap_ok(0, "%s", why);
         return;
     }
     Vec3 extra[1 + 8 * 16];
