@@ -69,8 +69,8 @@ int polygon_overlaps_box(const World *w, const Polygon *p, Vec3 lo, Vec3 hi)
     /* Clip buffers: an n-gon clipped by 6 planes has at most n + 6 points. */
     int maxn = p->npoints + 8;
     Vec3 stack_a[32], stack_b[32];
-    Vec3 *a = maxn <= 32 ? stack_a : big_malloc(sizeof(Vec3) * (size_t)maxn);
-    Vec3 *b = maxn <= 32 ? stack_b : big_malloc(sizeof(Vec3) * (size_t)maxn);
+    Vec3 *a = maxn <= 32 ? stack_a : malloc(sizeof(Vec3) * (size_t)maxn);
+    Vec3 *b = maxn <= 32 ? stack_b : malloc(sizeof(Vec3) * (size_t)maxn);
     int hit = 1; /* when memory is short, register conservatively */
     if (a && b) {
         if (p->first_outline < 0) {

@@ -30,7 +30,7 @@ int tracer_record_cells(Tracer *t, Vec3 box_min, Vec3 box_max)
 {
     /* A 3DDDA walk visits at most one cell per boundary crossed. */
     t->segment_cells_cap = t->grid->n[0] + t->grid->n[1] + t->grid->n[2] + 3;
-    t->segment_cells = big_malloc(sizeof(uint32_t) * (size_t)t->segment_cells_cap);
+    t->segment_cells = malloc(sizeof(uint32_t) * (size_t)t->segment_cells_cap);
     t->record_min = box_min;
     t->record_max = box_max;
     return t->segment_cells ? 0 : -1;

@@ -606,7 +606,7 @@ static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, c
     /* Edge by edge: the uses by polygons that cast this light's shadows and
      * whose edge has a plane through the light. */
     size_t cap_group = 16;
-    LightEdgeUse *uses = big_malloc(cap_group * sizeof *uses);
+    LightEdgeUse *uses = malloc(cap_group * sizeof *uses);
     if (!uses)
         status = -1;
     for (size_t e = 0; e < eu->n && status == 0;) {
@@ -645,7 +645,7 @@ static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, c
             }
             if (nuses == cap_group) {
                 cap_group *= 2;
-                LightEdgeUse *bigger = big_realloc(uses, cap_group * sizeof *uses);
+                LightEdgeUse *bigger = realloc(uses, cap_group * sizeof *uses);
                 if (!bigger) {
                     status = -1;
                     break;
@@ -765,7 +765,7 @@ static void *classify_lights(void *arg)
 {
     LightJob *j = arg;
     const World *w = j->w;
-    PolygonEdge *edges = big_malloc(sizeof *edges * (size_t)j->maxpts);
+    PolygonEdge *edges = malloc(sizeof *edges * (size_t)j->maxpts);
     if (!edges) {
         j->status = -1;
         return NULL;
@@ -815,9 +815,9 @@ static int build_volumes(ShadowVolumes *sv, const World *w, const Grid *g, const
     sv->box_max = g->max;
     sv->nlights = w->nlights;
     int nl = w->nlights > 0 ? w->nlights : 1;
-    sv->light = big_calloc((size_t)nl, sizeof *sv->light);
-    SilhouetteList *sil = big_calloc((size_t)nl, sizeof *sil);
-    size_t *first = big_calloc((size_t)nl, sizeof *first);
+    sv->light = calloc((size_t)nl, sizeof *sv->light);
+    SilhouetteList *sil = calloc((size_t)nl, sizeof *sil);
+    size_t *first = calloc((size_t)nl, sizeof *first);
     int nclasses = 0;
     int *weld = weld_points(w, &nclasses);
     int maxpts = 3;
@@ -829,7 +829,7 @@ static int build_volumes(ShadowVolumes *sv, const World *w, const Grid *g, const
     /* The edges' uses, for every light alike. */
     EdgeUses uses = { NULL, 0 };
     if (status == 0) {
-        PolygonEdge *edges = big_malloc(sizeof *edges * (size_t)maxpts);
+        PolygonEdge *edges = malloc(sizeof *edges * (size_t)maxpts);
         status = edges && edge_uses_build(&uses, w, weld, nclasses, edges) == 0 ? 0 : -1;
         free(edges);
     }
@@ -951,16 +951,16 @@ static int sample_world(World *s, const World *w, int first, int n)
 {
     *s = *w;
     s->npolygons = n;
-    s->polygons = big_malloc(sizeof *s->polygons * (size_t)(n > 0 ? n : 1));
+    s->polygons = malloc(sizeof *s->polygons * (size_t)(n > 0 ? n : 1));
     int npts = 0, nstarts = 0;
     for (int i = first; i < first + n; i++) {
         npts += w->polygons[i].npoints;
         if (w->polygons[i].first_outline >= 0)
             nstarts += w->polygons[i].noutlines + 1;
     }
-    s->points = big_malloc(sizeof *s->points * (size_t)(npts > 0 ? npts : 1));
-    s->outline_start = big_malloc(sizeof *s->outline_start * (size_t)(nstarts > 0 ? nstarts : 1));
-    s->outline_box = w->outline_box ? big_malloc(sizeof *s->outline_box * (size_t)(nstarts > 0 ? nstarts : 1)) : NULL;
+    s->points = malloc(sizeof *s->points * (size_t)(npts > 0 ? npts : 1));
+    s->outline_start = malloc(sizeof *s->outline_start * (size_t)(nstarts > 0 ? nstarts : 1));
+    s->outline_box = w->outline_box ? malloc(sizeof *s->outline_box * (size_t)(nstarts > 0 ? nstarts : 1)) : NULL;
     if (!s->polygons || !s->points || !s->outline_start || (w->outline_box && !s->outline_box))
         return -1;
     s->npoints = npts;
@@ -1001,8 +1001,8 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
                             VolumesEstimate *est)
 {
     memset(est, 0, sizeof *est);
-    est->light_seconds = big_calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_seconds);
-    est->light_registrations = big_calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_registrations);
+    est->light_seconds = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_seconds);
+    est->light_registrations = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *est->light_registrations);
     if (!est->light_seconds || !est->light_registrations)
         return -1;
     if (w->npolygons == 0)
@@ -1024,7 +1024,7 @@ int shadow_volumes_estimate(const World *w, const Grid *g, const Vec3 *eye, cons
     for (int i = 0; i < s.npolygons; i++)
         if (s.polygons[i].npoints + 3 > maxpts)
             maxpts = s.polygons[i].npoints + 3;
-    PolygonEdge *edges = status == 0 ? big_malloc(sizeof *edges * (size_t)maxpts) : NULL;
+    PolygonEdge *edges = status == 0 ? malloc(sizeof *edges * (size_t)maxpts) : NULL;
     if (!edges)
         status = -1;
     ShadowVolumes sv;
