@@ -96,15 +96,26 @@ void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)
     f->repeated_to = SIZE_MAX; /* a body is read again at every call */
 }
 
+/* Adds dir unless the list has it already: the current folder and the
+ * including file's are often the same ("." twice in a message), and a
+ * folder searched twice finds nothing new. */
+static int add_search_dir(const char **dirs, int nd, int cap, const char *dir)
+{
+    if (!dir || nd >= cap)
+        return nd;
+    for (int i = 0; i < nd; i++)
+        if (strcmp(dirs[i], dir) == 0)
+            return nd;
+    dirs[nd] = dir;
+    return nd + 1;
+}
+
 int lex_search_dirs(Parser *p, const char **dirs, int cap)
 {
-    int nd = 0;
-    if (p->opts->first_dir)
-        dirs[nd++] = p->opts->first_dir;
-    dirs[nd++] = p->files[p->depth - 1].dir;
-    for (int i = 0; i < p->opts->ninclude_dirs && nd < cap; i++)
-        if (p->opts->include_dirs[i])
-            dirs[nd++] = p->opts->include_dirs[i];
+    int nd = add_search_dir(dirs, 0, cap, p->opts->first_dir);
+    nd = add_search_dir(dirs, nd, cap, p->files[p->depth - 1].dir);
+    for (int i = 0; i < p->opts->ninclude_dirs; i++)
+        nd = add_search_dir(dirs, nd, cap, p->opts->include_dirs[i]);
     return nd;
 }
 

@@ -64,6 +64,12 @@ check "unwritable output: exit status 3" exited 3 "no/such/folder"
 run --help
 check_status "--help exits 0" "$status" 0
 check "--help lists --shadows" grep -q -- --shadows "$work/out"
+for tool in compare vs-povray stitch; do
+    check "--help's usage names hstrace $tool" grep -q "^ *hstrace $tool " "$work/out"
+done
+# --strict refuses what APPROXIMATIONS lists; area lights are rendered as
+# POV-Ray renders them, so --help must not name them among the refused.
+check "--help does not say --strict refuses area_light" sh -c '! grep -q area_light "$1"' sh "$work/out"
 run --version
 check_status "--version exits 0" "$status" 0
 check "--version names hstrace" grep -q hstrace "$work/out"

@@ -154,8 +154,79 @@ jpg-65500x65500.jpg|unsupported JPEG size 65500x65500
 no-such-image.png|No such file or directory
 IMAGES
 
-# The budgets' options, given something that is no budget: bad usage.
+# Switches and INI keys of issue 39, whose numbers name no row, column or
+# frame (a float-to-int overflow, then a write out of bounds or the wrong
+# frames rendered with status 0): bad usage, status 1, at the INI line when
+# an INI file says it.
+# opt_refused DESCRIPTION MESSAGE ARG...: status 1 within the limit, MESSAGE
+# (a pattern) the first line, no image.
+opt_refused() {
+    desc=$1 message=$2
+    shift 2
+    rm -f "$work/out.png"
+    (cd "$work/files" && exec timeout -s KILL $limit "$hstrace" ok.pov --width 16 --height 12 --threads 1 \
+        -o "$work/out.png" "$@") >/dev/null 2>"$work/err"
+    status=$?
+    check_status "$desc: status 1 within $limit s" "$status" 1
+    check "$desc: '$message' ($(head -1 "$work/err"))" says "$message"
+    check "$desc: no image" [ ! -e "$work/out.png" ]
+}
 printf 'triangle { 0, x, y }\n' >"$work/files/ok.pov"
+for sw in +SR1e300 +SR2147483649 +SC3e9 +ER1e300 +EC-1; do
+    opt_refused "$sw" "^hstrace: '$sw': expected a" "$sw"
+done
+opt_refused "+SR13 of 12 rows" "^hstrace: the render area's start row (13) is not within the image's 12\$" +SR13
+printf 'Start_Row=1e300\n' >"$work/files/start-row.ini"
+opt_refused "Start_Row=1e300 in an INI file" "^start-row.ini:1:1: '+SR1e300': expected a row or column" start-row.ini
+for sw in +SF1e300 +EF3e9; do
+    opt_refused "+KFI1 +KFF3 $sw" "^hstrace: '$sw': expected a frame number" +KFI1 +KFF3 "$sw"
+done
+printf 'Initial_Frame=1\nFinal_Frame=3\nSubset_End_Frame=3e9\n' >"$work/files/subset.ini"
+opt_refused "Subset_End_Frame=3e9 in an INI file" "^subset.ini:3:1: '+EF3e9': expected a frame number" subset.ini
+
+# INI files that include the next one ten times, sixteen deep (10^16 reads;
+# only depth was bounded): refused once 1000 files have been read, at the
+# line that would read one more.
+i=0
+while [ $i -lt 16 ]; do
+    n=$((i + 1))
+    for k in 1 2 3 4 5 6 7 8 9 10; do echo "fan$n.ini ; $k"; done >"$work/files/fan$i.ini"
+    i=$n
+done
+echo "Width=8" >"$work/files/fan16.ini"
+opt_refused "INI files including each other 10 times, 16 deep" \
+    "^fan[0-9]*.ini:[0-9]*:1: 'fan[0-9]*.ini': INI files read 1000 times, .* in all: more than the 1000 files" fan0.ini
+
+# A FIFO as an INI file, as an INI file's include and Include_Ini, and as
+# the colour configuration (each waited for a writer for ever): refused at
+# once, status 3.
+if [ -n "$fifo" ]; then
+    mkfifo "$work/files/fifo.ini"
+    printf 'fifo.ini\n' >"$work/files/names-fifo.ini"
+    printf 'Width=8\nInclude_Ini=fifo.ini\n' >"$work/files/includes-fifo.ini"
+    for how in "fifo.ini|^hstrace: cannot read INI file 'fifo.ini': not a regular file\$" \
+        "names-fifo.ini|^names-fifo.ini:1:1: cannot read INI file 'fifo.ini': not a regular file\$" \
+        "includes-fifo.ini|^includes-fifo.ini:2:1: cannot read INI file 'fifo.ini': not a regular file\$" \
+        "--ocio-config fifo.ini|^hstrace: cannot read colour configuration 'fifo.ini' (from --ocio-config): not a regular file\$"; do
+        args=${how%%|*} message=${how#*|}
+        rm -f "$work/out.png"
+        # shellcheck disable=SC2086 # the arguments are words
+        (cd "$work/files" && exec timeout -s KILL $limit "$hstrace" ok.pov --width 16 --height 12 --threads 1 \
+            -o "$work/out.png" $args) >/dev/null 2>"$work/err"
+        status=$?
+        check_status "$args (a FIFO): status 3 within $limit s" "$status" 3
+        check "$args (a FIFO): says so ($(head -1 "$work/err"))" says "$message"
+    done
+fi
+
+# An include not found names each folder it searched once ("." was named
+# twice: the current folder and the scene's).
+printf '#include "no-such.inc"\n' >"$work/files/missing-inc.pov"
+run missing-inc.pov
+check "a missing include: each folder searched named once ($(head -1 "$work/err"))" \
+    says "^missing-inc.pov:1:10: cannot open include file 'no-such.inc' (searched: \., [^.]"
+
+# The budgets' options, given something that is no budget: bad usage.
 for bad in "--max-memory 12Q" "--max-memory 0" "--max-parse-seconds -1" "--max-repeated-tokens 0" \
     "--max-macro-calls 1.5" "--max-loop-iterations x"; do
     # shellcheck disable=SC2086 # the option and its value are two words

@@ -14,6 +14,19 @@ static int subset_frame(double v, const Animation *a)
     return (int)((a->final_frame - a->initial_frame + 1) * v);
 }
 
+/* The largest frame number +SF/+EF may name: that of +KFF (frame numbers
+ * are ints; a larger double has no frame, and (int) of it is undefined). */
+#define SUBSET_FRAME_MAX 1000000000.0
+
+static int subset_in_range(double v, const char *what, char *err, int errlen)
+{
+    if (v >= 0.0 && v <= SUBSET_FRAME_MAX)
+        return 0;
+    snprintf(err, (size_t)errlen, "the subset's %s frame (%g) is not a frame number from 0 to %.0f", what, v,
+             SUBSET_FRAME_MAX);
+    return -1;
+}
+
 int animation_plan(const Options *opt, Animation *a, char *err, int errlen)
 {
     memset(a, 0, sizeof *a);
@@ -31,6 +44,9 @@ int animation_plan(const Options *opt, Animation *a, char *err, int errlen)
     if (opt->cyclic)
         a->final_frame++;
     a->first = a->initial_frame;
+    if ((opt->have_subset_start && subset_in_range(opt->subset_start, "start", err, errlen)) ||
+        (opt->have_subset_end && subset_in_range(opt->subset_end, "end", err, errlen)))
+        return -1;
     if (opt->have_subset_start) {
         a->first = subset_frame(opt->subset_start, a);
         if (a->first < a->initial_frame)

@@ -3,10 +3,13 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 /* An INI file is a few lines of settings; anything bigger is a mistake
  * (a scene or an image named by accident), refused before it is read. */
@@ -245,17 +248,35 @@ int ini_file_read(IniFile *f, const char *spec, char *err, int errlen)
 {
     memset(f, 0, sizeof *f);
     size_t n = strlen(spec);
-    const char *open = n > 0 && spec[n - 1] == ']' ? strrchr(spec, '[') : NULL;
-    f->path = strndup(spec, open ? (size_t)(open - spec) : n);
-    if (open)
-        f->section = strndup(open + 1, n - (size_t)(open - spec) - 2);
-    if (!f->path || (open && !f->section)) {
+    const char *bracket = n > 0 && spec[n - 1] == ']' ? strrchr(spec, '[') : NULL;
+    f->path = strndup(spec, bracket ? (size_t)(bracket - spec) : n);
+    if (bracket)
+        f->section = strndup(bracket + 1, n - (size_t)(bracket - spec) - 2);
+    if (!f->path || (bracket && !f->section)) {
         snprintf(err, (size_t)errlen, "out of memory");
         return -1;
     }
-    FILE *fp = fopen(f->path, "rb");
+    /* Opened without waiting (a FIFO with no writer would block the open
+     * for ever), then refused unless it is a regular file. */
+    int fd = open(f->path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        snprintf(err, (size_t)errlen, "cannot open INI file '%s': %s", f->path, strerror(errno));
+        return -1;
+    }
+    struct stat st;
+    int stat_failed = fstat(fd, &st) != 0;
+    if (stat_failed || !S_ISREG(st.st_mode)) {
+        snprintf(err, (size_t)errlen, "cannot read INI file '%s': %s", f->path,
+                 stat_failed           ? strerror(errno)
+                 : S_ISDIR(st.st_mode) ? "it is a folder"
+                                       : "not a regular file");
+        close(fd);
+        return -1;
+    }
+    FILE *fp = fdopen(fd, "rb");
     if (!fp) {
         snprintf(err, (size_t)errlen, "cannot open INI file '%s': %s", f->path, strerror(errno));
+        close(fd);
         return -1;
     }
     char *text = malloc(INI_MAX_BYTES + 1);
@@ -269,6 +290,7 @@ int ini_file_read(IniFile *f, const char *spec, char *err, int errlen)
         free(text);
         return -1;
     }
+    f->bytes = got;
     Reader r = { text, text + got, 1, text, text, f, err, errlen };
     int status = parse(&r);
     free(text);

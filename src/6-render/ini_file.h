@@ -11,6 +11,8 @@
 #ifndef HST_INI_FILE_H
 #define HST_INI_FILE_H
 
+#include <stddef.h>
+
 typedef enum { INI_OPTION, INI_SWITCH, INI_WORD } IniKind;
 
 typedef struct {
@@ -25,13 +27,15 @@ typedef struct IniFile {
     char *section;     /* the section asked for, or NULL */
     IniEntry *entries; /* in the file's order */
     int n, cap;
+    size_t bytes; /* the file's size */
 } IniFile;
 
 /* Does this command-line word name an INI file ("x.ini", "x.INI[sec]")? */
 int ini_spec_is_ini(const char *word);
 
 /* Reads spec. Returns 0, or -1 with "FILE:LINE: message" (or "FILE:
- * message") in err; f is to be freed either way. */
+ * message") in err; f is to be freed either way. Only a regular file is
+ * read: a FIFO, a device or a folder is refused at once ("cannot read"). */
 int ini_file_read(IniFile *f, const char *spec, char *err, int errlen);
 void ini_file_free(IniFile *f);
 

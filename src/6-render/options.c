@@ -20,6 +20,7 @@
 #include "shadow_volumes.h"
 
 #define MAX_DIMENSION 32768
+#define MAX_DIMENSION_TEXT "32768"
 
 static int parse_int(const char *s, int lo, int hi, int *out)
 {
@@ -103,10 +104,11 @@ void options_usage(FILE *f)
             "       hstrace FILE.ini[SECTION] [more INI files, switches, KEY=VALUE] [options]\n"
             "       hstrace compare A B [options]   (see hstrace compare --help)\n"
             "       hstrace vs-povray SCENE.pov [options]   (see hstrace vs-povray --help)\n"
+            "       hstrace stitch PART.exr... -o FULL.exr   (see hstrace stitch --help)\n"
             "\n"
             "Renders a POV-Ray scene made of polygons, with hybrid shadow testing; compares\n"
-            "two images and two renderers' shadow masks; or measures every shadow method\n"
-            "against POV-Ray on a scene.\n"
+            "two images and two renderers' shadow masks; measures every shadow method\n"
+            "against POV-Ray on a scene; or joins the parts of a partial render.\n"
             "\n"
             "  -o, --output FILE      image to write (.exr .png .ppm .tga .bmp .jpg .hdr; default SCENE.png)\n"
             "      --width N          image width in pixels (default 320)\n"
@@ -137,8 +139,9 @@ void options_usage(FILE *f)
             "      --threads N        render threads (default: all cores); the image does not depend on N\n"
             "      --grid N|NxNxN     grid cells per axis (default: chosen from the polygon count)\n"
             "      --include-path DIR folder searched for #include files (repeatable)\n"
-            "      --strict           refuse what hstrace only approximates (normal, patterns other\n"
-            "                         than checker/hexagon/gradient, area_light, ...: see the man page)\n"
+            "      --strict           refuse what hstrace only approximates (patterns and normals it\n"
+            "                         does not model, warps, layered textures, radiosity, photons,\n"
+            "                         focal blur, ...: APPROXIMATIONS in the man page)\n"
             "      --max-memory SIZE  memory the scene may take while it is parsed, e.g. 512M or 8G\n"
             "                         (default: a quarter of the physical memory)\n"
             "      --max-parse-seconds S  stop a parse running longer (default: no time limit)\n"
@@ -334,6 +337,7 @@ static int animation_switch(const char *arg, Options *opt, char *err, int errlen
     char a = (char)toupper((unsigned char)s[0]), b = (char)toupper((unsigned char)s[1]);
     char c = b ? (char)toupper((unsigned char)s[2]) : '\0';
     int bad = 0;
+    const char *what = "a number";
     if (a == 'K' && b == 'F' && (c == 'I' || c == 'F')) {
         int *slot = c == 'I' ? &opt->initial_frame : &opt->final_frame;
         bad = parse_int(s + 3, 0, 1000000000, slot);
@@ -346,7 +350,9 @@ static int animation_switch(const char *arg, Options *opt, char *err, int errlen
         opt->have_clock = 1;
     } else if ((a == 'S' || a == 'E') && b == 'F') {
         double *slot = a == 'S' ? &opt->subset_start : &opt->subset_end;
-        bad = parse_double(s + 2, slot) || *slot < 0.0;
+        /* Frame numbers are those of +KFF: a larger one names no frame. */
+        bad = parse_double(s + 2, slot) || *slot < 0.0 || *slot > 1e9;
+        what = "a frame number or fraction from 0 to 1000000000";
         if (a == 'S')
             opt->have_subset_start = 1;
         else
@@ -361,7 +367,10 @@ static int animation_switch(const char *arg, Options *opt, char *err, int errlen
                                 : (b == 'R' ? &opt->end_row : &opt->end_col);
         int *have = a == 'S' ? (b == 'R' ? &opt->have_start_row : &opt->have_start_col)
                              : (b == 'R' ? &opt->have_end_row : &opt->have_end_col);
-        bad = parse_double(s + 2, slot) || *slot < 0.0;
+        /* No image has more rows or columns than MAX_DIMENSION: a larger
+         * value names none (the image's own size is checked later). */
+        bad = parse_double(s + 2, slot) || *slot < 0.0 || *slot > MAX_DIMENSION;
+        what = "a row or column (or fraction) from 0 to " MAX_DIMENSION_TEXT;
         *have = 1;
     } else {
         snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
@@ -369,7 +378,7 @@ static int animation_switch(const char *arg, Options *opt, char *err, int errlen
     }
     if (bad) {
         snprintf(err, (size_t)errlen, "'%s': expected %s", arg,
-                 a == 'K' && b == 'F' && (c == 'I' || c == 'F') ? "a frame number from 0" : "a number");
+                 a == 'K' && b == 'F' && (c == 'I' || c == 'F') ? "a frame number from 0" : what);
         return -1;
     }
     return 0;
@@ -672,7 +681,7 @@ static const IniKey ini_keys[] = {
     { "Buffer_Size", KEY_IGNORED, NULL },
 };
 
-static int read_ini(Options *opt, const char *spec, int depth, char *err, int errlen);
+static int read_ini(Options *opt, const char *spec, const char *where, int depth, char *err, int errlen);
 
 /* One KEY=VALUE, from an INI file (where: "FILE:LINE:COLUMN") or the
  * command line (where: NULL). */
@@ -766,7 +775,7 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
             if (depth >= 16) {
                 snprintf(msg, sizeof msg, "Include_Ini=%s: INI files included more than 16 deep", value);
                 status = -1;
-            } else if (read_ini(opt, value, depth + 1, err, errlen)) {
+            } else if (read_ini(opt, value, where, depth + 1, err, errlen)) {
                 return -1; /* err already says where */
             }
             break;
@@ -811,8 +820,26 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
     return status;
 }
 
-static int read_ini(Options *opt, const char *spec, int depth, char *err, int errlen)
+/* Only depth bounds nothing: a file that includes the next one ten times,
+ * fifteen deep, is 10^15 reads. So the INI files read for one command are
+ * bounded in number and in bytes, whatever includes them. */
+#define INI_MAX_FILES 1000
+#define INI_MAX_TOTAL_BYTES (16u << 20)
+
+/* Reads the INI file spec (with its section) and applies its entries;
+ * where is the position of the line that included it ("FILE:LINE:COLUMN"),
+ * NULL for the command line. */
+static int read_ini(Options *opt, const char *spec, const char *where, int depth, char *err, int errlen)
 {
+    char msg[700];
+    if (opt->ninis >= INI_MAX_FILES || opt->ini_bytes > INI_MAX_TOTAL_BYTES) {
+        snprintf(msg, sizeof msg, "'%s': INI files read %d times, %zu bytes in all: more than the %d files or %u MiB "
+                 "one command may read (do INI files include each other again and again?)",
+                 spec, opt->ninis, opt->ini_bytes, INI_MAX_FILES, INI_MAX_TOTAL_BYTES >> 20);
+        opt->error_has_position = where != NULL;
+        snprintf(err, (size_t)errlen, "%s%s%s", where ? where : "", where ? ": " : "", msg);
+        return -1;
+    }
     IniFile *grown = realloc(opt->inis, sizeof *grown * (size_t)(opt->ninis + 1));
     if (!grown) {
         snprintf(err, (size_t)errlen, "out of memory");
@@ -820,43 +847,50 @@ static int read_ini(Options *opt, const char *spec, int depth, char *err, int er
     }
     opt->inis = grown;
     IniFile *f = &opt->inis[opt->ninis++];
-    if (ini_file_read(f, spec, err, errlen)) {
-        /* Unreadable: an input/output error; else a mistake at its place. */
-        opt->error_is_io = strncmp(err, "cannot ", 7) == 0 || strstr(err, "too big for an INI file") != NULL;
-        opt->error_has_position = !opt->error_is_io && strncmp(err, "out of memory", 13) != 0;
+    if (ini_file_read(f, spec, msg, (int)sizeof msg)) {
+        /* Unreadable: an input/output error, at the line that named the
+         * file if any; else a mistake at its own place in the file. */
+        opt->error_is_io = strncmp(msg, "cannot ", 7) == 0 || strstr(msg, "too big for an INI file") != NULL;
+        int positioned = !opt->error_is_io && strncmp(msg, "out of memory", 13) != 0;
+        if (!positioned && where)
+            snprintf(err, (size_t)errlen, "%s: %s", where, msg);
+        else
+            snprintf(err, (size_t)errlen, "%s", msg);
+        opt->error_has_position = positioned || where;
         return -1;
     }
+    opt->ini_bytes += f->bytes;
     /* f may move as included files are added: keep what is needed. */
     int n = f->n;
     IniEntry *entries = f->entries;
     const char *path = f->path;
     for (int i = 0; i < n; i++) {
         const IniEntry *e = &entries[i];
-        char where[600];
-        snprintf(where, sizeof where, "%s:%d:%d", path, e->line, e->column);
+        char here[600];
+        snprintf(here, sizeof here, "%s:%d:%d", path, e->line, e->column);
         if (e->kind == INI_OPTION) {
-            if (apply_key(opt, e->key, e->value, where, depth, err, errlen))
+            if (apply_key(opt, e->key, e->value, here, depth, err, errlen))
                 return -1;
         } else if (e->kind == INI_SWITCH) {
-            char msg[600];
             if (parse_pov_switch(e->key, opt, msg, (int)sizeof msg)) {
-                snprintf(err, (size_t)errlen, "%s: %s", where, msg);
+                snprintf(err, (size_t)errlen, "%s: %s", here, msg);
                 opt->error_has_position = 1;
                 return -1;
             }
             if (toupper((unsigned char)e->key[1]) == 'A' && opt->antialias_on) {
-                snprintf(opt->antialias_by, sizeof opt->antialias_by, "%s: '%s'", where, e->key);
+                snprintf(opt->antialias_by, sizeof opt->antialias_by, "%s: '%s'", here, e->key);
                 opt->antialias_positioned = 1;
             }
         } else if (ini_spec_is_ini(e->key)) {
-            if (depth >= 16 || read_ini(opt, e->key, depth + 1, err, errlen)) {
-                if (depth >= 16)
-                    snprintf(err, (size_t)errlen, "%s: INI files included more than 16 deep", where);
+            if (depth >= 16) {
+                snprintf(err, (size_t)errlen, "%s: INI files included more than 16 deep", here);
                 opt->error_has_position = 1;
                 return -1;
             }
+            if (read_ini(opt, e->key, here, depth + 1, err, errlen))
+                return -1;
         } else if (opt->scene && strcmp(opt->scene, e->key) != 0) {
-            snprintf(err, (size_t)errlen, "%s: more than one scene given ('%s' and '%s')", where, opt->scene, e->key);
+            snprintf(err, (size_t)errlen, "%s: more than one scene given ('%s' and '%s')", here, opt->scene, e->key);
             opt->error_has_position = 1;
             return -1;
         } else {
@@ -886,6 +920,17 @@ static int is_key_value(const char *a)
 static int area_side(int have_start, double start, int have_end, double end, int size, int *lo, int *hi,
                      const char *what, char *err, int errlen)
 {
+    /* Checked in doubles before any conversion: a start or end of 1e300,
+     * NaN or below 0 has no row, and (int) of it is undefined. */
+    if (have_start && !(start >= 0.0 && start <= (double)size)) {
+        snprintf(err, (size_t)errlen, "the render area's start %s (%g) is not within the image's %d", what, start,
+                 size);
+        return -1;
+    }
+    if (have_end && !(end >= 0.0 && end <= (double)size)) {
+        snprintf(err, (size_t)errlen, "the render area's end %s (%g) is beyond the image's %d", what, end, size);
+        return -1;
+    }
     double first = !have_start ? 0.0 : start >= 1.0 ? start - 1.0 : start * size;
     double last = !have_end ? size - 1.0 : end > 1.0 ? end - 1.0 : end * size - 1.0;
     if (last >= size) {
@@ -1162,7 +1207,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             snprintf(err, (size_t)errlen, "unknown option '%s' (see --help)", a);
             return -1;
         } else if (ini_spec_is_ini(a)) {
-            if (read_ini(opt, a, 0, err, errlen))
+            if (read_ini(opt, a, NULL, 0, err, errlen))
                 return -1;
         } else if (is_key_value(a)) {
             char key[128];

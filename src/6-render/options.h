@@ -99,6 +99,7 @@ typedef struct {
      * values of the options above) and strings made here. */
     struct IniFile *inis;
     int ninis;
+    size_t ini_bytes; /* read from INI files in all, bounded with ninis */
     char **strings;
     int nstrings;
 } Options;

@@ -107,16 +107,19 @@ ColourStatus open_display(const ColourRequest *req, ColourDisplay *d, char *err,
     d->config_path = path;
 
     // OpenColorIO's own message for a missing file names neither the cause
-    // nor where the name came from.
+    // nor where the name came from; and it would wait for ever on a FIFO
+    // with no writer: only a regular file is handed to it.
     struct stat st;
     std::FILE *f = nullptr;
+    const char *why = nullptr;
     if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
-        errno = EISDIR;
-    else
-        f = std::fopen(path, "rb");
-    if (f == nullptr) {
-        set_error(err, errlen, "cannot read colour configuration '%s' (from %s): %s", path, origin,
-                  std::strerror(errno));
+        why = std::strerror(EISDIR);
+    else if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        why = "not a regular file";
+    else if ((f = std::fopen(path, "rb")) == nullptr)
+        why = std::strerror(errno);
+    if (why != nullptr) {
+        set_error(err, errlen, "cannot read colour configuration '%s' (from %s): %s", path, origin, why);
         return COLOUR_ERR_CONFIG;
     }
     std::fclose(f);

@@ -20,19 +20,39 @@ typedef struct {
     int have_err; /* keep the first message, the root cause */
 } ExrIO;
 
-static void on_exr_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
+static void keep_first_error(ExrIO *io, const char *msg)
 {
-    void *ud = NULL;
-    ExrIO *io;
-
-    (void)code;
-    if (ctxt == NULL || exr_get_user_data(ctxt, &ud) != EXR_ERR_SUCCESS || ud == NULL)
-        return;
-    io = ud;
-    if (!io->have_err && msg != NULL) {
+    if (io != NULL && !io->have_err && msg != NULL) {
         image_set_error(io->err, io->errlen, "%s", msg);
         io->have_err = 1;
     }
+}
+
+/* Reading: the context takes no lock in read mode, so the handler may ask
+ * it for its user data. */
+static void on_exr_read_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
+{
+    void *ud = NULL;
+
+    (void)code;
+    if (ctxt == NULL || exr_get_user_data(ctxt, &ud) != EXR_ERR_SUCCESS)
+        return;
+    keep_first_error(ud, msg);
+}
+
+/* Writing: a write-mode context calls its error handler with its own mutex
+ * held, and exr_get_user_data takes that mutex again -- a deadlock (a full
+ * disk, an attribute name of 32 or more bytes). So the writer's ExrIO is
+ * found through this thread's own pointer instead: one thread writes a file
+ * from exr_start_write to exr_finish, and each thread has its own pointer,
+ * so no state is shared between threads. */
+static _Thread_local ExrIO *exr_writing;
+
+static void on_exr_write_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
+{
+    (void)ctxt;
+    (void)code;
+    keep_first_error(exr_writing, msg);
 }
 
 static int64_t exr_fd_write(exr_const_context_t ctxt, void *ud, const void *buf, uint64_t sz, uint64_t off,
@@ -144,7 +164,8 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
     memset(&enc, 0, sizeof enc);
     init.user_data = &io;
     init.write_fn = exr_fd_write;
-    init.error_handler_fn = on_exr_error;
+    init.error_handler_fn = on_exr_write_error;
+    exr_writing = &io;
 
     rv = exr_start_write(&ctx, "image.exr", EXR_WRITE_FILE_DIRECTLY, &init);
     if (rv != EXR_ERR_SUCCESS)
@@ -229,6 +250,7 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
         exr_encoding_destroy(ctx, &enc);
     started = 0;
     rv = exr_finish(&ctx);
+    exr_writing = NULL;
     if (rv != EXR_ERR_SUCCESS)
         return exr_fail(&io, rv);
     return 0;
@@ -238,6 +260,7 @@ fail:
         exr_encoding_destroy(ctx, &enc);
     if (ctx != NULL)
         exr_finish(&ctx);
+    exr_writing = NULL;
     return exr_fail(&io, rv);
 }
 
@@ -335,7 +358,7 @@ static exr_result_t start_read_part0(exr_context_t *ctx, ExrIO *io, exr_storage_
     init.user_data = io;
     init.read_fn = exr_fd_read;
     init.size_fn = exr_fd_size;
-    init.error_handler_fn = on_exr_error;
+    init.error_handler_fn = on_exr_read_error;
     init.max_image_width = IMAGE_MAX_DIM;
     init.max_image_height = IMAGE_MAX_DIM;
     init.max_tile_width = IMAGE_MAX_DIM;
