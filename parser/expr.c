@@ -66,62 +66,48 @@ static void balance(double a[5], int *ta, double b[5], int *tb)
  * povray: #if (1e-7) is true, #if (1e-11) false, 1 = 1 + 1e-9 is false). */
 static int ftrue(double v) { return fabs(v) > 1e-10; }
 
-static void parse_num_term(Parser *p, double e[5], int *terms)
+/* POV-Ray's binary operators by priority, all left-associative: logical
+ * & and | below the relations, below + and -, below * and /. One
+ * precedence-climbing loop (as Lua's subexpr) reads them all. */
+enum { PRIO_NONE, PRIO_LOGICAL, PRIO_RELATION, PRIO_SUM, PRIO_PRODUCT };
+
+static int operator_priority(int punct)
 {
-    parse_num_factor(p, e, terms);
-    for (;;) {
-        Token *t = next(p);
-        if (!is_punct(t, '*') && !is_punct(t, '/')) {
-            unget(p);
-            return;
-        }
-        int op = t->punct;
-        double r[5] = { 0 };
-        int rt = *terms;
-        parse_num_factor(p, r, &rt);
-        balance(e, terms, r, &rt);
+    switch (punct) {
+    case '&': case '|': return PRIO_LOGICAL;
+    case '<': case '>': case '=': case P_LE: case P_GE: case P_NE: return PRIO_RELATION;
+    case '+': case '-': return PRIO_SUM;
+    case '*': case '/': return PRIO_PRODUCT;
+    default: return PRIO_NONE;
+    }
+}
+
+static int binary_priority(const Token *t)
+{
+    return t->type == TK_PUNCT ? operator_priority(t->punct) : PRIO_NONE;
+}
+
+/* e = e op r. Arithmetic makes the shorter operand as long as the other;
+ * relations and logic compare component by component on the left
+ * operand's components, grown to the right's (as POV-Ray's Parse_Rel_Term
+ * and Parse_Logical). */
+static void apply_binary(int op, double e[5], int *terms, double r[5], int *rt)
+{
+    switch (operator_priority(op)) {
+    case PRIO_PRODUCT:
+    case PRIO_SUM:
+        balance(e, terms, r, rt);
         for (int i = 0; i < *terms; i++) {
-            if (op == '*')
-                e[i] *= r[i];
-            else
-                e[i] = r[i] == 0.0 ? HUGE_VAL : e[i] / r[i]; /* POV-Ray warns and goes on */
+            switch (op) {
+            case '*': e[i] *= r[i]; break;
+            case '/': e[i] = r[i] == 0.0 ? HUGE_VAL : e[i] / r[i]; break; /* POV-Ray warns and goes on */
+            case '+': e[i] += r[i]; break;
+            default: e[i] -= r[i]; break;
+            }
         }
-    }
-}
-
-void parse_rel_factor(Parser *p, double e[5], int *terms)
-{
-    parse_num_term(p, e, terms);
-    for (;;) {
-        Token *t = next(p);
-        if (!is_punct(t, '+') && !is_punct(t, '-')) {
-            unget(p);
-            return;
-        }
-        int op = t->punct;
-        double r[5] = { 0 };
-        int rt = *terms;
-        parse_num_term(p, r, &rt);
-        balance(e, terms, r, &rt);
-        for (int i = 0; i < *terms; i++)
-            e[i] = op == '+' ? e[i] + r[i] : e[i] - r[i];
-    }
-}
-
-static void parse_rel_term(Parser *p, double e[5], int *terms)
-{
-    parse_rel_factor(p, e, terms);
-    for (;;) {
-        Token *t = next(p);
-        int op = t->type == TK_PUNCT ? t->punct : 0;
-        if (op != '<' && op != '>' && op != '=' && op != P_LE && op != P_GE && op != P_NE) {
-            unget(p);
-            return;
-        }
-        double r[5] = { 0 };
-        int rt = *terms;
-        parse_rel_factor(p, r, &rt);
-        promote(e, terms, rt);
+        return;
+    case PRIO_RELATION:
+        promote(e, terms, *rt);
         for (int i = 0; i < *terms; i++) {
             double a = e[i], b = r[i];
             int eq = !ftrue(a - b);
@@ -134,26 +120,38 @@ static void parse_rel_term(Parser *p, double e[5], int *terms)
             default: e[i] = a >= b || eq; break;
             }
         }
+        return;
+    default:
+        promote(e, terms, *rt);
+        for (int i = 0; i < *terms; i++)
+            e[i] = op == '&' ? (ftrue(e[i]) && ftrue(r[i])) : (ftrue(e[i]) || ftrue(r[i]));
+        return;
     }
 }
 
-static void parse_logical(Parser *p, double e[5], int *terms)
+/* Reads a factor and every binary operator of at least min_priority after
+ * it; an operator's right operand takes only operators that bind tighter. */
+static void parse_binary(Parser *p, double e[5], int *terms, int min_priority)
 {
-    parse_rel_term(p, e, terms);
+    parse_num_factor(p, e, terms);
     for (;;) {
         Token *t = next(p);
-        if (!is_punct(t, '&') && !is_punct(t, '|')) {
+        int priority = binary_priority(t);
+        if (priority == PRIO_NONE || priority < min_priority) {
             unget(p);
             return;
         }
         int op = t->punct;
         double r[5] = { 0 };
         int rt = *terms;
-        parse_rel_term(p, r, &rt);
-        promote(e, terms, rt);
-        for (int i = 0; i < *terms; i++)
-            e[i] = op == '&' ? (ftrue(e[i]) && ftrue(r[i])) : (ftrue(e[i]) || ftrue(r[i]));
+        parse_binary(p, r, &rt, priority + 1);
+        apply_binary(op, e, terms, r, &rt);
     }
+}
+
+void parse_rel_factor(Parser *p, double e[5], int *terms)
+{
+    parse_binary(p, e, terms, PRIO_SUM);
 }
 
 void parse_express(Parser *p, double e[5], int *terms)
@@ -161,7 +159,7 @@ void parse_express(Parser *p, double e[5], int *terms)
     Token first = *peek(p);
     nesting_enter(p, &first);
     int want = *terms, got = 1;
-    parse_logical(p, e, &got);
+    parse_binary(p, e, &got, PRIO_LOGICAL);
     Token *t = next(p);
     if (is_punct(t, '?')) {
         if (got != 1)
