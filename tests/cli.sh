@@ -69,7 +69,8 @@ for tool in compare vs-povray stitch; do
 done
 # --strict refuses what APPROXIMATIONS lists; area lights are rendered as
 # POV-Ray renders them, so --help must not name them among the refused.
-check "--help does not say --strict refuses area_light" sh -c '! grep -q area_light "$1"' sh "$work/out"
+lacks() { ! grep -q -- "$1" "$2"; }
+check "--help does not say --strict refuses area_light" lacks area_light "$work/out"
 run --version
 check_status "--version exits 0" "$status" 0
 check "--version names hstrace" grep -q hstrace "$work/out"

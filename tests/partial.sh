@@ -82,6 +82,6 @@ check "an end row beyond the image: exit status 1" exited 1 "beyond the image's 
 run desk.pov +W16 +H12 +SR8 +ER4 -o bad.ppm
 check "an empty area: exit status 1" exited 1 "the render area is empty"
 run desk.pov +W16 +H12 +SC-1 -o bad.ppm
-check "+SC-1: exit status 1" exited 1 "'+SC-1': expected a number"
+check "+SC-1: exit status 1" exited 1 "'+SC-1': expected a row or column (or fraction) from 0 to 32768"
 check "... and nothing written" fails test -e "$work/bad.ppm"
 tap_end

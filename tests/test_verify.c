@@ -107,10 +107,12 @@ static void honest_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     account(ctx, q, truth, *light);
 }
 
-static const ShadowMethod always_lit = { "always-lit", "planted: no shadows, claims volumes", 0, always_lit_test,
-                                         NULL, 0, 0 };
-static const ShadowMethod flipping = { "flipping", "planted: every Nth decision inverted", 0, flipping_test, NULL, 0, 0 };
-static const ShadowMethod honest = { "honest", "the shadow ray, through a planted method", 0, honest_test, NULL, 0, 0 };
+static const ShadowMethod always_lit = { .name = "always-lit", .summary = "planted: no shadows, claims volumes",
+                                         .test = always_lit_test };
+static const ShadowMethod flipping = { .name = "flipping", .summary = "planted: every Nth decision inverted",
+                                       .test = flipping_test };
+static const ShadowMethod honest = { .name = "honest", .summary = "the shadow ray, through a planted method",
+                                     .test = honest_test };
 
 typedef struct {
     Scene *scene;
@@ -160,11 +162,21 @@ static int render_with(const Fixture *f, const ShadowMethod *m, int verify, int 
     ro.height = 72;
     ro.threads = threads;
     ro.quality = (Quality){ 1, 1, 1, 0, 0, 1, 1 }; /* +Q8: shadows, reflection, refraction, normals, area lights */
-    ro.shadow = m;
     ro.verify = verify;
+    ShadowSetup setup = { .world = &f->world, .grid = (Grid *)&f->grid, .width = 96, .height = 72,
+                          .threads = threads, .shadows_on = 1, .nth = { NTH_FIXED, 0.0 } };
+    ShadowPrepared prepared;
+    char err[256];
+    if (shadow_method_prepare(m, &setup, &prepared, err, (int)sizeof err)) {
+        shadow_prepared_free(&prepared);
+        return -1;
+    }
+    ro.shadows = &prepared;
     Image img;
     reset_planted();
-    if (render_image(&f->world, &f->grid, &ro, &img, stats))
+    int failed = render_image(&f->world, &f->grid, &ro, &img, stats);
+    shadow_prepared_free(&prepared);
+    if (failed)
         return -1;
     image_free(&img);
     return 0;

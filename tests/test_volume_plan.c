@@ -217,7 +217,7 @@ static void modes(void)
     VolumePlan plan;
     ShadowVolumes sv;
     CostModel cost;
-    VolumePlanOptions o = { VOLUMES_ALWAYS, 32, 24, 2, 0, VOLUME_PLAN_NTH_AUTO };
+    VolumePlanOptions o = { VOLUMES_ALWAYS, 32, 24, 2, 0, { NTH_AUTO, 0.0 } };
     int r = have_bvh ? volume_plan_build(&plan, &sv, &cost, &f.w, &f.g, &bvh, &f.w.camera.location, &o) : -1;
     tap_ok(r == 0 && sv.light && sv.light[0].usable && sv.light[1].usable && !sv.light[2].usable,
            "--volumes always: both lights that cast shadows get volumes, the shadowless one none");

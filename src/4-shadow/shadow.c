@@ -3,11 +3,13 @@
 
 #include "area_light.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "shadow_embree.h"
 #include "shadow_volumes.h"
+#include "volume_plan.h"
 
 /* Enough for max_trace_level reflections plus continued (same-ior) rays;
  * deeper points keep no state and their methods use the shadow ray. */
@@ -143,19 +145,62 @@ static void shadow_none_test(ShadowContext *ctx, const ShadowQuery *q, RGB *ligh
 const char *const shadow_scheme_names[SCHEME_COUNT] = { "sustain",  "self-shadow", "volume",    "conventional",
                                                         "cache hit", "area lit",   "area umbra", "area beam" };
 
-/* The first is the default. */
+/* The registry: every method, each a row; the first is the default. Only
+ * here are methods named; the rest of the program finds them by name
+ * (--shadows) and uses them through the row. */
 static const ShadowMethod methods[] = {
-    { "hst", "the paper's hybrid: sustain, self-shadow, shadow volume or shadow ray, switched by N_th", 1,
-      shadow_hst_test, shadow_hst_skip, 0, 1 },
-    { "conventional", "a shadow ray per light through the grid (exact reference)", 0, shadow_conventional_test, NULL, 0, 0 },
-    { "cache", "shadow rays that first try the light's last opaque blocker (as POV-Ray does)", 0, shadow_cache_test,
-      NULL, 0, 0 },
-    { "volume", "shadow volumes: a depth count carried along every segment", 1, shadow_volume_test,
-      shadow_volume_skip, 0, 0 },
-    { "embree", "Embree 3's float shadow ray with the shadow ray's rules (not exact: for comparison)", 0,
-      shadow_embree_test, NULL, 1, 0 },
-    { "none", "no shadows: every light reaches every point", 0, shadow_none_test, NULL, 0, 0 },
+    { .name = "hst",
+      .summary = "the paper's hybrid: sustain, self-shadow, shadow volume or shadow ray, switched by N_th",
+      .uses_volumes = 1, .prepare = shadow_hst_prepare, .test = shadow_hst_test, .skip = shadow_hst_skip,
+      .area_beam = 1 },
+    { .name = "conventional", .summary = "a shadow ray per light through the grid (exact reference)",
+      .test = shadow_conventional_test },
+    { .name = "cache", .summary = "shadow rays that first try the light's last opaque blocker (as POV-Ray does)",
+      .test = shadow_cache_test },
+    { .name = "volume", .summary = "shadow volumes: a depth count carried along every segment", .uses_volumes = 1,
+      .prepare = shadow_volume_prepare, .test = shadow_volume_test, .skip = shadow_volume_skip },
+    { .name = "embree", .summary = "Embree 3's float shadow ray with the shadow ray's rules (not exact: for comparison)",
+      .prepare = shadow_embree_prepare, .test = shadow_embree_test, .inexact = 1 },
+    { .name = "none", .summary = "no shadows: every light reaches every point", .test = shadow_none_test,
+      .blind = 1 },
 };
+
+const ShadowMethod *shadow_method_fallback(void)
+{
+    for (size_t i = 0; i < sizeof methods / sizeof methods[0]; i++)
+        if (methods[i].test == shadow_cache_test)
+            return &methods[i];
+    return &methods[0];
+}
+
+int shadow_method_prepare(const ShadowMethod *m, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen)
+{
+    memset(out, 0, sizeof *out);
+    out->decider = m;
+    out->nth = s->nth.mode == NTH_PER_POINT ? -1.0 : s->nth.mode == NTH_AUTO ? 0.0 : s->nth.value;
+    out->nth_mode = s->nth.mode == NTH_PER_POINT ? "per-point"
+                    : s->nth.mode == NTH_AUTO    ? "auto (C_ray / (C_s + C_g))"
+                                                 : "fixed";
+    out->cost = calloc(1, sizeof *out->cost);
+    if (!out->cost) {
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
+    return m->prepare ? m->prepare(m, s, out, err, errlen) : 0;
+}
+
+void shadow_prepared_free(ShadowPrepared *p)
+{
+    if (p->volumes)
+        shadow_volumes_free(p->volumes);
+    free(p->volumes);
+    if (p->plan)
+        volume_plan_free(p->plan);
+    free(p->plan);
+    free(p->cost);
+    shadow_embree_free(p->embree);
+    memset(p, 0, sizeof *p);
+}
 
 const ShadowMethod *shadow_method_find(const char *name)
 {
@@ -167,7 +212,7 @@ const ShadowMethod *shadow_method_find(const char *name)
 
 const char *shadow_method_unavailable(const ShadowMethod *m)
 {
-    if (m->test == shadow_embree_test && !shadow_embree_built())
+    if (m->prepare == shadow_embree_prepare && !shadow_embree_built())
         return "this hstrace was built without Embree (install the Debian package libembree-dev, then "
                "configure and make again)";
     return NULL;

@@ -12,6 +12,8 @@
 #ifndef HST_SHADOW_H
 #define HST_SHADOW_H
 
+#include <stddef.h>
+
 #include "tracer.h"
 
 /* What is known about one light at one point. The depth counts are the
@@ -167,10 +169,63 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
                         const struct ShadowVolumes *volumes);
 void shadow_context_free(ShadowContext *ctx);
 
+/* hst's switching threshold N_th (--nth): a fixed value, measured once per
+ * scene (auto: the shadow ray's cost over that of counting one shadow
+ * polygon), or eq. (7) at every shading point from its own N_c. */
+typedef enum { NTH_FIXED, NTH_AUTO, NTH_PER_POINT } NthMode;
+typedef struct {
+    NthMode mode;
+    double value; /* NTH_FIXED's */
+} NthSetting;
+
+/* What a method's preparation may use: the world, its grid (empty cells:
+ * the polygons are registered only if volumes are built) and hierarchy,
+ * and the options that bear on shadows. */
+typedef struct ShadowSetup {
+    const World *world;
+    Grid *grid;
+    const Bvh *bvh;
+    const Vec3 *eye;        /* the camera's location; NULL for an orthographic camera */
+    int width, height;      /* the image, for the plan's estimates */
+    int threads;
+    int shadows_on;         /* the quality asks for shadows (+Q4 and up): else nothing is prepared */
+    int volumes_always;     /* --volumes always */
+    NthSetting nth;
+    int precision;          /* PlanePrecision of the shadow polygons' planes */
+    /* A render spread over processes: the leader plans (plans rest on
+     * timings, which differ between processes) and broadcast hands its
+     * choices to the others, so that every process decides alike. NULL:
+     * one process. */
+    void (*broadcast)(void *data, size_t size);
+    int leader;
+} ShadowSetup;
+
+/* What a method prepared, shared read-only by the render's threads, and
+ * the method that decides (hst hands its decisions to the shadow ray with
+ * the last-blocker cache when no volume pays and no area light needs its
+ * beams). Released by shadow_prepared_free. */
+typedef struct ShadowPrepared {
+    const struct ShadowMethod *decider;
+    struct ShadowVolumes *volumes; /* at least one usable light's, or NULL */
+    struct VolumePlan *plan;       /* which lights got volumes and why, or NULL */
+    struct CostModel *cost;        /* calibrated with the volumes (zero without) */
+    struct EmbreeScene *embree;    /* the embree method's scene, or NULL */
+    double nth;                    /* hst: N_th as decided; negative: per point */
+    const char *nth_mode;          /* for the report */
+    double plan_seconds;           /* planning, builds included (wall) */
+    double volumes_seconds;        /* ... the builds */
+} ShadowPrepared;
+
 typedef struct ShadowMethod {
     const char *name;
     const char *summary;
     int uses_volumes;    /* needs shadow volumes and the shadow buckets of segments */
+    /* Prepares what the method shares between threads into out (whose
+     * decider is the method itself, its nth the setting's value, the rest
+     * empty); NULL: nothing to prepare. Returns 0, or -1 with a message
+     * in err. */
+    int (*prepare)(const struct ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
+                   int errlen);
     /* Decides q's light; sets ctx->last_scheme. */
     void (*test)(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
     /* The shading needs no answer for q's light (it faces away from the
@@ -184,7 +239,19 @@ typedef struct ShadowMethod {
     /* 1: area lights by their beam's proofs (hst, area_light_beam.h); 0:
      * each sample by test. */
     int area_beam;
+    /* 1: decides nothing, every light reaches every point (none). */
+    int blind;
 } ShadowMethod;
+
+/* Prepares method m for the render (shadows_on: its prepare; else nothing
+ * but the defaults). Returns 0, or -1 with a message in err (out of
+ * memory, a library that failed); out is to be freed either way. */
+int shadow_method_prepare(const ShadowMethod *m, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen);
+void shadow_prepared_free(ShadowPrepared *p);
+/* The shadow ray with the light's last opaque blocker tried first (exact:
+ * shadow_cache.c): what a method hands its decisions to where what it
+ * prepared would not pay. */
+const ShadowMethod *shadow_method_fallback(void);
 
 /* The record of one decision, the same for every method, for the analysis
  * channels (--aov): read right after test or skip. */
@@ -240,6 +307,12 @@ void shadow_cache_forget(ShadowContext *ctx, int nlights);
 void shadow_volume_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
 void shadow_volume_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away);
 void shadow_hst_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
+/* The volume methods' preparation (shadow_hst.c): the volume plan, with
+ * every light's volumes (volume) or only those that pay (hst, unless
+ * --volumes always), the cost model and N_th. */
+int shadow_hst_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen);
+int shadow_volume_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
+                          int errlen);
 void shadow_hst_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away);
 
 #endif

@@ -459,3 +459,12 @@ void shadow_embree_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 #endif
 
 const EmbreeSceneInfo *shadow_embree_info(const EmbreeScene *es) { return es ? &es->info : NULL; }
+
+int shadow_embree_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen)
+{
+    (void)self;
+    if (!s->shadows_on)
+        return 0;
+    out->embree = shadow_embree_build(s->world, s->threads, err, errlen);
+    return out->embree ? 0 : -1;
+}

@@ -44,6 +44,9 @@ EmbreeScene *shadow_embree_build(const World *w, int threads, char *err, int err
 void shadow_embree_free(EmbreeScene *es);
 const EmbreeSceneInfo *shadow_embree_info(const EmbreeScene *es);
 
+/* The method's preparation: the Embree scene (out->embree). */
+int shadow_embree_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
+                          int errlen);
 /* The method's test (ctx->embree must be set). */
 void shadow_embree_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
 

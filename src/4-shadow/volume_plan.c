@@ -315,7 +315,7 @@ static int measure_hst(VolumePlan *plan, const World *w, const Grid *g, const Bv
 
 static double nth_for(const VolumePlanOptions *o, const CostModel *cost)
 {
-    return o->nth >= 0.0 ? o->nth : o->nth == VOLUME_PLAN_NTH_AUTO ? cost->nth_ray : -1.0;
+    return o->nth.mode == NTH_FIXED ? o->nth.value : o->nth.mode == NTH_AUTO ? cost->nth_ray : -1.0;
 }
 
 /* A fresh build of the lights plan->build asks for, calibrated. full: eq.
@@ -340,7 +340,7 @@ static int build_and_calibrate(VolumePlan *plan, ShadowVolumes *sv, CostModel *c
         return -1;
     plan->builds++;
     plan->build_seconds += clock_wall() - t0;
-    full = full || o->nth == VOLUME_PLAN_NTH_PER_POINT;
+    full = full || o->nth.mode == NTH_PER_POINT;
     return full ? cost_model_calibrate(cost, w, g, bvh, sv, o->width, o->height)
                 : cost_model_calibrate_threshold(cost, w, g, bvh, sv, o->width, o->height);
 }

@@ -31,6 +31,7 @@
 #include "bvh.h"
 #include "cost_model.h"
 #include "grid.h"
+#include "shadow.h"
 #include "shadow_volumes.h"
 #include "tracer.h"
 #include "world.h"
@@ -93,11 +94,8 @@ typedef struct {
     int width, height;      /* the image */
     int threads;            /* for the build */
     int precision;          /* PlanePrecision of the planes */
-    double nth;             /* hst's N_th: >= 0 fixed, VOLUME_PLAN_NTH_AUTO or VOLUME_PLAN_NTH_PER_POINT */
+    NthSetting nth;         /* hst's N_th */
 } VolumePlanOptions;
-
-#define VOLUME_PLAN_NTH_AUTO (-1.0)
-#define VOLUME_PLAN_NTH_PER_POINT (-2.0)
 
 /* Plans, builds into sv and calibrates cost (eq. 7 included) the volumes
  * that pay; with VOLUMES_ALWAYS, every light's. On return sv holds at

@@ -1018,7 +1018,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     opt->height = 240;
     opt->quality = 9;
     opt->shadows = "hst";
-    opt->nth = NTH_AUTO;
+    opt->nth = (NthSetting){ NTH_AUTO, 0.0 };
     opt->pixel_coherence = 1;
     opt->tolerance = GRID_TOLERANCE;
     opt->initial_frame = opt->final_frame = 1;
@@ -1069,11 +1069,11 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             char *end;
             double n = strtod(v, &end);
             if (strcmp(v, "auto") == 0) {
-                opt->nth = NTH_AUTO;
+                opt->nth = (NthSetting){ NTH_AUTO, 0.0 };
             } else if (strcmp(v, "per-point") == 0) {
-                opt->nth = NTH_PER_POINT;
+                opt->nth = (NthSetting){ NTH_PER_POINT, 0.0 };
             } else if (end != v && *end == '\0' && n >= 0.0 && n <= 1e9) {
-                opt->nth = n;
+                opt->nth = (NthSetting){ NTH_FIXED, n };
             } else {
                 snprintf(err, (size_t)errlen, "--nth '%s': expected auto, per-point or a number from 0 to 1e9", v);
                 return -1;

@@ -5,6 +5,8 @@
 
 #include <stdio.h>
 
+#include "shadow.h"
+
 /* Exit statuses, documented in the man page. */
 enum {
     EXIT_OK = 0,
@@ -14,8 +16,6 @@ enum {
 };
 
 #define MAX_INCLUDE_PATHS 32
-#define NTH_AUTO (-1.0)
-#define NTH_PER_POINT (-2.0)
 
 /* Declare=NAME=VALUE: a float, or a string when string is not NULL. */
 typedef struct {
@@ -33,7 +33,7 @@ typedef struct {
     const char *shadows;          /* method name */
     double tolerance;             /* relative margin of the shadow tests (--tolerance) */
     int plane_precision;          /* PlanePrecision of the shadow-polygon planes (--plane-precision) */
-    double nth;                   /* hst's N_th; NTH_AUTO: eq. (7) once per scene; NTH_PER_POINT */
+    NthSetting nth;               /* hst's N_th (--nth: a number, auto or per-point) */
     int verify_shadows;        /* 1 --verify-shadows, 2 --verify-reference */
     int pixel_coherence;          /* hst: counts from the neighbouring pixel (--pixel-coherence) */
     int volumes_always;           /* hst: build every light's volumes (--volumes always); 0: auto */

@@ -204,16 +204,17 @@ static void *worker_main(void *arg)
     memset(&loop, 0, sizeof loop);
     const RenderOptions *opt = job->opt;
     ctx.quality = opt->quality;
-    if (shadow_context_init(&ctx.shadow, job->world, job->grid, opt->shadow, opt->volumes)) {
+    const ShadowPrepared *shadows = opt->shadows;
+    if (shadow_context_init(&ctx.shadow, job->world, job->grid, shadows->decider, shadows->volumes)) {
         shadow_context_free(&ctx.shadow);
         atomic_store(&job->failed, 1);
         return NULL;
     }
     tracer_use_bvh(&ctx.shadow.tracer, opt->bvh);
-    ctx.shadow.embree = opt->embree;
+    ctx.shadow.embree = shadows->embree;
     PixelCoherence coherence;
     memset(&coherence, 0, sizeof coherence);
-    if (opt->pixel_coherence && opt->volumes && !opt->aa.method) {
+    if (opt->pixel_coherence && shadows->volumes && !opt->aa.method) {
         if (pixel_coherence_init(&coherence, job->world, job->grid)) {
             pixel_coherence_free(&coherence);
             shadow_context_free(&ctx.shadow);
@@ -225,7 +226,7 @@ static void *worker_main(void *arg)
     AovPixel aov;
     memset(&aov, 0, sizeof aov);
     if (opt->aov) {
-        if (aov_pixel_init(&aov, job->world->nlights, strcmp(opt->shadow->name, "none") == 0)) {
+        if (aov_pixel_init(&aov, job->world->nlights, shadows->decider->blind)) {
             aov_pixel_free(&aov);
             pixel_coherence_free(&coherence);
             shadow_context_free(&ctx.shadow);
@@ -236,8 +237,8 @@ static void *worker_main(void *arg)
     }
     ctx.shadow.verify = opt->verify;
     ctx.shadow.reference_eps = shadow_reference_eps(job->grid);
-    ctx.shadow.nth = opt->nth;
-    ctx.shadow.cost = opt->cost;
+    ctx.shadow.nth = shadows->nth;
+    ctx.shadow.cost = shadows->cost;
     double t0 = clock_thread_cpu();
     double last_report = 0.0;
     for (;;) {

@@ -28,12 +28,8 @@ typedef struct {
     int threads;              /* >= 1 */
     Antialias aa;             /* method 0: none (one camera ray through each pixel's centre) */
     Quality quality;
-    const ShadowMethod *shadow;
+    const ShadowPrepared *shadows; /* the shadow method, prepared (shadow_method_prepare) */
     const Bvh *bvh;           /* the polygon queries' hierarchy; NULL: the grid's walk */
-    const struct ShadowVolumes *volumes; /* when the method uses them */
-    const struct EmbreeScene *embree;    /* when the method is embree */
-    const struct CostModel *cost;        /* hst's per-point N_th */
-    double nth;               /* hst: N_th; negative: per point */
     int verify;               /* 1 --verify-shadows, 2 --verify-reference too */
     int pixel_coherence;      /* hst: count from the neighbouring pixel's hit */
     int progress;             /* print a progress line on stderr */

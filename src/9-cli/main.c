@@ -62,124 +62,98 @@ static char *default_output(const char *scene, const char *ext)
     return out;
 }
 
-/* What rank 0's volume plan chose, for the other ranks of a distributed
- * render: the plan's choices rest on timings, which differ between ranks,
- * and every rank must decide (and count, for the analysis channels) alike. */
+/* Everything one frame owns, released by frame_free (every release is
+ * safe on what was never made), and what its steps hand on. */
 typedef struct {
-    int have_volumes;
-    double nth;
-    CostModel cost;
-} VolumeChoice;
-
-/* Rank 0 sends, the others rebuild: the lights built, then the same ones
- * dropped, with the same planes, cost model and N_th. Returns 0, or -1 when
- * out of memory (on this rank). */
-static int share_volume_choices(ShadowVolumes *sv, CostModel *cost, double *nth, int *have_volumes, const World *w,
-                                Grid *g, const Vec3 *eye, int threads, int precision)
-{
-    VolumeChoice c;
-    memset(&c, 0, sizeof c);
-    int n = w->nlights;
-    int8_t *flags = calloc((size_t)(2 * n + 1), 1); /* per light: built, then dropped */
-    if (!flags)
-        return -1;
-    if (mpi_job_rank() == 0) {
-        c.have_volumes = *have_volumes;
-        c.nth = *nth;
-        c.cost = *cost;
-        for (int li = 0; *have_volumes && li < n; li++) {
-            flags[li] = !sv->light[li].not_wanted;
-            flags[n + li] = (int8_t)sv->light[li].dropped;
-        }
-    }
-    mpi_job_broadcast(&c, sizeof c);
-    mpi_job_broadcast(flags, (size_t)(2 * n));
-    int status = 0;
-    if (mpi_job_rank() != 0) {
-        *have_volumes = c.have_volumes;
-        *nth = c.nth;
-        *cost = c.cost;
-        if (c.have_volumes) {
-            /* the registrations pixel coherence reads (rank 0's plan made its own) */
-            status = grid_register(g, w, threads) || shadow_volumes_build(sv, w, g, eye, threads, flags) ||
-                     shadow_volumes_set_precision(sv, (PlanePrecision)precision);
-            for (int li = 0; status == 0 && li < n; li++)
-                if (flags[n + li])
-                    shadow_volumes_drop_light(sv, li);
-        }
-    }
-    free(flags);
-    return status ? -1 : 0;
-}
-
-/* One frame (or the still): parse, build, render and write `output`. wall0:
- * when the frame's work began. distributed: the frame's tiles are spread
- * over the MPI job's ranks (mpi_job.h), rank 0 writing. Returns the exit
- * status. */
-static int render_frame(int argc, char **argv, const Options *o, const ParseAnimation *anim, const char *output,
-                        const char *stats_json, double wall0, int distributed)
-{
-    /* Everything the render owns, released once at the end (every release
-     * is safe on what was never made). */
-    int status = EXIT_OK;
-    char err[1024];
-    ParseDeclare *declares = NULL;
-    ColourDisplay *colour = NULL;
-    Scene *scene = NULL;
+    ParseDeclare *declares;
+    ColourDisplay *colour;
+    Scene *scene;
     World world;
     Grid grid;
     Bvh bvh;
-    ShadowVolumes volumes;
-    VolumePlan plan;
-    EmbreeScene *embree = NULL;
-    CostModel cost;
+    ShadowPrepared shadows;
     AovImage aov;
     Provenance prov;
-    SceneHash scene_hash = { 0 };
-    RenderStats *per_rank = NULL;
-    MpiTileWaits *waits = NULL;
-    long *requests = NULL;
-    double *wait_seconds = NULL;
-    double *tile_seconds = NULL;
-    memset(&world, 0, sizeof world);
-    memset(&grid, 0, sizeof grid);
-    memset(&bvh, 0, sizeof bvh);
-    memset(&volumes, 0, sizeof volumes);
-    memset(&plan, 0, sizeof plan);
-    memset(&cost, 0, sizeof cost);
-    memset(&aov, 0, sizeof aov);
-    memset(&prov, 0, sizeof prov);
+    SceneHash scene_hash;
+    RenderStats *per_rank;
+    MpiTileWaits *waits;
+    long *requests;
+    double *wait_seconds;
+    double *tile_seconds;
+    StatsReport report;
+    RenderOptions ropt;
+    Image img;
+    int have_img;
+    int writes;            /* this process writes the image and the report */
+    int threads;
+    double working_gamma;
+    double preprocess_start;
+} Frame;
 
+static void frame_free(Frame *f)
+{
+    if (f->scene_hash.state == 1) { /* its thread joined on every way out */
+        uint64_t unused;
+        (void)scene_hash_finish(&f->scene_hash, &unused);
+    }
+    if (f->have_img)
+        image_free(&f->img);
+    free(f->per_rank);
+    free(f->waits);
+    free(f->requests);
+    free(f->wait_seconds);
+    free(f->tile_seconds);
+    provenance_free(&f->prov);
+    aov_image_free(&f->aov);
+    shadow_prepared_free(&f->shadows);
+    bvh_free(&f->bvh);
+    grid_free(&f->grid);
+    world_free(&f->world);
+    scene_free(f->scene);
+    colour_display_free(f->colour);
+    free(f->declares);
+}
+
+static int check_output(const Options *o, const char *output)
+{
     if (image_format_from_path(output) == IMAGE_FORMAT_UNKNOWN) {
         fprintf(stderr, "hstrace: '%s': unknown image format (use .exr, .png, .ppm, .tga, .bmp, .jpg or .hdr)\n", output);
-        status = EXIT_USAGE;
-        goto done;
+        return EXIT_USAGE;
     }
     if (o->aov && image_format_from_path(output) != IMAGE_FORMAT_EXR) {
         fprintf(stderr, "hstrace: --aov: '%s': analysis channels need an EXR output (-o FILE.exr)\n", output);
-        status = EXIT_USAGE;
-        goto done;
+        return EXIT_USAGE;
     }
+    return EXIT_OK;
+}
 
-    /* Colour management: OpenColorIO when an option or $OCIO asks for it,
-     * else POV-Ray's own encoding. Opened before any work, so that a bad
-     * config or name costs nothing. */
+/* Colour management: OpenColorIO when an option or $OCIO asks for it, else
+ * POV-Ray's own encoding. Opened before any work, so that a bad config or
+ * name costs nothing. */
+static int open_colour(Frame *f, const Options *o)
+{
+    char err[1024];
     ColourRequest creq = { o->ocio_config, o->display, o->view, o->colorspace };
-    if (colour_requested(&creq)) {
-        ColourStatus cs = colour_display_open(&creq, &colour, err, sizeof err);
-        int from_env_only = !o->ocio_config && !o->display && !o->view && !o->colorspace;
-        if (cs == COLOUR_ERR_UNAVAILABLE && from_env_only) {
-            /* $OCIO is set for every program of a user; one built without
-             * the library goes on as if it were not. */
-            if (o->warning_console)
-                fprintf(stderr, "hstrace: warning: $OCIO ignored: %s\n", err);
-        } else if (cs != COLOUR_OK) {
-            fprintf(stderr, "hstrace: %s\n", err);
-            status = cs == COLOUR_ERR_CONFIG ? EXIT_IO : EXIT_USAGE;
-            goto done;
-        }
+    if (!colour_requested(&creq))
+        return EXIT_OK;
+    ColourStatus cs = colour_display_open(&creq, &f->colour, err, sizeof err);
+    int from_env_only = !o->ocio_config && !o->display && !o->view && !o->colorspace;
+    if (cs == COLOUR_ERR_UNAVAILABLE && from_env_only) {
+        /* $OCIO is set for every program of a user; one built without the
+         * library goes on as if it were not. */
+        if (o->warning_console)
+            fprintf(stderr, "hstrace: warning: $OCIO ignored: %s\n", err);
+    } else if (cs != COLOUR_OK) {
+        fprintf(stderr, "hstrace: %s\n", err);
+        return cs == COLOUR_ERR_CONFIG ? EXIT_IO : EXIT_USAGE;
     }
+    return EXIT_OK;
+}
 
+/* The scene file into its description, with the EXR header's hash of the
+ * file made beside the parse. */
+static int parse_scene(Frame *f, const Options *o, const ParseAnimation *anim, const char *output)
+{
     /* Include and image search: the current folder (POV-Ray looks there
      * first: exporters' scenes count on it), the including file's folder
      * (the parser's own rule), the user's folders, POV-Ray's when
@@ -212,256 +186,223 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     popt.max_macro_calls = o->max_macro_calls;
     popt.max_repeated_tokens = o->max_repeated_tokens;
     /* Declare=NAME=VALUE: the options' list has the parser's shape. */
-    declares = o->ndeclares ? calloc((size_t)o->ndeclares, sizeof *declares) : NULL;
-    for (int i = 0; declares && i < o->ndeclares; i++)
-        declares[i] = (ParseDeclare){ o->declares[i].name, o->declares[i].number, o->declares[i].string };
-    if (o->ndeclares && !declares) {
+    f->declares = o->ndeclares ? calloc((size_t)o->ndeclares, sizeof *f->declares) : NULL;
+    if (o->ndeclares && !f->declares) {
         fprintf(stderr, "hstrace: out of memory\n");
-        status = EXIT_IO;
-        goto done;
+        return EXIT_IO;
     }
-    popt.declares = declares;
+    for (int i = 0; i < o->ndeclares; i++)
+        f->declares[i] = (ParseDeclare){ o->declares[i].name, o->declares[i].number, o->declares[i].string };
+    popt.declares = f->declares;
     popt.ndeclares = o->ndeclares;
     popt.animation = anim;
-    /* Each rank takes its share of this machine's cores. */
-    int threads = o->threads > 0 ? o->threads : render_default_threads();
-    if (o->threads <= 0 && mpi_job_size() > 1)
-        threads = threads / mpi_job_local_size() > 1 ? threads / mpi_job_local_size() : 1;
-    popt.threads = threads;
+    popt.threads = f->threads;
 
-    StatsReport report;
-    memset(&report, 0, sizeof report);
-    report.scene = o->scene;
-    report.shadow_method = o->shadows;
-    report.width = o->width;
-    report.height = o->height;
-
-    /* The EXR header's hash of the scene file, beside the parse. */
-    int spare_core = threads > 1;
-    scene_hash_start(&scene_hash, o->scene, spare_core && image_format_from_path(output) == IMAGE_FORMAT_EXR);
+    int spare_core = f->threads > 1;
+    scene_hash_start(&f->scene_hash, o->scene, spare_core && image_format_from_path(output) == IMAGE_FORMAT_EXR);
     double t = clock_wall();
     ParseError perr;
-    scene = parse_scene_file(o->scene, &popt, &perr);
-    if (!scene) {
+    f->scene = parse_scene_file(o->scene, &popt, &perr);
+    if (!f->scene) {
         if (perr.line > 0)
             fprintf(stderr, "%s:%d:%d: %s\n", perr.file, perr.line, perr.column, perr.message);
         else
             fprintf(stderr, "%s: %s\n", perr.file[0] ? perr.file : o->scene, perr.message);
         fputs(perr.notes, stderr);
-        status = perr.is_io ? EXIT_IO : EXIT_SCENE;
-        goto done;
+        return perr.is_io ? EXIT_IO : EXIT_SCENE;
     }
-    report.parse_seconds = clock_wall() - t;
-    report.napproximations = scene->napproximations;
-    report.approximations = scene->approximations;
+    f->report.parse_seconds = clock_wall() - t;
+    f->report.napproximations = f->scene->napproximations;
+    f->report.approximations = f->scene->approximations;
     /* Like POV-Ray's warnings: the image is not what POV-Ray would make. */
-    for (int i = 0; o->warning_console && i < scene->napproximations; i++) {
-        const SceneApproximation *a = &scene->approximations[i];
+    for (int i = 0; o->warning_console && i < f->scene->napproximations; i++) {
+        const SceneApproximation *a = &f->scene->approximations[i];
         fprintf(stderr, "%s:%d:%d: warning: %s approximated: %s (%d place%s; --strict refuses it)\n", a->first.file,
                 a->first.line, a->first.column, a->what, approx_kind_effect(a->kind), a->count,
                 a->count == 1 ? "" : "s");
     }
+    return EXIT_OK;
+}
 
-    t = clock_wall();
-    double working_gamma = scene_working_gamma(scene);
+/* The world's polygons, the grid's box and the hierarchy. */
+static int build_world(Frame *f, const Options *o)
+{
+    f->preprocess_start = clock_wall();
+    f->working_gamma = scene_working_gamma(f->scene);
     WorldError werr;
-    if (world_build_threads(&world, scene, threads, &werr)) {
+    if (world_build_threads(&f->world, f->scene, f->threads, &werr)) {
         fprintf(stderr, "hstrace: %s\n", werr.message);
-        status = EXIT_IO;
-        goto done;
+        return EXIT_IO;
     }
-    world.alpha_background = o->output_alpha;
+    f->world.alpha_background = o->output_alpha;
     /* The world has its own copy of the meshes now: their lists go before
      * the hierarchy's build, where the memory peaks. */
-    scene_release_mesh_lists(scene);
-    report.world_seconds = clock_wall() - t;
+    scene_release_mesh_lists(f->scene);
+    f->report.world_seconds = clock_wall() - f->preprocess_start;
     /* The grid box holds the camera (depth counts start there) and the part
      * of every infinite plane under the geometry, where shadows fall. */
     Vec3 extra[1 + 8 * 16];
-    int nextra = grid_extra_points(&world, extra, (int)(sizeof extra / sizeof extra[0]));
+    int nextra = grid_extra_points(&f->world, extra, (int)(sizeof extra / sizeof extra[0]));
     /* The polygons are registered in its cells only if shadow volumes are
      * built (volume_plan_build): every other query goes through the hierarchy. */
-    grid_build_box(&grid, &world, o->grid[0] ? o->grid : NULL, extra, nextra);
-    grid_set_tolerance(&grid, o->tolerance);
+    grid_build_box(&f->grid, &f->world, o->grid[0] ? o->grid : NULL, extra, nextra);
+    grid_set_tolerance(&f->grid, o->tolerance);
     double t_hierarchy = clock_wall();
-    int bvh_failed = bvh_build(&bvh, &world, threads);
-    report.hierarchy_seconds = clock_wall() - t_hierarchy;
+    int bvh_failed = bvh_build(&f->bvh, &f->world, f->threads);
+    f->report.hierarchy_seconds = clock_wall() - t_hierarchy;
     if (bvh_failed) {
         fprintf(stderr, "hstrace: out of memory while building the hierarchy\n");
-        status = EXIT_IO;
-        goto done;
+        return EXIT_IO;
     }
-    const ShadowMethod *method = shadow_method_find(o->shadows);
-    int have_volumes = 0;
-    /* N_th as the render will use it (auto: measured with the volumes). */
-    double nth = o->nth == NTH_PER_POINT ? -1.0 : o->nth == NTH_AUTO ? 0.0 : o->nth;
-    const Vec3 *plan_eye = world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &world.camera.location;
-    if (method->uses_volumes && o->quality >= 4 && (!distributed || mpi_job_rank() == 0)) {
-        /* hst builds only the volumes that pay (volume_plan.h); the pure
-         * volume method is the paper's baseline and builds them all. */
-        VolumePlanOptions po;
-        po.mode = method->test == shadow_hst_test && !o->volumes_always ? VOLUMES_AUTO : VOLUMES_ALWAYS;
-        po.width = o->width;
-        po.height = o->height;
-        po.threads = threads;
-        po.precision = o->plane_precision;
-        po.nth = o->nth == NTH_PER_POINT ? VOLUME_PLAN_NTH_PER_POINT : o->nth == NTH_AUTO ? VOLUME_PLAN_NTH_AUTO : o->nth;
-        double t_plan = clock_wall();
-        int plan_failed = volume_plan_build(&plan, &volumes, &cost, &world, &grid, &bvh, plan_eye, &po);
-        report.plan_seconds = clock_wall() - t_plan;
-        if (plan_failed) {
-            fprintf(stderr, "hstrace: out of memory while building shadow volumes\n");
-            status = EXIT_IO;
-            goto done;
-        }
-        report.plan = &plan;
-        report.volumes_seconds = plan.build_seconds;
-        have_volumes = volumes.light != NULL;
-        if (have_volumes) {
-            report.volumes = &volumes;
-            report.cost = &cost;
-            if (o->nth == NTH_AUTO)
-                nth = cost.nth_ray;
-        }
-    }
-    if (distributed && method->uses_volumes && o->quality >= 4) {
-        if (share_volume_choices(&volumes, &cost, &nth, &have_volumes, &world, &grid, plan_eye, threads,
-                                 o->plane_precision)) {
-            fprintf(stderr, "hstrace: rank %d: out of memory while building shadow volumes\n", mpi_job_rank());
-            mpi_job_abort(EXIT_IO);
-            status = EXIT_IO;
-            goto done;
-        }
-        if (have_volumes) {
-            report.volumes = &volumes;
-            report.cost = &cost;
-        }
-    }
-    if (method->test == shadow_embree_test && o->quality >= 4) {
-        embree = shadow_embree_build(&world, threads, err, sizeof err);
-        if (!embree) {
+    return EXIT_OK;
+}
+
+/* The shadow method's own preparation (shadow_method_prepare); across an
+ * MPI job's ranks rank 0 decides for all. */
+static int prepare_shadows(Frame *f, const Options *o, int distributed)
+{
+    ShadowSetup setup = { &f->world, &f->grid, &f->bvh,
+                          f->world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &f->world.camera.location,
+                          o->width, o->height, f->threads, o->quality >= 4, o->volumes_always, o->nth,
+                          o->plane_precision, distributed ? mpi_job_broadcast : NULL, mpi_job_rank() == 0 };
+    char err[1024];
+    if (shadow_method_prepare(shadow_method_find(o->shadows), &setup, &f->shadows, err, sizeof err)) {
+        if (distributed)
+            fprintf(stderr, "hstrace: rank %d: %s\n", mpi_job_rank(), err);
+        else
             fprintf(stderr, "hstrace: %s\n", err);
-            status = EXIT_IO;
-            goto done;
-        }
-        report.embree = embree;
+        if (distributed)
+            mpi_job_abort(EXIT_IO);
+        return EXIT_IO;
     }
-    report.preprocess_seconds = clock_wall() - t;
-    memcpy(report.grid, grid.n, sizeof report.grid);
-    report.grid_registrations = grid.nitems;
-    report.grid_registered = grid_registered(&grid);
-    report.npolygons = world.npolygons;
-    report.ndegenerate = world.ndegenerate;
-    report.nplanes = world.nplanes;
-    report.nlights = world.nlights;
+    StatsReport *r = &f->report;
+    r->plan = f->shadows.plan;
+    r->plan_seconds = f->shadows.plan_seconds;
+    r->volumes_seconds = f->shadows.volumes_seconds;
+    r->volumes = f->shadows.volumes;
+    r->cost = f->shadows.volumes ? f->shadows.cost : NULL;
+    r->embree = f->shadows.embree;
+    r->nth = f->shadows.nth;
+    r->nth_mode = f->shadows.nth_mode;
+    r->preprocess_seconds = clock_wall() - f->preprocess_start;
+    memcpy(r->grid, f->grid.n, sizeof r->grid);
+    r->grid_registrations = f->grid.nitems;
+    r->grid_registered = grid_registered(&f->grid);
+    r->npolygons = f->world.npolygons;
+    r->ndegenerate = f->world.ndegenerate;
+    r->nplanes = f->world.nplanes;
+    r->nlights = f->world.nlights;
+    return EXIT_OK;
+}
 
-    RenderOptions ropt;
-    memset(&ropt, 0, sizeof ropt);
-    ropt.width = o->width;
-    ropt.height = o->height;
+/* The render loop's options, from the command line's and what the steps
+ * before made. */
+static int set_render_options(Frame *f, const Options *o, int distributed, const char *stats_json)
+{
+    RenderOptions *ropt = &f->ropt;
+    memset(ropt, 0, sizeof *ropt);
+    ropt->width = o->width;
+    ropt->height = o->height;
     if (o->antialias_on) {
-        ropt.aa.method = o->aa_method;
-        ropt.aa.threshold = o->aa_threshold < 1.0 ? o->aa_threshold : 1.0; /* clipped to 1, as POV-Ray does */
-        ropt.aa.depth = o->aa_depth;
-        ropt.aa.gamma = o->aa_gamma;
-        ropt.aa.work_gamma = working_gamma;
-        ropt.aa.jitter = o->jitter_on ? (o->jitter_amount < 1.0 ? o->jitter_amount : 1.0) : 0.0; /* clipped, as POV-Ray */
+        ropt->aa.method = o->aa_method;
+        ropt->aa.threshold = o->aa_threshold < 1.0 ? o->aa_threshold : 1.0; /* clipped to 1, as POV-Ray does */
+        ropt->aa.depth = o->aa_depth;
+        ropt->aa.gamma = o->aa_gamma;
+        ropt->aa.work_gamma = f->working_gamma;
+        ropt->aa.jitter = o->jitter_on ? (o->jitter_amount < 1.0 ? o->jitter_amount : 1.0) : 0.0; /* clipped, as POV-Ray */
     }
-    ropt.x0 = o->area_x0;
-    ropt.y0 = o->area_y0;
-    ropt.x1 = o->area_x1;
-    ropt.y1 = o->area_y1;
-    ropt.threads = threads;
-    ropt.quality = quality_from_level(o->quality);
-    /* hst with no light whose volumes pay (and no area light for its
-     * beams) is the shadow ray alone: render it as the cache method does,
-     * the shadow ray with the light's last opaque blocker tried first
-     * (exact: shadow_cache.c), without hst's per-decision wrapper. The
-     * decisions and images are the same; the analysis codes show the
-     * cache's hits (on desk.pov 1.46 of the 1.54 million blocked rays,
-     * each one polygon test instead of a walk through the hierarchy). */
-    ropt.shadow = method->uses_volumes && !have_volumes && method->test == shadow_hst_test && !world_has_beams(&world)
-                      ? shadow_method_find("cache")
-                      : method;
-    ropt.bvh = &bvh;
-    ropt.volumes = have_volumes ? &volumes : NULL;
-    ropt.embree = embree;
-    ropt.cost = &cost;
-    ropt.verify = o->verify_shadows;
-    ropt.pixel_coherence = o->pixel_coherence;
-    ropt.nth = nth;
-    report.nth = ropt.nth;
-    report.nth_mode = o->nth == NTH_PER_POINT ? "per-point" : o->nth == NTH_AUTO ? "auto (C_ray / (C_s + C_g))" : "fixed";
-    report.verify = o->verify_shadows;
+    ropt->x0 = o->area_x0;
+    ropt->y0 = o->area_y0;
+    ropt->x1 = o->area_x1;
+    ropt->y1 = o->area_y1;
+    ropt->threads = f->threads;
+    ropt->quality = quality_from_level(o->quality);
+    ropt->shadows = &f->shadows;
+    ropt->bvh = &f->bvh;
+    ropt->verify = o->verify_shadows;
+    ropt->pixel_coherence = o->pixel_coherence;
     /* A distributed render's progress is no one rank's to tell. */
-    ropt.progress = o->render_console && isatty(STDERR_FILENO) && !distributed;
-    report.threads = ropt.threads;
-
+    ropt->progress = o->render_console && isatty(STDERR_FILENO) && !distributed;
+    f->report.verify = o->verify_shadows;
+    f->report.threads = ropt->threads;
     if (o->aov) {
-        if (aov_image_alloc(&aov, o->aov, o->width, o->height, world.nlights, o->exr_float)) {
+        if (aov_image_alloc(&f->aov, o->aov, o->width, o->height, f->world.nlights, o->exr_float)) {
             fprintf(stderr, "hstrace: out of memory for the analysis channels\n");
-            status = EXIT_IO;
-            goto done;
+            return EXIT_IO;
         }
-        ropt.aov = &aov;
+        ropt->aov = &f->aov;
     }
-
     /* Each tile's time, for the JSON's load balance. */
     TileGrid tile_grid;
-    render_tile_grid(&ropt, &tile_grid);
+    render_tile_grid(ropt, &tile_grid);
     if (stats_json) {
-        tile_seconds = calloc((size_t)(tile_grid.ntiles > 0 ? tile_grid.ntiles : 1), sizeof *tile_seconds);
-        ropt.tile_seconds = tile_seconds;
-        report.ntiles = tile_grid.ntiles;
-        report.tile_seconds = tile_seconds;
+        f->tile_seconds = calloc((size_t)(tile_grid.ntiles > 0 ? tile_grid.ntiles : 1), sizeof *f->tile_seconds);
+        ropt->tile_seconds = f->tile_seconds;
+        f->report.ntiles = tile_grid.ntiles;
+        f->report.tile_seconds = f->tile_seconds;
     }
-    Image img;
-    if (distributed) {
-        /* Tiles from rank 0, the pixels and counters back to it. */
-        MpiTiles tiles;
-        TileGrid tg;
-        render_tile_grid(&ropt, &tg);
-        if (mpi_job_rank() == 0) {
-            per_rank = calloc((size_t)mpi_job_size(), sizeof *per_rank);
-            waits = calloc((size_t)mpi_job_size(), sizeof *waits);
-            requests = calloc((size_t)mpi_job_size(), sizeof *requests);
-            wait_seconds = calloc((size_t)mpi_job_size(), sizeof *wait_seconds);
+    return EXIT_OK;
+}
+
+/* The render: in this process, or with the tiles from rank 0 and the
+ * pixels and counters back to it (only rank 0 then writes). */
+static int render(Frame *f, const Options *o, int distributed)
+{
+    RenderOptions *ropt = &f->ropt;
+    f->writes = 1;
+    if (!distributed) {
+        if (render_image(&f->world, &f->grid, ropt, &f->img, &f->report.render)) {
+            fprintf(stderr, "hstrace: out of memory while rendering\n");
+            return EXIT_IO;
         }
-        if (mpi_tiles_begin(&tiles, &tg, threads)) {
-            fprintf(stderr, "hstrace: out of memory for the tiles of a distributed render\n");
-            status = EXIT_IO;
-            goto done;
-        }
-        ropt.tiles = &tiles.source;
-        int rc = render_image(&world, &grid, &ropt, &img, &report.render);
-        double gather = clock_wall();
-        if (mpi_tiles_end(&tiles, &tg, rc, &img, o->aov ? &aov : NULL, &report.render, per_rank, waits, tile_seconds)) {
-            fprintf(stderr, "hstrace: a rank ran out of memory while rendering\n");
-            if (rc == 0)
-                image_free(&img);
-            status = EXIT_IO;
-            goto done;
-        }
-        report.gather_seconds = clock_wall() - gather;
-        report.ranks = mpi_job_size();
-        report.rank_render = per_rank;
-        for (int r = 0; waits && requests && wait_seconds && r < mpi_job_size(); r++) {
-            requests[r] = waits[r].requests;
-            wait_seconds[r] = waits[r].wait_seconds;
-        }
-        report.rank_requests = requests;
-        report.rank_wait_seconds = wait_seconds;
-        if (mpi_job_rank() != 0) { /* rank 0 writes the image and the report */
-            image_free(&img);
-            goto done;
-        }
-    } else if (render_image(&world, &grid, &ropt, &img, &report.render)) {
-        fprintf(stderr, "hstrace: out of memory while rendering\n");
-        status = EXIT_IO;
-        goto done;
+        f->have_img = 1;
+        return EXIT_OK;
     }
-    t = clock_wall();
-    image_decode_working_gamma(&img, working_gamma);
+    const int ranks = mpi_job_size();
+    MpiTiles tiles;
+    TileGrid tg;
+    render_tile_grid(ropt, &tg);
+    if (mpi_job_rank() == 0) {
+        f->per_rank = calloc((size_t)ranks, sizeof *f->per_rank);
+        f->waits = calloc((size_t)ranks, sizeof *f->waits);
+        f->requests = calloc((size_t)ranks, sizeof *f->requests);
+        f->wait_seconds = calloc((size_t)ranks, sizeof *f->wait_seconds);
+    }
+    if (mpi_tiles_begin(&tiles, &tg, f->threads)) {
+        fprintf(stderr, "hstrace: out of memory for the tiles of a distributed render\n");
+        return EXIT_IO;
+    }
+    ropt->tiles = &tiles.source;
+    int rc = render_image(&f->world, &f->grid, ropt, &f->img, &f->report.render);
+    f->have_img = rc == 0;
+    double gather = clock_wall();
+    if (mpi_tiles_end(&tiles, &tg, rc, &f->img, o->aov ? &f->aov : NULL, &f->report.render, f->per_rank, f->waits,
+                      f->tile_seconds)) {
+        fprintf(stderr, "hstrace: a rank ran out of memory while rendering\n");
+        return EXIT_IO;
+    }
+    StatsReport *r = &f->report;
+    r->gather_seconds = clock_wall() - gather;
+    r->ranks = ranks;
+    r->rank_render = f->per_rank;
+    for (int k = 0; f->waits && f->requests && f->wait_seconds && k < ranks; k++) {
+        f->requests[k] = f->waits[k].requests;
+        f->wait_seconds[k] = f->waits[k].wait_seconds;
+    }
+    r->rank_requests = f->requests;
+    r->rank_wait_seconds = f->wait_seconds;
+    f->writes = mpi_job_rank() == 0;
+    return EXIT_OK;
+}
+
+/* The image into `output`, with the EXR header's provenance. */
+static int write_image(Frame *f, int argc, char **argv, const Options *o, const ParseAnimation *anim,
+                       const char *output, double wall0)
+{
+    int status = EXIT_OK;
+    char err[1024];
+    double t = clock_wall();
+    image_decode_working_gamma(&f->img, f->working_gamma);
     ImageWriteOptions wopt;
     memset(&wopt, 0, sizeof wopt);
     wopt.exr_float = o->exr_float;
@@ -471,66 +412,91 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     wopt.jpeg_quality = o->jpeg_quality;
     wopt.software = "hstrace " PACKAGE_VERSION;
     wopt.display_gamma = 0.0; /* sRGB, as POV-Ray 3.7 writes assumed_gamma 1 scenes */
-    wopt.display = colour;    /* or OpenColorIO's display/view transform */
-    if (colour != NULL) {
-        wopt.have_chromaticities = colour_display_chromaticities(colour, wopt.chromaticities) == 0;
+    wopt.display = f->colour; /* or OpenColorIO's display/view transform */
+    if (f->colour != NULL) {
+        wopt.have_chromaticities = colour_display_chromaticities(f->colour, wopt.chromaticities) == 0;
     } else {
         wopt.have_chromaticities = 1;
         memcpy(wopt.chromaticities, colour_rec709_chromaticities, sizeof wopt.chromaticities);
     }
-    wopt.channels = aov.channels;
-    wopt.nchannels = aov.nchannels;
-    report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */
+    wopt.channels = f->aov.channels;
+    wopt.nchannels = f->aov.nchannels;
+    f->report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */
     if (image_format_from_path(output) == IMAGE_FORMAT_EXR) {
-        if (provenance_build(&prov, argc, argv, o, anim, &report, &scene_hash)) {
+        if (provenance_build(&f->prov, argc, argv, o, anim, &f->report, &f->scene_hash)) {
             fprintf(stderr, "hstrace: out of memory\n");
             status = EXIT_IO;
         }
-        wopt.attributes = prov.attr;
-        wopt.nattributes = prov.n;
+        wopt.attributes = f->prov.attr;
+        wopt.nattributes = f->prov.n;
     }
-    if (status == EXIT_OK && !o->no_output && image_write(output, &img, &wopt, err, sizeof err)) {
+    if (status == EXIT_OK && !o->no_output && image_write(output, &f->img, &wopt, err, sizeof err)) {
         fprintf(stderr, "hstrace: %s\n", err);
         status = EXIT_IO;
     }
-    report.output_seconds = clock_wall() - t;
-    image_free(&img);
-    report.wall_seconds = clock_wall() - wall0;
-    if (status == EXIT_OK && o->stats && o->statistics_console) {
-        stats_print(stderr, &report);
-        if (colour != NULL)
+    f->report.output_seconds = clock_wall() - t;
+    image_free(&f->img);
+    f->have_img = 0;
+    f->report.wall_seconds = clock_wall() - wall0;
+    return status;
+}
+
+/* --stats on the standard error, --stats-json into its file. */
+static int report(const Frame *f, const Options *o, const char *stats_json)
+{
+    if (o->stats && o->statistics_console) {
+        stats_print(stderr, &f->report);
+        if (f->colour != NULL)
             fprintf(stderr, "colour: %s, config '%s', display '%s', view '%s', working space '%s'\n",
-                    colour_ocio_version(), colour_display_config(colour), colour_display_name(colour),
-                    colour_display_view(colour), colour_display_working_space(colour));
+                    colour_ocio_version(), colour_display_config(f->colour), colour_display_name(f->colour),
+                    colour_display_view(f->colour), colour_display_working_space(f->colour));
         else
             fprintf(stderr, "colour: POV-Ray's sRGB encoding (no OpenColorIO config asked for)\n");
     }
-    if (status == EXIT_OK && stats_json && stats_write_json(stats_json, &report, err, sizeof err)) {
+    char err[1024];
+    if (stats_json && stats_write_json(stats_json, &f->report, err, sizeof err)) {
         fprintf(stderr, "hstrace: %s\n", err);
-        status = EXIT_IO;
+        return EXIT_IO;
     }
+    return EXIT_OK;
+}
 
-done:
-    if (scene_hash.state == 1) { /* its thread joined on every way out */
-        uint64_t unused;
-        (void)scene_hash_finish(&scene_hash, &unused);
-    }
-    free(per_rank);
-    free(waits);
-    free(requests);
-    free(wait_seconds);
-    free(tile_seconds);
-    provenance_free(&prov);
-    aov_image_free(&aov);
-    shadow_volumes_free(&volumes);
-    volume_plan_free(&plan);
-    shadow_embree_free(embree);
-    bvh_free(&bvh);
-    grid_free(&grid);
-    world_free(&world);
-    scene_free(scene);
-    colour_display_free(colour);
-    free(declares);
+/* One frame (or the still): parse, build, prepare the shadow method,
+ * render, write `output` and report. wall0: when the frame's work began.
+ * distributed: the frame's tiles are spread over the MPI job's ranks
+ * (mpi_job.h), rank 0 writing. Returns the exit status. */
+static int render_frame(int argc, char **argv, const Options *o, const ParseAnimation *anim, const char *output,
+                        const char *stats_json, double wall0, int distributed)
+{
+    Frame f;
+    memset(&f, 0, sizeof f);
+    /* Each rank takes its share of this machine's cores. */
+    f.threads = o->threads > 0 ? o->threads : render_default_threads();
+    if (o->threads <= 0 && mpi_job_size() > 1)
+        f.threads = f.threads / mpi_job_local_size() > 1 ? f.threads / mpi_job_local_size() : 1;
+    f.report.scene = o->scene;
+    f.report.shadow_method = o->shadows;
+    f.report.width = o->width;
+    f.report.height = o->height;
+
+    int status = check_output(o, output);
+    if (status == EXIT_OK)
+        status = open_colour(&f, o);
+    if (status == EXIT_OK)
+        status = parse_scene(&f, o, anim, output);
+    if (status == EXIT_OK)
+        status = build_world(&f, o);
+    if (status == EXIT_OK)
+        status = prepare_shadows(&f, o, distributed);
+    if (status == EXIT_OK)
+        status = set_render_options(&f, o, distributed, stats_json);
+    if (status == EXIT_OK)
+        status = render(&f, o, distributed);
+    if (status == EXIT_OK && f.writes)
+        status = write_image(&f, argc, argv, o, anim, output, wall0);
+    if (status == EXIT_OK && f.writes)
+        status = report(&f, o, stats_json);
+    frame_free(&f);
     return status;
 }
 

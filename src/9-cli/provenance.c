@@ -80,12 +80,12 @@ static char *resolved_options(const Options *opt, const ParseAnimation *anim, co
 {
     char nth[64], aov[64] = "", tolerance[32];
     shortest(tolerance, sizeof tolerance, opt->tolerance);
-    if (opt->nth == NTH_AUTO)
+    if (opt->nth.mode == NTH_AUTO)
         snprintf(nth, sizeof nth, "auto");
-    else if (opt->nth == NTH_PER_POINT)
+    else if (opt->nth.mode == NTH_PER_POINT)
         snprintf(nth, sizeof nth, "per-point");
     else
-        shortest(nth, sizeof nth, opt->nth);
+        shortest(nth, sizeof nth, opt->nth.value);
     for (int g = 0; g < AOV_NGROUPS; g++)
         if (opt->aov & (1u << g))
             snprintf(aov + strlen(aov), sizeof aov - strlen(aov), "%s%s", aov[0] ? "," : "", aov_group_list[g]);

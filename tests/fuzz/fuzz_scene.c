@@ -61,12 +61,17 @@ static void render_tiny(const Scene *scene)
         ropt.threads = 1;
         Quality q = { 1, 1, 1, 0, 1, 1, 1 }; /* +Q9, normals and area lights too */
         ropt.quality = q;
-        ropt.shadow = shadow_method_find("hst");
+        /* hst with every light's volumes, as --volumes always prepares it
+         * but without the plan's timings (which would make runs differ). */
+        ShadowPrepared prepared;
+        memset(&prepared, 0, sizeof prepared);
+        prepared.decider = shadow_method_find("hst");
+        prepared.volumes = &volumes;
+        prepared.cost = &cost;
+        prepared.nth = cost.nth;
+        ropt.shadows = &prepared;
         ropt.bvh = &bvh;
-        ropt.volumes = &volumes;
-        ropt.cost = &cost;
         ropt.pixel_coherence = 1;
-        ropt.nth = cost.nth;
         Image img;
         RenderStats stats;
         if (render_image(&world, &grid, &ropt, &img, &stats) == 0)
@@ -76,7 +81,7 @@ static void render_tiny(const Scene *scene)
     /* The cost model's plan of which volumes pay: its pilot, its estimate
      * on a sample of the polygons, and whatever it builds. */
     VolumePlan plan;
-    VolumePlanOptions po = { VOLUMES_AUTO, 4, 3, 1, 0, VOLUME_PLAN_NTH_AUTO };
+    VolumePlanOptions po = { VOLUMES_AUTO, 4, 3, 1, 0, { NTH_AUTO, 0.0 } };
     (void)volume_plan_build(&plan, &volumes, &cost, &world, &grid, &bvh, eye, &po);
     volume_plan_free(&plan);
     shadow_volumes_free(&volumes);
