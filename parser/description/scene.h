@@ -110,7 +110,13 @@ typedef struct {
     int ncolours;
     float palette[256][4];
     unsigned char *index;
+    /* The values as stored, in no colour space: not to be taken to the
+     * working gamma (POV-Ray 3.7's PPM and PGM that nothing told a gamma) */
+    int as_stored;
 } LoadedPicture;
+
+/* ParseOptions.load_image's gammas: what the file names, else its type's */
+#define IMAGE_GAMMA_FILE_DEFAULT (-1.0)
 
 /* Turbulence of a pattern (POV-Ray's TURB warp): `turbulence` written in
  * the pigment (classic: marble, wood, agate and the spirals also add its
