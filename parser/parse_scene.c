@@ -962,6 +962,7 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     p->opts = opts ? opts : &no_options;
     p->err = err;
     p->version = 3.7;
+    p->version_given = p->opts->language_version_given;
     tvec_init(&p->controls, sizeof(Control));
     tvec_init(&p->objects, sizeof(SceneObject *));
     tvec_init(&p->lights, sizeof(SceneLight));

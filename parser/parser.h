@@ -56,6 +56,10 @@ typedef struct {
      * premultiplied, the others straight), else `premultiplied`'s value.
      * Returns 0, or -1 with the reason in err (the parser names the file
      * and the position). NULL: pictures are refused. */
+    /* +MV3.7: the language version is set (3.7) before the first line, as
+     * POV-Ray's kPOVAttrib_Version does: no #version needed, and the gamma
+     * mode stays as it starts (image_gamma.c). */
+    int language_version_given;
     int (*load_image)(void *user, const char *path, double decoding_gamma, double untagged_gamma, int premultiplied,
                       LoadedPicture *out, char *err, int errlen);
     void *load_image_user;

@@ -5,7 +5,8 @@
 # HDR), each lit by its ambient alone; the cases change only what decides
 # POV-Ray 3.7's reading of them: #version (given, absent, set by a
 # standard include), assumed_gamma (absent, 1, 2.2, given after the
-# pictures), and `gamma G` in the image_map. hstrace and POV-Ray render
+# pictures), `gamma G` in the image_map, and the options Display_Gamma and
+# +MV3.7. hstrace and POV-Ray render
 # each to EXR (linear light); the images must agree to RMSE 0.001. Skipped
 # without POV-Ray.
 #
@@ -69,7 +70,9 @@ pictures() {
     done
 }
 camera='camera { orthographic location <2.5, 1, -1> look_at <2.5, 1, 0> right 5 * x up 2 * y }'
-# case|before the pictures|the pictures' own gamma|after the pictures
+# case|before the pictures|the pictures' own gamma|after the pictures[|options
+# of both renderers: Display_Gamma is the output's gamma when the scene
+# turns gamma correction off; +MV3.7 sets the version before the first line]
 for case in \
     "v3.7-no-assumed-gamma|#version 3.7;||" \
     "v3.7-assumed-gamma-1|#version 3.7; global_settings { assumed_gamma 1.0 }||" \
@@ -85,17 +88,25 @@ for case in \
     "v3.7-gamma-1.8|#version 3.7; global_settings { assumed_gamma 1.0 }|gamma 1.8|" \
     "v3.7-gamma-srgb-assumed-2.2|#version 3.7; global_settings { assumed_gamma 2.2 }|gamma srgb|" \
     "v3.7-no-assumed-gamma-gamma-1.8|#version 3.7;|gamma 1.8|" \
-    "no-version-gamma-1.8||gamma 1.8|"; do
+    "no-version-gamma-1.8||gamma 1.8|" \
+    "no-version-Display_Gamma-1.8||||Display_Gamma=1.8" \
+    "v3.7-Display_Gamma-1.8|#version 3.7;|||Display_Gamma=1.8" \
+    "no-version-MV3.7||||+MV3.7" \
+    "no-version-MV3.7-assumed-gamma-1|global_settings { assumed_gamma 1.0 }|||+MV3.7"; do
     name=${case%%|*} rest=${case#*|}
     before=${rest%%|*} rest=${rest#*|}
-    own=${rest%%|*} after=${rest#*|}
+    own=${rest%%|*} rest=${rest#*|}
+    after=${rest%%|*} opts=${rest#*|}
+    [ "$opts" != "$rest" ] || opts=""
     { printf '%s\n%s\n' "$before" "$camera"; pictures "$own"; printf '%s\n' "$after"; } >"$work/$name.pov"
-    (cd "$work" && "$hstrace" "$name.pov" --width 80 --height 32 --threads 1 -A -o "$name.h.exr" >/dev/null 2>"$work/err")
+    # shellcheck disable=SC2086 # the options, one word each
+    (cd "$work" && "$hstrace" "$name.pov" --width 80 --height 32 --threads 1 -A $opts -o "$name.h.exr" >/dev/null 2>"$work/err")
     status=$?
     check "$name: hstrace renders" exited 0
     # POV-Ray 3.7 can time out starting its threads on a loaded machine: one retry
-    (cd "$work" && { "$povray" "+I$name.pov" "+O$name.p.exr" +W80 +H32 -A -D -GA +WT1 +FE >/dev/null 2>&1 ||
-        "$povray" "+I$name.pov" "+O$name.p.exr" +W80 +H32 -A -D -GA +WT1 +FE >/dev/null 2>&1; })
+    # shellcheck disable=SC2086
+    (cd "$work" && { "$povray" "+I$name.pov" "+O$name.p.exr" +W80 +H32 -A -D -GA +WT1 +FE $opts >/dev/null 2>&1 ||
+        "$povray" "+I$name.pov" "+O$name.p.exr" +W80 +H32 -A -D -GA +WT1 +FE $opts >/dev/null 2>&1; })
     check "$name: POV-Ray renders" [ -s "$work/$name.p.exr" ]
     "$hstrace" compare "$work/$name.p.exr" "$work/$name.h.exr" --json >"$work/cmp.json" 2>&1
     rmse=$(json_value rmse "$work/cmp.json")
