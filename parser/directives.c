@@ -599,6 +599,7 @@ static void handle_directive(Parser *p, const Token *hash)
             unget(p); /* POV-Ray wants the ';'; hstrace does not insist */
         p->version = v;
         p->version_given = 1;
+        version_seen(p);
         return;
     }
     case KW_debug: {

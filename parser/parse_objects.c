@@ -94,10 +94,7 @@ static void object_material(Parser *p, SceneObject *o, const Token *at)
         o->texture_bind = o->transform; /* as apply_texture: later transforms move it */
 }
 
-/* A texture seen at the surface's (u, v, 0), as an object's uv_mapping
- * makes every texture of it: its own transforms still place it, the
- * object's do not move it (POV-Ray's UV_FLAG). */
-static const SceneTexture *uv_mapped(Parser *p, const SceneTexture *tex)
+const SceneTexture *texture_uv_mapped(Parser *p, const SceneTexture *tex)
 {
     if (!tex || (tex->pigment.uv_mapping && (!tex->normal || tex->normal->kind == NORMAL_UV)))
         return tex;
@@ -116,11 +113,11 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         Token *t = next(p);
         if (is_punct(t, '}')) {
             if (uv) {
-                o->texture = uv_mapped(p, o->texture);
+                o->texture = texture_uv_mapped(p, o->texture);
                 if (o->kind == OBJ_MESH) {
                     const SceneTexture **list = palloc(p, sizeof *list * (size_t)(o->u.mesh.ntextures + 1));
                     for (int i = 0; i < o->u.mesh.ntextures; i++)
-                        list[i] = uv_mapped(p, o->u.mesh.textures[i]);
+                        list[i] = texture_uv_mapped(p, o->u.mesh.textures[i]);
                     o->u.mesh.textures = list;
                 }
             }

@@ -702,21 +702,20 @@ static void parse_global_settings(Parser *p)
         switch (t.type == TK_WORD ? t.kw : -1) {
         case KW_assumed_gamma: {
             Token *n = next(p);
-            if (is_kw(n, KW_srgb)) {
-                g->assumed_gamma = 0.0;
-                g->assumed_gamma_srgb = 1;
-            } else {
+            double gamma = 0.0; /* srgb */
+            if (!is_kw(n, KW_srgb)) {
                 unget(p);
                 Token at = *peek(p);
-                g->assumed_gamma = parse_float(p);
-                if (g->assumed_gamma <= 0.0)
+                gamma = parse_float(p);
+                if (gamma <= 0.0)
                     parse_fail(p, at.pos, "gamma value must be positive");
             }
-            if (!p->gamma_set) { /* POV-Ray ignores a second assumed_gamma */
-                p->gamma_set = 1;
-                p->assumed_gamma = g->assumed_gamma;
+            if (!p->gamma_set) { /* POV-Ray ignores a second assumed_gamma, value and all */
+                g->assumed_gamma = gamma;
+                g->assumed_gamma_srgb = gamma == 0.0;
                 g->has_assumed_gamma = 1;
             }
+            assumed_gamma_seen(p, gamma);
             break;
         }
         case KW_max_trace_level: {
@@ -963,6 +962,7 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     p->opts = opts ? opts : &no_options;
     p->err = err;
     p->version = 3.7;
+    p->version_given = p->opts->language_version_given;
     tvec_init(&p->controls, sizeof(Control));
     tvec_init(&p->objects, sizeof(SceneObject *));
     tvec_init(&p->lights, sizeof(SceneLight));

@@ -120,9 +120,10 @@ static _Noreturn void image_map_unsupported(Parser *p, const Token *at, const ch
 /* POV-Ray 3.7's Parse_Image, after the '{' of `block` (image_map,
  * bump_map): [type] "file" [gamma G|srgb] [premultiplied 0], the picture
  * read into pig (kind PIGMENT_IMAGE_MAP, not once, not interpolated).
- * gamma_correct: colours (image_map) are decoded by the file's gamma and
- * taken to the scene's working gamma; data (bump_map) are the file's
- * values as they are, or decoded by a `gamma` given, and left linear. */
+ * gamma_correct: colours (image_map), decoded and taken to the working
+ * gamma as POV-Ray does at this point of the scene (image_gamma.c); data
+ * (bump_map) are the file's values as they are, or decoded by a `gamma`
+ * given, and left linear. */
 SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct)
 {
     Token *t = next(p);
@@ -137,18 +138,20 @@ SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const c
     }
     Token name_at = *peek(p);
     char *name = parse_string(p);
-    double decoding_gamma = gamma_correct ? -1.0 : 1.0; /* -1: POV-Ray's default for the file's type */
-    int premultiplied = -1;                             /* -1: the format's own reading */
+    int override_given = 0;  /* `gamma G`: decodes the file whatever it says */
+    double override = 0.0;   /* 0: srgb */
+    int premultiplied = -1;  /* -1: the format's own reading */
     for (;;) {
         Token *o = next(p);
         if (is_kw(o, KW_gamma)) {
+            override_given = 1;
             if (is_kw(peek(p), KW_srgb)) {
                 (void)next(p);
-                decoding_gamma = 0.0;
+                override = 0.0;
             } else {
                 Token vt = *peek(p);
-                decoding_gamma = parse_float(p);
-                if (!(decoding_gamma > 0.0))
+                override = parse_float(p);
+                if (!(override > 0.0))
                     parse_fail(p, vt.pos, "gamma value must be positive.");
             }
         } else if (is_kw(o, KW_premultiplied)) {
@@ -166,7 +169,9 @@ SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const c
                    "include folders)", name);
     LoadedPicture pic;
     char why[256] = "";
-    if (p->opts->load_image(p->opts->load_image_user, path, decoding_gamma, premultiplied, &pic, why, (int)sizeof why)) {
+    const ImageGammaPlan plan = image_gamma_plan(p, gamma_correct, override_given, override);
+    if (p->opts->load_image(p->opts->load_image_user, path, plan.decode, plan.untagged, premultiplied, &pic, why,
+                            (int)sizeof why)) {
         free(pic.rgba);
         free(pic.index);
         parse_fail(p, name_at.pos, "%s: %s", block, why[0] ? why : "unreadable image");
@@ -193,7 +198,9 @@ SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const c
     if (pic.index)
         memcpy(index, pic.index, (size_t)w * (size_t)h);
     free(pic.index);
-    double wg = gamma_correct ? scene_working_gamma(p->scene) : 1.0;
+    /* the working gamma in effect when the picture is parsed (none before
+     * assumed_gamma: image_gamma.c) */
+    double wg = pic.as_stored ? 1.0 : plan.working;
     double sum[3] = { 0, 0, 0 };
     for (size_t i = 0; i < (size_t)w * (size_t)h; i++) {
         for (int c = 0; c < 3; c++) {
@@ -743,6 +750,7 @@ int pattern_modifier_item(Parser *p, Pigment *pig, const Token *t)
 static void pigment_items(Parser *p, Pigment *pig, int close)
 {
     int approximated = 0; /* the pattern is not evaluated: colour map at 0.5 */
+    int uv_here = 0;      /* this block said uv_mapping: what follows is seen at (u, v, 0) */
     for (;;) {
         Token *t = next(p);
         if (is_punct(t, close))
@@ -750,7 +758,12 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         Token at = *t;
         const Value *id = block_identifier(p, t, VAL_PIGMENT, "pigment");
         if (id) {
+            /* `uv_mapping DECLARED`: POV-Ray's uv_mapping pattern holds the
+             * declared pigment, evaluated at (u, v, 0) through the
+             * pigment's own transforms (Parse_Item_Into_Blend_List) */
             *pig = *id->pigment;
+            if (uv_here)
+                pig->uv_mapping = 1;
             approximated = 0;
             continue;
         }
@@ -762,7 +775,11 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             approximated = 0;
             continue;
         }
-        if (parse_transform_item(p, t, &pig->transform))
+        /* after a uv-mapped identifier, transforms are the uv_mapping
+         * pattern's own warps, which POV-Ray does not apply to its entry */
+        Transform wrapper_warp;
+        transform_identity(&wrapper_warp);
+        if (parse_transform_item(p, t, pig->uv_mapping && !uv_here ? &wrapper_warp : &pig->transform))
             continue;
         int kw = t->type == TK_WORD ? t->kw : -1;
         if (kw == KW_quick_color || kw == KW_quick_colour) {
@@ -821,6 +838,7 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             pig->approx = notes;
             transform_identity(&pig->transform);
             pig->uv_mapping = 1;
+            uv_here = 1;
             approximated = 0;
             continue;
         }
@@ -1377,6 +1395,21 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
             first = only_ids = 0;
             continue;
         case KW_no_bump_scale: continue;
+        case KW_uv_mapping: {
+            /* POV-Ray's Parse_Texture: with nothing before it, uv_mapping
+             * makes a uv_mapping pattern of a texture read from the rest of
+             * the block (Parse_Pattern, Parse_Item_Into_Blend_List); its
+             * pigment and normal are seen at the surface's (u, v, 0), placed
+             * by the transforms inside. After a pigment, an identifier or a
+             * transform POV-Ray stops at it ("'}' expected"). */
+            if (!first)
+                fail_expected(p, &here, "'}' (uv_mapping must come first in its texture)");
+            texture_items(p, tex, close);
+            const SceneTexture *mapped = texture_uv_mapped(p, tex);
+            if (mapped != tex)
+                *tex = *mapped;
+            return;
+        }
         case KW_texture: /* `texture { }` in a texture, or around a texture_map entry */
             fail_expected(p, &here, close == ']' ? "the items of a texture (without 'texture { }' around them) in a "
                                                    "texture_map entry"

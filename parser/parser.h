@@ -46,15 +46,22 @@ typedef struct {
     int threads;
     /* Reads the file of an image_map, bump_map or material_map (found
      * through the folders above) into *out (scene.h's LoadedPicture; the
-     * parser frees its rgba and index). decoding_gamma: -1 POV-Ray's
-     * default for the file's type (IMAGE_GAMMA_AS_POVRAY of image.h), 0
-     * sRGB (`gamma srgb`), else a power law (`gamma G`); linear formats
-     * (EXR, HDR) ignore it. premultiplied: -1 the format's own reading
-     * (EXR premultiplied, the others straight), else `premultiplied`'s
-     * value. Returns 0, or -1 with the reason in err (the parser names the
-     * file and the position). NULL: pictures are refused. */
-    int (*load_image)(void *user, const char *path, double decoding_gamma, int premultiplied, LoadedPicture *out,
-                      char *err, int errlen);
+     * parser frees its rgba and index), its colours decoded to linear
+     * light. decoding_gamma: IMAGE_GAMMA_FILE_DEFAULT the curve the file
+     * names, else its type's (POV-Ray 3.7's readers), 0 sRGB, else a power
+     * law, for every type (`gamma G`, 1: the values as stored).
+     * untagged_gamma, with IMAGE_GAMMA_FILE_DEFAULT: the curve of a file
+     * that names none (POV-Ray's defaultGamma), IMAGE_GAMMA_FILE_DEFAULT
+     * for its type's own. premultiplied: -1 the format's own reading (EXR
+     * premultiplied, the others straight), else `premultiplied`'s value.
+     * Returns 0, or -1 with the reason in err (the parser names the file
+     * and the position). NULL: pictures are refused. */
+    /* +MV3.7: the language version is set (3.7) before the first line, as
+     * POV-Ray's kPOVAttrib_Version does: no #version needed, and the gamma
+     * mode stays as it starts (image_gamma.c). */
+    int language_version_given;
+    int (*load_image)(void *user, const char *path, double decoding_gamma, double untagged_gamma, int premultiplied,
+                      LoadedPicture *out, char *err, int errlen);
     void *load_image_user;
     /* POV-Ray's console streams turned off (-GD, -GW, -GA): #debug text
      * and warnings (#warning, the parser's own) are not printed. Errors

@@ -267,6 +267,8 @@ typedef struct Parser {
     int debug_line_open; /* #debug text on stderr does not end in a newline */
     int gamma_set;
     double assumed_gamma; /* 0 with gamma_set: srgb */
+    /* POV-Ray's gammaMode while parsing (image_gamma.c) */
+    enum { GAMMA_MODE_NONE, GAMMA_MODE_37_IMPLIED, GAMMA_MODE_36, GAMMA_MODE_37 } gamma_mode;
     int default_changed;  /* #default was used */
 
     /* limits.c: the lowest stack address a token may be read at, and the
@@ -605,6 +607,11 @@ const SceneNormal *parse_normal(Parser *p, const SceneNormal *from, const Token 
 const SceneNormal *normal_transformed(Parser *p, const SceneNormal *n, const Transform *tr);
 /* The normal seen at the surface's (u, v, 0): an object's uv_mapping. */
 const SceneNormal *normal_uv_mapped(Parser *p, const SceneNormal *n);
+/* A texture seen at the surface's (u, v, 0), as an object's uv_mapping
+ * makes every texture of it and `texture { uv_mapping ... }` makes its own:
+ * its own transforms still place it, the object's and outer textures' do
+ * not move it (POV-Ray's UV_FLAG and uv_mapping pattern); parse_objects.c */
+const SceneTexture *texture_uv_mapped(Parser *p, const SceneTexture *tex);
 /* A layer `top` over `below` (both copied): one texture, see parse_texture.c. */
 SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at);
 /* sky_sphere { pigment {...} ... transforms } after 'sky_sphere'. */
@@ -665,6 +672,21 @@ void directive_write(Parser *p);
  * error, e.g. a full disk) is an I/O error; without, errors are ignored
  * (the parse is already failing). */
 void user_files_close_all(Parser *p, int report);
+
+/* image_gamma.c: POV-Ray 3.7's reading of a picture's colours, by the
+ * gamma mode the scene is in when the picture is parsed. decode and
+ * untagged go to ParseOptions.load_image; the linear values it returns are
+ * then encoded with working (1 none, 0 sRGB, else a power law). */
+typedef struct {
+    double decode, untagged, working;
+} ImageGammaPlan;
+/* global_settings' first assumed_gamma (0: srgb); later ones are ignored */
+void assumed_gamma_seen(Parser *p, double gamma);
+/* after a #version has set p->version */
+void version_seen(Parser *p);
+/* gamma_correct: colours (image_map) rather than data (bump_map,
+ * material_map); override_given: the picture's own `gamma override` */
+ImageGammaPlan image_gamma_plan(const Parser *p, int gamma_correct, int override_given, double override);
 
 /* approximations.c: the report of what the instantiated scene approximates */
 void collect_approximations(Parser *p);

@@ -68,6 +68,11 @@ double scene_working_gamma(const Scene *s)
     return s->version_given && s->version >= 3.7 ? 1.0 : 0.0;
 }
 
+int scene_gamma_correction_off(const Scene *s)
+{
+    return !s->globals.has_assumed_gamma && !(s->version_given && s->version >= 3.7);
+}
+
 int scene_noise_generator(const Scene *s)
 {
     if (s->globals.noise_generator)

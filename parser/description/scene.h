@@ -110,7 +110,13 @@ typedef struct {
     int ncolours;
     float palette[256][4];
     unsigned char *index;
+    /* The values as stored, in no colour space: not to be taken to the
+     * working gamma (POV-Ray 3.7's PPM and PGM that nothing told a gamma) */
+    int as_stored;
 } LoadedPicture;
+
+/* ParseOptions.load_image's gammas: what the file names, else its type's */
+#define IMAGE_GAMMA_FILE_DEFAULT (-1.0)
 
 /* Turbulence of a pattern (POV-Ray's TURB warp): `turbulence` written in
  * the pigment (classic: marble, wood, agate and the spirals also add its
@@ -536,6 +542,10 @@ void scene_release_mesh_lists(Scene *scene);
  * as encoded for POV-Ray's default display gamma, which is sRGB (measured:
  * POV-Ray 3.7 renders such a scene exactly as with assumed_gamma srgb). */
 double scene_working_gamma(const Scene *s);
+/* POV-Ray's "gamma correction off" (gammaMode None at the end of the parse:
+ * no assumed_gamma, a version below 3.7 or none): the working and file
+ * gamma are then the Display_Gamma option's (frontend's CreateView). */
+int scene_gamma_correction_off(const Scene *s);
 
 /* The noise generator of patterns that name none (POV-Ray 3.7: the one of
  * global_settings, else 2, or 1 for a scene whose #version is below 3.5). */

@@ -466,6 +466,7 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
             snprintf(err, (size_t)errlen, "'%s': hstrace reads scenes as POV-Ray 3.7 does (+MV3.7 only)", arg);
             return -1;
         }
+        opt->language_version_given = 1;
         return 0;
     }
     case 'R': case 'r':
@@ -578,6 +579,7 @@ typedef enum {
     KEY_BOOL,     /* on/off as the switch +PREFIX / -PREFIX */
     KEY_SCENE, KEY_OUTPUT, KEY_LIBRARY, KEY_DECLARE, KEY_BITS, KEY_COMPRESSION, KEY_INCLUDE_INI,
     KEY_AA,       /* anti-aliasing's settings (prefix: which) */
+    KEY_DISPLAY_GAMMA, /* Display_Gamma: the output's gamma where a scene turns gamma correction off */
     KEY_IGNORED,  /* no effect on the image or the files (display, consoles, bounding) */
     KEY_UNSUPPORTED /* POV-Ray's, not hstrace's yet */
 } KeyKind;
@@ -609,7 +611,7 @@ static const IniKey ini_keys[] = {
     { "Jitter_Amount", KEY_AA, "amount" },
     { "Jitter", KEY_BOOL, "J" },
     { "Display", KEY_BOOL, "D" },
-    { "Display_Gamma", KEY_IGNORED, NULL },
+    { "Display_Gamma", KEY_DISPLAY_GAMMA, NULL },
     { "Verbose", KEY_IGNORED, NULL },
     { "Pause_When_Done", KEY_BOOL, "P" },
     { "Draw_Vistas", KEY_IGNORED, NULL },
@@ -798,6 +800,19 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
                          : strcmp(k->prefix, "method") == 0 ? "1 or 2"
                                                             : "a number from 0");
                 status = -1;
+            }
+            break;
+        }
+        case KEY_DISPLAY_GAMMA: {
+            /* POV-Ray's Parse_Gamma of an option: sRGB, or a power law */
+            double v;
+            if (strcasecmp(value, "srgb") == 0) {
+                opt->display_gamma = 0.0;
+            } else if (parse_double(value, &v) || !(v > 0.0)) {
+                snprintf(msg, sizeof msg, "%s=%s: expected sRGB or a number above 0", k->name, value);
+                status = -1;
+            } else {
+                opt->display_gamma = v;
             }
             break;
         }

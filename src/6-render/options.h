@@ -63,6 +63,14 @@ typedef struct {
     int aa_method;                /* +AMn, Sampling_Method (1) */
     int aa_depth;                 /* +Rn, Antialias_Depth (3) */
     double aa_gamma;              /* Antialias_Gamma (2.5) */
+    /* Display_Gamma: 0 sRGB (POV-Ray's default), else a power law. POV-Ray
+     * uses it as the working and the file gamma of a scene that turns gamma
+     * correction off (no assumed_gamma, below 3.7): what an EXR holds and
+     * what a PNG's gAMA chunk says. */
+    double display_gamma;
+    /* +MV3.7: the scene's language version is 3.7 from its first line, as
+     * if it had a #version (which changes how its pictures are read). */
+    int language_version_given;
     int jitter_on;                /* +J / -J, Jitter (on) */
     double jitter_amount;         /* +Jn, Jitter_Amount (1) */
     char antialias_by[720];       /* what turned it on, for the message */

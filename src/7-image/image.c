@@ -228,9 +228,15 @@ int image_read_ex(const char *path, Image *img, double display_gamma, ImageReadE
         return -1;
     fmt = sniff(fd, path);
     why[0] = '\0';
+    if (ex != NULL)
+        ex->format = fmt;
     /* POV-Ray's defaults (the PNG reader looks at its chunks itself) */
-    if (display_gamma == IMAGE_GAMMA_AS_POVRAY && fmt != IMAGE_FORMAT_PNG)
-        display_gamma = fmt == IMAGE_FORMAT_PPM ? 1.0 : 0.0;
+    if (display_gamma == IMAGE_GAMMA_AS_POVRAY && fmt != IMAGE_FORMAT_PNG) {
+        if (ex != NULL && ex->untagged_given)
+            display_gamma = ex->untagged_gamma;
+        else
+            display_gamma = fmt == IMAGE_FORMAT_PPM ? 1.0 : 0.0;
+    }
     if (fmt == IMAGE_FORMAT_EXR) {
         rc = image_exr_read(fd, img, why, (int)sizeof why);
         close(fd);
@@ -305,17 +311,37 @@ int image_read_exr_file(const char *path, ImageExrFile *f, int y0, int y1, char 
     return rc;
 }
 
-int image_read_for_scene(void *user, const char *path, double decoding_gamma, int premultiplied,
-                         LoadedPicture *out, char *err, int errlen)
+/* `gamma G` on a linear file (EXR, HDR): POV-Ray decodes its values as
+ * stored with G too (SetEncodedRGBAValue's float form). */
+static void decode_linear_override(Image *img, double gamma)
+{
+    ImageTransfer t;
+    image_transfer_init(&t, gamma);
+    size_t n = (size_t)img->width * (size_t)img->height;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            img->rgba[4 * i + k] = image_transfer_decode(&t, img->rgba[4 * i + k]);
+}
+
+int image_read_for_scene(void *user, const char *path, double decoding_gamma, double untagged_gamma,
+                         int premultiplied, LoadedPicture *out, char *err, int errlen)
 {
     (void)user;
     Image img;
     ImageReadExtras ex;
     memset(&ex, 0, sizeof ex);
     ex.keep_straight = 1;
+    ex.untagged_given = untagged_gamma != IMAGE_GAMMA_AS_POVRAY;
+    ex.untagged_gamma = untagged_gamma;
     memset(out, 0, sizeof *out);
     if (image_read_ex(path, &img, decoding_gamma, &ex, err, errlen))
         return -1;
+    const int linear_format = ex.format == IMAGE_FORMAT_EXR || ex.format == IMAGE_FORMAT_HDR;
+    if (linear_format && decoding_gamma != IMAGE_GAMMA_AS_POVRAY && decoding_gamma != 1.0)
+        decode_linear_override(&img, decoding_gamma);
+    /* POV-Ray 3.7 reads a PPM or PGM with no gamma given as it stands, and
+     * keeps it out of the working gamma's transcoding as well */
+    out->as_stored = ex.format == IMAGE_FORMAT_PPM && decoding_gamma == IMAGE_GAMMA_AS_POVRAY && !ex.untagged_given;
     out->width = img.width;
     out->height = img.height;
     out->rgba = img.rgba; /* the parser frees it, and the index */

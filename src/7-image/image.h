@@ -78,7 +78,7 @@ int image_write(const char *path, const Image *img, const ImageWriteOptions *opt
  * reads a file that no `gamma` overrides: PNG by its sRGB or gAMA chunk,
  * else sRGB; JPEG, Targa and BMP as sRGB; PPM not decoded). Returns 0, or
  * -1 with a message. */
-#define IMAGE_GAMMA_AS_POVRAY (-1.0)
+#define IMAGE_GAMMA_AS_POVRAY IMAGE_GAMMA_FILE_DEFAULT
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen);
 
 /* What image_read_ex can say besides the pixels. */
@@ -86,6 +86,13 @@ typedef struct {
     /* In: leave the colours of the formats with straight alpha (PNG,
      * Targa, BMP) as the file has them, not premultiplied. */
     int keep_straight;
+    /* In, with IMAGE_GAMMA_AS_POVRAY: the curve of a PNG, JPEG, Targa, BMP
+     * or PPM that names none (POV-Ray's ReadOptions.defaultGamma: 0 sRGB,
+     * else a power law), when untagged_given; otherwise the type's own. */
+    int untagged_given;
+    double untagged_gamma;
+    /* Out: the file's format. */
+    ImageFormat format;
     /* Out: the colours returned are premultiplied by alpha (with
      * keep_straight: only an EXR's, as stored; otherwise always). */
     int premultiplied;
@@ -105,8 +112,8 @@ int image_read_ex(const char *path, Image *img, double display_gamma, ImageReadE
  * file stores them, and POV-Ray 3.7's reading of them (premultiplied for
  * EXR, straight for the others, unless `premultiplied` says otherwise);
  * `user` is unused. */
-int image_read_for_scene(void *user, const char *path, double decoding_gamma, int premultiplied, LoadedPicture *out,
-                         char *err, int errlen);
+int image_read_for_scene(void *user, const char *path, double decoding_gamma, double untagged_gamma, int premultiplied,
+                         LoadedPicture *out, char *err, int errlen);
 
 /* Reads the named channels of a scanline EXR (part 0) as float planes of
  * width*height samples (malloc'd, row 0 at the top; half and uint are

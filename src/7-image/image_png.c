@@ -293,8 +293,8 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *
             else if (png_get_valid(st->png, st->info, PNG_INFO_gAMA) && png_get_gAMA(st->png, st->info, &file_gamma) &&
                      file_gamma > 0.0)
                 decode = 1.0 / file_gamma;
-            else
-                decode = 0.0;
+            else /* POV-Ray's defaultGamma (3.6 scenes: the working gamma), else sRGB */
+                decode = ex != NULL && ex->untagged_given ? ex->untagged_gamma : 0.0;
         }
         image_transfer_init(&t, decode);
     }

@@ -178,6 +178,7 @@ static int parse_scene(Frame *f, const Options *o, const ParseAnimation *anim, c
     popt.image_height = o->height;
     popt.strict = o->strict;
     popt.load_image = image_read_for_scene;
+    popt.language_version_given = o->language_version_given;
     popt.quiet_debug = !o->debug_console;
     popt.quiet_warnings = !o->warning_console;
     popt.max_memory = o->max_memory;
@@ -402,7 +403,11 @@ static int write_image(Frame *f, int argc, char **argv, const Options *o, const 
     int status = EXIT_OK;
     char err[1024];
     double t = clock_wall();
-    image_decode_working_gamma(&f->img, f->working_gamma);
+    /* with gamma correction off, POV-Ray's working and file gamma are both
+     * Display_Gamma (sRGB unless set): its pixels go out as they are, an
+     * EXR's decoded by it */
+    const int gamma_off = scene_gamma_correction_off(f->scene);
+    image_decode_working_gamma(&f->img, gamma_off ? o->display_gamma : f->working_gamma);
     ImageWriteOptions wopt;
     memset(&wopt, 0, sizeof wopt);
     wopt.exr_float = o->exr_float;
@@ -411,7 +416,7 @@ static int write_image(Frame *f, int argc, char **argv, const Options *o, const 
     wopt.tga_rle = o->output_type == 'C';
     wopt.jpeg_quality = o->jpeg_quality;
     wopt.software = "hstrace " PACKAGE_VERSION;
-    wopt.display_gamma = 0.0; /* sRGB, as POV-Ray 3.7 writes assumed_gamma 1 scenes */
+    wopt.display_gamma = gamma_off ? o->display_gamma : 0.0; /* else sRGB, POV-Ray's File_Gamma */
     wopt.display = f->colour; /* or OpenColorIO's display/view transform */
     if (f->colour != NULL) {
         wopt.have_chromaticities = colour_display_chromaticities(f->colour, wopt.chromaticities) == 0;
