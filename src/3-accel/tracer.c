@@ -9,11 +9,9 @@
 
 void ray_counters_add(RayCounters *t, const RayCounters *p)
 {
-    t->polygon_tests += p->polygon_tests;
-    t->polygon_hits += p->polygon_hits;
-    t->plane_tests += p->plane_tests;
-    t->cells_visited += p->cells_visited;
-    t->nodes_visited += p->nodes_visited;
+#define RAY_COUNTER(field, line, label, key, meaning) t->field += p->field;
+#include "ray_counters.def"
+#undef RAY_COUNTER
 }
 
 int tracer_init(Tracer *t, const World *w, const Grid *g)

@@ -24,9 +24,9 @@ typedef struct {
 
 /* What the ray queries did, for the statistics (summed over threads). */
 typedef struct {
-    uint64_t polygon_tests, polygon_hits, plane_tests;
-    uint64_t cells_visited;       /* grid cells walked (3DDDA) */
-    uint64_t nodes_visited;       /* hierarchy nodes whose box was tested */
+#define RAY_COUNTER(field, line, label, key, meaning) uint64_t field;
+#include "ray_counters.def"
+#undef RAY_COUNTER
 } RayCounters;
 
 void ray_counters_add(RayCounters *total, const RayCounters *part);

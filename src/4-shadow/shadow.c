@@ -102,35 +102,13 @@ void shadow_context_free(ShadowContext *ctx)
 
 void shadow_counters_add(ShadowCounters *t, const ShadowCounters *p)
 {
-    t->shadow_queries += p->shadow_queries;
-    t->shadow_rays += p->shadow_rays;
-    t->shadow_blocked += p->shadow_blocked;
-    t->shadow_polygon_tests += p->shadow_polygon_tests;
+#define SHADOW_COUNTER(field, line, label, key, meaning) t->field += p->field;
+#include "shadow_counters.def"
+#undef SHADOW_COUNTER
     for (int i = 0; i < SCHEME_COUNT; i++) {
         t->shadow_schemes[i] += p->shadow_schemes[i];
         t->shadow_disagreements_by_scheme[i] += p->shadow_disagreements_by_scheme[i];
     }
-    t->shadow_volume_tests += p->shadow_volume_tests;
-    t->shadow_bucket_polygons += p->shadow_bucket_polygons;
-    t->shadow_unsure += p->shadow_unsure;
-    t->shadow_coherent += p->shadow_coherent;
-    t->shadow_touching += p->shadow_touching;
-    t->area_points += p->area_points;
-    t->area_samples += p->area_samples;
-    t->area_beams += p->area_beams;
-    t->area_beam_lit += p->area_beam_lit;
-    t->area_beam_umbra += p->area_beam_umbra;
-    t->area_beam_candidates += p->area_beam_candidates;
-    t->area_beam_overflows += p->area_beam_overflows;
-    t->shadow_in_plane += p->shadow_in_plane;
-    t->shadow_coherence_unsure += p->shadow_coherence_unsure;
-    t->shadow_no_count += p->shadow_no_count;
-    t->shadow_deferred += p->shadow_deferred;
-    t->shadow_verified += p->shadow_verified;
-    t->shadow_disagreements += p->shadow_disagreements;
-    t->reference_ties += p->reference_ties;
-    t->reference_wrong += p->reference_wrong;
-    t->reference_ray_wrong += p->reference_ray_wrong;
     t->shadow_seconds += p->shadow_seconds;
 }
 

@@ -65,38 +65,15 @@ typedef enum {
 
 extern const char *const shadow_scheme_names[SCHEME_COUNT];
 
-/* What the shadow methods did, for the statistics (summed over threads). */
+/* What the shadow methods did, for the statistics (summed over threads):
+ * the counters of shadow_counters.def, then the decisions and the
+ * disagreements by sub-scheme and the time. */
 typedef struct {
-    uint64_t shadow_queries;      /* shading point x light pairs that needed a decision */
-    uint64_t shadow_rays;         /* conventional shadow rays walked */
-    uint64_t shadow_blocked;      /* ... of which found an opaque blocker */
-    uint64_t shadow_polygon_tests;
-    /* Decisions by sub-scheme, in the order of ShadowScheme. */
-    uint64_t shadow_schemes[SCHEME_COUNT];
-    uint64_t shadow_volume_tests;  /* segment/shadow polygon tests */
-    uint64_t shadow_bucket_polygons; /* shadow polygons gathered into segments' buckets */
-    uint64_t shadow_unsure;       /* counts abandoned for a crossing too close to call */
-    uint64_t shadow_coherent;     /* volume counts carried from the neighbouring pixel's hit */
-    uint64_t shadow_coherence_unsure; /* ... abandoned (too close to call) for the count from the eye */
-    uint64_t shadow_touching;     /* points on a second polygon: left to the shadow ray */
-    uint64_t shadow_in_plane;     /* segments in the plane of their start polygon: left to the shadow ray */
-    uint64_t shadow_no_count;     /* volume: no count possible (depth unknown, outside the box) */
-    uint64_t shadow_deferred;     /* states left unknown where nobody needed the answer */
-    uint64_t area_points;         /* shading points that sampled an area light */
-    uint64_t area_samples;        /* ... the samples they decided (each one of shadow_queries) */
-    uint64_t area_beams;          /* ... of the points, those hst built a beam for */
-    uint64_t area_beam_lit, area_beam_umbra; /* ... and proved lit, or in umbra, by it */
-    uint64_t area_beam_candidates; /* ... the polygons the beams gathered */
-    uint64_t area_beam_overflows;  /* ... beams abandoned for too many candidates */
-    uint64_t shadow_verified;     /* decisions checked against the shadow ray */
-    uint64_t shadow_disagreements;
+#define SHADOW_COUNTER(field, line, label, key, meaning) uint64_t field;
+#include "shadow_counters.def"
+#undef SHADOW_COUNTER
+    uint64_t shadow_schemes[SCHEME_COUNT]; /* decisions, in the order of ShadowScheme */
     uint64_t shadow_disagreements_by_scheme[SCHEME_COUNT];
-    /* --verify-reference: the same decisions against the long-double
-     * reference; ties are where it cannot tell (then only the shadow ray's
-     * answer counts, as above). */
-    uint64_t reference_ties;
-    uint64_t reference_wrong;     /* the method, on clear cases */
-    uint64_t reference_ray_wrong; /* the shadow ray itself, on clear cases */
     double shadow_seconds;        /* time spent deciding shadows, summed over threads */
 } ShadowCounters;
 

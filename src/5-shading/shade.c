@@ -833,7 +833,7 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
 
 void shade_counters_add(ShadeCounters *t, const ShadeCounters *p)
 {
-    t->reflected_rays += p->reflected_rays;
-    t->refracted_rays += p->refracted_rays;
-    t->transmitted_rays += p->transmitted_rays;
+#define SHADE_COUNTER(field, line, label, key, meaning) t->field += p->field;
+#include "shade_counters.def"
+#undef SHADE_COUNTER
 }

@@ -23,7 +23,9 @@ typedef struct {
 
 /* The secondary rays shading sent, for the statistics (summed over threads). */
 typedef struct {
-    uint64_t reflected_rays, refracted_rays, transmitted_rays;
+#define SHADE_COUNTER(field, line, label, key, meaning) uint64_t field;
+#include "shade_counters.def"
+#undef SHADE_COUNTER
 } ShadeCounters;
 
 void shade_counters_add(ShadeCounters *total, const ShadeCounters *part);

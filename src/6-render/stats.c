@@ -7,6 +7,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "cost_model.h"
@@ -25,8 +26,81 @@ void stats_add(RenderStats *t, const RenderStats *p)
     t->render_seconds += p->render_seconds;
 }
 
-/* "Others" is the render loop's CPU time that was not shadow testing, plus
- * writing the image: the paper's split (finding hits, shading, output). */
+/* The render's counters, one row each, from the rooms' own lists
+ * (ray_counters.def, shade_counters.def, shadow_counters.def): the same
+ * table makes the --stats lines and the JSON's objects. */
+typedef enum {
+    LINE_RAYS, LINE_TESTS, LINE_SHADOWS, LINE_COUNTING, LINE_FALLBACKS, LINE_COHERENCE, LINE_AREA, LINE_VERIFY,
+    LINE_REFERENCE
+} StatsLine;
+
+typedef struct {
+    StatsLine line;
+    const char *label; /* in --stats */
+    const char *key;   /* in the JSON */
+    size_t offset;     /* of the uint64_t in RenderStats */
+} CounterRow;
+
+static const CounterRow counter_rows[] = {
+    { LINE_RAYS, "camera", "camera", offsetof(RenderStats, camera_rays) },
+#define SHADE_COUNTER(field, line, label, key, meaning) \
+    { LINE_##line, label, key, offsetof(RenderStats, shading) + offsetof(ShadeCounters, field) },
+#include "shade_counters.def"
+#undef SHADE_COUNTER
+#define RAY_COUNTER(field, line, label, key, meaning) \
+    { LINE_##line, label, key, offsetof(RenderStats, rays) + offsetof(RayCounters, field) },
+#include "ray_counters.def"
+#undef RAY_COUNTER
+#define SHADOW_COUNTER(field, line, label, key, meaning) \
+    { LINE_##line, label, key, offsetof(RenderStats, shadow) + offsetof(ShadowCounters, field) },
+#include "shadow_counters.def"
+#undef SHADOW_COUNTER
+};
+
+#define NROWS (sizeof counter_rows / sizeof counter_rows[0])
+
+static unsigned long long counter_value(const RenderStats *s, const CounterRow *row)
+{
+    uint64_t v;
+    memcpy(&v, (const char *)s + row->offset, sizeof v);
+    return (unsigned long long)v;
+}
+
+static int line_nonzero(const RenderStats *s, StatsLine line)
+{
+    for (size_t i = 0; i < NROWS; i++)
+        if (counter_rows[i].line == line && counter_value(s, &counter_rows[i]))
+            return 1;
+    return 0;
+}
+
+/* One --stats line: its title, then each counter of the line. */
+static void print_line(FILE *f, const char *title, const RenderStats *s, StatsLine line)
+{
+    fprintf(f, "  %-11s", title);
+    const char *sep = " ";
+    for (size_t i = 0; i < NROWS; i++) {
+        if (counter_rows[i].line != line)
+            continue;
+        fprintf(f, "%s%s %llu", sep, counter_rows[i].label, counter_value(s, &counter_rows[i]));
+        sep = "  ";
+    }
+    fprintf(f, "\n");
+}
+
+/* The JSON's members for the counters of lines [first, last], each
+ * preceded by sep (the first by first_sep). */
+static void json_counters(FILE *f, const RenderStats *s, StatsLine first, StatsLine last, const char *first_sep,
+                          const char *sep)
+{
+    for (size_t i = 0; i < NROWS; i++) {
+        if (counter_rows[i].line < first || counter_rows[i].line > last)
+            continue;
+        fprintf(f, "%s\"%s\": %llu", first_sep, counter_rows[i].key, counter_value(s, &counter_rows[i]));
+        first_sep = sep;
+    }
+}
+
 /* v with 3 decimals, or null where it is not finite (JSON has no infinity). */
 static void finite_or_null(char *buf, size_t size, double v)
 {
@@ -36,6 +110,8 @@ static void finite_or_null(char *buf, size_t size, double v)
         snprintf(buf, size, "null");
 }
 
+/* "Others" is the render loop's CPU time that was not shadow testing, plus
+ * writing the image: the paper's split (finding hits, shading, output). */
 static double others_seconds(const StatsReport *r)
 {
     double o = r->render.render_seconds - r->render.shadow.shadow_seconds;
@@ -127,16 +203,9 @@ void stats_print(FILE *f, const StatsReport *r)
     fprintf(f, "              preprocessing: world %.3f  hierarchy %.3f  volume plan %.3f (building volumes %.3f)\n",
             r->world_seconds, r->hierarchy_seconds, r->plan_seconds, r->volumes_seconds);
     fprintf(f, "              shadow testing and others are CPU time summed over threads\n");
-    fprintf(f, "  rays        camera %llu  reflected %llu  refracted %llu  transmitted %llu\n",
-            (unsigned long long)s->camera_rays, (unsigned long long)s->shading.reflected_rays,
-            (unsigned long long)s->shading.refracted_rays, (unsigned long long)s->shading.transmitted_rays);
-    fprintf(f, "  tests       ray/polygon %llu (hits %llu)  ray/plane %llu  cells visited %llu  hierarchy nodes %llu\n",
-            (unsigned long long)s->rays.polygon_tests, (unsigned long long)s->rays.polygon_hits,
-            (unsigned long long)s->rays.plane_tests, (unsigned long long)s->rays.cells_visited,
-            (unsigned long long)s->rays.nodes_visited);
-    fprintf(f, "  shadows     queries %llu  shadow rays %llu (blocked %llu)  shadow-ray/polygon tests %llu\n",
-            (unsigned long long)s->shadow.shadow_queries, (unsigned long long)s->shadow.shadow_rays,
-            (unsigned long long)s->shadow.shadow_blocked, (unsigned long long)s->shadow.shadow_polygon_tests);
+    print_line(f, "rays", s, LINE_RAYS);
+    print_line(f, "tests", s, LINE_TESTS);
+    print_line(f, "shadows", s, LINE_SHADOWS);
     fprintf(f, "  sub-schemes");
     for (int i = 0; i < SCHEME_COUNT; i++)
         fprintf(f, "  %s %llu", shadow_scheme_names[i], (unsigned long long)s->shadow.shadow_schemes[i]);
@@ -177,17 +246,11 @@ void stats_print(FILE *f, const StatsReport *r)
             else
                 fprintf(f, "unknown\n");
         }
-        fprintf(f, "  counting    segment/shadow-polygon tests %llu  shadow polygons gathered %llu  unsure %llu"
-                   "  no count %llu  deferred %llu\n",
-                (unsigned long long)s->shadow.shadow_volume_tests, (unsigned long long)s->shadow.shadow_bucket_polygons,
-                (unsigned long long)s->shadow.shadow_unsure, (unsigned long long)s->shadow.shadow_no_count,
-                (unsigned long long)s->shadow.shadow_deferred);
-        if (s->shadow.shadow_touching || s->shadow.shadow_in_plane)
-            fprintf(f, "  fallbacks   points on a second polygon %llu  segments in their start polygon's plane %llu\n",
-                    (unsigned long long)s->shadow.shadow_touching, (unsigned long long)s->shadow.shadow_in_plane);
-        if (s->shadow.shadow_coherent || s->shadow.shadow_coherence_unsure)
-            fprintf(f, "  coherence   counts from the neighbouring pixel %llu  abandoned %llu\n",
-                    (unsigned long long)s->shadow.shadow_coherent, (unsigned long long)s->shadow.shadow_coherence_unsure);
+        print_line(f, "counting", s, LINE_COUNTING);
+        if (line_nonzero(s, LINE_FALLBACKS))
+            print_line(f, "fallbacks", s, LINE_FALLBACKS);
+        if (line_nonzero(s, LINE_COHERENCE))
+            print_line(f, "coherence", s, LINE_COHERENCE);
     }
     if (r->embree) {
         const EmbreeSceneInfo *e = shadow_embree_info(r->embree);
@@ -295,42 +358,22 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
             r->parse_seconds, r->preprocess_seconds, s->shadow.shadow_seconds, others,
             r->parse_seconds + r->preprocess_seconds + s->shadow.shadow_seconds + others, r->wall_seconds,
             r->world_seconds, r->hierarchy_seconds, r->plan_seconds, r->volumes_seconds);
-    fprintf(f, "  \"rays\": {\"camera\": %llu, \"reflected\": %llu, \"refracted\": %llu, \"transmitted\": %llu},\n",
-            (unsigned long long)s->camera_rays, (unsigned long long)s->shading.reflected_rays,
-            (unsigned long long)s->shading.refracted_rays, (unsigned long long)s->shading.transmitted_rays);
-    fprintf(f, "  \"tests\": {\"ray_polygon\": %llu, \"ray_polygon_hits\": %llu, \"ray_plane\": %llu, \"cells_visited\": %llu, \"nodes_visited\": %llu},\n",
-            (unsigned long long)s->rays.polygon_tests, (unsigned long long)s->rays.polygon_hits,
-            (unsigned long long)s->rays.plane_tests, (unsigned long long)s->rays.cells_visited,
-            (unsigned long long)s->rays.nodes_visited);
-    fprintf(f, "  \"shadows\": {\"queries\": %llu, \"shadow_rays\": %llu, \"blocked\": %llu, \"polygon_tests\": %llu,\n",
-            (unsigned long long)s->shadow.shadow_queries, (unsigned long long)s->shadow.shadow_rays,
-            (unsigned long long)s->shadow.shadow_blocked, (unsigned long long)s->shadow.shadow_polygon_tests);
-    fprintf(f, "    \"schemes\": {");
-    for (int i = 0; i < SCHEME_COUNT; i++)
-        fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i], (unsigned long long)s->shadow.shadow_schemes[i]);
-    fprintf(f, "},\n    \"shadow_polygon_tests\": %llu, \"bucket_polygons\": %llu, \"unsure\": %llu, \"no_count\": %llu, "
-               "\"deferred\": %llu, \"coherent\": %llu, \"coherence_unsure\": %llu, \"touching\": %llu, \"in_plane\": %llu,\n",
-            (unsigned long long)s->shadow.shadow_volume_tests, (unsigned long long)s->shadow.shadow_bucket_polygons,
-            (unsigned long long)s->shadow.shadow_unsure, (unsigned long long)s->shadow.shadow_no_count,
-            (unsigned long long)s->shadow.shadow_deferred, (unsigned long long)s->shadow.shadow_coherent,
-            (unsigned long long)s->shadow.shadow_coherence_unsure, (unsigned long long)s->shadow.shadow_touching,
-            (unsigned long long)s->shadow.shadow_in_plane);
-    fprintf(f, "    \"area_points\": %llu, \"area_samples\": %llu, \"area_beams\": %llu, \"area_beam_lit\": %llu, "
-               "\"area_beam_umbra\": %llu, \"area_beam_candidates\": %llu, \"area_beam_overflows\": %llu,\n",
-            (unsigned long long)s->shadow.area_points, (unsigned long long)s->shadow.area_samples,
-            (unsigned long long)s->shadow.area_beams, (unsigned long long)s->shadow.area_beam_lit,
-            (unsigned long long)s->shadow.area_beam_umbra, (unsigned long long)s->shadow.area_beam_candidates,
-            (unsigned long long)s->shadow.area_beam_overflows);
-    fprintf(f, "    \"verified\": %llu, \"disagreements\": %llu, \"disagreements_by_scheme\": {",
-            (unsigned long long)s->shadow.shadow_verified, (unsigned long long)s->shadow.shadow_disagreements);
-    for (int i = 0; i < SCHEME_COUNT; i++)
-        fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i],
-                (unsigned long long)s->shadow.shadow_disagreements_by_scheme[i]);
-    fprintf(f, "}");
+    fprintf(f, "  \"rays\": {");
+    json_counters(f, s, LINE_RAYS, LINE_RAYS, "", ", ");
+    fprintf(f, "},\n  \"tests\": {");
+    json_counters(f, s, LINE_TESTS, LINE_TESTS, "", ", ");
+    fprintf(f, "},\n  \"shadows\": {");
+    json_counters(f, s, LINE_SHADOWS, LINE_VERIFY, "", ",\n    ");
     if (r->verify > 1)
-        fprintf(f, ",\n    \"reference_ties\": %llu, \"reference_wrong\": %llu, \"reference_ray_wrong\": %llu",
-                (unsigned long long)s->shadow.reference_ties, (unsigned long long)s->shadow.reference_wrong,
-                (unsigned long long)s->shadow.reference_ray_wrong);
+        json_counters(f, s, LINE_REFERENCE, LINE_REFERENCE, ",\n    ", ",\n    ");
+    const char *by_scheme[2] = { "schemes", "disagreements_by_scheme" };
+    for (int k = 0; k < 2; k++) {
+        const uint64_t *v = k == 0 ? s->shadow.shadow_schemes : s->shadow.shadow_disagreements_by_scheme;
+        fprintf(f, ",\n    \"%s\": {", by_scheme[k]);
+        for (int i = 0; i < SCHEME_COUNT; i++)
+            fprintf(f, "%s\"%s\": %llu", i ? ", " : "", shadow_scheme_names[i], (unsigned long long)v[i]);
+        fprintf(f, "}");
+    }
     fprintf(f, "}");
     if (r->plan)
         json_plan(f, r->plan);
