@@ -166,7 +166,9 @@ SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const c
                    "include folders)", name);
     LoadedPicture pic;
     char why[256] = "";
-    if (p->opts->load_image(p->opts->load_image_user, path, decoding_gamma, premultiplied, &pic, why, (int)sizeof why)) {
+    size_t left = limits_memory_left(p); /* 0 would mean no limit: at least a byte */
+    if (p->opts->load_image(p->opts->load_image_user, path, decoding_gamma, premultiplied, left ? left : 1, &pic, why,
+                            (int)sizeof why)) {
         free(pic.rgba);
         free(pic.index);
         parse_fail(p, name_at.pos, "%s: %s", block, why[0] ? why : "unreadable image");

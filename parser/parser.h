@@ -51,10 +51,13 @@ typedef struct {
      * sRGB (`gamma srgb`), else a power law (`gamma G`); linear formats
      * (EXR, HDR) ignore it. premultiplied: -1 the format's own reading
      * (EXR premultiplied, the others straight), else `premultiplied`'s
-     * value. Returns 0, or -1 with the reason in err (the parser names the
-     * file and the position). NULL: pictures are refused. */
-    int (*load_image)(void *user, const char *path, double decoding_gamma, int premultiplied, LoadedPicture *out,
-                      char *err, int errlen);
+     * value. max_bytes: the memory the parse's budget has left, which a
+     * picture (and the parser's copy of it) must fit, checked from its
+     * header before it is decoded. Returns 0, or -1 with the reason in err
+     * (the parser names the file and the position). NULL: pictures are
+     * refused. */
+    int (*load_image)(void *user, const char *path, double decoding_gamma, int premultiplied, size_t max_bytes,
+                      LoadedPicture *out, char *err, int errlen);
     void *load_image_user;
     /* POV-Ray's console streams turned off (-GD, -GW, -GA): #debug text
      * and warnings (#warning, the parser's own) are not printed. Errors

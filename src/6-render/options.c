@@ -36,7 +36,7 @@ static int parse_int(const char *s, int lo, int hi, int *out)
 
 /* A size in bytes: a whole or decimal number, then K, M, G or T (powers
  * of 1024; "KiB", "MB" ... and lower case too), none for bytes. */
-static int parse_size(const char *s, size_t *out)
+int options_parse_size(const char *s, size_t *out)
 {
     char *end;
     errno = 0;
@@ -1103,7 +1103,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
         } else if (is_long(a, "--max-memory")) {
             if (!(v = option_value(argc, argv, &i, "--max-memory", err, errlen)))
                 return -1;
-            if (parse_size(v, &opt->max_memory)) {
+            if (options_parse_size(v, &opt->max_memory)) {
                 snprintf(err, (size_t)errlen, "--max-memory '%s': expected a size such as 512M or 8G", v);
                 return -1;
             }
