@@ -262,12 +262,22 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
                 a->count == 1 ? "" : "s");
     }
 
+    double parse_start = t;
     t = clock_wall();
     double working_gamma = scene_working_gamma(scene);
     WorldError werr;
-    if (world_build_threads(&world, scene, threads, &werr)) {
-        fprintf(stderr, "hstrace: %s\n", werr.message);
-        status = EXIT_IO;
+    /* The world's build is held to the parse's budgets: the memory (its
+     * own, counted before anything is made) and the time (the parse's and
+     * the build's together). */
+    WorldLimits wlim = { o->max_memory ? o->max_memory : parse_default_max_memory(),
+                         o->max_parse_seconds > 0.0 ? parse_start + o->max_parse_seconds : 0.0,
+                         o->max_parse_seconds };
+    if (world_build_limited(&world, scene, threads, &wlim, &werr)) {
+        if (werr.pos.file && werr.pos.line > 0)
+            fprintf(stderr, "%s:%d:%d: %s\n", werr.pos.file, werr.pos.line, werr.pos.column, werr.message);
+        else
+            fprintf(stderr, "hstrace: %s\n", werr.message);
+        status = werr.over_budget ? EXIT_SCENE : EXIT_IO;
         goto done;
     }
     world.alpha_background = o->output_alpha;
