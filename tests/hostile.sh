@@ -217,9 +217,18 @@ for ext in png jpg exr tga bmp ppm hdr; do
         says "^hstrace compare: pic.$ext: 256x256 pixels: comparing would take 2 MiB, more than the memory budget of 1 MiB"
 done
 
+# The render's time budget: the message names the scene and the option.
+rm -f "$work/out.png"
+(cd "$scenes" && exec timeout -s KILL $limit "$hstrace" mirrors-filtering.pov --width 16 --height 12 --threads 2 \
+    --max-render-seconds 0.5 -o "$work/out.png") >/dev/null 2>"$work/err"
+check_status "mirrors-filtering.pov, --max-render-seconds 0.5 on 2 threads: status 2 within $limit s" "$?" 2
+check "... says so ($(head -1 "$work/err"))" \
+    says "^mirrors-filtering.pov: the render ran for more than 0.5 s (--max-render-seconds); no image written\$"
+check "... no image written" [ ! -e "$work/out.png" ]
+
 # The budgets' options, given something that is no budget: bad usage.
 printf 'triangle { 0, x, y }\n' >"$work/files/ok.pov"
-for bad in "--max-memory 12Q" "--max-memory 0" "--max-parse-seconds -1" "--max-repeated-tokens 0" \
+for bad in "--max-memory 12Q" "--max-memory 0" "--max-parse-seconds -1" "--max-render-seconds 0" "--max-repeated-tokens 0" \
     "--max-macro-calls 1.5" "--max-loop-iterations x"; do
     # shellcheck disable=SC2086 # the option and its value are two words
     (cd "$work/files" && exec "$hstrace" ok.pov -o "$work/out.png" $bad) >/dev/null 2>"$work/err"

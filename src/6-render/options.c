@@ -144,6 +144,8 @@ void options_usage(FILE *f)
             "                         physical memory)\n"
             "      --max-parse-seconds S  stop a parse, or the parse and the world's build together,\n"
             "                         running longer (default: no time limit)\n"
+            "      --max-render-seconds S  stop a render running longer, writing no image\n"
+            "                         (status 2; default: no time limit)\n"
             "      --max-repeated-tokens N  tokens loops and macro calls may read again, a long\n"
             "                         one counting one per 16 bytes (default 20000000: stops an\n"
             "                         endless loop within seconds)\n"
@@ -1109,16 +1111,17 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 snprintf(err, (size_t)errlen, "--max-memory '%s': expected a size such as 512M or 8G", v);
                 return -1;
             }
-        } else if (is_long(a, "--max-parse-seconds")) {
-            if (!(v = option_value(argc, argv, &i, "--max-parse-seconds", err, errlen)))
+        } else if (is_long(a, "--max-parse-seconds") || is_long(a, "--max-render-seconds")) {
+            const char *name = is_long(a, "--max-parse-seconds") ? "--max-parse-seconds" : "--max-render-seconds";
+            if (!(v = option_value(argc, argv, &i, name, err, errlen)))
                 return -1;
             char *end;
             double s = strtod(v, &end);
             if (end == v || *end != '\0' || !(s > 0.0 && s <= 1e9)) {
-                snprintf(err, (size_t)errlen, "--max-parse-seconds '%s': expected a number of seconds above 0", v);
+                snprintf(err, (size_t)errlen, "%s '%s': expected a number of seconds above 0", name, v);
                 return -1;
             }
-            opt->max_parse_seconds = s;
+            *(name[6] == 'p' ? &opt->max_parse_seconds : &opt->max_render_seconds) = s;
         } else if (is_long(a, "--max-repeated-tokens") || is_long(a, "--max-macro-calls") ||
                    is_long(a, "--max-loop-iterations")) {
             static const char *const names[] = { "--max-repeated-tokens", "--max-macro-calls", "--max-loop-iterations" };

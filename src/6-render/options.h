@@ -48,6 +48,8 @@ typedef struct {
     size_t max_memory;
     double max_parse_seconds;
     long max_loop_iterations, max_macro_calls, max_repeated_tokens;
+    /* --max-render-seconds: the render's own time (0: no limit). */
+    double max_render_seconds;
     const char *stats_json;
     int exr_float;
     int png16;

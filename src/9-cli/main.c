@@ -382,6 +382,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     ropt.x1 = o->area_x1;
     ropt.y1 = o->area_y1;
     ropt.threads = threads;
+    ropt.max_seconds = o->max_render_seconds;
     ropt.quality = quality_from_level(o->quality);
     /* hst with no light whose volumes pay (and no area light for its
      * beams) is the shadow ray alone: render it as the cache method does,
@@ -426,6 +427,7 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         report.tile_seconds = tile_seconds;
     }
     Image img;
+    int rc_render;
     if (distributed) {
         /* Tiles from rank 0, the pixels and counters back to it. */
         MpiTiles tiles;
@@ -465,9 +467,16 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
             image_free(&img);
             goto done;
         }
-    } else if (render_image(&world, &grid, &ropt, &img, &report.render)) {
-        fprintf(stderr, "hstrace: out of memory while rendering\n");
-        status = EXIT_IO;
+    } else if ((rc_render = render_image(&world, &grid, &ropt, &img, &report.render)) != 0) {
+        if (rc_render == RENDER_PAST_DEADLINE) {
+            /* A budget crossed, as the parse's are: a scene error, named by its file (no one place is to blame). */
+            fprintf(stderr, "%s: the render ran for more than %g s (--max-render-seconds); no image written\n",
+                    o->scene, o->max_render_seconds);
+            status = EXIT_SCENE;
+        } else {
+            fprintf(stderr, "hstrace: out of memory while rendering\n");
+            status = EXIT_IO;
+        }
         goto done;
     }
     t = clock_wall();
