@@ -226,6 +226,53 @@ check "... says so ($(head -1 "$work/err"))" \
     says "^mirrors-filtering.pov: the render ran for more than 0.5 s (--max-render-seconds); no image written\$"
 check "... no image written" [ ! -e "$work/out.png" ]
 
+# The output (issue 39): a read-only file in a writable folder was replaced
+# by the rename; POV-Ray cannot open it, and hstrace now refuses it too,
+# status 3, the file as it was. SIGTERM or SIGINT while the image is written
+# left the hidden temporary (.NAME.XXXXXX) beside it: the signal's handler
+# removes it, and the process ends by the signal.
+mkdir "$work/out"
+printf 'kept' >"$work/out/ro.png"
+chmod 444 "$work/out/ro.png"
+(cd "$work/files" && exec timeout -s KILL $limit "$hstrace" white.pov --width 8 --height 6 -o "$work/out/ro.png") \
+    >/dev/null 2>"$work/err"
+check_status "-o a read-only file: status 3" "$?" 3
+check "... refused ($(head -1 "$work/err"))" \
+    says "^hstrace: cannot write '.*/ro.png': Permission denied (the file is read-only: it is left as it is)\$"
+check "... the file as it was, nothing beside it" [ "$(cat "$work/out/ro.png")" = kept ] && [ "$(ls -A "$work/out")" = ro.png ]
+rm -f "$work/out/ro.png"
+# A shell starts a background command with SIGINT ignored: env puts its
+# default action back (GNU env; without it SIGINT is not tried).
+if env --default-signal=INT true 2>/dev/null; then sigs="TERM INT"; else sigs=TERM; fi
+for sig in $sigs; do
+    # A 3000x2000 PNG of one colour: rendered in a moment, written in about a
+    # second, long enough to see the temporary and signal the writer.
+    (cd "$work/files" && if [ "$sig" = INT ]; then set -- env --default-signal=INT; else set --; fi &&
+        exec "$@" "$hstrace" white.pov --width 3000 --height 2000 --threads 2 -o "$work/out/big.png") \
+        >/dev/null 2>&1 &
+    pid=$!
+    i=0
+    seen=""
+    while [ $i -lt 3000 ] && kill -0 $pid 2>/dev/null; do
+        for f in "$work/out"/.big.png.*; do [ -e "$f" ] && seen=$f; done
+        [ -n "$seen" ] && break
+        sleep 0.01
+        i=$((i + 1))
+    done
+    kill -s "$sig" "$pid" 2>/dev/null
+    wait $pid
+    status=$?
+    if [ -z "$seen" ]; then
+        not_ok "SIG$sig while the image is written: the temporary was seen (the writer ended before)"
+        continue
+    fi
+    case $sig in TERM) want=143 ;; *) want=130 ;; esac
+    check_status "SIG$sig while the image is written: ended by the signal" "$status" $want
+    left=$(find "$work/out" -mindepth 1 | tr '\n' ' ')
+    check "... no temporary left, no image ($left)" [ -z "$left" ]
+    rm -f "$work/out"/.big.png.* "$work/out/big.png"
+done
+
 # The budgets' options, given something that is no budget: bad usage.
 printf 'triangle { 0, x, y }\n' >"$work/files/ok.pov"
 for bad in "--max-memory 12Q" "--max-memory 0" "--max-parse-seconds -1" "--max-render-seconds 0" "--max-repeated-tokens 0" \

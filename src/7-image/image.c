@@ -127,7 +127,13 @@ int image_write(const char *path, const Image *img, const ImageWriteOptions *opt
         return -1;
     }
     if (atomic_file_open(&af, path) != 0) {
-        image_set_error(err, errlen, "cannot write '%s': %s", path, strerror(errno));
+        int e = errno;
+        struct stat st;
+        if (e == EACCES && stat(path, &st) == 0 && S_ISREG(st.st_mode))
+            image_set_error(err, errlen, "cannot write '%s': %s (the file is read-only: it is left as it is)", path,
+                            strerror(e));
+        else
+            image_set_error(err, errlen, "cannot write '%s': %s", path, strerror(e));
         return -1;
     }
     if (write_codec(&af, fmt, img, opt, why, (int)sizeof why) != 0) {
