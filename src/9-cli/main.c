@@ -445,13 +445,22 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
             goto done;
         }
         ropt.tiles = &tiles.source;
+        double render_start = clock_wall();
         int rc = render_image(&world, &grid, &ropt, &img, &report.render);
         double gather = clock_wall();
         if (mpi_tiles_end(&tiles, &tg, rc, &img, o->aov ? &aov : NULL, &report.render, per_rank, waits, tile_seconds)) {
-            fprintf(stderr, "hstrace: a rank ran out of memory while rendering\n");
+            /* The ranks share one verdict: past the time if this rank went past it or, near enough, would have. */
+            if (rc == RENDER_PAST_DEADLINE ||
+                (o->max_render_seconds > 0.0 && gather - render_start >= o->max_render_seconds)) {
+                fprintf(stderr, "%s: the render ran for more than %g s (--max-render-seconds); no image written\n",
+                        o->scene, o->max_render_seconds);
+                status = EXIT_SCENE;
+            } else {
+                fprintf(stderr, "hstrace: a rank ran out of memory while rendering\n");
+                status = EXIT_IO;
+            }
             if (rc == 0)
                 image_free(&img);
-            status = EXIT_IO;
             goto done;
         }
         report.gather_seconds = clock_wall() - gather;
