@@ -27,6 +27,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "memory_budget.h"
 #include "parser_internal.h"
 
 /* Stack kept back below the deepest token: what a production may use
@@ -79,13 +80,7 @@ void limits_stack_exhausted(Parser *p, SourcePos pos)
 
 size_t parse_default_max_memory(void)
 {
-    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
-    if (pages <= 0 || page <= 0)
-        return (size_t)4 << 30;
-    uintmax_t bytes = (uintmax_t)pages * (uintmax_t)page / 4;
-    if (bytes < ((uintmax_t)256 << 20))
-        bytes = (uintmax_t)256 << 20;
-    return bytes > SIZE_MAX ? SIZE_MAX : (size_t)bytes;
+    return memory_budget_default();
 }
 
 void limits_init_memory(Parser *p)
@@ -100,22 +95,6 @@ size_t limits_memory_left(const Parser *p)
     return p->budget.used < p->budget.limit ? p->budget.limit - p->budget.used : 0;
 }
 
-/* 1.5 GiB, 256 MiB, 12 KiB: a size as people read it. */
-static void format_size(char *buf, size_t n, size_t bytes)
-{
-    static const char *const units[] = { "bytes", "KiB", "MiB", "GiB", "TiB" };
-    double v = (double)bytes;
-    int u = 0;
-    while (v >= 1024.0 && u < 4) {
-        v /= 1024.0;
-        u++;
-    }
-    if (u == 0)
-        snprintf(buf, n, "%zu bytes", bytes);
-    else
-        snprintf(buf, n, v < 10.0 && v != (double)(long)v ? "%.1f %s" : "%.0f %s", v, units[u]);
-}
-
 void limits_over_budget(Parser *p, SourcePos pos)
 {
     p->budget.exceeded = 1;
@@ -127,7 +106,7 @@ void parse_fail_memory(Parser *p, SourcePos pos)
     if (!p->budget.exceeded)
         parse_fail(p, pos, "out of memory");
     char limit[32];
-    format_size(limit, sizeof limit, p->budget.limit);
+    memory_size_text(limit, sizeof limit, p->budget.limit);
     parse_fail(p, pos, "the scene needs more than %s of memory while it is parsed (--max-memory sets the budget)",
                limit);
 }

@@ -170,7 +170,9 @@ SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const c
     LoadedPicture pic;
     char why[256] = "";
     const ImageGammaPlan plan = image_gamma_plan(p, gamma_correct, override_given, override);
-    if (p->opts->load_image(p->opts->load_image_user, path, plan.decode, plan.untagged, premultiplied, &pic, why,
+    size_t left = limits_memory_left(p); /* 0 would mean no limit: at least a byte */
+    if (p->opts->load_image(p->opts->load_image_user, path, plan.decode, plan.untagged, premultiplied,
+                            left ? left : 1, &pic, why,
                             (int)sizeof why)) {
         free(pic.rgba);
         free(pic.index);

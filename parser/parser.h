@@ -54,14 +54,17 @@ typedef struct {
      * that names none (POV-Ray's defaultGamma), IMAGE_GAMMA_FILE_DEFAULT
      * for its type's own. premultiplied: -1 the format's own reading (EXR
      * premultiplied, the others straight), else `premultiplied`'s value.
-     * Returns 0, or -1 with the reason in err (the parser names the file
-     * and the position). NULL: pictures are refused. */
+     * max_bytes: the memory the parse's budget has left, which a picture
+     * (and the parser's copy of it) must fit, checked from its header
+     * before it is decoded. Returns 0, or -1 with the reason in err (the
+     * parser names the file and the position). NULL: pictures are
+     * refused. */
+    int (*load_image)(void *user, const char *path, double decoding_gamma, double untagged_gamma, int premultiplied,
+                      size_t max_bytes, LoadedPicture *out, char *err, int errlen);
     /* +MV3.7: the language version is set (3.7) before the first line, as
      * POV-Ray's kPOVAttrib_Version does: no #version needed, and the gamma
      * mode stays as it starts (image_gamma.c). */
     int language_version_given;
-    int (*load_image)(void *user, const char *path, double decoding_gamma, double untagged_gamma, int premultiplied,
-                      LoadedPicture *out, char *err, int errlen);
     void *load_image_user;
     /* POV-Ray's console streams turned off (-GD, -GW, -GA): #debug text
      * and warnings (#warning, the parser's own) are not printed. Errors

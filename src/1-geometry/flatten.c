@@ -10,7 +10,10 @@
 #include <string.h>
 
 #include "big_memory.h"
+#include "clock.h"
+#include "memory_budget.h"
 #include "parallel.h"
+#include "world_estimate.h"
 
 typedef struct {
     World *w;
@@ -24,6 +27,9 @@ typedef struct {
     size_t map_slots, map_used;
     int failed;
     int threads;          /* a big mesh's faces are made on up to this many (fill_faces) */
+    double deadline;      /* WorldLimits.deadline: 0 none */
+    long objects;         /* objects flattened so far, for the clock's checks */
+    int timed_out;        /* the deadline passed */
 } Builder;
 
 /* Grows *array (of `size`-byte items) so that index `need` fits. */
@@ -769,6 +775,11 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
     in.double_illuminate |= o->double_illuminate;
     in.hollow |= o->hollow;
 
+    /* The clock read every 1024 objects: a few microseconds in ten thousands. */
+    if (b->deadline > 0.0 && (++b->objects & 1023) == 0 && clock_wall() > b->deadline) {
+        b->timed_out = 1;
+        return -1;
+    }
     if (o->kind == OBJ_UNION) {
         for (int i = 0; i < o->u.csg.nchildren; i++)
             if (flatten_object(b, o->u.csg.children[i], &in, scene, depth + 1))
@@ -815,20 +826,72 @@ int world_build(World *w, const Scene *scene, WorldError *err) { return world_bu
 
 int world_build_threads(World *w, const Scene *scene, int threads, WorldError *err)
 {
+    return world_build_limited(w, scene, threads, NULL, err);
+}
+
+/* The world the scene's objects will make, held to limits->max_memory
+ * before anything is made: 0, or -1 with the message at the first
+ * top-level object that takes it past (or out of memory to count). */
+static int within_memory(const Scene *scene, const WorldLimits *limits, WorldError *err)
+{
+    if (!limits || limits->max_memory == 0 || scene->nobjects == 0)
+        return 0;
+    WorldEstimate *e = world_estimate_new();
+    double total = 0.0, polygons = 0.0;
+    for (int i = 0; e && i < scene->nobjects; i++) {
+        double b, n;
+        if (world_estimate_object(e, scene->objects[i], &b, &n))
+            break;
+        total += b;
+        polygons += n;
+        if (total > (double)limits->max_memory) {
+            char need[32], limit[32];
+            memory_size_text(need, sizeof need, total >= (double)SIZE_MAX ? SIZE_MAX : (size_t)total);
+            memory_size_text(limit, sizeof limit, limits->max_memory);
+            snprintf(err->message, sizeof err->message,
+                     "the world built from the scene would take %s (%.0f polygons) with this object, more than the "
+                     "memory budget of %s (--max-memory sets it)",
+                     need, polygons, limit);
+            err->pos = scene->objects[i]->pos;
+            err->over_budget = 1;
+            world_estimate_free(e);
+            return -1;
+        }
+        if (i == scene->nobjects - 1) {
+            world_estimate_free(e);
+            return 0;
+        }
+    }
+    world_estimate_free(e);
+    snprintf(err->message, sizeof err->message, "out of memory while counting the scene's polygons");
+    return -1;
+}
+
+int world_build_limited(World *w, const Scene *scene, int threads, const WorldLimits *limits, WorldError *err)
+{
     memset(w, 0, sizeof *w);
     memset(err, 0, sizeof *err);
+    if (within_memory(scene, limits, err))
+        return -1;
     w->bounds_min = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
     w->bounds_max = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
     w->noise_generator = scene_noise_generator(scene);
     w->number_of_waves = scene->globals.number_of_waves;
-    Builder b = { .w = w, .threads = threads };
+    Builder b = { .w = w, .threads = threads, .deadline = limits ? limits->deadline : 0.0 };
     Inherited root;
     memset(&root, 0, sizeof root);
     transform_identity(&root.transform);
     transform_identity(&root.texture_space);
     for (int i = 0; i < scene->nobjects; i++) {
         if (flatten_object(&b, scene->objects[i], &root, scene, 0) || b.failed) {
-            snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
+            if (b.timed_out)
+                snprintf(err->message, sizeof err->message,
+                         "building the world from the scene took more than the %g s of --max-parse-seconds (the "
+                         "parse and the build together), in this object",
+                         limits->max_seconds);
+            else
+                snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
+            err->over_budget = b.timed_out;
             err->pos = scene->objects[i]->pos;
             free(b.map_keys);
             free(b.map_index);

@@ -174,14 +174,32 @@ typedef struct {
 
 typedef struct {
     char message[512];
-    SourcePos pos;
+    SourcePos pos;     /* the top-level object being built; file NULL: none */
+    int over_budget;   /* 1: a budget of WorldLimits was crossed (a scene error), 0: out of memory */
 } WorldError;
+
+/* What a build may use (world_build_limited). */
+typedef struct {
+    /* Bytes the world may take (0: no limit): the polygons, points,
+     * materials ... a flattening will make are counted from the scene's
+     * tree before any is made, top-level object by top-level object, and
+     * the first that takes the world past it is refused. */
+    size_t max_memory;
+    /* clock_wall() time the build must end by (0: none), checked as it
+     * goes; what it stands for (--max-parse-seconds) is in max_seconds. */
+    double deadline;
+    double max_seconds;
+} WorldLimits;
 
 /* Returns 0, or -1 with err filled (e.g. out of memory). */
 int world_build(World *w, const Scene *scene, WorldError *err);
 /* world_build with a big mesh's faces made on up to `threads` threads:
  * the same world, bit for bit, for any number (tests/test_modelling.c). */
 int world_build_threads(World *w, const Scene *scene, int threads, WorldError *err);
+/* world_build_threads within the limits given (NULL: none); crossing one is
+ * an error with the position of the top-level object that crossed it
+ * (WorldError.over_budget). */
+int world_build_limited(World *w, const Scene *scene, int threads, const WorldLimits *limits, WorldError *err);
 void world_free(World *w);
 
 #endif

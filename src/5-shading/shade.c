@@ -10,6 +10,7 @@
 #include "aov_pixel.h"
 #include "area_diffuse.h"
 #include "area_light.h"
+#include "clock.h"
 #include "fog.h"
 #include "intersect.h"
 #include "pigment.h"
@@ -602,6 +603,11 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
     memset(out, 0, sizeof *out);
     if (level >= w->max_trace_level || weight < w->adc_bailout)
         return;
+    if (ctx->deadline > 0.0 && (ctx->expired || (++ctx->rays_unchecked >= SHADE_CLOCK_RAYS &&
+                                                 (ctx->rays_unchecked = 0, clock_wall() > ctx->deadline)))) {
+        ctx->expired = 1;
+        return;
+    }
     Hit hit;
     ctx->shadow.tracer.hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);
     int found = trace_nearest(&ctx->shadow.tracer, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);

@@ -37,7 +37,16 @@ typedef struct {
     Quality quality;
     ShadeCounters stats;
     struct AovPixel *aov;     /* --aov: the current pixel's record, or NULL when off */
+    /* --max-render-seconds: the clock_wall() time the render must end by (0:
+     * none), read every SHADE_CLOCK_RAYS rays; once past it, `expired` is
+     * set and every ray returns black at once (a ray tree of 2^256 rays is
+     * one pixel's: a check per tile alone would never come). */
+    double deadline;
+    unsigned rays_unchecked;
+    int expired;
 } ShadeContext;
+
+#define SHADE_CLOCK_RAYS 1024
 
 #define MAX_INTERIOR_NESTING 16
 

@@ -37,7 +37,7 @@ static int parse_int(const char *s, int lo, int hi, int *out)
 
 /* A size in bytes: a whole or decimal number, then K, M, G or T (powers
  * of 1024; "KiB", "MB" ... and lower case too), none for bytes. */
-static int parse_size(const char *s, size_t *out)
+int options_parse_size(const char *s, size_t *out)
 {
     char *end;
     errno = 0;
@@ -142,9 +142,13 @@ void options_usage(FILE *f)
             "      --strict           refuse what hstrace only approximates (patterns and normals it\n"
             "                         does not model, warps, layered textures, radiosity, photons,\n"
             "                         focal blur, ...: APPROXIMATIONS in the man page)\n"
-            "      --max-memory SIZE  memory the scene may take while it is parsed, e.g. 512M or 8G\n"
-            "                         (default: a quarter of the physical memory)\n"
-            "      --max-parse-seconds S  stop a parse running longer (default: no time limit)\n"
+            "      --max-memory SIZE  memory the scene may take while it is parsed, and the world\n"
+            "                         built from it, e.g. 512M or 8G (default: a quarter of the\n"
+            "                         physical memory)\n"
+            "      --max-parse-seconds S  stop a parse, or the parse and the world's build together,\n"
+            "                         running longer (default: no time limit)\n"
+            "      --max-render-seconds S  stop a render running longer, writing no image\n"
+            "                         (status 2; default: no time limit)\n"
             "      --max-repeated-tokens N  tokens loops and macro calls may read again, a long\n"
             "                         one counting one per 16 bytes (default 20000000: stops an\n"
             "                         endless loop within seconds)\n"
@@ -1163,20 +1167,21 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
         } else if (is_long(a, "--max-memory")) {
             if (!(v = option_value(argc, argv, &i, "--max-memory", err, errlen)))
                 return -1;
-            if (parse_size(v, &opt->max_memory)) {
+            if (options_parse_size(v, &opt->max_memory)) {
                 snprintf(err, (size_t)errlen, "--max-memory '%s': expected a size such as 512M or 8G", v);
                 return -1;
             }
-        } else if (is_long(a, "--max-parse-seconds")) {
-            if (!(v = option_value(argc, argv, &i, "--max-parse-seconds", err, errlen)))
+        } else if (is_long(a, "--max-parse-seconds") || is_long(a, "--max-render-seconds")) {
+            const char *name = is_long(a, "--max-parse-seconds") ? "--max-parse-seconds" : "--max-render-seconds";
+            if (!(v = option_value(argc, argv, &i, name, err, errlen)))
                 return -1;
             char *end;
             double s = strtod(v, &end);
             if (end == v || *end != '\0' || !(s > 0.0 && s <= 1e9)) {
-                snprintf(err, (size_t)errlen, "--max-parse-seconds '%s': expected a number of seconds above 0", v);
+                snprintf(err, (size_t)errlen, "%s '%s': expected a number of seconds above 0", name, v);
                 return -1;
             }
-            opt->max_parse_seconds = s;
+            *(name[6] == 'p' ? &opt->max_parse_seconds : &opt->max_render_seconds) = s;
         } else if (is_long(a, "--max-repeated-tokens") || is_long(a, "--max-macro-calls") ||
                    is_long(a, "--max-loop-iterations")) {
             static const char *const names[] = { "--max-repeated-tokens", "--max-macro-calls", "--max-loop-iterations" };

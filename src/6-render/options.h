@@ -48,6 +48,8 @@ typedef struct {
     size_t max_memory;
     double max_parse_seconds;
     long max_loop_iterations, max_macro_calls, max_repeated_tokens;
+    /* --max-render-seconds: the render's own time (0: no limit). */
+    double max_render_seconds;
     const char *stats_json;
     int exr_float;
     int png16;
@@ -126,5 +128,8 @@ void options_usage(FILE *f);
  * *i), or NULL with a message in err. */
 int options_is_long(const char *arg, const char *name);
 const char *options_value(int argc, char **argv, int *i, const char *name, char *err, int errlen);
+/* A size in bytes as --max-memory takes it ("512M", "8G", "1.5GiB"):
+ * 0, or -1 when it is none. */
+int options_parse_size(const char *s, size_t *out);
 
 #endif

@@ -34,7 +34,9 @@ typedef struct {
     long total_pixels;
     int reported;            /* the progress line was printed (worker 0 only) */
     atomic_int failed;
+    atomic_int expired;      /* a thread went past the deadline: all stop */
     double start;
+    double deadline;         /* clock_wall() time, or 0 */
 } Job;
 
 typedef struct {
@@ -239,9 +241,14 @@ static void *worker_main(void *arg)
     ctx.shadow.reference_eps = shadow_reference_eps(job->grid);
     ctx.shadow.nth = shadows->nth;
     ctx.shadow.cost = shadows->cost;
+    ctx.deadline = job->deadline;
     double t0 = clock_thread_cpu();
     double last_report = 0.0;
     for (;;) {
+        if (job->deadline > 0.0 && (atomic_load(&job->expired) || clock_wall() > job->deadline)) {
+            atomic_store(&job->expired, 1);
+            break;
+        }
         int tile = opt->tiles ? opt->tiles->next(opt->tiles, wk->index) : atomic_fetch_add(&job->next_tile, 1);
         if (tile < 0 || tile >= job->tiles.ntiles)
             break;
@@ -252,6 +259,10 @@ static void *worker_main(void *arg)
         double *shadow_seconds = &ctx.shadow.stats.shadow_seconds;
         double tile_wall = clock_wall(), tile_cpu = clock_thread_cpu(), shadow_before = *shadow_seconds;
         long pixels = render_tile(&ctx, &loop, job, tile);
+        if (ctx.expired) {
+            atomic_store(&job->expired, 1);
+            break;
+        }
         atomic_fetch_add(&job->done_pixels, pixels);
         tile_wall = clock_wall() - tile_wall;
         tile_cpu = clock_thread_cpu() - tile_cpu;
@@ -327,7 +338,9 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
     atomic_init(&job.done_pixels, 0);
     job.total_pixels = (long)(job.tiles.x1 - job.tiles.x0) * (job.tiles.y1 - job.tiles.y0);
     atomic_init(&job.failed, 0);
+    atomic_init(&job.expired, 0);
     job.start = clock_wall();
+    job.deadline = opt->max_seconds > 0.0 ? job.start + opt->max_seconds : 0.0;
 
     int n = opt->threads < 1 ? 1 : opt->threads;
     Worker *workers = calloc((size_t)n, sizeof *workers);
@@ -359,9 +372,17 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
     free(tids);
     /* Without a tile source, every tile must have been taken; a source
      * keeps its own account of what was handed out. */
-    if (atomic_load(&job.failed) || (!opt->tiles && atomic_load(&job.next_tile) < job.tiles.ntiles)) {
+    if (atomic_load(&job.failed)) {
         image_free(img);
-        return -1;
+        return RENDER_OUT_OF_MEMORY;
+    }
+    if (atomic_load(&job.expired)) {
+        image_free(img);
+        return RENDER_PAST_DEADLINE;
+    }
+    if (!opt->tiles && atomic_load(&job.next_tile) < job.tiles.ntiles) {
+        image_free(img);
+        return RENDER_OUT_OF_MEMORY;
     }
     return 0;
 }

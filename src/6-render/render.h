@@ -38,7 +38,15 @@ typedef struct {
     /* When not NULL, the thread CPU seconds of each tile rendered here (the
      * tile grid's count of them), for the statistics' load balance. */
     double *tile_seconds;
+    /* --max-render-seconds: seconds the render may take from its start (0:
+     * no limit), checked by every thread before each tile and every
+     * SHADE_CLOCK_RAYS rays; past them every thread stops and render_image
+     * returns RENDER_PAST_DEADLINE (the pixels are then of no use). */
+    double max_seconds;
 } RenderOptions;
+
+/* render_image's failures. */
+enum { RENDER_OUT_OF_MEMORY = -1, RENDER_PAST_DEADLINE = -2 };
 
 /* The tiles a render is cut into: on the whole image's grid (POV-Ray's
  * anti-aliasing blocks from the area's corner), cut to the area rendered. */
@@ -57,7 +65,8 @@ void render_tile_area(const TileGrid *t, int tile, int *x0, int *y0, int *x1, in
 int render_default_threads(void);
 
 /* Renders into img (allocated here; with a tile source, only the tiles it
- * gave this process, the rest 0). Returns 0, or -1 when out of memory. */
+ * gave this process, the rest 0). Returns 0, or RENDER_OUT_OF_MEMORY, or
+ * RENDER_PAST_DEADLINE (img is then freed either way). */
 int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image *img, RenderStats *stats);
 
 #endif

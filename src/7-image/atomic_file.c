@@ -3,6 +3,8 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -43,8 +45,102 @@ static void random_suffix(char out[7], unsigned attempt)
     out[6] = '\0';
 }
 
+/* ---- the temporary removed on SIGINT, SIGTERM and SIGHUP ------------------
+ * An interrupted write would leave ".NAME.XXXXXX" beside the output. While
+ * a temporary exists, its path is in a slot the handler can read without
+ * locks or allocation (a fixed array, marked in use by a sig_atomic_t after
+ * the path is written); the handler unlinks every one in use, puts back the
+ * signal's former action and raises the signal again, so the process ends
+ * as the signal would have ended it (or the former handler runs). Only
+ * unlink, sigaction and raise are called there, all async-signal-safe.
+ * Handlers are installed while a temporary exists and put back after; a
+ * signal its process ignores stays ignored. Opened and committed from one
+ * thread at a time (hstrace writes its files from the main thread). */
+#define TMP_SLOTS 4
+
+static char tmp_slot_path[TMP_SLOTS][PATH_MAX];
+static volatile sig_atomic_t tmp_slot_used[TMP_SLOTS];
+static const int cleanup_signals[] = { SIGINT, SIGTERM, SIGHUP };
+#define NSIGNALS ((int)(sizeof cleanup_signals / sizeof cleanup_signals[0]))
+static struct sigaction former[NSIGNALS];
+static volatile sig_atomic_t installed[NSIGNALS];
+static int slots_in_use;
+
+static void on_signal(int sig)
+{
+    int e = errno;
+    for (int i = 0; i < TMP_SLOTS; i++)
+        if (tmp_slot_used[i])
+            (void)unlink(tmp_slot_path[i]);
+    for (int k = 0; k < NSIGNALS; k++)
+        if (cleanup_signals[k] == sig && installed[k]) {
+            (void)sigaction(sig, &former[k], NULL);
+            installed[k] = 0;
+        }
+    errno = e;
+    /* blocked while this handler runs: delivered, with the former action, once it returns */
+    (void)raise(sig);
+}
+
+static void install_handlers(void)
+{
+    for (int k = 0; k < NSIGNALS; k++) {
+        struct sigaction now, act;
+        if (sigaction(cleanup_signals[k], NULL, &now) != 0 || now.sa_handler == SIG_IGN)
+            continue; /* ignored (nohup): it ends nothing, so nothing to clean */
+        memset(&act, 0, sizeof act);
+        act.sa_handler = on_signal;
+        sigemptyset(&act.sa_mask);
+        for (int j = 0; j < NSIGNALS; j++) /* one handler at a time */
+            sigaddset(&act.sa_mask, cleanup_signals[j]);
+        former[k] = now;
+        if (sigaction(cleanup_signals[k], &act, NULL) == 0)
+            installed[k] = 1;
+    }
+}
+
+static void remove_handlers(void)
+{
+    for (int k = 0; k < NSIGNALS; k++)
+        if (installed[k]) {
+            installed[k] = 0;
+            (void)sigaction(cleanup_signals[k], &former[k], NULL);
+        }
+}
+
+/* The slot now guarding path, or -1 when none is free (or the path too
+ * long): that temporary is then left to atomic_file_abort alone. */
+static int guard(const char *path)
+{
+    size_t n = strlen(path);
+    if (n >= PATH_MAX)
+        return -1;
+    for (int i = 0; i < TMP_SLOTS; i++)
+        if (!tmp_slot_used[i]) {
+            memcpy(tmp_slot_path[i], path, n + 1);
+            atomic_signal_fence(memory_order_seq_cst); /* the path before the mark */
+            tmp_slot_used[i] = 1;
+            if (slots_in_use++ == 0)
+                install_handlers();
+            return i;
+        }
+    return -1;
+}
+
+static void unguard(AtomicFile *af)
+{
+    if (af->slot < 0)
+        return;
+    tmp_slot_used[af->slot] = 0;
+    atomic_signal_fence(memory_order_seq_cst);
+    af->slot = -1;
+    if (--slots_in_use == 0)
+        remove_handlers();
+}
+
 static void release(AtomicFile *af)
 {
+    unguard(af);
     free(af->tmp);
     free(af->target);
     af->tmp = NULL;
@@ -62,6 +158,7 @@ int atomic_file_open(AtomicFile *af, const char *target)
     af->fd = -1;
     af->tmp = NULL;
     af->target = NULL;
+    af->slot = -1;
     if (target == NULL || target[0] == '\0') {
         errno = ENOENT;
         return -1;
@@ -89,6 +186,15 @@ int atomic_file_open(AtomicFile *af, const char *target)
     /* Keep an existing target's permission bits; otherwise open() applies
      * the umask to 0666 as for any newly created file. */
     have_mode = stat(target, &st) == 0 && S_ISREG(st.st_mode);
+    /* A read-only file is not replaced, though its folder would let a
+     * rename do it: POV-Ray, which opens the file itself, is refused, and
+     * so is a user who asked for it to be kept. No write bit at all counts
+     * too, for root, whom access() lets write anything. */
+    if (have_mode && (access(target, W_OK) != 0 || (st.st_mode & 0222) == 0)) {
+        release(af);
+        errno = EACCES;
+        return -1;
+    }
 
     for (unsigned attempt = 0; attempt < 100; attempt++) {
         char suffix[7];
@@ -111,6 +217,7 @@ int atomic_file_open(AtomicFile *af, const char *target)
     }
     if (have_mode)
         (void)fchmod(af->fd, st.st_mode & 07777);
+    af->slot = guard(af->tmp);
     return 0;
 }
 
@@ -130,6 +237,8 @@ int atomic_file_commit(AtomicFile *af)
             return -1;
         }
     }
+    /* A signal from here on unlinks a name that is gone or renamed away:
+     * harmless. */
     if (rename(af->tmp, af->target) != 0) {
         e = errno;
         atomic_file_abort(af);

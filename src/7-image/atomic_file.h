@@ -10,11 +10,14 @@ typedef struct {
     int fd;       /* open for writing, or -1 once closed */
     char *tmp;    /* path of the temporary file (malloc'd), NULL when none */
     char *target; /* copy of the final path (malloc'd) */
+    int slot;     /* the signal handlers' record of tmp (atomic_file.c), or -1 */
 } AtomicFile;
 
 /* Creates the temporary file beside `target` (mode 0666 filtered by the
- * umask, or the existing target's permission bits). Returns 0, or -1 with
- * errno set and nothing left on disk. */
+ * umask, or the existing target's permission bits). Until it is committed
+ * or aborted, SIGINT, SIGTERM and SIGHUP remove it before they end the
+ * process. A target that exists read-only is refused (EACCES). Returns 0,
+ * or -1 with errno set and nothing left on disk. */
 int atomic_file_open(AtomicFile *af, const char *target);
 
 /* Closes the descriptor if it is still open (a writer that wrapped it in a

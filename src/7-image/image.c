@@ -15,6 +15,7 @@
 
 #include "atomic_file.h"
 #include "image_codec.h"
+#include "memory_budget.h"
 
 static double decode_working(double c, double gamma)
 {
@@ -126,7 +127,13 @@ int image_write(const char *path, const Image *img, const ImageWriteOptions *opt
         return -1;
     }
     if (atomic_file_open(&af, path) != 0) {
-        image_set_error(err, errlen, "cannot write '%s': %s", path, strerror(errno));
+        int e = errno;
+        struct stat st;
+        if (e == EACCES && stat(path, &st) == 0 && S_ISREG(st.st_mode))
+            image_set_error(err, errlen, "cannot write '%s': %s (the file is read-only: it is left as it is)", path,
+                            strerror(e));
+        else
+            image_set_error(err, errlen, "cannot write '%s': %s", path, strerror(e));
         return -1;
     }
     if (write_codec(&af, fmt, img, opt, why, (int)sizeof why) != 0) {
@@ -197,6 +204,65 @@ static int open_image(const char *path, char *err, int errlen)
     return fd;
 }
 
+/* The size the header of the open file declares (image_header_size), read
+ * through a descriptor of its own, the file's offset put back at its start
+ * for the decoder. Returns 0, or -1 when the header cannot tell. */
+static int declared_size(int fd, ImageFormat fmt, long *w, long *h)
+{
+    int copy = dup(fd);
+    FILE *fp = copy >= 0 ? fdopen(copy, "rb") : NULL;
+    if (fp == NULL) {
+        if (copy >= 0)
+            close(copy);
+        return -1;
+    }
+    int rc = image_header_size(fp, fmt, w, h);
+    fclose(fp);
+    if (lseek(fd, 0, SEEK_SET) != 0)
+        return -1;
+    return rc;
+}
+
+int image_read_size(const char *path, int *width, int *height, char *err, int errlen)
+{
+    if (err != NULL && errlen > 0)
+        err[0] = '\0';
+    int fd = open_image(path, err, errlen);
+    if (fd < 0)
+        return -1;
+    long w, h;
+    ImageFormat fmt = sniff(fd, path);
+    int rc = fmt != IMAGE_FORMAT_UNKNOWN && declared_size(fd, fmt, &w, &h) == 0;
+    close(fd);
+    if (!rc)
+        return 1;
+    *width = (int)w;
+    *height = (int)h;
+    return 0;
+}
+
+/* The memory budget held against the size the header declares: 0 when the
+ * picture fits (or the header cannot tell: the decoder's own checks bound
+ * it), -1 with the budget's message. */
+static int within_budget(int fd, ImageFormat fmt, const char *path, const ImageReadExtras *ex, char *err,
+                         int errlen)
+{
+    long w, h;
+    if (ex == NULL || ex->max_bytes == 0 || declared_size(fd, fmt, &w, &h) != 0)
+        return 0;
+    double need = (double)w * (double)h * (double)(ex->bytes_per_pixel ? ex->bytes_per_pixel : 16);
+    if (need <= (double)ex->max_bytes)
+        return 0;
+    char needs[32], left[32];
+    memory_size_text(needs, sizeof needs, need >= (double)SIZE_MAX ? SIZE_MAX : (size_t)need);
+    memory_size_text(left, sizeof left, ex->max_bytes);
+    image_set_error(err, errlen,
+                    "cannot read '%s': its %ldx%ld pixels would take %s, more than the %s left of the memory budget "
+                    "(--max-memory sets it)",
+                    path, w, h, needs, left);
+    return -1;
+}
+
 int image_read(const char *path, Image *img, double display_gamma, char *err, int errlen)
 {
     return image_read_ex(path, img, display_gamma, NULL, err, errlen);
@@ -227,6 +293,10 @@ int image_read_ex(const char *path, Image *img, double display_gamma, ImageReadE
     if (fd < 0)
         return -1;
     fmt = sniff(fd, path);
+    if (fmt != IMAGE_FORMAT_UNKNOWN && within_budget(fd, fmt, path, ex, err, errlen)) {
+        close(fd);
+        return -1;
+    }
     why[0] = '\0';
     if (ex != NULL)
         ex->format = fmt;
@@ -324,7 +394,7 @@ static void decode_linear_override(Image *img, double gamma)
 }
 
 int image_read_for_scene(void *user, const char *path, double decoding_gamma, double untagged_gamma,
-                         int premultiplied, LoadedPicture *out, char *err, int errlen)
+                         int premultiplied, size_t max_bytes, LoadedPicture *out, char *err, int errlen)
 {
     (void)user;
     Image img;
@@ -333,6 +403,10 @@ int image_read_for_scene(void *user, const char *path, double decoding_gamma, do
     ex.keep_straight = 1;
     ex.untagged_given = untagged_gamma != IMAGE_GAMMA_AS_POVRAY;
     ex.untagged_gamma = untagged_gamma;
+    /* The pixels as read (16 bytes), the parser's copy of them (16), and a
+     * colour-mapped picture's indices, read and copied (1 + 1). */
+    ex.max_bytes = max_bytes;
+    ex.bytes_per_pixel = 34;
     memset(out, 0, sizeof *out);
     if (image_read_ex(path, &img, decoding_gamma, &ex, err, errlen))
         return -1;

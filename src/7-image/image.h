@@ -93,6 +93,13 @@ typedef struct {
     double untagged_gamma;
     /* Out: the file's format. */
     ImageFormat format;
+    /* In: the memory the picture may take, checked against the size its
+     * header declares before anything is decoded: width x height x
+     * bytes_per_pixel (the 16 of linear RGBA floats, plus whatever the
+     * caller keeps besides them) more than max_bytes is refused with the
+     * budget's message. max_bytes 0: no limit but the readers' own. */
+    size_t max_bytes;
+    size_t bytes_per_pixel;
     /* Out: the colours returned are premultiplied by alpha (with
      * keep_straight: only an EXR's, as stored; otherwise always). */
     int premultiplied;
@@ -105,15 +112,24 @@ typedef struct {
     unsigned char *index;
 } ImageReadExtras;
 
+/* The size a picture declares in its header, before anything is decoded
+ * (`hstrace compare` holds its images to each other and to the memory
+ * budget with it). Returns 0 with width and height; 1 when the header
+ * cannot tell (image_read then says what is wrong with the file); -1 with a
+ * message "cannot read 'PATH': reason" when the file cannot be opened or
+ * is no regular file. */
+int image_read_size(const char *path, int *width, int *height, char *err, int errlen);
+
 /* image_read with the extras above (NULL: image_read itself). */
 int image_read_ex(const char *path, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen);
 /* The parser's ParseOptions.load_image (scene.h's LoadedPicture): a
  * picture of image_map, bump_map or material_map with its colours as the
  * file stores them, and POV-Ray 3.7's reading of them (premultiplied for
- * EXR, straight for the others, unless `premultiplied` says otherwise);
- * `user` is unused. */
+ * EXR, straight for the others, unless `premultiplied` says otherwise),
+ * refused from its header when it needs more than max_bytes (0: no
+ * limit), counting the parser's copy of it too; `user` is unused. */
 int image_read_for_scene(void *user, const char *path, double decoding_gamma, double untagged_gamma, int premultiplied,
-                         LoadedPicture *out, char *err, int errlen);
+                         size_t max_bytes, LoadedPicture *out, char *err, int errlen);
 
 /* Reads the named channels of a scanline EXR (part 0) as float planes of
  * width*height samples (malloc'd, row 0 at the top; half and uint are

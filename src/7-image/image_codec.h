@@ -117,4 +117,10 @@ int image_bmp_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *
 int image_jpeg_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
 int image_hdr_read(FILE *fp, Image *img, char *err, int errlen);
 
+/* The width and height a file of format fmt declares, read from its header
+ * at fp's position (image_size.c). Returns 0, or -1 when the header cannot
+ * tell (damaged, cut short, or an empty image): then the decoder reads the
+ * file and says what is wrong with it. */
+int image_header_size(FILE *fp, ImageFormat fmt, long *width, long *height);
+
 #endif

@@ -2,6 +2,7 @@
  * and say by the exit status whether the limits were met. */
 #include "compare.h"
 
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,7 @@
 #include "image.h"
 #include "image_compare.h"
 #include "mask_compare.h"
+#include "memory_budget.h"
 
 #define PROGRAM "hstrace compare"
 
@@ -63,6 +65,53 @@ static int mask_pair_from_channels(const char *path, const Image *render, Image 
     return rc;
 }
 
+/* The sizes the images declare, held to each other and to the memory
+ * budget before any is decoded: a PNG of 260 KB may declare 16384x16384
+ * pixels, 4 GiB decoded, and a file of another size is refused without
+ * being read. A header that cannot tell is left to the decoding, which
+ * says what is wrong with its file. Returns 0, or -1 with a message. */
+static int check_sizes(const CompareOptions *opt, const char *const *path, int nread)
+{
+    int w[6], h[6], known[6];
+    char err[1024];
+    for (int k = 0; k < nread; k++) {
+        int rc = image_read_size(path[k], &w[k], &h[k], err, sizeof err);
+        if (rc < 0) {
+            fprintf(stderr, PROGRAM ": %s: %s\n", path[k], reason(err, "cannot read", path[k]));
+            return -1;
+        }
+        known[k] = rc == 0;
+    }
+    int first = -1;
+    for (int k = 0; k < nread; k++) {
+        if (!known[k])
+            continue;
+        if (first < 0) {
+            first = k;
+        } else if (w[k] != w[first] || h[k] != h[first]) {
+            fprintf(stderr, PROGRAM ": %s: %dx%d pixels, but %s has %dx%d\n", path[k], w[k], h[k], path[first],
+                    w[first], h[first]);
+            return -1;
+        }
+    }
+    if (first < 0)
+        return 0;
+    /* Per pixel: each image read (linear RGBA floats), B's three shadow
+     * planes and the pair made of them, the heat map and the mask map. */
+    double per_pixel = 16.0 * nread + (opt->mask_b_from_aov ? 12.0 + 32.0 : 0.0) + (opt->diff ? 16.0 : 0.0) +
+                       (opt->mask_map ? 16.0 : 0.0);
+    double need = per_pixel * (double)w[first] * (double)h[first];
+    size_t budget = opt->max_memory ? opt->max_memory : memory_budget_default();
+    if (need <= (double)budget)
+        return 0;
+    char needs[32], limit[32];
+    memory_size_text(needs, sizeof needs, need >= (double)SIZE_MAX ? SIZE_MAX : (size_t)need);
+    memory_size_text(limit, sizeof limit, budget);
+    fprintf(stderr, PROGRAM ": %s: %dx%d pixels: comparing would take %s, more than the memory budget of %s "
+            "(--max-memory sets it)\n", path[first], w[first], h[first], needs, limit);
+    return -1;
+}
+
 int compare_main(int argc, char **argv)
 {
     CompareOptions opt;
@@ -85,6 +134,8 @@ int compare_main(int argc, char **argv)
     memset(&diff, 0, sizeof diff);
     memset(&map, 0, sizeof map);
     int status = COMPARE_EXIT_TROUBLE;
+    if (check_sizes(&opt, path, nread))
+        goto done;
     for (int k = 0; k < nread; k++)
         if (image_read(path[k], &img[k], 0.0, err, sizeof err)) {
             fprintf(stderr, PROGRAM ": %s: %s\n", path[k], reason(err, "cannot read", path[k]));

@@ -37,6 +37,8 @@ void compare_options_usage(FILE *f)
             "      --diff FILE        write a heat map of |A - B| (.exr, .png, .ppm, .tga, .bmp, .jpg, .hdr)\n"
             "      --mask-map FILE    write the shadow-mask verdicts as an image\n"
             "      --json             print the figures as JSON\n"
+            "      --max-memory SIZE  memory the images may take, e.g. 512M or 8G (default: a quarter\n"
+            "                         of the physical memory); checked from their headers\n"
             "      --help             show this help\n"
             "\n"
             "Limits (exit status 1 when one given is not met; NaN or infinite pixels fail any):\n"
@@ -174,6 +176,13 @@ int compare_options_parse(int argc, char **argv, CompareOptions *opt, char *err,
                 check_image_name("--mask-map", v, err, errlen))
                 return -1;
             opt->mask_map = v;
+        } else if (options_is_long(a, "--max-memory")) {
+            if (!(v = options_value(argc, argv, &i, "--max-memory", err, errlen)))
+                return -1;
+            if (options_parse_size(v, &opt->max_memory)) {
+                snprintf(err, (size_t)errlen, "--max-memory '%s': expected a size such as 512M or 8G", v);
+                return -1;
+            }
         } else if ((rc = parse_limit(argc, argv, &i, opt, err, errlen)) <= 0) {
             if (rc < 0)
                 return -1;

@@ -4,6 +4,7 @@
 #ifndef HST_COMPARE_OPTIONS_H
 #define HST_COMPARE_OPTIONS_H
 
+#include <stddef.h>
 #include <stdio.h>
 
 /* The limits, one option each. A limit given and not met makes the exit
@@ -41,6 +42,7 @@ typedef struct {
     const char *diff;                  /* --diff FILE: heat map of |A - B| */
     const char *mask_map;              /* --mask-map FILE: the shadow-mask verdicts */
     int json;                          /* --json */
+    size_t max_memory;                 /* --max-memory: what the images may take (0: memory_budget_default) */
     int help;
 } CompareOptions;
 

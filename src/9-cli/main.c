@@ -87,7 +87,7 @@ typedef struct {
     int writes;            /* this process writes the image and the report */
     int threads;
     double working_gamma;
-    double preprocess_start;
+    double parse_start, preprocess_start;
 } Frame;
 
 static void frame_free(Frame *f)
@@ -202,6 +202,7 @@ static int parse_scene(Frame *f, const Options *o, const ParseAnimation *anim, c
     int spare_core = f->threads > 1;
     scene_hash_start(&f->scene_hash, o->scene, spare_core && image_format_from_path(output) == IMAGE_FORMAT_EXR);
     double t = clock_wall();
+    f->parse_start = t;
     ParseError perr;
     f->scene = parse_scene_file(o->scene, &popt, &perr);
     if (!f->scene) {
@@ -231,9 +232,18 @@ static int build_world(Frame *f, const Options *o)
     f->preprocess_start = clock_wall();
     f->working_gamma = scene_working_gamma(f->scene);
     WorldError werr;
-    if (world_build_threads(&f->world, f->scene, f->threads, &werr)) {
-        fprintf(stderr, "hstrace: %s\n", werr.message);
-        return EXIT_IO;
+    /* The world's build is held to the parse's budgets: the memory (its
+     * own, counted before anything is made) and the time (the parse's and
+     * the build's together). */
+    WorldLimits wlim = { o->max_memory ? o->max_memory : parse_default_max_memory(),
+                         o->max_parse_seconds > 0.0 ? f->parse_start + o->max_parse_seconds : 0.0,
+                         o->max_parse_seconds };
+    if (world_build_limited(&f->world, f->scene, f->threads, &wlim, &werr)) {
+        if (werr.pos.file && werr.pos.line > 0)
+            fprintf(stderr, "%s:%d:%d: %s\n", werr.pos.file, werr.pos.line, werr.pos.column, werr.message);
+        else
+            fprintf(stderr, "hstrace: %s\n", werr.message);
+        return werr.over_budget ? EXIT_SCENE : EXIT_IO;
     }
     f->world.alpha_background = o->output_alpha;
     /* The world has its own copy of the meshes now: their lists go before
@@ -317,6 +327,7 @@ static int set_render_options(Frame *f, const Options *o, int distributed, const
     ropt->x1 = o->area_x1;
     ropt->y1 = o->area_y1;
     ropt->threads = f->threads;
+    ropt->max_seconds = o->max_render_seconds;
     ropt->quality = quality_from_level(o->quality);
     ropt->shadows = &f->shadows;
     ropt->bvh = &f->bvh;
@@ -345,6 +356,15 @@ static int set_render_options(Frame *f, const Options *o, int distributed, const
     return EXIT_OK;
 }
 
+/* A render that went past --max-render-seconds: a budget crossed, as the
+ * parse's are, a scene error named by its file (no one place is to blame). */
+static int past_deadline(const Options *o)
+{
+    fprintf(stderr, "%s: the render ran for more than %g s (--max-render-seconds); no image written\n", o->scene,
+            o->max_render_seconds);
+    return EXIT_SCENE;
+}
+
 /* The render: in this process, or with the tiles from rank 0 and the
  * pixels and counters back to it (only rank 0 then writes). */
 static int render(Frame *f, const Options *o, int distributed)
@@ -352,7 +372,10 @@ static int render(Frame *f, const Options *o, int distributed)
     RenderOptions *ropt = &f->ropt;
     f->writes = 1;
     if (!distributed) {
-        if (render_image(&f->world, &f->grid, ropt, &f->img, &f->report.render)) {
+        int rc = render_image(&f->world, &f->grid, ropt, &f->img, &f->report.render);
+        if (rc == RENDER_PAST_DEADLINE)
+            return past_deadline(o);
+        if (rc != 0) {
             fprintf(stderr, "hstrace: out of memory while rendering\n");
             return EXIT_IO;
         }
@@ -374,11 +397,15 @@ static int render(Frame *f, const Options *o, int distributed)
         return EXIT_IO;
     }
     ropt->tiles = &tiles.source;
+    double render_start = clock_wall();
     int rc = render_image(&f->world, &f->grid, ropt, &f->img, &f->report.render);
     f->have_img = rc == 0;
     double gather = clock_wall();
     if (mpi_tiles_end(&tiles, &tg, rc, &f->img, o->aov ? &f->aov : NULL, &f->report.render, f->per_rank, f->waits,
                       f->tile_seconds)) {
+        /* The ranks share one verdict: past the time if this rank went past it or, near enough, would have. */
+        if (rc == RENDER_PAST_DEADLINE || (o->max_render_seconds > 0.0 && gather - render_start >= o->max_render_seconds))
+            return past_deadline(o);
         fprintf(stderr, "hstrace: a rank ran out of memory while rendering\n");
         return EXIT_IO;
     }
