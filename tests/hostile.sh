@@ -292,11 +292,35 @@ done
 # The render's time budget: the message names the scene and the option.
 rm -f "$work/out.png"
 (cd "$scenes" && exec timeout -s KILL $limit "$hstrace" mirrors-filtering.pov --width 16 --height 12 --threads 2 \
-    --max-render-seconds 0.5 -o "$work/out.png") >/dev/null 2>"$work/err"
+    --max-render-seconds 0.5 --max-tree-rays 0 -o "$work/out.png") >/dev/null 2>"$work/err"
 check_status "mirrors-filtering.pov, --max-render-seconds 0.5 on 2 threads: status 2 within $limit s" "$?" 2
 check "... says so ($(head -1 "$work/err"))" \
     says "^mirrors-filtering.pov: the render ran for more than 0.5 s (--max-render-seconds); no image written\$"
 check "... no image written" [ ! -e "$work/out.png" ]
+
+# The ray tree's budget, on by default (a tree that splits at every level
+# of 256 never ends): deterministic, the same message on 1 and 2 threads;
+# --max-tree-rays 0 turns it off (then the render budget must stop it), and
+# a tree held within it renders.
+for threads in 1 2; do
+    rm -f "$work/out.png"
+    (cd "$scenes" && exec timeout -s KILL $limit "$hstrace" mirrors-filtering-tree.pov --width 16 --height 12 \
+        --threads $threads -o "$work/out.png") >/dev/null 2>"$work/err"
+    check_status "mirrors-filtering-tree.pov on $threads thread(s), no option: status 2 within $limit s" "$?" 2
+    check "... says so ($(head -1 "$work/err"))" \
+        says "^mirrors-filtering-tree.pov: a camera ray's tree of reflected and transmitted rays held more than 1048576 rays (max_trace_level 256, adc_bailout 0.00392157): lower max_trace_level, raise adc_bailout, or raise --max-tree-rays; no image written\$"
+    check "... no image written" [ ! -e "$work/out.png" ]
+done
+(cd "$scenes" && exec timeout -s KILL $limit "$hstrace" mirrors-filtering-tree.pov --width 16 --height 12 \
+    --max-tree-rays 0 --max-render-seconds 0.5 -o "$work/out.png") >/dev/null 2>"$work/err"
+check_status "--max-tree-rays 0 turns the tree's budget off: the render budget stops it, status 2" "$?" 2
+check "... by the render budget ($(head -1 "$work/err"))" says "(--max-render-seconds); no image written\$"
+(cd "$scenes" && exec timeout -s KILL $limit "$hstrace" mirrors-256.pov --width 16 --height 12 \
+    --max-tree-rays 256 -o "$work/out.png") >/dev/null 2>"$work/err"
+check_status "--max-tree-rays 256: two facing mirrors' tree of 256 rays renders" "$?" 0
+(cd "$scenes" && exec timeout -s KILL $limit "$hstrace" mirrors-256.pov --width 16 --height 12 \
+    --max-tree-rays 255 -o "$work/out.png") >/dev/null 2>"$work/err"
+check_status "--max-tree-rays 255: ... and one ray fewer is refused, status 2" "$?" 2
 
 # The output (issue 39): a read-only file in a writable folder was replaced
 # by the rename; POV-Ray cannot open it, and hstrace now refuses it too,
@@ -346,7 +370,7 @@ for sig in $sigs; do
 done
 
 # The budgets' options, given something that is no budget: bad usage.
-for bad in "--max-memory 12Q" "--max-memory 0" "--max-parse-seconds -1" "--max-render-seconds 0" "--max-repeated-tokens 0" \
+for bad in "--max-memory 12Q" "--max-memory 0" "--max-parse-seconds -1" "--max-render-seconds 0" "--max-tree-rays -1" "--max-tree-rays x" "--max-repeated-tokens 0" \
     "--max-macro-calls 1.5" "--max-loop-iterations x"; do
     # shellcheck disable=SC2086 # the option and its value are two words
     (cd "$work/files" && exec "$hstrace" ok.pov -o "$work/out.png" $bad) >/dev/null 2>"$work/err"

@@ -592,6 +592,7 @@ static int trace_refraction(ShadeContext *ctx, const Ray *ray, const Hit *hit, c
 
 void shade_trace(ShadeContext *ctx, const Ray *ray, double weight, int level, Radiance *out)
 {
+    ctx->tree_rays_left = ctx->max_tree_rays;
     trace_ray(ctx, ray, weight, level, 0, out);
 }
 
@@ -607,6 +608,13 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
                                                  (ctx->rays_unchecked = 0, clock_wall() > ctx->deadline)))) {
         ctx->expired = 1;
         return;
+    }
+    if (ctx->max_tree_rays) {
+        if (ctx->tree_overflow || ctx->tree_rays_left == 0) {
+            ctx->tree_overflow = 1;
+            return;
+        }
+        ctx->tree_rays_left--;
     }
     Hit hit;
     ctx->shadow.tracer.hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);

@@ -44,6 +44,11 @@ typedef struct {
     double deadline;
     unsigned rays_unchecked;
     int expired;
+    /* --max-tree-rays: the rays one camera ray's tree may hold (0: no
+     * limit), what is left of them in the current tree, and whether a tree
+     * went past it (then every ray returns black at once). */
+    uint64_t max_tree_rays, tree_rays_left;
+    int tree_overflow;
 } ShadeContext;
 
 #define SHADE_CLOCK_RAYS 1024

@@ -149,6 +149,8 @@ void options_usage(FILE *f)
             "                         running longer (default: no time limit)\n"
             "      --max-render-seconds S  stop a render running longer, writing no image\n"
             "                         (status 2; default: no time limit)\n"
+            "      --max-tree-rays N  rays one camera ray's tree of reflected and transmitted rays\n"
+            "                         may hold, else no image (status 2; default 1048576, 0: none)\n"
             "      --max-repeated-tokens N  tokens loops and macro calls may read again, a long\n"
             "                         one counting one per 16 bytes (default 20000000: stops an\n"
             "                         endless loop within seconds)\n"
@@ -1038,6 +1040,11 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     opt->quality = 9;
     opt->shadows = "hst";
     opt->nth = (NthSetting){ NTH_AUTO, 0.0 };
+    /* A ray tree that splits at every level (reflecting, see-through
+     * surfaces with adc_bailout 0) is 2^max_trace_level rays in one pixel:
+     * it would never end (POV-Ray crashes). 2^20 rays, about a second,
+     * is far beyond what a pixel of a scene that can be rendered holds. */
+    opt->max_tree_rays = 1L << 20;
     opt->pixel_coherence = 1;
     opt->tolerance = GRID_TOLERANCE;
     opt->initial_frame = opt->final_frame = 1;
@@ -1182,6 +1189,15 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 return -1;
             }
             *(name[6] == 'p' ? &opt->max_parse_seconds : &opt->max_render_seconds) = s;
+        } else if (is_long(a, "--max-tree-rays")) {
+            if (!(v = option_value(argc, argv, &i, "--max-tree-rays", err, errlen)))
+                return -1;
+            if (strcmp(v, "0") == 0) {
+                opt->max_tree_rays = 0;
+            } else if (parse_count(v, &opt->max_tree_rays)) {
+                snprintf(err, (size_t)errlen, "--max-tree-rays '%s': expected a whole number from 0 to 10^15", v);
+                return -1;
+            }
         } else if (is_long(a, "--max-repeated-tokens") || is_long(a, "--max-macro-calls") ||
                    is_long(a, "--max-loop-iterations")) {
             static const char *const names[] = { "--max-repeated-tokens", "--max-macro-calls", "--max-loop-iterations" };

@@ -50,6 +50,9 @@ typedef struct {
     long max_loop_iterations, max_macro_calls, max_repeated_tokens;
     /* --max-render-seconds: the render's own time (0: no limit). */
     double max_render_seconds;
+    /* --max-tree-rays: the rays one camera ray's tree of reflected,
+     * refracted and transmitted rays may hold (0: no limit). */
+    long max_tree_rays;
     const char *stats_json;
     int exr_float;
     int png16;

@@ -35,6 +35,7 @@ typedef struct {
     int reported;            /* the progress line was printed (worker 0 only) */
     atomic_int failed;
     atomic_int expired;      /* a thread went past the deadline: all stop */
+    atomic_int tree_overflow; /* a camera ray's tree went past --max-tree-rays: all stop */
     double start;
     double deadline;         /* clock_wall() time, or 0 */
 } Job;
@@ -242,6 +243,7 @@ static void *worker_main(void *arg)
     ctx.shadow.nth = shadows->nth;
     ctx.shadow.cost = shadows->cost;
     ctx.deadline = job->deadline;
+    ctx.max_tree_rays = opt->max_tree_rays;
     double t0 = clock_thread_cpu();
     double last_report = 0.0;
     for (;;) {
@@ -249,6 +251,8 @@ static void *worker_main(void *arg)
             atomic_store(&job->expired, 1);
             break;
         }
+        if (atomic_load(&job->tree_overflow))
+            break;
         int tile = opt->tiles ? opt->tiles->next(opt->tiles, wk->index) : atomic_fetch_add(&job->next_tile, 1);
         if (tile < 0 || tile >= job->tiles.ntiles)
             break;
@@ -261,6 +265,10 @@ static void *worker_main(void *arg)
         long pixels = render_tile(&ctx, &loop, job, tile);
         if (ctx.expired) {
             atomic_store(&job->expired, 1);
+            break;
+        }
+        if (ctx.tree_overflow) {
+            atomic_store(&job->tree_overflow, 1);
             break;
         }
         atomic_fetch_add(&job->done_pixels, pixels);
@@ -339,6 +347,7 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
     job.total_pixels = (long)(job.tiles.x1 - job.tiles.x0) * (job.tiles.y1 - job.tiles.y0);
     atomic_init(&job.failed, 0);
     atomic_init(&job.expired, 0);
+    atomic_init(&job.tree_overflow, 0);
     job.start = clock_wall();
     job.deadline = opt->max_seconds > 0.0 ? job.start + opt->max_seconds : 0.0;
 
@@ -379,6 +388,10 @@ int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image 
     if (atomic_load(&job.expired)) {
         image_free(img);
         return RENDER_PAST_DEADLINE;
+    }
+    if (atomic_load(&job.tree_overflow)) {
+        image_free(img);
+        return RENDER_RAY_TREE;
     }
     if (!opt->tiles && atomic_load(&job.next_tile) < job.tiles.ntiles) {
         image_free(img);

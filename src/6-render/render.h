@@ -43,10 +43,16 @@ typedef struct {
      * SHADE_CLOCK_RAYS rays; past them every thread stops and render_image
      * returns RENDER_PAST_DEADLINE (the pixels are then of no use). */
     double max_seconds;
+    /* --max-tree-rays: the rays one camera ray's tree of reflected,
+     * refracted and transmitted rays may hold (0: no limit); once one tree
+     * goes past it every thread stops and render_image returns
+     * RENDER_RAY_TREE. Deterministic, unlike the clock: the same scene
+     * fails for any thread count. */
+    uint64_t max_tree_rays;
 } RenderOptions;
 
 /* render_image's failures. */
-enum { RENDER_OUT_OF_MEMORY = -1, RENDER_PAST_DEADLINE = -2 };
+enum { RENDER_OUT_OF_MEMORY = -1, RENDER_PAST_DEADLINE = -2, RENDER_RAY_TREE = -3 };
 
 /* The tiles a render is cut into: on the whole image's grid (POV-Ray's
  * anti-aliasing blocks from the area's corner), cut to the area rendered. */
@@ -65,8 +71,8 @@ void render_tile_area(const TileGrid *t, int tile, int *x0, int *y0, int *x1, in
 int render_default_threads(void);
 
 /* Renders into img (allocated here; with a tile source, only the tiles it
- * gave this process, the rest 0). Returns 0, or RENDER_OUT_OF_MEMORY, or
- * RENDER_PAST_DEADLINE (img is then freed either way). */
+ * gave this process, the rest 0). Returns 0, or RENDER_OUT_OF_MEMORY,
+ * RENDER_PAST_DEADLINE or RENDER_RAY_TREE (img is then freed either way). */
 int render_image(const World *w, const Grid *g, const RenderOptions *opt, Image *img, RenderStats *stats);
 
 #endif

@@ -328,6 +328,7 @@ static int set_render_options(Frame *f, const Options *o, int distributed, const
     ropt->y1 = o->area_y1;
     ropt->threads = f->threads;
     ropt->max_seconds = o->max_render_seconds;
+    ropt->max_tree_rays = (uint64_t)o->max_tree_rays;
     ropt->quality = quality_from_level(o->quality);
     ropt->shadows = &f->shadows;
     ropt->bvh = &f->bvh;
@@ -365,6 +366,17 @@ static int past_deadline(const Options *o)
     return EXIT_SCENE;
 }
 
+/* A camera ray's tree went past --max-tree-rays: a budget crossed, a scene
+ * error (deterministic: the same for any thread count). */
+static int tree_too_big(const Frame *f, const Options *o)
+{
+    fprintf(stderr, "%s: a camera ray's tree of reflected and transmitted rays held more than %ld rays "
+                    "(max_trace_level %d, adc_bailout %g): lower max_trace_level, raise adc_bailout, or raise "
+                    "--max-tree-rays; no image written\n",
+            o->scene, o->max_tree_rays, f->world.max_trace_level, f->world.adc_bailout);
+    return EXIT_SCENE;
+}
+
 /* The render: in this process, or with the tiles from rank 0 and the
  * pixels and counters back to it (only rank 0 then writes). */
 static int render(Frame *f, const Options *o, int distributed)
@@ -375,6 +387,8 @@ static int render(Frame *f, const Options *o, int distributed)
         int rc = render_image(&f->world, &f->grid, ropt, &f->img, &f->report.render);
         if (rc == RENDER_PAST_DEADLINE)
             return past_deadline(o);
+        if (rc == RENDER_RAY_TREE)
+            return tree_too_big(f, o);
         if (rc != 0) {
             fprintf(stderr, "hstrace: out of memory while rendering\n");
             return EXIT_IO;
@@ -406,6 +420,8 @@ static int render(Frame *f, const Options *o, int distributed)
         /* The ranks share one verdict: past the time if this rank went past it or, near enough, would have. */
         if (rc == RENDER_PAST_DEADLINE || (o->max_render_seconds > 0.0 && gather - render_start >= o->max_render_seconds))
             return past_deadline(o);
+        if (rc == RENDER_RAY_TREE)
+            return tree_too_big(f, o);
         fprintf(stderr, "hstrace: a rank ran out of memory while rendering\n");
         return EXIT_IO;
     }
