@@ -184,14 +184,15 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
     ShadowContext ctx;
     PixelCoherence pc;
     memset(&pc, 0, sizeof pc);
-    if (shadow_context_init(&ctx, w, g, m, m->uses_volumes ? sv : NULL) ||
-        (v->coherence && pixel_coherence_init(&pc, w, g))) {
+    /* The pixel coherence is driven here by hand (its neighbours' rows are
+     * this test's own), so the context makes none. */
+    ShadowPrepared prepared = { .decider = m, .volumes = m->uses_volumes ? (ShadowVolumes *)sv : NULL, .nth = v->nth };
+    if (shadow_context_init(&ctx, NULL, w, g, &prepared, 0, 0) || (v->coherence && pixel_coherence_init(&pc, w, g))) {
         fprintf(stderr, "out of memory\n");
         exit(99);
     }
-    ctx.nth = v->nth;
     if (v->hierarchy)
-        tracer_use_bvh(&ctx.tracer, bvh);
+        tracer_use_bvh(ctx.tracer, bvh);
     if (v->coherence)
         ctx.coherence = &pc;
     int nl = w->nlights;
@@ -206,7 +207,7 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
         Hit none = { HIT_NONE, -1, 0, w->camera.location };
         Vec3 dir = v3_normalize(v3_sub(probes[k].eye_target, w->camera.location));
         Hit h1;
-        int got = trace_nearest(&ctx.tracer, w->camera.location, dir, HUGE_VAL, &none, &h1);
+        int got = trace_nearest(ctx.tracer, w->camera.location, dir, HUGE_VAL, &none, &h1);
         if (got) {
             hits[k][0] = h1;
             if (v->coherence) {
@@ -222,7 +223,7 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
             }
             Hit h2;
             Vec3 d2 = probes[k].bounce_dir;
-            if (trace_nearest(&ctx.tracer, h1.point, d2, HUGE_VAL, &h1, &h2)) {
+            if (trace_nearest(ctx.tracer, h1.point, d2, HUGE_VAL, &h1, &h2)) {
                 hits[k][1] = h2;
                 Segment seg2 = { h1.point, d2, &h1, m->uses_volumes ? row0 : NULL, m->uses_volumes ? row1 : NULL };
                 for (int li = 0; li < nl; li++)
@@ -238,6 +239,7 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
     }
     if (v->coherence)
         pixel_coherence_free(&pc);
+    ctx.coherence = NULL; /* this test's own */
     shadow_context_free(&ctx);
 }
 

@@ -126,12 +126,12 @@ int main(void)
            w.npolygons);
 
     ShadowContext ctx;
-    if (shadow_context_init(&ctx, &w, &g, shadow_method_find("embree"), NULL)) {
+    ShadowPrepared prepared = { .decider = shadow_method_find("embree"), .embree = es };
+    if (shadow_context_init(&ctx, NULL, &w, &g, &prepared, 0, 0)) {
         tap_ok(0, "shadow context");
         return tap_done();
     }
-    tracer_use_bvh(&ctx.tracer, &b);
-    ctx.embree = es;
+    tracer_use_bvh(ctx.tracer, &b);
     TestRng rng = { 0x243F6A8885A308D3ull };
     int tested = 0, skipped = 0, wrong = 0, lit = 0, blocked = 0, filtered = 0, on_occluder = 0;
     for (int k = 0; k < 6000; k++) {

@@ -239,15 +239,16 @@ static void check_cards(Scene *s, const CardProbe *probes, int nprobes, const ch
         for (int mi = 0; mi < nm; mi++) {
             const ShadowMethod *m = shadow_method_find(card_methods[mi].method);
             ShadowContext ctx;
-            if (shadow_context_init(&ctx, &w, &g, m, m->uses_volumes ? &sv : NULL)) {
+            ShadowPrepared prepared = { .decider = m, .volumes = m->uses_volumes ? &sv : NULL,
+                                        .nth = card_methods[mi].nth };
+            if (shadow_context_init(&ctx, NULL, &w, &g, &prepared, 0, 0)) {
                 wrong++;
                 continue;
             }
-            tracer_use_bvh(&ctx.tracer, &bvh); /* as hstrace renders */
-            ctx.nth = card_methods[mi].nth;
+            tracer_use_bvh(ctx.tracer, &bvh); /* as hstrace renders */
             Hit eye = { HIT_NONE, -1, 0, w.camera.location }, h;
             Vec3 dir = v3_normalize(v3_sub(pr->point, w.camera.location));
-            if (!trace_nearest(&ctx.tracer, w.camera.location, dir, HUGE_VAL, &eye, &h) || h.kind != HIT_POLYGON ||
+            if (!trace_nearest(ctx.tracer, w.camera.location, dir, HUGE_VAL, &eye, &h) || h.kind != HIT_POLYGON ||
                 h.index != 0 || v3_length(v3_sub(h.point, pr->point)) > 1e-9) {
                 missed++;
                 shadow_context_free(&ctx);

@@ -53,7 +53,7 @@ static void account(ShadowContext *ctx, const ShadowQuery *q, RGB truth, RGB ans
     if (!same(truth, answer))
         atomic_fetch_add(&planted_disagreements, 1);
     if (ctx->verify > 1) {
-        const World *w = ctx->tracer.world;
+        const World *w = ctx->tracer->world;
         RefAnswer ref = shadow_reference(w, q->surface, &w->lights[q->light], ctx->reference_eps);
         if (ref == REF_TIE) {
             atomic_fetch_add(&planted_ties, 1);

@@ -309,15 +309,15 @@ static RGB uniform_answer(RGB lc, int levels)
 static RGB beam_sampling(Sampling *s)
 {
     ShadowContext *ctx = s->ctx;
-    const World *w = ctx->tracer.world;
+    const World *w = ctx->tracer->world;
     const ShadowQuery *q = s->q;
     int li = q->light;
     AreaBeam beam;
-    if (area_beam_init(&beam, s->light, q->point, s->axis1, s->axis2, grid_tolerance(ctx->tracer.grid)))
+    if (area_beam_init(&beam, s->light, q->point, s->axis1, s->axis2, grid_tolerance(ctx->tracer->grid)))
         return sample_grid(s);
     int exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
-    int n = area_beam_gather(&beam, w, ctx->tracer.bvh, exclude, ctx->area_candidates, AREA_BEAM_CAP,
-                             &ctx->tracer.stats.nodes_visited);
+    int n = area_beam_gather(&beam, w, ctx->tracer->bvh, exclude, ctx->area_candidates, AREA_BEAM_CAP,
+                             &ctx->tracer->stats.nodes_visited);
     if (n < 0) {
         ctx->stats.area_beam_overflows++;
         s->by = BY_METHOD;
@@ -376,7 +376,7 @@ static RGB beam_sampling(Sampling *s)
 
 RGB area_light_shadow(ShadowContext *ctx, const ShadowQuery *q, RGB lc)
 {
-    const Light *l = &ctx->tracer.world->lights[q->light];
+    const Light *l = &ctx->tracer->world->lights[q->light];
     Sampling s = { ctx, q, l, l->area.axis1, l->area.axis2, lc, BY_METHOD, NULL, 0, 0, 0, 0.0, *l };
     area_light_axes(l, q->to_light, &s.axis1, &s.axis2);
     ctx->stats.area_points++;

@@ -182,14 +182,16 @@ static double time_shadow_rays(const World *w, const Grid *g, const Bvh *bvh, co
 static double time_gathering(const World *w, const Grid *g, const ShadowVolumes *sv, int width, int height,
                              const int *lights, int nlights, volatile double *sink, int full)
 {
+    /* the volume method's thread state: the buckets and the cells recorded */
     ShadowContext ctx;
-    if (shadow_context_init(&ctx, w, g, NULL, sv)) {
+    ShadowPrepared p = { .decider = shadow_method_find("volume"), .volumes = (ShadowVolumes *)sv };
+    if (shadow_context_init(&ctx, NULL, w, g, &p, 0, 0)) {
         shadow_context_free(&ctx);
         return 0.0;
     }
     /* The cells of camera segments through a coarse grid of pixels. */
     enum { SEGMENTS = 64 };
-    int cap = ctx.tracer.segment_cells_cap;
+    int cap = ctx.tracer->segment_cells_cap;
     uint32_t *cells = malloc(sizeof *cells * (size_t)cap * SEGMENTS);
     int ncells[SEGMENTS], nseg = 0;
     for (int i = 0; cells && i < SEGMENTS; i++) {
@@ -197,11 +199,11 @@ static double time_gathering(const World *w, const Grid *g, const ShadowVolumes 
         camera_ray(&w->camera, width, height, (i % 8 * 2 + 1) * width / 16, (i / 8 * 2 + 1) * height / 16, &org,
                    &dir);
         Hit from = { HIT_NONE, -1, 0.0, org }, hit;
-        if (!trace_nearest(&ctx.tracer, org, dir, HUGE_VAL, &from, &hit))
+        if (!trace_nearest(ctx.tracer, org, dir, HUGE_VAL, &from, &hit))
             continue;
-        memcpy(&cells[(size_t)nseg * (size_t)cap], ctx.tracer.segment_cells,
-               sizeof *cells * (size_t)ctx.tracer.segment_ncells);
-        ncells[nseg++] = ctx.tracer.segment_ncells;
+        memcpy(&cells[(size_t)nseg * (size_t)cap], ctx.tracer->segment_cells,
+               sizeof *cells * (size_t)ctx.tracer->segment_ncells);
+        ncells[nseg++] = ctx.tracer->segment_ncells;
     }
     double best = 0.0;
     if (nseg > 0) {

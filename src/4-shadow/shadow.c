@@ -8,20 +8,29 @@
 #include <string.h>
 
 #include "shadow_embree.h"
+#include "shadow_reference.h"
 #include "shadow_volumes.h"
 #include "volume_plan.h"
 
-/* Enough for max_trace_level reflections plus continued (same-ior) rays;
- * deeper points keep no state and their methods use the shadow ray. */
-#define STATE_DEPTH 64
-
-int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const ShadowMethod *method,
-                        const ShadowVolumes *volumes)
+int shadow_context_init(ShadowContext *ctx, Tracer *tracer, const World *w, const Grid *g, const ShadowPrepared *p,
+                        int verify, int pixel_coherence)
 {
     memset(ctx, 0, sizeof *ctx);
-    if (tracer_init(&ctx->tracer, w, g))
-        return -1;
+    if (tracer) {
+        ctx->tracer = tracer;
+    } else {
+        ctx->tracer = &ctx->own_tracer;
+        ctx->owns_tracer = 1;
+        if (tracer_init(ctx->tracer, w, g))
+            return -1;
+    }
+    const ShadowMethod *method = p->decider;
     ctx->method = method;
+    ctx->embree = p->embree;
+    ctx->cost = p->cost;
+    ctx->nth = p->nth;
+    ctx->verify = verify;
+    ctx->reference_eps = shadow_reference_eps(g);
     ctx->last_blocker = -1;
     int nl = w->nlights > 0 ? w->nlights : 1;
     ctx->light_cache = malloc(sizeof *ctx->light_cache * (size_t)nl);
@@ -52,33 +61,23 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
             if (light_is_area(&w->lights[i]))
                 area_light_uniform_shape(&w->lights[i], ctx->area_known, &ctx->area_uniform_visits[i],
                                          &ctx->area_uniform_levels[i]);
-        if (method->area_beam) {
+        if (method && method->area_beam) {
             ctx->area_candidates = malloc(AREA_BEAM_CAP * sizeof *ctx->area_candidates);
             if (!ctx->area_candidates)
                 return -1;
         }
     }
-    if (volumes) {
-        ctx->volumes = volumes;
-        int most = 1;
-        for (int i = 0; i < volumes->nlights; i++)
-            if (volumes->light[i].count > most)
-                most = volumes->light[i].count;
-        ctx->sp_stamp = calloc((size_t)(volumes->npolygons > 0 ? volumes->npolygons : 1), sizeof(uint32_t));
-        ctx->bucket = malloc(sizeof(uint32_t) * (size_t)most);
-        ctx->states = calloc((size_t)nl * STATE_DEPTH, sizeof(LightState));
-        if (tracer_record_cells(&ctx->tracer, volumes->box_min, volumes->box_max) || !ctx->sp_stamp ||
-            !ctx->bucket || !ctx->states)
-            return -1;
-        ctx->state_capacity = STATE_DEPTH;
-    }
-    return 0;
+    return method && method->thread_init ? method->thread_init(ctx, p, pixel_coherence) : 0;
 }
 
 void shadow_context_free(ShadowContext *ctx)
 {
-    const int nlights = ctx->tracer.world ? ctx->tracer.world->nlights : 0; /* before the tracer goes */
-    tracer_free(&ctx->tracer);
+    if (ctx->method && ctx->method->thread_free)
+        ctx->method->thread_free(ctx);
+    const int nlights = ctx->tracer && ctx->tracer->world ? ctx->tracer->world->nlights : 0;
+    if (ctx->owns_tracer)
+        tracer_free(&ctx->own_tracer);
+    ctx->tracer = NULL;
     free(ctx->light_cache);
     free(ctx->area_colour);
     free(ctx->area_known);
@@ -90,14 +89,36 @@ void shadow_context_free(ShadowContext *ctx)
             free(ctx->area_fixed_factors[i]);
     free(ctx->area_fixed_factors);
     free(ctx->filtered);
-    free(ctx->bucket);
-    free(ctx->sp_stamp);
-    free(ctx->states);
     ctx->light_cache = NULL;
     ctx->filtered = NULL;
-    ctx->bucket = NULL;
-    ctx->sp_stamp = NULL;
-    ctx->states = NULL;
+}
+
+void shadow_tile_begin(ShadowContext *ctx)
+{
+    shadow_cache_forget(ctx, ctx->tracer->world->nlights);
+}
+
+void shadow_pixel_begin(ShadowContext *ctx, int first_in_row, int first_row)
+{
+    if (ctx->method->pixel_begin)
+        ctx->method->pixel_begin(ctx, first_in_row, first_row);
+}
+
+void shadow_pixel_end(ShadowContext *ctx, int first_in_row)
+{
+    if (ctx->method->pixel_end)
+        ctx->method->pixel_end(ctx, first_in_row);
+}
+
+LightState *shadow_segment_begin(ShadowContext *ctx, const Hit *hit, int from_eye)
+{
+    return ctx->method->segment_begin ? ctx->method->segment_begin(ctx, hit, from_eye) : NULL;
+}
+
+void shadow_segment_end(ShadowContext *ctx)
+{
+    if (ctx->method->segment_end)
+        ctx->method->segment_end(ctx);
 }
 
 void shadow_counters_add(ShadowCounters *t, const ShadowCounters *p)
@@ -126,29 +147,69 @@ const char *const shadow_scheme_names[SCHEME_COUNT] = { "sustain",  "self-shadow
 /* The registry: every method, each a row; the first is the default. Only
  * here are methods named; the rest of the program finds them by name
  * (--shadows) and uses them through the row. */
-static const ShadowMethod methods[] = {
-    { .name = "hst",
-      .summary = "the paper's hybrid: sustain, self-shadow, shadow volume or shadow ray, switched by N_th",
-      .uses_volumes = 1, .prepare = shadow_hst_prepare, .test = shadow_hst_test, .skip = shadow_hst_skip,
-      .area_beam = 1 },
-    { .name = "conventional", .summary = "a shadow ray per light through the grid (exact reference)",
-      .test = shadow_conventional_test },
-    { .name = "cache", .summary = "shadow rays that first try the light's last opaque blocker (as POV-Ray does)",
-      .test = shadow_cache_test },
-    { .name = "volume", .summary = "shadow volumes: a depth count carried along every segment", .uses_volumes = 1,
-      .prepare = shadow_volume_prepare, .test = shadow_volume_test, .skip = shadow_volume_skip },
-    { .name = "embree", .summary = "Embree 3's float shadow ray with the shadow ray's rules (not exact: for comparison)",
-      .prepare = shadow_embree_prepare, .test = shadow_embree_test, .inexact = 1 },
-    { .name = "none", .summary = "no shadows: every light reaches every point", .test = shadow_none_test,
-      .blind = 1 },
+static const ShadowMethod hst_row = {
+    .name = "hst",
+    .summary = "the paper's hybrid: sustain, self-shadow, shadow volume or shadow ray, switched by N_th",
+    .uses_volumes = 1,
+    .prepare = shadow_hst_prepare,
+    .thread_init = shadow_hst_thread_init,
+    .thread_free = shadow_volume_thread_free,
+    .pixel_begin = shadow_volume_pixel_begin,
+    .pixel_end = shadow_volume_pixel_end,
+    .segment_begin = shadow_volume_segment_begin,
+    .segment_end = shadow_volume_segment_end,
+    .test = shadow_hst_test,
+    .skip = shadow_hst_skip,
+    .area_beam = 1,
+};
+static const ShadowMethod conventional_row = {
+    .name = "conventional",
+    .summary = "a shadow ray per light through the grid (exact reference)",
+    .test = shadow_conventional_test,
+};
+static const ShadowMethod cache_row = {
+    .name = "cache",
+    .summary = "shadow rays that first try the light's last opaque blocker (as POV-Ray does)",
+    .test = shadow_cache_test,
+};
+static const ShadowMethod volume_row = {
+    .name = "volume",
+    .summary = "shadow volumes: a depth count carried along every segment",
+    .uses_volumes = 1,
+    .prepare = shadow_volume_prepare,
+    .thread_init = shadow_volume_thread_init,
+    .thread_free = shadow_volume_thread_free,
+    .segment_begin = shadow_volume_segment_begin,
+    .segment_end = shadow_volume_segment_end,
+    .test = shadow_volume_test,
+    .skip = shadow_volume_skip,
+};
+static const ShadowMethod embree_row = {
+    .name = "embree",
+    .summary = "Embree 3's float shadow ray with the shadow ray's rules (not exact: for comparison)",
+    .prepare = shadow_embree_prepare,
+    .test = shadow_embree_test,
+    .inexact = 1,
+};
+static const ShadowMethod none_row = {
+    .name = "none",
+    .summary = "no shadows: every light reaches every point",
+    .test = shadow_none_test,
+    .blind = 1,
+};
+
+/* The registry's rows, the first the default; a method is its file (its
+ * functions) and one row here. */
+static const ShadowMethod *const methods[] = {
+    &hst_row, &conventional_row, &cache_row, &volume_row, &embree_row, &none_row, &shadow_every_lit_method,
 };
 
 const ShadowMethod *shadow_method_fallback(void)
 {
     for (size_t i = 0; i < sizeof methods / sizeof methods[0]; i++)
-        if (methods[i].test == shadow_cache_test)
-            return &methods[i];
-    return &methods[0];
+        if (methods[i]->test == shadow_cache_test)
+            return methods[i];
+    return methods[0];
 }
 
 int shadow_method_prepare(const ShadowMethod *m, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen)
@@ -183,8 +244,8 @@ void shadow_prepared_free(ShadowPrepared *p)
 const ShadowMethod *shadow_method_find(const char *name)
 {
     for (size_t i = 0; i < sizeof methods / sizeof methods[0]; i++)
-        if (strcmp(methods[i].name, name) == 0)
-            return &methods[i];
+        if (strcmp(methods[i]->name, name) == 0)
+            return methods[i];
     return NULL;
 }
 

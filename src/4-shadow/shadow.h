@@ -95,10 +95,13 @@ typedef struct {
     uint32_t polygon;
 } FilteredHit;
 
-/* A render thread's shadow testing: its tracer (the ray queries and their
- * mailbox), the method, and the methods' per-thread state. */
+/* A render thread's shadow testing: the tracer it asks (the shading's, or
+ * its own when it is used alone), the method, and the methods' per-thread
+ * state. */
 typedef struct ShadowContext {
-    Tracer tracer;
+    Tracer *tracer;
+    Tracer own_tracer;         /* the tracer of a context made without one */
+    int owns_tracer;
     const struct ShadowMethod *method;
     ShadowCounters stats;
     int last_scheme;           /* how the last decision was made (ShadowScheme) */
@@ -121,7 +124,8 @@ typedef struct ShadowContext {
     uint32_t *sp_stamp;
     uint32_t sp_id;
     uint32_t *bucket;          /* room for any light's shadow polygons */
-    struct PixelCoherence *coherence; /* hst's pixel coherence, or NULL when off */
+    struct PixelCoherence *coherence; /* hst's pixel coherence (its thread_init makes it), or NULL when off */
+    void *method_state;        /* a method's own per-thread data (its thread_init makes it), or NULL */
     const struct EmbreeScene *embree; /* the embree method's scene (shared, read-only), or NULL */
     /* Area lights: the samples decided at the current point, a colour per
      * sample of the largest (area_light.c); NULL without area lights. */
@@ -135,16 +139,37 @@ typedef struct ShadowContext {
     double (**area_fixed_factors)[2];
     int *area_uniform_visits;   /* per light: the samples its sampling visits when all agree */
     int *area_uniform_levels;   /* ... and the levels of means over them */
-    /* Light states along the ray tree: one row of nlights per recursion depth. */
+    /* Light states along the ray tree: one row of nlights per recursion
+     * depth, which the volume methods' segment hooks hand out. */
     LightState *states;
     int state_depth, state_capacity;
 } ShadowContext;
 
-/* volumes: the shadow volumes when the method uses them, else NULL.
+struct ShadowPrepared;
+
+/* A thread's context for the prepared method p (its decider, volumes,
+ * Embree scene, cost model and N_th): the common part, then the method's
+ * own (its thread_init). tracer: the shading's, which the context asks;
+ * NULL: a tracer of its own (a context used alone: the plan's pilot, the
+ * cost model, tests). verify: --verify-shadows (1) or --verify-reference
+ * (2). pixel_coherence: hst may count from the neighbouring pixel.
  * Returns 0, or -1 when out of memory (free it all the same). */
-int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const struct ShadowMethod *method,
-                        const struct ShadowVolumes *volumes);
+int shadow_context_init(ShadowContext *ctx, Tracer *tracer, const World *w, const Grid *g,
+                        const struct ShadowPrepared *p, int verify, int pixel_coherence);
 void shadow_context_free(ShadowContext *ctx);
+
+/* The render loop's hooks, which call the method's where it has them:
+ * at each tile's start (the caches start empty, so that a pixel's
+ * decisions and counts do not depend on the tiles rendered before); around
+ * each camera ray of a plain render (first_in_row: the tile's row starts,
+ * first_row: the tile's first row); and around each ray segment the
+ * shading follows, whose hit's light states (one per light, or NULL where
+ * the method keeps none) segment_begin hands out. */
+void shadow_tile_begin(ShadowContext *ctx);
+void shadow_pixel_begin(ShadowContext *ctx, int first_in_row, int first_row);
+void shadow_pixel_end(ShadowContext *ctx, int first_in_row);
+LightState *shadow_segment_begin(ShadowContext *ctx, const Hit *hit, int from_eye);
+void shadow_segment_end(ShadowContext *ctx);
 
 /* hst's switching threshold N_th (--nth): a fixed value, measured once per
  * scene (auto: the shadow ray's cost over that of counting one shadow
@@ -203,6 +228,15 @@ typedef struct ShadowMethod {
      * in err. */
     int (*prepare)(const struct ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
                    int errlen);
+    /* A thread's own state, made after the context's common part and
+     * freed before it (NULL: none). Returns 0, or -1 when out of memory. */
+    int (*thread_init)(ShadowContext *ctx, const ShadowPrepared *p, int pixel_coherence);
+    void (*thread_free)(ShadowContext *ctx);
+    /* The render loop's hooks (shadow_pixel_begin ...; NULL: nothing). */
+    void (*pixel_begin)(ShadowContext *ctx, int first_in_row, int first_row);
+    void (*pixel_end)(ShadowContext *ctx, int first_in_row);
+    LightState *(*segment_begin)(ShadowContext *ctx, const Hit *hit, int from_eye);
+    void (*segment_end)(ShadowContext *ctx);
     /* Decides q's light; sets ctx->last_scheme. */
     void (*test)(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
     /* The shading needs no answer for q's light (it faces away from the
@@ -218,7 +252,13 @@ typedef struct ShadowMethod {
     int area_beam;
     /* 1: decides nothing, every light reaches every point (none). */
     int blind;
+    /* 1: for the tests only: found by name, but listed nowhere. */
+    int hidden;
 } ShadowMethod;
+
+/* The test-only method (shadow_every_lit.c): every light reaches every
+ * point, through every door a method has. */
+extern const ShadowMethod shadow_every_lit_method;
 
 /* Prepares method m for the render (shadows_on: its prepare; else nothing
  * but the defaults). Returns 0, or -1 with a message in err (out of
@@ -290,6 +330,16 @@ void shadow_hst_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_throug
 int shadow_hst_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen);
 int shadow_volume_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
                           int errlen);
+/* ... and their threads' state and hooks (shadow_volume_thread.c): the
+ * light states along the ray tree, the shadow buckets, the cells camera
+ * segments pierce, and hst's pixel coherence. */
+int shadow_volume_thread_init(ShadowContext *ctx, const ShadowPrepared *p, int pixel_coherence);
+int shadow_hst_thread_init(ShadowContext *ctx, const ShadowPrepared *p, int pixel_coherence);
+void shadow_volume_thread_free(ShadowContext *ctx);
+void shadow_volume_pixel_begin(ShadowContext *ctx, int first_in_row, int first_row);
+void shadow_volume_pixel_end(ShadowContext *ctx, int first_in_row);
+LightState *shadow_volume_segment_begin(ShadowContext *ctx, const Hit *hit, int from_eye);
+void shadow_volume_segment_end(ShadowContext *ctx);
 void shadow_hst_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away);
 
 #endif

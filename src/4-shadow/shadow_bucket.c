@@ -13,12 +13,12 @@ int shadow_bucket_limit(double nth)
 
 int shadow_bucket_fill(ShadowContext *ctx, int light, int limit)
 {
-    return shadow_bucket_fill_in(ctx, light, ctx->tracer.segment_cells, ctx->tracer.segment_ncells, limit);
+    return shadow_bucket_fill_in(ctx, light, ctx->tracer->segment_cells, ctx->tracer->segment_ncells, limit);
 }
 
 uint32_t shadow_bucket_registrations(const ShadowContext *ctx, int light)
 {
-    return shadow_bucket_registrations_in(ctx, light, ctx->tracer.segment_cells, ctx->tracer.segment_ncells);
+    return shadow_bucket_registrations_in(ctx, light, ctx->tracer->segment_cells, ctx->tracer->segment_ncells);
 }
 
 int shadow_bucket_fill_in(ShadowContext *ctx, int light, const uint32_t *cells, int ncells, int limit)

@@ -46,11 +46,11 @@ int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
     int pi = c->blocker;
     if (pi < 0 || (q->surface->kind == HIT_POLYGON && q->surface->index == pi) || !cache_worth_trying(c))
         return 0;
-    const World *w = ctx->tracer.world;
+    const World *w = ctx->tracer->world;
     const Polygon *p = &w->polygons[pi];
     /* The shadow ray's own rule for a polygon edge-on to the light (an area
      * light's sample may see edge-on what blocked another sample). */
-    if (shadow_light_side(p, q->source, grid_tolerance(ctx->tracer.grid)) == 0)
+    if (shadow_light_side(p, q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
     ctx->stats.shadow_polygon_tests++;
     /* The shadow ray's test on the shadow ray's frame (the same numbers,

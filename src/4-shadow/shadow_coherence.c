@@ -165,7 +165,7 @@ static int inside_box(const ShadowVolumes *sv, Vec3 p)
  * buckets) and how every polygon in them meets the segment. */
 static int walk(ShadowContext *ctx, PixelCoherence *pc, const Hit *from, const Hit *to)
 {
-    const World *w = ctx->tracer.world;
+    const World *w = ctx->tracer->world;
     const ShadowVolumes *sv = ctx->volumes;
     Vec3 a = from->point, b = to->point;
     pc->ncells = 0;
@@ -189,23 +189,23 @@ static int walk(ShadowContext *ctx, PixelCoherence *pc, const Hit *from, const H
         return 1;
     Vec3 dir = v3_scale(d, 1.0 / len);
     GridWalk gw;
-    if (!grid_walk_begin(ctx->tracer.grid, a, dir, 0.0, len, &gw))
+    if (!grid_walk_begin(ctx->tracer->grid, a, dir, 0.0, len, &gw))
         return 1; /* cannot happen inside the box; nothing to count then */
-    uint32_t id = trace_new_segment(&ctx->tracer);
+    uint32_t id = trace_new_segment(ctx->tracer);
     if (own_a >= 0)
-        ctx->tracer.stamp[own_a] = id;
+        ctx->tracer->stamp[own_a] = id;
     if (own_b >= 0)
-        ctx->tracer.stamp[own_b] = id;
-    const Grid *g = ctx->tracer.grid;
+        ctx->tracer->stamp[own_b] = id;
+    const Grid *g = ctx->tracer->grid;
     do {
-        ctx->tracer.stats.cells_visited++;
+        ctx->tracer->stats.cells_visited++;
         int c = grid_cell_index(g, gw.cell);
         if (pc->ncells == pc->cells_cap)
             return 0;
         pc->cells[pc->ncells++] = (uint32_t)c;
         for (uint32_t k = g->cell_start[c]; k < g->cell_start[c + 1]; k++) {
             uint32_t pi = g->items[k];
-            if (!bucket_admit(&ctx->tracer, id, pi))
+            if (!bucket_admit(ctx->tracer, id, pi))
                 continue;
             const Polygon *p = &w->polygons[pi];
             double sa = v3_dot(p->normal, a) - p->d, sb = v3_dot(p->normal, b) - p->d;

@@ -33,7 +33,7 @@ static int pass_through(const World *w, const Material *m, int polygon, const Sh
 
 int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    const World *w = ctx->tracer.world;
+    const World *w = ctx->tracer->world;
     double tmin = trace_min_distance(q->point);
     for (int i = 0; i < w->nplanes; i++) {
         if (q->surface->kind == HIT_PLANE && q->surface->index == i)
@@ -61,12 +61,12 @@ static int meet_polygon(void *user, uint32_t pi, double t)
 {
     ShadowWalk *sw = user;
     ShadowContext *ctx = sw->ctx;
-    const World *w = ctx->tracer.world;
+    const World *w = ctx->tracer->world;
     const Polygon *p = &w->polygons[pi];
     /* A polygon edge-on to the light (the light in its plane) casts no
      * shadow: the ray can only graze it, or meet it at the light itself.
      * The same rule as the shadow volumes'. */
-    if (shadow_light_side(p, sw->q->source, grid_tolerance(ctx->tracer.grid)) == 0)
+    if (shadow_light_side(p, sw->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
     const Material *m = &w->materials[p->material];
     if (m->opaque) {
@@ -96,7 +96,7 @@ int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     int exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
     ShadowWalk sw = { ctx, q, -1 };
     ctx->nfiltered = 0;
-    if (trace_segment_hits(&ctx->tracer, q->point, q->to_light, tmin, q->distance, exclude, HIDE_NO_SHADOW,
+    if (trace_segment_hits(ctx->tracer, q->point, q->to_light, tmin, q->distance, exclude, HIDE_NO_SHADOW,
                            meet_polygon, &sw, &ctx->stats.shadow_polygon_tests)) {
         light->r = light->g = light->b = 0.0;
         ctx->last_blocker = sw.blocker;
@@ -108,7 +108,7 @@ int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const uint32_t *candidates, int n,
                                RGB *light)
 {
-    const World *w = ctx->tracer.world;
+    const World *w = ctx->tracer->world;
     ctx->stats.shadow_rays++;
     double tmin = trace_min_distance(q->point);
     ShadowWalk sw = { ctx, q, -1 };
@@ -129,7 +129,7 @@ int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const u
 
 int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    const World *w = ctx->tracer.world;
+    const World *w = ctx->tracer->world;
     if (ctx->nfiltered > 1)
         qsort(ctx->filtered, (size_t)ctx->nfiltered, sizeof *ctx->filtered, by_distance);
     double last = 0.0;

@@ -10,10 +10,10 @@ void shadow_verify(ShadowContext *ctx, const ShadowQuery *q, RGB got)
     int scheme = ctx->last_scheme;
     RGB want;
     /* The check's own work is not the method's: its counts are put back. */
-    RayCounters keep_rays = ctx->tracer.stats;
+    RayCounters keep_rays = ctx->tracer->stats;
     ShadowCounters keep = ctx->stats;
     shadow_conventional_test(ctx, q, &want);
-    ctx->tracer.stats = keep_rays;
+    ctx->tracer->stats = keep_rays;
     ctx->stats = keep;
     ctx->stats.shadow_verified++;
     if (want.r != got.r || want.g != got.g || want.b != got.b) {
@@ -22,7 +22,7 @@ void shadow_verify(ShadowContext *ctx, const ShadowQuery *q, RGB got)
     }
     if (ctx->verify > 1) {
         /* The verdicts compared: is any light taken away? */
-        const World *w = ctx->tracer.world;
+        const World *w = ctx->tracer->world;
         RefAnswer ref = shadow_reference(w, q->surface, q->source, ctx->reference_eps);
         int got_blocked = got.r != 1.0 || got.g != 1.0 || got.b != 1.0;
         int ray_blocked = want.r != 1.0 || want.g != 1.0 || want.b != 1.0;

@@ -154,13 +154,13 @@ static int meet(EmbreeRay *er, uint32_t pi, double t)
     ShadowContext *ctx = er->ctx;
     const World *w = er->es->world;
     const Polygon *p = &w->polygons[pi];
-    if (shadow_light_side(p, er->q->source, grid_tolerance(ctx->tracer.grid)) == 0)
+    if (shadow_light_side(p, er->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
     if (w->materials[p->material].opaque) {
         er->blocker = (int)pi;
         return 1;
     }
-    if (bucket_admit(&ctx->tracer, er->mark, pi)) {
+    if (bucket_admit(ctx->tracer, er->mark, pi)) {
         ctx->filtered[ctx->nfiltered].t = t;
         ctx->filtered[ctx->nfiltered].polygon = pi;
         ctx->nfiltered++;
@@ -400,7 +400,7 @@ void shadow_embree_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     er.frame = ray_frame(q->point, q->to_light);
     er.tmin = trace_min_distance(q->point);
     er.exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
-    er.mark = trace_new_segment(&ctx->tracer);
+    er.mark = trace_new_segment(ctx->tracer);
     er.blocker = -1;
     ctx->nfiltered = 0;
     /* From the float point to a little beyond the light: the filter holds

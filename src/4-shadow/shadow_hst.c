@@ -54,13 +54,13 @@ typedef struct {
 
 static void view_segment(ShadowContext *ctx, const ShadowQuery *q, SegmentView *v)
 {
-    const World *w = ctx->tracer.world;
+    const World *w = ctx->tracer->world;
     const LightVolumes *lv = &ctx->volumes->light[q->light];
     const Segment *seg = q->segment;
     v->from = seg->from_state ? seg->from_state[q->light] : eye_state(lv);
     v->registrations = shadow_bucket_registrations(ctx, q->light);
     v->cap_opaque = v->cap_transparent = 0;
-    v->countable = ctx->tracer.segment_in_box;
+    v->countable = ctx->tracer->segment_in_box;
     if (seg->from->kind == HIT_POLYGON) {
         const Polygon *a = &w->polygons[seg->from->index];
         /* A segment running in the plane of the polygon it starts on stays
@@ -168,7 +168,7 @@ static void self_shadow(ShadowContext *ctx, const ShadowQuery *q, LightState *ou
     const LightVolumes *lv = &ctx->volumes->light[q->light];
     const OccluderSide *o = &lv->occluder[q->surface->index];
     /* The ray arrived on the side away from the light. */
-    if (o->channel == 1 && toward_light(&ctx->tracer.world->polygons[q->surface->index], o, q->segment->dir) > 0.0) {
+    if (o->channel == 1 && toward_light(&ctx->tracer->world->polygons[q->surface->index], o, q->segment->dir) > 0.0) {
         out->condition = COND_BLOCKED;
         out->self = 1;
     }
@@ -205,7 +205,7 @@ static void decide(ShadowContext *ctx, const ShadowQuery *q, Mode mode, int face
     view_segment(ctx, q, &v);
     /* A point lying on a polygon besides its own has no count the shadow
      * ray would agree with: decide it by the ray, and keep no count there. */
-    int touching = trace_point_touches_other(&ctx->tracer, q->surface, ctx->volumes->tolerance);
+    int touching = trace_point_touches_other(ctx->tracer, q->surface, ctx->volumes->tolerance);
     if (touching) {
         v.countable = 0;
         ctx->stats.shadow_touching++;
@@ -239,8 +239,8 @@ static void decide(ShadowContext *ctx, const ShadowQuery *q, Mode mode, int face
     if (mode == MODE_HYBRID) {
         nth = ctx->nth;
         if (nth < 0.0)
-            nth = cost_model_threshold(ctx->cost, cost_model_cells_to_light(ctx->tracer.grid, q->point,
-                                                                           &ctx->tracer.world->lights[q->light]));
+            nth = cost_model_threshold(ctx->cost, cost_model_cells_to_light(ctx->tracer->grid, q->point,
+                                                                           &ctx->tracer->world->lights[q->light]));
         /* Pixel coherence: count from the previous pixel's hit when that
          * is cheaper than counting from the eye. */
         if (ctx->coherence && q->segment->from->kind == HIT_NONE && !touching) {

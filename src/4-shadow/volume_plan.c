@@ -128,11 +128,12 @@ static int pilot_points(VolumePlan *plan, const World *w, const Grid *g, const B
 static int time_pilot(VolumePlan *plan, const World *w, const Grid *g, const Bvh *bvh)
 {
     ShadowContext ctx;
-    if (shadow_context_init(&ctx, w, g, shadow_method_find("conventional"), NULL)) {
+    ShadowPrepared p = { .decider = shadow_method_find("conventional") };
+    if (shadow_context_init(&ctx, NULL, w, g, &p, 0, 0)) {
         shadow_context_free(&ctx);
         return -1;
     }
-    tracer_use_bvh(&ctx.tracer, bvh);
+    tracer_use_bvh(ctx.tracer, bvh);
     Hit eye = { HIT_NONE, -1, 0.0, { 0, 0, 0 } };
     Segment seg = { { 0, 0, 0 }, { 0, 0, 0 }, &eye, NULL, NULL };
     volatile double sink = 0.0;
@@ -166,7 +167,7 @@ static int time_pilot(VolumePlan *plan, const World *w, const Grid *g, const Bvh
     for (int round = 0; plan->npoints > 1 && round < ROUNDS; round++) {
         double t0 = clock_thread_cpu();
         for (int i = 0; i < plan->npoints; i++)
-            sink += trace_point_touches_other(&ctx.tracer, &plan->hit[i], tol);
+            sink += trace_point_touches_other(ctx.tracer, &plan->hit[i], tol);
         best = fmin(best, (clock_thread_cpu() - t0) / plan->npoints);
     }
     plan->c_touch = best < HUGE_VAL ? best : 0.0;
@@ -239,15 +240,15 @@ static int measure_hst(VolumePlan *plan, const World *w, const Grid *g, const Bv
                        double nth, const CostModel *cost)
 {
     ShadowContext ctx;
-    if (shadow_context_init(&ctx, w, g, shadow_method_find("hst"), sv)) {
+    ShadowPrepared p = { .decider = shadow_method_find("hst"), .volumes = (ShadowVolumes *)sv,
+                         .cost = (CostModel *)cost, .nth = nth };
+    if (shadow_context_init(&ctx, NULL, w, g, &p, 0, 0)) {
         shadow_context_free(&ctx);
         return -1;
     }
-    tracer_use_bvh(&ctx.tracer, bvh);
-    ctx.nth = nth;
-    ctx.cost = cost;
+    tracer_use_bvh(ctx.tracer, bvh);
     /* The cells each pilot camera ray pierces, as the render records them. */
-    size_t cap = (size_t)ctx.tracer.segment_cells_cap, np = (size_t)(plan->npoints > 0 ? plan->npoints : 1);
+    size_t cap = (size_t)ctx.tracer->segment_cells_cap, np = (size_t)(plan->npoints > 0 ? plan->npoints : 1);
     uint32_t *cells = malloc(sizeof *cells * cap * np);
     int *ncells = malloc(sizeof *ncells * np);
     int8_t *in_box = malloc(np);
@@ -258,11 +259,11 @@ static int measure_hst(VolumePlan *plan, const World *w, const Grid *g, const Bv
         hits[i] = plan->hit[i];
         ncells[i] = 0;
         in_box[i] = 0;
-        if (trace_nearest(&ctx.tracer, plan->org[i], plan->dir[i], HUGE_VAL, &from, &hits[i])) {
-            memcpy(&cells[(size_t)i * cap], ctx.tracer.segment_cells,
-                   sizeof *cells * (size_t)ctx.tracer.segment_ncells);
-            ncells[i] = ctx.tracer.segment_ncells;
-            in_box[i] = (int8_t)ctx.tracer.segment_in_box;
+        if (trace_nearest(ctx.tracer, plan->org[i], plan->dir[i], HUGE_VAL, &from, &hits[i])) {
+            memcpy(&cells[(size_t)i * cap], ctx.tracer->segment_cells,
+                   sizeof *cells * (size_t)ctx.tracer->segment_ncells);
+            ncells[i] = ctx.tracer->segment_ncells;
+            in_box[i] = (int8_t)ctx.tracer->segment_in_box;
         }
     }
     Hit eye = { HIT_NONE, -1, 0.0, { 0, 0, 0 } };
@@ -285,9 +286,9 @@ static int measure_hst(VolumePlan *plan, const World *w, const Grid *g, const Bv
                     if (!asks(w, plan, i, li, &q))
                         continue;
                     q.surface = &hits[i];
-                    memcpy(ctx.tracer.segment_cells, &cells[(size_t)i * cap], sizeof *cells * (size_t)ncells[i]);
-                    ctx.tracer.segment_ncells = ncells[i];
-                    ctx.tracer.segment_in_box = in_box[i];
+                    memcpy(ctx.tracer->segment_cells, &cells[(size_t)i * cap], sizeof *cells * (size_t)ncells[i]);
+                    ctx.tracer->segment_ncells = ncells[i];
+                    ctx.tracer->segment_in_box = in_box[i];
                     RGB through;
                     if (method == 0)
                         shadow_hst_test(&ctx, &q, &through);

@@ -15,7 +15,6 @@
 #include "intersect.h"
 #include "pigment.h"
 #include "shadow.h"
-#include "shadow_coherence.h"
 #include "shadow_decide.h"
 
 
@@ -127,7 +126,7 @@ static double light_direction(const Light *l, Vec3 p, Vec3 *to_light)
  * test or skip ran; through: the test's answer (NULL after a skip). */
 static void note_light(ShadeContext *ctx, const ShadowQuery *q, int asked, int faces_away, const RGB *through)
 {
-    if (!ctx->aov || ctx->shadow.state_depth != 1)
+    if (!ctx->aov || ctx->depth != 1)
         return;
     ShadowRecord r = { SCHEME_NONE, -1 };
     if (asked)
@@ -142,9 +141,9 @@ static void note_light(ShadeContext *ctx, const ShadowQuery *q, int asked, int f
 /* The shadow methods' states when the shading asks nothing about any light. */
 static void skip_all_lights(ShadeContext *ctx, const Hit *hit, const Segment *seg)
 {
-    const World *w = ctx->shadow.tracer.world;
+    const World *w = ctx->tracer.world;
     int ask = ctx->quality.shadows && ctx->shadow.method->skip;
-    if (!ask && !(ctx->aov && ctx->shadow.state_depth == 1))
+    if (!ask && !(ctx->aov && ctx->depth == 1))
         return;
     for (int li = 0; li < w->nlights; li++) {
         const Light *l = &w->lights[li];
@@ -314,7 +313,7 @@ static void add_full_area_light(const ShadowContext *sc, const Light *l, int li,
 static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, const Segment *seg, Vec3 eye_dir,
                          Vec3 normal, LitTexture *lit, int n)
 {
-    const World *w = ctx->shadow.tracer.world;
+    const World *w = ctx->tracer.world;
     for (int li = 0; li < w->nlights; li++) {
         const Light *l = &w->lights[li];
         int area = ctx->quality.area_lights && light_is_area(l);
@@ -357,7 +356,7 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
                 lc.b *= through.b;
             }
             note_light(ctx, &q, 1, 0, &through);
-            if (ctx->aov && ctx->shadow.state_depth == 1 && (through.r != 1.0 || through.g != 1.0 || through.b != 1.0)) {
+            if (ctx->aov && ctx->depth == 1 && (through.r != 1.0 || through.g != 1.0 || through.b != 1.0)) {
                 /* --aov: what this shadow took, as a +Q3 render would show it. */
                 RGB u = { 0, 0, 0 }, s = { 0, 0, 0 };
                 for (int i = 0; i < n; i++) {
@@ -600,7 +599,7 @@ void shade_trace(ShadeContext *ctx, const Ray *ray, double weight, int level, Ra
  * (transmitted, same-ior) ray does not start a new level. */
 static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int level, int continued, Radiance *out)
 {
-    const World *w = ctx->shadow.tracer.world;
+    const World *w = ctx->tracer.world;
     memset(out, 0, sizeof *out);
     if (level >= w->max_trace_level || weight < w->adc_bailout)
         return;
@@ -617,32 +616,26 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
         ctx->tree_rays_left--;
     }
     Hit hit;
-    ctx->shadow.tracer.hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);
-    int found = trace_nearest(&ctx->shadow.tracer, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);
-    ctx->shadow.tracer.hide = 0;
+    ctx->tracer.hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);
+    int found = trace_nearest(&ctx->tracer, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);
+    ctx->tracer.hide = 0;
     if (!found) {
         background(w, ray, out);
         if (ctx->quality.volume && w->nfogs && in_atmosphere(&ray->inside))
             fog_apply(w, ray->org, ray->dir, HUGE_VAL, out);
         return;
     }
-    if (ctx->shadow.coherence && ctx->shadow.state_depth == 0 && ray->from.kind == HIT_NONE) {
-        ctx->shadow.coherence->hit = hit; /* the next pixel's neighbour */
-        ctx->shadow.coherence->have_hit = 1;
-    }
     if (!continued)
         level++;
 
-    /* The segment ray->org -> hit and a row of light states for the hit,
-     * one row per recursion depth. */
-    LightState *row = NULL;
-    int nl = w->nlights;
-    if (ctx->shadow.states && ctx->shadow.state_depth < ctx->shadow.state_capacity)
-        row = (LightState *)ctx->shadow.states + (size_t)ctx->shadow.state_depth * (size_t)nl;
+    /* The segment ray->org -> hit and, where the method keeps them, a row
+     * of light states for the hit. */
+    LightState *row = shadow_segment_begin(&ctx->shadow, &hit, ray->from.kind == HIT_NONE);
     Segment seg = { ray->org, ray->dir, &ray->from, ray->state, row };
-    ctx->shadow.state_depth++;
+    ctx->depth++;
     shade_hit(ctx, ray, &hit, &seg, weight, level, out);
-    ctx->shadow.state_depth--;
+    ctx->depth--;
+    shadow_segment_end(&ctx->shadow);
     if (ctx->quality.volume && w->nfogs && in_atmosphere(&ray->inside))
         fog_apply(w, ray->org, ray->dir, hit.t, out);
 }
@@ -651,7 +644,7 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
  * and its own light: ambient and emission, reduced where it is see-through. */
 static void texture_own_light(ShadeContext *ctx, const Ray *ray, const Material *m, double weight, LitTexture *t)
 {
-    const World *w = ctx->shadow.tracer.world;
+    const World *w = ctx->tracer.world;
     const Finish *f = t->finish;
     double cos_incidence = -v3_dot(ray->dir, t->normal);
     t->reflect_weight = weight;
@@ -683,7 +676,7 @@ static void texture_own_light(ShadeContext *ctx, const Ray *ray, const Material 
 static void texture_colour(ShadeContext *ctx, const Ray *ray, const Hit *hit, const LightState *state,
                            const Material *m, Vec3 raw, double weight, int level, const LitTexture *t, Radiance *out)
 {
-    const World *w = ctx->shadow.tracer.world;
+    const World *w = ctx->tracer.world;
     const Finish *f = t->finish;
     const Colour *pc = &t->colour;
     const RGB pigment = t->pigment;
@@ -810,7 +803,7 @@ __attribute__((noinline)) static void shade_map_hit(ShadeContext *ctx, const Ray
                                                     const Segment *seg, const Material *m, Vec3 raw, Vec3 normal,
                                                     double weight, int level, Radiance *out)
 {
-    const World *w = ctx->shadow.tracer.world;
+    const World *w = ctx->tracer.world;
     SurfaceTexture found[MAX_SURFACE_TEXTURES];
     LitTexture lit[MAX_SURFACE_TEXTURES];
     int n = material_textures_normals_at(w, m, hit->kind == HIT_POLYGON ? hit->index : -1, hit->point, normal,
@@ -823,7 +816,7 @@ __attribute__((noinline)) static void shade_map_hit(ShadeContext *ctx, const Ray
 static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const Segment *seg, double weight,
                       int level, Radiance *out)
 {
-    const World *w = ctx->shadow.tracer.world;
+    const World *w = ctx->tracer.world;
     const Hit hit = *hitp;
     const Material *m = &w->materials[hit_material(w, &hit)];
     Vec3 raw = hit.kind == HIT_POLYGON ? polygon_shading_normal(w, &w->polygons[hit.index], hit.point)
@@ -831,14 +824,14 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
     if (m->map >= 0) {
-        if (ctx->aov && ctx->shadow.state_depth == 1)
+        if (ctx->aov && ctx->depth == 1)
             aov_record_hit(ctx->aov, hit.t, hit.point, raw); /* a map's textures have normals each */
         shade_map_hit(ctx, ray, &hit, seg, m, raw, raw, weight, level, out);
         return;
     }
     const SurfaceTexture own =
         material_plain_texture_at(w, m, hit.kind == HIT_POLYGON ? hit.index : -1, hit.point, raw, ctx->quality.normal);
-    if (ctx->aov && ctx->shadow.state_depth == 1)
+    if (ctx->aov && ctx->depth == 1)
         aov_record_hit(ctx->aov, hit.t, hit.point, own.normal);
     LitTexture lit;
     lit_texture(&lit, &own);

@@ -30,10 +30,13 @@ typedef struct {
 
 void shade_counters_add(ShadeCounters *total, const ShadeCounters *part);
 
-/* A render thread's shading: its shadow testing (and, in that, its tracer),
- * what the +Q level asks for, and the current pixel's analysis record. */
+/* A render thread's shading: its tracer (the ray queries and their
+ * mailbox, which its shadow testing asks too), its shadow testing, what
+ * the +Q level asks for, and the current pixel's analysis record. */
 typedef struct {
+    Tracer tracer;
     ShadowContext shadow;
+    int depth;                /* ray segments being shaded: 1 at a camera ray's hit */
     Quality quality;
     ShadeCounters stats;
     struct AovPixel *aov;     /* --aov: the current pixel's record, or NULL when off */

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "options.h"
+#include "render.h"
 
 #include "animation.h"
 #include "aov.h"
@@ -1040,11 +1041,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
     opt->quality = 9;
     opt->shadows = "hst";
     opt->nth = (NthSetting){ NTH_AUTO, 0.0 };
-    /* A ray tree that splits at every level (reflecting, see-through
-     * surfaces with adc_bailout 0) is 2^max_trace_level rays in one pixel:
-     * it would never end (POV-Ray crashes). 2^20 rays, about a second,
-     * is far beyond what a pixel of a scene that can be rendered holds. */
-    opt->max_tree_rays = 1L << 20;
+    opt->max_tree_rays = RENDER_DEFAULT_MAX_TREE_RAYS;
     opt->pixel_coherence = 1;
     opt->tolerance = GRID_TOLERANCE;
     opt->initial_frame = opt->final_frame = 1;

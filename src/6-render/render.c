@@ -11,8 +11,6 @@
 #include "camera.h"
 #include "clock.h"
 #include "shade.h"
-#include "shadow_coherence.h"
-#include "shadow_reference.h"
 
 #define TILE 16
 
@@ -123,7 +121,7 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
      * what it decides and counts for a pixel (the analysis channels, the
      * statistics) does not depend on which tiles this thread rendered
      * before: the same for any thread count. */
-    shadow_cache_forget(&ctx->shadow, job->world->nlights);
+    shadow_tile_begin(&ctx->shadow);
     if (opt->aa.method)
         return antialiased_tile(ctx, loop, job, x0, y0, x1, y1);
     /* What the cache and pixel coherence carry from pixel to pixel (the
@@ -150,12 +148,9 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
             Radiance c;
             if (ctx->aov)
                 aov_pixel_begin(ctx->aov, shadow_tests(ctx), rays_traced(ctx, loop));
-            PixelCoherence *pc = ctx->shadow.coherence;
-            if (pc)
-                pixel_coherence_begin(pc, x == wx0, y == wy0);
+            shadow_pixel_begin(&ctx->shadow, x == wx0, y == wy0);
             shade_trace(ctx, &ray, 1.0, 0, &c);
-            if (pc)
-                pixel_coherence_end(pc, pc->have_hit ? &pc->hit : NULL, ctx->shadow.states, x == wx0);
+            shadow_pixel_end(&ctx->shadow, x == wx0);
             loop->camera_rays++;
             if (!inside)
                 continue;
@@ -208,40 +203,27 @@ static void *worker_main(void *arg)
     const RenderOptions *opt = job->opt;
     ctx.quality = opt->quality;
     const ShadowPrepared *shadows = opt->shadows;
-    if (shadow_context_init(&ctx.shadow, job->world, job->grid, shadows->decider, shadows->volumes)) {
+    AovPixel aov;
+    memset(&aov, 0, sizeof aov);
+    /* The tracer first (the method's state may ask it to record cells),
+     * then the shadow testing that asks it; pixel coherence only where
+     * each pixel is one camera ray. */
+    int failed = tracer_init(&ctx.tracer, job->world, job->grid);
+    if (!failed) {
+        tracer_use_bvh(&ctx.tracer, opt->bvh);
+        failed = shadow_context_init(&ctx.shadow, &ctx.tracer, job->world, job->grid, shadows, opt->verify,
+                                     opt->pixel_coherence && !opt->aa.method) ||
+                 (opt->aov && aov_pixel_init(&aov, job->world->nlights, shadows->decider->blind));
+    }
+    if (failed) {
+        aov_pixel_free(&aov);
         shadow_context_free(&ctx.shadow);
+        tracer_free(&ctx.tracer);
         atomic_store(&job->failed, 1);
         return NULL;
     }
-    tracer_use_bvh(&ctx.shadow.tracer, opt->bvh);
-    ctx.shadow.embree = shadows->embree;
-    PixelCoherence coherence;
-    memset(&coherence, 0, sizeof coherence);
-    if (opt->pixel_coherence && shadows->volumes && !opt->aa.method) {
-        if (pixel_coherence_init(&coherence, job->world, job->grid)) {
-            pixel_coherence_free(&coherence);
-            shadow_context_free(&ctx.shadow);
-            atomic_store(&job->failed, 1);
-            return NULL;
-        }
-        ctx.shadow.coherence = &coherence;
-    }
-    AovPixel aov;
-    memset(&aov, 0, sizeof aov);
-    if (opt->aov) {
-        if (aov_pixel_init(&aov, job->world->nlights, shadows->decider->blind)) {
-            aov_pixel_free(&aov);
-            pixel_coherence_free(&coherence);
-            shadow_context_free(&ctx.shadow);
-            atomic_store(&job->failed, 1);
-            return NULL;
-        }
+    if (opt->aov)
         ctx.aov = &aov;
-    }
-    ctx.shadow.verify = opt->verify;
-    ctx.shadow.reference_eps = shadow_reference_eps(job->grid);
-    ctx.shadow.nth = shadows->nth;
-    ctx.shadow.cost = shadows->cost;
     ctx.deadline = job->deadline;
     ctx.max_tree_rays = opt->max_tree_rays;
     double t0 = clock_thread_cpu();
@@ -289,13 +271,13 @@ static void *worker_main(void *arg)
         }
     }
     loop.render_seconds = clock_thread_cpu() - t0;
-    loop.rays = ctx.shadow.tracer.stats;
+    loop.rays = ctx.tracer.stats;
     loop.shading = ctx.stats;
     loop.shadow = ctx.shadow.stats;
     wk->stats = loop;
     aov_pixel_free(&aov);
-    pixel_coherence_free(&coherence);
     shadow_context_free(&ctx.shadow);
+    tracer_free(&ctx.tracer);
     return NULL;
 }
 

@@ -51,6 +51,13 @@ typedef struct {
     uint64_t max_tree_rays;
 } RenderOptions;
 
+/* --max-tree-rays' default: a ray tree that splits at every level
+ * (reflecting, see-through surfaces with adc_bailout 0) is
+ * 2^max_trace_level rays in one pixel and would never end (POV-Ray
+ * crashes); 2^20 rays, about a second, is far beyond what a pixel of a
+ * scene that can be rendered holds. */
+#define RENDER_DEFAULT_MAX_TREE_RAYS (1L << 20)
+
 /* render_image's failures. */
 enum { RENDER_OUT_OF_MEMORY = -1, RENDER_PAST_DEADLINE = -2, RENDER_RAY_TREE = -3 };
 

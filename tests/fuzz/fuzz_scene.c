@@ -70,6 +70,7 @@ static void render_tiny(const Scene *scene)
         prepared.cost = &cost;
         prepared.nth = cost.nth;
         ropt.shadows = &prepared;
+        ropt.max_tree_rays = RENDER_DEFAULT_MAX_TREE_RAYS; /* a tree of 2^256 rays ends, as in hstrace */
         ropt.bvh = &bvh;
         ropt.pixel_coherence = 1;
         Image img;
