@@ -1,4 +1,6 @@
-/* Command-line parsing. */
+/* Command-line parsing: the long options, POV-Ray's switches and INI keys
+ * as the options' table (options_table.c) describes them, INI files, and
+ * what is worked out from the settings at the end. */
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -10,20 +12,12 @@
 #include <unistd.h>
 
 #include "options.h"
-#include "render.h"
 
-#include "animation.h"
-#include "aov.h"
 #include "ini_file.h"
-#include "grid.h"
+#include "options_table.h"
 #include "shadow.h"
-#include "shadow_embree.h"
-#include "shadow_volumes.h"
 
-#define MAX_DIMENSION 32768
-#define MAX_DIMENSION_TEXT "32768"
-
-static int parse_int(const char *s, int lo, int hi, int *out)
+int option_parse_int(const char *s, int lo, int hi, int *out)
 {
     if (!s || !*s)
         return -1;
@@ -78,135 +72,80 @@ static int parse_count(const char *s, long *out)
     return 0;
 }
 
-/* "N" or "NxNxN". */
-static int parse_grid(const char *s, int g[3])
-{
-    int a, b, c;
-    char tail;
-    if (sscanf(s, "%dx%dx%d%c", &a, &b, &c, &tail) == 3) {
-        g[0] = a; g[1] = b; g[2] = c;
-    } else if (sscanf(s, "%d%c", &a, &tail) == 1) {
-        g[0] = g[1] = g[2] = a;
-    } else {
-        return -1;
-    }
-    for (int i = 0; i < 3; i++)
-        if (g[i] < 1 || g[i] > 4096)
-            return -1;
-    if ((double)g[0] * g[1] * g[2] > 1 << 28)
-        return -1;
-    return 0;
-}
 
+static const char usage_head[] =
+    "usage: hstrace SCENE.pov [options]\n"
+    "       hstrace FILE.ini[SECTION] [more INI files, switches, KEY=VALUE] [options]\n"
+    "       hstrace compare A B [options]   (see hstrace compare --help)\n"
+    "       hstrace vs-povray SCENE.pov [options]   (see hstrace vs-povray --help)\n"
+    "       hstrace stitch PART.exr... -o FULL.exr   (see hstrace stitch --help)\n"
+    "\n"
+    "Renders a POV-Ray scene made of polygons, with hybrid shadow testing; compares\n"
+    "two images and two renderers' shadow masks; measures every shadow method\n"
+    "against POV-Ray on a scene; or joins the parts of a partial render.\n"
+    "\n";
+
+/* What POV-Ray's switches and INI keys do, after the table of long options. */
+static const char usage_tail[] =
+    "\n"
+    "POV-Ray switches: +Wn +Hn +Oname +Iname +Ldir +WTn +Qn (quality: <=3 no shadows,\n"
+    "4-5 shadows, 6-7 also refraction, >=8 also reflection; default 9); +FN[16] (PNG),\n"
+    "+FE (EXR), +FP (PPM), +FT / +FC (Targa, plain / run-length), +FB (BMP), +FJ (JPEG,\n"
+    "quality from the INI key Compression, default 85), +FH (Radiance HDR): the output\n"
+    "type, +Oname without an extension gets its extension; +FS (system), +FNG (grey)\n"
+    "and 16-bit PPM are refused; -F: write no image; -D -V are\n"
+    "accepted and change nothing, +D with a note (no display window). A scene named\n"
+    "without an extension is NAME.pov, as in POV-Ray.\n"
+    "Anti-aliasing as POV-Ray 3.7's: +A[threshold] (0.3), -A, +AM1 / +AM2 (method),\n"
+    "+Rn (depth, 3), +J[amount] / -J (POV-Ray's own jitter, on by default).\n"
+    "+UA: an alpha channel (PNG, Targa, BMP; EXR always has one), the background\n"
+    "transparent, as POV-Ray 3.7's; -UA (the default) composites it.\n"
+    "+C (continue: hstrace leaves no partial image, so it renders all), +MV3.7,\n"
+    "+SPn +EPn (mosaic preview: no display) are accepted; +P (pause) with a note, -P.\n"
+    "Console streams: +GA -GA (all), +GD -GD (#debug), +GW -GW (warnings), +GR -GR\n"
+    "(progress line), +GS -GS (--stats), +GF -GF +GP accepted; errors are always\n"
+    "shown; a stream to a file (+GW name) and +GI name (an INI file) are refused.\n"
+    "On a terminal a progress line shows the pixels done and the time left.\n"
+    "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
+    "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
+    "parsed and rendered anew and written to NAMEnn.EXT, as POV-Ray numbers them.\n"
+    "Partial renders: +SRn +ERn +SCn +ECn (rows and columns from 1, or fractions below\n"
+    "1), the rest of the image black, as POV-Ray writes them.\n"
+    "POV-Ray INI files (FILE.ini, FILE.ini[SECTION]) and INI options given as KEY=VALUE\n"
+    "(Input_File_Name, Output_File_Name, Width, Height, Quality, Work_Threads,\n"
+    "Library_Path, Output_File_Type, Bits_Per_Color, Declare=NAME=VALUE, Initial_Frame,\n"
+    "...: see the man page); settings apply in order, later ones winning.\n"
+    "\n"
+    "Exit status: 0 success, 1 bad usage (also a mistake in an INI file, a display,\n"
+    "view or colour space the config lacks), 2 scene error, 3 input/output error (also\n"
+    "an unreadable INI file, a missing or broken colour config).\n";
+
+/* The table's rows with a long option and a description, each as
+ * "  -o, --output FILE" then its description from OPTION_HELP_COLUMN (two
+ * spaces after a longer head), a description's further lines indented. */
 void options_usage(FILE *f)
 {
-    fprintf(f,
-            "usage: hstrace SCENE.pov [options]\n"
-            "       hstrace FILE.ini[SECTION] [more INI files, switches, KEY=VALUE] [options]\n"
-            "       hstrace compare A B [options]   (see hstrace compare --help)\n"
-            "       hstrace vs-povray SCENE.pov [options]   (see hstrace vs-povray --help)\n"
-            "       hstrace stitch PART.exr... -o FULL.exr   (see hstrace stitch --help)\n"
-            "\n"
-            "Renders a POV-Ray scene made of polygons, with hybrid shadow testing; compares\n"
-            "two images and two renderers' shadow masks; measures every shadow method\n"
-            "against POV-Ray on a scene; or joins the parts of a partial render.\n"
-            "\n"
-            "  -o, --output FILE      image to write (.exr .png .ppm .tga .bmp .jpg .hdr; default SCENE.png)\n"
-            "      --width N          image width in pixels (default 320)\n"
-            "      --height N         image height in pixels (default 240)\n"
-            "      --shadows METHOD   shadow test (default hst), one of:\n"
-            "                         %s;\n"
-            "                         embree is Embree 3's float shadow ray, for comparison:\n"
-            "                         not exact (--verify-shadows counts its disagreements)%s\n"
-            "      --nth N|auto|per-point  hst's switching threshold N_th: fixed, the measured\n"
-            "                         cost of a shadow ray over that of counting one shadow polygon\n"
-            "                         (default), or the paper's eq. (7) per shading point\n"
-            "      --volumes auto|always  hst: build a light's shadow volumes only where the cost\n"
-            "                         model, measured before building, says they repay their\n"
-            "                         build on this image, else shadow rays only (default auto);\n"
-            "                         always: every light's, as the paper does\n"
-            "      --pixel-coherence on|off  hst: carry depth counts from the previous pixel's\n"
-            "                         hit instead of the eye where cheaper (default on)\n"
-            "      --tolerance R      margin of the shadow tests, relative to the scene's\n"
-            "                         coordinates (default 1e-9; for measuring speed against error)\n"
-            "      --plane-precision double|float|float-naive  how volume and hst test the\n"
-            "                         shadow polygons' planes: double (default); float with a\n"
-            "                         margin widened for float's rounding (same decisions); float\n"
-            "                         with the double margin (for measuring the error)\n"
-            "      --verify-shadows   also fire the exact shadow ray at every decision and count\n"
-            "                         disagreements (--stats shows them)\n"
-            "      --verify-reference as --verify-shadows, and check both against a brute-force\n"
-            "                         long-double reference (slow; for measuring error)\n"
-            "      --threads N        render threads (default: all cores); the image does not depend on N\n"
-            "      --grid N|NxNxN     grid cells per axis (default: chosen from the polygon count)\n"
-            "      --include-path DIR folder searched for #include files (repeatable)\n"
-            "      --strict           refuse what hstrace only approximates (patterns and normals it\n"
-            "                         does not model, warps, layered textures, radiosity, photons,\n"
-            "                         focal blur, ...: APPROXIMATIONS in the man page)\n"
-            "      --max-memory SIZE  memory the scene may take while it is parsed, and the world\n"
-            "                         built from it, e.g. 512M or 8G (default: a quarter of the\n"
-            "                         physical memory)\n"
-            "      --max-parse-seconds S  stop a parse, or the parse and the world's build together,\n"
-            "                         running longer (default: no time limit)\n"
-            "      --max-render-seconds S  stop a render running longer, writing no image\n"
-            "                         (status 2; default: no time limit)\n"
-            "      --max-tree-rays N  rays one camera ray's tree of reflected and transmitted rays\n"
-            "                         may hold, else no image (status 2; default 1048576, 0: none)\n"
-            "      --max-repeated-tokens N  tokens loops and macro calls may read again, a long\n"
-            "                         one counting one per 16 bytes (default 20000000: stops an\n"
-            "                         endless loop within seconds)\n"
-            "      --max-macro-calls N     macro calls in all (default 2000000)\n"
-            "      --max-loop-iterations N #while/#for iterations in all (default 10000000)\n"
-            "      --exr-float        write 32-bit float EXR channels instead of half\n"
-            "      --aov LIST         EXR only: add analysis channels, comma separated groups of\n"
-            "                         Z, N, P, shadow, hst, depth, cost, or all (see the man page)\n"
-            "      --png16            write 16-bit PNG\n"
-            "      --ocio-config FILE OpenColorIO config for PNG/PPM output (default: $OCIO, else\n"
-            "                         hstrace's own); without this, --display, --view, --colorspace\n"
-            "                         and $OCIO, PNG/PPM get POV-Ray's sRGB encoding\n"
-            "      --display NAME     OCIO display (default: the config's default display)\n"
-            "      --view NAME        OCIO view of that display (default: the display's default)\n"
-            "      --colorspace NAME  OCIO working space the render is in and the EXR is tagged\n"
-            "                         with (default: the config's scene_linear role)\n"
-            "      --stats            print timings and counts on stderr\n"
-            "      --stats-json FILE  write the same statistics as JSON\n"
-            "      --help             show this help\n"
-            "      --version          show the version\n"
-            "\n"
-            "POV-Ray switches: +Wn +Hn +Oname +Iname +Ldir +WTn +Qn (quality: <=3 no shadows,\n"
-            "4-5 shadows, 6-7 also refraction, >=8 also reflection; default 9); +FN[16] (PNG),\n"
-            "+FE (EXR), +FP (PPM), +FT / +FC (Targa, plain / run-length), +FB (BMP), +FJ (JPEG,\n"
-            "quality from the INI key Compression, default 85), +FH (Radiance HDR): the output\n"
-            "type, +Oname without an extension gets its extension; +FS (system), +FNG (grey)\n"
-            "and 16-bit PPM are refused; -F: write no image; -D -V are\n"
-            "accepted and change nothing, +D with a note (no display window). A scene named\n"
-            "without an extension is NAME.pov, as in POV-Ray.\n"
-            "Anti-aliasing as POV-Ray 3.7's: +A[threshold] (0.3), -A, +AM1 / +AM2 (method),\n"
-            "+Rn (depth, 3), +J[amount] / -J (POV-Ray's own jitter, on by default).\n"
-            "+UA: an alpha channel (PNG, Targa, BMP; EXR always has one), the background\n"
-            "transparent, as POV-Ray 3.7's; -UA (the default) composites it.\n"
-            "+C (continue: hstrace leaves no partial image, so it renders all), +MV3.7,\n"
-            "+SPn +EPn (mosaic preview: no display) are accepted; +P (pause) with a note, -P.\n"
-            "Console streams: +GA -GA (all), +GD -GD (#debug), +GW -GW (warnings), +GR -GR\n"
-            "(progress line), +GS -GS (--stats), +GF -GF +GP accepted; errors are always\n"
-            "shown; a stream to a file (+GW name) and +GI name (an INI file) are refused.\n"
-            "On a terminal a progress line shows the pixels done and the time left.\n"
-            "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
-            "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
-            "parsed and rendered anew and written to NAMEnn.EXT, as POV-Ray numbers them.\n"
-            "Partial renders: +SRn +ERn +SCn +ECn (rows and columns from 1, or fractions below\n"
-            "1), the rest of the image black, as POV-Ray writes them.\n"
-            "POV-Ray INI files (FILE.ini, FILE.ini[SECTION]) and INI options given as KEY=VALUE\n"
-            "(Input_File_Name, Output_File_Name, Width, Height, Quality, Work_Threads,\n"
-            "Library_Path, Output_File_Type, Bits_Per_Color, Declare=NAME=VALUE, Initial_Frame,\n"
-            "...: see the man page); settings apply in order, later ones winning.\n"
-            "\n"
-            "Exit status: 0 success, 1 bad usage (also a mistake in an INI file, a display,\n"
-            "view or colour space the config lacks), 2 scene error, 3 input/output error (also\n"
-            "an unreadable INI file, a missing or broken colour config).\n",
-            shadow_method_names(), shadow_embree_built() ? "" : ";\n                         not in this build (configure found no Embree)");
+    char indent[OPTION_HELP_COLUMN + 1];
+    memset(indent, ' ', OPTION_HELP_COLUMN);
+    indent[OPTION_HELP_COLUMN] = '\0';
+    fputs(usage_head, f);
+    for (size_t i = 0; i < option_nrows; i++) {
+        const OptionRow *r = &option_rows[i];
+        if (!r->name || !r->help)
+            continue;
+        int n = fprintf(f, "  %s%s%s%s%s", r->short_name ? r->short_name : "  ", r->short_name ? ", " : "  ",
+                        r->name, r->value_name ? " " : "", r->value_name ? r->value_name : "");
+        fprintf(f, "%*s", n < OPTION_HELP_COLUMN ? OPTION_HELP_COLUMN - n : 2, "");
+        for (const char *line = r->help; *line;) {
+            size_t len = strcspn(line, "\n");
+            fprintf(f, "%s%.*s\n", line == r->help ? "" : indent, (int)len, line);
+            line += len + (line[len] == '\n');
+        }
+        if (r->help_tail)
+            r->help_tail(f, indent);
+    }
+    fputs(usage_tail, f);
 }
-
 /* Takes the value of a long option: "--name=value" or "--name value". */
 static const char *option_value(int argc, char **argv, int *i, const char *name, char *err, int errlen)
 {
@@ -238,7 +177,7 @@ int options_is_long(const char *arg, const char *name)
     return is_long(arg, name);
 }
 
-static int add_include(Options *opt, const char *dir, char *err, int errlen)
+int option_add_include(Options *opt, const char *dir, char *err, int errlen)
 {
     if (opt->ninclude_paths >= MAX_INCLUDE_PATHS) {
         snprintf(err, (size_t)errlen, "too many include paths (at most %d)", MAX_INCLUDE_PATHS);
@@ -247,83 +186,7 @@ static int add_include(Options *opt, const char *dir, char *err, int errlen)
     opt->include_paths[opt->ninclude_paths++] = dir;
     return 0;
 }
-
-/* POV-Ray's +F: the output file's type (+FN[bits] PNG, +FE EXR, +FP PPM,
- * +FT Targa, +FC compressed Targa, +FB BMP, +FJ JPEG, +FH Radiance HDR;
- * -F none). Digits after the type are POV-Ray's bits per colour: PNG's
- * depth, ignored by the types that have one depth. */
-static int output_type_switch(const char *arg, int on, Options *opt, char *err, int errlen)
-{
-    const char *t = arg + 2;
-    if (!on) {
-        opt->no_output = 1;
-        return 0;
-    }
-    opt->no_output = 0;
-    int type = toupper((unsigned char)t[0]);
-    if (type == 'S') {
-        snprintf(err, (size_t)errlen, "'%s': the system's own image type is not supported by hstrace (+FN PNG, +FE EXR, "
-                 "+FP PPM, +FT/+FC Targa, +FB BMP, +FJ JPEG, +FH HDR)", arg);
-        return -1;
-    }
-    if (!type || !strchr("NEPTCBJH", type)) {
-        snprintf(err, (size_t)errlen, "'%s': unknown output type (+FN PNG, +FE EXR, +FP PPM, +FT/+FC Targa, +FB BMP, "
-                 "+FJ JPEG, +FH HDR)", arg);
-        return -1;
-    }
-    if (toupper((unsigned char)t[1]) == 'G') {
-        snprintf(err, (size_t)errlen, "'%s': greyscale output is not supported by hstrace", arg);
-        return -1;
-    }
-    int bits = 8;
-    if (t[1] && parse_int(t + 1, 1, 16, &bits)) {
-        snprintf(err, (size_t)errlen, "'%s': bits per colour must be 1 to 16", arg);
-        return -1;
-    }
-    if (type == 'P' && bits > 8) {
-        snprintf(err, (size_t)errlen, "'%s': 16-bit PPM output is not supported by hstrace (+FN16 writes 16-bit PNG)", arg);
-        return -1;
-    }
-    if (type == 'N')
-        opt->png16 = bits > 8;
-    opt->output_type = type;
-    return 0;
-}
-
-/* POV-Ray's console streams: +GA all, +GD debug, +GF fatal, +GR render,
- * +GS statistics, +GW warning (on, or off with -), +GP append to their
- * files. hstrace writes its streams to the standard error only: a file name
- * after the letter is refused (redirect the standard error instead); fatal
- * errors are shown whatever -GF or -GA say, since the exit status alone
- * would not tell what went wrong. */
-static int stream_switch(const char *arg, int on, Options *opt, char *err, int errlen)
-{
-    int which = toupper((unsigned char)arg[2]);
-    if (which == 'I') {
-        snprintf(err, (size_t)errlen, "'%s': writing INI files is not supported by hstrace", arg);
-        return -1;
-    }
-    if (!which || !strchr("ADFRSWP", which) || (which == 'P' && arg[3])) {
-        snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
-        return -1;
-    }
-    if (arg[3]) {
-        snprintf(err, (size_t)errlen, "'%s': hstrace writes its messages to the standard error only (redirect it to "
-                 "keep them in a file)", arg);
-        return -1;
-    }
-    if (which == 'A' || which == 'D')
-        opt->debug_console = on;
-    if (which == 'A' || which == 'W')
-        opt->warning_console = on;
-    if (which == 'A' || which == 'R')
-        opt->render_console = on;
-    if (which == 'A' || which == 'S')
-        opt->statistics_console = on;
-    return 0;
-}
-
-static int parse_double(const char *s, double *out)
+int option_parse_double(const char *s, double *out)
 {
     if (!s || !*s)
         return -1;
@@ -336,176 +199,178 @@ static int parse_double(const char *s, double *out)
     return 0;
 }
 
-/* Animation's switches (+KFIn +KFFn +KIf +KFf +KC, +SFx +EFx, +Kf) and the
- * partial renders' (+SR +ER +SC +EC), which hstrace does not do yet. */
-static int animation_switch(const char *arg, Options *opt, char *err, int errlen)
+/* ---- the table's rows as long options, switches and INI keys ------------- */
+
+static void *field_of(Options *opt, size_t field)
 {
-    const char *s = arg + 1;
-    char a = (char)toupper((unsigned char)s[0]), b = (char)toupper((unsigned char)s[1]);
-    char c = b ? (char)toupper((unsigned char)s[2]) : '\0';
+    return (char *)opt + field - 1;
+}
+
+#define INT_FIELD(opt, r) ((int *)field_of(opt, (r)->field))
+#define DOUBLE_FIELD(opt, r) ((double *)field_of(opt, (r)->field))
+#define STRING_FIELD(opt, r) ((const char **)field_of(opt, (r)->field))
+
+static int in_range(const OptionRow *r, double x)
+{
+    return (r->lo_open ? x > r->lo : x >= r->lo) && x <= r->hi;
+}
+
+/* The row of a long option ("--width", "--width=N", "-o"); a flag only
+ * alone ("--stats=1" is no option). */
+static const OptionRow *long_row(const char *a)
+{
+    for (size_t i = 0; i < option_nrows; i++) {
+        const OptionRow *r = &option_rows[i];
+        if ((r->short_name && strcmp(a, r->short_name) == 0) ||
+            (r->name && (r->type == OPT_FLAG ? strcmp(a, r->name) == 0 : is_long(a, r->name))))
+            return r;
+    }
+    return NULL;
+}
+
+/* A long option's value (also a row's default). Numbers are read as strtod
+ * reads them (1e-400 is 0), as the options always have been. */
+static int long_value(const OptionRow *r, const char *v, Options *opt, char *err, int errlen)
+{
     int bad = 0;
-    const char *what = "a number";
-    if (a == 'K' && b == 'F' && (c == 'I' || c == 'F')) {
-        int *slot = c == 'I' ? &opt->initial_frame : &opt->final_frame;
-        bad = parse_int(s + 3, 0, 1000000000, slot);
-    } else if (a == 'K' && b == 'C') {
-        opt->cyclic = arg[0] == '+';
-    } else if (a == 'K' && (b == 'I' || b == 'F')) {
-        bad = parse_double(s + 2, b == 'I' ? &opt->initial_clock : &opt->final_clock);
-    } else if (a == 'K') {
-        bad = parse_double(s + 1, &opt->clock);
-        opt->have_clock = 1;
-    } else if ((a == 'S' || a == 'E') && b == 'F') {
-        double *slot = a == 'S' ? &opt->subset_start : &opt->subset_end;
-        /* Frame numbers are those of +KFF: a larger one names no frame. */
-        bad = parse_double(s + 2, slot) || *slot < 0.0 || *slot > 1e9;
-        what = "a frame number or fraction from 0 to 1000000000";
-        if (a == 'S')
-            opt->have_subset_start = 1;
+    switch (r->type) {
+    case OPT_INT:
+        bad = option_parse_int(v, (int)r->lo, (int)r->hi, INT_FIELD(opt, r));
+        break;
+    case OPT_REAL: {
+        char *end;
+        double x = strtod(v, &end);
+        bad = end == v || *end != '\0' || !in_range(r, x);
+        if (!bad)
+            *DOUBLE_FIELD(opt, r) = x;
+        break;
+    }
+    case OPT_COUNT:
+        if (r->lo == 0 && strcmp(v, "0") == 0)
+            *(long *)field_of(opt, r->field) = 0;
         else
-            opt->have_subset_end = 1;
-    } else if ((a == 'S' || a == 'E') && b == 'P') {
-        /* The mosaic preview's block sizes: they change only what a display
-         * window would show first, and hstrace has none. */
-        int size;
-        bad = parse_int(s + 2, 1, 64, &size);
-    } else if ((a == 'S' || a == 'E') && (b == 'R' || b == 'C')) {
-        double *slot = a == 'S' ? (b == 'R' ? &opt->start_row : &opt->start_col)
-                                : (b == 'R' ? &opt->end_row : &opt->end_col);
-        int *have = a == 'S' ? (b == 'R' ? &opt->have_start_row : &opt->have_start_col)
-                             : (b == 'R' ? &opt->have_end_row : &opt->have_end_col);
-        /* No image has more rows or columns than MAX_DIMENSION: a larger
-         * value names none (the image's own size is checked later). */
-        bad = parse_double(s + 2, slot) || *slot < 0.0 || *slot > MAX_DIMENSION;
-        what = "a row or column (or fraction) from 0 to " MAX_DIMENSION_TEXT;
-        *have = 1;
-    } else {
-        snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
-        return -1;
+            bad = parse_count(v, field_of(opt, r->field));
+        break;
+    case OPT_SIZE:
+        bad = options_parse_size(v, field_of(opt, r->field));
+        break;
+    case OPT_WORDS: {
+        const OptionWord *w = r->words;
+        while (w->word && strcmp(w->word, v) != 0)
+            w++;
+        bad = !w->word;
+        if (!bad)
+            *INT_FIELD(opt, r) = w->value;
+        break;
+    }
+    case OPT_PARSED:
+        bad = r->parse(v, field_of(opt, r->field));
+        break;
+    case OPT_NAME:
+        if (v[0] == '\0') {
+            snprintf(err, (size_t)errlen, "%s: the name is empty", r->name);
+            return -1;
+        }
+        *STRING_FIELD(opt, r) = v;
+        break;
+    case OPT_STRING:
+        *STRING_FIELD(opt, r) = v;
+        break;
+    case OPT_LIST:
+        return option_add_include(opt, v, err, errlen);
+    case OPT_CUSTOM:
+        return r->handler(r, r->name, v, opt, err, errlen);
+    default:
+        bad = 1;
+        break;
     }
     if (bad) {
-        snprintf(err, (size_t)errlen, "'%s': expected %s", arg,
-                 a == 'K' && b == 'F' && (c == 'I' || c == 'F') ? "a frame number from 0" : what);
+        snprintf(err, (size_t)errlen, "%s '%s': %s", r->name, v, r->expect);
         return -1;
     }
     return 0;
 }
 
+/* argv[*i] is r's long option: its value, if it takes one, from "=value"
+ * or the next word. */
+static int long_option(const OptionRow *r, int argc, char **argv, int *i, Options *opt, char *err, int errlen)
+{
+    const char *a = argv[*i];
+    if (r->type == OPT_FLAG) {
+        int *level = INT_FIELD(opt, r);
+        if (*level < (int)r->lo)
+            *level = (int)r->lo;
+        return 0;
+    }
+    const char *v = option_value(argc, argv, i, r->short_name && strcmp(a, r->short_name) == 0 ? r->short_name : r->name,
+                                 err, errlen);
+    return v ? long_value(r, v, opt, err, errlen) : -1;
+}
+
+/* The row of a switch ("+WT4" is +WT's, "+W640" +W's): the longest of the
+ * table's switches that begins it, case ignored. */
+static const OptionRow *switch_row(const char *arg)
+{
+    const OptionRow *best = NULL;
+    size_t longest = 0;
+    for (size_t i = 0; i < option_nrows; i++) {
+        const OptionRow *r = &option_rows[i];
+        size_t n = r->pov ? strlen(r->pov + 1) : 0;
+        if (n > longest && strncasecmp(arg + 1, r->pov + 1, n) == 0) {
+            best = r;
+            longest = n;
+        }
+    }
+    return best;
+}
+
 /* POV-Ray switches: +X or -X followed by a value where it has one. */
 static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen)
 {
-    const char *s = arg + 1;
-    int on = arg[0] == '+';
-    if (strncmp(s, "WT", 2) == 0 || strncmp(s, "wt", 2) == 0) {
-        if (parse_int(s + 2, 1, 1024, &opt->threads)) {
-            snprintf(err, (size_t)errlen, "'%s': thread count must be 1 to 1024", arg);
-            return -1;
-        }
-        return 0;
+    const OptionRow *r = switch_row(arg);
+    const char *v = r ? arg + strlen(r->pov) : "";
+    int on = arg[0] == '+', bad = 0;
+    if (r && r->given)
+        *(int *)field_of(opt, r->given) = 1;
+    switch (r ? r->type : OPT_IGNORED) {
+    case OPT_INT: {
+        int unused;
+        bad = option_parse_int(v, (int)r->lo, (int)r->hi, r->field ? INT_FIELD(opt, r) : &unused);
+        break;
     }
-    if (toupper((unsigned char)s[0]) == 'K' || ((toupper((unsigned char)s[0]) == 'S' || toupper((unsigned char)s[0]) == 'E') &&
-                                               s[1] != '\0'))
-        return animation_switch(arg, opt, err, errlen);
-    switch (s[0]) {
-    case 'W': case 'w':
-        if (parse_int(s + 1, 1, MAX_DIMENSION, &opt->width)) {
-            snprintf(err, (size_t)errlen, "'%s': width must be 1 to %d", arg, MAX_DIMENSION);
-            return -1;
-        }
-        return 0;
-    case 'H': case 'h':
-        if (parse_int(s + 1, 1, MAX_DIMENSION, &opt->height)) {
-            snprintf(err, (size_t)errlen, "'%s': height must be 1 to %d", arg, MAX_DIMENSION);
-            return -1;
-        }
-        return 0;
-    case 'Q': case 'q':
-        if (parse_int(s + 1, 0, 11, &opt->quality)) {
-            snprintf(err, (size_t)errlen, "'%s': quality must be 0 to 11", arg);
-            return -1;
-        }
-        return 0;
-    case 'O': case 'o':
-        if (!s[1]) break;
-        opt->output = s + 1;
-        return 0;
-    case 'I': case 'i':
-        if (!s[1]) break;
-        opt->scene = s + 1;
-        return 0;
-    case 'L': case 'l':
-        if (!s[1]) break;
-        return add_include(opt, s + 1, err, errlen);
-    case 'A': case 'a':
-        if (toupper((unsigned char)s[1]) == 'M') {
-            if (parse_int(s + 2, 1, 2, &opt->aa_method)) {
-                snprintf(err, (size_t)errlen, "'%s': the sampling method is 1 or 2", arg);
-                return -1;
-            }
-            return 0;
-        }
-        opt->antialias_on = on;
-        opt->antialias_positioned = 0;
-        if (on)
-            snprintf(opt->antialias_by, sizeof opt->antialias_by, "'%s'", arg);
-        if (s[1] && (parse_double(s + 1, &opt->aa_threshold) || opt->aa_threshold < 0.0)) {
-            snprintf(err, (size_t)errlen, "'%s': the anti-aliasing threshold is a number from 0", arg);
-            return -1;
-        }
-        return 0;
-    case 'C': case 'c':
-        if (s[1])
-            break;
-        /* Continue an interrupted render: hstrace never leaves a partial
-         * image behind (it writes whole files), so there is nothing to
-         * continue and the render is made whole. */
-        return 0;
-    case 'U': case 'u':
-        if (toupper((unsigned char)s[1]) != 'A' || s[2])
-            break;
-        opt->output_alpha = on;
-        return 0;
-    case 'M': case 'm': {
-        double v;
-        if (toupper((unsigned char)s[1]) != 'V')
-            break;
-        if (parse_double(s + 2, &v) || fabs(v - 3.7) > 1e-9) {
-            snprintf(err, (size_t)errlen, "'%s': hstrace reads scenes as POV-Ray 3.7 does (+MV3.7 only)", arg);
-            return -1;
-        }
-        opt->language_version_given = 1;
-        return 0;
+    case OPT_REAL: {
+        double x;
+        bad = option_parse_double(v, &x) || !in_range(r, x);
+        if (!bad)
+            *DOUBLE_FIELD(opt, r) = x;
+        break;
     }
-    case 'R': case 'r':
-        if (parse_int(s + 1, 1, 9, &opt->aa_depth)) {
-            snprintf(err, (size_t)errlen, "'%s': the anti-aliasing depth is 1 to 9", arg);
-            return -1;
-        }
-        return 0;
-    case 'J': case 'j':
-        opt->jitter_on = on;
-        if (s[1] && (parse_double(s + 1, &opt->jitter_amount) || opt->jitter_amount < 0.0)) {
-            snprintf(err, (size_t)errlen, "'%s': the jitter amount is a number from 0", arg);
-            return -1;
-        }
-        return 0;
-    case 'F': case 'f':
-        return output_type_switch(arg, on, opt, err, errlen);
-    case 'D': case 'd':
-        opt->display_asked = on; /* no display window: main says so once */
-        return 0;
-    case 'V': case 'v':
-        return 0; /* verbosity */
-    case 'P': case 'p':
-        if (s[1])
+    case OPT_STRING:
+        if (!*v)
             break;
-        opt->pause_asked = on; /* no display window: main says so once */
+        *STRING_FIELD(opt, r) = v;
         return 0;
-    case 'G': case 'g':
-        return stream_switch(arg, on, opt, err, errlen);
+    case OPT_LIST:
+        if (!*v)
+            break;
+        return option_add_include(opt, v, err, errlen);
+    case OPT_SIGN:
+        if (*v && !r->ignore_rest)
+            break;
+        if (r->field)
+            *INT_FIELD(opt, r) = on;
+        return 0;
+    case OPT_CUSTOM:
+        return r->handler(r, arg, v, opt, err, errlen);
     default:
         break;
     }
+    if (bad) {
+        snprintf(err, (size_t)errlen, "'%s': %s", arg, r->pov_expect);
+        return -1;
+    }
+    if (r && (r->type == OPT_INT || r->type == OPT_REAL))
+        return 0;
     snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
     return -1;
 }
@@ -513,7 +378,7 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
 /* ---- INI options and files (ini_file.h) ---------------------------------- */
 
 /* A string the options own (freed by options_free). */
-static char *own_string(Options *opt, const char *s, size_t n)
+char *option_own_string(Options *opt, const char *s, size_t n)
 {
     char **grown = realloc(opt->strings, sizeof *grown * (size_t)(opt->nstrings + 1));
     if (!grown)
@@ -527,7 +392,6 @@ static char *own_string(Options *opt, const char *s, size_t n)
     opt->strings[opt->nstrings++] = copy;
     return copy;
 }
-
 /* POV-Ray's truth values (ProcessOptions::IsTrue/IsFalse). */
 static int parse_bool(const char *v, int *out)
 {
@@ -541,295 +405,104 @@ static int parse_bool(const char *v, int *out)
     return -1;
 }
 
-/* Declare=NAME=VALUE: a number, or a string in double quotes. */
-static int add_declare(Options *opt, const char *text, char *err, int errlen)
+static int read_ini(Options *opt, const char *spec, const char *where, int depth, char *err, int errlen);
+
+/* The row of an INI key (POV-Ray 3.7's names, case ignored). */
+static const OptionRow *ini_row(const char *key)
 {
-    const char *eq = strchr(text, '=');
-    if (!eq || eq == text) {
-        snprintf(err, (size_t)errlen, "Declare=%s: expected Declare=NAME=VALUE", text);
-        return -1;
-    }
-    OptionDeclare d = { own_string(opt, text, (size_t)(eq - text)), 0.0, NULL };
-    const char *value = eq + 1, *quote = strchr(value, '"');
-    if (quote) {
-        const char *close = strchr(quote + 1, '"');
-        if (!close) {
-            snprintf(err, (size_t)errlen, "Declare=%s: the string is not closed", text);
-            return -1;
-        }
-        d.string = own_string(opt, quote + 1, (size_t)(close - quote - 1));
-    } else {
-        char *end;
-        errno = 0;
-        double v = strtod(value, &end);
-        if (end == value || *end != '\0' || !isfinite(v) || !isfinite(pov_declared_value(v))) {
-            snprintf(err, (size_t)errlen, "Declare=%s: the value must be a number (within float's range) or a string "
-                     "in double quotes", text);
-            return -1;
-        }
-        d.number = pov_declared_value(v);
-    }
-    OptionDeclare *grown = realloc(opt->declares, sizeof *grown * (size_t)(opt->ndeclares + 1));
-    if (!d.name || (quote && !d.string) || !grown) {
-        free(grown == opt->declares ? NULL : grown);
-        snprintf(err, (size_t)errlen, "out of memory");
-        return -1;
-    }
-    opt->declares = grown;
-    opt->declares[opt->ndeclares++] = d;
-    return 0;
+    for (size_t i = 0; i < option_nrows; i++)
+        if (option_rows[i].ini && strcasecmp(option_rows[i].ini, key) == 0)
+            return &option_rows[i];
+    return NULL;
 }
 
-/* The INI keys hstrace knows (POV-Ray 3.7's names, case ignored). */
-typedef enum {
-    KEY_SWITCH,   /* the same as the switch PREFIX followed by the value */
-    KEY_BOOL,     /* on/off as the switch +PREFIX / -PREFIX */
-    KEY_SCENE, KEY_OUTPUT, KEY_LIBRARY, KEY_DECLARE, KEY_BITS, KEY_COMPRESSION, KEY_INCLUDE_INI,
-    KEY_AA,       /* anti-aliasing's settings (prefix: which) */
-    KEY_DISPLAY_GAMMA, /* Display_Gamma: the output's gamma where a scene turns gamma correction off */
-    KEY_IGNORED,  /* no effect on the image or the files (display, consoles, bounding) */
-    KEY_UNSUPPORTED /* POV-Ray's, not hstrace's yet */
-} KeyKind;
-
-typedef struct {
-    const char *name;
-    KeyKind kind;
-    const char *prefix; /* KEY_SWITCH, KEY_BOOL: the switch; KEY_UNSUPPORTED: what it is about */
-} IniKey;
-
-static const IniKey ini_keys[] = {
-    { "Input_File_Name", KEY_SCENE, NULL },
-    { "Output_File_Name", KEY_OUTPUT, NULL },
-    { "Width", KEY_SWITCH, "+W" },
-    { "Height", KEY_SWITCH, "+H" },
-    { "Quality", KEY_SWITCH, "+Q" },
-    { "Work_Threads", KEY_SWITCH, "+WT" },
-    { "Output_File_Type", KEY_SWITCH, "+F" },
-    { "Library_Path", KEY_LIBRARY, NULL },
-    { "Bits_Per_Color", KEY_BITS, NULL },
-    { "Declare", KEY_DECLARE, NULL },
-    { "Include_Ini", KEY_INCLUDE_INI, NULL },
-    { "Antialias", KEY_BOOL, "A" },
-    { "Output_To_File", KEY_BOOL, "F" },
-    { "Antialias_Threshold", KEY_AA, "threshold" },
-    { "Antialias_Depth", KEY_AA, "depth" },
-    { "Antialias_Gamma", KEY_AA, "gamma" },
-    { "Sampling_Method", KEY_AA, "method" },
-    { "Jitter_Amount", KEY_AA, "amount" },
-    { "Jitter", KEY_BOOL, "J" },
-    { "Display", KEY_BOOL, "D" },
-    { "Display_Gamma", KEY_DISPLAY_GAMMA, NULL },
-    { "Verbose", KEY_IGNORED, NULL },
-    { "Pause_When_Done", KEY_BOOL, "P" },
-    { "Draw_Vistas", KEY_IGNORED, NULL },
-    { "Preview_Start_Size", KEY_IGNORED, NULL },
-    { "Preview_End_Size", KEY_IGNORED, NULL },
-    { "Test_Abort", KEY_IGNORED, NULL },
-    { "Test_Abort_Count", KEY_IGNORED, NULL },
-    { "Bounding", KEY_IGNORED, NULL },
-    { "Bounding_Method", KEY_IGNORED, NULL },
-    { "Bounding_Threshold", KEY_IGNORED, NULL },
-    { "Light_Buffer", KEY_IGNORED, NULL },
-    { "Vista_Buffer", KEY_IGNORED, NULL },
-    { "Remove_Bounds", KEY_IGNORED, NULL },
-    { "Split_Unions", KEY_IGNORED, NULL },
-    { "All_Console", KEY_BOOL, "GA" },
-    { "Debug_Console", KEY_BOOL, "GD" },
-    { "Fatal_Console", KEY_IGNORED, NULL }, /* errors are always shown */
-    { "Render_Console", KEY_BOOL, "GR" },
-    { "Statistic_Console", KEY_BOOL, "GS" },
-    { "Warning_Console", KEY_BOOL, "GW" },
-    { "Warning_Level", KEY_IGNORED, NULL },
-    { "Initial_Frame", KEY_SWITCH, "+KFI" },
-    { "Final_Frame", KEY_SWITCH, "+KFF" },
-    { "Initial_Clock", KEY_SWITCH, "+KI" },
-    { "Final_Clock", KEY_SWITCH, "+KF" },
-    { "Subset_Start_Frame", KEY_SWITCH, "+SF" },
-    { "Subset_End_Frame", KEY_SWITCH, "+EF" },
-    { "Cyclic_Animation", KEY_BOOL, "KC" },
-    { "Field_Render", KEY_UNSUPPORTED, "field rendering" },
-    { "Odd_Field", KEY_UNSUPPORTED, "field rendering" },
-    { "Clock", KEY_SWITCH, "+K" },
-    { "Frame_Step", KEY_UNSUPPORTED, "frame steps (POV-Ray 3.8)" },
-    { "Start_Row", KEY_SWITCH, "+SR" },
-    { "End_Row", KEY_SWITCH, "+ER" },
-    { "Start_Column", KEY_SWITCH, "+SC" },
-    { "End_Column", KEY_SWITCH, "+EC" },
-    { "Continue_Trace", KEY_UNSUPPORTED, "continuing a render" },
-    { "Create_Continue_Trace_Log", KEY_UNSUPPORTED, "continuing a render" },
-    { "Output_Alpha", KEY_BOOL, "UA" },
-    { "Compression", KEY_COMPRESSION, NULL },
-    { "Create_Ini", KEY_UNSUPPORTED, "writing INI files" },
-    { "Histogram_Type", KEY_UNSUPPORTED, "histograms" },
-    { "Histogram_Name", KEY_UNSUPPORTED, "histograms" },
-    { "Histogram_Grid_Size", KEY_UNSUPPORTED, "histograms" },
-    { "Dither", KEY_UNSUPPORTED, "dithering" },
-    { "Dither_Method", KEY_UNSUPPORTED, "dithering" },
-    { "File_Gamma", KEY_UNSUPPORTED, "output gamma" },
-    { "Radiosity_From_File", KEY_UNSUPPORTED, "radiosity files" },
-    { "Radiosity_To_File", KEY_UNSUPPORTED, "radiosity files" },
-    { "Radiosity_File_Name", KEY_UNSUPPORTED, "radiosity files" },
-    { "Radiosity_Vain_Pretrace", KEY_UNSUPPORTED, "radiosity" },
-    { "High_Reproducibility", KEY_UNSUPPORTED, "radiosity" },
-    { "Pre_Scene_Command", KEY_UNSUPPORTED, "shell-out commands" },
-    { "Pre_Frame_Command", KEY_UNSUPPORTED, "shell-out commands" },
-    { "Post_Scene_Command", KEY_UNSUPPORTED, "shell-out commands" },
-    { "Post_Frame_Command", KEY_UNSUPPORTED, "shell-out commands" },
-    { "User_Abort_Command", KEY_UNSUPPORTED, "shell-out commands" },
-    { "Fatal_Error_Command", KEY_UNSUPPORTED, "shell-out commands" },
-    { "Include_Header", KEY_UNSUPPORTED, "an include file for every scene" },
-    { "All_File", KEY_UNSUPPORTED, "console files" },
-    { "Debug_File", KEY_UNSUPPORTED, "console files" },
-    { "Fatal_File", KEY_UNSUPPORTED, "console files" },
-    { "Render_File", KEY_UNSUPPORTED, "console files" },
-    { "Statistic_File", KEY_UNSUPPORTED, "console files" },
-    { "Warning_File", KEY_UNSUPPORTED, "console files" },
-    { "Video_Mode", KEY_UNSUPPORTED, "the display" },
-    { "Palette", KEY_UNSUPPORTED, "the display" },
-    { "Buffer_Output", KEY_IGNORED, NULL },
-    { "Buffer_Size", KEY_IGNORED, NULL },
-};
-
-static int read_ini(Options *opt, const char *spec, const char *where, int depth, char *err, int errlen);
+/* An INI key's value, as its row takes it; msg: the message without the
+ * position. */
+static int ini_value(const OptionRow *r, const char *value, const char *where, Options *opt, char *msg, int msglen)
+{
+    int b, bad = 0;
+    double x;
+    if (r->ini_as == INI_AS_SWITCH) {
+        char sw[600];
+        snprintf(sw, sizeof sw, "%s%s", r->pov, value);
+        char *own = option_own_string(opt, sw, strlen(sw));
+        return own ? parse_pov_switch(own, opt, msg, msglen) : -1;
+    }
+    if (r->ini_as == INI_AS_ON_OFF || r->type == OPT_BOOL) {
+        if (parse_bool(value, &b)) {
+            snprintf(msg, (size_t)msglen, "%s=%s: expected on or off", r->ini, value);
+            return -1;
+        }
+        if (r->type == OPT_BOOL) {
+            *INT_FIELD(opt, r) = r->inverted ? !b : b;
+            return 0;
+        }
+        /* as the switch +X or -X */
+        char sw[8];
+        snprintf(sw, sizeof sw, "%c%s", b ? '+' : '-', r->pov + 1);
+        if (parse_pov_switch(sw, opt, msg, msglen))
+            return -1;
+        if (b && strcmp(r->pov, "+A") == 0) {
+            /* Antialias=on: the message that names what turned it on says where */
+            snprintf(opt->antialias_by, sizeof opt->antialias_by, "%s%s%s=%s", where ? where : "", where ? ": " : "",
+                     r->ini, value);
+            opt->antialias_positioned = where != NULL;
+        }
+        return 0;
+    }
+    switch (r->type) {
+    case OPT_INT:
+        bad = option_parse_int(value, (int)r->lo, (int)r->hi, INT_FIELD(opt, r));
+        break;
+    case OPT_REAL:
+        bad = option_parse_double(value, &x) || !in_range(r, x);
+        if (!bad)
+            *DOUBLE_FIELD(opt, r) = x;
+        break;
+    case OPT_PARSED:
+        bad = r->parse(value, field_of(opt, r->field));
+        break;
+    case OPT_STRING:
+        *STRING_FIELD(opt, r) = value;
+        break;
+    case OPT_LIST:
+        return option_add_include(opt, value, msg, msglen);
+    case OPT_CUSTOM:
+        return r->handler(r, r->ini, value, opt, msg, msglen);
+    case OPT_UNSUPPORTED:
+        snprintf(msg, (size_t)msglen, "%s: %s is not supported by hstrace yet", r->ini, r->reason);
+        return -1;
+    default: /* OPT_IGNORED */
+        break;
+    }
+    if (bad) {
+        snprintf(msg, (size_t)msglen, "%s=%s: expected %s", r->ini, value, r->ini_expect);
+        return -1;
+    }
+    return 0;
+}
 
 /* One KEY=VALUE, from an INI file (where: "FILE:LINE:COLUMN") or the
  * command line (where: NULL). */
 static int apply_key(Options *opt, const char *key, const char *value, const char *where, int depth, char *err,
                      int errlen)
 {
-    const IniKey *k = NULL;
-    for (size_t i = 0; i < sizeof ini_keys / sizeof ini_keys[0] && !k; i++)
-        if (strcasecmp(ini_keys[i].name, key) == 0)
-            k = &ini_keys[i];
+    const OptionRow *k = ini_row(key);
     char msg[768];
-    int status = 0, b;
+    int status = 0;
     msg[0] = '\0';
     if (!k) {
         snprintf(msg, sizeof msg, "unknown INI key '%s'", key);
         status = -1;
-    } else {
-        switch (k->kind) {
-        case KEY_SWITCH: {
-            char sw[600];
-            snprintf(sw, sizeof sw, "%s%s", k->prefix, value);
-            char *own = own_string(opt, sw, strlen(sw));
-            status = own ? parse_pov_switch(own, opt, msg, (int)sizeof msg) : -1;
-            break;
-        }
-        case KEY_BOOL:
-            if (parse_bool(value, &b)) {
-                snprintf(msg, sizeof msg, "%s=%s: expected on or off", k->name, value);
-                status = -1;
-            } else if (k->prefix[0] == 'K') {
-                opt->cyclic = b; /* Cyclic_Animation */
-            } else if (k->prefix[0] == 'U') {
-                opt->output_alpha = b; /* Output_Alpha */
-            } else if (k->prefix[0] == 'D') {
-                opt->display_asked = b; /* Display */
-            } else if (k->prefix[0] == 'P') {
-                opt->pause_asked = b; /* Pause_When_Done */
-            } else if (k->prefix[0] == 'G') {
-                /* All_Console, Debug_Console, ...: the stream's letter */
-                if (k->prefix[1] == 'A' || k->prefix[1] == 'D')
-                    opt->debug_console = b;
-                if (k->prefix[1] == 'A' || k->prefix[1] == 'W')
-                    opt->warning_console = b;
-                if (k->prefix[1] == 'A' || k->prefix[1] == 'R')
-                    opt->render_console = b;
-                if (k->prefix[1] == 'A' || k->prefix[1] == 'S')
-                    opt->statistics_console = b;
-            } else if (k->prefix[0] == 'J') {
-                opt->jitter_on = b; /* Jitter */
-            } else if (k->prefix[0] == 'A') {
-                opt->antialias_on = b;
-                if (b) {
-                    snprintf(opt->antialias_by, sizeof opt->antialias_by, "%s%s%s=%s", where ? where : "",
-                             where ? ": " : "", k->name, value);
-                    opt->antialias_positioned = where != NULL;
-                }
-            } else {
-                opt->no_output = !b; /* Output_To_File */
-            }
-            break;
-        case KEY_SCENE:
-            opt->scene = value;
-            break;
-        case KEY_OUTPUT:
-            opt->output = value;
-            break;
-        case KEY_LIBRARY:
-            status = add_include(opt, value, msg, (int)sizeof msg);
-            break;
-        case KEY_DECLARE:
-            status = add_declare(opt, value, msg, (int)sizeof msg);
-            break;
-        case KEY_BITS:
-            if (parse_int(value, 1, 16, &b)) {
-                snprintf(msg, sizeof msg, "Bits_Per_Color=%s: expected 1 to 16", value);
-                status = -1;
-            } else {
-                opt->png16 = b > 8;
-            }
-            break;
-        case KEY_COMPRESSION:
-            /* POV-Ray keeps 0..255; JPEG's quality is it, up to 100 */
-            if (parse_int(value, 0, 255, &b)) {
-                snprintf(msg, sizeof msg, "Compression=%s: expected 0 to 255", value);
-                status = -1;
-            } else {
-                opt->jpeg_quality = b;
-            }
-            break;
-        case KEY_INCLUDE_INI:
-            if (depth >= 16) {
-                snprintf(msg, sizeof msg, "Include_Ini=%s: INI files included more than 16 deep", value);
-                status = -1;
-            } else if (read_ini(opt, value, where, depth + 1, err, errlen)) {
-                return -1; /* err already says where */
-            }
-            break;
-        case KEY_AA: {
-            double v;
-            int bad = parse_double(value, &v) || v < 0.0;
-            if (!bad && strcmp(k->prefix, "threshold") == 0)
-                opt->aa_threshold = v;
-            else if (!bad && strcmp(k->prefix, "gamma") == 0)
-                opt->aa_gamma = v;
-            else if (!bad && strcmp(k->prefix, "amount") == 0)
-                opt->jitter_amount = v;
-            else if (!bad && strcmp(k->prefix, "depth") == 0)
-                bad = parse_int(value, 1, 9, &opt->aa_depth);
-            else if (!bad)
-                bad = parse_int(value, 1, 2, &opt->aa_method);
-            if (bad) {
-                snprintf(msg, sizeof msg, "%s=%s: expected %s", k->name, value,
-                         strcmp(k->prefix, "depth") == 0    ? "1 to 9"
-                         : strcmp(k->prefix, "method") == 0 ? "1 or 2"
-                                                            : "a number from 0");
-                status = -1;
-            }
-            break;
-        }
-        case KEY_DISPLAY_GAMMA: {
-            /* POV-Ray's Parse_Gamma of an option: sRGB, or a power law */
-            double v;
-            if (strcasecmp(value, "srgb") == 0) {
-                opt->display_gamma = 0.0;
-            } else if (parse_double(value, &v) || !(v > 0.0)) {
-                snprintf(msg, sizeof msg, "%s=%s: expected sRGB or a number above 0", k->name, value);
-                status = -1;
-            } else {
-                opt->display_gamma = v;
-            }
-            break;
-        }
-        case KEY_IGNORED:
-            break;
-        case KEY_UNSUPPORTED:
-            snprintf(msg, sizeof msg, "%s: %s is not supported by hstrace yet", k->name, k->prefix);
+    } else if (k->type == OPT_INCLUDE_INI) {
+        if (depth >= 16) {
+            snprintf(msg, sizeof msg, "Include_Ini=%s: INI files included more than 16 deep", value);
             status = -1;
-            break;
+        } else if (read_ini(opt, value, where, depth + 1, err, errlen)) {
+            return -1; /* err already says where */
         }
+    } else {
+        status = ini_value(k, value, where, opt, msg, (int)sizeof msg);
     }
     if (status) {
         if (where) {
@@ -840,6 +513,28 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
         }
     }
     return status;
+}
+
+/* A row's default, given as the row's own value would be: through its long
+ * option, else its INI key when that is its on/off or its only name, else
+ * its switch. The table's defaults are its own: one refused is a bug. */
+static void apply_default(const OptionRow *r, Options *opt)
+{
+    char msg[768];
+    int status;
+    if (r->name) {
+        status = long_value(r, r->dflt, opt, msg, (int)sizeof msg);
+    } else if (r->ini && (r->ini_as == INI_AS_ON_OFF || !r->pov)) {
+        status = ini_value(r, r->dflt, NULL, opt, msg, (int)sizeof msg);
+    } else {
+        char sw[64];
+        snprintf(sw, sizeof sw, "%s%s", r->pov, r->dflt);
+        status = parse_pov_switch(sw, opt, msg, (int)sizeof msg);
+    }
+    if (status) {
+        fprintf(stderr, "hstrace: the options' table has a default its row refuses: %s\n", msg);
+        abort();
+    }
 }
 
 /* Only depth bounds nothing: a file that includes the next one ten times,
@@ -996,7 +691,7 @@ static int find_scene(Options *opt, char *err, int errlen)
     memcpy(pov, opt->scene, n);
     memcpy(pov + n, ".pov", 5);
     if (access(pov, F_OK) == 0)
-        opt->scene = own_string(opt, pov, n + 4);
+        opt->scene = option_own_string(opt, pov, n + 4);
     free(pov);
     if (!opt->scene) {
         snprintf(err, (size_t)errlen, "out of memory");
@@ -1036,203 +731,15 @@ const char *options_output_extension(const Options *opt)
 int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
 {
     memset(opt, 0, sizeof *opt);
-    opt->width = 320;
-    opt->height = 240;
-    opt->quality = 9;
-    opt->shadows = "hst";
-    opt->nth = (NthSetting){ NTH_AUTO, 0.0 };
-    opt->max_tree_rays = RENDER_DEFAULT_MAX_TREE_RAYS;
-    opt->pixel_coherence = 1;
-    opt->tolerance = GRID_TOLERANCE;
-    opt->initial_frame = opt->final_frame = 1;
-    opt->debug_console = opt->warning_console = opt->render_console = opt->statistics_console = 1;
-    opt->aa_threshold = 0.3;
-    opt->aa_method = 1;
-    opt->aa_depth = 3;
-    opt->aa_gamma = 2.5;
-    opt->jitter_on = 1;
-    opt->jitter_amount = 1.0;
-    opt->final_clock = 1.0;
+    for (size_t i = 0; i < option_nrows; i++)
+        if (option_rows[i].dflt)
+            apply_default(&option_rows[i], opt);
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
-        const char *v;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            opt->help = 1;
-        } else if (strcmp(a, "--version") == 0) {
-            opt->version = 1;
-        } else if (strcmp(a, "-o") == 0 || is_long(a, "--output")) {
-            if (!(v = option_value(argc, argv, &i, strcmp(a, "-o") == 0 ? "-o" : "--output", err, errlen)))
+        const OptionRow *r = long_row(a);
+        if (r) {
+            if (long_option(r, argc, argv, &i, opt, err, errlen))
                 return -1;
-            opt->output = v;
-        } else if (is_long(a, "--width") || is_long(a, "--height")) {
-            int is_w = is_long(a, "--width");
-            if (!(v = option_value(argc, argv, &i, is_w ? "--width" : "--height", err, errlen)))
-                return -1;
-            if (parse_int(v, 1, MAX_DIMENSION, is_w ? &opt->width : &opt->height)) {
-                snprintf(err, (size_t)errlen, "%s '%s': must be a whole number from 1 to %d",
-                         is_w ? "--width" : "--height", v, MAX_DIMENSION);
-                return -1;
-            }
-        } else if (is_long(a, "--shadows")) {
-            if (!(v = option_value(argc, argv, &i, "--shadows", err, errlen)))
-                return -1;
-            const ShadowMethod *m = shadow_method_find(v);
-            if (!m) {
-                snprintf(err, (size_t)errlen, "unknown shadow method '%s' (valid: %s)", v, shadow_method_names());
-                return -1;
-            }
-            if (shadow_method_unavailable(m)) {
-                snprintf(err, (size_t)errlen, "--shadows %s: %s", v, shadow_method_unavailable(m));
-                return -1;
-            }
-            opt->shadows = v;
-        } else if (is_long(a, "--nth")) {
-            if (!(v = option_value(argc, argv, &i, "--nth", err, errlen)))
-                return -1;
-            char *end;
-            double n = strtod(v, &end);
-            if (strcmp(v, "auto") == 0) {
-                opt->nth = (NthSetting){ NTH_AUTO, 0.0 };
-            } else if (strcmp(v, "per-point") == 0) {
-                opt->nth = (NthSetting){ NTH_PER_POINT, 0.0 };
-            } else if (end != v && *end == '\0' && n >= 0.0 && n <= 1e9) {
-                opt->nth = (NthSetting){ NTH_FIXED, n };
-            } else {
-                snprintf(err, (size_t)errlen, "--nth '%s': expected auto, per-point or a number from 0 to 1e9", v);
-                return -1;
-            }
-        } else if (is_long(a, "--plane-precision")) {
-            if (!(v = option_value(argc, argv, &i, "--plane-precision", err, errlen)))
-                return -1;
-            if (strcmp(v, "double") == 0)
-                opt->plane_precision = PLANES_DOUBLE;
-            else if (strcmp(v, "float") == 0)
-                opt->plane_precision = PLANES_FLOAT;
-            else if (strcmp(v, "float-naive") == 0)
-                opt->plane_precision = PLANES_FLOAT_NAIVE;
-            else {
-                snprintf(err, (size_t)errlen, "--plane-precision '%s': expected double, float or float-naive", v);
-                return -1;
-            }
-        } else if (is_long(a, "--tolerance")) {
-            if (!(v = option_value(argc, argv, &i, "--tolerance", err, errlen)))
-                return -1;
-            char *end;
-            double t = strtod(v, &end);
-            if (end == v || *end != '\0' || !(t >= 0.0 && t <= 1e-3)) {
-                snprintf(err, (size_t)errlen, "--tolerance '%s': expected a number from 0 to 1e-3", v);
-                return -1;
-            }
-            opt->tolerance = t;
-        } else if (is_long(a, "--volumes")) {
-            if (!(v = option_value(argc, argv, &i, "--volumes", err, errlen)))
-                return -1;
-            if (strcmp(v, "auto") == 0 || strcmp(v, "always") == 0) {
-                opt->volumes_always = strcmp(v, "always") == 0;
-            } else {
-                snprintf(err, (size_t)errlen, "--volumes '%s': expected auto or always", v);
-                return -1;
-            }
-        } else if (is_long(a, "--pixel-coherence")) {
-            if (!(v = option_value(argc, argv, &i, "--pixel-coherence", err, errlen)))
-                return -1;
-            if (strcmp(v, "on") == 0 || strcmp(v, "off") == 0) {
-                opt->pixel_coherence = strcmp(v, "on") == 0;
-            } else {
-                snprintf(err, (size_t)errlen, "--pixel-coherence '%s': expected on or off", v);
-                return -1;
-            }
-        } else if (strcmp(a, "--verify-shadows") == 0) {
-            opt->verify_shadows = opt->verify_shadows > 1 ? opt->verify_shadows : 1;
-        } else if (strcmp(a, "--verify-reference") == 0) {
-            opt->verify_shadows = 2;
-        } else if (is_long(a, "--threads")) {
-            if (!(v = option_value(argc, argv, &i, "--threads", err, errlen)))
-                return -1;
-            if (parse_int(v, 1, 1024, &opt->threads)) {
-                snprintf(err, (size_t)errlen, "--threads '%s': must be 1 to 1024", v);
-                return -1;
-            }
-        } else if (is_long(a, "--grid")) {
-            if (!(v = option_value(argc, argv, &i, "--grid", err, errlen)))
-                return -1;
-            if (parse_grid(v, opt->grid)) {
-                snprintf(err, (size_t)errlen, "--grid '%s': expected N or NxNxN, each 1 to 4096", v);
-                return -1;
-            }
-        } else if (is_long(a, "--include-path")) {
-            if (!(v = option_value(argc, argv, &i, "--include-path", err, errlen)) ||
-                add_include(opt, v, err, errlen))
-                return -1;
-        } else if (strcmp(a, "--stats") == 0) {
-            opt->stats = 1;
-        } else if (strcmp(a, "--strict") == 0) {
-            opt->strict = 1;
-        } else if (is_long(a, "--max-memory")) {
-            if (!(v = option_value(argc, argv, &i, "--max-memory", err, errlen)))
-                return -1;
-            if (options_parse_size(v, &opt->max_memory)) {
-                snprintf(err, (size_t)errlen, "--max-memory '%s': expected a size such as 512M or 8G", v);
-                return -1;
-            }
-        } else if (is_long(a, "--max-parse-seconds") || is_long(a, "--max-render-seconds")) {
-            const char *name = is_long(a, "--max-parse-seconds") ? "--max-parse-seconds" : "--max-render-seconds";
-            if (!(v = option_value(argc, argv, &i, name, err, errlen)))
-                return -1;
-            char *end;
-            double s = strtod(v, &end);
-            if (end == v || *end != '\0' || !(s > 0.0 && s <= 1e9)) {
-                snprintf(err, (size_t)errlen, "%s '%s': expected a number of seconds above 0", name, v);
-                return -1;
-            }
-            *(name[6] == 'p' ? &opt->max_parse_seconds : &opt->max_render_seconds) = s;
-        } else if (is_long(a, "--max-tree-rays")) {
-            if (!(v = option_value(argc, argv, &i, "--max-tree-rays", err, errlen)))
-                return -1;
-            if (strcmp(v, "0") == 0) {
-                opt->max_tree_rays = 0;
-            } else if (parse_count(v, &opt->max_tree_rays)) {
-                snprintf(err, (size_t)errlen, "--max-tree-rays '%s': expected a whole number from 0 to 10^15", v);
-                return -1;
-            }
-        } else if (is_long(a, "--max-repeated-tokens") || is_long(a, "--max-macro-calls") ||
-                   is_long(a, "--max-loop-iterations")) {
-            static const char *const names[] = { "--max-repeated-tokens", "--max-macro-calls", "--max-loop-iterations" };
-            long *slots[] = { &opt->max_repeated_tokens, &opt->max_macro_calls, &opt->max_loop_iterations };
-            int k = 0;
-            while (!is_long(a, names[k]))
-                k++;
-            if (!(v = option_value(argc, argv, &i, names[k], err, errlen)))
-                return -1;
-            if (parse_count(v, slots[k])) {
-                snprintf(err, (size_t)errlen, "%s '%s': expected a whole number from 1 to 10^15", names[k], v);
-                return -1;
-            }
-        } else if (is_long(a, "--stats-json")) {
-            if (!(v = option_value(argc, argv, &i, "--stats-json", err, errlen)))
-                return -1;
-            opt->stats_json = v;
-        } else if (strcmp(a, "--exr-float") == 0) {
-            opt->exr_float = 1;
-        } else if (is_long(a, "--aov")) {
-            if (!(v = option_value(argc, argv, &i, "--aov", err, errlen)) || aov_parse(v, &opt->aov, err, errlen))
-                return -1;
-        } else if (strcmp(a, "--png16") == 0) {
-            opt->png16 = 1;
-        } else if (is_long(a, "--ocio-config") || is_long(a, "--display") || is_long(a, "--view") ||
-                   is_long(a, "--colorspace")) {
-            static const char *const names[] = { "--ocio-config", "--display", "--view", "--colorspace" };
-            const char **slots[] = { &opt->ocio_config, &opt->display, &opt->view, &opt->colorspace };
-            int k = 0;
-            while (!is_long(a, names[k]))
-                k++;
-            if (!(v = option_value(argc, argv, &i, names[k], err, errlen)))
-                return -1;
-            if (v[0] == '\0') {
-                snprintf(err, (size_t)errlen, "%s: the name is empty", names[k]);
-                return -1;
-            }
-            *slots[k] = v;
         } else if ((a[0] == '+' || a[0] == '-') && a[1] && a[1] != '-') {
             if (parse_pov_switch(a, opt, err, errlen))
                 return -1;
@@ -1280,7 +787,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             if (named) {
                 memcpy(named, opt->output, n);
                 memcpy(named + n, ext, 5);
-                opt->output = own_string(opt, named, n + 4);
+                opt->output = option_own_string(opt, named, n + 4);
                 free(named);
             }
             if (!named || !opt->output) {

@@ -200,9 +200,15 @@ int atomic_file_open(AtomicFile *af, const char *target)
         char suffix[7];
         random_suffix(suffix, attempt);
         snprintf(af->tmp, len, "%.*s.%.*s.%s", (int)dirlen, target, (int)baselen, base, suffix);
+        /* Guarded before it exists: a signal between its creation and its
+         * guard would leave it (seen under load, with the signal sent as
+         * soon as the file showed). A name that turns out to be another's
+         * (EEXIST) is unguarded at once. */
+        af->slot = guard(af->tmp);
         af->fd = open(af->tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (af->fd >= 0)
             break;
+        unguard(af);
         if (errno != EEXIST) {
             int e = errno;
             release(af);
@@ -217,7 +223,6 @@ int atomic_file_open(AtomicFile *af, const char *target)
     }
     if (have_mode)
         (void)fchmod(af->fd, st.st_mode & 07777);
-    af->slot = guard(af->tmp);
     return 0;
 }
 
