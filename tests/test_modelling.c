@@ -514,8 +514,47 @@ static void test_big_memory(void)
     free(b);
 }
 
+/* Copies of a declared object share their material where nothing tells
+ * them apart (a union of copies, doubled twelve times: 4096 boxes), and
+ * keep their own where something does (a pigment or no_shadow of the copy's
+ * own): a material is over a kilobyte, and twenty doublings made 1.4 GB of
+ * them (issue 39). The images are those of one material an object
+ * (tests/regress.sh, tests/exporters.sh). */
+static void test_shared_materials(void)
+{
+    Scene *s = parse("#declare U = box { 0, 1 }\n"
+                     "#for (I, 1, 12)\n"
+                     "  #declare U = union { object { U } object { U translate x * pow(2, I - 1) } }\n"
+                     "#end\n"
+                     "object { U }\n"
+                     "object { U pigment { rgb x } translate y * 2 }\n"
+                     "object { U no_shadow translate y * 4 }\n");
+    World w;
+    WorldError we;
+    int built = s && world_build_threads(&w, s, 2, &we) == 0;
+    tap_ok(built && w.npolygons == 3 * 4096 * 6, "three unions of 4096 boxes: %d polygons",
+           built ? w.npolygons : 0);
+    int distinct = 0;
+    for (int i = 0; built && i < w.nmaterials; i++) {
+        int same = 0;
+        for (int j = 0; j < i && !same; j++)
+            same = w.materials[j].no_shadow == w.materials[i].no_shadow &&
+                   w.materials[j].pigment.r == w.materials[i].pigment.r &&
+                   w.materials[j].pigment.g == w.materials[i].pigment.g;
+        distinct += !same;
+    }
+    /* two positions of the copies (the two object statements) times the
+     * three unions' distinct looks */
+    tap_ok(built && w.nmaterials <= 6 && distinct == 3,
+           "their 12288 boxes share %d materials, of 3 distinct looks (%d)", built ? w.nmaterials : 0, distinct);
+    if (built)
+        world_free(&w);
+    scene_free(s);
+}
+
 int main(void)
 {
+    test_shared_materials();
     test_big_memory();
     test_mesh_threads();
     test_pattern_values();

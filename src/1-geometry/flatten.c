@@ -15,6 +15,21 @@
 #include "parallel.h"
 #include "world_estimate.h"
 
+/* add_material's memo: 2^6 materials made lately, by a hash of what made
+ * them. World estimates (world_estimate.c) still count one material an
+ * object: an upper bound. */
+#define MATERIAL_MEMO_BITS 6
+#define MATERIAL_MEMO (1 << MATERIAL_MEMO_BITS)
+
+typedef struct {
+    int index;        /* the material; -1: none */
+    const SceneTexture *tex;
+    const Interior *interior;
+    const void *interior_key;
+    int flags[5];
+    SourcePos pos;
+} MaterialMemo;
+
 typedef struct {
     World *w;
     int cap_polygons, cap_points, cap_outlines, cap_outline_boxes, cap_normals, cap_planes, cap_materials, cap_uvs;
@@ -30,6 +45,11 @@ typedef struct {
     double deadline;      /* WorldLimits.deadline: 0 none */
     long objects;         /* objects flattened so far, for the clock's checks */
     int timed_out;        /* the deadline passed */
+    /* Materials made lately and what made them (add_material), by a hash
+     * of that: copies of a declared object by the million (unions of
+     * copies, exported parts) would each take a material of over a
+     * kilobyte, the same bytes. */
+    MaterialMemo memo[MATERIAL_MEMO];
 } Builder;
 
 /* Grows *array (of `size`-byte items) so that index `need` fits. */
@@ -188,10 +208,40 @@ static int build_map(Builder *b, const SceneTexture *tex)
     return w->nmaps++;
 }
 
+/* Whether add_material's result depends on the texture, the interior, the
+ * flags and the position alone (a solid pigment, no normal, no map: the
+ * texture's space plays no part), so that equal ones make equal materials. */
+static int plain_texture(const SceneTexture *tex)
+{
+    return tex->pigment.kind == PIGMENT_SOLID && !(tex->normal && tex->normal->kind != NORMAL_NONE) && tex->nmap == 0;
+}
+
+static int same_pos(SourcePos a, SourcePos b)
+{
+    return a.file == b.file && a.line == b.line && a.column == b.column;
+}
+
 static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex, const Transform *texture_space,
                         SourcePos pos)
 {
     World *w = b->w;
+    const void *interior_key = in->interior ? (const void *)in->interior : in->top_object;
+    const int flags[5] = { in->no_shadow, in->no_image, in->no_reflection, in->double_illuminate, in->hollow };
+    /* An object made lately made the same material: share it. */
+    MaterialMemo *memo = NULL;
+    if (plain_texture(tex)) {
+        /* Fibonacci hashing of the parts (Knuth): the top bits mix all of them */
+        const uint64_t k = 0x9E3779B97F4A7C15u;
+        uint64_t h = (uint64_t)(uintptr_t)tex;
+        h = (h ^ (uint64_t)(uintptr_t)interior_key) * k;
+        h = (h ^ (uint64_t)(uintptr_t)pos.file) * k;
+        h = (h ^ (uint64_t)(uint32_t)pos.line ^ (uint64_t)(uint32_t)pos.column << 32) * k;
+        memo = &b->memo[h >> (64 - MATERIAL_MEMO_BITS)];
+        if (memo->index >= 0 && tex == memo->tex && in->interior == memo->interior &&
+            interior_key == memo->interior_key && memcmp(flags, memo->flags, sizeof flags) == 0 &&
+            same_pos(pos, memo->pos))
+            return memo->index;
+    }
     if (GROW(b, materials, cap_materials, w->nmaterials))
         return -1;
     int map = -1;
@@ -217,7 +267,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->finish = engine_finish(&tex->finish);
     Interior def = scene_default_interior();
     const Interior *it = in->interior ? in->interior : &def;
-    m->interior_key = in->interior ? (const void *)in->interior : in->top_object;
+    m->interior_key = interior_key;
     m->ior = it->ior;
     m->fade_distance = it->fade_distance;
     m->fade_power = it->fade_power;
@@ -229,6 +279,14 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->double_illuminate = in->double_illuminate;
     m->hollow = in->hollow;
     m->pos = pos;
+    if (memo) {
+        memo->index = w->nmaterials;
+        memo->tex = tex;
+        memo->interior = in->interior;
+        memo->interior_key = interior_key;
+        memcpy(memo->flags, flags, sizeof flags);
+        memo->pos = pos;
+    }
     return w->nmaterials++;
 }
 
@@ -878,6 +936,8 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
     w->noise_generator = scene_noise_generator(scene);
     w->number_of_waves = scene->globals.number_of_waves;
     Builder b = { .w = w, .threads = threads, .deadline = limits ? limits->deadline : 0.0 };
+    for (int i = 0; i < MATERIAL_MEMO; i++)
+        b.memo[i].index = -1;
     Inherited root;
     memset(&root, 0, sizeof root);
     transform_identity(&root.transform);
