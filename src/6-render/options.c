@@ -674,6 +674,20 @@ static const IniKey ini_keys[] = {
 
 static int read_ini(Options *opt, const char *spec, int depth, char *err, int errlen);
 
+/* An INI file named at where (Include_Ini=, or a word naming one) could
+ * not be read: its message ("cannot open INI file ...") gets where's
+ * FILE:LINE:COLUMN in front, as every mistake of an INI file has. A
+ * message that has one already (a mistake inside the file) is kept. */
+static void position_error(Options *opt, const char *where, char *err, int errlen)
+{
+    if (!where || opt->error_has_position)
+        return;
+    char msg[1024];
+    snprintf(msg, sizeof msg, "%s", err);
+    snprintf(err, (size_t)errlen, "%s: %s", where, msg);
+    opt->error_has_position = 1;
+}
+
 /* One KEY=VALUE, from an INI file (where: "FILE:LINE:COLUMN") or the
  * command line (where: NULL). */
 static int apply_key(Options *opt, const char *key, const char *value, const char *where, int depth, char *err,
@@ -767,7 +781,8 @@ static int apply_key(Options *opt, const char *key, const char *value, const cha
                 snprintf(msg, sizeof msg, "Include_Ini=%s: INI files included more than 16 deep", value);
                 status = -1;
             } else if (read_ini(opt, value, depth + 1, err, errlen)) {
-                return -1; /* err already says where */
+                position_error(opt, where, err, errlen);
+                return -1;
             }
             break;
         case KEY_AA: {
@@ -849,10 +864,13 @@ static int read_ini(Options *opt, const char *spec, int depth, char *err, int er
                 opt->antialias_positioned = 1;
             }
         } else if (ini_spec_is_ini(e->key)) {
-            if (depth >= 16 || read_ini(opt, e->key, depth + 1, err, errlen)) {
-                if (depth >= 16)
-                    snprintf(err, (size_t)errlen, "%s: INI files included more than 16 deep", where);
+            if (depth >= 16) {
+                snprintf(err, (size_t)errlen, "%s: INI files included more than 16 deep", where);
                 opt->error_has_position = 1;
+                return -1;
+            }
+            if (read_ini(opt, e->key, depth + 1, err, errlen)) {
+                position_error(opt, where, err, errlen);
                 return -1;
             }
         } else if (opt->scene && strcmp(opt->scene, e->key) != 0) {
