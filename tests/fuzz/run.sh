@@ -29,12 +29,14 @@
 # Without targets, all of them: scene ini stitch exr png ppm tga bmp jpg hdr.
 # Environment: FUZZ_SECONDS per target without its own :SECONDS (default
 # 60), FUZZ_CC (default clang), FUZZ_ARGS (more libFuzzer options, after
-# the defaults, which they override: -timeout=20 -rss_limit_mb=4096, or
-# -fork=1 -ignore_crashes=1 to go on past a finding).
+# the defaults, which they override: -timeout=20 -rss_limit_mb=4096),
+# FUZZ_CONTINUE=1 (after a finding, start the target again from its
+# corpus until its time is used, rather than stop it there).
 # Prints one line per target as it ends, and a table of them all at the
-# end: seconds, executions (libFuzzer's stat::number_of_executed_units),
-# coverage (its last cov: and ft:, and the edges instrumented), corpus
-# size, findings (the files in findings-TARGET) and libFuzzer's status.
+# end: seconds run, libFuzzer runs, executions (the sum of each run's
+# stat::number_of_executed_units), coverage (the last cov: and ft:, of the
+# edges instrumented), corpus size, findings (the files in
+# findings-TARGET, by kind) and the last run's status.
 # Exit status: 0 no findings, 1 findings (or a fuzzer that ended in
 # failure), 2 the fuzzers cannot be built (clang or its libFuzzer runtime
 # missing: Debian packages clang and libclang-rt-dev).
@@ -168,28 +170,50 @@ for word in $targets; do
         ;;
     *) echo "fuzz: no target '$t' (scene, ini, stitch, exr, png, ppm, tga, bmp, jpg, hdr)" >&2; exit 2 ;;
     esac
-    max_len=16384
-    # shellcheck disable=SC2086 # $dict and FUZZ_ARGS are words
-    (cd "$out/findings-$t" && exec nice -n 19 "$out/fuzz-$t" "$corpus" $dict -max_total_time="$secs" \
-        -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=4608 -max_len=$max_len -print_final_stats=1 -artifact_prefix="$out/findings-$t/" \
-        ${FUZZ_ARGS:-}) >"$out/$t.log" 2>&1
-    status=$?
+    # libFuzzer stops at a finding; with FUZZ_CONTINUE=1 it starts again
+    # from the corpus (the finding kept) until the target's time is used.
+    began=$(date +%s)
+    left=$secs
+    execs=0
+    runs=0
+    status=0
+    : >"$out/$t.log"
+    while [ "$left" -gt 0 ]; do
+        runs=$((runs + 1))
+        # shellcheck disable=SC2086 # $dict and FUZZ_ARGS are words
+        (cd "$out/findings-$t" && exec nice -n 19 "$out/fuzz-$t" "$corpus" $dict -max_total_time="$left" \
+            -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=4608 -max_len=16384 -print_final_stats=1 \
+            -artifact_prefix="$out/findings-$t/" ${FUZZ_ARGS:-}) >"$out/$t.run.log" 2>&1
+        status=$?
+        cat "$out/$t.run.log" >>"$out/$t.log"
+        # the run's final statistics (printed at a finding too)
+        n=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/$t.run.log" | tail -1)
+        execs=$((execs + ${n:-0}))
+        if [ "$status" -eq 0 ] || [ "${FUZZ_CONTINUE:-0}" != 1 ]; then
+            break
+        fi
+        left=$((secs - ($(date +%s) - began)))
+    done
+    rm -f "$out/$t.run.log"
+    elapsed=$(($(date +%s) - began))
     [ "$status" -eq 0 ] || failed=$((failed + 1))
-    # the final statistics; in fork mode (-fork=N) the last "#N ... cov:" line's
-    execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/$t.log" | tail -1)
-    [ -n "$execs" ] || execs=$(sed -n 's/^#\([0-9][0-9]*\):* .*cov: .*/\1/p' "$out/$t.log" | tail -1)
     edges=$(grep -o 'cov: [0-9]*' "$out/$t.log" | tail -1 | cut -d' ' -f2)
     features=$(grep -o 'ft: [0-9]*' "$out/$t.log" | tail -1 | cut -d' ' -f2)
     total=$(sed -n 's/.*(\([0-9]*\) inline 8-bit counters).*/\1/p' "$out/$t.log" | head -1)
     units=$(find "$corpus" -type f | wc -l)
+    # findings by kind: crash (a signal or a sanitizer's report), timeout, oom, leak
+    kinds=""
+    for k in crash timeout oom leak; do
+        kinds="$kinds/$(find "$out/findings-$t" -type f -name "$k-*" | wc -l)"
+    done
     found=$(find "$out/findings-$t" -type f | wc -l)
     findings=$((findings + found))
-    echo "fuzz $t: ${secs} s, ${execs:-?} executions, cov ${edges:-?} (ft ${features:-?}) of ${total:-?} edges, corpus $units, findings $found (status $status; $out/$t.log)"
-    table="$table$(printf '%-7s %8s %12s %8s %8s %8s %8s %6s' "$t" "$secs" "${execs:-?}" "${edges:-?}" "${features:-?}" \
-        "$units" "$found" "$status")
+    echo "fuzz $t: $elapsed s in $runs run(s), $execs executions, cov ${edges:-?} ft ${features:-?} (of ${total:-?} edges), corpus $units, findings $found (crash/timeout/oom/leak ${kinds#/}; status $status; $out/$t.log)"
+    table="$table$(printf '%-7s %8s %5s %12s %7s %7s %7s %9s %16s %6s' "$t" "$elapsed" "$runs" "$execs" "${edges:-?}" \
+        "${features:-?}" "$units" "$found" "${kinds#/}" "$status")
 "
 done
 echo
-printf '%-7s %8s %12s %8s %8s %8s %8s %6s\n' target seconds executions cov ft corpus findings status
+printf '%-7s %8s %5s %12s %7s %7s %7s %9s %16s %6s\n' target seconds runs executions cov ft corpus findings crash/tmo/oom/leak status
 printf '%s' "$table"
 [ "$findings" -eq 0 ] && [ "$failed" -eq 0 ]
