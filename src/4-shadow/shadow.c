@@ -50,7 +50,9 @@ int shadow_context_init(ShadowContext *ctx, const World *w, const Grid *g, const
             if (light_is_area(&w->lights[i]))
                 area_light_uniform_shape(&w->lights[i], ctx->area_known, &ctx->area_uniform_visits[i],
                                          &ctx->area_uniform_levels[i]);
-        if (method->area_beam) {
+        /* method NULL: a context that only gathers (the cost model's
+         * timing of C_g), which shades no area light */
+        if (method && method->area_beam) {
             ctx->area_candidates = malloc(AREA_BEAM_CAP * sizeof *ctx->area_candidates);
             if (!ctx->area_candidates)
                 return -1;
