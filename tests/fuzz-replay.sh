@@ -4,8 +4,13 @@
 # project's scenes, the hard cases, tests/hostile and tests/fuzz/seeds) to
 # the scene entry point one input at a time, which parses each and renders
 # what parses at 4x3 pixels with hybrid shadow testing; the image readers'
-# entry points (EXR, PNG, PPM, Targa, BMP, JPEG, HDR) get images hstrace writes of a small scene and the
-# images fuzzing found (tests/hostile/images). Under the sanitizer build a
+# entry points (EXR, PNG, PPM, Targa, BMP, JPEG, HDR) get images hstrace
+# writes of a small scene (tests/fuzz/make-seeds.sh) and the images fuzzing
+# found (tests/hostile/images); the INI entry point the INI files and
+# command lines of tests/fuzz/seeds/*.ini and those fuzzing found
+# (tests/hostile/ini); the stitch entry point partial renders of the small
+# scene, alone and in pairs (make-seeds.sh), and those fuzzing found
+# (tests/hostile/stitch). Under the sanitizer build a
 # report ends the program (no recovery): the check fails. So the entry
 # points keep building with the tree, and every finding kept in the tree
 # runs in both builds.
@@ -36,18 +41,26 @@ done
 check "the scene entry point parses and renders the $# seed scenes" replayed fuzz_replay_scene "$@"
 
 for fmt in exr png ppm tga bmp jpg hdr; do
+    mkdir "$work/$fmt" || bail "cannot make a temporary folder"
+    sh "$srcdir/tests/fuzz/make-seeds.sh" "$build/hstrace" "$srcdir" "$fmt" "$work/$fmt"
     set --
-    i=0
-    for opts in "--width 5 --height 3" "--width 7 --height 4 --exr-float" "--width 3 --height 9 --png16" \
-        "--width 6 --height 5 --aov all" "--width 9 --height 2 +UA" "--width 40 --height 3 +UA +FC"; do
-        i=$((i + 1))
-        # shellcheck disable=SC2086 # the options are words
-        "$build/hstrace" "$srcdir/tests/fuzz/seeds/small.pov" $opts -o "$work/seed-$i.$fmt" >/dev/null 2>&1 &&
-            set -- "$@" "$work/seed-$i.$fmt"
-    done
-    for f in "$srcdir"/tests/hostile/images/*."$fmt"; do
+    for f in "$work/$fmt"/seed-* "$srcdir"/tests/hostile/images/*."$fmt"; do
         [ -f "$f" ] && set -- "$@" "$f"
     done
     check "the $fmt reader's entry point reads the $# seed and hostile images" replayed "fuzz_replay_$fmt" "$@"
 done
+
+set --
+for f in "$srcdir"/tests/fuzz/seeds/*.ini "$srcdir"/tests/hostile/ini/*.ini; do
+    [ -f "$f" ] && set -- "$@" "$f"
+done
+check "the INI entry point reads the $# seed and hostile INI files and command lines" replayed fuzz_replay_ini "$@"
+
+mkdir "$work/stitch" || bail "cannot make a temporary folder"
+sh "$srcdir/tests/fuzz/make-seeds.sh" "$build/hstrace" "$srcdir" stitch "$work/stitch"
+set --
+for f in "$work/stitch"/seed-* "$srcdir"/tests/hostile/stitch/*.exr; do
+    [ -f "$f" ] && set -- "$@" "$f"
+done
+check "the stitch entry point stitches the $# seed and hostile partial renders" replayed fuzz_replay_stitch "$@"
 tap_end

@@ -135,6 +135,14 @@ run eof.ini scene.pov -o bad-eof.png
 check "a section header cut by the end of the file: exit status 1" exited 1 "without its ']'"
 run missing.ini scene.pov -o bad-missing.png
 check "an INI file that cannot be read: exit status 3, says which" exited 3 "cannot open INI file 'missing.ini'"
+mistake include 3 "^include.ini:2:1: cannot open INI file 'gone.ini'" \
+    "an INI file that includes one that cannot be read: where it was named" "Width=64" "Include_Ini=gone.ini"
+mistake word 3 "^word.ini:2:3: cannot open INI file 'gone.ini'" \
+    "an INI file that names one that cannot be read: where it was named (found by fuzzing)" "Width=64" "  gone.ini"
+printf 'Width=24\nHeight=18\n' >"$work/more.ini"
+run Include_Ini=more.ini scene.pov --stats-json s.json -o included.png
+check "Include_Ini=more.ini on the command line: the key, as POV-Ray takes it, not a file of that name (24x18)" \
+    size_is 24 18
 run scene.pov Declare=clock=1 -o bad-clock.png
 check "Declare of a reserved word: a scene error, exit status 2" exited 2 "'clock' is a reserved word"
 printf 'Width=64\n' >"$work/noscene.ini"

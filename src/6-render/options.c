@@ -746,14 +746,16 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
         } else if (a[0] == '-' && a[1] == '-') {
             snprintf(err, (size_t)errlen, "unknown option '%s' (see --help)", a);
             return -1;
-        } else if (ini_spec_is_ini(a)) {
-            if (read_ini(opt, a, NULL, 0, err, errlen))
-                return -1;
         } else if (is_key_value(a)) {
+            /* before the INI file names: Include_Ini=more.ini is the key,
+             * as POV-Ray takes it, not a file of that name */
             char key[128];
             size_t n = (size_t)(strchr(a, '=') - a);
             snprintf(key, sizeof key, "%.*s", (int)(n < sizeof key - 1 ? n : sizeof key - 1), a);
             if (apply_key(opt, key, a + n + 1, NULL, 0, err, errlen))
+                return -1;
+        } else if (ini_spec_is_ini(a)) {
+            if (read_ini(opt, a, NULL, 0, err, errlen))
                 return -1;
         } else if (!opt->scene) {
             opt->scene = a;
