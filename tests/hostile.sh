@@ -308,7 +308,7 @@ for threads in 1 2; do
         --threads $threads -o "$work/out.png") >/dev/null 2>"$work/err"
     check_status "mirrors-filtering-tree.pov on $threads thread(s), no option: status 2 within $limit s" "$?" 2
     check "... says so ($(head -1 "$work/err"))" \
-        says "^mirrors-filtering-tree.pov: a camera ray's tree of reflected and transmitted rays held more than 1048576 rays (max_trace_level 256, adc_bailout 0.00392157): lower max_trace_level, raise adc_bailout, or raise --max-tree-rays; no image written\$"
+        says "^mirrors-filtering-tree.pov: a camera ray's tree of reflected and transmitted rays held more than 1048576 rays (max_trace_level 256, adc_bailout 0): lower max_trace_level, raise adc_bailout, or raise --max-tree-rays; no image written\$"
     check "... no image written" [ ! -e "$work/out.png" ]
 done
 (cd "$scenes" && exec timeout -s KILL $limit "$hstrace" mirrors-filtering-tree.pov --width 16 --height 12 \

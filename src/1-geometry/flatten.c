@@ -1010,7 +1010,9 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
      * and so do renders below +Q9, where POV-Ray turns radiosity off. */
     w->radiosity_replaces_ambient = scene->globals.radiosity && scene->version >= 3.7;
     w->max_trace_level = scene->globals.max_trace_level > 0 ? scene->globals.max_trace_level : 5;
-    w->adc_bailout = scene->globals.adc_bailout > 0 ? scene->globals.adc_bailout : 1.0 / 255.0;
+    /* As POV-Ray takes it: 0 (or less) prunes no ray (the parser gives
+     * POV-Ray's default, 1/255, when the scene says none). */
+    w->adc_bailout = scene->globals.adc_bailout;
     return 0;
 }
 
