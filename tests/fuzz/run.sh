@@ -39,6 +39,7 @@ command -v "$cc" >/dev/null 2>&1 || { echo "fuzz: $cc not found (Debian package 
 san="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all"
 cflags="-std=c11 -g -O1 -fno-omit-frame-pointer -ffp-contract=off -D_POSIX_C_SOURCE=200809L"
 cflags="$cflags -DHST_DATADIR=\"$src/data\" -I$build -I$src/parser -I$src/parser/description"
+cflags="$cflags -I$src/parser/tokens -I$src/parser/expressions -I$src/parser/grammar"
 for room in "$src"/src/[0-7]-*; do cflags="$cflags -I$room"; done
 pkgs="libpng libjpeg OpenEXR"
 cflags="$cflags $(pkg-config --cflags $pkgs)"
@@ -57,9 +58,9 @@ if [ "$(cat "$out/obj/headers.sum" 2>/dev/null)" != "$headers" ]; then
     printf '%s\n' "$headers" >"$out/obj/headers.sum"
 fi
 objects=""
-for f in "$src"/parser/*.c "$src"/parser/description/*.c "$src"/src/[0-7]-*/*.c; do
+for f in "$src"/parser/*/*.c "$src"/src/[0-7]-*/*.c; do
     o=$out/obj/$(echo "${f#"$src"/}" | tr / _ | sed 's/\.c$/.o/')
-    if [ ! -f "$o" ] || [ "$f" -nt "$o" ] || [ "$src/parser/parser_internal.h" -nt "$o" ]; then
+    if [ ! -f "$o" ] || [ "$f" -nt "$o" ] || [ "$src/parser/tokens/tokens.h" -nt "$o" ]; then
         # shellcheck disable=SC2086 # the flags are words
         nice -n 19 "$cc" $cflags $san -fsanitize=fuzzer-no-link -c "$f" -o "$o" || exit 2
     fi
@@ -72,7 +73,7 @@ link() { # target, defines: the fuzzer
 
 # The dictionary: every reserved word, the directives, the punctuation.
 {
-    sed -n 's/^KW(\(.*\))$/"\1"/p' "$src/parser/keywords.def"
+    sed -n 's/^KW(\(.*\))$/"\1"/p' "$src/parser/tokens/keywords.def"
     for d in include declare local undef if ifdef ifndef elseif else end while for switch case range break \
         macro version debug warning error default fopen fclose read write; do
         echo "\"#$d\""

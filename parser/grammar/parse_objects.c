@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
 static const double POLY_EPSILON = 1e-10; /* POV-Ray's EPSILON for closing outlines */
 /* Points, vertices, faces ... one object may list: a bound that keeps a

@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 int is_punct(const Token *t, int c) { return t->type == TK_PUNCT && t->punct == c; }
 int is_kw(const Token *t, int kw) { return t->type == TK_WORD && t->kw == kw; }
@@ -279,7 +279,7 @@ static double parse_condition(Parser *p, const char *after)
     expect_punct(p, '(', after);
     double e[5] = { 0 };
     int terms = 1;
-    parse_express(p, e, &terms);
+    p->hooks->expression(p, e, &terms);
     expect_punct(p, ')', "the condition");
     return e[0];
 }
@@ -360,13 +360,13 @@ static void directive_for(Parser *p, const Token *hash)
     if (var.kw >= 0)
         parse_fail(p, var.pos, "'%s' is a reserved word and cannot be a #for variable", keyword_name(var.kw));
     expect_punct(p, ',', "the #for variable");
-    double start = parse_float(p);
+    double start = p->hooks->number(p);
     expect_punct(p, ',', "the #for start value");
-    double end = parse_float(p);
+    double end = p->hooks->number(p);
     double step = 1.0;
     Token *t = next(p);
     if (is_punct(t, ',')) {
-        step = parse_float(p);
+        step = p->hooks->number(p);
         t = next(p);
     }
     if (!is_punct(t, ')'))
@@ -395,9 +395,9 @@ static int case_matches(Parser *p, double value, int is_range)
     if (!is_range)
         return fabs(parse_condition(p, "#case") - value) < 1e-10;
     expect_punct(p, '(', "#range");
-    double lo = parse_float_full(p);
+    double lo = p->hooks->number_full(p);
     expect_punct(p, ',', "the lower end of the range");
-    double hi = parse_float_full(p);
+    double hi = p->hooks->number_full(p);
     expect_punct(p, ')', "the upper end of the range");
     return value >= lo && value <= hi;
 }
@@ -472,7 +472,7 @@ static void directive_include(Parser *p, const Token *hash)
 {
     Token *t = peek(p);
     SourcePos at = t->pos;
-    char *name = parse_string(p);
+    char *name = p->hooks->string(p);
     SourceText text;
     if (name[0] == '/') {
         if (!source_read(p, name, at, &text))
@@ -510,7 +510,7 @@ static void directive_include(Parser *p, const Token *hash)
  * Parse_Directive; checked with povray). */
 static void stray_hash(Parser *p, const Token *t, LexMark before)
 {
-    if (t->type == TK_WORD && token_starts_float(p, t))
+    if (t->type == TK_WORD && p->hooks->starts_float(p, t))
         fail_expected(p, t, "a directive after '#'");
     lex_seek(p, before);
 }
@@ -535,7 +535,7 @@ static void handle_directive(Parser *p, const Token *hash)
         return;
     case KW_declare:
     case KW_local:
-        parse_declare(p, hash, t.kw == KW_local);
+        p->hooks->declare(p, hash, t.kw == KW_local);
         return;
     case KW_undef: {
         p->no_macro_calls++;
@@ -594,18 +594,18 @@ static void handle_directive(Parser *p, const Token *hash)
         macro_define(p, hash);
         return;
     case KW_version: {
-        double v = parse_float(p);
+        double v = p->hooks->number(p);
         if (!is_punct(next(p), ';'))
             unget(p); /* POV-Ray wants the ';'; hstrace does not insist */
         p->version = v;
         p->version_given = 1;
-        version_seen(p);
+        p->hooks->version_seen(p);
         return;
     }
     case KW_debug: {
         /* POV-Ray's debug stream: the text as it is, newlines from "\n"
          * (and tabs), the other controls escaped as in messages */
-        char *msg = parse_string(p);
+        char *msg = p->hooks->string(p);
         size_t n = strlen(msg) * 4 + 1;
         char *shown = tmp_alloc(p, n);
         text_escape(shown, n, msg, "\n\t");
@@ -618,15 +618,15 @@ static void handle_directive(Parser *p, const Token *hash)
         return;
     }
     case KW_warning: {
-        parse_warning(p, hash->pos, parse_string(p));
+        parse_warning(p, hash->pos, p->hooks->string(p));
         return;
     }
     case KW_error: {
-        char *msg = parse_string(p);
+        char *msg = p->hooks->string(p);
         parse_fail(p, hash->pos, "#error: %s", msg);
     }
     case KW_default:
-        parse_default_directive(p);
+        p->hooks->default_directive(p);
         return;
     case KW_switch:
         directive_switch(p, hash);

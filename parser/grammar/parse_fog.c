@@ -5,7 +5,7 @@
 #include <limits.h>
 #include <math.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
 /* The turbulence settings start from POV-Ray's classic turbulence warp. */
 static void begin_turbulence(SceneFog *fog)

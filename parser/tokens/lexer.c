@@ -10,7 +10,7 @@
 #include <stdint.h>
 #include <sys/stat.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 const char *dir_of(Parser *p, const char *path)
 {

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 /* Elements at most: a bound that keeps a typo such as array[1e9] from
  * exhausting memory (POV-Ray would try). */
@@ -34,7 +34,7 @@ static void parse_initialiser(Parser *p, ArrayValue *a, int dim, long base)
             if (is_punct(t, '}'))
                 parse_fail(p, t->pos, "this array initialiser has %d element%s where %d are needed", i,
                            i == 1 ? "" : "s", a->size[dim]);
-            a->elems[base + i].value = parse_value_lenient(p);
+            a->elems[base + i].value = p->hooks->value(p);
         }
     }
     Token *t = next(p);
@@ -143,7 +143,7 @@ Value parse_array(Parser *p, const Token *kw)
         if (a->ndims == MAX_ARRAY_DIMS)
             parse_fail(p, t->pos, "arrays have at most %d dimensions", MAX_ARRAY_DIMS);
         Token at = *peek(p);
-        double n = parse_float_full(p);
+        double n = p->hooks->number_full(p);
         expect_punct(p, ']', "the array size");
         int size;
         if (!int_from_double(n + 1e-10, 1, (int)MAX_ARRAY_ELEMENTS, &size))
@@ -185,7 +185,7 @@ void read_array_element(Parser *p, Symbol *s)
             fail_expected(p, open, what);
         }
         Token at = *peek(p);
-        double v = parse_float_full(p);
+        double v = p->hooks->number_full(p);
         expect_punct(p, ']', "the array index");
         int i;
         if (!int_from_double(v, 0, a->size[d] - 1, &i)) {
@@ -241,7 +241,7 @@ double array_function(Parser *p, const Token *t)
         expect_punct(p, ',', "the array");
         int d;
         /* POV-Ray warns and answers 0 for a dimension the array lacks */
-        v = int_from_double(parse_float_full(p), 1, a->ndims, &d) ? a->size[d - 1] : 0.0;
+        v = int_from_double(p->hooks->number_full(p), 1, a->ndims, &d) ? a->size[d - 1] : 0.0;
     }
     expect_punct(p, ')', "the arguments");
     return v;

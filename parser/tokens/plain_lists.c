@@ -1,5 +1,5 @@
 /* mesh2's long lists of plain vectors, `<1, -2.5, 3e2>, <...>, ...`, read
- * straight from the text on several threads (parser_internal.h,
+ * straight from the text on several threads (tokens.h,
  * lex_plain_vector_list). On 10^6 triangles such lists are 95% of a 43 MB
  * scene, and reading them item by item was the one part of a render left
  * on one thread.
@@ -15,7 +15,7 @@
 #include <pthread.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 #define PIECE_MIN_BYTES (1 << 20) /* below, a thread's start costs more than its share */
 #define MAX_PIECES 64

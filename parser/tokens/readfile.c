@@ -18,7 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 typedef struct {
     const char *path; /* as opened (temporary arena) */

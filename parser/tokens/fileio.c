@@ -19,7 +19,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 typedef struct UserFile {
     const char *name;  /* as written in #fopen, for messages (interned) */
@@ -164,7 +164,7 @@ void directive_fopen(Parser *p, const Token *hash)
         parse_fail(p, id.pos, "#fopen needs a new identifier: '%.*s' is already declared as %s", id.len, id.text,
                    value_kind_name(old->value.kind));
     SourcePos name_at = peek(p)->pos;
-    char *name = parse_string(p);
+    char *name = p->hooks->string(p);
     Token mode = *next(p);
     if (!is_kw(&mode, KW_read) && !is_kw(&mode, KW_write) && !is_kw(&mode, KW_append))
         fail_expected(p, &mode, "'read', 'write' or 'append' after the file name of '#fopen'");
@@ -386,12 +386,12 @@ static void write_binary(Parser *p, UserFile *f, long lo, long hi, int bytes, in
         Token *t = peek(p);
         if (is_punct(t, ',') || is_punct(t, ')'))
             return;
-        if (!token_starts_expression(p, t))
+        if (!p->hooks->starts_expression(p, t))
             fail_expected(p, next(p), "a number after the binary type in '#write'");
         Token at = *peek(p);
         double e[5] = { 0 };
         int terms = 1;
-        parse_express(p, e, &terms);
+        p->hooks->expression(p, e, &terms);
         for (int i = 0; i < terms; i++) {
             if (isnan(e[i]))
                 parse_fail(p, at.pos, "#write cannot write nan as a binary integer");
@@ -424,12 +424,12 @@ void directive_write(Parser *p)
         if (t->type == TK_WORD && binary_type(t->kw, &lo, &hi, &bytes, &big_endian)) {
             next(p);
             write_binary(p, f, lo, hi, bytes, big_endian);
-        } else if (token_starts_string(p, t)) {
-            fputs(parse_string(p), f->out);
-        } else if (token_starts_expression(p, t)) {
+        } else if (p->hooks->starts_string(p, t)) {
+            fputs(p->hooks->string(p), f->out);
+        } else if (p->hooks->starts_expression(p, t)) {
             double e[5] = { 0 };
             int terms = 1;
-            parse_express(p, e, &terms);
+            p->hooks->expression(p, e, &terms);
             if (terms == 1) {
                 fprintf(f->out, "%g", e[0]);
             } else {

@@ -13,7 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
 /* A normal with nothing given (POV-Ray's Create_Tnormal). */
 static SceneNormal fresh_normal(Parser *p)

@@ -7,7 +7,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
 void default_camera(SceneCamera *cam)
 {

@@ -28,7 +28,7 @@
 #include <unistd.h>
 
 #include "memory_budget.h"
-#include "parser_internal.h"
+#include "tokens.h"
 
 /* Stack kept back below the deepest token: what a production may use
  * between two tokens (number conversion, messages, the error path itself,

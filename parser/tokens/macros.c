@@ -15,7 +15,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 static Token read_name(Parser *p, const char *what)
 {
@@ -150,7 +150,7 @@ void macro_invoke(Parser *p, const Token *call, const Macro *m)
         Symbol *ref = reference_argument(p, m, i);
         REF(i) = ref;
         if (!ref) {
-            Value v = parse_value_lenient(p);
+            Value v = p->hooks->value(p);
             ARG(i) = v;
         }
     }

@@ -32,7 +32,7 @@
  * Data (bump_map, material_map: GammaCorrect false in Parse_Image) are
  * never taken to the working gamma: the values as stored, or decoded with a
  * `gamma` given. */
-#include "parser_internal.h"
+#include "grammar.h"
 
 /* The language version in effect: 3.62 without a #version */
 static int below_3_7(const Parser *p)

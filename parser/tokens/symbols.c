@@ -5,7 +5,7 @@
  * table's size (macros open and close levels very often). */
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 static unsigned hash_name(const char *s, int len)
 {
@@ -197,4 +197,33 @@ void symbols_pop_scope(Parser *p)
     }
     p->symbols.scopes[level] = NULL;
     p->symbols.level--;
+}
+
+/* What a value is, as messages name it. */
+const char *value_kind_name(ValueKind k)
+{
+    switch (k) {
+    case VAL_NUMERIC: return "a number";
+    case VAL_STRING: return "a string";
+    case VAL_OBJECT: return "an object";
+    case VAL_LIGHT: return "a light_source";
+    case VAL_TEXTURE: return "a texture";
+    case VAL_PIGMENT: return "a pigment";
+    case VAL_FINISH: return "a finish";
+    case VAL_INTERIOR: return "an interior";
+    case VAL_MATERIAL: return "a material";
+    case VAL_CAMERA: return "a camera";
+    case VAL_SKY_SPHERE: return "a sky_sphere";
+    case VAL_TRANSFORM: return "a transform";
+    case VAL_NORMAL: return "a normal";
+    case VAL_COLOUR_MAP: return "a color_map";
+    case VAL_PIGMENT_MAP: return "a pigment_map";
+    case VAL_TEXTURE_MAP: return "a texture_map";
+    case VAL_NORMAL_MAP: return "a normal_map";
+    case VAL_SLOPE_MAP: return "a slope_map";
+    case VAL_MACRO: return "a macro";
+    case VAL_ARRAY: return "an array";
+    case VAL_FILE: return "a file identifier";
+    default: return "something else";
+    }
 }

@@ -13,7 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
 #define MAX_SEARCH_DIRS 128 /* as #include searches */
 

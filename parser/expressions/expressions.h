@@ -1,0 +1,36 @@
+/* The expression evaluator: floats, vectors, colours and strings in one
+ * precedence-climbing loop (expr.c's priority table), the functions and
+ * identifiers they use, and transforms. It reads the token stream
+ * (parser/tokens) and knows nothing of objects or textures (parser/grammar,
+ * which uses it). */
+#ifndef HST_EXPRESSIONS_H
+#define HST_EXPRESSIONS_H
+
+#include "tokens.h"
+
+
+/* expr.c */
+void parse_express(Parser *p, double e[5], int *terms);
+void parse_rel_factor(Parser *p, double e[5], int *terms);
+double parse_float(Parser *p);
+double parse_float_full(Parser *p); /* comparisons allowed */
+/* v, read at `at`, as an integer of [lo, hi], truncated toward zero as
+ * POV-Ray's casts do; NaN, infinities and values outside the range are an
+ * error there: "WHAT must be an integer from LO to HI, not V". */
+int checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *what);
+Vec3 parse_vector(Parser *p);
+Vec3 parse_scale_vector(Parser *p);
+void parse_colour(Parser *p, Colour *c, int expect_ft);
+int token_starts_colour(Parser *p, const Token *t);
+int token_starts_float(Parser *p, const Token *t);
+int token_starts_expression(Parser *p, const Token *t);
+int token_starts_string(Parser *p, const Token *t);
+char *parse_string(Parser *p);
+void parse_comma(Parser *p); /* an optional ',' */
+/* translate/rotate/scale/matrix/transform at t (already read): composes
+ * into tr and returns 1, or returns 0 when t is no transform. */
+int parse_transform_item(Parser *p, const Token *t, Transform *tr);
+void parse_transform_block(Parser *p, Transform *tr); /* after 'transform' */
+
+
+#endif

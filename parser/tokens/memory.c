@@ -1,0 +1,100 @@
+/* The parse's memory: the scene's arena (what outlives the parse), the
+ * temporary arena (everything else), and growable arrays in them, each
+ * checked against the parse's memory budget. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "tokens.h"
+
+/* ---- memory ------------------------------------------------------------ */
+
+static _Noreturn void out_of_memory(Parser *p)
+{
+    parse_fail_memory(p, p->last_pos);
+}
+
+void *palloc(Parser *p, size_t size)
+{
+    void *m = arena_alloc(p->arena, size);
+    if (!m)
+        out_of_memory(p);
+    return m;
+}
+
+void *tmp_alloc(Parser *p, size_t size)
+{
+    void *m = arena_alloc(p->temp, size);
+    if (!m)
+        out_of_memory(p);
+    return m;
+}
+
+char *tmp_strndup(Parser *p, const char *s, size_t n)
+{
+    char *r = tmp_alloc(p, n + 1);
+    memcpy(r, s, n);
+    r[n] = '\0';
+    return r;
+}
+
+void tvec_init(TempVec *v, size_t elem)
+{
+    memset(v, 0, sizeof *v);
+    v->elem = elem;
+}
+
+void *tvec_push(Parser *p, TempVec *v)
+{
+    if (v->n == v->cap) {
+        if (v->cap > (1 << 28))
+            out_of_memory(p);
+        int cap = v->cap ? v->cap * 2 : 16;
+        void *d = arena_alloc_uninit(p->temp, v->elem * (size_t)cap); /* each slot is zeroed when pushed */
+        if (!d)
+            out_of_memory(p);
+        if (v->n)
+            memcpy(d, v->data, v->elem * (size_t)v->n);
+        v->data = d;
+        v->cap = cap;
+        v->in_scene = 0;
+    }
+    void *slot = (char *)v->data + v->elem * (size_t)v->n++;
+    memset(slot, 0, v->elem);
+    return slot;
+}
+
+static void reserve_in(Parser *p, TempVec *v, int n, Arena *a)
+{
+    if (n <= v->cap)
+        return;
+    if (n > (1 << 28))
+        n = 1 << 28; /* tvec_push's own limit */
+    void *d = arena_alloc_uninit(a, v->elem * (size_t)n); /* each slot is zeroed when pushed */
+    if (!d)
+        out_of_memory(p);
+    if (v->n)
+        memcpy(d, v->data, v->elem * (size_t)v->n);
+    v->data = d;
+    v->cap = n;
+    v->in_scene = a == p->arena;
+}
+
+void tvec_reserve(Parser *p, TempVec *v, int n) { reserve_in(p, v, n, p->temp); }
+
+void tvec_reserve_kept(Parser *p, TempVec *v, int n) { reserve_in(p, v, n, p->arena); }
+
+void *tvec_kept(Parser *p, const TempVec *v)
+{
+    if (v->in_scene && v->n > 0)
+        return v->data;
+    return tvec_keep(p, v);
+}
+
+void *tvec_keep(Parser *p, const TempVec *v)
+{
+    void *kept = palloc(p, v->elem * (size_t)(v->n ? v->n : 1));
+    if (v->n)
+        memcpy(kept, v->data, v->elem * (size_t)v->n);
+    return kept;
+}
+
