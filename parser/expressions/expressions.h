@@ -10,27 +10,27 @@
 
 
 /* expr.c */
-void parse_express(Parser *p, double e[5], int *terms);
-void parse_rel_factor(Parser *p, double e[5], int *terms);
-double parse_float(Parser *p);
-double parse_float_full(Parser *p); /* comparisons allowed */
+void expr_numeric(Parser *p, double e[5], int *terms);
+void expr_rel_factor(Parser *p, double e[5], int *terms);
+double expr_float(Parser *p);
+double expr_float_full(Parser *p); /* comparisons allowed */
 /* v, read at `at`, as an integer of [lo, hi], truncated toward zero as
  * POV-Ray's casts do; NaN, infinities and values outside the range are an
  * error there: "WHAT must be an integer from LO to HI, not V". */
-int checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *what);
-Vec3 parse_vector(Parser *p);
-Vec3 parse_scale_vector(Parser *p);
-void parse_colour(Parser *p, Colour *c, int expect_ft);
-int token_starts_colour(Parser *p, const Token *t);
-int token_starts_float(Parser *p, const Token *t);
-int token_starts_expression(Parser *p, const Token *t);
-int token_starts_string(Parser *p, const Token *t);
-char *parse_string(Parser *p);
-void parse_comma(Parser *p); /* an optional ',' */
+int expr_checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *what);
+Vec3 expr_vector(Parser *p);
+Vec3 expr_scale_vector(Parser *p);
+void expr_colour(Parser *p, Colour *c, int expect_ft);
+int expr_starts_colour(Parser *p, const Token *t);
+int expr_starts_float(Parser *p, const Token *t);
+int expr_starts_expression(Parser *p, const Token *t);
+int expr_starts_string(Parser *p, const Token *t);
+char *expr_string(Parser *p);
+void expr_comma(Parser *p); /* an optional ',' */
 /* translate/rotate/scale/matrix/transform at t (already read): composes
  * into tr and returns 1, or returns 0 when t is no transform. */
-int parse_transform_item(Parser *p, const Token *t, Transform *tr);
-void parse_transform_block(Parser *p, Transform *tr); /* after 'transform' */
+int expr_transform_item(Parser *p, const Token *t, Transform *tr);
+void expr_transform_block(Parser *p, Transform *tr); /* after 'transform' */
 
 
 #endif

@@ -126,7 +126,7 @@ static void tally_object(Tally *t, const SceneObject *o, int depth)
             tally_texture(t, o->u.mesh.textures[i]);
 }
 
-void collect_approximations(Parser *p)
+void gram_collect_approximations(Parser *p)
 {
     Scene *s = p->scene;
     Tally t;
@@ -142,11 +142,11 @@ void collect_approximations(Parser *p)
     tally_notes(&t, p->global_approx);
     free(t.slots);
     if (t.failed)
-        parse_fail(p, p->last_pos, "out of memory");
+        tok_fail(p, p->last_pos, "out of memory");
     int n = 0;
     for (int k = 0; k < APPROX_KINDS; k++)
         n += t.per_kind[k].count > 0;
-    s->approximations = palloc(p, sizeof *s->approximations * (size_t)(n ? n : 1));
+    s->approximations = tok_scene_alloc(p, sizeof *s->approximations * (size_t)(n ? n : 1));
     s->napproximations = 0;
     for (int k = 0; k < APPROX_KINDS; k++) {
         if (t.per_kind[k].count == 0)

@@ -41,7 +41,7 @@ static int below_3_7(const Parser *p)
     return (int)(version * 100.0 + 0.5) < 370;
 }
 
-void assumed_gamma_seen(Parser *p, double gamma)
+void gram_assumed_gamma_seen(Parser *p, double gamma)
 {
     if (p->gamma_mode == GAMMA_MODE_36 || p->gamma_mode == GAMMA_MODE_37)
         return; /* POV-Ray: "New instance of assumed_gamma ignored" */
@@ -50,7 +50,7 @@ void assumed_gamma_seen(Parser *p, double gamma)
     p->gamma_mode = below_3_7(p) ? GAMMA_MODE_36 : GAMMA_MODE_37;
 }
 
-void version_seen(Parser *p)
+void gram_version_seen(Parser *p)
 {
     if (p->gamma_mode == GAMMA_MODE_NONE || p->gamma_mode == GAMMA_MODE_37_IMPLIED)
         p->gamma_mode = below_3_7(p) ? GAMMA_MODE_NONE : GAMMA_MODE_37_IMPLIED;
@@ -58,7 +58,7 @@ void version_seen(Parser *p)
         p->gamma_mode = below_3_7(p) ? GAMMA_MODE_36 : GAMMA_MODE_37;
 }
 
-ImageGammaPlan image_gamma_plan(const Parser *p, int gamma_correct, int override_given, double override)
+ImageGammaPlan gram_image_gamma_plan(const Parser *p, int gamma_correct, int override_given, double override)
 {
     ImageGammaPlan plan = { .decode = 1.0, .untagged = IMAGE_GAMMA_FILE_DEFAULT, .working = 1.0 };
     const int assumed = p->gamma_mode == GAMMA_MODE_36 || p->gamma_mode == GAMMA_MODE_37;

@@ -31,126 +31,126 @@ static Value parse_rvalue(Parser *p)
 {
     Value v;
     memset(&v, 0, sizeof v);
-    Token t = *next(p);
+    Token t = *tok_next(p);
     SceneObject *obj;
     SceneLight *light;
     if (t.type == TK_WORD && t.kw >= 0) {
         switch (t.kw) {
         case KW_texture:
             v.kind = VAL_TEXTURE;
-            v.texture = parse_texture(p);
+            v.texture = gram_texture(p);
             return v;
         case KW_pigment:
             v.kind = VAL_PIGMENT;
-            v.pigment = palloc(p, sizeof *v.pigment);
+            v.pigment = tok_scene_alloc(p, sizeof *v.pigment);
             *v.pigment = p->scene->default_texture.pigment;
-            parse_pigment(p, v.pigment);
+            gram_pigment(p, v.pigment);
             return v;
         case KW_finish:
             v.kind = VAL_FINISH;
-            v.finish = palloc(p, sizeof *v.finish);
+            v.finish = tok_scene_alloc(p, sizeof *v.finish);
             *v.finish = p->scene->default_texture.finish;
-            parse_finish(p, v.finish);
+            gram_finish(p, v.finish);
             return v;
         case KW_material:
             v.kind = VAL_MATERIAL;
-            parse_material(p, &v.material_texture, &v.material_interior, &t);
+            gram_material(p, &v.material_texture, &v.material_interior, &t);
             return v;
         case KW_interior:
             v.kind = VAL_INTERIOR;
-            v.interior = palloc(p, sizeof *v.interior);
+            v.interior = tok_scene_alloc(p, sizeof *v.interior);
             *v.interior = scene_default_interior();
-            parse_interior(p, v.interior);
+            gram_interior(p, v.interior);
             return v;
         case KW_normal:
             v.kind = VAL_NORMAL;
-            v.normal = parse_normal(p, NULL, &t, 0);
+            v.normal = gram_normal(p, NULL, &t, 0);
             return v;
         case KW_sky_sphere: /* skies.inc declares its skies */
             v.kind = VAL_SKY_SPHERE;
-            v.sky = palloc(p, sizeof *v.sky);
-            parse_sky_sphere(p, v.sky);
+            v.sky = tok_scene_alloc(p, sizeof *v.sky);
+            gram_sky_sphere(p, v.sky);
             return v;
         case KW_camera:
             v.kind = VAL_CAMERA;
-            v.camera = palloc(p, sizeof *v.camera);
-            parse_camera(p, &t, v.camera);
+            v.camera = tok_scene_alloc(p, sizeof *v.camera);
+            gram_camera(p, &t, v.camera);
             return v;
         case KW_transform:
             v.kind = VAL_TRANSFORM;
-            v.transform = palloc(p, sizeof *v.transform);
+            v.transform = tok_scene_alloc(p, sizeof *v.transform);
             transform_identity(v.transform);
-            parse_transform_block(p, v.transform);
+            expr_transform_block(p, v.transform);
             return v;
         case KW_array:
-            return parse_array(p, &t);
+            return tok_array_value(p, &t);
         case KW_color_map: case KW_colour_map: case KW_pigment_map:
             v.kind = t.kw == KW_pigment_map ? VAL_PIGMENT_MAP : VAL_COLOUR_MAP;
-            v.pigment = palloc(p, sizeof *v.pigment);
+            v.pigment = tok_scene_alloc(p, sizeof *v.pigment);
             memset(v.pigment, 0, sizeof *v.pigment);
             if (t.kw == KW_pigment_map)
-                parse_pigment_map(p, v.pigment, &t);
+                gram_pigment_map(p, v.pigment, &t);
             else
-                parse_colour_map(p, v.pigment);
+                gram_colour_map(p, v.pigment);
             return v;
         case KW_texture_map:
             v.kind = VAL_TEXTURE_MAP;
-            v.texture = palloc(p, sizeof *v.texture);
+            v.texture = tok_scene_alloc(p, sizeof *v.texture);
             memset(v.texture, 0, sizeof *v.texture);
-            parse_texture_map(p, v.texture, &t);
+            gram_texture_map(p, v.texture, &t);
             return v;
         case KW_normal_map: case KW_slope_map: {
-            SceneNormal *n = palloc(p, sizeof *n);
+            SceneNormal *n = tok_scene_alloc(p, sizeof *n);
             memset(n, 0, sizeof *n);
             v.kind = t.kw == KW_normal_map ? VAL_NORMAL_MAP : VAL_SLOPE_MAP;
             if (t.kw == KW_normal_map)
-                parse_normal_map(p, n, 0);
+                gram_normal_map(p, n, 0);
             else
-                parse_slope_map(p, n);
+                gram_slope_map(p, n);
             v.normal = n;
             return v;
         }
         default:
             break;
         }
-        if (parse_object(p, &t, &obj, &light)) {
+        if (gram_object(p, &t, &obj, &light)) {
             v.kind = obj ? VAL_OBJECT : VAL_LIGHT;
             v.object = obj;
             v.light = light;
             return v;
         }
         if (t.kw == KW_material_map) /* POV-Ray's Parse_RValue has no case for it either */
-            parse_fail(p, t.pos, "a material_map cannot be declared on its own: write it in a texture "
+            tok_fail(p, t.pos, "a material_map cannot be declared on its own: write it in a texture "
                                  "(#declare T = texture { material_map { ... } })");
         if (is_unsupported_value_keyword(t.kw))
-            unsupported(p, &t);
+            tok_unsupported(p, &t);
     }
     if (t.type == TK_WORD && t.kw < 0) {
-        Symbol *s = token_symbol(p, &t);
+        Symbol *s = tok_symbol_of(p, &t);
         if (!s)
-            parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+            tok_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
         if (s->value.kind == VAL_UNSUPPORTED)
-            use_unsupported(p, &t, &s->value);
+            tok_use_unsupported(p, &t, &s->value);
         if (s->value.kind != VAL_NUMERIC && s->value.kind != VAL_STRING)
-            return copy_value(p, &s->value); /* a copy of a declared object, texture, array ... */
+            return gram_copy_value(p, &s->value); /* a copy of a declared object, texture, array ... */
     }
-    unget(p);
-    if (token_starts_string(p, &t)) {
+    tok_unget(p);
+    if (expr_starts_string(p, &t)) {
         v.kind = VAL_STRING;
-        v.string = parse_string(p);
+        v.string = expr_string(p);
         return v;
     }
-    if (!token_starts_expression(p, &t)) {
+    if (!expr_starts_expression(p, &t)) {
         if (t.type == TK_WORD && t.kw >= 0)
-            unsupported(p, &t);
-        fail_expected(p, &t, "a value after '='");
+            tok_unsupported(p, &t);
+        tok_fail_expected(p, &t, "a value after '='");
     }
     v.kind = VAL_NUMERIC;
     v.terms = 1;
     /* As POV-Ray's Parse_RValue: sums and products only. Comparisons, '&',
      * '|' and '?:' need parentheses, so in `array[2] {<1,2> <3,4>}` the second
      * '<' starts the next element, not a comparison. */
-    parse_rel_factor(p, v.v, &v.terms);
+    expr_rel_factor(p, v.v, &v.terms);
     if (v.terms > 5)
         v.terms = 5;
     return v;
@@ -163,26 +163,26 @@ static void skip_poisoned_value(Parser *p, int start_depth)
     if (p->brace_depth > start_depth) {
         /* inside the value's braces: read to the one closing the value */
         while (p->brace_depth > start_depth) {
-            Token *t = next(p);
+            Token *t = tok_next(p);
             if (t->type == TK_EOF)
-                parse_fail(p, t->pos, "expected '}' before the end of the file");
+                tok_fail(p, t->pos, "expected '}' before the end of the file");
         }
         return;
     }
     /* The keyword itself was unsupported: `sphere {...}`, `array[3] {...}`,
      * `function(x) {...}`, a macro call `Foo(1, 2)`. */
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '(') || is_punct(t, '[')) {
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '(') || tok_is_punct(t, '[')) {
             Token open = *t;
-            skip_balanced_group(p, &open);
+            tok_skip_balanced_group(p, &open);
             continue;
         }
-        if (is_punct(t, '{')) {
-            skip_block_body(p);
+        if (tok_is_punct(t, '{')) {
+            tok_skip_block_body(p);
             return;
         }
-        unget(p);
+        tok_unget(p);
         return;
     }
 }
@@ -195,10 +195,10 @@ static Value copy_value_at(Parser *p, const Value *v, int depth)
     Value c = *v;
     if (v->kind == VAL_ARRAY) {
         if (depth > MAX_NESTING)
-            parse_fail(p, p->last_pos, "nested too deeply (arrays in arrays more than %d levels)", MAX_NESTING);
+            tok_fail(p, p->last_pos, "nested too deeply (arrays in arrays more than %d levels)", MAX_NESTING);
         /* POV-Ray copies arrays on assignment: `#declare B = A` and then
          * `#declare B[0] = ...` leaves A as it was. */
-        ArrayValue *a = array_new(p, v->array->count);
+        ArrayValue *a = tok_array_new(p, v->array->count);
         a->ndims = v->array->ndims;
         memcpy(a->size, v->array->size, sizeof a->size);
         a->declared_at = v->array->declared_at;
@@ -209,7 +209,7 @@ static Value copy_value_at(Parser *p, const Value *v, int depth)
     return c;
 }
 
-Value copy_value(Parser *p, const Value *v)
+Value gram_copy_value(Parser *p, const Value *v)
 {
     return copy_value_at(p, v, 1);
 }
@@ -239,9 +239,9 @@ static Value parse_lenient(Parser *p, const LenientWhat *what)
     p->deferred_what = NULL;
     if (setjmp(here) == 0) {
         if (what->layer) {
-            SceneTexture *top = parse_texture(p);
+            SceneTexture *top = gram_texture(p);
             v = what->below;
-            v.texture = layer_textures(p, top, what->below.texture, what->layer);
+            v.texture = gram_layer_textures(p, top, what->below.texture, what->layer);
         } else {
             v = parse_rvalue(p);
         }
@@ -268,57 +268,57 @@ static Value parse_lenient(Parser *p, const LenientWhat *what)
     return v;
 }
 
-Value parse_value_lenient(Parser *p)
+Value gram_value_lenient(Parser *p)
 {
     LenientWhat what = { NULL, { 0 } };
     return parse_lenient(p, &what);
 }
 
-void parse_declare(Parser *p, const Token *hash, int local)
+void gram_declare(Parser *p, const Token *hash, int local)
 {
-    Token name = *next_name(p);
-    if (is_kw(&name, KW_deprecated)) {
+    Token name = *tok_next_name(p);
+    if (tok_is_kw(&name, KW_deprecated)) {
         /* #declare deprecated [once] "message" Name = ...: the warning is dropped */
-        if (!is_kw(next(p), KW_once))
-            unget(p);
-        (void)parse_string(p);
-        name = *next_name(p);
+        if (!tok_is_kw(tok_next(p), KW_once))
+            tok_unget(p);
+        (void)expr_string(p);
+        name = *tok_next_name(p);
     }
     if (name.type != TK_WORD)
-        fail_expected(p, &name, "an identifier after #declare");
+        tok_fail_expected(p, &name, "an identifier after #declare");
     if (name.kw >= 0)
-        parse_fail(p, name.pos, "'%s' is a reserved word and cannot be declared", keyword_name(name.kw));
+        tok_fail(p, name.pos, "'%s' is a reserved word and cannot be declared", tok_keyword_name(name.kw));
     if (!name.elem) {
-        Symbol *old = symbol_find(p, name.text, name.len);
+        Symbol *old = tok_symbol_find(p, name.text, name.len);
         if (old && old->value.kind == VAL_MACRO)
-            parse_fail(p, name.pos, "'%.*s' is a macro (declared at %s:%d) and cannot be redeclared", name.len,
+            tok_fail(p, name.pos, "'%.*s' is a macro (declared at %s:%d) and cannot be redeclared", name.len,
                        name.text, old->value.declared_at.file, old->value.declared_at.line);
     }
-    Token *t = next(p);
-    if (is_punct(t, '['))
-        parse_fail(p, t->pos, "'%.*s' is not an array", name.len, name.text);
-    if (!is_punct(t, '=')) {
+    Token *t = tok_next(p);
+    if (tok_is_punct(t, '['))
+        tok_fail(p, t->pos, "'%.*s' is not an array", name.len, name.text);
+    if (!tok_is_punct(t, '=')) {
         char what[120];
         snprintf(what, sizeof what, "'=' after '#declare %.*s'", name.len > 60 ? 60 : name.len, name.text);
-        fail_expected(p, t, what);
+        tok_fail_expected(p, t, what);
     }
-    Token first = *peek(p);
+    Token first = *tok_peek(p);
     /* The version the value is read under decides whether it needs a ';'
      * (POV-Ray's rule, measured): the lookahead after a value carries out
      * the directives that follow, a `#version` an old include ends with
      * among them, which must not turn its last #declare into an error. */
     const double version_of_value = p->version;
-    Value v = parse_value_lenient(p);
+    Value v = gram_value_lenient(p);
     (void)hash;
 
     /* `texture {...} texture {...}`: POV-Ray layers the textures, the
-     * later on top (layer_textures). */
-    if (is_kw(&first, KW_texture)) {
-        while (lex_next_is_keyword(p, KW_texture)) {
-            Token layer = *next(p);
+     * later on top (gram_layer_textures). */
+    if (tok_is_kw(&first, KW_texture)) {
+        while (tok_next_is_keyword(p, KW_texture)) {
+            Token layer = *tok_next(p);
             if (v.kind != VAL_TEXTURE) {
-                begin_block(p, "texture");
-                skip_block_body(p);
+                tok_begin_block(p, "texture");
+                tok_skip_block_body(p);
                 continue;
             }
             LenientWhat what = { &layer, v };
@@ -330,60 +330,60 @@ void parse_declare(Parser *p, const Token *hash, int local)
      * directives that follow, which may use the new value (or, at the end of
      * a macro's body, close the level a #local belongs to). */
     if (name.elem) {
-        Symbol *e = token_element(&name);
+        Symbol *e = tok_element_of(&name);
         if (e) {
-            value_give_up(p, &e->value);
+            tok_value_give_up(p, &e->value);
             e->value = v;
         } else {
-            value_give_up(p, &v);
+            tok_value_give_up(p, &v);
         }
     } else
-        symbol_set(p, name.text, name.len, local, &v);
+        tok_symbol_set(p, name.text, name.len, local, &v);
 
     /* POV-Ray 3.5+ wants ';' after float, vector and colour values (a parse
      * error in POV-Ray 3.7 too); after a string or a block it is optional:
      * POV-Ray 3.7 renders `#declare S = "x"` followed by anything. */
-    Token *s = next(p);
-    if (!is_punct(s, ';')) {
+    Token *s = tok_next(p);
+    if (!tok_is_punct(s, ';')) {
         if (v.kind == VAL_NUMERIC && version_of_value >= 3.5)
-            fail_expected(p, s, "';' after the declared value");
-        unget(p);
+            tok_fail_expected(p, s, "';' after the declared value");
+        tok_unget(p);
     }
 }
 
 /* #default { texture {...} | pigment {...} | finish {...} | normal {...} } */
-void parse_default_directive(Parser *p)
+void gram_default_directive(Parser *p)
 {
-    begin_block(p, "#default");
+    tok_begin_block(p, "#default");
     SceneTexture *d = &p->scene->default_texture;
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             break;
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_texture: {
-            SceneTexture *n = parse_texture(p);
+            SceneTexture *n = gram_texture(p);
             *d = *n;
             break;
         }
         case KW_pigment: case KW_finish:
             if (d->nmap > 0) /* a default texture_map has no pigment or finish of its own */
-                parse_fail(p, t->pos, "#default: %s after a default texture that is a texture_map",
-                           keyword_name(t->kw));
+                tok_fail(p, t->pos, "#default: %s after a default texture that is a texture_map",
+                           tok_keyword_name(t->kw));
             if (t->kw == KW_pigment)
-                parse_pigment(p, &d->pigment);
+                gram_pigment(p, &d->pigment);
             else
-                parse_finish(p, &d->finish);
+                gram_finish(p, &d->finish);
             break;
         case KW_normal: {
             Token at = *t;
-            d->normal = parse_normal(p, d->normal, &at, 0);
+            d->normal = gram_normal(p, d->normal, &at, 0);
             break;
         }
         default:
             if (t->type == TK_WORD && t->kw >= 0)
-                unsupported(p, t);
-            fail_expected(p, t, "texture, pigment, finish, normal or '}' in #default");
+                tok_unsupported(p, t);
+            tok_fail_expected(p, t, "texture, pigment, finish, normal or '}' in #default");
         }
     }
     p->default_changed = 1;
@@ -394,88 +394,88 @@ void parse_default_directive(Parser *p)
 static void parse_global_settings(Parser *p)
 {
     GlobalSettings *g = &p->scene->globals;
-    begin_block(p, "global_settings");
+    tok_begin_block(p, "global_settings");
     for (;;) {
-        Token t = *next(p);
-        if (is_punct(&t, '}'))
+        Token t = *tok_next(p);
+        if (tok_is_punct(&t, '}'))
             return;
         Colour c;
         switch (t.type == TK_WORD ? t.kw : -1) {
         case KW_assumed_gamma: {
-            Token *n = next(p);
+            Token *n = tok_next(p);
             double gamma = 0.0; /* srgb */
-            if (!is_kw(n, KW_srgb)) {
-                unget(p);
-                Token at = *peek(p);
-                gamma = parse_float(p);
+            if (!tok_is_kw(n, KW_srgb)) {
+                tok_unget(p);
+                Token at = *tok_peek(p);
+                gamma = expr_float(p);
                 if (gamma <= 0.0)
-                    parse_fail(p, at.pos, "gamma value must be positive");
+                    tok_fail(p, at.pos, "gamma value must be positive");
             }
             if (!p->gamma_set) { /* POV-Ray ignores a second assumed_gamma, value and all */
                 g->assumed_gamma = gamma;
                 g->assumed_gamma_srgb = gamma == 0.0;
                 g->has_assumed_gamma = 1;
             }
-            assumed_gamma_seen(p, gamma);
+            gram_assumed_gamma_seen(p, gamma);
             break;
         }
         case KW_max_trace_level: {
             /* POV-Ray: at least 1, and at most its limit, with a warning */
-            Token at = *peek(p);
-            double v = parse_float(p);
+            Token at = *tok_peek(p);
+            double v = expr_float(p);
             g->max_trace_level = int_clamped(v, 1, MAX_TRACE_LEVEL_LIMIT);
             if (v > MAX_TRACE_LEVEL_LIMIT) {
                 char msg[160];
                 snprintf(msg, sizeof msg, "max_trace_level %g is more than POV-Ray's limit, %d: %d is used", v,
                          MAX_TRACE_LEVEL_LIMIT, MAX_TRACE_LEVEL_LIMIT);
-                parse_warning(p, at.pos, msg);
+                tok_warning(p, at.pos, msg);
             }
             break;
         }
-        case KW_adc_bailout: g->adc_bailout = parse_float(p); break;
+        case KW_adc_bailout: g->adc_bailout = expr_float(p); break;
         case KW_ambient_light:
-            parse_colour(p, &c, 0);
+            expr_colour(p, &c, 0);
             g->ambient_light = c;
             break;
-        case KW_charset: (void)next(p); break;
+        case KW_charset: (void)tok_next(p); break;
         case KW_radiosity: case KW_photons: case KW_subsurface:
             /* Not modelled: parsed past and ignored, so scenes written for
              * POV-Ray still load (their lighting will differ). */
-            approximate(p, &t, t.kw == KW_photons ? APPROX_PHOTONS : APPROX_RADIOSITY, &p->global_approx);
+            tok_approximate(p, &t, t.kw == KW_photons ? APPROX_PHOTONS : APPROX_RADIOSITY, &p->global_approx);
             if (t.kw == KW_radiosity)
                 g->radiosity = 1;
-            begin_block(p, keyword_name(t.kw));
-            skip_block_body(p);
+            tok_begin_block(p, tok_keyword_name(t.kw));
+            tok_skip_block_body(p);
             break;
         case KW_irid_wavelength:
-            parse_colour(p, &c, 0);
+            expr_colour(p, &c, 0);
             break;
         case KW_noise_generator: {
-            Token at = *peek(p);
-            if (!int_from_double(parse_float(p), 1, 3, &g->noise_generator))
-                parse_fail(p, at.pos, "Value for noise_generator in global_settings must be 1, 2, or 3.");
+            Token at = *tok_peek(p);
+            if (!int_from_double(expr_float(p), 1, 3, &g->noise_generator))
+                tok_fail(p, at.pos, "Value for noise_generator in global_settings must be 1, 2, or 3.");
             break;
         }
         case KW_number_of_waves: {
             /* POV-Ray: (int) of the value, at least 1 with a warning */
-            Token at = *peek(p);
-            double v = parse_float(p);
+            Token at = *tok_peek(p);
+            double v = expr_float(p);
             if (v > MAX_NUMBER_OF_WAVES)
-                parse_fail(p, at.pos, "number_of_waves %g is more than hstrace supports (%d)", v, MAX_NUMBER_OF_WAVES);
+                tok_fail(p, at.pos, "number_of_waves %g is more than hstrace supports (%d)", v, MAX_NUMBER_OF_WAVES);
             g->number_of_waves = v >= 1.0 ? (int)v : 1;
             if (v < 1.0)
-                parse_warning(p, at.pos, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
+                tok_warning(p, at.pos, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
             break;
         }
         case KW_max_intersections: case KW_hf_gray_16:
         case KW_mm_per_unit:
-            if (token_starts_float(p, peek(p)))
-                (void)parse_float(p);
+            if (expr_starts_float(p, tok_peek(p)))
+                (void)expr_float(p);
             break;
         default:
             if (t.type == TK_WORD && t.kw >= 0)
-                unsupported(p, &t);
-            fail_expected(p, &t, "a global setting or '}' in 'global_settings'");
+                tok_unsupported(p, &t);
+            tok_fail_expected(p, &t, "a global setting or '}' in 'global_settings'");
         }
     }
 }
@@ -483,67 +483,67 @@ static void parse_global_settings(Parser *p)
 static void add_object(Parser *p, SceneObject *o, SceneLight *l)
 {
     if (l) {
-        *(SceneLight *)tvec_push(p, &p->lights) = *l;
+        *(SceneLight *)tok_tvec_push(p, &p->lights) = *l;
         return;
     }
     if (!o->texture && p->default_changed)
-        o->texture = new_default_texture(p); /* POV-Ray binds the default at this point */
+        o->texture = gram_default_texture(p); /* POV-Ray binds the default at this point */
     Transform world;
     transform_identity(&world);
-    instantiate_union_lights(p, o, &world, 0);
-    *(SceneObject **)tvec_push(p, &p->objects) = o;
+    gram_instantiate_union_lights(p, o, &world, 0);
+    *(SceneObject **)tok_tvec_push(p, &p->objects) = o;
 }
 
 static void parse_statements(Parser *p)
 {
     for (;;) {
-        Token t = *next(p);
+        Token t = *tok_next(p);
         if (t.type == TK_EOF)
             return;
         SceneObject *o;
         SceneLight *l;
-        if (parse_object(p, &t, &o, &l)) {
+        if (gram_object(p, &t, &o, &l)) {
             add_object(p, o, l);
             continue;
         }
         switch (t.type == TK_WORD ? t.kw : -1) {
         case KW_camera:
-            parse_camera(p, &t, &p->scene->camera);
+            gram_camera(p, &t, &p->scene->camera);
             p->scene->has_camera = 1;
             break;
         case KW_background: {
-            begin_block(p, "background");
-            parse_colour(p, &p->scene->background, 1);
-            expect_punct(p, '}', "the background colour");
+            tok_begin_block(p, "background");
+            expr_colour(p, &p->scene->background, 1);
+            tok_expect_punct(p, '}', "the background colour");
             break;
         }
         case KW_global_settings:
             parse_global_settings(p);
             break;
         case KW_sky_sphere:
-            parse_sky_sphere(p, &p->scene->sky);
+            gram_sky_sphere(p, &p->scene->sky);
             break;
         case KW_fog:
-            parse_fog(p, &t, tvec_push(p, &p->fogs));
+            gram_fog(p, &t, tok_tvec_push(p, &p->fogs));
             break;
         case KW_default:
             /* `default { ... }` without '#': the older spelling, which POV-Ray
              * 3.7 still reads as #default (several of its sample scenes use it). */
-            parse_default_directive(p);
+            gram_default_directive(p);
             break;
         default:
             if (t.type == TK_WORD && t.kw >= 0)
-                unsupported(p, &t); /* fog, sky_sphere, rainbow, media, ... */
+                tok_unsupported(p, &t); /* fog, sky_sphere, rainbow, media, ... */
             if (t.type == TK_WORD) {
-                Symbol *s = token_symbol(p, &t);
+                Symbol *s = tok_symbol_of(p, &t);
                 if (s && s->value.kind == VAL_UNSUPPORTED)
-                    use_unsupported(p, &t, &s->value);
+                    tok_use_unsupported(p, &t, &s->value);
                 if (!s)
-                    parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
-                parse_fail(p, t.pos, "'%.*s' cannot stand alone here; use object { %.*s }", t.len, t.text,
+                    tok_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+                tok_fail(p, t.pos, "'%.*s' cannot stand alone here; use object { %.*s }", t.len, t.text,
                            t.len, t.text);
             }
-            fail_expected(p, &t, "an object or a scene statement");
+            tok_fail_expected(p, &t, "an object or a scene statement");
         }
     }
 }
@@ -553,7 +553,7 @@ static void parse_statements(Parser *p)
 static void init_scene(Scene *s)
 {
     s->version = 3.7;
-    default_camera(&s->camera);
+    gram_default_camera(&s->camera);
     s->background.transmit = 1.0;
     s->globals.max_trace_level = 5;
     s->globals.adc_bailout = 1.0 / 255.0;
@@ -576,10 +576,10 @@ static void declare_given(Parser *p, SourcePos start)
         for (int k = 1; ok && k < len; k++)
             ok = isalnum((unsigned char)d->name[k]) || d->name[k] == '_';
         if (!ok)
-            parse_fail(p, start, "Declare=%s: '%s' is not an identifier", d->name, d->name);
-        if (keyword_lookup(d->name, len) >= 0)
-            parse_fail(p, start, "Declare=%s: '%s' is a reserved word", d->name, d->name);
-        if (symbol_find(p, d->name, len))
+            tok_fail(p, start, "Declare=%s: '%s' is not an identifier", d->name, d->name);
+        if (tok_keyword_lookup(d->name, len) >= 0)
+            tok_fail(p, start, "Declare=%s: '%s' is a reserved word", d->name, d->name);
+        if (tok_symbol_find(p, d->name, len))
             continue; /* declared before: the first value stands */
         Value v;
         memset(&v, 0, sizeof v);
@@ -592,7 +592,7 @@ static void declare_given(Parser *p, SourcePos start)
             v.v[0] = d->number;
         }
         v.declared_at = start;
-        symbol_define_global(p, d->name, len, &v);
+        tok_symbol_define_global(p, d->name, len, &v);
     }
 }
 
@@ -601,33 +601,33 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
     Scene *scene = p->scene;
     SourcePos start = { name, 0, 0 };
     if (text) {
-        char *copy = tmp_alloc(p, len + 1);
+        char *copy = tok_temp_alloc(p, len + 1);
         memcpy(copy, text, len);
-        lex_open_buffer(p, name, copy, len, start);
+        tok_open_buffer(p, name, copy, len, start);
     } else {
         SourceText scene_text;
-        if (!source_read(p, name, start, &scene_text))
-            parse_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
-        lex_open_source(p, &scene_text, start);
+        if (!tok_source_read(p, name, start, &scene_text))
+            tok_fail_io(p, start, "cannot open scene file '%s': %s", name, strerror(errno));
+        tok_open_source(p, &scene_text, start);
     }
     declare_given(p, start);
     parse_statements(p);
-    debug_end_line(p);
-    user_files_close_all(p, 1);
-    collect_approximations(p);
+    tok_debug_end_line(p);
+    tok_user_files_close_all(p, 1);
+    gram_collect_approximations(p);
 
     scene->version = p->version;
     scene->version_given = p->version_given;
     scene->nobjects = p->objects.n;
-    scene->objects = palloc(p, sizeof(SceneObject *) * (size_t)(p->objects.n ? p->objects.n : 1));
+    scene->objects = tok_scene_alloc(p, sizeof(SceneObject *) * (size_t)(p->objects.n ? p->objects.n : 1));
     if (p->objects.n)
         memcpy(scene->objects, p->objects.data, sizeof(SceneObject *) * (size_t)p->objects.n);
     scene->nlights = p->lights.n;
-    scene->lights = palloc(p, sizeof(SceneLight) * (size_t)(p->lights.n ? p->lights.n : 1));
+    scene->lights = tok_scene_alloc(p, sizeof(SceneLight) * (size_t)(p->lights.n ? p->lights.n : 1));
     if (p->lights.n)
         memcpy(scene->lights, p->lights.data, sizeof(SceneLight) * (size_t)p->lights.n);
     scene->nfogs = p->fogs.n;
-    scene->fogs = palloc(p, sizeof(SceneFog) * (size_t)(p->fogs.n ? p->fogs.n : 1));
+    scene->fogs = tok_scene_alloc(p, sizeof(SceneFog) * (size_t)(p->fogs.n ? p->fogs.n : 1));
     if (p->fogs.n)
         memcpy(scene->fogs, p->fogs.data, sizeof(SceneFog) * (size_t)p->fogs.n);
     arena_set_budget(scene->arena, NULL); /* the budget is the parse's, and ends with it */
@@ -638,17 +638,17 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
 
 /* What the token stream reads with the parts above it (TokHooks). */
 static const TokHooks gram_hooks = {
-    .expression = parse_express,
-    .number = parse_float,
-    .number_full = parse_float_full,
-    .string = parse_string,
-    .starts_float = token_starts_float,
-    .starts_expression = token_starts_expression,
-    .starts_string = token_starts_string,
-    .value = parse_value_lenient,
-    .declare = parse_declare,
-    .default_directive = parse_default_directive,
-    .version_seen = version_seen,
+    .expression = expr_numeric,
+    .number = expr_float,
+    .number_full = expr_float_full,
+    .string = expr_string,
+    .starts_float = expr_starts_float,
+    .starts_expression = expr_starts_expression,
+    .starts_string = expr_starts_string,
+    .value = gram_value_lenient,
+    .declare = gram_declare,
+    .default_directive = gram_default_directive,
+    .version_seen = gram_version_seen,
 };
 
 static Scene *run_parser(const char *name, const char *text, size_t len, const ParseOptions *opts,
@@ -680,24 +680,24 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     p->hooks = &gram_hooks;
     p->version = 3.7;
     p->version_given = p->opts->language_version_given;
-    tvec_init(&p->controls, sizeof(Control));
-    tvec_init(&p->objects, sizeof(SceneObject *));
-    tvec_init(&p->lights, sizeof(SceneLight));
-    tvec_init(&p->fogs, sizeof(SceneFog));
-    tvec_init(&p->rand_streams, sizeof(unsigned));
-    tvec_init(&p->user_files, sizeof(struct UserFile *));
-    tvec_init(&p->arg_values, sizeof(Value));
-    tvec_init(&p->arg_refs, sizeof(Symbol *));
-    source_files_init(p);
-    symbols_init(p);
+    tok_tvec_init(&p->controls, sizeof(Control));
+    tok_tvec_init(&p->objects, sizeof(SceneObject *));
+    tok_tvec_init(&p->lights, sizeof(SceneLight));
+    tok_tvec_init(&p->fogs, sizeof(SceneFog));
+    tok_tvec_init(&p->rand_streams, sizeof(unsigned));
+    tok_tvec_init(&p->user_files, sizeof(struct UserFile *));
+    tok_tvec_init(&p->arg_values, sizeof(Value));
+    tok_tvec_init(&p->arg_refs, sizeof(Symbol *));
+    tok_source_files_init(p);
+    tok_symbols_init(p);
     init_scene(scene);
-    limits_init_stack(p);
-    limits_init_memory(p);
-    limits_init_work(p);
+    tok_limits_init_stack(p);
+    tok_limits_init_memory(p);
+    tok_limits_init_work(p);
 
     if (setjmp(p->fail)) {
-        debug_end_line(p);
-        user_files_close_all(p, 0);
+        tok_debug_end_line(p);
+        tok_user_files_close_all(p, 0);
         scene_free(p->scene);
         arena_free(p->temp);
         free(p);

@@ -1,5 +1,5 @@
 /* The parse's errors, warnings and notes: every message of the parser is
- * made here, with its position, its text escaped (text_escape), and the
+ * made here, with its position, its text escaped (tok_text_escape), and the
  * longjmp back to the entry point; what hstrace does not support or only
  * approximates, which a #declare turns into a poisoned value. */
 #include <stdarg.h>
@@ -33,7 +33,7 @@ static size_t printable_char(const unsigned char *s, size_t n)
     return len;
 }
 
-size_t text_escape(char *out, size_t size, const char *in, const char *keep)
+size_t tok_text_escape(char *out, size_t size, const char *in, const char *keep)
 {
     const unsigned char *s = (const unsigned char *)in;
     size_t n = strlen(in), o = 0;
@@ -60,11 +60,11 @@ size_t text_escape(char *out, size_t size, const char *in, const char *keep)
     return o;
 }
 
-const char *display_name(Parser *p, const char *path)
+const char *tok_display_name(Parser *p, const char *path)
 {
     size_t n = strlen(path) * 4 + 1;
-    char *shown = palloc(p, n);
-    text_escape(shown, n, path, NULL);
+    char *shown = tok_scene_alloc(p, n);
+    tok_text_escape(shown, n, path, NULL);
     return shown;
 }
 
@@ -79,7 +79,7 @@ static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt
      * printable UTF-8 is shown as \xNN, never copied to the terminal. */
     char raw[sizeof e->message];
     vsnprintf(raw, sizeof raw, fmt, ap);
-    text_escape(e->message, sizeof e->message, raw, NULL);
+    tok_text_escape(e->message, sizeof e->message, raw, NULL);
     /* "%g" shows a NaN's sign bit, which means nothing: "nan" either way */
     for (char *m = e->message; (m = strstr(m, "-nan")) != NULL;)
         memmove(m, m + 1, strlen(m + 1) + 1);
@@ -111,21 +111,21 @@ static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt
     longjmp(p->fail, 1);
 }
 
-void parse_fail(Parser *p, SourcePos pos, const char *fmt, ...)
+void tok_fail(Parser *p, SourcePos pos, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
     vfail(p, pos, 0, fmt, ap);
 }
 
-void parse_fail_io(Parser *p, SourcePos pos, const char *fmt, ...)
+void tok_fail_io(Parser *p, SourcePos pos, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
     vfail(p, pos, 1, fmt, ap);
 }
 
-const char *describe_token(Parser *p, const Token *t)
+const char *tok_describe(Parser *p, const Token *t)
 {
     char buf[80];
     switch (t->type) {
@@ -138,12 +138,12 @@ const char *describe_token(Parser *p, const Token *t)
         snprintf(buf, sizeof buf, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
         break;
     }
-    return tmp_strndup(p, buf, strlen(buf));
+    return tok_temp_strndup(p, buf, strlen(buf));
 }
 
-void fail_expected(Parser *p, const Token *found, const char *what)
+void tok_fail_expected(Parser *p, const Token *found, const char *what)
 {
-    parse_fail(p, found->pos, "expected %s, found %s", what, describe_token(p, found));
+    tok_fail(p, found->pos, "expected %s, found %s", what, tok_describe(p, found));
 }
 
 /* Inside a #declare an unsupported thing only poisons the declaration: the
@@ -156,49 +156,49 @@ static _Noreturn void poison(Parser *p, const char *what, SourcePos at, int stri
     longjmp(*p->poison_jmp, 1);
 }
 
-void approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes)
+void tok_approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes)
 {
     char what[96];
     snprintf(what, sizeof what, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
     if (p->opts->strict) {
         if (p->declaring)
-            poison(p, tmp_strndup(p, what, strlen(what)), t->pos, 1);
-        parse_fail(p, t->pos, "%s is only approximated by hstrace (%s); --strict makes it an error", what,
+            poison(p, tok_temp_strndup(p, what, strlen(what)), t->pos, 1);
+        tok_fail(p, t->pos, "%s is only approximated by hstrace (%s); --strict makes it an error", what,
                    approx_kind_effect(kind));
     }
-    ApproxNote *n = palloc(p, sizeof *n);
+    ApproxNote *n = tok_scene_alloc(p, sizeof *n);
     n->kind = kind;
     n->pos = t->pos;
-    char *w = palloc(p, strlen(what) + 1);
+    char *w = tok_scene_alloc(p, strlen(what) + 1);
     memcpy(w, what, strlen(what) + 1);
     n->what = w;
     n->next = *notes;
     *notes = n;
 }
 
-void unsupported(Parser *p, const Token *t)
+void tok_unsupported(Parser *p, const Token *t)
 {
     if (t->kw == KW_sqr) /* a function-only keyword: POV-Ray 3.7 rejects it here too */
-        parse_fail(p, t->pos, "'sqr' is only allowed inside function { }; use pow(X, 2)");
+        tok_fail(p, t->pos, "'sqr' is only allowed inside function { }; use pow(X, 2)");
     char buf[96];
     snprintf(buf, sizeof buf, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
     if (p->declaring)
-        poison(p, tmp_strndup(p, buf, strlen(buf)), t->pos, 0);
-    parse_fail(p, t->pos, "%s is not supported by hstrace", buf);
+        poison(p, tok_temp_strndup(p, buf, strlen(buf)), t->pos, 0);
+    tok_fail(p, t->pos, "%s is not supported by hstrace", buf);
 }
 
-void use_unsupported(Parser *p, const Token *t, const Value *v)
+void tok_use_unsupported(Parser *p, const Token *t, const Value *v)
 {
     if (p->declaring)
         poison(p, v->what, v->declared_at, v->strict_only);
     if (v->strict_only)
-        parse_fail(p, t->pos, "%s is only approximated by hstrace; --strict makes it an error (declared at %s:%d)",
+        tok_fail(p, t->pos, "%s is only approximated by hstrace; --strict makes it an error (declared at %s:%d)",
                    v->what, v->declared_at.file, v->declared_at.line);
-    parse_fail(p, t->pos, "%s is not supported by hstrace (declared at %s:%d)", v->what, v->declared_at.file,
+    tok_fail(p, t->pos, "%s is not supported by hstrace (declared at %s:%d)", v->what, v->declared_at.file,
                v->declared_at.line);
 }
 
-int defer_unsupported(Parser *p, const char *what, SourcePos at)
+int tok_defer_unsupported(Parser *p, const char *what, SourcePos at)
 {
     if (!p->declaring)
         return 0;
@@ -206,12 +206,12 @@ int defer_unsupported(Parser *p, const char *what, SourcePos at)
         p->deferred_what = what;
         p->deferred_at = at;
     }
-    Token *t = next(p);
-    if (is_punct(t, '(')) {
+    Token *t = tok_next(p);
+    if (tok_is_punct(t, '(')) {
         Token open = *t;
-        skip_balanced_group(p, &open);
+        tok_skip_balanced_group(p, &open);
     } else {
-        unget(p);
+        tok_unget(p);
     }
     return 1;
 }

@@ -10,10 +10,10 @@
 
 static _Noreturn void out_of_memory(Parser *p)
 {
-    parse_fail_memory(p, p->last_pos);
+    tok_fail_memory(p, p->last_pos);
 }
 
-void *palloc(Parser *p, size_t size)
+void *tok_scene_alloc(Parser *p, size_t size)
 {
     void *m = arena_alloc(p->arena, size);
     if (!m)
@@ -21,7 +21,7 @@ void *palloc(Parser *p, size_t size)
     return m;
 }
 
-void *tmp_alloc(Parser *p, size_t size)
+void *tok_temp_alloc(Parser *p, size_t size)
 {
     void *m = arena_alloc(p->temp, size);
     if (!m)
@@ -29,21 +29,21 @@ void *tmp_alloc(Parser *p, size_t size)
     return m;
 }
 
-char *tmp_strndup(Parser *p, const char *s, size_t n)
+char *tok_temp_strndup(Parser *p, const char *s, size_t n)
 {
-    char *r = tmp_alloc(p, n + 1);
+    char *r = tok_temp_alloc(p, n + 1);
     memcpy(r, s, n);
     r[n] = '\0';
     return r;
 }
 
-void tvec_init(TempVec *v, size_t elem)
+void tok_tvec_init(TempVec *v, size_t elem)
 {
     memset(v, 0, sizeof *v);
     v->elem = elem;
 }
 
-void *tvec_push(Parser *p, TempVec *v)
+void *tok_tvec_push(Parser *p, TempVec *v)
 {
     if (v->n == v->cap) {
         if (v->cap > (1 << 28))
@@ -68,7 +68,7 @@ static void reserve_in(Parser *p, TempVec *v, int n, Arena *a)
     if (n <= v->cap)
         return;
     if (n > (1 << 28))
-        n = 1 << 28; /* tvec_push's own limit */
+        n = 1 << 28; /* tok_tvec_push's own limit */
     void *d = arena_alloc_uninit(a, v->elem * (size_t)n); /* each slot is zeroed when pushed */
     if (!d)
         out_of_memory(p);
@@ -79,20 +79,20 @@ static void reserve_in(Parser *p, TempVec *v, int n, Arena *a)
     v->in_scene = a == p->arena;
 }
 
-void tvec_reserve(Parser *p, TempVec *v, int n) { reserve_in(p, v, n, p->temp); }
+void tok_tvec_reserve(Parser *p, TempVec *v, int n) { reserve_in(p, v, n, p->temp); }
 
-void tvec_reserve_kept(Parser *p, TempVec *v, int n) { reserve_in(p, v, n, p->arena); }
+void tok_tvec_reserve_kept(Parser *p, TempVec *v, int n) { reserve_in(p, v, n, p->arena); }
 
-void *tvec_kept(Parser *p, const TempVec *v)
+void *tok_tvec_kept(Parser *p, const TempVec *v)
 {
     if (v->in_scene && v->n > 0)
         return v->data;
-    return tvec_keep(p, v);
+    return tok_tvec_keep(p, v);
 }
 
-void *tvec_keep(Parser *p, const TempVec *v)
+void *tok_tvec_keep(Parser *p, const TempVec *v)
 {
-    void *kept = palloc(p, v->elem * (size_t)(v->n ? v->n : 1));
+    void *kept = tok_scene_alloc(p, v->elem * (size_t)(v->n ? v->n : 1));
     if (v->n)
         memcpy(kept, v->data, v->elem * (size_t)v->n);
     return kept;
