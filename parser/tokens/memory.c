@@ -43,20 +43,25 @@ void tok_tvec_init(TempVec *v, size_t elem)
     v->elem = elem;
 }
 
+/* The list's elements moved to room for cap of them in arena a. */
+static void move_to(Parser *p, TempVec *v, int cap, Arena *a)
+{
+    void *d = arena_alloc_uninit(a, v->elem * (size_t)cap); /* each slot is zeroed when pushed */
+    if (!d)
+        out_of_memory(p);
+    if (v->n)
+        memcpy(d, v->data, v->elem * (size_t)v->n);
+    v->data = d;
+    v->cap = cap;
+    v->in_scene = a == p->arena;
+}
+
 void *tok_tvec_push(Parser *p, TempVec *v)
 {
     if (v->n == v->cap) {
         if (v->cap > (1 << 28))
             out_of_memory(p);
-        int cap = v->cap ? v->cap * 2 : 16;
-        void *d = arena_alloc_uninit(p->temp, v->elem * (size_t)cap); /* each slot is zeroed when pushed */
-        if (!d)
-            out_of_memory(p);
-        if (v->n)
-            memcpy(d, v->data, v->elem * (size_t)v->n);
-        v->data = d;
-        v->cap = cap;
-        v->in_scene = 0;
+        move_to(p, v, v->cap ? v->cap * 2 : 16, p->temp);
     }
     void *slot = (char *)v->data + v->elem * (size_t)v->n++;
     memset(slot, 0, v->elem);
@@ -69,14 +74,7 @@ static void reserve_in(Parser *p, TempVec *v, int n, Arena *a)
         return;
     if (n > (1 << 28))
         n = 1 << 28; /* tok_tvec_push's own limit */
-    void *d = arena_alloc_uninit(a, v->elem * (size_t)n); /* each slot is zeroed when pushed */
-    if (!d)
-        out_of_memory(p);
-    if (v->n)
-        memcpy(d, v->data, v->elem * (size_t)v->n);
-    v->data = d;
-    v->cap = n;
-    v->in_scene = a == p->arena;
+    move_to(p, v, n, a);
 }
 
 void tok_tvec_reserve(Parser *p, TempVec *v, int n) { reserve_in(p, v, n, p->temp); }
