@@ -131,15 +131,15 @@ void gram_collect_approximations(Parser *p)
     Scene *s = p->scene;
     Tally t;
     memset(&t, 0, sizeof t);
-    for (int i = 0; i < p->objects.n; i++)
-        tally_object(&t, ((SceneObject **)p->objects.data)[i], 0);
-    for (int i = 0; i < p->lights.n; i++)
-        tally_notes(&t, ((SceneLight *)p->lights.data)[i].approx);
+    for (int i = 0; i < p->gram->objects.n; i++)
+        tally_object(&t, ((SceneObject **)p->gram->objects.data)[i], 0);
+    for (int i = 0; i < p->gram->lights.n; i++)
+        tally_notes(&t, ((SceneLight *)p->gram->lights.data)[i].approx);
     tally_notes(&t, s->camera.approx);
     tally_texture(&t, &s->default_texture);
     for (int i = 0; i < s->sky.npigments; i++)
         tally_pigment(&t, &s->sky.pigments[i]);
-    tally_notes(&t, p->global_approx);
+    tally_notes(&t, p->gram->global_approx);
     free(t.slots);
     if (t.failed)
         tok_fail(p, p->last_pos, "out of memory");

@@ -9,6 +9,20 @@
 #include "tokens.h"
 
 
+/* What the grammar keeps while it reads a scene (Parser.gram): the scene's
+ * top-level lists until the parse ends, and the settings later statements
+ * depend on. */
+typedef struct GramState {
+    TempVec objects; /* of SceneObject *, top level */
+    TempVec lights;  /* of SceneLight */
+    TempVec fogs;    /* of SceneFog, in file order */
+    const ApproxNote *global_approx; /* global_settings: radiosity, photons */
+    int media_attenuation_seen; /* a light_source asked for media_attenuation */
+    int default_changed;        /* #default was used */
+    /* POV-Ray's gammaMode while parsing (image_gamma.c) */
+    enum { GAMMA_MODE_NONE, GAMMA_MODE_37_IMPLIED, GAMMA_MODE_36, GAMMA_MODE_37 } gamma_mode;
+} GramState;
+
 /* A value as POV-Ray stores it in a float (SNGL): map values, frequency,
  * phase, bump_size ... land where POV-Ray's do. */
 static inline double gram_single(double v) { return (double)(float)v; }

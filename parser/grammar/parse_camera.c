@@ -241,8 +241,8 @@ SceneLight *gram_light_source(Parser *p, const Token *kw)
         case KW_media_attenuation: { /* fog on the light's rays: not modelled */
             Token at = *t;
             if (!expr_starts_float(p, tok_peek(p)) || expr_float(p) > 0.0) {
-                p->media_attenuation_seen = 1;
-                if (p->fogs.n > 0) /* else the fog, when it comes, reports it */
+                p->gram->media_attenuation_seen = 1;
+                if (p->gram->fogs.n > 0) /* else the fog, when it comes, reports it */
                     tok_approximate(p, &at, APPROX_FOG, &l->approx);
             }
             break;

@@ -87,6 +87,6 @@ void gram_fog(Parser *p, const Token *kw, SceneFog *fog)
     double len = sqrt(fog->up.x * fog->up.x + fog->up.y * fog->up.y + fog->up.z * fog->up.z);
     if (len > 0.0)
         fog->up = (Vec3){ fog->up.x / len, fog->up.y / len, fog->up.z / len };
-    if (p->media_attenuation_seen)
-        tok_approximate(p, kw, APPROX_FOG, &p->global_approx);
+    if (p->gram->media_attenuation_seen)
+        tok_approximate(p, kw, APPROX_FOG, &p->gram->global_approx);
 }

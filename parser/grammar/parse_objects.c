@@ -692,7 +692,7 @@ void gram_instantiate_union_lights(Parser *p, const SceneObject *o, const Transf
     int next_light = 0;
     for (int c = 0; c <= o->u.csg.nchildren; c++) {
         for (; next_light < o->u.csg.nlights && o->u.csg.light_slot[next_light] == c; next_light++) {
-            SceneLight *l = tok_tvec_push(p, &p->lights);
+            SceneLight *l = tok_tvec_push(p, &p->gram->lights);
             *l = o->u.csg.lights[next_light];
             gram_transform_light(l, &world);
         }

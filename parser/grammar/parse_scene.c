@@ -386,7 +386,7 @@ void gram_default_directive(Parser *p)
             tok_fail_expected(p, t, "texture, pigment, finish, normal or '}' in #default");
         }
     }
-    p->default_changed = 1;
+    p->gram->default_changed = 1;
 }
 
 /* ---- scene statements ---------------------------------------------------- */
@@ -441,7 +441,7 @@ static void parse_global_settings(Parser *p)
         case KW_radiosity: case KW_photons: case KW_subsurface:
             /* Not modelled: parsed past and ignored, so scenes written for
              * POV-Ray still load (their lighting will differ). */
-            tok_approximate(p, &t, t.kw == KW_photons ? APPROX_PHOTONS : APPROX_RADIOSITY, &p->global_approx);
+            tok_approximate(p, &t, t.kw == KW_photons ? APPROX_PHOTONS : APPROX_RADIOSITY, &p->gram->global_approx);
             if (t.kw == KW_radiosity)
                 g->radiosity = 1;
             tok_begin_block(p, tok_keyword_name(t.kw));
@@ -483,15 +483,15 @@ static void parse_global_settings(Parser *p)
 static void add_object(Parser *p, SceneObject *o, SceneLight *l)
 {
     if (l) {
-        *(SceneLight *)tok_tvec_push(p, &p->lights) = *l;
+        *(SceneLight *)tok_tvec_push(p, &p->gram->lights) = *l;
         return;
     }
-    if (!o->texture && p->default_changed)
+    if (!o->texture && p->gram->default_changed)
         o->texture = gram_default_texture(p); /* POV-Ray binds the default at this point */
     Transform world;
     transform_identity(&world);
     gram_instantiate_union_lights(p, o, &world, 0);
-    *(SceneObject **)tok_tvec_push(p, &p->objects) = o;
+    *(SceneObject **)tok_tvec_push(p, &p->gram->objects) = o;
 }
 
 static void parse_statements(Parser *p)
@@ -524,7 +524,7 @@ static void parse_statements(Parser *p)
             gram_sky_sphere(p, &p->scene->sky);
             break;
         case KW_fog:
-            gram_fog(p, &t, tok_tvec_push(p, &p->fogs));
+            gram_fog(p, &t, tok_tvec_push(p, &p->gram->fogs));
             break;
         case KW_default:
             /* `default { ... }` without '#': the older spelling, which POV-Ray
@@ -618,18 +618,18 @@ static Scene *parse_everything(Parser *p, const char *name, const char *text, si
 
     scene->version = p->version;
     scene->version_given = p->version_given;
-    scene->nobjects = p->objects.n;
-    scene->objects = tok_scene_alloc(p, sizeof(SceneObject *) * (size_t)(p->objects.n ? p->objects.n : 1));
-    if (p->objects.n)
-        memcpy(scene->objects, p->objects.data, sizeof(SceneObject *) * (size_t)p->objects.n);
-    scene->nlights = p->lights.n;
-    scene->lights = tok_scene_alloc(p, sizeof(SceneLight) * (size_t)(p->lights.n ? p->lights.n : 1));
-    if (p->lights.n)
-        memcpy(scene->lights, p->lights.data, sizeof(SceneLight) * (size_t)p->lights.n);
-    scene->nfogs = p->fogs.n;
-    scene->fogs = tok_scene_alloc(p, sizeof(SceneFog) * (size_t)(p->fogs.n ? p->fogs.n : 1));
-    if (p->fogs.n)
-        memcpy(scene->fogs, p->fogs.data, sizeof(SceneFog) * (size_t)p->fogs.n);
+    scene->nobjects = p->gram->objects.n;
+    scene->objects = tok_scene_alloc(p, sizeof(SceneObject *) * (size_t)(p->gram->objects.n ? p->gram->objects.n : 1));
+    if (p->gram->objects.n)
+        memcpy(scene->objects, p->gram->objects.data, sizeof(SceneObject *) * (size_t)p->gram->objects.n);
+    scene->nlights = p->gram->lights.n;
+    scene->lights = tok_scene_alloc(p, sizeof(SceneLight) * (size_t)(p->gram->lights.n ? p->gram->lights.n : 1));
+    if (p->gram->lights.n)
+        memcpy(scene->lights, p->gram->lights.data, sizeof(SceneLight) * (size_t)p->gram->lights.n);
+    scene->nfogs = p->gram->fogs.n;
+    scene->fogs = tok_scene_alloc(p, sizeof(SceneFog) * (size_t)(p->gram->fogs.n ? p->gram->fogs.n : 1));
+    if (p->gram->fogs.n)
+        memcpy(scene->fogs, p->gram->fogs.data, sizeof(SceneFog) * (size_t)p->gram->fogs.n);
     arena_set_budget(scene->arena, NULL); /* the budget is the parse's, and ends with it */
     arena_free(p->temp);
     free(p);
@@ -651,6 +651,13 @@ static const TokHooks gram_hooks = {
     .version_seen = gram_version_seen,
 };
 
+/* The Parser and the grammar's state, allocated (and freed) as one: the
+ * Parser first, so that its address is the block's. */
+typedef struct {
+    Parser parser;
+    GramState gram;
+} ParserBlock;
+
 static Scene *run_parser(const char *name, const char *text, size_t len, const ParseOptions *opts,
                          ParseError *err)
 {
@@ -659,7 +666,8 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     if (!err)
         err = &ignored;
     memset(err, 0, sizeof *err);
-    Parser *p = calloc(1, sizeof *p);
+    ParserBlock *block = calloc(1, sizeof *block);
+    Parser *p = block ? &block->parser : NULL; /* free(p) frees the block */
     Scene *scene = calloc(1, sizeof *scene);
     Arena *temp = arena_new(), *arena = arena_new();
     if (!p || !scene || !temp || !arena) {
@@ -678,12 +686,13 @@ static Scene *run_parser(const char *name, const char *text, size_t len, const P
     p->opts = opts ? opts : &no_options;
     p->err = err;
     p->hooks = &gram_hooks;
+    p->gram = &block->gram;
     p->version = 3.7;
     p->version_given = p->opts->language_version_given;
     tok_tvec_init(&p->controls, sizeof(Control));
-    tok_tvec_init(&p->objects, sizeof(SceneObject *));
-    tok_tvec_init(&p->lights, sizeof(SceneLight));
-    tok_tvec_init(&p->fogs, sizeof(SceneFog));
+    tok_tvec_init(&p->gram->objects, sizeof(SceneObject *));
+    tok_tvec_init(&p->gram->lights, sizeof(SceneLight));
+    tok_tvec_init(&p->gram->fogs, sizeof(SceneFog));
     tok_tvec_init(&p->rand_streams, sizeof(unsigned));
     tok_tvec_init(&p->user_files, sizeof(struct UserFile *));
     tok_tvec_init(&p->arg_values, sizeof(Value));

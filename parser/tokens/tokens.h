@@ -282,8 +282,6 @@ typedef struct Parser {
 
     SymbolTable symbols;
     TempVec controls; /* of Control */
-    TempVec fogs;     /* of SceneFog, in file order */
-    int media_attenuation_seen; /* a light_source asked for media_attenuation */
     /* limits.c: the work done so far, and its budgets */
     long loop_iterations, macro_calls, repeated_tokens;
     long max_loop_iterations, max_macro_calls, max_repeated_tokens;
@@ -295,9 +293,6 @@ typedef struct Parser {
     int debug_line_open; /* #debug text on stderr does not end in a newline */
     int gamma_set;
     double assumed_gamma; /* 0 with gamma_set: srgb */
-    /* POV-Ray's gammaMode while parsing (image_gamma.c) */
-    enum { GAMMA_MODE_NONE, GAMMA_MODE_37_IMPLIED, GAMMA_MODE_36, GAMMA_MODE_37 } gamma_mode;
-    int default_changed;  /* #default was used */
 
     /* limits.c: the lowest stack address a token may be read at, and the
      * levels of expressions and objects open (MAX_NESTING at most). */
@@ -336,9 +331,9 @@ typedef struct Parser {
     struct UserFile *free_user_files; /* closed, forgotten: for the next #fopen */
     int poison_strict;
 
-    const ApproxNote *global_approx; /* global_settings: radiosity, photons */
-    TempVec objects; /* of SceneObject *, top level */
-    TempVec lights;  /* of SceneLight */
+    /* The grammar's own state, which the token stream and the evaluator
+     * never read (GramState in parser/grammar/grammar.h). */
+    struct GramState *gram;
 } Parser;
 
 /* errors (errors.c) */
