@@ -8,9 +8,13 @@
 
 #include "tokens.h"
 
-
 /* expr.c */
+/* A whole numeric expression, comparisons, '&', '|' and '?:' included,
+ * into e: *terms components wanted (1 float, 2-4 vector, 5 colour) on
+ * entry, those it has on return. */
 void expr_numeric(Parser *p, double e[5], int *terms);
+/* Sums and products only, as POV-Ray's Parse_Rel_Factor: a comparison's
+ * '<' or '>' then ends it (a vector's component, an array's element). */
 void expr_rel_factor(Parser *p, double e[5], int *terms);
 double expr_float(Parser *p);
 double expr_float_full(Parser *p); /* comparisons allowed */
@@ -31,6 +35,5 @@ void expr_comma(Parser *p); /* an optional ',' */
  * into tr and returns 1, or returns 0 when t is no transform. */
 int expr_transform_item(Parser *p, const Token *t, Transform *tr);
 void expr_transform_block(Parser *p, Transform *tr); /* after 'transform' */
-
 
 #endif

@@ -8,7 +8,6 @@
 #include "expressions.h"
 #include "tokens.h"
 
-
 /* What the grammar keeps while it reads a scene (Parser.gram): the scene's
  * top-level lists until the parse ends, and the settings later statements
  * depend on. */
@@ -26,6 +25,7 @@ typedef struct GramState {
 /* A value as POV-Ray stores it in a float (SNGL): map values, frequency,
  * phase, bump_size ... land where POV-Ray's do. */
 static inline double gram_single(double v) { return (double)(float)v; }
+
 /* parse_texture.c */
 SceneTexture *gram_default_texture(Parser *p);
 SceneTexture *gram_texture(Parser *p);   /* after 'texture' */

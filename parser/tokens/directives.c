@@ -18,23 +18,6 @@ int tok_is_kw(const Token *t, int kw) { return t->type == TK_WORD && t->kw == kw
 
 static void handle_directive(Parser *p, const Token *hash);
 
-void tok_debug_end_line(Parser *p)
-{
-    if (p->debug_line_open)
-        fputc('\n', stderr);
-    p->debug_line_open = 0;
-}
-
-void tok_warning(Parser *p, SourcePos pos, const char *msg)
-{
-    if (p->opts->quiet_warnings)
-        return;
-    tok_debug_end_line(p);
-    char shown[1024];
-    tok_text_escape(shown, sizeof shown, msg, NULL);
-    fprintf(stderr, "%s:%d:%d: warning: %s\n", pos.file, pos.line, pos.column, shown);
-}
-
 static void count_braces(Parser *p, const Token *t, int dir)
 {
     if (tok_is_punct(t, '{'))

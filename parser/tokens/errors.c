@@ -68,6 +68,23 @@ const char *tok_display_name(Parser *p, const char *path)
     return shown;
 }
 
+void tok_debug_end_line(Parser *p)
+{
+    if (p->debug_line_open)
+        fputc('\n', stderr);
+    p->debug_line_open = 0;
+}
+
+void tok_warning(Parser *p, SourcePos pos, const char *msg)
+{
+    if (p->opts->quiet_warnings)
+        return;
+    tok_debug_end_line(p);
+    char shown[1024];
+    tok_text_escape(shown, sizeof shown, msg, NULL);
+    fprintf(stderr, "%s:%d:%d: warning: %s\n", pos.file, pos.line, pos.column, shown);
+}
+
 static _Noreturn void vfail(Parser *p, SourcePos pos, int is_io, const char *fmt, va_list ap)
 {
     ParseError *e = p->err;

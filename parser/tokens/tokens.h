@@ -369,6 +369,11 @@ _Noreturn void tok_use_unsupported(Parser *p, const Token *t, const Value *v);
 /* In a declaration: remember the first unsupported thing of an expression
  * and skip its `(arguments)`; returns 0 outside declarations. */
 int tok_defer_unsupported(Parser *p, const char *what, SourcePos at);
+/* How messages name a token: its spelling or its string, cut short, or
+ * "the end of the file" (the temporary arena). */
+const char *tok_describe(Parser *p, const Token *t);
+
+/* memory (memory.c) */
 void *tok_scene_alloc(Parser *p, size_t size);       /* scene arena, checked */
 void *tok_temp_alloc(Parser *p, size_t size);    /* temporary arena, checked */
 char *tok_temp_strndup(Parser *p, const char *s, size_t n);
@@ -386,7 +391,6 @@ void tok_tvec_reserve_kept(Parser *p, TempVec *v, int n);
 void *tok_tvec_kept(Parser *p, const TempVec *v);
 /* The elements as a copy in the scene's arena (they outlive the parse). */
 void *tok_tvec_keep(Parser *p, const TempVec *v);
-const char *tok_describe(Parser *p, const Token *t);
 
 /* limits.c: the guards on what a scene may use while it is parsed. */
 /* Notes how far down this thread's stack may go (the parse's entry). */
