@@ -2,11 +2,14 @@
 # The rooms of the source tree depend in one direction only.
 # parser/description is the scene description (and the vector and transform
 # maths it is written in) that both sides share; parser/ is the scene
-# language; src/N-name are the engine's rooms, numbered in the order of the
-# pipeline. A file may include headers of its own room or of rooms below
-# it: parser/description only its own, parser/ the description, src/N the
-# description and src/M for M <= N, and only the command line (src/9-cli)
-# the parser. The build compiles each room with the include folders it may
+# language, its interface parser/parser.h over three parts in this order:
+# parser/tokens (the token stream), parser/expressions (the expression
+# evaluator), parser/grammar (the scene grammar); src/N-name are the
+# engine's rooms, numbered in the order of the pipeline. A file may include
+# headers of its own room or of rooms below it: parser/description only its
+# own, parser/ the description, a part of the parser the description,
+# parser.h and the parts before it, src/N the description and src/M for
+# M <= N, and only the command line (src/9-cli) the parser, by parser.h. The build compiles each room with the include folders it may
 # use only, so a wrong include does not build; this test names it, and also
 # reads the headers that no compiled file includes.
 set -u
@@ -21,6 +24,13 @@ room_of_header() { # base name -> the folder holding it, or nothing
     done
 }
 engine_rank() { d=${1#src/}; echo "${d%%-*}"; } # src/4-shadow -> 4
+parser_rank() { # the parser's parts in their order, else nothing
+    case $1 in
+    parser/tokens) echo 1 ;;
+    parser/expressions) echo 2 ;;
+    parser/grammar) echo 3 ;;
+    esac
+}
 
 n=0; bad=0
 for f in $sources; do
@@ -39,6 +49,14 @@ for f in $sources; do
         case $own in
         parser/description) [ "$room" = parser/description ] || ok=0 ;;
         parser) [ "$room" = parser ] || [ "$room" = parser/description ] || ok=0 ;;
+        parser/*)
+            case $room in
+            parser/description | parser) ;;
+            parser/*)
+                r=$(parser_rank "$room")
+                [ -n "$r" ] && [ "$r" -le "$(parser_rank "$own")" ] || ok=0 ;;
+            *) ok=0 ;;
+            esac ;;
         src/*)
             case $room in
             parser/description) ;;

@@ -4,7 +4,7 @@
  * it), so every conversion of a double that the scene gives or the renderer
  * computes -- counts, levels, indices, characters, cell coordinates -- goes
  * through one of these. The parser words its own message when a value is
- * refused (parse_int in parser_internal.h). */
+ * refused (expr_checked_int in parser/expressions/expressions.h). */
 #ifndef HST_CONVERT_H
 #define HST_CONVERT_H
 

@@ -126,3 +126,31 @@ int pigment_is_opaque(const Pigment *pig)
             return 0;
     return 1;
 }
+
+/* The kinds of approximation (scene.h) by name and by what they change,
+ * for the parser's notes and the engine's reports alike. */
+static const struct {
+    const char *name, *effect;
+} kinds[APPROX_KINDS] = {
+    [APPROX_NORMAL] = { "normal", "normal pattern not evaluated: the surface normal left unperturbed" },
+    [APPROX_PATTERN] = { "pattern", "pattern shown as one colour, its colour map at 0.5" },
+    [APPROX_WARP] = { "warp", "pattern warps other than turbulence ignored" },
+    [APPROX_LAYERS] = { "layers", "texture layers blended into one, with the top layer's finish" },
+    [APPROX_FINISH] = { "finish", "finish item ignored" },
+    [APPROX_CAUSTICS] = { "caustics", "interior caustics and dispersion ignored" },
+    [APPROX_PHOTONS] = { "photons", "photon mapping ignored" },
+    [APPROX_RADIOSITY] = { "radiosity", "radiosity and subsurface light transport ignored: no light gathered from "
+                                        "other surfaces, and (as POV-Ray 3.7 with radiosity) no finish's ambient" },
+    [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
+    [APPROX_FOG] = { "fog", "fog between lights and surfaces (media_attenuation) ignored" },
+};
+
+const char *approx_kind_name(ApproxKind k)
+{
+    return k >= 0 && k < APPROX_KINDS ? kinds[k].name : "?";
+}
+
+const char *approx_kind_effect(ApproxKind k)
+{
+    return k >= 0 && k < APPROX_KINDS ? kinds[k].effect : "?";
+}

@@ -13,8 +13,8 @@
 # `ini` tests/fuzz/seeds/*.ini and tests/hostile/ini; for `stitch` and the
 # readers files hstrace writes of a small scene (tests/fuzz/make-seeds.sh)
 # and those of tests/hostile/stitch and tests/hostile/images -- and, for
-# `scene`, `ini` and `stitch`, a dictionary (parser/keywords.def; the INI
-# keys and switches of options.c; the EXR header attributes hstrace
+# `scene`, `ini` and `stitch`, a dictionary (parser/tokens/keywords.def; the INI
+# keys and switches of options_table.c; the EXR header attributes hstrace
 # writes). An input that crashes, trips a sanitizer, leaks, runs over 10 s
 # or takes over 2 GiB is a finding (resident memory: a single allocation
 # may reserve up to 4.5 GiB, as the image readers do for the largest image
@@ -54,6 +54,7 @@ command -v "$cc" >/dev/null 2>&1 || { echo "fuzz: $cc not found (Debian package 
 san="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all"
 cflags="-std=c11 -g -O1 -fno-omit-frame-pointer -ffp-contract=off -D_POSIX_C_SOURCE=200809L"
 cflags="$cflags -DHST_DATADIR=\"$src/data\" -I$build -I$src/parser -I$src/parser/description"
+cflags="$cflags -I$src/parser/tokens -I$src/parser/expressions -I$src/parser/grammar"
 for room in "$src"/src/[0-8]-*; do cflags="$cflags -I$room"; done
 pkgs="libpng libjpeg OpenEXR"
 cflags="$cflags $(pkg-config --cflags $pkgs)"
@@ -72,9 +73,9 @@ if [ "$(cat "$out/obj/headers.sum" 2>/dev/null)" != "$headers" ]; then
     printf '%s\n' "$headers" >"$out/obj/headers.sum"
 fi
 objects=""
-for f in "$src"/parser/*.c "$src"/parser/description/*.c "$src"/src/[0-8]-*/*.c; do
+for f in "$src"/parser/*/*.c "$src"/src/[0-8]-*/*.c; do
     o=$out/obj/$(echo "${f#"$src"/}" | tr / _ | sed 's/\.c$/.o/')
-    if [ ! -f "$o" ] || [ "$f" -nt "$o" ] || [ "$src/parser/parser_internal.h" -nt "$o" ]; then
+    if [ ! -f "$o" ] || [ "$f" -nt "$o" ] || [ "$src/parser/tokens/tokens.h" -nt "$o" ]; then
         # shellcheck disable=SC2086 # the flags are words
         nice -n 19 "$cc" $cflags $san -fsanitize=fuzzer-no-link -c "$f" -o "$o" || exit 2
     fi
@@ -87,7 +88,7 @@ link() { # target, defines: the fuzzer
 
 # The dictionary: every reserved word, the directives, the punctuation.
 {
-    sed -n 's/^KW(\(.*\))$/"\1"/p' "$src/parser/keywords.def"
+    sed -n 's/^KW(\(.*\))$/"\1"/p' "$src/parser/tokens/keywords.def"
     for d in include declare local undef if ifdef ifndef elseif else end while for switch case range break \
         macro version debug warning error default fopen fclose read write; do
         echo "\"#$d\""
@@ -98,10 +99,10 @@ link() { # target, defines: the fuzzer
     done
 } >"$out/scene.dict"
 
-# The INI dictionary: the keys options.c knows, its switches and long
+# The INI dictionary: the keys the options' table knows, its switches and long
 # options, the words of values, the entry point's own divisions and names.
 {
-    sed -n 's/^ *{ "\([A-Za-z_]*\)", KEY_.*/"\1="/p' "$src/src/6-render/options.c"
+    grep -o '\.ini = "[A-Za-z_]*"' "$src/src/6-render/options_table.c" | sed 's/^\.ini = "\(.*\)"$/"\1="/' | sort -u
     for w in +W +H +Q +WT +F +FN +FN16 +FE +FP +FT +FC +FB +FJ +FH +L +I +O +A +AM +R +J +UA +MV +D +P +C \
         +GA +GD +GW +GR +GS +KFI +KFF +KI +KF +KC +K +SF +EF +SR +ER +SC +EC -F -J -D -A -GA \
         on off true false yes no 0.5 1e300 -1 2147483648 "%%" "[" "]" "=" ";" "#" "," "'" \
@@ -110,7 +111,7 @@ link() { # target, defines: the fuzzer
     done
     printf '"\\""\n' # a double quote
     printf '"\\x0a%%%%\\x0a"\n'
-    grep -o '"--[a-z0-9-]*"' "$src/src/6-render/options.c" | sort -u
+    grep -o '"--[a-z0-9-]*"' "$src/src/6-render/options_table.c" | sort -u
 } >"$out/ini.dict"
 
 # The stitch dictionary: the header hstrace writes (attributes, their

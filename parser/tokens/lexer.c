@@ -10,16 +10,16 @@
 #include <stdint.h>
 #include <sys/stat.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
-const char *dir_of(Parser *p, const char *path)
+const char *tok_dir_of(Parser *p, const char *path)
 {
     const char *slash = strrchr(path, '/');
     if (!slash)
         return ".";
     if (slash == path)
         return "/";
-    return tmp_strndup(p, path, (size_t)(slash - path));
+    return tok_temp_strndup(p, path, (size_t)(slash - path));
 }
 
 /* Room for one more frame. Frame pointers are not kept across an open, so
@@ -31,7 +31,7 @@ static void reserve_frame(Parser *p)
     int cap = p->files_cap ? p->files_cap * 2 : 16;
     if (cap > MAX_SOURCE_FRAMES)
         cap = MAX_SOURCE_FRAMES;
-    SourceFile *bigger = tmp_alloc(p, sizeof *bigger * (size_t)cap);
+    SourceFile *bigger = tok_temp_alloc(p, sizeof *bigger * (size_t)cap);
     if (p->depth)
         memcpy(bigger, p->files, sizeof *bigger * (size_t)p->depth);
     p->files = bigger;
@@ -45,9 +45,9 @@ static void open_text(Parser *p, const char *name, const char *dir, const char *
         /* Name the cycle when there is one: that is the usual cause. */
         for (int i = 0; i < p->depth; i++)
             if (!p->files[i].macro && strcmp(p->files[i].name, name) == 0)
-                parse_fail(p, at, "#include nested more than %d deep: '%s' includes itself", MAX_INCLUDE_DEPTH,
+                tok_fail(p, at, "#include nested more than %d deep: '%s' includes itself", MAX_INCLUDE_DEPTH,
                            name);
-        parse_fail(p, at, "#include nested more than %d deep", MAX_INCLUDE_DEPTH);
+        tok_fail(p, at, "#include nested more than %d deep", MAX_INCLUDE_DEPTH);
     }
     reserve_frame(p);
     SourceFile *f = &p->files[p->depth++];
@@ -62,22 +62,22 @@ static void open_text(Parser *p, const char *name, const char *dir, const char *
     f->controls_at_entry = p->controls.n;
 }
 
-void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at)
+void tok_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at)
 {
-    open_text(p, display_name(p, name), dir_of(p, name), buf, size, at);
+    open_text(p, tok_display_name(p, name), tok_dir_of(p, name), buf, size, at);
 }
 
-void lex_open_source(Parser *p, const SourceText *s, SourcePos at)
+void tok_open_source(Parser *p, const SourceText *s, SourcePos at)
 {
     open_text(p, s->name, s->dir, s->text, s->size, at);
     if (s->again) /* an #include in a loop: its text is read again */
         p->files[p->depth - 1].repeated_to = SIZE_MAX;
 }
 
-void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at)
+void tok_open_macro(Parser *p, const Macro *m, SourcePos called_at)
 {
     if (p->macro_depth >= MAX_MACRO_DEPTH || p->depth >= MAX_SOURCE_FRAMES)
-        parse_fail(p, called_at, "macro '%s' called more than %d levels deep: is its recursion endless?", m->name,
+        tok_fail(p, called_at, "macro '%s' called more than %d levels deep: is its recursion endless?", m->name,
                    MAX_MACRO_DEPTH);
     reserve_frame(p);
     SourceFile *f = &p->files[p->depth++];
@@ -110,7 +110,7 @@ static int add_search_dir(const char **dirs, int nd, int cap, const char *dir)
     return nd + 1;
 }
 
-int lex_search_dirs(Parser *p, const char **dirs, int cap)
+int tok_search_dirs(Parser *p, const char **dirs, int cap)
 {
     int nd = add_search_dir(dirs, 0, cap, p->opts->first_dir);
     nd = add_search_dir(dirs, nd, cap, p->files[p->depth - 1].dir);
@@ -119,14 +119,14 @@ int lex_search_dirs(Parser *p, const char **dirs, int cap)
     return nd;
 }
 
-LexMark lex_mark(Parser *p)
+LexMark tok_mark(Parser *p)
 {
     SourceFile *f = &p->files[p->depth - 1];
     LexMark m = { p->depth, f->offset, f->line, f->col };
     return m;
 }
 
-void lex_seek(Parser *p, LexMark m)
+void tok_seek(Parser *p, LexMark m)
 {
     SourceFile *f = &p->files[m.depth - 1];
     f->offset = m.offset;
@@ -190,7 +190,7 @@ static void skip_space(Parser *p, SourceFile *f)
             int level = 0;
             do {
                 if (f->offset >= f->size)
-                    parse_fail(p, start, "comment starting here has no closing '*/'");
+                    tok_fail(p, start, "comment starting here has no closing '*/'");
                 if (peek_char(f, 0) == '/' && peek_char(f, 1) == '*') {
                     level++;
                     advance(f);
@@ -206,25 +206,25 @@ static void skip_space(Parser *p, SourceFile *f)
     }
 }
 
-int lex_peek_char(Parser *p)
+int tok_peek_char(Parser *p)
 {
     SourceFile *f = &p->files[p->depth - 1];
     skip_space(p, f);
     return peek_char(f, 0);
 }
 
-size_t lex_bytes_left(Parser *p)
+size_t tok_bytes_left(Parser *p)
 {
     const SourceFile *f = &p->files[p->depth - 1];
     return f->size - f->offset;
 }
 
-size_t lex_offset(Parser *p)
+size_t tok_offset(Parser *p)
 {
     return p->files[p->depth - 1].offset;
 }
 
-int lex_skip_semicolon(Parser *p)
+int tok_skip_semicolon(Parser *p)
 {
     SourceFile *f = &p->files[p->depth - 1];
     skip_space(p, f);
@@ -289,7 +289,7 @@ static int decimal_fast(const char *s, size_t len, double *out)
     return 1;
 }
 
-int lex_number_text(const char *b, size_t start, size_t size, size_t *end, double *value)
+int tok_number_text(const char *b, size_t start, size_t size, size_t *end, double *value)
 {
     /* The digits of the common number (no exponent) are gathered as they
      * are scanned, as decimal_fast gathers them, so that it is converted
@@ -349,33 +349,33 @@ static void lex_number(Parser *p, SourceFile *f, Token *t)
 {
     /* A number holds no newline: the column moves once. */
     size_t start = f->offset, end;
-    int ok = lex_number_text(f->buf, start, f->size, &end, &t->number);
+    int ok = tok_number_text(f->buf, start, f->size, &end, &t->number);
     f->col += (int)(end - start);
     f->offset = end;
     t->type = TK_NUMBER;
     t->len = (int)(end - start);
     if (!ok)
-        parse_fail(p, t->pos, "number too long");
+        tok_fail(p, t->pos, "number too long");
 }
 
 /* One punctuation character c (',' '<' '>') as the token scan_token would
  * make of it: '<' and '>' before '=' are another token (<=, >=). */
 static int plain_punct(Parser *p, SourceFile *f, int c)
 {
-    size_t from = f->offset; /* lex_token's count includes the blanks before */
+    size_t from = f->offset; /* tok_lex's count includes the blanks before */
     skip_space(p, f);
     if (peek_char(f, 0) != c || ((c == '<' || c == '>') && peek_char(f, 1) == '='))
         return 0;
     SourcePos pos = here(f);
     advance(f);
-    limits_count_token(p, f, from, pos);
+    tok_limits_count_token(p, f, from, pos);
     return 1;
 }
 
-int lex_plain_vector(Parser *p, int had_angle, double c[3])
+int tok_plain_vector(Parser *p, int had_angle, double c[3])
 {
     SourceFile *f = &p->files[p->depth - 1];
-    LexMark m = lex_mark(p);
+    LexMark m = tok_mark(p);
     if (!had_angle && !plain_punct(p, f, '<'))
         goto unexpected;
     for (int i = 0; i < 3; i++) {
@@ -387,7 +387,7 @@ int lex_plain_vector(Parser *p, int had_angle, double c[3])
         if (ch == '-' || ch == '+') { /* a sign is a token of its own */
             sign = ch == '-' ? -1.0 : 1.0;
             advance(f);
-            limits_count_token(p, f, from, pos);
+            tok_limits_count_token(p, f, from, pos);
             from = f->offset;
             skip_space(p, f);
             pos = here(f);
@@ -398,7 +398,7 @@ int lex_plain_vector(Parser *p, int had_angle, double c[3])
         Token t;
         t.pos = pos;
         lex_number(p, f, &t);
-        limits_count_token(p, f, from, pos);
+        tok_limits_count_token(p, f, from, pos);
         c[i] = sign * t.number;
         if (!isfinite(c[i]))
             goto no; /* 1e309: the general path reports it */
@@ -407,14 +407,14 @@ int lex_plain_vector(Parser *p, int had_angle, double c[3])
     }
     return 1;
 unexpected: {
-    /* The token that is not the plain vector's, read as lex_raw reads it
+    /* The token that is not the plain vector's, read as tok_raw reads it
      * (counted, and failing where it would), so that what the budgets see
      * and report does not depend on which path reads the text. */
     Token t;
-    lex_token(p, f, &t);
+    tok_lex(p, f, &t);
 }
 no:
-    lex_seek(p, m);
+    tok_seek(p, m);
     return 0;
 }
 
@@ -425,7 +425,7 @@ static char **literal_slot(Parser *p, const char *at)
 {
     if ((p->nliterals + 1) * 2 > p->cap_literals) {
         size_t cap = p->cap_literals ? p->cap_literals * 2 : 256;
-        struct Interned *t = tmp_alloc(p, sizeof *t * cap);
+        struct Interned *t = tok_temp_alloc(p, sizeof *t * cap);
         for (size_t i = 0; i < p->cap_literals; i++) {
             if (!p->literals[i].key)
                 continue;
@@ -460,7 +460,7 @@ static void lex_string(Parser *p, SourceFile *f, Token *t)
         n++;
     }
     if (f->offset >= f->size)
-        parse_fail(p, t->pos, "string starting here has no closing '\"'");
+        tok_fail(p, t->pos, "string starting here has no closing '\"'");
     size_t end = f->offset;
     advance(f);
     t->type = TK_STRING;
@@ -469,7 +469,7 @@ static void lex_string(Parser *p, SourceFile *f, Token *t)
         t->string = *cached;
         return;
     }
-    char *s = tmp_alloc(p, n + 1), *o = s;
+    char *s = tok_temp_alloc(p, n + 1), *o = s;
     for (size_t i = start; i < end; i++) {
         char c = f->buf[i];
         if (c == '\\' && i + 1 < end) {
@@ -492,20 +492,20 @@ static void lex_string(Parser *p, SourceFile *f, Token *t)
     *cached = s;
 }
 
-void lex_raw(Parser *p, Token *t)
+void tok_raw(Parser *p, Token *t)
 {
-    lex_token(p, &p->files[p->depth - 1], t);
+    tok_lex(p, &p->files[p->depth - 1], t);
 }
 
 static void scan_token(Parser *p, SourceFile *f, Token *t);
 
-void lex_token(Parser *p, SourceFile *f, Token *t)
+void tok_lex(Parser *p, SourceFile *f, Token *t)
 {
-    if (limits_stack_low(p))
-        limits_stack_exhausted(p, here(f));
+    if (tok_limits_stack_low(p))
+        tok_limits_stack_exhausted(p, here(f));
     size_t from = f->offset;
     scan_token(p, f, t);
-    limits_count_token(p, f, from, t->pos);
+    tok_limits_count_token(p, f, from, t->pos);
 }
 
 /* The blanks and comments, then the token: t. */
@@ -532,10 +532,10 @@ static void scan_token(Parser *p, SourceFile *f, Token *t)
             advance(f);
         size_t len = f->offset - start;
         if (len > 200)
-            parse_fail(p, t->pos, "identifier too long (more than 200 characters)");
+            tok_fail(p, t->pos, "identifier too long (more than 200 characters)");
         t->type = TK_WORD;
         t->len = (int)len;
-        t->kw = keyword_lookup(t->text, t->len);
+        t->kw = tok_keyword_lookup(t->text, t->len);
         return;
     }
     if (c == '"') {
@@ -564,46 +564,46 @@ static void scan_token(Parser *p, SourceFile *f, Token *t)
     };
     if (!is_punctuation[(unsigned char)c]) {
         if (c >= 32 && c < 127)
-            parse_fail(p, t->pos, "unexpected character '%c'", c);
-        parse_fail(p, t->pos, "unexpected byte 0x%02x", (unsigned)c);
+            tok_fail(p, t->pos, "unexpected character '%c'", c);
+        tok_fail(p, t->pos, "unexpected byte 0x%02x", (unsigned)c);
     }
     advance(f);
 }
 
-int lex_next_is_punct(Parser *p, int c)
+int tok_next_is_punct(Parser *p, int c)
 {
     if (p->ungot)
-        return is_punct(&p->tok, c);
-    LexMark m = lex_mark(p);
+        return tok_is_punct(&p->tok, c);
+    LexMark m = tok_mark(p);
     Token t;
-    lex_raw(p, &t);
-    lex_seek(p, m);
-    return is_punct(&t, c);
+    tok_raw(p, &t);
+    tok_seek(p, m);
+    return tok_is_punct(&t, c);
 }
 
-int lex_next_is_brace_and_word(Parser *p, Token *word)
+int tok_next_is_brace_and_word(Parser *p, Token *word)
 {
     if (p->ungot)
         return 0;
-    LexMark m = lex_mark(p);
+    LexMark m = tok_mark(p);
     Token brace;
-    lex_raw(p, &brace);
-    int found = is_punct(&brace, '{');
+    tok_raw(p, &brace);
+    int found = tok_is_punct(&brace, '{');
     if (found) {
-        lex_raw(p, word);
+        tok_raw(p, word);
         found = word->type == TK_WORD;
     }
-    lex_seek(p, m);
+    tok_seek(p, m);
     return found;
 }
 
-int lex_next_is_keyword(Parser *p, int kw)
+int tok_next_is_keyword(Parser *p, int kw)
 {
     if (p->ungot)
         return p->tok.type == TK_WORD && p->tok.kw == kw;
-    LexMark m = lex_mark(p);
+    LexMark m = tok_mark(p);
     Token t;
-    lex_raw(p, &t);
-    lex_seek(p, m);
+    tok_raw(p, &t);
+    tok_seek(p, m);
     return t.type == TK_WORD && t.kw == kw;
 }

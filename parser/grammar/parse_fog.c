@@ -5,7 +5,7 @@
 #include <limits.h>
 #include <math.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
 /* The turbulence settings start from POV-Ray's classic turbulence warp. */
 static void begin_turbulence(SceneFog *fog)
@@ -19,74 +19,74 @@ static void begin_turbulence(SceneFog *fog)
     fog->lambda = 2.0;
 }
 
-void parse_fog(Parser *p, const Token *kw, SceneFog *fog)
+void gram_fog(Parser *p, const Token *kw, SceneFog *fog)
 {
-    begin_block(p, "fog");
+    tok_begin_block(p, "fog");
     fog->type = 1;
     fog->up = (Vec3){ 0.0, 1.0, 0.0 };
     fog->turb_depth = 0.5;
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             break;
         Token at = *t;
         Transform tr;
         transform_identity(&tr);
-        if (is_kw(t, KW_translate)) {
-            (void)parse_vector(p);
-            parse_warning(p, at.pos, "a fog's up vector can't be translated");
+        if (tok_is_kw(t, KW_translate)) {
+            (void)expr_vector(p);
+            tok_warning(p, at.pos, "a fog's up vector can't be translated");
             continue;
         }
-        if (parse_transform_item(p, t, &tr)) {
+        if (expr_transform_item(p, t, &tr)) {
             fog->up = transform_direction(&tr, fog->up);
             continue;
         }
-        if (token_starts_colour(p, t)) {
-            unget(p);
-            parse_colour(p, &fog->colour, 1);
+        if (expr_starts_colour(p, t)) {
+            tok_unget(p);
+            expr_colour(p, &fog->colour, 1);
             continue;
         }
         switch (t->type == TK_WORD ? t->kw : -1) {
-        case KW_distance: fog->distance = parse_float(p); continue;
+        case KW_distance: fog->distance = expr_float(p); continue;
         case KW_fog_type: {
             /* POV-Ray warns of a type it does not know and goes on */
-            if (!int_from_double(parse_float(p), INT_MIN, INT_MAX, &fog->type))
+            if (!int_from_double(expr_float(p), INT_MIN, INT_MAX, &fog->type))
                 fog->type = 0;
             if (fog->type < 1 || fog->type > 2) {
-                parse_warning(p, at.pos, "unknown fog type");
+                tok_warning(p, at.pos, "unknown fog type");
             }
             continue;
         }
-        case KW_fog_alt: fog->alt = parse_float(p); continue;
-        case KW_fog_offset: fog->offset = parse_float(p); continue;
-        case KW_turb_depth: fog->turb_depth = (float)parse_float(p); continue;
-        case KW_up: fog->up = parse_vector(p); continue;
+        case KW_fog_alt: fog->alt = expr_float(p); continue;
+        case KW_fog_offset: fog->offset = expr_float(p); continue;
+        case KW_turb_depth: fog->turb_depth = (float)expr_float(p); continue;
+        case KW_up: fog->up = expr_vector(p); continue;
         case KW_turbulence:
             begin_turbulence(fog);
-            fog->turbulence = parse_vector(p);
+            fog->turbulence = expr_vector(p);
             continue;
         case KW_octaves: {
             begin_turbulence(fog);
-            fog->octaves = int_clamped(parse_float(p), 1, 10); /* POV-Ray's limits */
+            fog->octaves = int_clamped(expr_float(p), 1, 10); /* POV-Ray's limits */
             continue;
         }
-        case KW_omega: begin_turbulence(fog); fog->omega = (float)parse_float(p); continue;
-        case KW_lambda: begin_turbulence(fog); fog->lambda = (float)parse_float(p); continue;
+        case KW_omega: begin_turbulence(fog); fog->omega = (float)expr_float(p); continue;
+        case KW_lambda: begin_turbulence(fog); fog->lambda = (float)expr_float(p); continue;
         default: break;
         }
-        if (token_starts_float(p, t)) {
-            unget(p);
-            fog->distance = parse_float(p);
-            parse_warning(p, at.pos, "should use distance keyword");
+        if (expr_starts_float(p, t)) {
+            tok_unget(p);
+            fog->distance = expr_float(p);
+            tok_warning(p, at.pos, "should use distance keyword");
             continue;
         }
         if (t->type == TK_WORD && t->kw >= 0)
-            unsupported(p, t);
-        fail_expected(p, t, "a fog item or '}' in 'fog'");
+            tok_unsupported(p, t);
+        tok_fail_expected(p, t, "a fog item or '}' in 'fog'");
     }
     double len = sqrt(fog->up.x * fog->up.x + fog->up.y * fog->up.y + fog->up.z * fog->up.z);
     if (len > 0.0)
         fog->up = (Vec3){ fog->up.x / len, fog->up.y / len, fog->up.z / len };
-    if (p->media_attenuation_seen)
-        approximate(p, kw, APPROX_FOG, &p->global_approx);
+    if (p->gram->media_attenuation_seen)
+        tok_approximate(p, kw, APPROX_FOG, &p->gram->global_approx);
 }

@@ -9,7 +9,7 @@ static const char *const keyword_names[KW_COUNT] = {
 #undef KW
 };
 
-int keyword_lookup(const char *s, int len)
+int tok_keyword_lookup(const char *s, int len)
 {
     int lo = 0, hi = KW_COUNT - 1;
     while (lo <= hi) {
@@ -28,7 +28,7 @@ int keyword_lookup(const char *s, int len)
     return -1;
 }
 
-const char *keyword_name(int kw)
+const char *tok_keyword_name(int kw)
 {
     return kw >= 0 && kw < KW_COUNT ? keyword_names[kw] : "?";
 }

@@ -1,13 +1,17 @@
-/* State shared by the parser's files: tokens, the include stack, values and
- * symbols, and the Parser itself.
+/* The token stream, the lowest of the parser's three parts (as Lua's llex
+ * under lparser and lcode): the lexer, #directives, macros, symbols and
+ * their values, arrays, #fopen's files, the files read, the limits of a
+ * parse, and the Parser itself with its errors and memory. The expression
+ * evaluator (parser/expressions) and the scene grammar (parser/grammar)
+ * are above it; it reaches them through TokHooks only.
  *
- * Error handling: every error calls parse_fail(), which fills the ParseError
+ * Error handling: every error calls tok_fail(), which fills the ParseError
  * and longjmps back to the public entry point. Nothing the parser allocates
  * is owned by the C stack: scene data lives in the scene's arena, everything
  * temporary (file buffers, symbols, growing arrays) in `p->temp`, so an error
  * anywhere leaks nothing. */
-#ifndef HST_PARSER_INTERNAL_H
-#define HST_PARSER_INTERNAL_H
+#ifndef HST_TOKENS_H
+#define HST_TOKENS_H
 
 #include <setjmp.h>
 #include <stdio.h>
@@ -39,7 +43,7 @@ typedef struct {
     int len;
     char *string;     /* TK_STRING: contents with escapes resolved */
     SourcePos pos;
-    /* An array element `A[i][j]` (next() reads the indices): the element,
+    /* An array element `A[i][j]` (tok_next() reads the indices): the element,
      * which may still hold no value. text/len span the whole `A[i][j]`. */
     struct Symbol *elem;
     unsigned elem_serial; /* elem's serial then: it changes if the array is recycled */
@@ -173,7 +177,7 @@ typedef struct {
 typedef struct Symbol {
     struct Symbol *next;       /* in its hash bucket */
     struct Symbol *scope_next; /* the symbols of the same level */
-    const char *name; /* interned (intern_name) */
+    const char *name; /* interned (tok_intern_name) */
     int level; /* 0: global; each include file and macro call opens one more */
     unsigned serial; /* changes when the symbol is freed, so aliases notice */
     /* A macro parameter passed by reference: the caller's symbol, which
@@ -212,7 +216,7 @@ typedef struct {
     void *data;
     int n, cap;
     size_t elem;
-    int in_scene;   /* data is in the scene's arena (tvec_reserve_kept), until it grows */
+    int in_scene;   /* data is in the scene's arena (tok_tvec_reserve_kept), until it grows */
 } TempVec;
 
 /* An entry of the parser's open-addressing tables (literals, names). */
@@ -233,6 +237,29 @@ struct Interned {
 #define MAX_REPEATED_TOKENS 20000000L
 #define MAX_NESTING 200
 
+/* What the token stream needs from the parts above it, whose headers it
+ * does not include (parser/expressions, parser/grammar): #if's condition,
+ * #for's bounds, #switch's value, an array's indices, a macro's arguments,
+ * #declare, #default, #version's gamma mode, #read and #write's values.
+ * The grammar fills them in when a parse starts (parse_scene.c), so that
+ * the dependencies of the parser's parts go one way: grammar, expressions,
+ * tokens, each using only the ones after it. */
+struct Parser;
+typedef struct {
+    void (*expression)(struct Parser *p, double e[5], int *terms);
+    double (*number)(struct Parser *p);      /* a float */
+    double (*number_full)(struct Parser *p); /* a float, comparisons allowed */
+    char *(*string)(struct Parser *p);
+    int (*starts_float)(struct Parser *p, const Token *t);
+    int (*starts_expression)(struct Parser *p, const Token *t);
+    int (*starts_string)(struct Parser *p, const Token *t);
+    /* Any value: unsupported things become VAL_UNSUPPORTED. */
+    Value (*value)(struct Parser *p);
+    void (*declare)(struct Parser *p, const Token *hash, int local);
+    void (*default_directive)(struct Parser *p);
+    void (*version_seen)(struct Parser *p);
+} TokHooks;
+
 typedef struct Parser {
     Scene *scene;
     Arena *arena; /* the scene's */
@@ -240,6 +267,7 @@ typedef struct Parser {
     const ParseOptions *opts;
     ParseError *err;
     jmp_buf fail;
+    const TokHooks *hooks; /* the parts above (TokHooks) */
 
     SourceFile *files; /* grown on demand up to MAX_SOURCE_FRAMES */
     int depth;         /* number of open frames (files and macro bodies) */
@@ -247,15 +275,13 @@ typedef struct Parser {
     int include_depth, macro_depth;
     int no_macro_calls; /* >0: identifiers are names (#declare X, #ifdef (X)) */
 
-    Token tok;      /* the last token next() returned */
-    int ungot;      /* next() returns tok again */
+    Token tok;      /* the last token tok_next() returned */
+    int ungot;      /* tok_next() returns tok again */
     int brace_depth;
     SourcePos last_pos;
 
     SymbolTable symbols;
     TempVec controls; /* of Control */
-    TempVec fogs;     /* of SceneFog, in file order */
-    int media_attenuation_seen; /* a light_source asked for media_attenuation */
     /* limits.c: the work done so far, and its budgets */
     long loop_iterations, macro_calls, repeated_tokens;
     long max_loop_iterations, max_macro_calls, max_repeated_tokens;
@@ -267,9 +293,6 @@ typedef struct Parser {
     int debug_line_open; /* #debug text on stderr does not end in a newline */
     int gamma_set;
     double assumed_gamma; /* 0 with gamma_set: srgb */
-    /* POV-Ray's gammaMode while parsing (image_gamma.c) */
-    enum { GAMMA_MODE_NONE, GAMMA_MODE_37_IMPLIED, GAMMA_MODE_36, GAMMA_MODE_37 } gamma_mode;
-    int default_changed;  /* #default was used */
 
     /* limits.c: the lowest stack address a token may be read at, and the
      * levels of expressions and objects open (MAX_NESTING at most). */
@@ -308,76 +331,77 @@ typedef struct Parser {
     struct UserFile *free_user_files; /* closed, forgotten: for the next #fopen */
     int poison_strict;
 
-    const ApproxNote *global_approx; /* global_settings: radiosity, photons */
-    TempVec objects; /* of SceneObject *, top level */
-    TempVec lights;  /* of SceneLight */
+    /* The grammar's own state, which the token stream and the evaluator
+     * never read (GramState in parser/grammar/grammar.h). */
+    struct GramState *gram;
 } Parser;
 
-/* errors (parse_scene.c) */
+/* errors (errors.c) */
 #if defined(__GNUC__)
 #define HST_PRINTF(a, b) __attribute__((format(printf, a, b)))
 #else
 #define HST_PRINTF(a, b)
 #endif
-_Noreturn void parse_fail(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
+_Noreturn void tok_fail(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
 /* in copied to out (size bytes with the NUL) with every byte that is not
  * part of printable UTF-8 (controls, DEL, C1, malformed sequences) shown
  * as \xNN, except the characters in `keep` (NULL: none); cut short at a
  * whole character. Messages, warnings and #debug text go through it, so
  * that no byte of a scene reaches the terminal raw. Returns the length. */
-size_t text_escape(char *out, size_t size, const char *in, const char *keep);
+size_t tok_text_escape(char *out, size_t size, const char *in, const char *keep);
 /* A file's name as messages show it (escaped; the scene arena). */
-const char *display_name(Parser *p, const char *path);
+const char *tok_display_name(Parser *p, const char *path);
 /* Ends the line of #debug text on stderr, if the scene left one open, so
  * that the next message (a warning, the error) starts a line of its own. */
-void debug_end_line(Parser *p);
+void tok_debug_end_line(Parser *p);
 /* FILE:LINE:COLUMN: warning: MSG on stderr, on a line of its own. */
-void parse_warning(Parser *p, SourcePos pos, const char *msg);
-_Noreturn void parse_fail_io(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
+void tok_warning(Parser *p, SourcePos pos, const char *msg);
+_Noreturn void tok_fail_io(Parser *p, SourcePos pos, const char *fmt, ...) HST_PRINTF(3, 4);
 /* "expected X after Y, found Z" at the found token. */
-_Noreturn void fail_expected(Parser *p, const Token *found, const char *what);
+_Noreturn void tok_fail_expected(Parser *p, const Token *found, const char *what);
 /* An unsupported keyword at `t`: an error, or VAL_UNSUPPORTED in a #declare. */
-_Noreturn void unsupported(Parser *p, const Token *t);
+_Noreturn void tok_unsupported(Parser *p, const Token *t);
 /* A feature at `t` that hstrace approximates (an ApproxKind): a note added
  * to *notes; with --strict an error (in a #declare: a poisoned value). */
-void approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes);
+void tok_approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes);
 /* Use of an identifier holding an unsupported declaration. */
-_Noreturn void use_unsupported(Parser *p, const Token *t, const Value *v);
+_Noreturn void tok_use_unsupported(Parser *p, const Token *t, const Value *v);
 /* In a declaration: remember the first unsupported thing of an expression
  * and skip its `(arguments)`; returns 0 outside declarations. */
-int defer_unsupported(Parser *p, const char *what, SourcePos at);
-void *palloc(Parser *p, size_t size);       /* scene arena, checked */
-void *tmp_alloc(Parser *p, size_t size);    /* temporary arena, checked */
-char *tmp_strndup(Parser *p, const char *s, size_t n);
-void tvec_init(TempVec *v, size_t elem);
-void *tvec_push(Parser *p, TempVec *v); /* returns the new zeroed slot */
+int tok_defer_unsupported(Parser *p, const char *what, SourcePos at);
+/* How messages name a token: its spelling or its string, cut short, or
+ * "the end of the file" (the temporary arena). */
+const char *tok_describe(Parser *p, const Token *t);
+
+/* memory (memory.c) */
+void *tok_scene_alloc(Parser *p, size_t size);       /* scene arena, checked */
+void *tok_temp_alloc(Parser *p, size_t size);    /* temporary arena, checked */
+char *tok_temp_strndup(Parser *p, const char *s, size_t n);
+void tok_tvec_init(TempVec *v, size_t elem);
+void *tok_tvec_push(Parser *p, TempVec *v); /* returns the new zeroed slot */
 /* Room for n elements in all, made at once: a list whose count is written
  * first (mesh2's) then grows in one step, not by doubling (each doubling
  * copies the list and leaves the old copy in the arena). */
-void tvec_reserve(Parser *p, TempVec *v, int n);
-/* tvec_reserve in the scene's arena: a list that is kept as it is read
- * (mesh2's) is then not copied at its end (tvec_kept). */
-void tvec_reserve_kept(Parser *p, TempVec *v, int n);
+void tok_tvec_reserve(Parser *p, TempVec *v, int n);
+/* tok_tvec_reserve in the scene's arena: a list that is kept as it is read
+ * (mesh2's) is then not copied at its end (tok_tvec_kept). */
+void tok_tvec_reserve_kept(Parser *p, TempVec *v, int n);
 /* The elements in the scene's arena: the list's own (no copy) where
- * tvec_reserve_kept made its room and it did not grow beyond, else a copy. */
-void *tvec_kept(Parser *p, const TempVec *v);
+ * tok_tvec_reserve_kept made its room and it did not grow beyond, else a copy. */
+void *tok_tvec_kept(Parser *p, const TempVec *v);
 /* The elements as a copy in the scene's arena (they outlive the parse). */
-void *tvec_keep(Parser *p, const TempVec *v);
-/* A value as POV-Ray stores it in a float (SNGL): map values, frequency,
- * phase, bump_size ... land where POV-Ray's do. */
-static inline double single(double v) { return (double)(float)v; }
-const char *describe_token(Parser *p, const Token *t);
+void *tok_tvec_keep(Parser *p, const TempVec *v);
 
 /* limits.c: the guards on what a scene may use while it is parsed. */
 /* Notes how far down this thread's stack may go (the parse's entry). */
-void limits_init_stack(Parser *p);
-_Noreturn void limits_stack_exhausted(Parser *p, SourcePos pos);
-/* Every token is read after this check (lex_token), so every level of
+void tok_limits_init_stack(Parser *p);
+_Noreturn void tok_limits_stack_exhausted(Parser *p, SourcePos pos);
+/* Every token is read after this check (tok_lex), so every level of
  * every recursion of the parser meets it: true when the stack left below
  * the caller is down to the reserve, and the parse must stop with
- * limits_stack_exhausted. (Stacks grow down on every machine hstrace
+ * tok_limits_stack_exhausted. (Stacks grow down on every machine hstrace
  * builds for.) */
-static inline int limits_stack_low(const Parser *p)
+static inline int tok_limits_stack_low(const Parser *p)
 {
 #if defined(__GNUC__)
     const char *here = __builtin_frame_address(0);
@@ -387,42 +411,42 @@ static inline int limits_stack_low(const Parser *p)
 #endif
     return here < p->stack_floor;
 }
-/* The budgets of time and work (limits.c). lex_token counts every token
+/* The budgets of time and work (limits.c). tok_lex counts every token
  * read from text read before (a long one as several) and looks at the
  * clock now and then; loops count their iterations, macro calls
  * themselves. */
-void limits_init_work(Parser *p);
-_Noreturn void limits_work_exhausted(Parser *p, SourcePos pos, const char *what);
-void limits_check_time(Parser *p, SourcePos pos);
-void limits_count_iteration(Parser *p, SourcePos loop);
-void limits_count_call(Parser *p, SourcePos call, const char *macro);
+void tok_limits_init_work(Parser *p);
+_Noreturn void tok_limits_work_exhausted(Parser *p, SourcePos pos, const char *what);
+void tok_limits_check_time(Parser *p, SourcePos pos);
+void tok_limits_count_iteration(Parser *p, SourcePos loop);
+void tok_limits_count_call(Parser *p, SourcePos call, const char *macro);
 /* A token was read from offset `from` to f->offset (blanks and comments
  * before it included). Read again, it counts one, and one more for every 16
  * bytes it spans, so that long strings and comments in a loop count what
  * they cost. */
-static inline void limits_count_token(Parser *p, const SourceFile *f, size_t from, SourcePos pos)
+static inline void tok_limits_count_token(Parser *p, const SourceFile *f, size_t from, SourcePos pos)
 {
     if (from < f->repeated_to) {
         p->repeated_tokens += 1 + (long)((f->offset - from) >> 4);
         if (p->repeated_tokens > p->max_repeated_tokens)
-            limits_work_exhausted(p, pos, "tokens");
+            tok_limits_work_exhausted(p, pos, "tokens");
     }
     if ((++p->tokens_read & 4095u) == 0 && p->deadline > 0.0)
-        limits_check_time(p, pos);
+        tok_limits_check_time(p, pos);
 }
 /* One more level of an expression or an object (MAX_NESTING at most). */
-int nesting_enter(Parser *p, const Token *t);
-void nesting_leave(Parser *p);
+int tok_nesting_enter(Parser *p, const Token *t);
+void tok_nesting_leave(Parser *p);
 
 /* The budget of ParseOptions.max_memory for the parse's arenas. */
-void limits_init_memory(Parser *p);
+void tok_limits_init_memory(Parser *p);
 /* The memory the parse may still take from its budget. */
-size_t limits_memory_left(const Parser *p);
+size_t tok_limits_memory_left(const Parser *p);
 /* "out of memory", or, when the budget ran out, the budget's message. */
-_Noreturn void parse_fail_memory(Parser *p, SourcePos pos);
-/* The budget's message for what would need more than limits_memory_left,
+_Noreturn void tok_fail_memory(Parser *p, SourcePos pos);
+/* The budget's message for what would need more than tok_limits_memory_left,
  * found before it is asked for. */
-_Noreturn void limits_over_budget(Parser *p, SourcePos pos);
+_Noreturn void tok_limits_over_budget(Parser *p, SourcePos pos);
 
 /* readfile.c: a file's text, read whole (see there). */
 typedef struct {
@@ -432,44 +456,44 @@ typedef struct {
     const char *dir;  /* its folder, searched first by its #includes */
     int again;        /* read before: its text counts as repeated text */
 } SourceText;
-void source_files_init(Parser *p);
+void tok_source_files_init(Parser *p);
 /* Reads path whole: 1 and *out; 0 when it cannot be opened (errno says
  * why, the caller words the message). What is no regular file, a read
  * error, a zero byte in the text or a file beyond the memory budget are
  * errors at `at`. */
-int source_read(Parser *p, const char *path, SourcePos at, SourceText *out);
+int tok_source_read(Parser *p, const char *path, SourcePos at, SourceText *out);
 /* The same for dir/name ("." : name as it is). */
-int source_read_in(Parser *p, const char *dir, const char *name, SourcePos at, SourceText *out);
+int tok_source_read_in(Parser *p, const char *dir, const char *name, SourcePos at, SourceText *out);
 
 /* lexer.c */
-void lex_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at);
-/* A file read by source_read, on top of the include stack. */
-void lex_open_source(Parser *p, const SourceText *s, SourcePos at);
-void lex_open_macro(Parser *p, const Macro *m, SourcePos called_at);
-int lex_peek_char(Parser *p); /* the next character after blanks, or -1 */
-size_t lex_offset(Parser *p);
+void tok_open_buffer(Parser *p, const char *name, const char *buf, size_t size, SourcePos at);
+/* A file read by tok_source_read, on top of the include stack. */
+void tok_open_source(Parser *p, const SourceText *s, SourcePos at);
+void tok_open_macro(Parser *p, const Macro *m, SourcePos called_at);
+int tok_peek_char(Parser *p); /* the next character after blanks, or -1 */
+size_t tok_offset(Parser *p);
 /* The folders a relative #include (and #fopen ... read) name is looked
  * for in, in order: the current file's, then each include folder. */
-int lex_search_dirs(Parser *p, const char **dirs, int cap);
-void lex_raw(Parser *p, Token *t); /* TK_EOF at the end of the current file */
+int tok_search_dirs(Parser *p, const char **dirs, int cap);
+void tok_raw(Parser *p, Token *t); /* TK_EOF at the end of the current file */
 /* The next token of f, which need not be on the include stack (#read's
  * data is written in the scene language's tokens). */
-void lex_token(Parser *p, SourceFile *f, Token *t);
-LexMark lex_mark(Parser *p);
-void lex_seek(Parser *p, LexMark m);
+void tok_lex(Parser *p, SourceFile *f, Token *t);
+LexMark tok_mark(Parser *p);
+void tok_seek(Parser *p, LexMark m);
 /* A vector of three plain numbers, `<1, -2.5, 3e2>`, read straight from
- * the text (the '<' already read when had_angle): the tokens lex_raw would
+ * the text (the '<' already read when had_angle): the tokens tok_raw would
  * read, counted as it counts them, and the same numbers, without making
  * them tokens. Returns 1 positioned after the '>' (what follows is not
  * looked at), or 0 positioned where it started (the text is something
  * else: the caller reads it by the general path). */
-int lex_plain_vector(Parser *p, int had_angle, double c[3]);
+int tok_plain_vector(Parser *p, int had_angle, double c[3]);
 /* The bytes of the current file (or macro) after the lexer's position. */
-size_t lex_bytes_left(Parser *p);
+size_t tok_bytes_left(Parser *p);
 /* The number whose text starts at b[start] (a digit, or '.' and a digit),
  * as the lexer reads it: its end in *end, its value in *value. Returns 0
  * when the text is too long to convert (an error at the number). */
-int lex_number_text(const char *b, size_t start, size_t size, size_t *end, double *value);
+int tok_number_text(const char *b, size_t start, size_t size, size_t *end, double *value);
 /* plain_lists.c: the n items of a long list of plain vectors, `<1, -2.5,
  * 3e2>` with optional commas between, read on ParseOptions.threads threads
  * into out (vertex_vectors) or, with faces, as faces' vertex indices below
@@ -478,227 +502,90 @@ int lex_number_text(const char *b, size_t start, size_t size, size_t *end, doubl
  * started, when the text is anything else (a comment, an identifier, an
  * index out of range, more or fewer than n vectors ...): the caller reads
  * it item by item, which reports what is wrong. */
-int lex_plain_vector_list(Parser *p, int n, Vec3 *out, MeshFace *faces, int nvertices);
-int lex_skip_semicolon(Parser *p); /* consume a ';' if it comes next */
+int tok_plain_vector_list(Parser *p, int n, Vec3 *out, MeshFace *faces, int nvertices);
+int tok_skip_semicolon(Parser *p); /* consume a ';' if it comes next */
 /* Whether the next token is keyword kw, looking at the raw text so that no
  * directive is carried out early (the current #declare is not stored yet). */
-int lex_next_is_keyword(Parser *p, int kw);
-int lex_next_is_punct(Parser *p, int c); /* the same for punctuation */
+int tok_next_is_keyword(Parser *p, int kw);
+int tok_next_is_punct(Parser *p, int c); /* the same for punctuation */
 /* Whether the raw text goes on with '{' and a word (keyword or identifier),
  * which is then in `word`; nothing is consumed. */
-int lex_next_is_brace_and_word(Parser *p, Token *word);
-const char *dir_of(Parser *p, const char *path);
+int tok_next_is_brace_and_word(Parser *p, Token *word);
+const char *tok_dir_of(Parser *p, const char *path);
 
 /* directives.c: the token stream after #directives */
-Token *next(Parser *p);
-void unget(Parser *p);
-Token *peek(Parser *p);
-int is_punct(const Token *t, int c);
-int is_kw(const Token *t, int kw);
-void expect_punct(Parser *p, int c, const char *after);
-void begin_block(Parser *p, const char *after); /* '{' after `after` */
-void skip_block_body(Parser *p);                /* after '{': to its '}' */
-void skip_balanced_group(Parser *p, const Token *open);
+Token *tok_next(Parser *p);
+void tok_unget(Parser *p);
+Token *tok_peek(Parser *p);
+int tok_is_punct(const Token *t, int c);
+int tok_is_kw(const Token *t, int kw);
+void tok_expect_punct(Parser *p, int c, const char *after);
+void tok_begin_block(Parser *p, const char *after); /* '{' after `after` */
+void tok_skip_block_body(Parser *p);                /* after '{': to its '}' */
+void tok_skip_balanced_group(Parser *p, const Token *open);
 /* A name, not expanded as a macro call: #declare X, #ifdef (X), ... */
-Token *next_name(Parser *p);
+Token *tok_next_name(Parser *p);
 
 /* symbols.c */
-void symbols_init(Parser *p);
+void tok_symbols_init(Parser *p);
 /* The one copy of a name (temporary arena): the same spelling, the same
  * pointer, so that symbols made again and again cost their name once. */
-const char *intern_name(Parser *p, const char *name, int len);
+const char *tok_intern_name(Parser *p, const char *name, int len);
 /* The innermost visible symbol (an alias resolved to its target). */
-Symbol *symbol_find(Parser *p, const char *name, int len);
-/* The symbol a token names: an array element, else symbol_find(); fails on
+Symbol *tok_symbol_find(Parser *p, const char *name, int len);
+/* The symbol a token names: an array element, else tok_symbol_find(); fails on
  * an element that has no value yet. NULL when the name is undeclared. */
-Symbol *token_symbol(Parser *p, const Token *t);
+Symbol *tok_symbol_of(Parser *p, const Token *t);
 /* #declare (local 0) / #local (1) as POV-Ray does it: an existing visible
  * identifier (#local: of the current level) is overwritten in place, through
  * a by-reference macro parameter to the caller's; else a new one is made at
  * the global (#declare) or current (#local) level. */
-void symbol_set(Parser *p, const char *name, int len, int local, const Value *v);
+void tok_symbol_set(Parser *p, const char *name, int len, int local, const Value *v);
 /* A new symbol at the current level, hiding outer ones (macro parameters). */
-Symbol *symbol_add_local(Parser *p, const char *name, int len, const Value *v);
-void symbol_define_global(Parser *p, const char *name, int len, const Value *v);
-void symbol_undef(Parser *p, const char *name, int len);
-void symbols_push_scope(Parser *p);
-void symbols_pop_scope(Parser *p);
-
-/* expr.c */
-void parse_express(Parser *p, double e[5], int *terms);
-void parse_rel_factor(Parser *p, double e[5], int *terms);
-double parse_float(Parser *p);
-double parse_float_full(Parser *p); /* comparisons allowed */
-/* v, read at `at`, as an integer of [lo, hi], truncated toward zero as
- * POV-Ray's casts do; NaN, infinities and values outside the range are an
- * error there: "WHAT must be an integer from LO to HI, not V". */
-int checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *what);
-Vec3 parse_vector(Parser *p);
-Vec3 parse_scale_vector(Parser *p);
-void parse_colour(Parser *p, Colour *c, int expect_ft);
-int token_starts_colour(Parser *p, const Token *t);
-int token_starts_float(Parser *p, const Token *t);
-int token_starts_expression(Parser *p, const Token *t);
-int token_starts_string(Parser *p, const Token *t);
-char *parse_string(Parser *p);
-void parse_comma(Parser *p); /* an optional ',' */
-/* translate/rotate/scale/matrix/transform at t (already read): composes
- * into tr and returns 1, or returns 0 when t is no transform. */
-int parse_transform_item(Parser *p, const Token *t, Transform *tr);
-void parse_transform_block(Parser *p, Transform *tr); /* after 'transform' */
-
-/* parse_texture.c */
-SceneTexture *new_default_texture(Parser *p);
-SceneTexture *parse_texture(Parser *p);   /* after 'texture' */
-void parse_pigment(Parser *p, Pigment *pig); /* after 'pigment' */
-void parse_finish(Parser *p, Finish *f);  /* after 'finish' */
-void parse_interior(Parser *p, Interior *in); /* after 'interior' */
-/* After 'material': POV-Ray's Parse_Material on *tex and *in (an object's
- * texture and interior so far, or NULL): a material identifier first, then
- * textures layered on, interiors, and transforms, which move the texture
- * (not the object). at: the 'material' keyword. */
-void parse_material(Parser *p, const SceneTexture **tex, const Interior **in, const Token *at);
-void skip_normal(Parser *p);              /* after 'normal' */
-/* The identifier at t when it holds `kind` (NULL when t is none; an error
- * for an identifier of another kind). */
-const Value *block_identifier(Parser *p, const Token *t, ValueKind kind, const char *block);
-/* How hstrace treats a pattern keyword in a pigment. */
-typedef enum { PAT_NONE, PAT_EVALUATED, PAT_APPROXIMATED, PAT_UNSUPPORTED } PatternSupport;
-PatternSupport pattern_support(int kw);
-/* An evaluated pattern at its keyword kw (read): its kind and arguments,
- * frequency, phase and wave at POV-Ray's defaults. */
-void start_pattern(Parser *p, Pigment *pig, int kw);
-/* frequency, phase, waves, turbulence, warp, noise_generator ... at t
- * (read): 1 when it was one, its arguments read. */
-int pattern_modifier_item(Parser *p, Pigment *pig, const Token *t);
-int pattern_modifier(int kw);     /* a modifier of patterns hstrace does not evaluate */
-void skip_arguments(Parser *p);   /* such a keyword's arguments */
-/* POV-Ray's Check_Turb: the turbulence `turbulence`, `octaves` ... change. */
-PatternTurbulence *classic_turbulence(Parser *p, Pigment *pig);
-int octaves_value(double v);
-void parse_warp(Parser *p, Pigment *pig, const Token *at); /* after 'warp' */
-/* A blend map's next entry: 0 at its '}', else 1 after '[' and the value. */
-int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int optional, double *value);
-/* After a map's '{': a declared map of `kind` and the '}' after it (POV-Ray
- * takes one identifier in place of the entries), or NULL. */
-const Value *map_identifier(Parser *p, ValueKind kind, const char *map);
-/* The maps after their keyword `at` (read), into a pigment, a patterned
- * texture or a normal; also what #declare reads for a declared map. */
-void parse_colour_map(Parser *p, Pigment *pig);
-void parse_pigment_map(Parser *p, Pigment *pig, const Token *at);
-void parse_texture_map(Parser *p, SceneTexture *tex, const Token *at);
-void parse_normal_map(Parser *p, SceneNormal *n, int average);
-void parse_slope_map(Parser *p, SceneNormal *n);
-/* A picture of image_map, bump_map or material_map (`block`), after its
- * '{', into pig; the picture, the parse's own (a colour-mapped one's
- * entries are the image_map's to change). */
-SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct);
-int image_interpolation(Parser *p, const Token *at); /* after 'interpolate' */
-int image_map_type(Parser *p, const Token *at);      /* after 'map_type': its value */
-
-/* parse_normal.c */
-/* After 'normal' (kw): the normal `from` (NULL: the default texture's)
- * modified by the block. need_pattern: a normal that ends up with no
- * pattern is an error (POV-Ray's "No normal type given." for what objects
- * use; #default and #declare may leave the pattern to later blocks). */
-const SceneNormal *parse_normal(Parser *p, const SceneNormal *from, const Token *kw, int need_pattern);
-/* A copy moved by tr (pattern space to texture space, then tr), as a
- * texture's transforms move its normal; a uv-mapped normal stays. */
-const SceneNormal *normal_transformed(Parser *p, const SceneNormal *n, const Transform *tr);
-/* The normal seen at the surface's (u, v, 0): an object's uv_mapping. */
-const SceneNormal *normal_uv_mapped(Parser *p, const SceneNormal *n);
-/* A texture seen at the surface's (u, v, 0), as an object's uv_mapping
- * makes every texture of it and `texture { uv_mapping ... }` makes its own:
- * its own transforms still place it, the object's and outer textures' do
- * not move it (POV-Ray's UV_FLAG and uv_mapping pattern); parse_objects.c */
-const SceneTexture *texture_uv_mapped(Parser *p, const SceneTexture *tex);
-/* A layer `top` over `below` (both copied): one texture, see parse_texture.c. */
-SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at);
-/* sky_sphere { pigment {...} ... transforms } after 'sky_sphere'. */
-void parse_sky_sphere(Parser *p, SkySphere *sky);
-
-/* parse_fog.c: fog { ... } after 'fog' */
-void parse_fog(Parser *p, const Token *kw, SceneFog *fog);
-
-/* parse_objects.c */
-int is_object_keyword(int kw);
-/* An object or light starting at t (already read); returns 1 and fills one
- * of *obj / *light, or 0 when t starts no object. */
-int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light);
-
-/* parse_camera.c */
-void parse_camera(Parser *p, const Token *t, SceneCamera *cam);
-void default_camera(SceneCamera *cam);
-SceneLight *parse_light_source(Parser *p, const Token *t);
-void transform_light(SceneLight *l, const Transform *tr);
-/* A top-level union: its light_sources (and its inner unions') go to the
- * scene's lights with the transforms above them applied. */
-void instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth);
+Symbol *tok_symbol_add_local(Parser *p, const char *name, int len, const Value *v);
+void tok_symbol_define_global(Parser *p, const char *name, int len, const Value *v);
+void tok_symbol_undef(Parser *p, const char *name, int len);
+void tok_push_scope(Parser *p);
+void tok_pop_scope(Parser *p);
 
 /* macros.c */
-void macro_define(Parser *p, const Token *hash); /* after '#macro' */
-void macro_invoke(Parser *p, const Token *call, const Macro *m); /* after the name */
-void macro_return(Parser *p);
-void macro_skip_body(Parser *p, SourcePos from); /* directives.c: to the #end */
+void tok_macro_define(Parser *p, const Token *hash); /* after '#macro' */
+void tok_macro_invoke(Parser *p, const Token *call, const Macro *m); /* after the name */
+void tok_macro_return(Parser *p);
+void tok_macro_skip_body(Parser *p, SourcePos from); /* directives.c: to the #end */
 
 /* arrays.c */
-Value parse_array(Parser *p, const Token *kw); /* after 'array' */
-/* next() read the name of array s and '[' follows: read the indices and
+Value tok_array_value(Parser *p, const Token *kw); /* after 'array' */
+/* tok_next() read the name of array s and '[' follows: read the indices and
  * make p->tok that element. */
-void read_array_element(Parser *p, Symbol *s);
-double array_function(Parser *p, const Token *t); /* dimensions, dimension_size */
+void tok_array_element(Parser *p, Symbol *s);
+double tok_array_function(Parser *p, const Token *t); /* dimensions, dimension_size */
 /* The value a symbol or an array element held is given up (it gets
  * another value, or the symbol goes away): an array in it, and the arrays
  * in its elements, are kept for reuse. Every array belongs to one symbol
- * or element, since reading an array's name copies it (copy_value); an
+ * or element, since reading an array's name copies it (gram_copy_value); an
  * element's serial changes, so tokens and by-reference parameters that
  * still point into it notice. Anything else in the value stays where it
  * is (the arenas). */
-void value_give_up(Parser *p, Value *v);
+void tok_value_give_up(Parser *p, Value *v);
 /* An array of `count` elements, all without a value: a recycled one when
  * one fits, else new (temporary arena). */
-ArrayValue *array_new(Parser *p, long count);
+ArrayValue *tok_array_new(Parser *p, long count);
 /* A token's array element, or NULL when its array no longer exists: the
  * right side of `#declare A[i] = ...` may have declared A anew. POV-Ray
  * renders such a scene; the value then goes into the array that was
  * replaced, which nothing can read any more: it is given up. */
-Symbol *token_element(const Token *t);
+Symbol *tok_element_of(const Token *t);
 /* fileio.c: #fopen, #fclose, #read, #write (after the keyword) */
-void directive_fopen(Parser *p, const Token *hash);
-void directive_fclose(Parser *p);
-void directive_read(Parser *p);
-void directive_write(Parser *p);
+void tok_fopen(Parser *p, const Token *hash);
+void tok_fclose(Parser *p);
+void tok_read(Parser *p);
+void tok_write(Parser *p);
 /* Closes every file still open. With `report`, a failed close (a write
  * error, e.g. a full disk) is an I/O error; without, errors are ignored
  * (the parse is already failing). */
-void user_files_close_all(Parser *p, int report);
+void tok_user_files_close_all(Parser *p, int report);
 
-/* image_gamma.c: POV-Ray 3.7's reading of a picture's colours, by the
- * gamma mode the scene is in when the picture is parsed. decode and
- * untagged go to ParseOptions.load_image; the linear values it returns are
- * then encoded with working (1 none, 0 sRGB, else a power law). */
-typedef struct {
-    double decode, untagged, working;
-} ImageGammaPlan;
-/* global_settings' first assumed_gamma (0: srgb); later ones are ignored */
-void assumed_gamma_seen(Parser *p, double gamma);
-/* after a #version has set p->version */
-void version_seen(Parser *p);
-/* gamma_correct: colours (image_map) rather than data (bump_map,
- * material_map); override_given: the picture's own `gamma override` */
-ImageGammaPlan image_gamma_plan(const Parser *p, int gamma_correct, int override_given, double override);
-
-/* approximations.c: the report of what the instantiated scene approximates */
-void collect_approximations(Parser *p);
-
-/* parse_scene.c */
-void parse_declare(Parser *p, const Token *hash, int local);
-/* Any value (a #declare's right side, a macro argument): unsupported things
- * become VAL_UNSUPPORTED instead of errors. */
-Value parse_value_lenient(Parser *p);
-/* A copy that does not share an array's elements. */
-Value copy_value(Parser *p, const Value *v);
-const char *value_kind_name(ValueKind k);
-void parse_default_directive(Parser *p);
+const char *tok_value_kind_name(ValueKind k);
 
 #endif

@@ -15,59 +15,59 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 static Token read_name(Parser *p, const char *what)
 {
-    Token t = *next_name(p);
+    Token t = *tok_next_name(p);
     if (t.type != TK_WORD || t.elem) {
         char buf[96];
         snprintf(buf, sizeof buf, "an identifier after %s", what);
-        fail_expected(p, &t, buf);
+        tok_fail_expected(p, &t, buf);
     }
     if (t.kw >= 0)
-        parse_fail(p, t.pos, "'%s' is a reserved word and cannot be %s", keyword_name(t.kw),
+        tok_fail(p, t.pos, "'%s' is a reserved word and cannot be %s", tok_keyword_name(t.kw),
                    strcmp(what, "#macro") == 0 ? "a macro name" : "a macro parameter");
     return t;
 }
 
-void macro_define(Parser *p, const Token *hash)
+void tok_macro_define(Parser *p, const Token *hash)
 {
     Token name = read_name(p, "#macro");
-    Macro *m = tmp_alloc(p, sizeof *m);
-    m->name = tmp_strndup(p, name.text, (size_t)name.len);
+    Macro *m = tok_temp_alloc(p, sizeof *m);
+    m->name = tok_temp_strndup(p, name.text, (size_t)name.len);
     m->declared_at = name.pos;
-    expect_punct(p, '(', "the macro name");
+    tok_expect_punct(p, '(', "the macro name");
     TempVec params;
-    tvec_init(&params, sizeof(char *));
-    Token *t = next_name(p);
-    if (!is_punct(t, ')')) {
-        unget(p);
+    tok_tvec_init(&params, sizeof(char *));
+    Token *t = tok_next_name(p);
+    if (!tok_is_punct(t, ')')) {
+        tok_unget(p);
         for (;;) {
-            if (params.n > 0 && is_punct(peek(p), ')')) { /* a trailing ',', as shapes3.inc has */
-                (void)next(p);
+            if (params.n > 0 && tok_is_punct(tok_peek(p), ')')) { /* a trailing ',', as shapes3.inc has */
+                (void)tok_next(p);
                 break;
             }
             Token param = read_name(p, "'(' or ','");
             for (int i = 0; i < params.n; i++)
                 if (strlen(((char **)params.data)[i]) == (size_t)param.len &&
                     strncmp(((char **)params.data)[i], param.text, (size_t)param.len) == 0)
-                    parse_fail(p, param.pos, "macro '%s' has two parameters named '%.*s'", m->name, param.len,
+                    tok_fail(p, param.pos, "macro '%s' has two parameters named '%.*s'", m->name, param.len,
                                param.text);
-            *(char **)tvec_push(p, &params) = tmp_strndup(p, param.text, (size_t)param.len);
-            t = next_name(p);
-            if (is_punct(t, ')'))
+            *(char **)tok_tvec_push(p, &params) = tok_temp_strndup(p, param.text, (size_t)param.len);
+            t = tok_next_name(p);
+            if (tok_is_punct(t, ')'))
                 break;
-            if (!is_punct(t, ',')) {
+            if (!tok_is_punct(t, ',')) {
                 if (t->type != TK_WORD)
-                    fail_expected(p, t, "',' or ')' in the macro's parameter list");
-                unget(p); /* POV-Ray lets a ',' be missing (shapes3.inc does) */
+                    tok_fail_expected(p, t, "',' or ')' in the macro's parameter list");
+                tok_unget(p); /* POV-Ray lets a ',' be missing (shapes3.inc does) */
             }
         }
     }
     m->nparams = params.n;
     m->params = params.data;
-    /* The body starts right after ')': next() has read nothing beyond it. */
+    /* The body starts right after ')': tok_next() has read nothing beyond it. */
     const SourceFile *f = &p->files[p->depth - 1];
     m->file = f->name;
     m->dir = f->dir;
@@ -76,14 +76,14 @@ void macro_define(Parser *p, const Token *hash)
     m->body_offset = f->offset;
     m->body_line = f->line;
     m->body_col = f->col;
-    macro_skip_body(p, hash->pos);
+    tok_macro_skip_body(p, hash->pos);
     Value v;
     memset(&v, 0, sizeof v);
     v.kind = VAL_MACRO;
     v.macro = m;
     v.declared_at = name.pos;
     /* Macros are always global in POV-Ray, wherever they are defined. */
-    symbol_define_global(p, name.text, name.len, &v);
+    tok_symbol_define_global(p, name.text, name.len, &v);
 }
 
 /* The argument is a lone identifier of the caller: pass it by reference.
@@ -92,38 +92,38 @@ static Symbol *reference_argument(Parser *p, const Macro *m, int index)
 {
     if (p->ungot)
         return NULL;
-    LexMark mark = lex_mark(p);
+    LexMark mark = tok_mark(p);
     Token a, b;
-    lex_raw(p, &a);
-    if (is_punct(&a, ')') || is_punct(&a, ','))
-        parse_fail(p, a.pos, "macro '%s' takes %d parameter%s but %d %s given", m->name, m->nparams,
+    tok_raw(p, &a);
+    if (tok_is_punct(&a, ')') || tok_is_punct(&a, ','))
+        tok_fail(p, a.pos, "macro '%s' takes %d parameter%s but %d %s given", m->name, m->nparams,
                    m->nparams == 1 ? "" : "s", index, index == 1 ? "was" : "were");
     int lone = a.type == TK_WORD && a.kw < 0;
     if (lone) {
-        lex_raw(p, &b);
-        lone = is_punct(&b, ',') || is_punct(&b, ')');
+        tok_raw(p, &b);
+        lone = tok_is_punct(&b, ',') || tok_is_punct(&b, ')');
     }
-    lex_seek(p, mark);
+    tok_seek(p, mark);
     if (!lone)
         return NULL;
-    Symbol *s = symbol_find(p, a.text, a.len);
+    Symbol *s = tok_symbol_find(p, a.text, a.len);
     if (!s)
-        parse_fail(p, a.pos, "undeclared identifier '%.*s' passed as parameter '%s' of macro '%s'", a.len, a.text,
+        tok_fail(p, a.pos, "undeclared identifier '%.*s' passed as parameter '%s' of macro '%s'", a.len, a.text,
                    m->params[index], m->name);
     if (s->value.kind == VAL_MACRO)
         return NULL; /* a call without arguments: let it fail as such */
-    (void)next_name(p);
+    (void)tok_next_name(p);
     return s;
 }
 
-void macro_invoke(Parser *p, const Token *call, const Macro *m)
+void tok_macro_invoke(Parser *p, const Token *call, const Macro *m)
 {
-    Token open = *next(p);
-    if (!is_punct(&open, '(')) {
+    Token open = *tok_next(p);
+    if (!tok_is_punct(&open, '(')) {
         char what[160];
         snprintf(what, sizeof what, "'(' after macro '%s' (declared at %s:%d)", m->name, m->declared_at.file,
                  m->declared_at.line);
-        fail_expected(p, &open, what);
+        tok_fail_expected(p, &open, what);
     }
     /* The arguments go on a stack that calls inside them use above this
      * call's slots (indices: the stack may move as it grows), and that is
@@ -131,8 +131,8 @@ void macro_invoke(Parser *p, const Token *call, const Macro *m)
      * the same memory. */
     int base = p->arg_values.n;
     for (int i = 0; i < m->nparams; i++) {
-        (void)tvec_push(p, &p->arg_values);
-        (void)tvec_push(p, &p->arg_refs);
+        (void)tok_tvec_push(p, &p->arg_values);
+        (void)tok_tvec_push(p, &p->arg_refs);
     }
 #define ARG(i) (((Value *)p->arg_values.data)[base + (i)])
 #define REF(i) (((Symbol **)p->arg_refs.data)[base + (i)])
@@ -140,38 +140,38 @@ void macro_invoke(Parser *p, const Token *call, const Macro *m)
      * mean what they mean at the call (recursion depends on it). */
     for (int i = 0; i < m->nparams; i++) {
         if (i > 0) {
-            Token *t = next(p);
-            if (is_punct(t, ')'))
-                parse_fail(p, t->pos, "macro '%s' takes %d parameter%s but %d %s given", m->name, m->nparams,
+            Token *t = tok_next(p);
+            if (tok_is_punct(t, ')'))
+                tok_fail(p, t->pos, "macro '%s' takes %d parameter%s but %d %s given", m->name, m->nparams,
                            m->nparams == 1 ? "" : "s", i, i == 1 ? "was" : "were");
-            if (!is_punct(t, ','))
-                unget(p); /* POV-Ray lets a ',' be missing */
+            if (!tok_is_punct(t, ','))
+                tok_unget(p); /* POV-Ray lets a ',' be missing */
         }
         Symbol *ref = reference_argument(p, m, i);
         REF(i) = ref;
         if (!ref) {
-            Value v = parse_value_lenient(p);
+            Value v = p->hooks->value(p);
             ARG(i) = v;
         }
     }
-    Token *close = next(p);
-    if (!is_punct(close, ')')) {
-        if (is_punct(close, ','))
-            parse_fail(p, close->pos, "macro '%s' takes %d parameter%s but more were given", m->name, m->nparams,
+    Token *close = tok_next(p);
+    if (!tok_is_punct(close, ')')) {
+        if (tok_is_punct(close, ','))
+            tok_fail(p, close->pos, "macro '%s' takes %d parameter%s but more were given", m->name, m->nparams,
                        m->nparams == 1 ? "" : "s");
-        fail_expected(p, close, "')' after the macro arguments");
+        tok_fail_expected(p, close, "')' after the macro arguments");
     }
-    limits_count_call(p, call->pos, m->name);
-    lex_open_macro(p, m, call->pos);
-    symbols_push_scope(p);
+    tok_limits_count_call(p, call->pos, m->name);
+    tok_open_macro(p, m, call->pos);
+    tok_push_scope(p);
     for (int i = 0; i < m->nparams; i++) {
         int len = (int)strlen(m->params[i]);
         if (REF(i)) {
-            Symbol *s = symbol_add_local(p, m->params[i], len, NULL);
+            Symbol *s = tok_symbol_add_local(p, m->params[i], len, NULL);
             s->alias = REF(i);
             s->alias_serial = REF(i)->serial;
         } else {
-            symbol_add_local(p, m->params[i], len, &ARG(i));
+            tok_symbol_add_local(p, m->params[i], len, &ARG(i));
         }
     }
     p->arg_values.n = p->arg_refs.n = base;
@@ -180,9 +180,9 @@ void macro_invoke(Parser *p, const Token *call, const Macro *m)
 }
 
 /* The body's #end: back to the text after the call. */
-void macro_return(Parser *p)
+void tok_macro_return(Parser *p)
 {
     p->depth--;
     p->macro_depth--;
-    symbols_pop_scope(p);
+    tok_pop_scope(p);
 }

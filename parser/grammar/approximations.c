@@ -1,4 +1,5 @@
-/* What hstrace approximates, and the report of it.
+/* The report of what hstrace approximates (the kinds themselves, their
+ * names and effects, are the description's: scene.c).
  *
  * The parser hangs an ApproxNote on the description wherever it approximates
  * (a pigment's bozo, a texture's normal, a light's photons ...). After
@@ -9,33 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "parser_internal.h"
-
-static const struct {
-    const char *name, *effect;
-} kinds[APPROX_KINDS] = {
-    [APPROX_NORMAL] = { "normal", "normal pattern not evaluated: the surface normal left unperturbed" },
-    [APPROX_PATTERN] = { "pattern", "pattern shown as one colour, its colour map at 0.5" },
-    [APPROX_WARP] = { "warp", "pattern warps other than turbulence ignored" },
-    [APPROX_LAYERS] = { "layers", "texture layers blended into one, with the top layer's finish" },
-    [APPROX_FINISH] = { "finish", "finish item ignored" },
-    [APPROX_CAUSTICS] = { "caustics", "interior caustics and dispersion ignored" },
-    [APPROX_PHOTONS] = { "photons", "photon mapping ignored" },
-    [APPROX_RADIOSITY] = { "radiosity", "radiosity and subsurface light transport ignored: no light gathered from "
-                                        "other surfaces, and (as POV-Ray 3.7 with radiosity) no finish's ambient" },
-    [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
-    [APPROX_FOG] = { "fog", "fog between lights and surfaces (media_attenuation) ignored" },
-};
-
-const char *approx_kind_name(ApproxKind k)
-{
-    return k >= 0 && k < APPROX_KINDS ? kinds[k].name : "?";
-}
-
-const char *approx_kind_effect(ApproxKind k)
-{
-    return k >= 0 && k < APPROX_KINDS ? kinds[k].effect : "?";
-}
+#include "grammar.h"
 
 /* Places seen so far, by kind and position (a hash set: scenes with a
  * million textured faces share a handful of notes, visited many times). */
@@ -151,27 +126,27 @@ static void tally_object(Tally *t, const SceneObject *o, int depth)
             tally_texture(t, o->u.mesh.textures[i]);
 }
 
-void collect_approximations(Parser *p)
+void gram_collect_approximations(Parser *p)
 {
     Scene *s = p->scene;
     Tally t;
     memset(&t, 0, sizeof t);
-    for (int i = 0; i < p->objects.n; i++)
-        tally_object(&t, ((SceneObject **)p->objects.data)[i], 0);
-    for (int i = 0; i < p->lights.n; i++)
-        tally_notes(&t, ((SceneLight *)p->lights.data)[i].approx);
+    for (int i = 0; i < p->gram->objects.n; i++)
+        tally_object(&t, ((SceneObject **)p->gram->objects.data)[i], 0);
+    for (int i = 0; i < p->gram->lights.n; i++)
+        tally_notes(&t, ((SceneLight *)p->gram->lights.data)[i].approx);
     tally_notes(&t, s->camera.approx);
     tally_texture(&t, &s->default_texture);
     for (int i = 0; i < s->sky.npigments; i++)
         tally_pigment(&t, &s->sky.pigments[i]);
-    tally_notes(&t, p->global_approx);
+    tally_notes(&t, p->gram->global_approx);
     free(t.slots);
     if (t.failed)
-        parse_fail(p, p->last_pos, "out of memory");
+        tok_fail(p, p->last_pos, "out of memory");
     int n = 0;
     for (int k = 0; k < APPROX_KINDS; k++)
         n += t.per_kind[k].count > 0;
-    s->approximations = palloc(p, sizeof *s->approximations * (size_t)(n ? n : 1));
+    s->approximations = tok_scene_alloc(p, sizeof *s->approximations * (size_t)(n ? n : 1));
     s->napproximations = 0;
     for (int k = 0; k < APPROX_KINDS; k++) {
         if (t.per_kind[k].count == 0)

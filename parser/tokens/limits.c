@@ -1,20 +1,20 @@
 /* What a scene may use while it is parsed: the C stack, nesting, memory,
  * time and work.
  *
- * The parser is recursive descent, and its recursion runs through next():
+ * The parser is recursive descent, and its recursion runs through tok_next():
  * a directive can stand anywhere, so nearly every production can reach
  * every other through it (one strongly connected call graph of about a
  * hundred functions). Rather than a counter in each production, which a new
  * production could forget, the one guard sits where every level of every
  * recursion passes: the lexer, which checks at each token how much of the
  * calling thread's stack is left (limits_check_stack, inlined in
- * lex_token). A scene nested too deeply for the stack gets
+ * tok_lex). A scene nested too deeply for the stack gets
  * "nested too deeply" at the token where the stack ran short.
  *
  * Recursions that read no tokens are bounded where they are built: a union
  * records how deep it nests (SceneObject.depth) and an array value how deep
  * its element arrays go, both capped at MAX_NESTING; expressions and
- * objects keep their 200-level count (nesting_enter), which makes those
+ * objects keep their 200-level count (tok_nesting_enter), which makes those
  * errors land at the same place whatever the build. */
 #define _GNU_SOURCE /* pthread_getattr_np: the real bounds of this thread's stack */
 #include "config.h"
@@ -28,7 +28,7 @@
 #include <unistd.h>
 
 #include "memory_budget.h"
-#include "parser_internal.h"
+#include "tokens.h"
 
 /* Stack kept back below the deepest token: what a production may use
  * between two tokens (number conversion, messages, the error path itself,
@@ -39,7 +39,7 @@ static size_t stack_reserve(size_t stack_size)
     return r < 128 * 1024 ? 128 * 1024 : r;
 }
 
-void limits_init_stack(Parser *p)
+void tok_limits_init_stack(Parser *p)
 {
     char *here = __builtin_frame_address(0);
     size_t size = 0;
@@ -71,9 +71,9 @@ void limits_init_stack(Parser *p)
     p->stack_floor = left > reserve ? lowest + reserve : here;
 }
 
-void limits_stack_exhausted(Parser *p, SourcePos pos)
+void tok_limits_stack_exhausted(Parser *p, SourcePos pos)
 {
-    parse_fail(p, pos, "nested too deeply (the parser's stack is used up)");
+    tok_fail(p, pos, "nested too deeply (the parser's stack is used up)");
 }
 
 /* ---- memory ------------------------------------------------------------- */
@@ -83,31 +83,31 @@ size_t parse_default_max_memory(void)
     return memory_budget_default();
 }
 
-void limits_init_memory(Parser *p)
+void tok_limits_init_memory(Parser *p)
 {
     p->budget.limit = p->opts->max_memory ? p->opts->max_memory : parse_default_max_memory();
     arena_set_budget(p->arena, &p->budget);
     arena_set_budget(p->temp, &p->budget);
 }
 
-size_t limits_memory_left(const Parser *p)
+size_t tok_limits_memory_left(const Parser *p)
 {
     return p->budget.used < p->budget.limit ? p->budget.limit - p->budget.used : 0;
 }
 
-void limits_over_budget(Parser *p, SourcePos pos)
+void tok_limits_over_budget(Parser *p, SourcePos pos)
 {
     p->budget.exceeded = 1;
-    parse_fail_memory(p, pos);
+    tok_fail_memory(p, pos);
 }
 
-void parse_fail_memory(Parser *p, SourcePos pos)
+void tok_fail_memory(Parser *p, SourcePos pos)
 {
     if (!p->budget.exceeded)
-        parse_fail(p, pos, "out of memory");
+        tok_fail(p, pos, "out of memory");
     char limit[32];
     memory_size_text(limit, sizeof limit, p->budget.limit);
-    parse_fail(p, pos, "the scene needs more than %s of memory while it is parsed (--max-memory sets the budget)",
+    tok_fail(p, pos, "the scene needs more than %s of memory while it is parsed (--max-memory sets the budget)",
                limit);
 }
 
@@ -120,7 +120,7 @@ static double now(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-void limits_init_work(Parser *p)
+void tok_limits_init_work(Parser *p)
 {
     const ParseOptions *o = p->opts;
     p->max_loop_iterations = o->max_loop_iterations > 0 ? o->max_loop_iterations : MAX_LOOP_ITERATIONS;
@@ -149,46 +149,46 @@ static void what_runs(Parser *p, char *buf, size_t n)
     snprintf(buf, n, "is a loop or a recursion endless?");
 }
 
-void limits_work_exhausted(Parser *p, SourcePos pos, const char *what)
+void tok_limits_work_exhausted(Parser *p, SourcePos pos, const char *what)
 {
     char runs[600];
     what_runs(p, runs, sizeof runs);
     if (strcmp(what, "tokens") == 0)
-        parse_fail(p, pos, "more than %ld tokens read again by loops and macro calls (--max-repeated-tokens): %s",
+        tok_fail(p, pos, "more than %ld tokens read again by loops and macro calls (--max-repeated-tokens): %s",
                    p->max_repeated_tokens, runs);
-    parse_fail(p, pos, "the parse ran for more than %g s (--max-parse-seconds): %s", p->opts->max_parse_seconds, runs);
+    tok_fail(p, pos, "the parse ran for more than %g s (--max-parse-seconds): %s", p->opts->max_parse_seconds, runs);
 }
 
-void limits_check_time(Parser *p, SourcePos pos)
+void tok_limits_check_time(Parser *p, SourcePos pos)
 {
     if (now() > p->deadline)
-        limits_work_exhausted(p, pos, "seconds");
+        tok_limits_work_exhausted(p, pos, "seconds");
 }
 
-void limits_count_iteration(Parser *p, SourcePos loop)
+void tok_limits_count_iteration(Parser *p, SourcePos loop)
 {
     if (++p->loop_iterations > p->max_loop_iterations)
-        parse_fail(p, loop, "more than %ld loop iterations (--max-loop-iterations): is this loop endless?",
+        tok_fail(p, loop, "more than %ld loop iterations (--max-loop-iterations): is this loop endless?",
                    p->max_loop_iterations);
 }
 
-void limits_count_call(Parser *p, SourcePos call, const char *macro)
+void tok_limits_count_call(Parser *p, SourcePos call, const char *macro)
 {
     if (++p->macro_calls > p->max_macro_calls)
-        parse_fail(p, call, "more than %ld macro calls (--max-macro-calls): is the recursion of macro '%s' endless?",
+        tok_fail(p, call, "more than %ld macro calls (--max-macro-calls): is the recursion of macro '%s' endless?",
                    p->max_macro_calls, macro);
 }
 
 /* ---- nesting ------------------------------------------------------------ */
 
-int nesting_enter(Parser *p, const Token *t)
+int tok_nesting_enter(Parser *p, const Token *t)
 {
     if (++p->nesting > MAX_NESTING)
-        parse_fail(p, t->pos, "nested too deeply (more than %d levels)", MAX_NESTING);
+        tok_fail(p, t->pos, "nested too deeply (more than %d levels)", MAX_NESTING);
     return p->nesting;
 }
 
-void nesting_leave(Parser *p)
+void tok_nesting_leave(Parser *p)
 {
     p->nesting--;
 }

@@ -11,7 +11,7 @@ enum {
 };
 
 /* The keyword id of `len` bytes at `s`, or -1 when it is not reserved. */
-int keyword_lookup(const char *s, int len);
-const char *keyword_name(int kw);
+int tok_keyword_lookup(const char *s, int len);
+const char *tok_keyword_name(int kw);
 
 #endif

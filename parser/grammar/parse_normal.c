@@ -13,7 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
 /* A normal with nothing given (POV-Ray's Create_Tnormal). */
 static SceneNormal fresh_normal(Parser *p)
@@ -35,7 +35,7 @@ static SceneNormal fresh_normal(Parser *p)
     n.pattern.wave = WAVE_RAMP;
     transform_identity(&n.pattern.transform);
     n.amount = 0.5;
-    n.accuracy = single(0.02);
+    n.accuracy = gram_single(0.02);
     n.control0 = n.control1 = 1.0;
     return n;
 }
@@ -44,7 +44,7 @@ static SceneNormal fresh_normal(Parser *p)
  * normal, or a fresh one. */
 static SceneNormal *start_normal(Parser *p, const SceneNormal *from)
 {
-    SceneNormal *n = palloc(p, sizeof *n);
+    SceneNormal *n = tok_scene_alloc(p, sizeof *n);
     if (!from)
         from = p->scene->default_texture.normal;
     *n = from ? *from : fresh_normal(p);
@@ -66,17 +66,17 @@ static const SceneNormal *entry_normal(Parser *p, int close, const Token *at)
  * ones: the default texture's normal (none: the normal unchanged). */
 static void parse_normal_list(Parser *p, SceneNormal *n, int count)
 {
-    if (!is_kw(peek(p), KW_normal))
+    if (!tok_is_kw(tok_peek(p), KW_normal))
         return;
-    NormalMapEntry *e = palloc(p, sizeof *e * (size_t)count);
+    NormalMapEntry *e = tok_scene_alloc(p, sizeof *e * (size_t)count);
     int i = 0;
-    while (i < count && is_kw(peek(p), KW_normal)) {
-        Token at = *next(p);
-        begin_block(p, "normal");
+    while (i < count && tok_is_kw(tok_peek(p), KW_normal)) {
+        Token at = *tok_next(p);
+        tok_begin_block(p, "normal");
         e[i].normal = entry_normal(p, '}', &at);
         e[i].value = i;
         i++;
-        parse_comma(p);
+        expr_comma(p);
     }
     for (; i < count; i++) {
         e[i].normal = p->scene->default_texture.normal;
@@ -88,54 +88,54 @@ static void parse_normal_list(Parser *p, SceneNormal *n, int count)
 
 /* normal_map { [value normal items] ... } and average's list, whose
  * values may be left out (1). */
-void parse_normal_map(Parser *p, SceneNormal *n, int average)
+void gram_normal_map(Parser *p, SceneNormal *n, int average)
 {
-    begin_block(p, "normal_map");
-    const Value *id = map_identifier(p, VAL_NORMAL_MAP, "normal_map");
+    tok_begin_block(p, "normal_map");
+    const Value *id = gram_map_identifier(p, VAL_NORMAL_MAP, "normal_map");
     if (id) {
         n->map = id->normal->map;
         n->nmap = id->normal->nmap;
         return;
     }
     TempVec entries;
-    tvec_init(&entries, sizeof(NormalMapEntry));
+    tok_tvec_init(&entries, sizeof(NormalMapEntry));
     double v;
-    while (blend_map_entry(p, "normal_map", &entries, average, &v)) {
+    while (gram_blend_map_entry(p, "normal_map", &entries, average, &v)) {
         Token at = p->tok;
-        NormalMapEntry *e = tvec_push(p, &entries);
+        NormalMapEntry *e = tok_tvec_push(p, &entries);
         e->value = v;
         e->normal = entry_normal(p, ']', &at);
     }
     if (entries.n < 1)
-        parse_fail(p, p->tok.pos, "Must have at least one entry in map.");
-    n->map = tvec_keep(p, &entries);
+        tok_fail(p, p->tok.pos, "Must have at least one entry in map.");
+    n->map = tok_tvec_keep(p, &entries);
     n->nmap = entries.n;
 }
 
 /* slope_map { [value, <height, slope>] ... } */
-void parse_slope_map(Parser *p, SceneNormal *n)
+void gram_slope_map(Parser *p, SceneNormal *n)
 {
-    begin_block(p, "slope_map");
-    const Value *id = map_identifier(p, VAL_SLOPE_MAP, "slope_map");
+    tok_begin_block(p, "slope_map");
+    const Value *id = gram_map_identifier(p, VAL_SLOPE_MAP, "slope_map");
     if (id) {
         n->slope = id->normal->slope;
         n->nslope = id->normal->nslope;
         return;
     }
     TempVec entries;
-    tvec_init(&entries, sizeof(SlopeMapEntry));
+    tok_tvec_init(&entries, sizeof(SlopeMapEntry));
     double v;
-    while (blend_map_entry(p, "slope_map", &entries, 0, &v)) {
-        SlopeMapEntry *e = tvec_push(p, &entries);
+    while (gram_blend_map_entry(p, "slope_map", &entries, 0, &v)) {
+        SlopeMapEntry *e = tok_tvec_push(p, &entries);
         e->value = v;
-        Vec3 hs = parse_vector(p); /* POV-Ray's UV vector: two values */
+        Vec3 hs = expr_vector(p); /* POV-Ray's UV vector: two values */
         e->height = hs.x;
         e->slope = hs.y;
-        expect_punct(p, ']', "a slope_map entry");
+        tok_expect_punct(p, ']', "a slope_map entry");
     }
     if (entries.n < 1)
-        parse_fail(p, p->tok.pos, "Must have at least one entry in map.");
-    n->slope = tvec_keep(p, &entries);
+        tok_fail(p, p->tok.pos, "Must have at least one entry in map.");
+    n->slope = tok_tvec_keep(p, &entries);
     n->nslope = entries.n;
 }
 
@@ -143,24 +143,24 @@ void parse_slope_map(Parser *p, SceneNormal *n)
  * bump_size use_color use_index } */
 static void parse_bump_map(Parser *p, SceneNormal *n, const Token *at)
 {
-    begin_block(p, "bump_map");
-    parse_image_source(p, &n->pattern, at, "bump_map", 0);
+    tok_begin_block(p, "bump_map");
+    gram_image_source(p, &n->pattern, at, "bump_map", 0);
     for (;;) {
-        Token *o = next(p);
-        if (is_punct(o, '}'))
+        Token *o = tok_next(p);
+        if (tok_is_punct(o, '}'))
             return;
         Token here = *o;
         switch (o->type == TK_WORD ? o->kw : -1) {
         case KW_once: n->pattern.image_once = 1; break;
-        case KW_interpolate: n->pattern.image_interpolate = image_interpolation(p, &here); break;
-        case KW_map_type: n->pattern.image_map_type = image_map_type(p, &here); break;
-        case KW_bump_size: n->amount = single(parse_float(p)); break;
+        case KW_interpolate: n->pattern.image_interpolate = gram_image_interpolation(p, &here); break;
+        case KW_map_type: n->pattern.image_map_type = gram_image_map_type(p, &here); break;
+        case KW_bump_size: n->amount = gram_single(expr_float(p)); break;
         case KW_use_colour: case KW_use_color: n->pattern.image_use_index = 0; break;
         case KW_use_index: n->pattern.image_use_index = 1; break;
         default:
             if (o->type == TK_WORD && o->kw >= 0)
-                unsupported(p, o); /* repeat, offset, ... */
-            fail_expected(p, o, "once, interpolate, map_type, bump_size, use_color, use_index or '}' in 'bump_map'");
+                tok_unsupported(p, o); /* repeat, offset, ... */
+            tok_fail_expected(p, o, "once, interpolate, map_type, bump_size, use_color, use_index or '}' in 'bump_map'");
         }
     }
 }
@@ -198,21 +198,21 @@ static int normal_pattern(Parser *p, SceneNormal *n, const Token *at)
         return 1;
     }
     if (kw == KW_image_map)
-        parse_fail(p, at->pos, "Keyword 'image_map' can only be used in a pigment statement.");
-    switch (pattern_support(kw)) {
+        tok_fail(p, at->pos, "Keyword 'image_map' can only be used in a pigment statement.");
+    switch (gram_pattern_support(kw)) {
     case PAT_EVALUATED:
         n->kind = NORMAL_PATTERN;
-        start_pattern(p, pat, kw); /* bumps and wrinkles are the normals' own, above */
+        gram_start_pattern(p, pat, kw); /* bumps and wrinkles are the normals' own, above */
         if (kw == KW_checker || kw == KW_hexagon)
             parse_normal_list(p, n, kw == KW_checker ? 2 : 3);
         return 1;
     case PAT_APPROXIMATED: /* brick, crackle, facets, leopard, onion, radial ...: not evaluated */
-        approximate(p, at, APPROX_NORMAL, &n->approx);
+        tok_approximate(p, at, APPROX_NORMAL, &n->approx);
         n->kind = NORMAL_NONE;
-        skip_arguments(p);
+        gram_skip_arguments(p);
         return 1;
     case PAT_UNSUPPORTED:
-        unsupported(p, at);
+        tok_unsupported(p, at);
     case PAT_NONE:
         break;
     }
@@ -224,14 +224,14 @@ static int normal_pattern(Parser *p, SceneNormal *n, const Token *at)
 static void normal_items(Parser *p, SceneNormal *n, int close, const Token *kw, int need_pattern)
 {
     int patterned = n->kind != NORMAL_NONE || n->approx;
-    Token *t = next(p);
-    const Value *id = block_identifier(p, t, VAL_NORMAL, "normal");
+    Token *t = tok_next(p);
+    const Value *id = gram_block_identifier(p, t, VAL_NORMAL, "normal");
     if (id) {
         *n = *id->normal;
         patterned = 1;
-        t = next(p);
+        t = tok_next(p);
     }
-    if (is_kw(t, KW_uv_mapping)) {
+    if (tok_is_kw(t, KW_uv_mapping)) {
         /* POV-Ray: a new normal made of the rest of the block, seen at the
          * surface's (u, v, 0) */
         SceneNormal *entry = start_normal(p, NULL);
@@ -246,99 +246,99 @@ static void normal_items(Parser *p, SceneNormal *n, int close, const Token *kw, 
     if (normal_pattern(p, n, &at)) {
         patterned = 1;
     } else {
-        unget(p);
+        tok_unget(p);
     }
-    parse_comma(p);
-    if (token_starts_float(p, peek(p)))
-        n->amount = single(parse_float(p));
+    expr_comma(p);
+    if (expr_starts_float(p, tok_peek(p)))
+        n->amount = gram_single(expr_float(p));
     for (;;) {
-        t = next(p);
-        if (is_punct(t, close))
+        t = tok_next(p);
+        if (tok_is_punct(t, close))
             break;
         Token here = *t;
-        if (parse_transform_item(p, t, &n->pattern.transform))
+        if (expr_transform_item(p, t, &n->pattern.transform))
             continue;
-        if (pattern_modifier_item(p, &n->pattern, t))
+        if (gram_pattern_modifier_item(p, &n->pattern, t))
             continue;
         int k = here.type == TK_WORD ? here.kw : -1;
         switch (k) {
-        case KW_bump_size: n->amount = single(parse_float(p)); continue;
-        case KW_accuracy: n->accuracy = single(parse_float(p)); continue;
+        case KW_bump_size: n->amount = gram_single(expr_float(p)); continue;
+        case KW_accuracy: n->accuracy = gram_single(expr_float(p)); continue;
         case KW_no_bump_scale: n->no_bump_scale = 1; continue;
         case KW_slope_map:
             if (n->kind == NORMAL_AVERAGE || n->pattern.kind == PIGMENT_CHECKER ||
                 n->pattern.kind == PIGMENT_HEXAGON || n->kind == NORMAL_BUMP_MAP)
-                parse_fail(p, here.pos, "Cannot use slope_map with this normal type.");
-            parse_slope_map(p, n);
+                tok_fail(p, here.pos, "Cannot use slope_map with this normal type.");
+            gram_slope_map(p, n);
             continue;
         case KW_normal_map:
             if ((n->kind == NORMAL_PATTERN &&
                  (n->pattern.kind == PIGMENT_CHECKER || n->pattern.kind == PIGMENT_HEXAGON)) ||
                 n->kind == NORMAL_BUMP_MAP)
-                parse_fail(p, here.pos, "Cannot use normal_map with this normal type.");
-            parse_normal_map(p, n, n->kind == NORMAL_AVERAGE);
+                tok_fail(p, here.pos, "Cannot use normal_map with this normal type.");
+            gram_normal_map(p, n, n->kind == NORMAL_AVERAGE);
             continue;
         case KW_control0: case KW_control1:
             if (n->kind != NORMAL_QUILTED)
-                parse_fail(p, here.pos, "Cannot use %s with this pattern.", keyword_name(k));
+                tok_fail(p, here.pos, "Cannot use %s with this pattern.", tok_keyword_name(k));
             if (k == KW_control0)
-                n->control0 = parse_float(p);
+                n->control0 = expr_float(p);
             else
-                n->control1 = parse_float(p);
+                n->control1 = expr_float(p);
             continue;
         default:
             break;
         }
-        if (k >= 0 && pattern_modifier(k)) {
-            skip_arguments(p); /* modifiers of patterns hstrace does not evaluate */
+        if (k >= 0 && gram_pattern_modifier(k)) {
+            gram_skip_arguments(p); /* modifiers of patterns hstrace does not evaluate */
             continue;
         }
-        if (k >= 0 && n->kind == NORMAL_NONE && n->approx && pattern_support(k) != PAT_NONE) {
+        if (k >= 0 && n->kind == NORMAL_NONE && n->approx && gram_pattern_support(k) != PAT_NONE) {
             /* a pattern not evaluated: its arguments may name other
              * patterns (`magnet 1 mandel 50`) */
-            skip_arguments(p);
+            gram_skip_arguments(p);
             continue;
         }
-        if (k >= 0 && (pattern_support(k) != PAT_NONE || k == KW_bumps || k == KW_bump_map))
-            parse_fail(p, here.pos, "the pattern must come first in a normal (after its identifier)");
+        if (k >= 0 && (gram_pattern_support(k) != PAT_NONE || k == KW_bumps || k == KW_bump_map))
+            tok_fail(p, here.pos, "the pattern must come first in a normal (after its identifier)");
         if (k >= 0)
-            unsupported(p, t);
-        fail_expected(p, t, close == ']' ? "a normal modifier or ']' in a normal_map entry"
+            tok_unsupported(p, t);
+        tok_fail_expected(p, t, close == ']' ? "a normal modifier or ']' in a normal_map entry"
                                          : "a pattern, a normal modifier or '}' in 'normal'");
     }
     if (!patterned && need_pattern)
-        parse_fail(p, kw->pos, "No normal type given.");
+        tok_fail(p, kw->pos, "No normal type given.");
     if (n->kind == NORMAL_NONE) { /* approximated: the normal as it is */
         n->nmap = 0;
         n->nslope = 0;
     }
     if (n->kind == NORMAL_AVERAGE && n->nmap == 0)
-        parse_fail(p, kw->pos, "Average must have map.");
+        tok_fail(p, kw->pos, "Average must have map.");
 }
 
-const SceneNormal *parse_normal(Parser *p, const SceneNormal *from, const Token *kw, int need_pattern)
+const SceneNormal *gram_normal(Parser *p, const SceneNormal *from, const Token *kw, int need_pattern)
 {
-    begin_block(p, "normal");
+    tok_begin_block(p, "normal");
     SceneNormal *n = start_normal(p, from);
     normal_items(p, n, '}', kw, need_pattern);
     return n;
 }
 
-const SceneNormal *normal_transformed(Parser *p, const SceneNormal *n, const Transform *tr)
+const SceneNormal *gram_normal_transformed(Parser *p, const SceneNormal *n, const Transform *tr)
 {
     if (!n || n->kind == NORMAL_UV) /* uv space is the surface's own: nothing moves it */
         return n;
-    SceneNormal *copy = palloc(p, sizeof *copy);
+    SceneNormal *copy = tok_scene_alloc(p, sizeof *copy);
     *copy = *n;
     transform_compose(&copy->pattern.transform, tr);
     return copy;
 }
 
-const SceneNormal *normal_uv_mapped(Parser *p, const SceneNormal *n)
+const SceneNormal *gram_normal_uv_mapped(Parser *p, const SceneNormal *n)
 {
     if (!n || n->kind == NORMAL_UV)
         return n;
-    SceneNormal *wrapper = palloc(p, sizeof *wrapper);
+    SceneNormal *wrapper = tok_scene_alloc(p, sizeof *wrapper);
     *wrapper = fresh_normal(p);
     wrapper->kind = NORMAL_UV;
     wrapper->uv_entry = n;

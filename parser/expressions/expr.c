@@ -6,7 +6,7 @@
  * binary operators promote the shorter side (a float is repeated, a shorter
  * vector padded with zeros). Precedence, loosest first:
  *   ?:   & |   < <= = != >= >   + -   * /   unary - + !   factors
- * A plain float or vector (parse_float, parse_vector) stops at + - as POV-Ray
+ * A plain float or vector (expr_float, expr_vector) stops at + - as POV-Ray
  * does; comparisons need parentheses there. */
 #include <limits.h>
 #include <math.h>
@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "expressions.h"
 
 /* clock and its kin for the frame being rendered (parser.h), or a still's:
  * POV-Ray 3.7 renders a still with every one of them 0 and clock_on false
@@ -135,10 +135,10 @@ static void parse_binary(Parser *p, double e[5], int *terms, int min_priority)
 {
     parse_num_factor(p, e, terms);
     for (;;) {
-        Token *t = next(p);
+        Token *t = tok_next(p);
         int priority = binary_priority(t);
         if (priority == PRIO_NONE || priority < min_priority) {
-            unget(p);
+            tok_unget(p);
             return;
         }
         int op = t->punct;
@@ -149,47 +149,47 @@ static void parse_binary(Parser *p, double e[5], int *terms, int min_priority)
     }
 }
 
-void parse_rel_factor(Parser *p, double e[5], int *terms)
+void expr_rel_factor(Parser *p, double e[5], int *terms)
 {
     parse_binary(p, e, terms, PRIO_SUM);
 }
 
-void parse_express(Parser *p, double e[5], int *terms)
+void expr_numeric(Parser *p, double e[5], int *terms)
 {
-    Token first = *peek(p);
-    nesting_enter(p, &first);
+    Token first = *tok_peek(p);
+    tok_nesting_enter(p, &first);
     int want = *terms, got = 1;
     parse_binary(p, e, &got, PRIO_LOGICAL);
-    Token *t = next(p);
-    if (is_punct(t, '?')) {
+    Token *t = tok_next(p);
+    if (tok_is_punct(t, '?')) {
         if (got != 1)
-            parse_fail(p, t->pos, "the condition before '?' must be a float");
+            tok_fail(p, t->pos, "the condition before '?' must be a float");
         int cond = ftrue(e[0]);
         double a[5] = { 0 }, b[5] = { 0 };
         int ta = want, tb = want;
-        parse_express(p, a, &ta);
-        expect_punct(p, ':', "the first choice of '?'");
-        parse_express(p, b, &tb);
+        expr_numeric(p, a, &ta);
+        tok_expect_punct(p, ':', "the first choice of '?'");
+        expr_numeric(p, b, &tb);
         memcpy(e, cond ? a : b, sizeof a);
         *terms = cond ? ta : tb;
     } else {
-        unget(p);
+        tok_unget(p);
         promote(e, &got, want);
         *terms = got;
     }
-    nesting_leave(p);
+    tok_nesting_leave(p);
 }
 
 /* A float where an expression's part is wanted (a vector's component):
  * any value, infinities and NaN included, as inside any expression. */
 static double float_term(Parser *p, Token *first)
 {
-    *first = *peek(p);
+    *first = *tok_peek(p);
     double e[5] = { 0 };
     int terms = 1;
-    parse_rel_factor(p, e, &terms);
+    expr_rel_factor(p, e, &terms);
     if (terms > 1)
-        parse_fail(p, first->pos, "float expected but vector or colour expression found");
+        tok_fail(p, first->pos, "float expected but vector or colour expression found");
     return e[0];
 }
 
@@ -206,11 +206,11 @@ static void finite_or_fail(Parser *p, SourcePos at, const double *v, int n, cons
             int used = 0;
             for (int k = 0; k < n && used < (int)sizeof shown - 40; k++)
                 used += snprintf(shown + used, sizeof shown - (size_t)used, "%s%g", k ? ", " : "", v[k]);
-            parse_fail(p, at, "expected a finite %s, found %s%s%s", what, n == 1 ? "" : "<", shown, n == 1 ? "" : ">");
+            tok_fail(p, at, "expected a finite %s, found %s%s%s", what, n == 1 ? "" : "<", shown, n == 1 ? "" : ">");
         }
 }
 
-double parse_float(Parser *p)
+double expr_float(Parser *p)
 {
     Token first;
     double v = float_term(p, &first);
@@ -218,11 +218,11 @@ double parse_float(Parser *p)
     return v;
 }
 
-int checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *what)
+int expr_checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *what)
 {
     int n;
     if (!int_from_double(v, lo, hi, &n))
-        parse_fail(p, at, "%s must be an integer from %d to %d, not %g", what, lo, hi, v);
+        tok_fail(p, at, "%s must be an integer from %d to %d, not %g", what, lo, hi, v);
     return n;
 }
 
@@ -233,16 +233,16 @@ int checked_int(Parser *p, SourcePos at, double v, int lo, int hi, const char *w
  * path, as if nothing had been read. */
 static int plain_vector(Parser *p, Vec3 *out)
 {
-    int had_angle = p->ungot && is_punct(&p->tok, '<');
+    int had_angle = p->ungot && tok_is_punct(&p->tok, '<');
     if (p->ungot && !had_angle)
         return 0;
-    LexMark m = lex_mark(p);
+    LexMark m = tok_mark(p);
     double c[3];
-    if (!lex_plain_vector(p, had_angle, c))
+    if (!tok_plain_vector(p, had_angle, c))
         return 0;
-    int after = lex_peek_char(p);
+    int after = tok_peek_char(p);
     if (after == '+' || after == '-' || after == '*' || after == '/' || after == '.' || after == '#') {
-        lex_seek(p, m); /* an operator, or a directive (a macro's #end) that may lead to one */
+        tok_seek(p, m); /* an operator, or a directive (a macro's #end) that may lead to one */
         return 0;
     }
     p->ungot = 0;
@@ -250,24 +250,24 @@ static int plain_vector(Parser *p, Vec3 *out)
     return 1;
 }
 
-Vec3 parse_vector(Parser *p)
+Vec3 expr_vector(Parser *p)
 {
     Vec3 fast;
     if (plain_vector(p, &fast))
         return fast;
-    Token first = *peek(p);
+    Token first = *tok_peek(p);
     double e[5] = { 0 };
     int terms = 3;
-    parse_rel_factor(p, e, &terms);
+    expr_rel_factor(p, e, &terms);
     if (terms > 3)
-        parse_fail(p, first.pos, "vector expected but colour expression found");
+        tok_fail(p, first.pos, "vector expected but colour expression found");
     finite_or_fail(p, first.pos, e, 3, "vector");
     return v3(e[0], e[1], e[2]);
 }
 
-Vec3 parse_scale_vector(Parser *p)
+Vec3 expr_scale_vector(Parser *p)
 {
-    Vec3 v = parse_vector(p);
+    Vec3 v = expr_vector(p);
     /* POV-Ray turns a zero scale into 1 (with a warning) */
     if (v.x == 0.0) v.x = 1.0;
     if (v.y == 0.0) v.y = 1.0;
@@ -275,30 +275,30 @@ Vec3 parse_scale_vector(Parser *p)
     return v;
 }
 
-void parse_comma(Parser *p)
+void expr_comma(Parser *p)
 {
-    if (!is_punct(next(p), ','))
-        unget(p);
+    if (!tok_is_punct(tok_next(p), ','))
+        tok_unget(p);
 }
 
 /* A float in parentheses: sin(x). */
 static double float_param(Parser *p)
 {
-    expect_punct(p, '(', "the function name");
-    double v = parse_float_full(p);
-    expect_punct(p, ')', "the argument");
+    tok_expect_punct(p, '(', "the function name");
+    double v = expr_float_full(p);
+    tok_expect_punct(p, ')', "the argument");
     return v;
 }
 
 /* Function arguments are full expressions (comparisons allowed). */
-double parse_float_full(Parser *p)
+double expr_float_full(Parser *p)
 {
-    Token first = *peek(p);
+    Token first = *tok_peek(p);
     double e[5] = { 0 };
     int terms = 1;
-    parse_express(p, e, &terms);
+    expr_numeric(p, e, &terms);
     if (terms > 1)
-        parse_fail(p, first.pos, "float expected but vector or colour expression found");
+        tok_fail(p, first.pos, "float expected but vector or colour expression found");
     return e[0];
 }
 
@@ -306,17 +306,17 @@ static Vec3 vector_full(Parser *p)
 {
     double e[5] = { 0 };
     int terms = 3;
-    parse_express(p, e, &terms);
+    expr_numeric(p, e, &terms);
     return v3(e[0], e[1], e[2]);
 }
 
 static void float_params2(Parser *p, double *a, double *b)
 {
-    expect_punct(p, '(', "the function name");
-    *a = parse_float_full(p);
-    expect_punct(p, ',', "the first argument");
-    *b = parse_float_full(p);
-    expect_punct(p, ')', "the second argument");
+    tok_expect_punct(p, '(', "the function name");
+    *a = expr_float_full(p);
+    tok_expect_punct(p, ',', "the first argument");
+    *b = expr_float_full(p);
+    tok_expect_punct(p, ')', "the second argument");
 }
 
 static int is_colour_keyword(int kw)
@@ -366,11 +366,11 @@ static Symbol *numeric_symbol(Parser *p, const Token *t)
 {
     if (t->type != TK_WORD || t->kw >= 0)
         return NULL;
-    Symbol *s = token_symbol(p, t);
+    Symbol *s = tok_symbol_of(p, t);
     return s && s->value.kind == VAL_NUMERIC ? s : NULL;
 }
 
-int token_starts_float(Parser *p, const Token *t)
+int expr_starts_float(Parser *p, const Token *t)
 {
     if (t->type == TK_NUMBER)
         return 1;
@@ -384,7 +384,7 @@ int token_starts_float(Parser *p, const Token *t)
     return s && s->value.terms == 1;
 }
 
-int token_starts_colour(Parser *p, const Token *t)
+int expr_starts_colour(Parser *p, const Token *t)
 {
     if (t->type != TK_WORD)
         return 0;
@@ -394,9 +394,9 @@ int token_starts_colour(Parser *p, const Token *t)
     return s && s->value.terms == 5;
 }
 
-int token_starts_expression(Parser *p, const Token *t)
+int expr_starts_expression(Parser *p, const Token *t)
 {
-    if (token_starts_float(p, t) || token_starts_colour(p, t) || is_punct(t, '<'))
+    if (expr_starts_float(p, t) || expr_starts_colour(p, t) || tok_is_punct(t, '<'))
         return 1;
     if (t->type != TK_WORD)
         return 0;
@@ -405,7 +405,7 @@ int token_starts_expression(Parser *p, const Token *t)
     return numeric_symbol(p, t) != NULL;
 }
 
-int token_starts_string(Parser *p, const Token *t)
+int expr_starts_string(Parser *p, const Token *t)
 {
     if (t->type == TK_STRING)
         return 1;
@@ -415,7 +415,7 @@ int token_starts_string(Parser *p, const Token *t)
     case KW_concat: case KW_str: case KW_chr: case KW_substr: case KW_strupr: case KW_strlwr: case KW_vstr:
         return 1;
     case -1: {
-        Symbol *s = token_symbol(p, t);
+        Symbol *s = tok_symbol_of(p, t);
         return s && s->value.kind == VAL_STRING;
     }
     default:
@@ -423,50 +423,22 @@ int token_starts_string(Parser *p, const Token *t)
     }
 }
 
-const char *value_kind_name(ValueKind k)
-{
-    switch (k) {
-    case VAL_NUMERIC: return "a number";
-    case VAL_STRING: return "a string";
-    case VAL_OBJECT: return "an object";
-    case VAL_LIGHT: return "a light_source";
-    case VAL_TEXTURE: return "a texture";
-    case VAL_PIGMENT: return "a pigment";
-    case VAL_FINISH: return "a finish";
-    case VAL_INTERIOR: return "an interior";
-    case VAL_MATERIAL: return "a material";
-    case VAL_CAMERA: return "a camera";
-    case VAL_SKY_SPHERE: return "a sky_sphere";
-    case VAL_TRANSFORM: return "a transform";
-    case VAL_NORMAL: return "a normal";
-    case VAL_COLOUR_MAP: return "a color_map";
-    case VAL_PIGMENT_MAP: return "a pigment_map";
-    case VAL_TEXTURE_MAP: return "a texture_map";
-    case VAL_NORMAL_MAP: return "a normal_map";
-    case VAL_SLOPE_MAP: return "a slope_map";
-    case VAL_MACRO: return "a macro";
-    case VAL_ARRAY: return "an array";
-    case VAL_FILE: return "a file identifier";
-    default: return "something else";
-    }
-}
-
 /* An identifier in a numeric expression. */
 static void identifier_factor(Parser *p, const Token *t, double e[5], int *terms)
 {
-    Symbol *s = token_symbol(p, t);
+    Symbol *s = tok_symbol_of(p, t);
     if (!s)
-        parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+        tok_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
     const Value *v = &s->value;
     if (v->kind == VAL_UNSUPPORTED) {
-        if (defer_unsupported(p, v->what, v->declared_at)) {
+        if (tok_defer_unsupported(p, v->what, v->declared_at)) {
             fill(e, *terms, 0.0);
             return;
         }
-        use_unsupported(p, t, v);
+        tok_use_unsupported(p, t, v);
     }
     if (v->kind != VAL_NUMERIC)
-        parse_fail(p, t->pos, "numeric expression expected but '%.*s' is %s", t->len, t->text, value_kind_name(v->kind));
+        tok_fail(p, t->pos, "numeric expression expected but '%.*s' is %s", t->len, t->text, tok_value_kind_name(v->kind));
     if (v->terms == 1) {
         fill(e, *terms, v->v[0]);
     } else {
@@ -482,16 +454,16 @@ static void vector_literal(Parser *p, double e[5], int *terms)
     for (;;) {
         Token first;
         e[n++] = float_term(p, &first);
-        parse_comma(p);
-        Token *t = next(p);
-        if (is_punct(t, '>')) {
+        expr_comma(p);
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '>')) {
             if (n < 2)
-                fail_expected(p, t, "a second vector component");
+                tok_fail_expected(p, t, "a second vector component");
             break;
         }
         if (n == 5)
-            fail_expected(p, t, "'>' after five vector components");
-        unget(p);
+            tok_fail_expected(p, t, "'>' after five vector components");
+        tok_unget(p);
     }
     *terms = n;
 }
@@ -507,15 +479,15 @@ static Vec3 rotate_about_axis(Vec3 v, Vec3 axis, double degrees)
 
 static double variadic_minmax(Parser *p, int is_max)
 {
-    expect_punct(p, '(', is_max ? "'max'" : "'min'");
-    double v = parse_float_full(p);
+    tok_expect_punct(p, '(', is_max ? "'max'" : "'min'");
+    double v = expr_float_full(p);
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, ')'))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, ')'))
             return v;
-        if (!is_punct(t, ','))
-            fail_expected(p, t, "',' or ')' in the argument list");
-        double w = parse_float_full(p);
+        if (!tok_is_punct(t, ','))
+            tok_fail_expected(p, t, "',' or ')' in the argument list");
+        double w = expr_float_full(p);
         v = is_max ? fmax(v, w) : fmin(v, w);
     }
 }
@@ -541,27 +513,27 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
         *terms = 2;
         return 1;
     case KW_vcross:
-        expect_punct(p, '(', "'vcross'");
+        tok_expect_punct(p, '(', "'vcross'");
         va = vector_full(p);
-        expect_punct(p, ',', "the first vector");
+        tok_expect_punct(p, ',', "the first vector");
         vb = vector_full(p);
-        expect_punct(p, ')', "the second vector");
+        tok_expect_punct(p, ')', "the second vector");
         va = v3_cross(va, vb);
         goto vector;
     case KW_vnormalize:
-        expect_punct(p, '(', "'vnormalize'");
+        tok_expect_punct(p, '(', "'vnormalize'");
         va = vector_full(p);
-        expect_punct(p, ')', "the vector");
+        tok_expect_punct(p, ')', "the vector");
         if (v3_length(va) == 0.0)
-            parse_fail(p, t->pos, "cannot normalise a zero-length vector");
+            tok_fail(p, t->pos, "cannot normalise a zero-length vector");
         va = v3_normalize(va);
         goto vector;
     case KW_vrotate: {
-        expect_punct(p, '(', "'vrotate'");
+        tok_expect_punct(p, '(', "'vrotate'");
         va = vector_full(p);
-        expect_punct(p, ',', "the vector");
+        tok_expect_punct(p, ',', "the vector");
         vb = vector_full(p);
-        expect_punct(p, ')', "the angles");
+        tok_expect_punct(p, ')', "the angles");
         Transform tr;
         transform_identity(&tr);
         transform_rotate(&tr, vb);
@@ -569,28 +541,28 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
         goto vector;
     }
     case KW_vaxis_rotate: {
-        expect_punct(p, '(', "'vaxis_rotate'");
+        tok_expect_punct(p, '(', "'vaxis_rotate'");
         va = vector_full(p);
-        expect_punct(p, ',', "the vector");
+        tok_expect_punct(p, ',', "the vector");
         vb = vector_full(p);
-        expect_punct(p, ',', "the axis");
-        a = parse_float_full(p);
-        expect_punct(p, ')', "the angle");
+        tok_expect_punct(p, ',', "the axis");
+        a = expr_float_full(p);
+        tok_expect_punct(p, ')', "the angle");
         va = rotate_about_axis(va, vb, a);
         goto vector;
     }
     case KW_vdot:
-        expect_punct(p, '(', "'vdot'");
+        tok_expect_punct(p, '(', "'vdot'");
         va = vector_full(p);
-        expect_punct(p, ',', "the first vector");
+        tok_expect_punct(p, ',', "the first vector");
         vb = vector_full(p);
-        expect_punct(p, ')', "the second vector");
+        tok_expect_punct(p, ')', "the second vector");
         val = v3_dot(va, vb);
         break;
     case KW_vlength:
-        expect_punct(p, '(', "'vlength'");
+        tok_expect_punct(p, '(', "'vlength'");
         va = vector_full(p);
-        expect_punct(p, ')', "the vector");
+        tok_expect_punct(p, ')', "the vector");
         val = v3_length(va);
         break;
     case KW_abs: val = fabs(float_param(p)); break;
@@ -630,7 +602,7 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
         int moot = p->declaring && p->deferred_what;
         if (t->kw == KW_sqrt ? a < 0.0 : a <= 0.0) {
             if (!moot)
-                parse_fail(p, t->pos, "%s of negative number %f", keyword_name(t->kw), a);
+                tok_fail(p, t->pos, "%s of negative number %f", tok_keyword_name(t->kw), a);
             val = NAN;
         } else {
             val = t->kw == KW_ln ? log(a) : t->kw == KW_log ? log10(a) : sqrt(a);
@@ -651,74 +623,74 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
     case KW_max:
     case KW_min: val = variadic_minmax(p, t->kw == KW_max); break;
     case KW_select: {
-        expect_punct(p, '(', "'select'");
-        double c = parse_float_full(p), r[3];
+        tok_expect_punct(p, '(', "'select'");
+        double c = expr_float_full(p), r[3];
         int n = 0;
         for (;;) {
-            Token *s = next(p);
-            if (is_punct(s, ')') && n >= 2)
+            Token *s = tok_next(p);
+            if (tok_is_punct(s, ')') && n >= 2)
                 break;
-            if (!is_punct(s, ',') || n == 3)
-                fail_expected(p, s, n >= 2 ? "')' after the choices of 'select'" : "',' in 'select'");
-            r[n++] = parse_float_full(p);
+            if (!tok_is_punct(s, ',') || n == 3)
+                tok_fail_expected(p, s, n >= 2 ? "')' after the choices of 'select'" : "',' in 'select'");
+            r[n++] = expr_float_full(p);
         }
         val = n == 2 ? (c < 0 ? r[0] : r[1]) : (c < 0 ? r[0] : c == 0 ? r[1] : r[2]);
         break;
     }
     case KW_defined: {
-        expect_punct(p, '(', "'defined'");
-        Token *id = next_name(p);
+        tok_expect_punct(p, '(', "'defined'");
+        Token *id = tok_next_name(p);
         if (id->type != TK_WORD)
-            fail_expected(p, id, "an identifier in 'defined'");
-        val = id->elem ? id->elem->value.kind != VAL_NONE : id->kw < 0 && symbol_find(p, id->text, id->len) != NULL;
-        expect_punct(p, ')', "the identifier");
+            tok_fail_expected(p, id, "an identifier in 'defined'");
+        val = id->elem ? id->elem->value.kind != VAL_NONE : id->kw < 0 && tok_symbol_find(p, id->text, id->len) != NULL;
+        tok_expect_punct(p, ')', "the identifier");
         break;
     }
     case KW_strlen: {
-        expect_punct(p, '(', "'strlen'");
-        val = (double)strlen(parse_string(p));
-        expect_punct(p, ')', "the string");
+        tok_expect_punct(p, '(', "'strlen'");
+        val = (double)strlen(expr_string(p));
+        tok_expect_punct(p, ')', "the string");
         break;
     }
     case KW_strcmp: {
-        expect_punct(p, '(', "'strcmp'");
-        char *s1 = parse_string(p);
-        expect_punct(p, ',', "the first string");
-        char *s2 = parse_string(p);
-        expect_punct(p, ')', "the second string");
+        tok_expect_punct(p, '(', "'strcmp'");
+        char *s1 = expr_string(p);
+        tok_expect_punct(p, ',', "the first string");
+        char *s2 = expr_string(p);
+        tok_expect_punct(p, ')', "the second string");
         int c = strcmp(s1, s2);
         val = c < 0 ? -1 : c > 0;
         break;
     }
     case KW_val: {
-        expect_punct(p, '(', "'val'");
-        val = strtod(parse_string(p), NULL);
-        expect_punct(p, ')', "the string");
+        tok_expect_punct(p, '(', "'val'");
+        val = strtod(expr_string(p), NULL);
+        tok_expect_punct(p, ')', "the string");
         break;
     }
     case KW_asc: {
-        expect_punct(p, '(', "'asc'");
-        val = (unsigned char)parse_string(p)[0];
-        expect_punct(p, ')', "the string");
+        tok_expect_punct(p, '(', "'asc'");
+        val = (unsigned char)expr_string(p)[0];
+        tok_expect_punct(p, ')', "the string");
         break;
     }
     case KW_seed: {
         /* A new random stream, as POV-Ray's: seed() answers its number. */
         double v = float_param(p);
         if (p->rand_streams.n >= 1000000)
-            parse_fail(p, t->pos, "more than a million random streams (seed)");
-        *(unsigned *)tvec_push(p, &p->rand_streams) = (unsigned)int_clamped(v, INT_MIN, INT_MAX);
+            tok_fail(p, t->pos, "more than a million random streams (seed)");
+        *(unsigned *)tok_tvec_push(p, &p->rand_streams) = (unsigned)int_clamped(v, INT_MIN, INT_MAX);
         val = p->rand_streams.n - 1;
         break;
     }
     case KW_rand: {
-        expect_punct(p, '(', "'rand'");
-        Token at = *peek(p);
-        double v = parse_float_full(p);
-        expect_punct(p, ')', "the stream");
+        tok_expect_punct(p, '(', "'rand'");
+        Token at = *tok_peek(p);
+        double v = expr_float_full(p);
+        tok_expect_punct(p, ')', "the stream");
         int stream;
         if (!(v >= 0.0) || !int_from_double(v, 0, p->rand_streams.n - 1, &stream))
-            parse_fail(p, at.pos, "rand needs a stream made by seed(), not %g", v);
+            tok_fail(p, at.pos, "rand needs a stream made by seed(), not %g", v);
         /* POV-Ray's POV_rand(): a 32-bit linear congruential generator,
          * so that scenes draw the same numbers as in POV-Ray. */
         unsigned *state = (unsigned *)p->rand_streams.data + stream;
@@ -728,7 +700,7 @@ static int keyword_factor(Parser *p, const Token *t, double e[5], int *terms)
     }
     case KW_dimensions:
     case KW_dimension_size:
-        val = array_function(p, t);
+        val = tok_array_function(p, t);
         break;
     case KW_pi: val = M_PI; break;
     case KW_true: case KW_yes: case KW_on: val = 1.0; break;
@@ -770,16 +742,16 @@ static int is_unsupported_function(int kw)
 
 static void parse_num_factor(Parser *p, double e[5], int *terms)
 {
-    Token t = *next(p);
-    nesting_enter(p, &t);
+    Token t = *tok_next(p);
+    tok_nesting_enter(p, &t);
     if (t.type == TK_NUMBER) {
         fill(e, *terms, t.number);
-    } else if (is_punct(&t, '(')) {
-        parse_express(p, e, terms);
-        expect_punct(p, ')', "the expression in parentheses");
-    } else if (is_punct(&t, '<')) {
+    } else if (tok_is_punct(&t, '(')) {
+        expr_numeric(p, e, terms);
+        tok_expect_punct(p, ')', "the expression in parentheses");
+    } else if (tok_is_punct(&t, '<')) {
         vector_literal(p, e, terms);
-    } else if (is_punct(&t, '-') || is_punct(&t, '+') || is_punct(&t, '!')) {
+    } else if (tok_is_punct(&t, '-') || tok_is_punct(&t, '+') || tok_is_punct(&t, '!')) {
         parse_num_factor(p, e, terms);
         for (int i = 0; i < *terms; i++) {
             if (t.punct == '-')
@@ -790,28 +762,28 @@ static void parse_num_factor(Parser *p, double e[5], int *terms)
     } else if (t.type == TK_WORD && t.kw < 0) {
         identifier_factor(p, &t, e, terms);
     } else if (t.type == TK_WORD && is_colour_keyword(t.kw)) {
-        unget(p);
+        tok_unget(p);
         Colour c;
-        parse_colour(p, &c, 1);
+        expr_colour(p, &c, 1);
         e[0] = c.r; e[1] = c.g; e[2] = c.b; e[3] = c.filter; e[4] = c.transmit;
         *terms = 5;
     } else if (t.type == TK_WORD && is_unsupported_function(t.kw)) {
         char what[64];
-        snprintf(what, sizeof what, "'%s'", keyword_name(t.kw));
-        if (!defer_unsupported(p, tmp_strndup(p, what, strlen(what)), t.pos))
-            unsupported(p, &t);
+        snprintf(what, sizeof what, "'%s'", tok_keyword_name(t.kw));
+        if (!tok_defer_unsupported(p, tok_temp_strndup(p, what, strlen(what)), t.pos))
+            tok_unsupported(p, &t);
         fill(e, *terms, 0.0);
     } else if (t.type != TK_WORD || !keyword_factor(p, &t, e, terms)) {
-        fail_expected(p, &t, "a numeric expression");
+        tok_fail_expected(p, &t, "a numeric expression");
     }
-    nesting_leave(p);
+    tok_nesting_leave(p);
 
     /* v.x, c.red and friends */
-    if (!is_punct(next(p), '.')) {
-        unget(p);
+    if (!tok_is_punct(tok_next(p), '.')) {
+        tok_unget(p);
         return;
     }
-    Token *c = next(p);
+    Token *c = tok_next(p);
     int i = -1;
     switch (c->type == TK_WORD ? c->kw : -2) {
     case KW_x: case KW_u: case KW_red: i = 0; break;
@@ -826,13 +798,13 @@ static void parse_num_factor(Parser *p, double e[5], int *terms)
         return;
     }
     default:
-        fail_expected(p, c, "x, y, z, t, u, v or a colour component after '.'");
+        tok_fail_expected(p, c, "x, y, z, t, u, v or a colour component after '.'");
     }
     /* In a declaration already known to be unsupported (deferred), the
      * placeholder 0 stands for a value of unknown shape: any component of
      * it is fine, and the declaration's use reports the real reason. */
     if (i >= *terms && !(p->declaring && p->deferred_what))
-        parse_fail(p, c->pos, "'.%s' asks for a component the expression does not have", keyword_name(c->kw));
+        tok_fail(p, c->pos, "'.%s' asks for a component the expression does not have", tok_keyword_name(c->kw));
     double v = e[i];
     fill(e, 5, v);
     *terms = 1;
@@ -858,26 +830,26 @@ static double decode_srgb(Parser *p, double c)
 /* POV-Ray's Parse_Colour: an optional color/colour, then rgb-family keywords
  * (only first), an identifier or expression (only first), and component
  * keywords (red 0.5 filter 0.3) in any number. */
-void parse_colour(Parser *p, Colour *out, int expect_ft)
+void expr_colour(Parser *p, Colour *out, int expect_ft)
 {
     double c[5] = { 0 };
     int started = 0;
-    Token *t = next(p);
+    Token *t = tok_next(p);
     SourcePos start = t->pos;
-    if (!is_kw(t, KW_color) && !is_kw(t, KW_colour))
-        unget(p);
+    if (!tok_is_kw(t, KW_color) && !tok_is_kw(t, KW_colour))
+        tok_unget(p);
     for (;;) {
-        t = next(p);
+        t = tok_next(p);
         Token at = *t;
         if (t->type == TK_WORD && is_colour_keyword(t->kw) && t->kw != KW_color && t->kw != KW_colour) {
             int kw = t->kw, terms = 0, is_srgb = 0;
             switch (kw) {
-            case KW_red: c[0] = parse_float(p); break;
-            case KW_green: c[1] = parse_float(p); break;
-            case KW_blue: c[2] = parse_float(p); break;
+            case KW_red: c[0] = expr_float(p); break;
+            case KW_green: c[1] = expr_float(p); break;
+            case KW_blue: c[2] = expr_float(p); break;
             case KW_alpha:
-            case KW_filter: c[3] = parse_float(p); break;
-            case KW_transmit: c[4] = parse_float(p); break;
+            case KW_filter: c[3] = expr_float(p); break;
+            case KW_transmit: c[4] = expr_float(p); break;
             case KW_srgb: is_srgb = 1; terms = 3; break;
             case KW_srgbf: is_srgb = 1; terms = 4; break;
             case KW_srgbt: is_srgb = 1; terms = 4; break;
@@ -888,14 +860,14 @@ void parse_colour(Parser *p, Colour *out, int expect_ft)
             }
             if (terms) {
                 if (started) {
-                    unget(p);
+                    tok_unget(p);
                     break;
                 }
                 if (is_srgb && !p->gamma_set)
-                    parse_fail(p, at.pos, "cannot parse sRGB colours before assumed_gamma has been set");
+                    tok_fail(p, at.pos, "cannot parse sRGB colours before assumed_gamma has been set");
                 double e[5] = { 0 };
                 int n = terms;
-                parse_express(p, e, &n);
+                expr_numeric(p, e, &n);
                 for (int i = 0; i < n && i < 5; i++)
                     c[i] = e[i];
                 if (kw == KW_rgbt || kw == KW_srgbt) {
@@ -909,30 +881,30 @@ void parse_colour(Parser *p, Colour *out, int expect_ft)
             started = 1;
             continue;
         }
-        if (!started && (token_starts_expression(p, t) && !is_kw(t, KW_color) && !is_kw(t, KW_colour))) {
-            unget(p);
+        if (!started && (expr_starts_expression(p, t) && !tok_is_kw(t, KW_color) && !tok_is_kw(t, KW_colour))) {
+            tok_unget(p);
             double e[5] = { 0 };
             int n = expect_ft ? 5 : 3;
-            parse_express(p, e, &n);
+            expr_numeric(p, e, &n);
             if (n < 3 || (expect_ft && n != 5))
-                parse_fail(p, at.pos, "colour expression expected but float or vector expression found");
+                tok_fail(p, at.pos, "colour expression expected but float or vector expression found");
             for (int i = 0; i < n && i < 5; i++)
                 c[i] = e[i];
             started = 1;
             continue;
         }
         if (t->type == TK_WORD && t->kw < 0 && !started) {
-            Symbol *s = token_symbol(p, t);
+            Symbol *s = tok_symbol_of(p, t);
             if (!s)
-                parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+                tok_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
             if (s->value.kind == VAL_UNSUPPORTED)
-                use_unsupported(p, t, &s->value);
+                tok_use_unsupported(p, t, &s->value);
         }
-        unget(p);
+        tok_unget(p);
         break;
     }
     if (!started)
-        fail_expected(p, peek(p), "a colour");
+        tok_fail_expected(p, tok_peek(p), "a colour");
     finite_or_fail(p, start, c, expect_ft ? 5 : 3, "colour");
     out->r = c[0];
     out->g = c[1];
@@ -945,76 +917,76 @@ void parse_colour(Parser *p, Colour *out, int expect_ft)
 
 static char *string_param(Parser *p)
 {
-    char *s = parse_string(p);
+    char *s = expr_string(p);
     return s;
 }
 
-char *parse_string(Parser *p)
+char *expr_string(Parser *p)
 {
-    Token t = *next(p);
+    Token t = *tok_next(p);
     if (t.type == TK_STRING)
         return t.string;
     if (t.type == TK_WORD && t.kw < 0) {
-        Symbol *s = token_symbol(p, &t);
+        Symbol *s = tok_symbol_of(p, &t);
         if (s && s->value.kind == VAL_STRING)
             return s->value.string;
         if (s && s->value.kind == VAL_UNSUPPORTED)
-            use_unsupported(p, &t, &s->value);
+            tok_use_unsupported(p, &t, &s->value);
         if (!s)
-            parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
-        fail_expected(p, &t, "a string");
+            tok_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+        tok_fail_expected(p, &t, "a string");
     }
     char buf[512];
     switch (t.type == TK_WORD ? t.kw : -1) {
     case KW_concat: {
-        expect_punct(p, '(', "'concat'");
+        tok_expect_punct(p, '(', "'concat'");
         char *acc = string_param(p);
         for (;;) {
-            Token *s = next(p);
-            if (is_punct(s, ')'))
+            Token *s = tok_next(p);
+            if (tok_is_punct(s, ')'))
                 return acc;
-            if (!is_punct(s, ','))
-                fail_expected(p, s, "',' or ')' in 'concat'");
+            if (!tok_is_punct(s, ','))
+                tok_fail_expected(p, s, "',' or ')' in 'concat'");
             char *more = string_param(p);
             size_t n1 = strlen(acc), n2 = strlen(more);
             if (n1 + n2 > (1u << 24))
-                parse_fail(p, s->pos, "string too long");
-            char *joined = tmp_alloc(p, n1 + n2 + 1);
+                tok_fail(p, s->pos, "string too long");
+            char *joined = tok_temp_alloc(p, n1 + n2 + 1);
             memcpy(joined, acc, n1);
             memcpy(joined + n1, more, n2 + 1);
             acc = joined;
         }
     }
     case KW_str: {
-        expect_punct(p, '(', "'str'");
-        double v = parse_float_full(p);
-        expect_punct(p, ',', "the value");
-        int w = int_clamped(parse_float_full(p), -100, 100);
-        expect_punct(p, ',', "the width");
-        int prec = int_clamped(parse_float_full(p), -1, 40);
-        expect_punct(p, ')', "the precision");
+        tok_expect_punct(p, '(', "'str'");
+        double v = expr_float_full(p);
+        tok_expect_punct(p, ',', "the value");
+        int w = int_clamped(expr_float_full(p), -100, 100);
+        tok_expect_punct(p, ',', "the width");
+        int prec = int_clamped(expr_float_full(p), -1, 40);
+        tok_expect_punct(p, ')', "the precision");
         if (prec < 0)
             prec = 6;
         if (w < 0)
             snprintf(buf, sizeof buf, "%0*.*f", -w, prec, v);
         else
             snprintf(buf, sizeof buf, "%*.*f", w, prec, v);
-        return tmp_strndup(p, buf, strlen(buf));
+        return tok_temp_strndup(p, buf, strlen(buf));
     }
     case KW_vstr: {
-        expect_punct(p, '(', "'vstr'");
-        int n = int_clamped(parse_float_full(p), 2, 5);
-        expect_punct(p, ',', "the component count");
+        tok_expect_punct(p, '(', "'vstr'");
+        int n = int_clamped(expr_float_full(p), 2, 5);
+        tok_expect_punct(p, ',', "the component count");
         double e[5] = { 0 };
         int terms = n;
-        parse_express(p, e, &terms);
-        expect_punct(p, ',', "the vector");
+        expr_numeric(p, e, &terms);
+        tok_expect_punct(p, ',', "the vector");
         char *sep = string_param(p);
-        expect_punct(p, ',', "the separator");
-        int w = int_clamped(parse_float_full(p), -100, 100);
-        expect_punct(p, ',', "the width");
-        int prec = int_clamped(parse_float_full(p), -1, 40);
-        expect_punct(p, ')', "the precision");
+        tok_expect_punct(p, ',', "the separator");
+        int w = int_clamped(expr_float_full(p), -100, 100);
+        tok_expect_punct(p, ',', "the width");
+        int prec = int_clamped(expr_float_full(p), -1, 40);
+        tok_expect_punct(p, ')', "the precision");
         if (prec < 0)
             prec = 6;
         /* as str(): a negative width pads with zeros */
@@ -1029,43 +1001,43 @@ char *parse_string(Parser *p)
             if (used >= sizeof buf)
                 used = sizeof buf - 1;
         }
-        return tmp_strndup(p, buf, strlen(buf));
+        return tok_temp_strndup(p, buf, strlen(buf));
     }
     case KW_chr: {
         /* POV-Ray: "Value %d cannot be used in chr(...)" outside 0..65535;
          * hstrace's strings are bytes, so codes beyond a byte become '?'. */
-        expect_punct(p, '(', "the function name");
-        Token at = *peek(p);
-        double v = parse_float_full(p);
-        expect_punct(p, ')', "the argument");
+        tok_expect_punct(p, '(', "the function name");
+        Token at = *tok_peek(p);
+        double v = expr_float_full(p);
+        tok_expect_punct(p, ')', "the argument");
         int c;
         if (!int_from_double(v, 0, 65535, &c))
-            parse_fail(p, at.pos, "chr(%g): a character code is from 0 to 65535", v);
+            tok_fail(p, at.pos, "chr(%g): a character code is from 0 to 65535", v);
         buf[0] = (char)(c > 0 && c < 256 ? c : '?');
-        return tmp_strndup(p, buf, 1);
+        return tok_temp_strndup(p, buf, 1);
     }
     case KW_substr: {
-        expect_punct(p, '(', "'substr'");
+        tok_expect_punct(p, '(', "'substr'");
         char *s = string_param(p);
-        expect_punct(p, ',', "the string");
-        double start = parse_float_full(p);
-        expect_punct(p, ',', "the start");
-        double len = parse_float_full(p);
-        expect_punct(p, ')', "the length");
+        tok_expect_punct(p, ',', "the string");
+        double start = expr_float_full(p);
+        tok_expect_punct(p, ',', "the start");
+        double len = expr_float_full(p);
+        tok_expect_punct(p, ')', "the length");
         /* POV-Ray truncates both to integers, then checks the range */
         size_t n = strlen(s);
         int from, count;
         if (!int_from_double(start, 1, INT_MAX, &from) || !int_from_double(len, 0, INT_MAX, &count) ||
             (size_t)from - 1 + (size_t)count > n)
-            parse_fail(p, t.pos, "'substr' range outside the string");
-        return tmp_strndup(p, s + from - 1, (size_t)count);
+            tok_fail(p, t.pos, "'substr' range outside the string");
+        return tok_temp_strndup(p, s + from - 1, (size_t)count);
     }
     case KW_strupr:
     case KW_strlwr: {
-        expect_punct(p, '(', "the function name");
+        tok_expect_punct(p, '(', "the function name");
         char *s = string_param(p);
-        expect_punct(p, ')', "the string");
-        char *r = tmp_strndup(p, s, strlen(s));
+        tok_expect_punct(p, ')', "the string");
+        char *r = tok_temp_strndup(p, s, strlen(s));
         for (char *q = r; *q; q++)
             if (t.kw == KW_strupr && *q >= 'a' && *q <= 'z')
                 *q = (char)(*q - 32);
@@ -1074,7 +1046,7 @@ char *parse_string(Parser *p)
         return r;
     }
     default:
-        fail_expected(p, &t, "a string");
+        tok_fail_expected(p, &t, "a string");
     }
 }
 
@@ -1086,10 +1058,10 @@ static void compose_checked(Parser *p, Transform *tr, const Transform *u, Source
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++)
             if (!isfinite(tr->m[i][j]) || !isfinite(tr->inv[i][j]))
-                parse_fail(p, at, "this transform makes the object degenerate (infinite or invalid values)");
+                tok_fail(p, at, "this transform makes the object degenerate (infinite or invalid values)");
 }
 
-int parse_transform_item(Parser *p, const Token *t, Transform *tr)
+int expr_transform_item(Parser *p, const Token *t, Transform *tr)
 {
     if (t->type != TK_WORD)
         return 0;
@@ -1098,29 +1070,29 @@ int parse_transform_item(Parser *p, const Token *t, Transform *tr)
     transform_identity(&u);
     switch (t->kw) {
     case KW_translate:
-        transform_translate(&u, parse_vector(p));
+        transform_translate(&u, expr_vector(p));
         break;
     case KW_rotate:
-        transform_rotate(&u, parse_vector(p));
+        transform_rotate(&u, expr_vector(p));
         break;
     case KW_scale:
-        transform_scale(&u, parse_scale_vector(p));
+        transform_scale(&u, expr_scale_vector(p));
         break;
     case KW_matrix: {
         double m[12];
-        expect_punct(p, '<', "'matrix'");
+        tok_expect_punct(p, '<', "'matrix'");
         for (int i = 0; i < 12; i++) {
-            m[i] = parse_float(p);
+            m[i] = expr_float(p);
             if (i < 11)
-                parse_comma(p);
+                expr_comma(p);
         }
-        expect_punct(p, '>', "the twelve matrix values");
+        tok_expect_punct(p, '>', "the twelve matrix values");
         if (!transform_matrix(&u, m))
-            parse_fail(p, at.pos, "singular matrix");
+            tok_fail(p, at.pos, "singular matrix");
         break;
     }
     case KW_transform:
-        parse_transform_block(p, &u);
+        expr_transform_block(p, &u);
         break;
     default:
         return 0;
@@ -1133,45 +1105,45 @@ static int transform_identifier(Parser *p, const Token *t, Transform *out)
 {
     if (t->type != TK_WORD || t->kw >= 0)
         return 0;
-    Symbol *s = token_symbol(p, t);
+    Symbol *s = tok_symbol_of(p, t);
     if (!s)
-        parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+        tok_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
     if (s->value.kind == VAL_UNSUPPORTED)
-        use_unsupported(p, t, &s->value);
+        tok_use_unsupported(p, t, &s->value);
     if (s->value.kind != VAL_TRANSFORM)
-        parse_fail(p, t->pos, "'%.*s' is %s, not a transform", t->len, t->text, value_kind_name(s->value.kind));
+        tok_fail(p, t->pos, "'%.*s' is %s, not a transform", t->len, t->text, tok_value_kind_name(s->value.kind));
     *out = *s->value.transform;
     return 1;
 }
 
-void parse_transform_block(Parser *p, Transform *tr)
+void expr_transform_block(Parser *p, Transform *tr)
 {
-    Token *t = next(p);
+    Token *t = tok_next(p);
     Transform u;
-    if (!is_punct(t, '{')) {
+    if (!tok_is_punct(t, '{')) {
         if (transform_identifier(p, t, &u)) {
             transform_compose(tr, &u);
             return;
         }
-        fail_expected(p, t, "'{' after 'transform'");
+        tok_fail_expected(p, t, "'{' after 'transform'");
     }
-    t = next(p);
+    t = tok_next(p);
     if (transform_identifier(p, t, &u))
         transform_compose(tr, &u);
     else
-        unget(p);
+        tok_unget(p);
     for (;;) {
-        t = next(p);
-        if (is_punct(t, '}'))
+        t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             return;
-        if (is_kw(t, KW_inverse)) {
+        if (tok_is_kw(t, KW_inverse)) {
             double tmp[4][4];
             memcpy(tmp, tr->m, sizeof tmp);
             memcpy(tr->m, tr->inv, sizeof tmp);
             memcpy(tr->inv, tmp, sizeof tmp);
             continue;
         }
-        if (!parse_transform_item(p, t, tr))
-            fail_expected(p, t, "a transform or '}' in 'transform'");
+        if (!expr_transform_item(p, t, tr))
+            tok_fail_expected(p, t, "a transform or '}' in 'transform'");
     }
 }

@@ -3,7 +3,7 @@
  * A file opened for reading is read whole into the temporary arena at #fopen
  * and tokenised from there, so no FILE* stays open for it. A file opened for
  * writing keeps its FILE* until #fclose or the end of the parse, where
- * user_files_close_all() closes it whether the parse succeeded or not.
+ * tok_user_files_close_all() closes it whether the parse succeeded or not.
  *
  * As in POV-Ray: the file identifier is global; #read declares (globally)
  * or overwrites its variables; when a #read reaches the end of the data the
@@ -19,7 +19,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 typedef struct UserFile {
     const char *name;  /* as written in #fopen, for messages (interned) */
@@ -41,13 +41,13 @@ static UserFile *new_user_file(Parser *p, const char *name, SourcePos at)
     if (f) {
         p->free_user_files = f->next_free;
     } else {
-        f = tmp_alloc(p, sizeof *f);
-        *(UserFile **)tvec_push(p, &p->user_files) = f;
+        f = tok_temp_alloc(p, sizeof *f);
+        *(UserFile **)tok_tvec_push(p, &p->user_files) = f;
     }
     memset(f, 0, sizeof *f);
     char shown[512];
-    text_escape(shown, sizeof shown, name, NULL);
-    f->name = intern_name(p, shown, (int)strlen(shown));
+    tok_text_escape(shown, sizeof shown, name, NULL);
+    f->name = tok_intern_name(p, shown, (int)strlen(shown));
     f->opened_at = at;
     return f;
 }
@@ -70,10 +70,10 @@ static void close_output(Parser *p, UserFile *f, SourcePos at, int report)
     if (fclose(out) != 0)
         failed = 1;
     if (failed && report)
-        parse_fail_io(p, at, "error writing '%s'", f->name);
+        tok_fail_io(p, at, "error writing '%s'", f->name);
 }
 
-void user_files_close_all(Parser *p, int report)
+void tok_user_files_close_all(Parser *p, int report)
 {
     UserFile **files = p->user_files.data;
     for (int i = 0; i < p->user_files.n; i++)
@@ -85,15 +85,15 @@ void user_files_close_all(Parser *p, int report)
  * latter, as #include does. */
 static int read_data(Parser *p, const char *name, SourcePos at, SourceText *out)
 {
-    if (source_read(p, name, at, out))
+    if (tok_source_read(p, name, at, out))
         return 1;
     if (name[0] == '/')
         return 0;
     int e = errno;
     const char *dirs[130];
-    int nd = lex_search_dirs(p, dirs, 128);
+    int nd = tok_search_dirs(p, dirs, 128);
     for (int i = 0; i < nd; i++)
-        if (source_read_in(p, dirs[i], name, at, out))
+        if (tok_source_read_in(p, dirs[i], name, at, out))
             return 1;
     errno = e;
     return 0;
@@ -106,11 +106,11 @@ static FILE *open_for_writing(Parser *p, const char *name, int append, SourcePos
     const char *doing = append ? "appending" : "writing";
     int fd = open(name, O_WRONLY | O_CREAT | O_NONBLOCK | O_CLOEXEC | (append ? O_APPEND : O_TRUNC), 0666);
     if (fd < 0)
-        parse_fail_io(p, at, "cannot open '%s' for %s: %s", name, doing, strerror(errno));
+        tok_fail_io(p, at, "cannot open '%s' for %s: %s", name, doing, strerror(errno));
     struct stat st;
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
         close(fd);
-        parse_fail_io(p, at, "cannot open '%s' for %s: it is not a regular file", name, doing);
+        tok_fail_io(p, at, "cannot open '%s' for %s: it is not a regular file", name, doing);
     }
     int flags = fcntl(fd, F_GETFL);
     if (flags >= 0)
@@ -119,7 +119,7 @@ static FILE *open_for_writing(Parser *p, const char *name, int append, SourcePos
     if (!out) {
         int e = errno;
         close(fd);
-        parse_fail_io(p, at, "cannot open '%s' for %s: %s", name, doing, strerror(e));
+        tok_fail_io(p, at, "cannot open '%s' for %s: %s", name, doing, strerror(e));
     }
     return out;
 }
@@ -128,53 +128,53 @@ static FILE *open_for_writing(Parser *p, const char *name, int append, SourcePos
 static UserFile *file_of(Parser *p, const char *directive, int reading)
 {
     p->no_macro_calls++;
-    Token t = *next(p);
+    Token t = *tok_next(p);
     p->no_macro_calls--;
-    Symbol *s = t.type == TK_WORD && t.kw < 0 && !t.elem ? symbol_find(p, t.text, t.len) : NULL;
+    Symbol *s = t.type == TK_WORD && t.kw < 0 && !t.elem ? tok_symbol_find(p, t.text, t.len) : NULL;
     if (!s && t.type == TK_WORD && t.kw < 0 && !t.elem)
-        parse_fail(p, t.pos,
+        tok_fail(p, t.pos,
                    "'%.*s' is not an open file: no #fopen declared it, or it was closed (by #fclose, or when "
                    "a #read reached the end of its data)",
                    t.len, t.text);
     if (!s || s->value.kind != VAL_FILE) {
         char what[80];
         snprintf(what, sizeof what, "a file identifier opened by #fopen after '%s ('", directive);
-        fail_expected(p, &t, what);
+        tok_fail_expected(p, &t, what);
     }
     UserFile *f = s->value.file;
     if (reading && !f->reading)
-        parse_fail(p, t.pos, "cannot read from '%.*s': file '%s' is open for writing", t.len, t.text, f->name);
+        tok_fail(p, t.pos, "cannot read from '%.*s': file '%s' is open for writing", t.len, t.text, f->name);
     if (!reading && f->reading)
-        parse_fail(p, t.pos, "cannot write to '%.*s': file '%s' is open for reading", t.len, t.text, f->name);
+        tok_fail(p, t.pos, "cannot write to '%.*s': file '%s' is open for reading", t.len, t.text, f->name);
     return f;
 }
 
 /* ---- #fopen / #fclose -------------------------------------------------------- */
 
-void directive_fopen(Parser *p, const Token *hash)
+void tok_fopen(Parser *p, const Token *hash)
 {
     (void)hash;
     p->no_macro_calls++;
-    Token id = *next(p);
+    Token id = *tok_next(p);
     p->no_macro_calls--;
     if (id.type != TK_WORD || id.kw >= 0 || id.elem)
-        fail_expected(p, &id, "a new identifier after '#fopen'");
-    Symbol *old = symbol_find(p, id.text, id.len);
+        tok_fail_expected(p, &id, "a new identifier after '#fopen'");
+    Symbol *old = tok_symbol_find(p, id.text, id.len);
     if (old && old->value.kind != VAL_FILE)
-        parse_fail(p, id.pos, "#fopen needs a new identifier: '%.*s' is already declared as %s", id.len, id.text,
-                   value_kind_name(old->value.kind));
-    SourcePos name_at = peek(p)->pos;
-    char *name = parse_string(p);
-    Token mode = *next(p);
-    if (!is_kw(&mode, KW_read) && !is_kw(&mode, KW_write) && !is_kw(&mode, KW_append))
-        fail_expected(p, &mode, "'read', 'write' or 'append' after the file name of '#fopen'");
+        tok_fail(p, id.pos, "#fopen needs a new identifier: '%.*s' is already declared as %s", id.len, id.text,
+                   tok_value_kind_name(old->value.kind));
+    SourcePos name_at = tok_peek(p)->pos;
+    char *name = p->hooks->string(p);
+    Token mode = *tok_next(p);
+    if (!tok_is_kw(&mode, KW_read) && !tok_is_kw(&mode, KW_write) && !tok_is_kw(&mode, KW_append))
+        tok_fail_expected(p, &mode, "'read', 'write' or 'append' after the file name of '#fopen'");
     if (old) /* POV-Ray lets an open file's identifier be reused */
         close_output(p, old->value.file, id.pos, 1);
     UserFile *f = new_user_file(p, name, name_at);
     if (mode.kw == KW_read) {
         SourceText text;
         if (!read_data(p, name, name_at, &text))
-            parse_fail_io(p, name_at, "cannot open '%s' for reading: %s", name, strerror(errno));
+            tok_fail_io(p, name_at, "cannot open '%s' for reading: %s", name, strerror(errno));
         f->reading = 1;
         f->data.name = f->name;
         f->data.buf = text.text;
@@ -182,30 +182,30 @@ void directive_fopen(Parser *p, const Token *hash)
         f->data.line = f->data.col = 1;
     } else {
         if (p->opts->forbid_writes)
-            parse_fail_io(p, name_at, "writing files is not allowed here: '%s'", name);
+            tok_fail_io(p, name_at, "writing files is not allowed here: '%s'", name);
         f->out = open_for_writing(p, name, mode.kw == KW_append, name_at);
     }
     Value v = { .kind = VAL_FILE, .file = f };
-    symbol_define_global(p, id.text, id.len, &v);
+    tok_symbol_define_global(p, id.text, id.len, &v);
 }
 
 /* POV-Ray accepts #fclose of an identifier that is no longer (or never
  * was) an open file: a file closed at the end of its data may be closed
  * again by the scene. */
-void directive_fclose(Parser *p)
+void tok_fclose(Parser *p)
 {
     p->no_macro_calls++;
-    Token id = *next(p);
+    Token id = *tok_next(p);
     p->no_macro_calls--;
     if (id.type != TK_WORD || id.kw >= 0)
-        fail_expected(p, &id, "a file identifier after '#fclose'");
-    Symbol *s = id.elem ? NULL : symbol_find(p, id.text, id.len);
+        tok_fail_expected(p, &id, "a file identifier after '#fclose'");
+    Symbol *s = id.elem ? NULL : tok_symbol_find(p, id.text, id.len);
     if (!s || s->value.kind != VAL_FILE)
         return;
     UserFile *f = s->value.file;
     close_output(p, f, id.pos, 1);
-    symbol_undef(p, id.text, id.len);
-    if (!symbol_find(p, id.text, id.len))
+    tok_symbol_undef(p, id.text, id.len);
+    if (!tok_symbol_find(p, id.text, id.len))
         forget_user_file(p, f);
 }
 
@@ -216,7 +216,7 @@ void directive_fclose(Parser *p)
  * reads it too, from the file's own cursor. */
 static void data_next(Parser *p, UserFile *f, Token *t)
 {
-    lex_token(p, &f->data, t);
+    tok_lex(p, &f->data, t);
 }
 
 /* Puts t back; at the end of the data there is nothing to put back. */
@@ -239,7 +239,7 @@ static int data_float(Parser *p, UserFile *f, double *val)
         sign = t.punct == '-' ? -1 : 1;
         data_next(p, f, &t);
         if (t.type != TK_NUMBER)
-            parse_fail(p, t.pos, "expected a number after the sign");
+            tok_fail(p, t.pos, "expected a number after the sign");
     }
     if (t.type != TK_NUMBER) {
         data_unread(f, &t);
@@ -270,27 +270,27 @@ static int read_value(Parser *p, UserFile *f, Value *v, int *got)
         while (data_float(p, f, &x)) {
             Token c;
             if (n == 5)
-                parse_fail(p, t.pos, "more than 5 components in this vector");
+                tok_fail(p, t.pos, "more than 5 components in this vector");
             v->v[n++] = x;
             data_next(p, f, &c);
             if (c.type == TK_EOF)
-                parse_fail(p, t.pos, "this vector has no closing '>'");
+                tok_fail(p, t.pos, "this vector has no closing '>'");
             if (!(c.type == TK_PUNCT && c.punct == ','))
                 data_unread(f, &c);
         }
         Token close;
         data_next(p, f, &close);
         if (!(close.type == TK_PUNCT && close.punct == '>'))
-            parse_fail(p, close.pos, "expected a vector component or '>'");
+            tok_fail(p, close.pos, "expected a vector component or '>'");
         if (n < 2)
-            parse_fail(p, t.pos, "a vector needs at least 2 components");
+            tok_fail(p, t.pos, "a vector needs at least 2 components");
         v->kind = VAL_NUMERIC;
         v->terms = n;
     } else if (t.type == TK_STRING) {
         v->kind = VAL_STRING;
         v->string = t.string;
     } else {
-        parse_fail(p, t.pos, "expected a float, a vector or a string");
+        tok_fail(p, t.pos, "expected a float, a vector or a string");
     }
     *got = 1;
     Token after;
@@ -308,39 +308,39 @@ static int read_value(Parser *p, UserFile *f, Value *v, int *got)
 static void store(Parser *p, const Token *t, const Value *v)
 {
     if (t->elem) {
-        Symbol *e = token_element(t);
+        Symbol *e = tok_element_of(t);
         if (e) {
-            value_give_up(p, &e->value);
+            tok_value_give_up(p, &e->value);
             e->value = *v;
         }
         return;
     }
-    symbol_set(p, t->text, t->len, 0, v);
+    tok_symbol_set(p, t->text, t->len, 0, v);
 }
 
-void directive_read(Parser *p)
+void tok_read(Parser *p)
 {
-    expect_punct(p, '(', "'#read'");
-    Token file_tok = *peek(p);
+    tok_expect_punct(p, '(', "'#read'");
+    Token file_tok = *tok_peek(p);
     UserFile *f = file_of(p, "#read", 1);
     int ended = 0;
-    if (!is_punct(next(p), ','))
-        unget(p);
+    if (!tok_is_punct(tok_next(p), ','))
+        tok_unget(p);
     for (;;) {
         Token *t;
         p->no_macro_calls++;
-        t = next(p);
+        t = tok_next(p);
         p->no_macro_calls--;
-        if (is_punct(t, ')'))
+        if (tok_is_punct(t, ')'))
             break;
         if (t->type != TK_WORD || t->kw >= 0)
-            fail_expected(p, t, "a variable or ')' in '#read'");
+            tok_fail_expected(p, t, "a variable or ')' in '#read'");
         Token var = *t;
         if (!var.elem) {
-            Symbol *old = symbol_find(p, var.text, var.len);
+            Symbol *old = tok_symbol_find(p, var.text, var.len);
             if (old && old->value.kind != VAL_NUMERIC && old->value.kind != VAL_STRING)
-                parse_fail(p, var.pos, "'#read' cannot store into '%.*s', which is %s", var.len, var.text,
-                           value_kind_name(old->value.kind));
+                tok_fail(p, var.pos, "'#read' cannot store into '%.*s', which is %s", var.len, var.text,
+                           tok_value_kind_name(old->value.kind));
         }
         if (!ended) {
             Value v;
@@ -349,13 +349,13 @@ void directive_read(Parser *p)
             if (got)
                 store(p, &var, &v);
         }
-        t = next(p);
-        if (!is_punct(t, ','))
-            unget(p);
+        t = tok_next(p);
+        if (!tok_is_punct(t, ','))
+            tok_unget(p);
     }
     if (ended) { /* POV-Ray closes the file and forgets its identifier */
-        symbol_undef(p, file_tok.text, file_tok.len);
-        if (!symbol_find(p, file_tok.text, file_tok.len))
+        tok_symbol_undef(p, file_tok.text, file_tok.len);
+        if (!tok_symbol_find(p, file_tok.text, file_tok.len))
             forget_user_file(p, f);
     }
 }
@@ -383,18 +383,18 @@ static int binary_type(int kw, long *lo, long *hi, int *bytes, int *big_endian)
 static void write_binary(Parser *p, UserFile *f, long lo, long hi, int bytes, int big_endian)
 {
     for (;;) {
-        Token *t = peek(p);
-        if (is_punct(t, ',') || is_punct(t, ')'))
+        Token *t = tok_peek(p);
+        if (tok_is_punct(t, ',') || tok_is_punct(t, ')'))
             return;
-        if (!token_starts_expression(p, t))
-            fail_expected(p, next(p), "a number after the binary type in '#write'");
-        Token at = *peek(p);
+        if (!p->hooks->starts_expression(p, t))
+            tok_fail_expected(p, tok_next(p), "a number after the binary type in '#write'");
+        Token at = *tok_peek(p);
         double e[5] = { 0 };
         int terms = 1;
-        parse_express(p, e, &terms);
+        p->hooks->expression(p, e, &terms);
         for (int i = 0; i < terms; i++) {
             if (isnan(e[i]))
-                parse_fail(p, at.pos, "#write cannot write nan as a binary integer");
+                tok_fail(p, at.pos, "#write cannot write nan as a binary integer");
             long val = int_clamped(floor(e[i] + 0.5), (int)lo, (int)hi);
             unsigned long u = (unsigned long)val;
             for (int j = 0; j < bytes; j++) {
@@ -405,31 +405,31 @@ static void write_binary(Parser *p, UserFile *f, long lo, long hi, int bytes, in
     }
 }
 
-void directive_write(Parser *p)
+void tok_write(Parser *p)
 {
-    expect_punct(p, '(', "'#write'");
+    tok_expect_punct(p, '(', "'#write'");
     UserFile *f = file_of(p, "#write", 0);
     for (;;) {
-        Token *t = peek(p);
-        if (is_punct(t, ')')) {
-            next(p);
+        Token *t = tok_peek(p);
+        if (tok_is_punct(t, ')')) {
+            tok_next(p);
             break;
         }
-        if (is_punct(t, ',')) {
-            next(p);
+        if (tok_is_punct(t, ',')) {
+            tok_next(p);
             continue;
         }
         long lo, hi;
         int bytes, big_endian;
         if (t->type == TK_WORD && binary_type(t->kw, &lo, &hi, &bytes, &big_endian)) {
-            next(p);
+            tok_next(p);
             write_binary(p, f, lo, hi, bytes, big_endian);
-        } else if (token_starts_string(p, t)) {
-            fputs(parse_string(p), f->out);
-        } else if (token_starts_expression(p, t)) {
+        } else if (p->hooks->starts_string(p, t)) {
+            fputs(p->hooks->string(p), f->out);
+        } else if (p->hooks->starts_expression(p, t)) {
             double e[5] = { 0 };
             int terms = 1;
-            parse_express(p, e, &terms);
+            p->hooks->expression(p, e, &terms);
             if (terms == 1) {
                 fprintf(f->out, "%g", e[0]);
             } else {
@@ -439,7 +439,7 @@ void directive_write(Parser *p)
                 fputs("> ", f->out);
             }
         } else {
-            fail_expected(p, next(p), "a string or an expression in '#write'");
+            tok_fail_expected(p, tok_next(p), "a string or an expression in '#write'");
         }
     }
 }

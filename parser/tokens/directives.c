@@ -11,35 +11,18 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
-int is_punct(const Token *t, int c) { return t->type == TK_PUNCT && t->punct == c; }
-int is_kw(const Token *t, int kw) { return t->type == TK_WORD && t->kw == kw; }
+int tok_is_punct(const Token *t, int c) { return t->type == TK_PUNCT && t->punct == c; }
+int tok_is_kw(const Token *t, int kw) { return t->type == TK_WORD && t->kw == kw; }
 
 static void handle_directive(Parser *p, const Token *hash);
 
-void debug_end_line(Parser *p)
-{
-    if (p->debug_line_open)
-        fputc('\n', stderr);
-    p->debug_line_open = 0;
-}
-
-void parse_warning(Parser *p, SourcePos pos, const char *msg)
-{
-    if (p->opts->quiet_warnings)
-        return;
-    debug_end_line(p);
-    char shown[1024];
-    text_escape(shown, sizeof shown, msg, NULL);
-    fprintf(stderr, "%s:%d:%d: warning: %s\n", pos.file, pos.line, pos.column, shown);
-}
-
 static void count_braces(Parser *p, const Token *t, int dir)
 {
-    if (is_punct(t, '{'))
+    if (tok_is_punct(t, '{'))
         p->brace_depth += dir;
-    else if (is_punct(t, '}'))
+    else if (tok_is_punct(t, '}'))
         p->brace_depth -= dir;
 }
 
@@ -49,17 +32,17 @@ static int close_file(Parser *p, const Token *eof)
 {
     SourceFile *f = &p->files[p->depth - 1];
     if (f->macro) /* its #end was taken by a directive of the body: unbalanced */
-        parse_fail(p, eof->pos, "the body of macro '%s' (declared at %s:%d) ends without its #end", f->macro->name,
+        tok_fail(p, eof->pos, "the body of macro '%s' (declared at %s:%d) ends without its #end", f->macro->name,
                    f->macro->declared_at.file, f->macro->declared_at.line);
     if (p->controls.n > f->controls_at_entry) {
         Control *c = (Control *)p->controls.data + p->controls.n - 1;
-        parse_fail(p, c->pos, "this directive has no matching #end before the end of '%s'", f->name);
+        tok_fail(p, c->pos, "this directive has no matching #end before the end of '%s'", f->name);
     }
     if (p->depth == 1)
         return 0;
     p->depth--;
     p->include_depth--;
-    symbols_pop_scope(p);
+    tok_pop_scope(p);
     return 1;
 }
 
@@ -67,20 +50,20 @@ static int close_file(Parser *p, const Token *eof)
  * array element gets its indices read. */
 static int expand_identifier(Parser *p)
 {
-    Symbol *s = symbol_find(p, p->tok.text, p->tok.len);
+    Symbol *s = tok_symbol_find(p, p->tok.text, p->tok.len);
     if (!s)
         return 0;
     if (s->value.kind == VAL_MACRO && !p->no_macro_calls) {
         Token call = p->tok;
-        macro_invoke(p, &call, s->value.macro);
+        tok_macro_invoke(p, &call, s->value.macro);
         return 1;
     }
-    if (s->value.kind == VAL_ARRAY && lex_peek_char(p) == '[')
-        read_array_element(p, s);
+    if (s->value.kind == VAL_ARRAY && tok_peek_char(p) == '[')
+        tok_array_element(p, s);
     return 0;
 }
 
-Token *next(Parser *p)
+Token *tok_next(Parser *p)
 {
     if (p->ungot) {
         p->ungot = 0;
@@ -88,13 +71,13 @@ Token *next(Parser *p)
         return &p->tok;
     }
     for (;;) {
-        lex_raw(p, &p->tok);
+        tok_raw(p, &p->tok);
         if (p->tok.type == TK_EOF) {
             if (close_file(p, &p->tok))
                 continue;
             break;
         }
-        if (is_punct(&p->tok, '#')) {
+        if (tok_is_punct(&p->tok, '#')) {
             Token hash = p->tok;
             handle_directive(p, &hash);
             if (p->ungot) {
@@ -114,77 +97,77 @@ Token *next(Parser *p)
     return &p->tok;
 }
 
-Token *next_name(Parser *p)
+Token *tok_next_name(Parser *p)
 {
     p->no_macro_calls++;
-    Token *t = next(p);
+    Token *t = tok_next(p);
     p->no_macro_calls--;
     return t;
 }
 
-void unget(Parser *p)
+void tok_unget(Parser *p)
 {
     p->ungot = 1;
     count_braces(p, &p->tok, -1);
 }
 
-Token *peek(Parser *p)
+Token *tok_peek(Parser *p)
 {
-    Token *t = next(p);
-    unget(p);
+    Token *t = tok_next(p);
+    tok_unget(p);
     return t;
 }
 
-void expect_punct(Parser *p, int c, const char *after)
+void tok_expect_punct(Parser *p, int c, const char *after)
 {
-    Token *t = next(p);
-    if (!is_punct(t, c)) {
+    Token *t = tok_next(p);
+    if (!tok_is_punct(t, c)) {
         char what[64];
         snprintf(what, sizeof what, "'%c' after %s", c, after);
-        fail_expected(p, t, what);
+        tok_fail_expected(p, t, what);
     }
 }
 
-void begin_block(Parser *p, const char *after)
+void tok_begin_block(Parser *p, const char *after)
 {
-    Token *t = next(p);
-    if (!is_punct(t, '{')) {
+    Token *t = tok_next(p);
+    if (!tok_is_punct(t, '{')) {
         char what[80];
         snprintf(what, sizeof what, "'{' after '%s'", after);
-        fail_expected(p, t, what);
+        tok_fail_expected(p, t, what);
     }
 }
 
 /* After a '{' was read: everything up to its '}', directives still obeyed. */
-void skip_block_body(Parser *p)
+void tok_skip_block_body(Parser *p)
 {
     int target = p->brace_depth - 1;
     for (;;) {
-        Token *t = next(p);
+        Token *t = tok_next(p);
         if (t->type == TK_EOF)
-            parse_fail(p, t->pos, "expected '}' before the end of the file");
-        if (is_punct(t, '}') && p->brace_depth == target)
+            tok_fail(p, t->pos, "expected '}' before the end of the file");
+        if (tok_is_punct(t, '}') && p->brace_depth == target)
             return;
     }
 }
 
 /* `open` ('(' '[' or '{') was read: skip to its partner. */
-void skip_balanced_group(Parser *p, const Token *open)
+void tok_skip_balanced_group(Parser *p, const Token *open)
 {
-    if (is_punct(open, '{')) {
-        skip_block_body(p);
+    if (tok_is_punct(open, '{')) {
+        tok_skip_block_body(p);
         return;
     }
     int close = open->punct == '(' ? ')' : ']';
     int level = 1;
     SourcePos start = open->pos;
     while (level > 0) {
-        Token *t = next(p);
+        Token *t = tok_next(p);
         if (t->type == TK_EOF)
-            parse_fail(p, start, "no matching '%c' for this '%c' before the end of the file", close, open->punct);
-        if (is_punct(t, open->punct))
+            tok_fail(p, start, "no matching '%c' for this '%c' before the end of the file", close, open->punct);
+        if (tok_is_punct(t, open->punct))
             level++;
-        else if (is_punct(t, close))
+        else if (tok_is_punct(t, close))
             level--;
     }
 }
@@ -207,12 +190,12 @@ static SkipStop skip_text(Parser *p, SkipMode mode, SourcePos from, const char *
     int level = 0;
     Token t;
     for (;;) {
-        lex_raw(p, &t);
+        tok_raw(p, &t);
         if (t.type == TK_EOF)
-            parse_fail(p, from, "%s has no matching #end", what);
-        if (!is_punct(&t, '#'))
+            tok_fail(p, from, "%s has no matching #end", what);
+        if (!tok_is_punct(&t, '#'))
             continue;
-        lex_raw(p, &t);
+        tok_raw(p, &t);
         if (t.type != TK_WORD)
             continue;
         if (opens_block(t.kw)) {
@@ -237,7 +220,7 @@ static SkipStop skip_text(Parser *p, SkipMode mode, SourcePos from, const char *
     }
 }
 
-void macro_skip_body(Parser *p, SourcePos from)
+void tok_macro_skip_body(Parser *p, SourcePos from)
 {
     skip_text(p, SKIP_TO_END, from, "#macro");
 }
@@ -247,8 +230,8 @@ void macro_skip_body(Parser *p, SourcePos from)
 static Control *push_control(Parser *p, ControlKind kind, SourcePos pos)
 {
     if (p->controls.n >= 100000)
-        parse_fail(p, pos, "directives nested too deeply");
-    Control *c = tvec_push(p, &p->controls);
+        tok_fail(p, pos, "directives nested too deeply");
+    Control *c = tok_tvec_push(p, &p->controls);
     c->kind = kind;
     c->file_depth = p->depth;
     c->pos = pos;
@@ -269,18 +252,18 @@ static void loop_back(Parser *p, LexMark m)
     SourceFile *f = &p->files[m.depth - 1];
     if (f->offset > f->repeated_to)
         f->repeated_to = f->offset;
-    lex_seek(p, m);
+    tok_seek(p, m);
 }
 
 /* `( expr )`, as POV-Ray requires after #if/#while: the closing parenthesis
  * ends it, so no token beyond is read (it may be another directive). */
 static double parse_condition(Parser *p, const char *after)
 {
-    expect_punct(p, '(', after);
+    tok_expect_punct(p, '(', after);
     double e[5] = { 0 };
     int terms = 1;
-    parse_express(p, e, &terms);
-    expect_punct(p, ')', "the condition");
+    p->hooks->expression(p, e, &terms);
+    tok_expect_punct(p, ')', "the condition");
     return e[0];
 }
 
@@ -305,11 +288,11 @@ static void run_if(Parser *p, const Token *hash, int cond)
 
 static Token read_identifier(Parser *p, const char *after)
 {
-    Token *t = next(p);
+    Token *t = tok_next(p);
     if (t->type != TK_WORD) {
         char what[80];
         snprintf(what, sizeof what, "an identifier after %s", after);
-        fail_expected(p, t, what);
+        tok_fail_expected(p, t, what);
     }
     return *t;
 }
@@ -319,16 +302,16 @@ static void directive_end(Parser *p, const Token *hash)
     Control *c = top_control(p);
     if (!c) {
         if (p->files[p->depth - 1].macro) {
-            macro_return(p);
+            tok_macro_return(p);
             return;
         }
-        parse_fail(p, hash->pos, "#end without a matching #if, #while, #for, #switch or #macro");
+        tok_fail(p, hash->pos, "#end without a matching #if, #while, #for, #switch or #macro");
     }
     if (c->kind == CTL_IF || c->kind == CTL_ELSE || c->kind == CTL_SWITCH) {
         p->controls.n--;
         return;
     }
-    limits_count_iteration(p, c->pos);
+    tok_limits_count_iteration(p, c->pos);
     if (c->kind == CTL_WHILE) {
         LexMark m = c->loop;
         SourcePos at = c->pos;
@@ -340,9 +323,9 @@ static void directive_end(Parser *p, const Token *hash)
         return;
     }
     /* CTL_FOR */
-    Symbol *s = symbol_find(p, c->for_var, (int)strlen(c->for_var));
+    Symbol *s = tok_symbol_find(p, c->for_var, (int)strlen(c->for_var));
     if (!s || s->value.kind != VAL_NUMERIC || s->value.terms != 1)
-        parse_fail(p, hash->pos, "the #for variable '%s' is no longer a float", c->for_var);
+        tok_fail(p, hash->pos, "the #for variable '%s' is no longer a float", c->for_var);
     double v = s->value.v[0] + c->for_step;
     s->value.v[0] = v;
     if (c->for_step > 0 ? v <= c->for_end : v >= c->for_end)
@@ -353,36 +336,36 @@ static void directive_end(Parser *p, const Token *hash)
 
 static void directive_for(Parser *p, const Token *hash)
 {
-    expect_punct(p, '(', "#for");
+    tok_expect_punct(p, '(', "#for");
     p->no_macro_calls++;
     Token var = read_identifier(p, "#for (");
     p->no_macro_calls--;
     if (var.kw >= 0)
-        parse_fail(p, var.pos, "'%s' is a reserved word and cannot be a #for variable", keyword_name(var.kw));
-    expect_punct(p, ',', "the #for variable");
-    double start = parse_float(p);
-    expect_punct(p, ',', "the #for start value");
-    double end = parse_float(p);
+        tok_fail(p, var.pos, "'%s' is a reserved word and cannot be a #for variable", tok_keyword_name(var.kw));
+    tok_expect_punct(p, ',', "the #for variable");
+    double start = p->hooks->number(p);
+    tok_expect_punct(p, ',', "the #for start value");
+    double end = p->hooks->number(p);
     double step = 1.0;
-    Token *t = next(p);
-    if (is_punct(t, ',')) {
-        step = parse_float(p);
-        t = next(p);
+    Token *t = tok_next(p);
+    if (tok_is_punct(t, ',')) {
+        step = p->hooks->number(p);
+        t = tok_next(p);
     }
-    if (!is_punct(t, ')'))
-        fail_expected(p, t, "')' to close #for");
+    if (!tok_is_punct(t, ')'))
+        tok_fail_expected(p, t, "')' to close #for");
     if (step == 0.0)
-        parse_fail(p, hash->pos, "#for step must not be zero");
+        tok_fail(p, hash->pos, "#for step must not be zero");
     Value v = { .kind = VAL_NUMERIC, .terms = 1 };
     v.v[0] = start;
-    symbol_set(p, var.text, var.len, 1, &v);
+    tok_symbol_set(p, var.text, var.len, 1, &v);
     if (step > 0 ? start > end : start < end) {
         skip_text(p, SKIP_TO_END, hash->pos, "#for");
         return;
     }
     Control *c = push_control(p, CTL_FOR, hash->pos);
-    c->loop = lex_mark(p);
-    c->for_var = intern_name(p, var.text, var.len);
+    c->loop = tok_mark(p);
+    c->for_var = tok_intern_name(p, var.text, var.len);
     c->for_end = end;
     c->for_step = step;
 }
@@ -394,11 +377,11 @@ static int case_matches(Parser *p, double value, int is_range)
 {
     if (!is_range)
         return fabs(parse_condition(p, "#case") - value) < 1e-10;
-    expect_punct(p, '(', "#range");
-    double lo = parse_float_full(p);
-    expect_punct(p, ',', "the lower end of the range");
-    double hi = parse_float_full(p);
-    expect_punct(p, ')', "the upper end of the range");
+    tok_expect_punct(p, '(', "#range");
+    double lo = p->hooks->number_full(p);
+    tok_expect_punct(p, ',', "the lower end of the range");
+    double hi = p->hooks->number_full(p);
+    tok_expect_punct(p, ')', "the upper end of the range");
     return value >= lo && value <= hi;
 }
 
@@ -423,14 +406,14 @@ static void directive_switch(Parser *p, const Token *hash)
     double value = parse_condition(p, "#switch");
     /* Only blanks and comments may come before the first #case: POV-Ray
      * reports anything else. */
-    LexMark m = lex_mark(p);
+    LexMark m = tok_mark(p);
     Token t;
-    lex_raw(p, &t);
-    if (is_punct(&t, '#'))
-        lex_raw(p, &t);
-    if (!is_kw(&t, KW_case) && !is_kw(&t, KW_range) && !is_kw(&t, KW_else) && !is_kw(&t, KW_end))
-        parse_fail(p, t.pos, "#switch must be followed by #case, #range, #else or #end");
-    lex_seek(p, m);
+    tok_raw(p, &t);
+    if (tok_is_punct(&t, '#'))
+        tok_raw(p, &t);
+    if (!tok_is_kw(&t, KW_case) && !tok_is_kw(&t, KW_range) && !tok_is_kw(&t, KW_else) && !tok_is_kw(&t, KW_end))
+        tok_fail(p, t.pos, "#switch must be followed by #case, #range, #else or #end");
+    tok_seek(p, m);
     find_matching_case(p, hash->pos, value);
 }
 
@@ -454,10 +437,10 @@ static void directive_break(Parser *p, const Token *hash)
         Control *c = top_control(p);
         if (!c) {
             if (p->files[p->depth - 1].macro) {
-                macro_return(p);
+                tok_macro_return(p);
                 return;
             }
-            parse_fail(p, hash->pos, "#break outside #switch, #while, #for and #macro");
+            tok_fail(p, hash->pos, "#break outside #switch, #while, #for and #macro");
         }
         ControlKind kind = c->kind;
         SourcePos at = c->pos;
@@ -470,21 +453,21 @@ static void directive_break(Parser *p, const Token *hash)
 
 static void directive_include(Parser *p, const Token *hash)
 {
-    Token *t = peek(p);
+    Token *t = tok_peek(p);
     SourcePos at = t->pos;
-    char *name = parse_string(p);
+    char *name = p->hooks->string(p);
     SourceText text;
     if (name[0] == '/') {
-        if (!source_read(p, name, at, &text))
-            parse_fail_io(p, at, "cannot open include file '%s': %s", name, strerror(errno));
-        lex_open_source(p, &text, at);
+        if (!tok_source_read(p, name, at, &text))
+            tok_fail_io(p, at, "cannot open include file '%s': %s", name, strerror(errno));
+        tok_open_source(p, &text, at);
     } else {
         const char *dirs[130];
-        int nd = lex_search_dirs(p, dirs, 128);
+        int nd = tok_search_dirs(p, dirs, 128);
         for (int i = 0; i < nd; i++) {
-            if (source_read_in(p, dirs[i], name, at, &text)) {
-                lex_open_source(p, &text, at);
-                symbols_push_scope(p);
+            if (tok_source_read_in(p, dirs[i], name, at, &text)) {
+                tok_open_source(p, &text, at);
+                tok_push_scope(p);
                 return;
             }
         }
@@ -497,10 +480,10 @@ static void directive_include(Parser *p, const Token *hash)
         }
         if (used >= sizeof searched)
             memcpy(searched + sizeof searched - 4, "...", 4);
-        parse_fail_io(p, at, "cannot open include file '%s' (searched: %s)", name, searched);
+        tok_fail_io(p, at, "cannot open include file '%s' (searched: %s)", name, searched);
     }
     (void)hash;
-    symbols_push_scope(p);
+    tok_push_scope(p);
 }
 
 /* '#' before something that is not a directive: POV-Ray 3.7 drops the '#'
@@ -510,20 +493,20 @@ static void directive_include(Parser *p, const Token *hash)
  * Parse_Directive; checked with povray). */
 static void stray_hash(Parser *p, const Token *t, LexMark before)
 {
-    if (t->type == TK_WORD && token_starts_float(p, t))
-        fail_expected(p, t, "a directive after '#'");
-    lex_seek(p, before);
+    if (t->type == TK_WORD && p->hooks->starts_float(p, t))
+        tok_fail_expected(p, t, "a directive after '#'");
+    tok_seek(p, before);
 }
 
 static void handle_directive(Parser *p, const Token *hash)
 {
     Token t;
-    LexMark before = lex_mark(p);
-    lex_raw(p, &t);
+    LexMark before = tok_mark(p);
+    tok_raw(p, &t);
     if (t.type != TK_WORD || t.kw < 0) {
-        Symbol *s = t.type == TK_WORD ? symbol_find(p, t.text, t.len) : NULL;
+        Symbol *s = t.type == TK_WORD ? tok_symbol_find(p, t.text, t.len) : NULL;
         if (s && s->value.kind == VAL_MACRO) { /* `#Name(...)`, as older scenes write it */
-            macro_invoke(p, &t, s->value.macro);
+            tok_macro_invoke(p, &t, s->value.macro);
             return;
         }
         stray_hash(p, &t, before);
@@ -535,15 +518,15 @@ static void handle_directive(Parser *p, const Token *hash)
         return;
     case KW_declare:
     case KW_local:
-        parse_declare(p, hash, t.kw == KW_local);
+        p->hooks->declare(p, hash, t.kw == KW_local);
         return;
     case KW_undef: {
         p->no_macro_calls++;
         Token id = read_identifier(p, "#undef");
         p->no_macro_calls--;
         if (id.elem)
-            parse_fail(p, id.pos, "#undef cannot remove an array element");
-        symbol_undef(p, id.text, id.len);
+            tok_fail(p, id.pos, "#undef cannot remove an array element");
+        tok_symbol_undef(p, id.text, id.len);
         return;
     }
     case KW_if:
@@ -551,12 +534,12 @@ static void handle_directive(Parser *p, const Token *hash)
         return;
     case KW_ifdef:
     case KW_ifndef: {
-        expect_punct(p, '(', t.kw == KW_ifdef ? "#ifdef" : "#ifndef");
+        tok_expect_punct(p, '(', t.kw == KW_ifdef ? "#ifdef" : "#ifndef");
         p->no_macro_calls++;
         Token id = read_identifier(p, "'('");
         p->no_macro_calls--;
-        expect_punct(p, ')', "the identifier");
-        int defined = id.elem ? id.elem->value.kind != VAL_NONE : id.kw < 0 && symbol_find(p, id.text, id.len) != NULL;
+        tok_expect_punct(p, ')', "the identifier");
+        int defined = id.elem ? id.elem->value.kind != VAL_NONE : id.kw < 0 && tok_symbol_find(p, id.text, id.len) != NULL;
         run_if(p, hash, t.kw == KW_ifdef ? defined : !defined);
         return;
     }
@@ -567,7 +550,7 @@ static void handle_directive(Parser *p, const Token *hash)
     case KW_elseif: {
         Control *c = top_control(p);
         if (!c || c->kind != CTL_IF)
-            parse_fail(p, t.pos, "#%s without a matching #if", keyword_name(t.kw));
+            tok_fail(p, t.pos, "#%s without a matching #if", tok_keyword_name(t.kw));
         /* The branch before it ran: skip the rest, #elseif conditions unread. */
         p->controls.n--;
         skip_text(p, SKIP_TO_END, c->pos, "#if");
@@ -577,9 +560,9 @@ static void handle_directive(Parser *p, const Token *hash)
         directive_end(p, hash);
         return;
     case KW_while: {
-        LexMark m = lex_mark(p);
+        LexMark m = tok_mark(p);
         if (truthy(parse_condition(p, "#while"))) {
-            limits_count_iteration(p, hash->pos);
+            tok_limits_count_iteration(p, hash->pos);
             Control *c = push_control(p, CTL_WHILE, hash->pos);
             c->loop = m;
         } else {
@@ -591,24 +574,24 @@ static void handle_directive(Parser *p, const Token *hash)
         directive_for(p, hash);
         return;
     case KW_macro:
-        macro_define(p, hash);
+        tok_macro_define(p, hash);
         return;
     case KW_version: {
-        double v = parse_float(p);
-        if (!is_punct(next(p), ';'))
-            unget(p); /* POV-Ray wants the ';'; hstrace does not insist */
+        double v = p->hooks->number(p);
+        if (!tok_is_punct(tok_next(p), ';'))
+            tok_unget(p); /* POV-Ray wants the ';'; hstrace does not insist */
         p->version = v;
         p->version_given = 1;
-        version_seen(p);
+        p->hooks->version_seen(p);
         return;
     }
     case KW_debug: {
         /* POV-Ray's debug stream: the text as it is, newlines from "\n"
          * (and tabs), the other controls escaped as in messages */
-        char *msg = parse_string(p);
+        char *msg = p->hooks->string(p);
         size_t n = strlen(msg) * 4 + 1;
-        char *shown = tmp_alloc(p, n);
-        text_escape(shown, n, msg, "\n\t");
+        char *shown = tok_temp_alloc(p, n);
+        tok_text_escape(shown, n, msg, "\n\t");
         if (p->opts->quiet_debug)
             return;
         fputs(shown, stderr);
@@ -618,15 +601,15 @@ static void handle_directive(Parser *p, const Token *hash)
         return;
     }
     case KW_warning: {
-        parse_warning(p, hash->pos, parse_string(p));
+        tok_warning(p, hash->pos, p->hooks->string(p));
         return;
     }
     case KW_error: {
-        char *msg = parse_string(p);
-        parse_fail(p, hash->pos, "#error: %s", msg);
+        char *msg = p->hooks->string(p);
+        tok_fail(p, hash->pos, "#error: %s", msg);
     }
     case KW_default:
-        parse_default_directive(p);
+        p->hooks->default_directive(p);
         return;
     case KW_switch:
         directive_switch(p, hash);
@@ -635,21 +618,21 @@ static void handle_directive(Parser *p, const Token *hash)
     case KW_range:
         if (switch_fall_through(p, &t))
             return;
-        parse_fail(p, t.pos, "#%s without a matching #switch", keyword_name(t.kw));
+        tok_fail(p, t.pos, "#%s without a matching #switch", tok_keyword_name(t.kw));
     case KW_break:
         directive_break(p, hash);
         return;
     case KW_fopen:
-        directive_fopen(p, hash);
+        tok_fopen(p, hash);
         return;
     case KW_fclose:
-        directive_fclose(p);
+        tok_fclose(p);
         return;
     case KW_read:
-        directive_read(p);
+        tok_read(p);
         return;
     case KW_write:
-        directive_write(p);
+        tok_write(p);
         return;
     default:
         stray_hash(p, &t, before);

@@ -32,7 +32,7 @@
  * Data (bump_map, material_map: GammaCorrect false in Parse_Image) are
  * never taken to the working gamma: the values as stored, or decoded with a
  * `gamma` given. */
-#include "parser_internal.h"
+#include "grammar.h"
 
 /* The language version in effect: 3.62 without a #version */
 static int below_3_7(const Parser *p)
@@ -41,34 +41,34 @@ static int below_3_7(const Parser *p)
     return (int)(version * 100.0 + 0.5) < 370;
 }
 
-void assumed_gamma_seen(Parser *p, double gamma)
+void gram_assumed_gamma_seen(Parser *p, double gamma)
 {
-    if (p->gamma_mode == GAMMA_MODE_36 || p->gamma_mode == GAMMA_MODE_37)
+    if (p->gram->gamma_mode == GAMMA_MODE_36 || p->gram->gamma_mode == GAMMA_MODE_37)
         return; /* POV-Ray: "New instance of assumed_gamma ignored" */
     p->gamma_set = 1;
     p->assumed_gamma = gamma;
-    p->gamma_mode = below_3_7(p) ? GAMMA_MODE_36 : GAMMA_MODE_37;
+    p->gram->gamma_mode = below_3_7(p) ? GAMMA_MODE_36 : GAMMA_MODE_37;
 }
 
-void version_seen(Parser *p)
+void gram_version_seen(Parser *p)
 {
-    if (p->gamma_mode == GAMMA_MODE_NONE || p->gamma_mode == GAMMA_MODE_37_IMPLIED)
-        p->gamma_mode = below_3_7(p) ? GAMMA_MODE_NONE : GAMMA_MODE_37_IMPLIED;
+    if (p->gram->gamma_mode == GAMMA_MODE_NONE || p->gram->gamma_mode == GAMMA_MODE_37_IMPLIED)
+        p->gram->gamma_mode = below_3_7(p) ? GAMMA_MODE_NONE : GAMMA_MODE_37_IMPLIED;
     else
-        p->gamma_mode = below_3_7(p) ? GAMMA_MODE_36 : GAMMA_MODE_37;
+        p->gram->gamma_mode = below_3_7(p) ? GAMMA_MODE_36 : GAMMA_MODE_37;
 }
 
-ImageGammaPlan image_gamma_plan(const Parser *p, int gamma_correct, int override_given, double override)
+ImageGammaPlan gram_image_gamma_plan(const Parser *p, int gamma_correct, int override_given, double override)
 {
     ImageGammaPlan plan = { .decode = 1.0, .untagged = IMAGE_GAMMA_FILE_DEFAULT, .working = 1.0 };
-    const int assumed = p->gamma_mode == GAMMA_MODE_36 || p->gamma_mode == GAMMA_MODE_37;
+    const int assumed = p->gram->gamma_mode == GAMMA_MODE_36 || p->gram->gamma_mode == GAMMA_MODE_37;
     if (override_given) {
         plan.decode = override;
         if (gamma_correct && assumed)
             plan.working = p->assumed_gamma;
-    } else if (gamma_correct && p->gamma_mode != GAMMA_MODE_NONE) {
+    } else if (gamma_correct && p->gram->gamma_mode != GAMMA_MODE_NONE) {
         plan.decode = IMAGE_GAMMA_FILE_DEFAULT;
-        if (p->gamma_mode == GAMMA_MODE_36)
+        if (p->gram->gamma_mode == GAMMA_MODE_36)
             plan.untagged = p->assumed_gamma;
         if (assumed)
             plan.working = p->assumed_gamma;

@@ -6,14 +6,14 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
 static const double POLY_EPSILON = 1e-10; /* POV-Ray's EPSILON for closing outlines */
 /* Points, vertices, faces ... one object may list: a bound that keeps a
  * garbled count from reserving the machine's memory. */
 #define MAX_ELEMENT_COUNT 50000000
 
-int is_object_keyword(int kw)
+int gram_is_object_keyword(int kw)
 {
     switch (kw) {
     case KW_polygon: case KW_triangle: case KW_smooth_triangle: case KW_mesh: case KW_mesh2:
@@ -33,7 +33,7 @@ int is_object_keyword(int kw)
 
 static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
 {
-    SceneObject *o = palloc(p, sizeof *o);
+    SceneObject *o = tok_scene_alloc(p, sizeof *o);
     o->kind = kind;
     o->pos = t->pos;
     transform_identity(&o->transform);
@@ -51,13 +51,13 @@ static SceneTexture *own_texture(Parser *p, SceneObject *o, const Token *t)
         const char *msg = "pigment, normal or finish over a texture_map (a layer on it)";
         what.text = msg;
         what.len = (int)strlen(msg);
-        unsupported(p, &what);
+        tok_unsupported(p, &what);
     }
     if (o->texture) {
-        tex = palloc(p, sizeof *tex);
+        tex = tok_scene_alloc(p, sizeof *tex);
         *tex = *o->texture;
     } else {
-        tex = new_default_texture(p);
+        tex = gram_default_texture(p);
         tex->pos = t->pos;
         o->texture_bind = o->transform; /* a new texture: later transforms move it */
     }
@@ -67,21 +67,21 @@ static SceneTexture *own_texture(Parser *p, SceneObject *o, const Token *t)
 
 static void skip_optional_float(Parser *p)
 {
-    if (token_starts_float(p, peek(p)))
-        (void)parse_float(p);
+    if (expr_starts_float(p, tok_peek(p)))
+        (void)expr_float(p);
 }
 
 static int optional_bool(Parser *p)
 {
-    if (token_starts_float(p, peek(p)))
-        return fabs(parse_float(p)) > 1e-5;
+    if (expr_starts_float(p, tok_peek(p)))
+        return fabs(expr_float(p)) > 1e-5;
     return 1;
 }
 
 static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const Token *at)
 {
-    /* A second texture is a layer on top of the first (layer_textures). */
-    o->texture = o->texture ? layer_textures(p, tex, o->texture, at) : tex;
+    /* A second texture is a layer on top of the first (gram_layer_textures). */
+    o->texture = o->texture ? gram_layer_textures(p, tex, o->texture, at) : tex;
     o->texture_bind = o->transform; /* transforms after the texture move it, those before do not */
 }
 
@@ -89,19 +89,19 @@ static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const To
 static void object_material(Parser *p, SceneObject *o, const Token *at)
 {
     const SceneTexture *before = o->texture;
-    parse_material(p, &o->texture, &o->interior, at);
+    gram_material(p, &o->texture, &o->interior, at);
     if (o->texture != before)
         o->texture_bind = o->transform; /* as apply_texture: later transforms move it */
 }
 
-const SceneTexture *texture_uv_mapped(Parser *p, const SceneTexture *tex)
+const SceneTexture *gram_texture_uv_mapped(Parser *p, const SceneTexture *tex)
 {
     if (!tex || (tex->pigment.uv_mapping && (!tex->normal || tex->normal->kind == NORMAL_UV)))
         return tex;
-    SceneTexture *copy = palloc(p, sizeof *copy);
+    SceneTexture *copy = tok_scene_alloc(p, sizeof *copy);
     *copy = *tex;
     copy->pigment.uv_mapping = 1;
-    copy->normal = normal_uv_mapped(p, tex->normal);
+    copy->normal = gram_normal_uv_mapped(p, tex->normal);
     return copy;
 }
 
@@ -110,44 +110,44 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
 {
     int uv = 0;
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}')) {
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}')) {
             if (uv) {
-                o->texture = texture_uv_mapped(p, o->texture);
+                o->texture = gram_texture_uv_mapped(p, o->texture);
                 if (o->kind == OBJ_MESH) {
-                    const SceneTexture **list = palloc(p, sizeof *list * (size_t)(o->u.mesh.ntextures + 1));
+                    const SceneTexture **list = tok_scene_alloc(p, sizeof *list * (size_t)(o->u.mesh.ntextures + 1));
                     for (int i = 0; i < o->u.mesh.ntextures; i++)
-                        list[i] = texture_uv_mapped(p, o->u.mesh.textures[i]);
+                        list[i] = gram_texture_uv_mapped(p, o->u.mesh.textures[i]);
                     o->u.mesh.textures = list;
                 }
             }
             return;
         }
         Token at = *t;
-        if (parse_transform_item(p, t, &o->transform))
+        if (expr_transform_item(p, t, &o->transform))
             continue;
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_texture:
-            apply_texture(p, o, parse_texture(p), &at);
+            apply_texture(p, o, gram_texture(p), &at);
             break;
         case KW_pigment:
-            parse_pigment(p, &own_texture(p, o, &at)->pigment);
+            gram_pigment(p, &own_texture(p, o, &at)->pigment);
             o->texture_bind = o->transform;
             break;
         case KW_finish:
-            parse_finish(p, &own_texture(p, o, &at)->finish);
+            gram_finish(p, &own_texture(p, o, &at)->finish);
             break;
         case KW_normal: {
             /* as a pigment: it gives the object a texture of its own */
             SceneTexture *tex = own_texture(p, o, &at);
-            tex->normal = parse_normal(p, tex->normal, &at, 1);
+            tex->normal = gram_normal(p, tex->normal, &at, 1);
             o->texture_bind = o->transform;
             break;
         }
         case KW_interior: {
-            Interior *in = palloc(p, sizeof *in);
+            Interior *in = tok_scene_alloc(p, sizeof *in);
             *in = o->interior ? *o->interior : scene_default_interior();
-            parse_interior(p, in);
+            gram_interior(p, in);
             o->interior = in;
             break;
         }
@@ -163,31 +163,31 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_uv_mapping: uv = 1; break; /* every texture of the object, at the end */
         case KW_cutaway_textures: break; /* no effect on solid colours */
         case KW_photons: /* parsed past: hstrace has no photon mapping */
-            approximate(p, &at, APPROX_PHOTONS, &o->approx);
-            begin_block(p, "photons");
-            skip_block_body(p);
+            tok_approximate(p, &at, APPROX_PHOTONS, &o->approx);
+            tok_begin_block(p, "photons");
+            tok_skip_block_body(p);
             break;
         case KW_radiosity: /* per-object radiosity settings: nothing without radiosity */
-            begin_block(p, "radiosity");
-            skip_block_body(p);
+            tok_begin_block(p, "radiosity");
+            tok_skip_block_body(p);
             break;
         case KW_bounded_by: /* a hint for POV-Ray's bounding: no effect on the image */
-            begin_block(p, "bounded_by");
-            skip_block_body(p);
+            tok_begin_block(p, "bounded_by");
+            tok_skip_block_body(p);
             break;
         default:
-            if (token_starts_colour(p, t)) { /* a "quick colour": preview only */
+            if (expr_starts_colour(p, t)) { /* a "quick colour": preview only */
                 Colour ignored;
-                unget(p);
-                parse_colour(p, &ignored, 1);
+                tok_unget(p);
+                expr_colour(p, &ignored, 1);
                 break;
             }
-            if (t->type == TK_WORD && t->kw >= 0 && !is_object_keyword(t->kw))
-                unsupported(p, t); /* bounded_by, clipped_by, ... */
+            if (t->type == TK_WORD && t->kw >= 0 && !gram_is_object_keyword(t->kw))
+                tok_unsupported(p, t); /* bounded_by, clipped_by, ... */
             {
                 char msg[96];
                 snprintf(msg, sizeof msg, "an object modifier or '}' in '%s'", what);
-                fail_expected(p, t, msg);
+                tok_fail_expected(p, t, msg);
             }
         }
     }
@@ -195,7 +195,7 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
 
 static Vec3 *vec3_array(Parser *p, const TempVec *v)
 {
-    Vec3 *out = palloc(p, sizeof(Vec3) * (size_t)(v->n > 0 ? v->n : 1));
+    Vec3 *out = tok_scene_alloc(p, sizeof(Vec3) * (size_t)(v->n > 0 ? v->n : 1));
     if (v->n)
         memcpy(out, v->data, sizeof(Vec3) * (size_t)v->n);
     return out;
@@ -209,36 +209,36 @@ static int near_point(Vec3 a, Vec3 b)
 /* An element count read from the file, sanity-checked against garbage. */
 static int parse_count(Parser *p, const char *what, int minimum)
 {
-    Token at = *peek(p);
-    double n = parse_float(p);
+    Token at = *tok_peek(p);
+    double n = expr_float(p);
     int count;
     if (!int_from_double(n, minimum, MAX_ELEMENT_COUNT, &count))
-        parse_fail(p, at.pos, "%s: %g is not a usable count", what, n);
+        tok_fail(p, at.pos, "%s: %g is not a usable count", what, n);
     return count;
 }
 
 static SceneObject *parse_polygon(Parser *p, const Token *kw)
 {
-    begin_block(p, "polygon");
+    tok_begin_block(p, "polygon");
     SceneObject *o = new_object(p, OBJ_POLYGON, kw);
-    Token at = *peek(p);
-    double count = parse_float(p);
+    Token at = *tok_peek(p);
+    double count = expr_float(p);
     if (count < 3)
-        parse_fail(p, at.pos, "polygon needs at least three points");
+        tok_fail(p, at.pos, "polygon needs at least three points");
     int n;
     if (!int_from_double(count, 3, MAX_ELEMENT_COUNT, &n))
-        parse_fail(p, at.pos, "polygon: %g is not a usable count", count);
+        tok_fail(p, at.pos, "polygon: %g is not a usable count", count);
     TempVec pts;
-    tvec_init(&pts, sizeof(Vec3));
+    tok_tvec_init(&pts, sizeof(Vec3));
     for (int i = 0; i < n; i++) {
-        parse_comma(p);
-        *(Vec3 *)tvec_push(p, &pts) = parse_vector(p);
+        expr_comma(p);
+        *(Vec3 *)tok_tvec_push(p, &pts) = expr_vector(p);
     }
     /* POV-Ray's outline rule (Parse_Polygon): an outline closes when a point
      * repeats its first point; the next point starts a new outline. */
     TempVec starts;
-    tvec_init(&starts, sizeof(int));
-    *(int *)tvec_push(p, &starts) = 0;
+    tok_tvec_init(&starts, sizeof(int));
+    *(int *)tok_tvec_push(p, &starts) = 0;
     Vec3 *v = pts.data;
     Vec3 first = v[0];
     int closed = 0;
@@ -249,20 +249,20 @@ static SceneObject *parse_polygon(Parser *p, const Token *kw)
             i++;
             if (i < n) {
                 first = v[i];
-                *(int *)tvec_push(p, &starts) = i;
+                *(int *)tok_tvec_push(p, &starts) = i;
             }
             closed = 1;
         }
     }
     if (!closed) { /* POV-Ray warns "Polygon not closed. Closing it." */
-        *(Vec3 *)tvec_push(p, &pts) = first;
+        *(Vec3 *)tok_tvec_push(p, &pts) = first;
         v = pts.data;
     }
-    *(int *)tvec_push(p, &starts) = pts.n;
+    *(int *)tok_tvec_push(p, &starts) = pts.n;
     o->u.polygon.npoints = pts.n;
     o->u.polygon.points = vec3_array(p, &pts);
     o->u.polygon.noutlines = starts.n - 1;
-    o->u.polygon.outline_start = palloc(p, sizeof(int) * (size_t)starts.n);
+    o->u.polygon.outline_start = tok_scene_alloc(p, sizeof(int) * (size_t)starts.n);
     memcpy(o->u.polygon.outline_start, starts.data, sizeof(int) * (size_t)starts.n);
     parse_object_mods(p, o, "polygon");
     return o;
@@ -272,11 +272,11 @@ static void parse_triangle_points(Parser *p, SceneObject *o, int smooth)
 {
     for (int i = 0; i < 3; i++) {
         if (i)
-            parse_comma(p);
-        o->u.triangle.v[i] = parse_vector(p);
+            expr_comma(p);
+        o->u.triangle.v[i] = expr_vector(p);
         if (smooth) {
-            parse_comma(p);
-            o->u.triangle.n[i] = parse_vector(p);
+            expr_comma(p);
+            o->u.triangle.n[i] = expr_vector(p);
         }
     }
     o->u.triangle.has_normals = smooth;
@@ -285,7 +285,7 @@ static void parse_triangle_points(Parser *p, SceneObject *o, int smooth)
 static SceneObject *parse_triangle(Parser *p, const Token *kw, int smooth)
 {
     const char *name = smooth ? "smooth_triangle" : "triangle";
-    begin_block(p, name);
+    tok_begin_block(p, name);
     SceneObject *o = new_object(p, OBJ_TRIANGLE, kw);
     parse_triangle_points(p, o, smooth);
     parse_object_mods(p, o, name);
@@ -294,25 +294,25 @@ static SceneObject *parse_triangle(Parser *p, const Token *kw, int smooth)
 
 static SceneObject *parse_box(Parser *p, const Token *kw)
 {
-    begin_block(p, "box");
+    tok_begin_block(p, "box");
     SceneObject *o = new_object(p, OBJ_BOX, kw);
-    o->u.box.corner1 = parse_vector(p);
-    parse_comma(p);
-    o->u.box.corner2 = parse_vector(p);
+    o->u.box.corner1 = expr_vector(p);
+    expr_comma(p);
+    o->u.box.corner2 = expr_vector(p);
     parse_object_mods(p, o, "box");
     return o;
 }
 
 static SceneObject *parse_plane(Parser *p, const Token *kw)
 {
-    begin_block(p, "plane");
+    tok_begin_block(p, "plane");
     SceneObject *o = new_object(p, OBJ_PLANE, kw);
-    Token at = *peek(p);
-    o->u.plane.normal = parse_vector(p);
+    Token at = *tok_peek(p);
+    o->u.plane.normal = expr_vector(p);
     if (v3_length(o->u.plane.normal) == 0.0)
-        parse_fail(p, at.pos, "degenerate plane normal");
-    parse_comma(p);
-    o->u.plane.distance = parse_float(p);
+        tok_fail(p, at.pos, "degenerate plane normal");
+    expr_comma(p);
+    o->u.plane.distance = expr_float(p);
     parse_object_mods(p, o, "plane");
     return o;
 }
@@ -328,7 +328,7 @@ static int add_mesh_texture(Parser *p, MeshBuilder *mb, const SceneTexture *t)
     for (int i = 0; i < mb->textures.n; i++)
         if (((const SceneTexture **)mb->textures.data)[i] == t)
             return i;
-    *(const SceneTexture **)tvec_push(p, &mb->textures) = t;
+    *(const SceneTexture **)tok_tvec_push(p, &mb->textures) = t;
     return mb->textures.n - 1;
 }
 
@@ -336,15 +336,15 @@ static void finish_mesh(Parser *p, SceneObject *o, MeshBuilder *mb)
 {
     /* mesh2's lists are read into the scene's arena (reserve_list): kept as they are */
     o->u.mesh.nvertices = mb->vertices.n;
-    o->u.mesh.vertices = tvec_kept(p, &mb->vertices);
+    o->u.mesh.vertices = tok_tvec_kept(p, &mb->vertices);
     o->u.mesh.nnormals = mb->normals.n;
-    o->u.mesh.normals = tvec_kept(p, &mb->normals);
+    o->u.mesh.normals = tok_tvec_kept(p, &mb->normals);
     o->u.mesh.nfaces = mb->faces.n;
-    o->u.mesh.faces = tvec_kept(p, &mb->faces);
+    o->u.mesh.faces = tok_tvec_kept(p, &mb->faces);
     o->u.mesh.nuvs = mb->uvs.n;
-    o->u.mesh.uvs = tvec_kept(p, &mb->uvs);
+    o->u.mesh.uvs = tok_tvec_kept(p, &mb->uvs);
     o->u.mesh.ntextures = mb->textures.n;
-    o->u.mesh.textures = palloc(p, sizeof(SceneTexture *) * (size_t)(mb->textures.n ? mb->textures.n : 1));
+    o->u.mesh.textures = tok_scene_alloc(p, sizeof(SceneTexture *) * (size_t)(mb->textures.n ? mb->textures.n : 1));
     if (mb->textures.n)
         memcpy(o->u.mesh.textures, mb->textures.data, sizeof(SceneTexture *) * (size_t)mb->textures.n);
 }
@@ -359,88 +359,88 @@ static void parse_face_index_block(Parser *p, MeshBuilder *mb, int uv)
     const char *kind = uv ? "uv" : "normal", *range_what = uv ? "uv vectors" : "normals";
     const char *block = uv ? "uv_indices" : "normal_indices";
     int range = uv ? mb->uvs.n : mb->normals.n;
-    begin_block(p, block);
-    Token ct = *peek(p);
+    tok_begin_block(p, block);
+    Token ct = *tok_peek(p);
     int n = parse_count(p, block, 0);
     if (n != mb->faces.n)
-        parse_fail(p, ct.pos, "number of %s indices must equal number of faces", kind);
+        tok_fail(p, ct.pos, "number of %s indices must equal number of faces", kind);
     for (int i = 0; i < n; i++) {
-        parse_comma(p);
-        Token vt = *peek(p);
-        Vec3 idx = parse_vector(p);
+        expr_comma(p);
+        Token vt = *tok_peek(p);
+        Vec3 idx = expr_vector(p);
         MeshFace *f = (MeshFace *)mb->faces.data + i;
         int *slot = uv ? f->uv : f->n;
         if (!mesh_index(idx.x, range, &slot[0]) || !mesh_index(idx.y, range, &slot[1]) ||
             !mesh_index(idx.z, range, &slot[2]))
-            parse_fail(p, vt.pos, "mesh2 %s index out of range (%d %s)", kind, range, range_what);
+            tok_fail(p, vt.pos, "mesh2 %s index out of range (%d %s)", kind, range, range_what);
     }
-    parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
-    expect_punct(p, '}', block);
+    expr_comma(p); /* POV-Ray takes a comma after every item, the last too */
+    tok_expect_punct(p, '}', block);
 }
 
 static void init_mesh_builder(MeshBuilder *mb)
 {
-    tvec_init(&mb->vertices, sizeof(Vec3));
-    tvec_init(&mb->normals, sizeof(Vec3));
-    tvec_init(&mb->faces, sizeof(MeshFace));
-    tvec_init(&mb->textures, sizeof(SceneTexture *));
-    tvec_init(&mb->uvs, sizeof(Vec3));
+    tok_tvec_init(&mb->vertices, sizeof(Vec3));
+    tok_tvec_init(&mb->normals, sizeof(Vec3));
+    tok_tvec_init(&mb->faces, sizeof(MeshFace));
+    tok_tvec_init(&mb->textures, sizeof(SceneTexture *));
+    tok_tvec_init(&mb->uvs, sizeof(Vec3));
 }
 
 static SceneObject *parse_mesh(Parser *p, const Token *kw)
 {
-    begin_block(p, "mesh");
+    tok_begin_block(p, "mesh");
     SceneObject *o = new_object(p, OBJ_MESH, kw);
     MeshBuilder mb;
     init_mesh_builder(&mb);
     for (;;) {
-        Token *t = next(p);
-        if (is_kw(t, KW_triangle) || is_kw(t, KW_smooth_triangle)) {
+        Token *t = tok_next(p);
+        if (tok_is_kw(t, KW_triangle) || tok_is_kw(t, KW_smooth_triangle)) {
             int smooth = t->kw == KW_smooth_triangle;
-            begin_block(p, smooth ? "smooth_triangle" : "triangle");
+            tok_begin_block(p, smooth ? "smooth_triangle" : "triangle");
             SceneObject tri;
             memset(&tri, 0, sizeof tri);
             parse_triangle_points(p, &tri, smooth);
-            MeshFace *f = tvec_push(p, &mb.faces);
+            MeshFace *f = tok_tvec_push(p, &mb.faces);
             for (int i = 0; i < 3; i++) {
                 f->uv[i] = -1; /* uv (0, 0) unless given */
                 f->v[i] = mb.vertices.n;
-                *(Vec3 *)tvec_push(p, &mb.vertices) = tri.u.triangle.v[i];
+                *(Vec3 *)tok_tvec_push(p, &mb.vertices) = tri.u.triangle.v[i];
                 f->n[i] = -1;
                 if (smooth) {
                     f->n[i] = mb.normals.n;
-                    *(Vec3 *)tvec_push(p, &mb.normals) = tri.u.triangle.n[i];
+                    *(Vec3 *)tok_tvec_push(p, &mb.normals) = tri.u.triangle.n[i];
                 }
             }
             f->texture = -1;
             for (;;) {
-                t = next(p);
-                if (is_punct(t, '}'))
+                t = tok_next(p);
+                if (tok_is_punct(t, '}'))
                     break;
-                if (is_kw(t, KW_texture)) {
-                    int idx = add_mesh_texture(p, &mb, parse_texture(p));
+                if (tok_is_kw(t, KW_texture)) {
+                    int idx = add_mesh_texture(p, &mb, gram_texture(p));
                     ((MeshFace *)mb.faces.data)[mb.faces.n - 1].texture = idx;
-                } else if (is_kw(t, KW_uv_vectors)) {
+                } else if (tok_is_kw(t, KW_uv_vectors)) {
                     MeshFace *face = (MeshFace *)mb.faces.data + mb.faces.n - 1;
                     for (int i = 0; i < 3; i++) {
                         if (i)
-                            parse_comma(p);
-                        Vec3 uv = parse_vector(p);
+                            expr_comma(p);
+                        Vec3 uv = expr_vector(p);
                         face->uv[i] = mb.uvs.n;
-                        *(Vec3 *)tvec_push(p, &mb.uvs) = v3(uv.x, uv.y, 0.0);
+                        *(Vec3 *)tok_tvec_push(p, &mb.uvs) = v3(uv.x, uv.y, 0.0);
                     }
                 } else {
                     if (t->type == TK_WORD && t->kw >= 0)
-                        unsupported(p, t);
-                    fail_expected(p, t, "texture, uv_vectors or '}' in a mesh triangle");
+                        tok_unsupported(p, t);
+                    tok_fail_expected(p, t, "texture, uv_vectors or '}' in a mesh triangle");
                 }
             }
-        } else if (is_kw(t, KW_inside_vector)) {
-            (void)parse_vector(p);
-        } else if (is_kw(t, KW_hierarchy)) {
+        } else if (tok_is_kw(t, KW_inside_vector)) {
+            (void)expr_vector(p);
+        } else if (tok_is_kw(t, KW_hierarchy)) {
             skip_optional_float(p);
         } else {
-            unget(p);
+            tok_unget(p);
             break;
         }
     }
@@ -455,37 +455,37 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
  * without the room, not for want of memory. */
 static void reserve_list(Parser *p, TempVec *out, int n)
 {
-    size_t could = lex_bytes_left(p) / 7 + 1;
-    tvec_reserve_kept(p, out, (size_t)n < could ? n : (int)(could < (1u << 28) ? could : (1u << 28)));
+    size_t could = tok_bytes_left(p) / 7 + 1;
+    tok_tvec_reserve_kept(p, out, (size_t)n < could ? n : (int)(could < (1u << 28) ? could : (1u << 28)));
 }
 
 static void parse_vector_list(Parser *p, TempVec *out, const char *what)
 {
-    begin_block(p, what);
+    tok_begin_block(p, what);
     int n = parse_count(p, what, 0);
     reserve_list(p, out, n);
     int i = 0;
-    if (out->n == 0 && out->cap >= n && lex_plain_vector_list(p, n, out->data, NULL, 0)) {
+    if (out->n == 0 && out->cap >= n && tok_plain_vector_list(p, n, out->data, NULL, 0)) {
         out->n = n; /* all of them at once (plain_lists.c) */
         i = n;
     }
     for (; i < n; i++) {
-        parse_comma(p);
-        *(Vec3 *)tvec_push(p, out) = parse_vector(p);
+        expr_comma(p);
+        *(Vec3 *)tok_tvec_push(p, out) = expr_vector(p);
     }
-    parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
-    expect_punct(p, '}', what);
+    expr_comma(p); /* POV-Ray takes a comma after every item, the last too */
+    tok_expect_punct(p, '}', what);
 }
 
 static SceneObject *parse_mesh2(Parser *p, const Token *kw)
 {
-    begin_block(p, "mesh2");
+    tok_begin_block(p, "mesh2");
     SceneObject *o = new_object(p, OBJ_MESH, kw);
     MeshBuilder mb;
     init_mesh_builder(&mb);
     int have_faces = 0, have_normal_indices = 0, have_uv_indices = 0;
     for (;;) {
-        Token *t = next(p);
+        Token *t = tok_next(p);
         Token at = *t;
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_vertex_vectors:
@@ -508,89 +508,89 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                 ((Vec3 *)mb.uvs.data)[i].z = 0.0;
             continue;
         case KW_texture_list: {
-            begin_block(p, "texture_list");
+            tok_begin_block(p, "texture_list");
             int n = parse_count(p, "texture_list", 0);
             mb.textures.n = 0;
             for (int i = 0; i < n; i++) {
-                parse_comma(p);
-                Token *tt = next(p);
-                if (!is_kw(tt, KW_texture))
-                    fail_expected(p, tt, "'texture' in 'texture_list'");
-                *(const SceneTexture **)tvec_push(p, &mb.textures) = parse_texture(p);
+                expr_comma(p);
+                Token *tt = tok_next(p);
+                if (!tok_is_kw(tt, KW_texture))
+                    tok_fail_expected(p, tt, "'texture' in 'texture_list'");
+                *(const SceneTexture **)tok_tvec_push(p, &mb.textures) = gram_texture(p);
             }
-            parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
-            expect_punct(p, '}', "texture_list");
+            expr_comma(p); /* POV-Ray takes a comma after every item, the last too */
+            tok_expect_punct(p, '}', "texture_list");
             continue;
         }
         case KW_face_indices: {
-            begin_block(p, "face_indices");
+            tok_begin_block(p, "face_indices");
             int n = parse_count(p, "face_indices", 1);
             mb.faces.n = 0;
             reserve_list(p, &mb.faces, n);
             int i = 0;
-            if (mb.faces.cap >= n && lex_plain_vector_list(p, n, NULL, mb.faces.data, mb.vertices.n)) {
+            if (mb.faces.cap >= n && tok_plain_vector_list(p, n, NULL, mb.faces.data, mb.vertices.n)) {
                 mb.faces.n = n; /* all of them at once (plain_lists.c) */
                 i = n;
             }
             for (; i < n; i++) {
-                parse_comma(p);
-                Token vt = *peek(p);
-                Vec3 idx = parse_vector(p);
-                MeshFace *f = tvec_push(p, &mb.faces);
+                expr_comma(p);
+                Token vt = *tok_peek(p);
+                Vec3 idx = expr_vector(p);
+                MeshFace *f = tok_tvec_push(p, &mb.faces);
                 if (!mesh_index(idx.x, mb.vertices.n, &f->v[0]) || !mesh_index(idx.y, mb.vertices.n, &f->v[1]) ||
                     !mesh_index(idx.z, mb.vertices.n, &f->v[2]))
-                    parse_fail(p, vt.pos, "mesh2 face index out of range (%d vertices)", mb.vertices.n);
+                    tok_fail(p, vt.pos, "mesh2 face index out of range (%d vertices)", mb.vertices.n);
                 f->n[0] = f->n[1] = f->n[2] = -1;
                 f->uv[0] = f->uv[1] = f->uv[2] = -1;
                 f->texture = -1;
                 /* one texture index, or three (per vertex: hstrace uses the first) */
                 for (int k = 0; k < 3; k++) {
-                    parse_comma(p);
-                    if (!token_starts_float(p, peek(p)))
+                    expr_comma(p);
+                    if (!expr_starts_float(p, tok_peek(p)))
                         break;
-                    Token it = *peek(p);
+                    Token it = *tok_peek(p);
                     int ti;
-                    if (!mesh_index(parse_float(p), mb.textures.n, &ti))
-                        parse_fail(p, it.pos, "texture index out of range in mesh2");
+                    if (!mesh_index(expr_float(p), mb.textures.n, &ti))
+                        tok_fail(p, it.pos, "texture index out of range in mesh2");
                     if (k == 0)
                         f->texture = ti;
                 }
             }
-            parse_comma(p); /* POV-Ray takes a comma after every item, the last too */
-            expect_punct(p, '}', "face_indices");
+            expr_comma(p); /* POV-Ray takes a comma after every item, the last too */
+            tok_expect_punct(p, '}', "face_indices");
             have_faces = 1;
             continue;
         }
         case KW_normal_indices:
             if (!have_faces)
-                parse_fail(p, at.pos, "normal_indices must follow face_indices in mesh2");
+                tok_fail(p, at.pos, "normal_indices must follow face_indices in mesh2");
             parse_face_index_block(p, &mb, 0);
             have_normal_indices = 1;
             continue;
         case KW_uv_indices:
             if (!have_faces)
-                parse_fail(p, at.pos, "uv_indices must follow face_indices in mesh2");
+                tok_fail(p, at.pos, "uv_indices must follow face_indices in mesh2");
             parse_face_index_block(p, &mb, 1);
             have_uv_indices = 1;
             continue;
         case KW_inside_vector:
-            (void)parse_vector(p);
+            (void)expr_vector(p);
             continue;
         default:
             break;
         }
-        unget(p);
+        tok_unget(p);
         break;
     }
-    Token end = *peek(p);
+    Token end = *tok_peek(p);
     if (mb.vertices.n == 0)
-        parse_fail(p, end.pos, "vertex_vectors not found in mesh2");
+        tok_fail(p, end.pos, "vertex_vectors not found in mesh2");
     if (!have_faces)
-        parse_fail(p, end.pos, "face_indices not found in mesh2");
+        tok_fail(p, end.pos, "face_indices not found in mesh2");
     if (!have_normal_indices && mb.normals.n > 0) {
         /* POV-Ray: as many normals as vertices means "same indices" */
         if (mb.normals.n != mb.vertices.n)
-            parse_fail(p, end.pos, "normal_indices missing in mesh2");
+            tok_fail(p, end.pos, "normal_indices missing in mesh2");
         for (int i = 0; i < mb.faces.n; i++) {
             MeshFace *f = (MeshFace *)mb.faces.data + i;
             memcpy(f->n, f->v, sizeof f->n);
@@ -600,7 +600,7 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
         /* POV-Ray: as many uv vectors as vertices means "same indices";
          * one (or none: uv 0, 0) serves every corner */
         if (mb.uvs.n != mb.vertices.n)
-            parse_fail(p, end.pos, "uv_indices missing in mesh2");
+            tok_fail(p, end.pos, "uv_indices missing in mesh2");
         for (int i = 0; i < mb.faces.n; i++) {
             MeshFace *f = (MeshFace *)mb.faces.data + i;
             memcpy(f->uv, f->v, sizeof f->uv);
@@ -618,32 +618,32 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
 
 static SceneObject *parse_union(Parser *p, const Token *kw)
 {
-    begin_block(p, "union");
+    tok_begin_block(p, "union");
     SceneObject *o = new_object(p, OBJ_UNION, kw);
     TempVec children, lights, slots;
-    tvec_init(&children, sizeof(SceneObject *));
-    tvec_init(&lights, sizeof(SceneLight));
-    tvec_init(&slots, sizeof(int));
+    tok_tvec_init(&children, sizeof(SceneObject *));
+    tok_tvec_init(&lights, sizeof(SceneLight));
+    tok_tvec_init(&slots, sizeof(int));
     for (;;) {
-        Token t = *next(p);
+        Token t = *tok_next(p);
         SceneObject *child = NULL;
         SceneLight *light = NULL;
-        if (!parse_object(p, &t, &child, &light)) {
-            unget(p);
+        if (!gram_object(p, &t, &child, &light)) {
+            tok_unget(p);
             break;
         }
         if (light) {
-            *(SceneLight *)tvec_push(p, &lights) = *light;
-            *(int *)tvec_push(p, &slots) = children.n;
+            *(SceneLight *)tok_tvec_push(p, &lights) = *light;
+            *(int *)tok_tvec_push(p, &slots) = children.n;
             continue;
         }
-        *(SceneObject **)tvec_push(p, &children) = child;
+        *(SceneObject **)tok_tvec_push(p, &children) = child;
     }
     o->u.csg.nchildren = children.n;
-    o->u.csg.children = palloc(p, sizeof(SceneObject *) * (size_t)(children.n ? children.n : 1));
+    o->u.csg.children = tok_scene_alloc(p, sizeof(SceneObject *) * (size_t)(children.n ? children.n : 1));
     if (children.n)
         memcpy(o->u.csg.children, children.data, sizeof(SceneObject *) * (size_t)children.n);
-    /* Written unions nest as deep as the text (nesting_enter counts them),
+    /* Written unions nest as deep as the text (tok_nesting_enter counts them),
      * but `#declare U = union { object { U } }` in a loop nests a copy one
      * level deeper each time: the depth is bounded here, where it grows. */
     o->depth = 1;
@@ -651,10 +651,10 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
         if (o->u.csg.children[i]->depth + 1 > o->depth)
             o->depth = o->u.csg.children[i]->depth + 1;
     if (o->depth > MAX_NESTING)
-        parse_fail(p, kw->pos, "nested too deeply (unions inside unions more than %d levels)", MAX_NESTING);
+        tok_fail(p, kw->pos, "nested too deeply (unions inside unions more than %d levels)", MAX_NESTING);
     if (lights.n) {
-        SceneLight *l = palloc(p, sizeof(SceneLight) * (size_t)lights.n);
-        int *slot = palloc(p, sizeof(int) * (size_t)lights.n);
+        SceneLight *l = tok_scene_alloc(p, sizeof(SceneLight) * (size_t)lights.n);
+        int *slot = tok_scene_alloc(p, sizeof(int) * (size_t)lights.n);
         memcpy(l, lights.data, sizeof(SceneLight) * (size_t)lights.n);
         memcpy(slot, slots.data, sizeof(int) * (size_t)lights.n);
         o->u.csg.nlights = lights.n;
@@ -669,21 +669,21 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
 static void parse_light_object_mods(Parser *p, SceneLight *l)
 {
     for (;;) {
-        Token *m = next(p);
-        if (is_punct(m, '}'))
+        Token *m = tok_next(p);
+        if (tok_is_punct(m, '}'))
             return;
         Transform tr;
         transform_identity(&tr);
-        if (!parse_transform_item(p, m, &tr))
-            fail_expected(p, m, "a transform or '}' after a light_source in 'object'");
-        transform_light(l, &tr);
+        if (!expr_transform_item(p, m, &tr))
+            tok_fail_expected(p, m, "a transform or '}' after a light_source in 'object'");
+        gram_transform_light(l, &tr);
     }
 }
 
 /* Appends the light_sources of union `o` and of the unions inside it to the
  * scene's lights, in world space: `outer` is the transform of o's parents.
  * Order as POV-Ray's Post_Process: depth first, as written. */
-void instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth)
+void gram_instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth)
 {
     if (o->kind != OBJ_UNION || depth > MAX_NESTING)
         return;
@@ -692,28 +692,28 @@ void instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *
     int next_light = 0;
     for (int c = 0; c <= o->u.csg.nchildren; c++) {
         for (; next_light < o->u.csg.nlights && o->u.csg.light_slot[next_light] == c; next_light++) {
-            SceneLight *l = tvec_push(p, &p->lights);
+            SceneLight *l = tok_tvec_push(p, &p->gram->lights);
             *l = o->u.csg.lights[next_light];
-            transform_light(l, &world);
+            gram_transform_light(l, &world);
         }
         if (c < o->u.csg.nchildren)
-            instantiate_union_lights(p, o->u.csg.children[c], &world, depth + 1);
+            gram_instantiate_union_lights(p, o->u.csg.children[c], &world, depth + 1);
     }
 }
 
 static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj, SceneLight **light)
 {
-    begin_block(p, "object");
-    Token t = *next(p);
+    tok_begin_block(p, "object");
+    Token t = *tok_next(p);
     if (t.type == TK_WORD && t.kw < 0) {
-        Symbol *s = token_symbol(p, &t);
+        Symbol *s = tok_symbol_of(p, &t);
         if (!s)
-            parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+            tok_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
         const Value *v = &s->value;
         if (v->kind == VAL_UNSUPPORTED)
-            use_unsupported(p, &t, v);
+            tok_use_unsupported(p, &t, v);
         if (v->kind == VAL_LIGHT) {
-            SceneLight *l = palloc(p, sizeof *l);
+            SceneLight *l = tok_scene_alloc(p, sizeof *l);
             *l = *v->light;
             l->pos = kw->pos;
             parse_light_object_mods(p, l);
@@ -721,8 +721,8 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
             return;
         }
         if (v->kind != VAL_OBJECT)
-            parse_fail(p, t.pos, "'%.*s' is not an object", t.len, t.text);
-        SceneObject *o = palloc(p, sizeof *o);
+            tok_fail(p, t.pos, "'%.*s' is not an object", t.len, t.text);
+        SceneObject *o = tok_scene_alloc(p, sizeof *o);
         *o = *v->object;
         o->pos = kw->pos;
         parse_object_mods(p, o, "object");
@@ -731,8 +731,8 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
     }
     SceneObject *inner = NULL;
     SceneLight *inner_light = NULL;
-    if (!parse_object(p, &t, &inner, &inner_light))
-        fail_expected(p, &t, "an object or object identifier after 'object {'");
+    if (!gram_object(p, &t, &inner, &inner_light))
+        tok_fail_expected(p, &t, "an object or object identifier after 'object {'");
     if (inner_light) {
         parse_light_object_mods(p, inner_light);
         *light = inner_light;
@@ -749,29 +749,29 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
 static int object_id_follows(Parser *p, int kw)
 {
     Token word;
-    if (!lex_next_is_brace_and_word(p, &word) || word.kw >= 0)
+    if (!tok_next_is_brace_and_word(p, &word) || word.kw >= 0)
         return 0;
-    Symbol *s = symbol_find(p, word.text, word.len);
+    Symbol *s = tok_symbol_find(p, word.text, word.len);
     if (!s)
         return 0;
     ValueKind k = s->value.kind;
     return k == VAL_OBJECT || k == VAL_LIGHT || (k == VAL_UNSUPPORTED && kw == KW_union);
 }
 
-int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
+int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
 {
     *obj = NULL;
     *light = NULL;
-    if (t->type != TK_WORD || (!is_object_keyword(t->kw) && t->kw != KW_light_source))
+    if (t->type != TK_WORD || (!gram_is_object_keyword(t->kw) && t->kw != KW_light_source))
         return 0;
     Token kw = *t;
-    nesting_enter(p, &kw);
+    tok_nesting_enter(p, &kw);
     if (kw.kw != KW_object && object_id_follows(p, kw.kw)) {
         /* `light_source { SubPatch translate ... }`, `union { U ... }`:
          * POV-Ray's Parse_Object_Id takes a declared object or light after
          * any object keyword's '{' as `object { ID ... }` */
         parse_object_statement(p, &kw, obj, light);
-        nesting_leave(p);
+        tok_nesting_leave(p);
         return 1;
     }
     switch (kw.kw) {
@@ -784,9 +784,9 @@ int parse_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **ligh
     case KW_plane: *obj = parse_plane(p, &kw); break;
     case KW_union: *obj = parse_union(p, &kw); break;
     case KW_object: parse_object_statement(p, &kw, obj, light); break;
-    case KW_light_source: *light = parse_light_source(p, &kw); break;
-    default: unsupported(p, &kw);
+    case KW_light_source: *light = gram_light_source(p, &kw); break;
+    default: tok_unsupported(p, &kw);
     }
-    nesting_leave(p);
+    tok_nesting_leave(p);
     return 1;
 }

@@ -18,7 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 typedef struct {
     const char *path; /* as opened (temporary arena) */
@@ -77,13 +77,13 @@ static void read_whole(Parser *p, int fd, const struct stat *st, const char *pat
     size_t cap = st->st_size > 0 ? (size_t)st->st_size + 1 : 4096, n = 0;
     if ((uintmax_t)st->st_size >= (uintmax_t)SIZE_MAX / 2) {
         close(fd);
-        limits_over_budget(p, at);
+        tok_limits_over_budget(p, at);
     }
     char *buf = arena_alloc_uninit(p->temp, cap);
     for (;;) {
         if (!buf) {
             close(fd);
-            parse_fail_memory(p, at);
+            tok_fail_memory(p, at);
         }
         char probe[4096];
         char *into = buf + n;
@@ -100,7 +100,7 @@ static void read_whole(Parser *p, int fd, const struct stat *st, const char *pat
         if (got < 0) {
             int e = errno;
             close(fd);
-            parse_fail_io(p, at, "cannot read '%s': %s", path, strerror(e));
+            tok_fail_io(p, at, "cannot read '%s': %s", path, strerror(e));
         }
         if (got == 0)
             break;
@@ -109,7 +109,7 @@ static void read_whole(Parser *p, int fd, const struct stat *st, const char *pat
             char *bigger = cap > SIZE_MAX / 4 ? NULL : arena_alloc_uninit(p->temp, more);
             if (!bigger) {
                 close(fd);
-                parse_fail_memory(p, at);
+                tok_fail_memory(p, at);
             }
             memcpy(bigger, buf, n);
             memcpy(bigger + n, probe, (size_t)got);
@@ -119,7 +119,7 @@ static void read_whole(Parser *p, int fd, const struct stat *st, const char *pat
         const char *zero = memchr(buf + n, '\0', (size_t)got);
         if (zero) {
             close(fd);
-            parse_fail(p, position_in(path, buf, (size_t)(zero - buf)),
+            tok_fail(p, position_in(path, buf, (size_t)(zero - buf)),
                        "a zero byte, which no scene text holds: '%s' is not a scene file", path);
         }
         n += (size_t)got;
@@ -130,12 +130,12 @@ static void read_whole(Parser *p, int fd, const struct stat *st, const char *pat
     out->size = n;
 }
 
-void source_files_init(Parser *p)
+void tok_source_files_init(Parser *p)
 {
-    tvec_init(&p->read_files, sizeof(ReadFile));
+    tok_tvec_init(&p->read_files, sizeof(ReadFile));
 }
 
-int source_read(Parser *p, const char *path, SourcePos at, SourceText *out)
+int tok_source_read(Parser *p, const char *path, SourcePos at, SourceText *out)
 {
     /* O_NONBLOCK: opening a FIFO must not wait for a writer */
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
@@ -150,7 +150,7 @@ int source_read(Parser *p, const char *path, SourcePos at, SourceText *out)
     }
     if (!S_ISREG(st.st_mode)) {
         close(fd);
-        parse_fail_io(p, at, "'%s' is %s, not a file to read", path, kind_of(st.st_mode));
+        tok_fail_io(p, at, "'%s' is %s, not a file to read", path, kind_of(st.st_mode));
     }
     const ReadFile *seen = already_read(p, path, &st);
     if (seen) {
@@ -162,18 +162,18 @@ int source_read(Parser *p, const char *path, SourcePos at, SourceText *out)
     int flags = fcntl(fd, F_GETFL);
     if (flags >= 0)
         (void)fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
-    if ((uintmax_t)st.st_size >= (uintmax_t)limits_memory_left(p)) {
+    if ((uintmax_t)st.st_size >= (uintmax_t)tok_limits_memory_left(p)) {
         close(fd);
-        limits_over_budget(p, at);
+        tok_limits_over_budget(p, at);
     }
     SourceText text;
     memset(&text, 0, sizeof text);
     read_whole(p, fd, &st, path, at, &text);
     /* positions name it (escaped) as long as the scene lives */
-    const char *real = tmp_strndup(p, path, strlen(path));
-    text.name = display_name(p, path);
-    text.dir = dir_of(p, real);
-    ReadFile *r = tvec_push(p, &p->read_files);
+    const char *real = tok_temp_strndup(p, path, strlen(path));
+    text.name = tok_display_name(p, path);
+    text.dir = tok_dir_of(p, real);
+    ReadFile *r = tok_tvec_push(p, &p->read_files);
     r->path = real;
     r->dev = st.st_dev;
     r->ino = st.st_ino;
@@ -184,7 +184,7 @@ int source_read(Parser *p, const char *path, SourcePos at, SourceText *out)
     return 1;
 }
 
-int source_read_in(Parser *p, const char *dir, const char *name, SourcePos at, SourceText *out)
+int tok_source_read_in(Parser *p, const char *dir, const char *name, SourcePos at, SourceText *out)
 {
     char joined[4096];
     int n;
@@ -196,5 +196,5 @@ int source_read_in(Parser *p, const char *dir, const char *name, SourcePos at, S
         errno = ENAMETOOLONG;
         return 0;
     }
-    return source_read(p, joined, at, out);
+    return tok_source_read(p, joined, at, out);
 }

@@ -7,9 +7,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
-void default_camera(SceneCamera *cam)
+void gram_default_camera(SceneCamera *cam)
 {
     memset(cam, 0, sizeof *cam);
     cam->kind = CAMERA_PERSPECTIVE;
@@ -29,111 +29,111 @@ static void transform_camera(SceneCamera *cam, const Transform *tr)
 
 static const double CAMERA_EPSILON = 1e-10; /* POV-Ray's EPSILON */
 
-void parse_camera(Parser *p, const Token *kw, SceneCamera *cam)
+void gram_camera(Parser *p, const Token *kw, SceneCamera *cam)
 {
-    begin_block(p, "camera");
+    tok_begin_block(p, "camera");
     Transform tr;
     transform_identity(&tr);
 
     /* `camera { Declared transforms }`: only transforms may follow. */
-    Token *t = next(p);
+    Token *t = tok_next(p);
     if (t->type == TK_WORD && t->kw < 0) {
-        Symbol *s = token_symbol(p, t);
+        Symbol *s = tok_symbol_of(p, t);
         if (!s)
-            parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+            tok_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
         if (s->value.kind == VAL_UNSUPPORTED)
-            use_unsupported(p, t, &s->value);
+            tok_use_unsupported(p, t, &s->value);
         if (s->value.kind != VAL_CAMERA)
-            parse_fail(p, t->pos, "'%.*s' is not a camera", t->len, t->text);
+            tok_fail(p, t->pos, "'%.*s' is not a camera", t->len, t->text);
         *cam = *s->value.camera;
         cam->pos = kw->pos;
         for (;;) {
-            t = next(p);
-            if (is_punct(t, '}'))
+            t = tok_next(p);
+            if (tok_is_punct(t, '}'))
                 break;
-            if (!parse_transform_item(p, t, &tr))
-                fail_expected(p, t, "a transform or '}' after a camera identifier");
+            if (!expr_transform_item(p, t, &tr))
+                tok_fail_expected(p, t, "a transform or '}' after a camera identifier");
         }
         transform_camera(cam, &tr);
         return;
     }
-    unget(p);
+    tok_unget(p);
 
     SceneCamera c;
-    default_camera(&c);
+    gram_default_camera(&c);
     c.pos = kw->pos;
     Vec3 sky = v3(0, 1, 0), look_at = v3(0, 0, 1);
     int had_up = 0, had_right = 0, had_angle = 0, had_look_at = 0;
     double angle = 0.0;
     Token angle_tok = *kw;
 
-    t = next(p);
-    if (is_kw(t, KW_perspective))
+    t = tok_next(p);
+    if (tok_is_kw(t, KW_perspective))
         c.kind = CAMERA_PERSPECTIVE;
-    else if (is_kw(t, KW_orthographic))
+    else if (tok_is_kw(t, KW_orthographic))
         c.kind = CAMERA_ORTHOGRAPHIC;
     else if (t->type == TK_WORD && (t->kw == KW_fisheye || t->kw == KW_ultra_wide_angle || t->kw == KW_omnimax ||
                                     t->kw == KW_panoramic || t->kw == KW_spherical || t->kw == KW_cylinder ||
                                     t->kw == KW_mesh_camera))
-        unsupported(p, t);
+        tok_unsupported(p, t);
     else
-        unget(p);
+        tok_unget(p);
 
     for (;;) {
-        t = next(p);
-        if (is_punct(t, '}'))
+        t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             break;
-        if (parse_transform_item(p, t, &tr))
+        if (expr_transform_item(p, t, &tr))
             continue;
         switch (t->type == TK_WORD ? t->kw : -1) {
-        case KW_location: c.location = parse_vector(p); break;
-        case KW_look_at: look_at = parse_vector(p); had_look_at = 1; break;
-        case KW_direction: c.direction = parse_vector(p); break;
-        case KW_up: c.up = parse_vector(p); had_up = 1; break;
-        case KW_right: c.right = parse_vector(p); had_right = 1; break;
-        case KW_sky: sky = parse_vector(p); break;
+        case KW_location: c.location = expr_vector(p); break;
+        case KW_look_at: look_at = expr_vector(p); had_look_at = 1; break;
+        case KW_direction: c.direction = expr_vector(p); break;
+        case KW_up: c.up = expr_vector(p); had_up = 1; break;
+        case KW_right: c.right = expr_vector(p); had_right = 1; break;
+        case KW_sky: sky = expr_vector(p); break;
         case KW_angle:
             angle_tok = *t;
-            if (c.kind == CAMERA_ORTHOGRAPHIC && !token_starts_float(p, peek(p)))
+            if (c.kind == CAMERA_ORTHOGRAPHIC && !expr_starts_float(p, tok_peek(p)))
                 angle = 0.0;
             else
-                angle = parse_float(p);
+                angle = expr_float(p);
             if (angle < 0.0)
-                parse_fail(p, t->pos, "negative viewing angle");
+                tok_fail(p, t->pos, "negative viewing angle");
             had_angle = 1;
             break;
         case KW_perspective: case KW_orthographic: case KW_fisheye: case KW_ultra_wide_angle:
         case KW_omnimax: case KW_panoramic: case KW_spherical: case KW_cylinder:
-            parse_fail(p, t->pos, "the camera type must come first in 'camera'");
+            tok_fail(p, t->pos, "the camera type must come first in 'camera'");
         case KW_aperture: case KW_blur_samples: case KW_focal_point: case KW_confidence: case KW_variance:
             /* focal blur: a pinhole camera stands for it */
-            approximate(p, t, APPROX_FOCAL_BLUR, &c.approx);
+            tok_approximate(p, t, APPROX_FOCAL_BLUR, &c.approx);
             if (t->kw == KW_blur_samples) { /* one count, or min, max */
-                (void)parse_float(p);
-                if (is_punct(peek(p), ',')) {
-                    next(p);
-                    (void)parse_float(p);
+                (void)expr_float(p);
+                if (tok_is_punct(tok_peek(p), ',')) {
+                    tok_next(p);
+                    (void)expr_float(p);
                 }
             } else if (t->kw == KW_focal_point) {
-                (void)parse_vector(p);
+                (void)expr_vector(p);
             } else {
-                (void)parse_float(p);
+                (void)expr_float(p);
             }
             break;
         case KW_normal: /* camera ray perturbation: ignored */
-            approximate(p, t, APPROX_FOCAL_BLUR, &c.approx);
-            skip_normal(p);
+            tok_approximate(p, t, APPROX_FOCAL_BLUR, &c.approx);
+            gram_skip_normal(p);
             break;
         case KW_bokeh:
-            unsupported(p, t);
+            tok_unsupported(p, t);
         default:
-            fail_expected(p, t, "a camera item or '}' in 'camera'");
+            tok_fail_expected(p, t, "a camera item or '}' in 'camera'");
         }
     }
 
     if (had_angle) {
         if (angle >= 180.0)
-            parse_fail(p, angle_tok.pos, "viewing angle has to be smaller than 180 degrees");
+            tok_fail(p, angle_tok.pos, "viewing angle has to be smaller than 180 degrees");
         if (angle > 0.0) {
             double right_len = v3_length(c.right);
             c.direction = v3_scale(v3_normalize(c.direction), right_len / tan(angle * M_PI / 360.0) / 2.0);
@@ -144,7 +144,7 @@ void parse_camera(Parser *p, const Token *kw, SceneCamera *cam)
         double handedness = v3_dot(v3_cross(c.up, c.direction), c.right);
         Vec3 d = v3_sub(look_at, c.location);
         if (v3_dot(d, d) < CAMERA_EPSILON)
-            parse_fail(p, kw->pos, "camera location and look_at point must be different");
+            tok_fail(p, kw->pos, "camera location and look_at point must be different");
         d = v3_normalize(d);
         Vec3 old_right = c.right;
         c.right = v3_cross(sky, d);
@@ -170,7 +170,7 @@ void parse_camera(Parser *p, const Token *kw, SceneCamera *cam)
     *cam = c;
 }
 
-void transform_light(SceneLight *l, const Transform *tr)
+void gram_transform_light(SceneLight *l, const Transform *tr)
 {
     l->location = transform_point(tr, l->location);
     l->point_at = transform_point(tr, l->point_at);
@@ -178,29 +178,29 @@ void transform_light(SceneLight *l, const Transform *tr)
     l->area.axis2 = transform_direction(tr, l->area.axis2);
 }
 
-SceneLight *parse_light_source(Parser *p, const Token *kw)
+SceneLight *gram_light_source(Parser *p, const Token *kw)
 {
-    begin_block(p, "light_source");
-    SceneLight *l = palloc(p, sizeof *l);
+    tok_begin_block(p, "light_source");
+    SceneLight *l = tok_scene_alloc(p, sizeof *l);
     l->kind = LIGHT_POINT;
     l->pos = kw->pos;
     l->point_at = (Vec3){ 0.0, 0.0, 1.0 }; /* POV-Ray's default */
     l->area.adaptive = 100; /* POV-Ray's: subdivide to every sample */
-    l->location = parse_vector(p);
-    parse_comma(p);
-    parse_colour(p, &l->colour, 0);
+    l->location = expr_vector(p);
+    expr_comma(p);
+    expr_colour(p, &l->colour, 0);
     int area = 0, circular = 0;
     SourcePos circular_at = { 0 }, orient_at = { 0 };
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             break;
         /* As in POV-Ray, a transform moves what is set so far: a point_at
          * written after it is taken as written. */
         Transform tr;
         transform_identity(&tr);
-        if (parse_transform_item(p, t, &tr)) {
-            transform_light(l, &tr);
+        if (expr_transform_item(p, t, &tr)) {
+            gram_transform_light(l, &tr);
             continue;
         }
         switch (t->type == TK_WORD ? t->kw : -1) {
@@ -223,10 +223,10 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
         case KW_radius:
         case KW_falloff: {
             if (l->beam == BEAM_NONE)
-                parse_fail(p, t->pos, "'%s' needs 'spotlight' or 'cylinder' before it in 'light_source'",
-                           keyword_name(t->kw));
-            int item = t->kw; /* t is the parser's current token: parse_float moves it */
-            double v = parse_float(p);
+                tok_fail(p, t->pos, "'%s' needs 'spotlight' or 'cylinder' before it in 'light_source'",
+                           tok_keyword_name(t->kw));
+            int item = t->kw; /* t is the parser's current token: expr_float moves it */
+            double v = expr_float(p);
             if (item == KW_tightness)
                 l->beam_tightness = v;
             else if (item == KW_radius)
@@ -235,48 +235,48 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
                 l->beam_falloff = l->beam == BEAM_SPOT ? cos(v * M_PI / 180.0) : v;
             break;
         }
-        case KW_point_at: l->point_at = parse_vector(p); break;
-        case KW_fade_distance: l->fade_distance = parse_float(p); break;
-        case KW_fade_power: l->fade_power = parse_float(p); break;
+        case KW_point_at: l->point_at = expr_vector(p); break;
+        case KW_fade_distance: l->fade_distance = expr_float(p); break;
+        case KW_fade_power: l->fade_power = expr_float(p); break;
         case KW_media_attenuation: { /* fog on the light's rays: not modelled */
             Token at = *t;
-            if (!token_starts_float(p, peek(p)) || parse_float(p) > 0.0) {
-                p->media_attenuation_seen = 1;
-                if (p->fogs.n > 0) /* else the fog, when it comes, reports it */
-                    approximate(p, &at, APPROX_FOG, &l->approx);
+            if (!expr_starts_float(p, tok_peek(p)) || expr_float(p) > 0.0) {
+                p->gram->media_attenuation_seen = 1;
+                if (p->gram->fogs.n > 0) /* else the fog, when it comes, reports it */
+                    tok_approximate(p, &at, APPROX_FOG, &l->approx);
             }
             break;
         }
         case KW_media_interaction: /* only matters with media, which is unsupported */
-            if (token_starts_float(p, peek(p)))
-                (void)parse_float(p);
+            if (expr_starts_float(p, tok_peek(p)))
+                (void)expr_float(p);
             break;
         case KW_photons: /* photon settings: parsed past, not modelled */
-            approximate(p, t, APPROX_PHOTONS, &l->approx);
-            begin_block(p, "photons");
-            skip_block_body(p);
+            tok_approximate(p, t, APPROX_PHOTONS, &l->approx);
+            tok_begin_block(p, "photons");
+            tok_skip_block_body(p);
             break;
         case KW_area_light: { /* POV-Ray's Parse_Light_Source: sizes truncated to integers */
-            SourcePos area_at = t->pos; /* t is the parser's current token: parse_float moves it */
+            SourcePos area_at = t->pos; /* t is the parser's current token: expr_float moves it */
             area = 1;
-            l->area.axis1 = parse_vector(p);
-            parse_comma(p);
-            l->area.axis2 = parse_vector(p);
-            parse_comma(p);
+            l->area.axis1 = expr_vector(p);
+            expr_comma(p);
+            l->area.axis2 = expr_vector(p);
+            expr_comma(p);
             double size[2];
             for (int k = 0; k < 2; k++) {
                 if (k)
-                    parse_comma(p);
-                SourcePos at = peek(p)->pos;
-                size[k] = parse_float(p);
+                    expr_comma(p);
+                SourcePos at = tok_peek(p)->pos;
+                size[k] = expr_float(p);
                 /* POV-Ray refuses 0; a negative size would index its
                  * sample grid out of bounds, so it is refused alike. */
                 if (!(size[k] >= 1.0))
-                    parse_fail(p, at, "area size must be greater than zero (POV-Ray: \"Area size must be greater "
+                    tok_fail(p, at, "area size must be greater than zero (POV-Ray: \"Area size must be greater "
                                       "than zero.\"), not %g", size[k]);
             }
             if (size[0] * size[1] > (double)MAX_AREA_LIGHT_SAMPLES)
-                parse_fail(p, area_at, "an area_light of %g x %g samples is more than hstrace's limit of %d",
+                tok_fail(p, area_at, "an area_light of %g x %g samples is more than hstrace's limit of %d",
                            size[0], size[1], MAX_AREA_LIGHT_SAMPLES);
             l->area.size1 = (int)size[0];
             l->area.size2 = (int)size[1];
@@ -286,7 +286,7 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
          * area_light POV-Ray ignores them (orient, circular and
          * area_illumination with a warning), but circular at the end it
          * refuses. */
-        case KW_adaptive: l->area.adaptive = (int)parse_float(p); break;
+        case KW_adaptive: l->area.adaptive = (int)expr_float(p); break;
         case KW_jitter: l->area.jitter = 1; break;
         case KW_orient:
             l->area.orient = 1;
@@ -299,16 +299,16 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
             l->area.circular = 1;
             break;
         case KW_area_illumination:
-            l->area.full_area = token_starts_float(p, peek(p)) ? parse_float(p) > 0.0 : 1;
+            l->area.full_area = expr_starts_float(p, tok_peek(p)) ? expr_float(p) > 0.0 : 1;
             break;
         default:
             if (t->type == TK_WORD && t->kw >= 0)
-                unsupported(p, t); /* looks_like, projected_through, fill_light, ... */
-            fail_expected(p, t, "a light_source item or '}' in 'light_source'");
+                tok_unsupported(p, t); /* looks_like, projected_through, fill_light, ... */
+            tok_fail_expected(p, t, "a light_source item or '}' in 'light_source'");
         }
     }
     if (circular && (!area || l->area.size1 <= 1 || l->area.size2 <= 1))
-        parse_fail(p, circular_at, "'circular' %s (POV-Ray: \"Circular area light must have more than 1 point per "
+        tok_fail(p, circular_at, "'circular' %s (POV-Ray: \"Circular area light must have more than 1 point per "
                                    "axis\")", area ? "with an area_light of 1 point along an axis" : "without an area_light");
     if (!area)
         l->area = (AreaLight){ .adaptive = 100 }; /* the modifiers change nothing */
@@ -316,10 +316,10 @@ SceneLight *parse_light_source(Parser *p, const Token *kw)
         /* POV-Ray's Parse_Object_Mods: orient makes the light circular, and
          * takes axis 1's length for both axes */
         if (!l->area.circular)
-            parse_warning(p, orient_at, "orient makes the area light circular (POV-Ray: \"Orient can only be used with "
+            tok_warning(p, orient_at, "orient makes the area light circular (POV-Ray: \"Orient can only be used with "
                                         "circular area lights. This area light is now circular.\")");
         if (fabs(v3_length(l->area.axis1) - v3_length(l->area.axis2)) > 1e-10)
-            parse_warning(p, orient_at, "with orient, only the first axis's length is used for both");
+            tok_warning(p, orient_at, "with orient, only the first axis's length is used for both");
         l->area.circular = 1;
         if (l->area.size1 <= 1 || l->area.size2 <= 1)
             l->area.circular = 0; /* POV-Ray: warns, and the light is not circular after all */

@@ -5,7 +5,7 @@
  * table's size (macros open and close levels very often). */
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 static unsigned hash_name(const char *s, int len)
 {
@@ -20,16 +20,16 @@ static int same_name(const Symbol *s, const char *name, int len)
     return strncmp(s->name, name, (size_t)len) == 0 && s->name[len] == '\0';
 }
 
-void symbols_init(Parser *p)
+void tok_symbols_init(Parser *p)
 {
     memset(&p->symbols, 0, sizeof p->symbols);
 }
 
-const char *intern_name(Parser *p, const char *name, int len)
+const char *tok_intern_name(Parser *p, const char *name, int len)
 {
     if ((p->nnames + 1) * 2 > p->cap_names) {
         size_t cap = p->cap_names ? p->cap_names * 2 : 1024;
-        struct Interned *t = tmp_alloc(p, sizeof *t * cap);
+        struct Interned *t = tok_temp_alloc(p, sizeof *t * cap);
         for (size_t i = 0; i < p->cap_names; i++) {
             const char *k = p->names[i].key;
             if (!k)
@@ -46,7 +46,7 @@ const char *intern_name(Parser *p, const char *name, int len)
     for (; p->names[j].key; j = (j + 1) & (p->cap_names - 1))
         if (strncmp(p->names[j].key, name, (size_t)len) == 0 && p->names[j].key[len] == '\0')
             return p->names[j].key;
-    char *copy = tmp_strndup(p, name, (size_t)len);
+    char *copy = tok_temp_strndup(p, name, (size_t)len);
     p->names[j].key = copy;
     p->names[j].value = copy;
     p->nnames++;
@@ -72,17 +72,17 @@ static Symbol *follow(Symbol *s)
     return s;
 }
 
-Symbol *symbol_find(Parser *p, const char *name, int len)
+Symbol *tok_symbol_find(Parser *p, const char *name, int len)
 {
     return follow(find_own(p, name, len));
 }
 
-Symbol *token_symbol(Parser *p, const Token *t)
+Symbol *tok_symbol_of(Parser *p, const Token *t)
 {
     if (!t->elem)
-        return symbol_find(p, t->text, t->len);
+        return tok_symbol_find(p, t->text, t->len);
     if (t->elem->value.kind == VAL_NONE)
-        parse_fail(p, t->pos, "array element '%.*s' is used before it is given a value", t->len, t->text);
+        tok_fail(p, t->pos, "array element '%.*s' is used before it is given a value", t->len, t->text);
     return t->elem;
 }
 
@@ -96,9 +96,9 @@ static Symbol *new_symbol(Parser *p, const char *name, int len, int level)
         memset(s, 0, sizeof *s);
         s->serial = serial;
     } else {
-        s = tmp_alloc(p, sizeof *s);
+        s = tok_temp_alloc(p, sizeof *s);
     }
-    s->name = (char *)intern_name(p, name, len);
+    s->name = (char *)tok_intern_name(p, name, len);
     s->level = level;
     unsigned h = hash_name(name, len);
     s->next = p->symbols.buckets[h];
@@ -108,14 +108,14 @@ static Symbol *new_symbol(Parser *p, const char *name, int len, int level)
     return s;
 }
 
-void symbol_set(Parser *p, const char *name, int len, int local, const Value *v)
+void tok_symbol_set(Parser *p, const char *name, int len, int local, const Value *v)
 {
     Symbol *s = find_own(p, name, len);
     if (s && (!local || s->level == p->symbols.level)) {
         Symbol *target = follow(s);
         if (target) {
             if (!(v->kind == VAL_ARRAY && v->array == target->value.array))
-                value_give_up(p, &target->value);
+                tok_value_give_up(p, &target->value);
             target->value = *v;
             return;
         }
@@ -123,7 +123,7 @@ void symbol_set(Parser *p, const char *name, int len, int local, const Value *v)
     new_symbol(p, name, len, local ? p->symbols.level : 0)->value = *v;
 }
 
-Symbol *symbol_add_local(Parser *p, const char *name, int len, const Value *v)
+Symbol *tok_symbol_add_local(Parser *p, const char *name, int len, const Value *v)
 {
     Symbol *s = new_symbol(p, name, len, p->symbols.level);
     if (v)
@@ -131,12 +131,12 @@ Symbol *symbol_add_local(Parser *p, const char *name, int len, const Value *v)
     return s;
 }
 
-void symbol_define_global(Parser *p, const char *name, int len, const Value *v)
+void tok_symbol_define_global(Parser *p, const char *name, int len, const Value *v)
 {
     for (Symbol *s = p->symbols.buckets[hash_name(name, len)]; s; s = s->next)
         if (s->level == 0 && same_name(s, name, len)) {
             if (!(v->kind == VAL_ARRAY && v->array == s->value.array))
-                value_give_up(p, &s->value);
+                tok_value_give_up(p, &s->value);
             s->value = *v;
             s->alias = NULL;
             return;
@@ -155,13 +155,13 @@ static void unlink_from_bucket(Parser *p, Symbol *target)
 
 static void release(Parser *p, Symbol *s)
 {
-    value_give_up(p, &s->value);
+    tok_value_give_up(p, &s->value);
     s->serial++;
     s->next = p->symbols.free_list;
     p->symbols.free_list = s;
 }
 
-void symbol_undef(Parser *p, const char *name, int len)
+void tok_symbol_undef(Parser *p, const char *name, int len)
 {
     Symbol *target = find_own(p, name, len);
     if (!target)
@@ -175,15 +175,15 @@ void symbol_undef(Parser *p, const char *name, int len)
     release(p, target);
 }
 
-void symbols_push_scope(Parser *p)
+void tok_push_scope(Parser *p)
 {
     if (p->symbols.level + 1 >= MAX_SCOPE_LEVELS)
-        parse_fail(p, p->last_pos, "too many nested include files and macro calls");
+        tok_fail(p, p->last_pos, "too many nested include files and macro calls");
     p->symbols.level++;
     p->symbols.scopes[p->symbols.level] = NULL;
 }
 
-void symbols_pop_scope(Parser *p)
+void tok_pop_scope(Parser *p)
 {
     int level = p->symbols.level;
     if (level == 0)
@@ -197,4 +197,33 @@ void symbols_pop_scope(Parser *p)
     }
     p->symbols.scopes[level] = NULL;
     p->symbols.level--;
+}
+
+/* What a value is, as messages name it. */
+const char *tok_value_kind_name(ValueKind k)
+{
+    switch (k) {
+    case VAL_NUMERIC: return "a number";
+    case VAL_STRING: return "a string";
+    case VAL_OBJECT: return "an object";
+    case VAL_LIGHT: return "a light_source";
+    case VAL_TEXTURE: return "a texture";
+    case VAL_PIGMENT: return "a pigment";
+    case VAL_FINISH: return "a finish";
+    case VAL_INTERIOR: return "an interior";
+    case VAL_MATERIAL: return "a material";
+    case VAL_CAMERA: return "a camera";
+    case VAL_SKY_SPHERE: return "a sky_sphere";
+    case VAL_TRANSFORM: return "a transform";
+    case VAL_NORMAL: return "a normal";
+    case VAL_COLOUR_MAP: return "a color_map";
+    case VAL_PIGMENT_MAP: return "a pigment_map";
+    case VAL_TEXTURE_MAP: return "a texture_map";
+    case VAL_NORMAL_MAP: return "a normal_map";
+    case VAL_SLOPE_MAP: return "a slope_map";
+    case VAL_MACRO: return "a macro";
+    case VAL_ARRAY: return "an array";
+    case VAL_FILE: return "a file identifier";
+    default: return "something else";
+    }
 }

@@ -13,13 +13,13 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "parser_internal.h"
+#include "grammar.h"
 
 #define MAX_SEARCH_DIRS 128 /* as #include searches */
 
-SceneTexture *new_default_texture(Parser *p)
+SceneTexture *gram_default_texture(Parser *p)
 {
-    SceneTexture *t = palloc(p, sizeof *t);
+    SceneTexture *t = tok_scene_alloc(p, sizeof *t);
     *t = p->scene->default_texture;
     return t;
 }
@@ -28,32 +28,32 @@ static void join_notes(Parser *p, const ApproxNote **to, const ApproxNote *from)
 static void set_texture_map(Parser *p, SceneTexture *tex, const TextureMapEntry *entries, int n, const Token *at);
 
 /* The identifier at t when it holds `kind`; errors for other identifiers. */
-const Value *block_identifier(Parser *p, const Token *t, ValueKind kind, const char *block)
+const Value *gram_block_identifier(Parser *p, const Token *t, ValueKind kind, const char *block)
 {
     if (t->type != TK_WORD || t->kw >= 0)
         return NULL;
-    Symbol *s = token_symbol(p, t);
+    Symbol *s = tok_symbol_of(p, t);
     if (!s)
-        parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+        tok_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
     if (s->value.kind == VAL_UNSUPPORTED)
-        use_unsupported(p, t, &s->value);
+        tok_use_unsupported(p, t, &s->value);
     if (s->value.kind == kind)
         return &s->value;
     if (kind == VAL_PIGMENT && s->value.kind == VAL_NUMERIC)
         return NULL; /* a colour identifier: the caller reads it as a colour */
-    parse_fail(p, t->pos, "'%.*s' cannot be used in a %s", t->len, t->text, block);
+    tok_fail(p, t->pos, "'%.*s' cannot be used in a %s", t->len, t->text, block);
 }
 
-void skip_normal(Parser *p)
+void gram_skip_normal(Parser *p)
 {
-    begin_block(p, "normal");
-    skip_block_body(p);
+    tok_begin_block(p, "normal");
+    tok_skip_block_body(p);
 }
 
 /* ---- pigments ------------------------------------------------------------ */
 
 
-PatternSupport pattern_support(int kw)
+PatternSupport gram_pattern_support(int kw)
 {
     switch (kw) {
     case KW_checker: case KW_hexagon: case KW_gradient:
@@ -83,12 +83,12 @@ PatternSupport pattern_support(int kw)
 static char *find_image_file(Parser *p, const char *name)
 {
     if (name[0] == '/')
-        return access(name, R_OK) == 0 ? tmp_strndup(p, name, strlen(name)) : NULL;
+        return access(name, R_OK) == 0 ? tok_temp_strndup(p, name, strlen(name)) : NULL;
     const char *dirs[MAX_SEARCH_DIRS];
-    int nd = lex_search_dirs(p, dirs, MAX_SEARCH_DIRS);
+    int nd = tok_search_dirs(p, dirs, MAX_SEARCH_DIRS);
     for (int i = 0; i < nd; i++) {
         size_t n = strlen(dirs[i]) + strlen(name) + 2;
-        char *path = tmp_alloc(p, n);
+        char *path = tok_temp_alloc(p, n);
         snprintf(path, n, "%s/%s", dirs[i], name);
         if (access(path, R_OK) == 0)
             return path;
@@ -112,9 +112,9 @@ static float to_working(float x, double gamma)
 static _Noreturn void image_map_unsupported(Parser *p, const Token *at, const char *what)
 {
     Token t = *at;
-    t.text = tmp_strndup(p, what, strlen(what));
+    t.text = tok_temp_strndup(p, what, strlen(what));
     t.len = (int)strlen(what);
-    unsupported(p, &t);
+    tok_unsupported(p, &t);
 }
 
 /* POV-Ray 3.7's Parse_Image, after the '{' of `block` (image_map,
@@ -124,40 +124,40 @@ static _Noreturn void image_map_unsupported(Parser *p, const Token *at, const ch
  * gamma as POV-Ray does at this point of the scene (image_gamma.c); data
  * (bump_map) are the file's values as they are, or decoded by a `gamma`
  * given, and left linear. */
-SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct)
+SceneImage *gram_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct)
 {
-    Token *t = next(p);
+    Token *t = tok_next(p);
     int kw = t->type == TK_WORD ? t->kw : -1;
     switch (kw) {
     case KW_png: case KW_jpeg: case KW_tga: case KW_ppm: case KW_pgm: case KW_exr: case KW_hdr: case KW_bmp:
         break; /* the type: hstrace tells files apart by their first bytes */
     case KW_gif: case KW_iff: case KW_tiff: case KW_sys: case KW_function:
-        unsupported(p, t);
+        tok_unsupported(p, t);
     default:
-        unget(p);
+        tok_unget(p);
     }
-    Token name_at = *peek(p);
-    char *name = parse_string(p);
+    Token name_at = *tok_peek(p);
+    char *name = expr_string(p);
     int override_given = 0;  /* `gamma G`: decodes the file whatever it says */
     double override = 0.0;   /* 0: srgb */
     int premultiplied = -1;  /* -1: the format's own reading */
     for (;;) {
-        Token *o = next(p);
-        if (is_kw(o, KW_gamma)) {
+        Token *o = tok_next(p);
+        if (tok_is_kw(o, KW_gamma)) {
             override_given = 1;
-            if (is_kw(peek(p), KW_srgb)) {
-                (void)next(p);
+            if (tok_is_kw(tok_peek(p), KW_srgb)) {
+                (void)tok_next(p);
                 override = 0.0;
             } else {
-                Token vt = *peek(p);
-                override = parse_float(p);
+                Token vt = *tok_peek(p);
+                override = expr_float(p);
                 if (!(override > 0.0))
-                    parse_fail(p, vt.pos, "gamma value must be positive.");
+                    tok_fail(p, vt.pos, "gamma value must be positive.");
             }
-        } else if (is_kw(o, KW_premultiplied)) {
-            premultiplied = (int)parse_float(p) != 0; /* POV-Ray's premultiplyOverride */
+        } else if (tok_is_kw(o, KW_premultiplied)) {
+            premultiplied = (int)expr_float(p) != 0; /* POV-Ray's premultiplyOverride */
         } else {
-            unget(p);
+            tok_unget(p);
             break;
         }
     }
@@ -165,37 +165,37 @@ SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const c
         image_map_unsupported(p, at, block);
     char *path = find_image_file(p, name);
     if (!path)
-        parse_fail(p, name_at.pos, "cannot find the image '%s' (looked in the current folder, the scene's folder and the "
+        tok_fail(p, name_at.pos, "cannot find the image '%s' (looked in the current folder, the scene's folder and the "
                    "include folders)", name);
     LoadedPicture pic;
     char why[256] = "";
-    const ImageGammaPlan plan = image_gamma_plan(p, gamma_correct, override_given, override);
-    size_t left = limits_memory_left(p); /* 0 would mean no limit: at least a byte */
+    const ImageGammaPlan plan = gram_image_gamma_plan(p, gamma_correct, override_given, override);
+    size_t left = tok_limits_memory_left(p); /* 0 would mean no limit: at least a byte */
     if (p->opts->load_image(p->opts->load_image_user, path, plan.decode, plan.untagged, premultiplied,
                             left ? left : 1, &pic, why,
                             (int)sizeof why)) {
         free(pic.rgba);
         free(pic.index);
-        parse_fail(p, name_at.pos, "%s: %s", block, why[0] ? why : "unreadable image");
+        tok_fail(p, name_at.pos, "%s: %s", block, why[0] ? why : "unreadable image");
     }
     const int w = pic.width, h = pic.height;
-    SceneImage *im = palloc(p, sizeof *im);
+    SceneImage *im = tok_scene_alloc(p, sizeof *im);
     size_t n = (size_t)w * (size_t)h * 4;
     float *kept = NULL;
     unsigned char *index = NULL;
     /* in the scene's arena: the parse's memory budget counts them (a
-     * failed palloc leaves by the parse's error path: free the file's first) */
+     * failed tok_scene_alloc leaves by the parse's error path: free the file's first) */
     if (n > 0 && !(kept = arena_alloc(p->arena, n * sizeof *kept))) {
         free(pic.rgba);
         free(pic.index);
-        parse_fail_memory(p, name_at.pos);
+        tok_fail_memory(p, name_at.pos);
     }
     if (n > 0)
         memcpy(kept, pic.rgba, n * sizeof *kept);
     free(pic.rgba);
     if (pic.index && !(index = arena_alloc(p->arena, (size_t)w * (size_t)h))) {
         free(pic.index);
-        parse_fail_memory(p, name_at.pos);
+        tok_fail_memory(p, name_at.pos);
     }
     if (pic.index)
         memcpy(index, pic.index, (size_t)w * (size_t)h);
@@ -223,7 +223,7 @@ SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const c
          * ... change) */
         im->index = index;
         im->npalette = pic.ncolours;
-        im->palette = palloc(p, sizeof *im->palette * (size_t)pic.ncolours);
+        im->palette = tok_scene_alloc(p, sizeof *im->palette * (size_t)pic.ncolours);
         for (int i = 0; i < pic.ncolours; i++) {
             for (int c = 0; c < 3; c++)
                 im->palette[i][c] = to_working(pic.palette[i][c], wg);
@@ -244,23 +244,23 @@ SceneImage *parse_image_source(Parser *p, Pigment *pig, const Token *at, const c
     return im;
 }
 
-int image_interpolation(Parser *p, const Token *at)
+int gram_image_interpolation(Parser *p, const Token *at)
 {
-    int v = (int)parse_float(p);
+    int v = (int)expr_float(p);
     if (v == 3)
         image_map_unsupported(p, at, "interpolate 3 (bicubic; 0, 2 and 4 are supported)");
     if (v != 0 && v != 2 && v != 4)
-        parse_fail(p, at->pos, "Invalid interpolate value.");
+        tok_fail(p, at->pos, "Invalid interpolate value.");
     return v;
 }
 
-int image_map_type(Parser *p, const Token *at)
+int gram_image_map_type(Parser *p, const Token *at)
 {
     /* POV-Ray's Parse_Image_Map: 0 planar, 1 spherical, 2 cylindrical, 5
      * torus; any other value it refuses */
-    int v = (int)parse_float(p);
+    int v = (int)expr_float(p);
     if (v != 0 && v != 1 && v != 2 && v != 5)
-        parse_fail(p, at->pos, "invalid map_type %d (POV-Ray: \"Invalid map_type value.\"; 0 planar, 1 spherical, "
+        tok_fail(p, at->pos, "invalid map_type %d (POV-Ray: \"Invalid map_type value.\"; 0 planar, 1 spherical, "
                                "2 cylindrical and 5 torus are valid)", v);
     return v;
 }
@@ -270,17 +270,17 @@ int image_map_type(Parser *p, const Token *at)
  * use_colour/use_index, filter all F, transmit all T. */
 static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
 {
-    begin_block(p, "image_map");
-    SceneImage *im = parse_image_source(p, pig, at, "image_map", 1); /* its own: filter N ... may change it */
+    tok_begin_block(p, "image_map");
+    SceneImage *im = gram_image_source(p, pig, at, "image_map", 1); /* its own: filter N ... may change it */
     for (;;) {
-        Token *o = next(p);
-        if (is_punct(o, '}'))
+        Token *o = tok_next(p);
+        if (tok_is_punct(o, '}'))
             return;
         Token here = *o;
         switch (o->type == TK_WORD ? o->kw : -1) {
         case KW_once: pig->image_once = 1; break;
-        case KW_interpolate: pig->image_interpolate = image_interpolation(p, &here); break;
-        case KW_map_type: pig->image_map_type = image_map_type(p, &here); break;
+        case KW_interpolate: pig->image_interpolate = gram_image_interpolation(p, &here); break;
+        case KW_map_type: pig->image_map_type = gram_image_map_type(p, &here); break;
         case KW_use_colour: case KW_use_color: case KW_use_index: break;
         case KW_filter: case KW_transmit: {
             /* POV-Ray's Parse_Image_Map: `filter all F` adds F to every
@@ -288,9 +288,9 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
              * to F); `filter N, F` sets entry N's, colour-mapped only.
              * transmit the same. */
             const int slot = here.kw == KW_filter ? 3 : 4;
-            if (is_kw(peek(p), KW_all)) {
-                (void)next(p);
-                double v = parse_float(p);
+            if (tok_is_kw(tok_peek(p), KW_all)) {
+                (void)tok_next(p);
+                double v = expr_float(p);
                 if (slot == 3)
                     pig->image_filter_all = v;
                 else
@@ -299,21 +299,21 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
                     im->palette[i][slot] = (float)v;
                 break;
             }
-            Token rt = *peek(p);
-            int reg = (int)(parse_float(p) + 0.01);
+            Token rt = *tok_peek(p);
+            int reg = (int)(expr_float(p) + 0.01);
             if (im->npalette == 0)
-                parse_fail(p, here.pos, "Keyword '%s' cannot be used with non color-mapped image.",
-                           keyword_name(here.kw));
+                tok_fail(p, here.pos, "Keyword '%s' cannot be used with non color-mapped image.",
+                           tok_keyword_name(here.kw));
             if (reg < 0 || reg >= im->npalette)
-                parse_fail(p, rt.pos, "%s color register value out of range.", slot == 3 ? "FILTER" : "TRANSMIT");
-            parse_comma(p);
-            im->palette[reg][slot] = (float)parse_float(p);
+                tok_fail(p, rt.pos, "%s color register value out of range.", slot == 3 ? "FILTER" : "TRANSMIT");
+            expr_comma(p);
+            im->palette[reg][slot] = (float)expr_float(p);
             break;
         }
         default:
             if (o->type == TK_WORD && o->kw >= 0)
-                unsupported(p, o); /* repeat, offset, ... */
-            fail_expected(p, o, "once, interpolate, map_type, filter all, transmit all or '}' in 'image_map'");
+                tok_unsupported(p, o); /* repeat, offset, ... */
+            tok_fail_expected(p, o, "once, interpolate, map_type, filter all, transmit all or '}' in 'image_map'");
         }
     }
 }
@@ -324,7 +324,7 @@ static const Colour default_list_colours[3] = { { 0, 0, 1, 0, 0 }, { 0, 1, 0, 0,
 
 static void set_map(Parser *p, Pigment *pig, const ColourMapEntry *entries, int n)
 {
-    ColourMapEntry *m = palloc(p, sizeof *m * (size_t)(n ? n : 1));
+    ColourMapEntry *m = tok_scene_alloc(p, sizeof *m * (size_t)(n ? n : 1));
     for (int i = 0; i < n; i++)
         m[i] = entries[i];
     pig->map = m;
@@ -367,11 +367,11 @@ static void set_default_map(Parser *p, Pigment *pig, int kw)
  * `omega` and `lambda` written in the pigment change -- the last warp when
  * it is such a classic one, else a new one appended. Warp lists are shared
  * between copies of a pigment, so the list is copied before any change. */
-PatternTurbulence *classic_turbulence(Parser *p, Pigment *pig)
+PatternTurbulence *gram_classic_turbulence(Parser *p, Pigment *pig)
 {
     int n = pig->nturbulence;
     int append = n == 0 || !pig->turbulence[n - 1].classic;
-    PatternTurbulence *list = palloc(p, sizeof *list * (size_t)(n + append));
+    PatternTurbulence *list = tok_scene_alloc(p, sizeof *list * (size_t)(n + append));
     for (int i = 0; i < n; i++)
         list[i] = pig->turbulence[i];
     if (append) {
@@ -388,37 +388,37 @@ PatternTurbulence *classic_turbulence(Parser *p, Pigment *pig)
     return &list[n - 1];
 }
 
-int octaves_value(double v)
+int gram_octaves_value(double v)
 {
     return int_clamped(v, 1, 10); /* POV-Ray's limits */
 }
 
 /* warp { ... }: turbulence is modelled, the other warps are approximated
  * (ignored). */
-void parse_warp(Parser *p, Pigment *pig, const Token *at)
+void gram_warp(Parser *p, Pigment *pig, const Token *at)
 {
-    begin_block(p, "warp");
-    Token *t = next(p);
-    if (!is_kw(t, KW_turbulence)) {
-        approximate(p, at, APPROX_WARP, &pig->approx);
-        skip_block_body(p);
+    tok_begin_block(p, "warp");
+    Token *t = tok_next(p);
+    if (!tok_is_kw(t, KW_turbulence)) {
+        tok_approximate(p, at, APPROX_WARP, &pig->approx);
+        tok_skip_block_body(p);
         return;
     }
-    PatternTurbulence w = { 0, parse_vector(p), 6, 0.5, 2.0 };
+    PatternTurbulence w = { 0, expr_vector(p), 6, 0.5, 2.0 };
     for (;;) {
-        t = next(p);
-        if (is_kw(t, KW_octaves))
-            w.octaves = octaves_value(parse_float(p));
-        else if (is_kw(t, KW_omega))
-            w.omega = single(parse_float(p));
-        else if (is_kw(t, KW_lambda))
-            w.lambda = single(parse_float(p));
-        else if (is_punct(t, '}'))
+        t = tok_next(p);
+        if (tok_is_kw(t, KW_octaves))
+            w.octaves = gram_octaves_value(expr_float(p));
+        else if (tok_is_kw(t, KW_omega))
+            w.omega = gram_single(expr_float(p));
+        else if (tok_is_kw(t, KW_lambda))
+            w.lambda = gram_single(expr_float(p));
+        else if (tok_is_punct(t, '}'))
             break;
         else
-            fail_expected(p, t, "octaves, omega, lambda or '}' in 'warp { turbulence }'");
+            tok_fail_expected(p, t, "octaves, omega, lambda or '}' in 'warp { turbulence }'");
     }
-    PatternTurbulence *list = palloc(p, sizeof *list * (size_t)(pig->nturbulence + 1));
+    PatternTurbulence *list = tok_scene_alloc(p, sizeof *list * (size_t)(pig->nturbulence + 1));
     for (int i = 0; i < pig->nturbulence; i++)
         list[i] = pig->turbulence[i];
     list[pig->nturbulence] = w;
@@ -434,33 +434,33 @@ static void parse_colour_list(Parser *p, Pigment *pig, int count)
 {
     ColourMapEntry e[3];
     int i = 0;
-    int pigments = is_kw(peek(p), KW_pigment);
+    int pigments = tok_is_kw(tok_peek(p), KW_pigment);
     while (i < count) {
-        Token *t = peek(p);
+        Token *t = tok_peek(p);
         if (pigments) {
-            if (!is_kw(t, KW_pigment))
+            if (!tok_is_kw(t, KW_pigment))
                 break;
-            Token at = *next(p);
+            Token at = *tok_next(p);
             Pigment item = p->scene->default_texture.pigment;
             item.approx = NULL;
-            parse_pigment(p, &item);
+            gram_pigment(p, &item);
             if (item.kind != PIGMENT_SOLID)
-                approximate(p, &at, APPROX_PATTERN, &pig->approx);
+                tok_approximate(p, &at, APPROX_PATTERN, &pig->approx);
             for (const ApproxNote *n = item.approx; n; n = n->next) { /* the item's notes join the list's */
-                ApproxNote *c = palloc(p, sizeof *c);
+                ApproxNote *c = tok_scene_alloc(p, sizeof *c);
                 *c = *n;
                 c->next = pig->approx;
                 pig->approx = c;
             }
             e[i].colour = item.colour;
         } else {
-            if (!token_starts_expression(p, t))
+            if (!expr_starts_expression(p, t))
                 break;
-            parse_colour(p, &e[i].colour, 1);
+            expr_colour(p, &e[i].colour, 1);
         }
         e[i].value = i;
         i++;
-        parse_comma(p);
+        expr_comma(p);
     }
     for (; i < count; i++) {
         e[i].value = i;
@@ -475,81 +475,81 @@ static void parse_colour_list(Parser *p, Pigment *pig, int count)
  * at the map's closing '}', else reads '[' and the entry's value (POV-Ray
  * keeps it in single precision; `optional`: 1 when left out, as average's
  * entries may). */
-int blend_map_entry(Parser *p, const char *map, const TempVec *entries, int optional, double *value)
+int gram_blend_map_entry(Parser *p, const char *map, const TempVec *entries, int optional, double *value)
 {
-    Token *t = next(p);
-    if (is_punct(t, '}'))
+    Token *t = tok_next(p);
+    if (tok_is_punct(t, '}'))
         return 0;
     if (t->type == TK_WORD && t->kw < 0) {
-        Symbol *s = symbol_find(p, t->text, t->len);
+        Symbol *s = tok_symbol_find(p, t->text, t->len);
         if (s && s->value.kind == VAL_UNSUPPORTED)
-            use_unsupported(p, t, &s->value);
-        parse_fail(p, t->pos, "expected '[' or '}' in '%s', found '%.*s' (a declared %s stands alone: %s { Name })",
+            tok_use_unsupported(p, t, &s->value);
+        tok_fail(p, t->pos, "expected '[' or '}' in '%s', found '%.*s' (a declared %s stands alone: %s { Name })",
                    map, t->len, t->text, map, map);
     }
-    if (!is_punct(t, '[')) {
+    if (!tok_is_punct(t, '[')) {
         char what[48];
         snprintf(what, sizeof what, "'[' or '}' in '%s'", map);
-        fail_expected(p, t, what);
+        tok_fail_expected(p, t, what);
     }
     if (entries->n >= 256)
-        parse_fail(p, t->pos, "Blend_Map too long (more than 256 entries)");
-    *value = optional && !token_starts_float(p, peek(p)) ? 1.0 : single(parse_float(p));
-    parse_comma(p);
+        tok_fail(p, t->pos, "Blend_Map too long (more than 256 entries)");
+    *value = optional && !expr_starts_float(p, tok_peek(p)) ? 1.0 : gram_single(expr_float(p));
+    expr_comma(p);
     return 1;
 }
 
-const Value *map_identifier(Parser *p, ValueKind kind, const char *map)
+const Value *gram_map_identifier(Parser *p, ValueKind kind, const char *map)
 {
-    Token *t = peek(p);
+    Token *t = tok_peek(p);
     if (t->type != TK_WORD || t->kw >= 0)
         return NULL;
     Token at = *t;
-    Symbol *s = token_symbol(p, &at);
+    Symbol *s = tok_symbol_of(p, &at);
     if (!s || s->value.kind == VAL_MACRO)
-        return NULL; /* undeclared: blend_map_entry says so; a macro's call is read as entries */
-    (void)next(p);
+        return NULL; /* undeclared: gram_blend_map_entry says so; a macro's call is read as entries */
+    (void)tok_next(p);
     if (s->value.kind == VAL_UNSUPPORTED)
-        use_unsupported(p, &at, &s->value);
+        tok_use_unsupported(p, &at, &s->value);
     if (s->value.kind != kind)
-        parse_fail(p, at.pos, "'%.*s' is %s, not a %s (POV-Ray: \"Wrong identifier type\")", at.len, at.text,
-                   value_kind_name(s->value.kind), map);
+        tok_fail(p, at.pos, "'%.*s' is %s, not a %s (POV-Ray: \"Wrong identifier type\")", at.len, at.text,
+                   tok_value_kind_name(s->value.kind), map);
     char after[64];
     snprintf(after, sizeof after, "a declared %s in '%s'", map, map);
-    expect_punct(p, '}', after);
+    tok_expect_punct(p, '}', after);
     return &s->value;
 }
 
-void parse_colour_map(Parser *p, Pigment *pig)
+void gram_colour_map(Parser *p, Pigment *pig)
 {
-    begin_block(p, "color_map");
-    const Value *id = map_identifier(p, VAL_COLOUR_MAP, "color_map");
+    tok_begin_block(p, "color_map");
+    const Value *id = gram_map_identifier(p, VAL_COLOUR_MAP, "color_map");
     if (id) {
         set_map(p, pig, id->pigment->map, id->pigment->nmap);
         return;
     }
     TempVec entries;
-    tvec_init(&entries, sizeof(ColourMapEntry));
+    tok_tvec_init(&entries, sizeof(ColourMapEntry));
     double v;
-    while (blend_map_entry(p, "color_map", &entries, 0, &v)) {
-        Token *c = peek(p);
-        if (token_starts_float(p, c)) { /* old style: a second value, then two colours */
-            double v2 = single(parse_float(p));
-            ColourMapEntry *a = tvec_push(p, &entries);
+    while (gram_blend_map_entry(p, "color_map", &entries, 0, &v)) {
+        Token *c = tok_peek(p);
+        if (expr_starts_float(p, c)) { /* old style: a second value, then two colours */
+            double v2 = gram_single(expr_float(p));
+            ColourMapEntry *a = tok_tvec_push(p, &entries);
             a->value = v;
-            parse_colour(p, &a->colour, 1);
-            ColourMapEntry *b = tvec_push(p, &entries);
+            expr_colour(p, &a->colour, 1);
+            ColourMapEntry *b = tok_tvec_push(p, &entries);
             b->value = v2;
-            parse_colour(p, &b->colour, 1);
+            expr_colour(p, &b->colour, 1);
         } else {
-            ColourMapEntry *a = tvec_push(p, &entries);
+            ColourMapEntry *a = tok_tvec_push(p, &entries);
             a->value = v;
-            parse_colour(p, &a->colour, 1);
+            expr_colour(p, &a->colour, 1);
         }
-        expect_punct(p, ']', "a color_map entry");
+        tok_expect_punct(p, ']', "a color_map entry");
     }
     if (entries.n < 1)
-        parse_fail(p, p->tok.pos, "Must have at least one color in color map.");
+        tok_fail(p, p->tok.pos, "Must have at least one color in color map.");
     ColourMapEntry *e = entries.data;
     int n = 1;
     for (int i = 1; i < entries.n; i++) {
@@ -563,30 +563,30 @@ void parse_colour_map(Parser *p, Pigment *pig)
 /* A keyword's arguments when hstrace does not use them: expressions (with
  * commas between) and blocks, so that `spiral2 8`, `warp { ... }` or
  * `brick colour A, colour B` are read past. */
-void skip_arguments(Parser *p)
+void gram_skip_arguments(Parser *p)
 {
     for (;;) {
-        Token *t = peek(p);
-        if (is_punct(t, '{')) {
-            next(p);
-            skip_block_body(p);
+        Token *t = tok_peek(p);
+        if (tok_is_punct(t, '{')) {
+            tok_next(p);
+            tok_skip_block_body(p);
             return;
         }
-        if (!token_starts_expression(p, t))
+        if (!expr_starts_expression(p, t))
             return;
         double e[5];
         int terms = 5;
-        if (token_starts_colour(p, t)) {
+        if (expr_starts_colour(p, t)) {
             Colour ignored;
-            parse_colour(p, &ignored, 1);
+            expr_colour(p, &ignored, 1);
         } else {
-            parse_express(p, e, &terms);
+            expr_numeric(p, e, &terms);
         }
-        parse_comma(p); /* `julia <.3, .44> 30`: commas are optional */
+        expr_comma(p); /* `julia <.3, .44> 30`: commas are optional */
     }
 }
 
-int pattern_modifier(int kw)
+int gram_pattern_modifier(int kw)
 {
     switch (kw) {
     case KW_brick_size: case KW_mortar: case KW_form: case KW_metric: case KW_offset:
@@ -614,50 +614,50 @@ static void pigment_items(Parser *p, Pigment *pig, int close);
  * full, and the map blends the entries' colours. That is POV-Ray's result
  * wherever the entries are plain colours; an entry with a pattern of its
  * own is shown as its representative colour, reported as an approximation. */
-void parse_pigment_map(Parser *p, Pigment *pig, const Token *at)
+void gram_pigment_map(Parser *p, Pigment *pig, const Token *at)
 {
-    begin_block(p, "pigment_map");
-    const Value *id = map_identifier(p, VAL_PIGMENT_MAP, "pigment_map");
+    tok_begin_block(p, "pigment_map");
+    const Value *id = gram_map_identifier(p, VAL_PIGMENT_MAP, "pigment_map");
     if (id) {
         set_map(p, pig, id->pigment->map, id->pigment->nmap);
         join_notes(p, &pig->approx, id->pigment->approx);
         return;
     }
     TempVec entries;
-    tvec_init(&entries, sizeof(ColourMapEntry));
+    tok_tvec_init(&entries, sizeof(ColourMapEntry));
     int patterned = 0;
     double v;
-    while (blend_map_entry(p, "pigment_map", &entries, 1, &v)) {
+    while (gram_blend_map_entry(p, "pigment_map", &entries, 1, &v)) {
         Pigment entry = p->scene->default_texture.pigment;
         entry.approx = NULL;
-        if (token_starts_colour(p, peek(p))) {
-            parse_colour(p, &entry.colour, 1);
-            expect_punct(p, ']', "a pigment_map entry");
+        if (expr_starts_colour(p, tok_peek(p))) {
+            expr_colour(p, &entry.colour, 1);
+            tok_expect_punct(p, ']', "a pigment_map entry");
         } else {
             pigment_items(p, &entry, ']');
         }
         if (entry.kind != PIGMENT_SOLID)
             patterned = 1;
         for (const ApproxNote *n = entry.approx; n; n = n->next) {
-            ApproxNote *c = palloc(p, sizeof *c);
+            ApproxNote *c = tok_scene_alloc(p, sizeof *c);
             *c = *n;
             c->next = pig->approx;
             pig->approx = c;
         }
-        ColourMapEntry *e = tvec_push(p, &entries);
+        ColourMapEntry *e = tok_tvec_push(p, &entries);
         e->value = v;
         e->colour = entry.colour;
     }
     if (entries.n < 1)
-        parse_fail(p, p->tok.pos, "Must have at least one entry in pigment_map.");
+        tok_fail(p, p->tok.pos, "Must have at least one entry in pigment_map.");
     set_map(p, pig, entries.data, entries.n);
     if (patterned)
-        approximate(p, at, APPROX_PATTERN, &pig->approx);
+        tok_approximate(p, at, APPROX_PATTERN, &pig->approx);
 }
 
-void parse_pigment(Parser *p, Pigment *pig)
+void gram_pigment(Parser *p, Pigment *pig)
 {
-    begin_block(p, "pigment");
+    tok_begin_block(p, "pigment");
     pigment_items(p, pig, '}');
 }
 
@@ -666,17 +666,17 @@ void parse_pigment(Parser *p, Pigment *pig)
  * the spirals' arms, agate's turbulence), frequency, phase and wave back to
  * POV-Ray's defaults. Colours (checker's and hexagon's list, the default
  * colour map) are the caller's. */
-void start_pattern(Parser *p, Pigment *pig, int kw)
+void gram_start_pattern(Parser *p, Pigment *pig, int kw)
 {
     pig->frequency = 1.0;
     pig->phase = 0.0;
     pig->wave = WAVE_RAMP;
     switch (kw) {
     case KW_gradient: {
-        Token vt = *peek(p);
-        Vec3 g = parse_vector(p);
+        Token vt = *tok_peek(p);
+        Vec3 g = expr_vector(p);
         if (v3_length(g) == 0.0)
-            parse_fail(p, vt.pos, "the gradient vector must not be zero");
+            tok_fail(p, vt.pos, "the gradient vector must not be zero");
         pig->gradient = v3_normalize(g);
         pig->kind = PIGMENT_GRADIENT;
         break;
@@ -693,11 +693,11 @@ void start_pattern(Parser *p, Pigment *pig, int kw)
     case KW_agate:
         pig->kind = PIGMENT_AGATE;
         pig->agate_turb = 1.0;
-        (void)classic_turbulence(p, pig); /* agate's own turbulence */
+        (void)gram_classic_turbulence(p, pig); /* agate's own turbulence */
         break;
     case KW_spiral1: case KW_spiral2:
         pig->kind = kw == KW_spiral1 ? PIGMENT_SPIRAL1 : PIGMENT_SPIRAL2;
-        pig->arms = (short)int_as_povray(parse_float(p)); /* POV-Ray keeps (short)(int)v */
+        pig->arms = (short)int_as_povray(expr_float(p)); /* POV-Ray keeps (short)(int)v */
         pig->wave = WAVE_TRIANGLE;
         break;
     }
@@ -707,13 +707,13 @@ void start_pattern(Parser *p, Pigment *pig, int kw)
  * or a patterned texture: frequency, phase, the waves, turbulence and its
  * octaves, omega and lambda, warp, noise_generator, agate_turb. Returns 1
  * when t (already read) was one, its arguments read. */
-int pattern_modifier_item(Parser *p, Pigment *pig, const Token *t)
+int gram_pattern_modifier_item(Parser *p, Pigment *pig, const Token *t)
 {
     Token here = *t; /* t may not outlive the next token read */
     switch (here.type == TK_WORD ? here.kw : -1) {
     /* POV-Ray keeps these in single precision (SNGL): so do the values */
-    case KW_frequency: pig->frequency = single(parse_float(p)); return 1;
-    case KW_phase: pig->phase = single(parse_float(p)); return 1;
+    case KW_frequency: pig->frequency = gram_single(expr_float(p)); return 1;
+    case KW_phase: pig->phase = gram_single(expr_float(p)); return 1;
     case KW_ramp_wave: pig->wave = WAVE_RAMP; return 1;
     case KW_sine_wave: pig->wave = WAVE_SINE; return 1;
     case KW_triangle_wave: pig->wave = WAVE_TRIANGLE; return 1;
@@ -721,26 +721,26 @@ int pattern_modifier_item(Parser *p, Pigment *pig, const Token *t)
     case KW_cubic_wave: pig->wave = WAVE_CUBIC; return 1;
     case KW_poly_wave:
         pig->wave = WAVE_POLY;
-        pig->wave_exponent = token_starts_float(p, peek(p)) ? single(parse_float(p)) : 1.0;
+        pig->wave_exponent = expr_starts_float(p, tok_peek(p)) ? gram_single(expr_float(p)) : 1.0;
         return 1;
     case KW_turbulence: {
-        PatternTurbulence *turb = classic_turbulence(p, pig);
-        turb->amount = parse_vector(p);
+        PatternTurbulence *turb = gram_classic_turbulence(p, pig);
+        turb->amount = expr_vector(p);
         return 1;
     }
-    case KW_octaves: classic_turbulence(p, pig)->octaves = octaves_value(parse_float(p)); return 1;
-    case KW_omega: classic_turbulence(p, pig)->omega = single(parse_float(p)); return 1;
-    case KW_lambda: classic_turbulence(p, pig)->lambda = single(parse_float(p)); return 1;
-    case KW_warp: parse_warp(p, pig, &here); return 1;
+    case KW_octaves: gram_classic_turbulence(p, pig)->octaves = gram_octaves_value(expr_float(p)); return 1;
+    case KW_omega: gram_classic_turbulence(p, pig)->omega = gram_single(expr_float(p)); return 1;
+    case KW_lambda: gram_classic_turbulence(p, pig)->lambda = gram_single(expr_float(p)); return 1;
+    case KW_warp: gram_warp(p, pig, &here); return 1;
     case KW_noise_generator: {
-        Token vt = *peek(p);
-        if (!int_from_double(parse_float(p), 0, 3, &pig->noise_generator))
-            parse_fail(p, vt.pos, "Value for noise_generator must be 0, 1, 2, or 3.");
+        Token vt = *tok_peek(p);
+        if (!int_from_double(expr_float(p), 0, 3, &pig->noise_generator))
+            tok_fail(p, vt.pos, "Value for noise_generator must be 0, 1, 2, or 3.");
         return 1;
     }
     case KW_agate_turb:
-        pig->agate_turb = single(parse_float(p));
-        (void)classic_turbulence(p, pig);
+        pig->agate_turb = gram_single(expr_float(p));
+        (void)gram_classic_turbulence(p, pig);
         return 1;
     default:
         return 0;
@@ -754,11 +754,11 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
     int approximated = 0; /* the pattern is not evaluated: colour map at 0.5 */
     int uv_here = 0;      /* this block said uv_mapping: what follows is seen at (u, v, 0) */
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, close))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, close))
             break;
         Token at = *t;
-        const Value *id = block_identifier(p, t, VAL_PIGMENT, "pigment");
+        const Value *id = gram_block_identifier(p, t, VAL_PIGMENT, "pigment");
         if (id) {
             /* `uv_mapping DECLARED`: POV-Ray's uv_mapping pattern holds the
              * declared pigment, evaluated at (u, v, 0) through the
@@ -769,9 +769,9 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             approximated = 0;
             continue;
         }
-        if (token_starts_colour(p, t)) {
-            unget(p);
-            parse_colour(p, &pig->colour, 1);
+        if (expr_starts_colour(p, t)) {
+            tok_unget(p);
+            expr_colour(p, &pig->colour, 1);
             pig->kind = PIGMENT_SOLID;
             pig->nmap = 0;
             approximated = 0;
@@ -781,32 +781,32 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
          * pattern's own warps, which POV-Ray does not apply to its entry */
         Transform wrapper_warp;
         transform_identity(&wrapper_warp);
-        if (parse_transform_item(p, t, pig->uv_mapping && !uv_here ? &wrapper_warp : &pig->transform))
+        if (expr_transform_item(p, t, pig->uv_mapping && !uv_here ? &wrapper_warp : &pig->transform))
             continue;
         int kw = t->type == TK_WORD ? t->kw : -1;
         if (kw == KW_quick_color || kw == KW_quick_colour) {
             Colour ignored;
-            parse_colour(p, &ignored, 1);
+            expr_colour(p, &ignored, 1);
             continue;
         }
-        switch (pattern_support(kw)) {
+        switch (gram_pattern_support(kw)) {
         case PAT_EVALUATED:
             approximated = 0;
-            start_pattern(p, pig, kw);
+            gram_start_pattern(p, pig, kw);
             if (kw == KW_checker || kw == KW_hexagon)
                 parse_colour_list(p, pig, kw == KW_checker ? 2 : 3);
             if (pig->nmap == 0)
                 set_default_map(p, pig, kw);
             continue;
         case PAT_APPROXIMATED:
-            approximate(p, &at, APPROX_PATTERN, &pig->approx);
+            tok_approximate(p, &at, APPROX_PATTERN, &pig->approx);
             approximated = 1;
             pig->kind = PIGMENT_SOLID;
             pig->nmap = 0;
             if (kw == KW_brick)
                 parse_colour_list(p, pig, 2); /* brick's colours, then its modifiers */
             else
-                skip_arguments(p); /* `spiral2 8`, `function { ... }`, ... */
+                gram_skip_arguments(p); /* `spiral2 8`, `function { ... }`, ... */
             if (pig->nmap == 0)
                 set_grey_map(p, pig);
             continue;
@@ -816,22 +816,22 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
                 approximated = 0;
                 continue;
             }
-            unsupported(p, &at);
+            tok_unsupported(p, &at);
         case PAT_NONE:
             break;
         }
-        if (pattern_modifier_item(p, pig, t))
+        if (gram_pattern_modifier_item(p, pig, t))
             continue;
         switch (kw) {
         case KW_color_map:
         case KW_colour_map:
-            parse_colour_map(p, pig);
+            gram_colour_map(p, pig);
             continue;
         case KW_pigment_map:
-            parse_pigment_map(p, pig, &at);
+            gram_pigment_map(p, pig, &at);
             continue;
         case KW_texture_map: case KW_material_map:
-            parse_fail(p, at.pos, "%s can only be used in a texture, not in a pigment", keyword_name(kw));
+            tok_fail(p, at.pos, "%s can only be used in a texture, not in a pigment", tok_keyword_name(kw));
         case KW_uv_mapping: {
             /* POV-Ray: a new pigment, made of the rest of this block, seen
              * at the surface's (u, v, 0); what came before is dropped. */
@@ -847,14 +847,14 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         default:
             break;
         }
-        if (kw >= 0 && pattern_modifier(kw)) {
+        if (kw >= 0 && gram_pattern_modifier(kw)) {
             /* modifiers of patterns hstrace does not evaluate */
-            skip_arguments(p);
+            gram_skip_arguments(p);
             continue;
         }
         if (kw >= 0)
-            unsupported(p, t);
-        fail_expected(p, t, "a colour, a pattern, a transform or '}' in 'pigment'");
+            tok_unsupported(p, t);
+        tok_fail_expected(p, t, "a colour, a pattern, a transform or '}' in 'pigment'");
     }
     if (pig->kind != PIGMENT_SOLID || approximated)
         set_representative(pig);
@@ -868,9 +868,9 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
 /* `albedo` after diffuse/phong/specular: the value is rescaled at the end. */
 static int allow_albedo(Parser *p)
 {
-    if (is_kw(next(p), KW_albedo))
+    if (tok_is_kw(tok_next(p), KW_albedo))
         return 1;
-    unget(p);
+    tok_unget(p);
     return 0;
 }
 
@@ -884,60 +884,60 @@ static void colour_to_rgb(double out[3], const Colour *c)
 static void parse_reflection(Parser *p, Finish *f)
 {
     Colour c;
-    Token *t = next(p);
-    if (!is_punct(t, '{')) {
-        unget(p);
-        parse_colour(p, &c, 0); /* old syntax: one colour */
+    Token *t = tok_next(p);
+    if (!tok_is_punct(t, '{')) {
+        tok_unget(p);
+        expr_colour(p, &c, 0); /* old syntax: one colour */
         colour_to_rgb(f->reflection_max, &c);
         colour_to_rgb(f->reflection_min, &c);
         f->reflection_falloff = 1.0;
         f->reflection_fresnel = 0;
         return;
     }
-    parse_colour(p, &c, 0);
+    expr_colour(p, &c, 0);
     colour_to_rgb(f->reflection_min, &c);
-    parse_comma(p);
+    expr_comma(p);
     int second = 0;
-    t = peek(p);
-    if (token_starts_expression(p, t)) {
-        parse_colour(p, &c, 0);
+    t = tok_peek(p);
+    if (expr_starts_expression(p, t)) {
+        expr_colour(p, &c, 0);
         second = 1;
     }
     colour_to_rgb(f->reflection_max, &c);
     for (;;) {
-        t = next(p);
-        if (is_punct(t, '}'))
+        t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             return;
-        if (is_kw(t, KW_fresnel)) {
+        if (tok_is_kw(t, KW_fresnel)) {
             Token at = *t;
             double v = 1.0;
-            if (token_starts_float(p, peek(p)))
-                v = parse_float(p);
+            if (expr_starts_float(p, tok_peek(p)))
+                v = expr_float(p);
             if (!int_from_double(v, 0, 1, &f->reflection_fresnel))
-                parse_fail(p, at.pos, "fresnel must be true or false");
+                tok_fail(p, at.pos, "fresnel must be true or false");
             if (!second && f->reflection_fresnel)
                 memset(f->reflection_min, 0, sizeof f->reflection_min);
-        } else if (is_kw(t, KW_falloff)) {
-            f->reflection_falloff = parse_float(p);
-        } else if (is_kw(t, KW_exponent)) {
-            (void)parse_float(p); /* reflection exponent: not modelled */
-        } else if (is_kw(t, KW_metallic)) {
-            f->reflection_metallic = token_starts_float(p, peek(p)) ? parse_float(p) : 1.0;
+        } else if (tok_is_kw(t, KW_falloff)) {
+            f->reflection_falloff = expr_float(p);
+        } else if (tok_is_kw(t, KW_exponent)) {
+            (void)expr_float(p); /* reflection exponent: not modelled */
+        } else if (tok_is_kw(t, KW_metallic)) {
+            f->reflection_metallic = expr_starts_float(p, tok_peek(p)) ? expr_float(p) : 1.0;
         } else {
-            fail_expected(p, t, "fresnel, falloff, exponent, metallic or '}' in 'reflection'");
+            tok_fail_expected(p, t, "fresnel, falloff, exponent, metallic or '}' in 'reflection'");
         }
     }
 }
 
-void parse_finish(Parser *p, Finish *f)
+void gram_finish(Parser *p, Finish *f)
 {
     int diffuse_albedo = 0, phong_albedo = 0, specular_albedo = 0;
-    begin_block(p, "finish");
+    tok_begin_block(p, "finish");
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             break;
-        const Value *id = block_identifier(p, t, VAL_FINISH, "finish");
+        const Value *id = gram_block_identifier(p, t, VAL_FINISH, "finish");
         if (id) {
             *f = *id->finish;
             continue;
@@ -945,58 +945,58 @@ void parse_finish(Parser *p, Finish *f)
         Colour c;
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_ambient:
-            parse_colour(p, &c, 0);
+            expr_colour(p, &c, 0);
             colour_to_rgb(f->ambient, &c);
             break;
         case KW_emission:
-            parse_colour(p, &c, 0);
+            expr_colour(p, &c, 0);
             colour_to_rgb(f->emission, &c);
             break;
         case KW_diffuse:
             diffuse_albedo = allow_albedo(p);
-            f->diffuse = parse_float(p);
-            if (is_punct(next(p), ',')) {
-                Token back = *peek(p);
-                if (parse_float(p) != 0.0) /* light through the back: not modelled */
-                    approximate(p, &back, APPROX_FINISH, &f->approx);
+            f->diffuse = expr_float(p);
+            if (tok_is_punct(tok_next(p), ',')) {
+                Token back = *tok_peek(p);
+                if (expr_float(p) != 0.0) /* light through the back: not modelled */
+                    tok_approximate(p, &back, APPROX_FINISH, &f->approx);
             } else {
-                unget(p);
+                tok_unget(p);
             }
             break;
-        case KW_brilliance: f->brilliance = parse_float(p); break;
+        case KW_brilliance: f->brilliance = expr_float(p); break;
         case KW_crand:
-            f->crand = parse_float(p);
+            f->crand = expr_float(p);
             if (f->crand != 0.0)
-                approximate(p, t, APPROX_FINISH, &f->approx);
+                tok_approximate(p, t, APPROX_FINISH, &f->approx);
             break;
         case KW_phong:
             phong_albedo = allow_albedo(p);
-            f->phong = parse_float(p);
+            f->phong = expr_float(p);
             break;
-        case KW_phong_size: f->phong_size = parse_float(p); break;
+        case KW_phong_size: f->phong_size = expr_float(p); break;
         case KW_specular:
             specular_albedo = allow_albedo(p);
-            f->specular = parse_float(p);
+            f->specular = expr_float(p);
             break;
-        case KW_roughness: f->roughness = parse_float(p); break;
+        case KW_roughness: f->roughness = expr_float(p); break;
         case KW_metallic:
-            f->metallic = token_starts_float(p, peek(p)) ? parse_float(p) : 1.0;
+            f->metallic = expr_starts_float(p, tok_peek(p)) ? expr_float(p) : 1.0;
             break;
         case KW_reflection: parse_reflection(p, f); break;
-        case KW_reflection_exponent: (void)parse_float(p); break;
+        case KW_reflection_exponent: (void)expr_float(p); break;
         case KW_conserve_energy: f->conserve_energy = 1; break;
         case KW_irid: /* iridescence: parsed past, not modelled */
-            approximate(p, t, APPROX_FINISH, &f->approx);
-            begin_block(p, "irid");
-            skip_block_body(p);
+            tok_approximate(p, t, APPROX_FINISH, &f->approx);
+            tok_begin_block(p, "irid");
+            tok_skip_block_body(p);
             break;
         case KW_ior: case KW_caustics: case KW_refraction: /* pre-3.0 spellings of interior settings */
-            (void)parse_float(p);
+            (void)expr_float(p);
             break;
         default:
             if (t->type == TK_WORD && t->kw >= 0)
-                unsupported(p, t);
-            fail_expected(p, t, "a finish item or '}' in 'finish'");
+                tok_unsupported(p, t);
+            tok_fail_expected(p, t, "a finish item or '}' in 'finish'");
         }
     }
     /* POV-Ray's albedo rescaling; its roughness is the reciprocal of ours. */
@@ -1010,68 +1010,68 @@ void parse_finish(Parser *p, Finish *f)
     }
 }
 
-void parse_interior(Parser *p, Interior *in)
+void gram_interior(Parser *p, Interior *in)
 {
-    begin_block(p, "interior");
+    tok_begin_block(p, "interior");
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             return;
-        const Value *id = block_identifier(p, t, VAL_INTERIOR, "interior");
+        const Value *id = gram_block_identifier(p, t, VAL_INTERIOR, "interior");
         if (id) {
             *in = *id->interior;
             continue;
         }
         switch (t->type == TK_WORD ? t->kw : -1) {
-        case KW_ior: in->ior = parse_float(p); break;
-        case KW_fade_distance: in->fade_distance = parse_float(p); break;
-        case KW_fade_power: in->fade_power = parse_float(p); break;
+        case KW_ior: in->ior = expr_float(p); break;
+        case KW_fade_distance: in->fade_distance = expr_float(p); break;
+        case KW_fade_power: in->fade_power = expr_float(p); break;
         case KW_fade_color:
-        case KW_fade_colour: parse_colour(p, &in->fade_colour, 0); break;
+        case KW_fade_colour: expr_colour(p, &in->fade_colour, 0); break;
         case KW_caustics: case KW_dispersion: case KW_dispersion_samples: {
             /* fake caustics and dispersion: not modelled */
             Token at = *t;
-            double v = parse_float(p);
+            double v = expr_float(p);
             if ((at.kw == KW_caustics && v != 0.0) || (at.kw == KW_dispersion && v != 1.0))
-                approximate(p, &at, APPROX_CAUSTICS, &in->approx);
+                tok_approximate(p, &at, APPROX_CAUSTICS, &in->approx);
             break;
         }
         default:
             if (t->type == TK_WORD && t->kw >= 0)
-                unsupported(p, t);
-            fail_expected(p, t, "ior, fade_distance, fade_power, fade_colour or '}' in 'interior'");
+                tok_unsupported(p, t);
+            tok_fail_expected(p, t, "ior, fade_distance, fade_power, fade_colour or '}' in 'interior'");
         }
     }
 }
 
-void parse_material(Parser *p, const SceneTexture **tex, const Interior **in, const Token *at)
+void gram_material(Parser *p, const SceneTexture **tex, const Interior **in, const Token *at)
 {
-    begin_block(p, "material");
+    tok_begin_block(p, "material");
     int first = 1;
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             return;
         Token here = *t;
         /* a material identifier, as POV-Ray takes it: only first */
-        const Value *id = first ? block_identifier(p, t, VAL_MATERIAL, "material") : NULL;
+        const Value *id = first ? gram_block_identifier(p, t, VAL_MATERIAL, "material") : NULL;
         first = 0;
         if (id) {
             if (id->material_texture)
-                *tex = *tex ? layer_textures(p, id->material_texture, *tex, &here) : id->material_texture;
+                *tex = *tex ? gram_layer_textures(p, id->material_texture, *tex, &here) : id->material_texture;
             if (id->material_interior)
                 *in = id->material_interior; /* never changed in place: a new one replaces it */
             continue;
         }
-        if (is_kw(t, KW_texture)) {
-            SceneTexture *layer = parse_texture(p);
-            *tex = *tex ? layer_textures(p, layer, *tex, &here) : layer;
+        if (tok_is_kw(t, KW_texture)) {
+            SceneTexture *layer = gram_texture(p);
+            *tex = *tex ? gram_layer_textures(p, layer, *tex, &here) : layer;
             continue;
         }
-        if (is_kw(t, KW_interior)) {
-            Interior *next_in = palloc(p, sizeof *next_in);
+        if (tok_is_kw(t, KW_interior)) {
+            Interior *next_in = tok_scene_alloc(p, sizeof *next_in);
             *next_in = *in ? **in : scene_default_interior();
-            parse_interior(p, next_in);
+            gram_interior(p, next_in);
             *in = next_in;
             continue;
         }
@@ -1080,22 +1080,22 @@ void parse_material(Parser *p, const SceneTexture **tex, const Interior **in, co
          * places in space. */
         Transform moved;
         transform_identity(&moved);
-        if (parse_transform_item(p, t, &moved)) {
+        if (expr_transform_item(p, t, &moved)) {
             if (*tex) {
-                SceneTexture *copy = palloc(p, sizeof *copy);
+                SceneTexture *copy = tok_scene_alloc(p, sizeof *copy);
                 *copy = **tex;
                 if (!copy->pigment.uv_mapping)
                     transform_compose(&copy->pigment.transform, &moved);
-                copy->normal = normal_transformed(p, copy->normal, &moved);
+                copy->normal = gram_normal_transformed(p, copy->normal, &moved);
                 *tex = copy;
             }
             continue;
         }
         if (t->type == TK_WORD && t->kw >= 0)
-            unsupported(p, t); /* interior_texture, ... */
+            tok_unsupported(p, t); /* interior_texture, ... */
         if (t->type == TK_WORD && t->kw < 0)
-            fail_expected(p, t, "a material identifier (only first), texture, interior, a transform or '}' in 'material'");
-        fail_expected(p, t, "texture, interior, a transform or '}' in 'material'");
+            tok_fail_expected(p, t, "a material identifier (only first), texture, interior, a transform or '}' in 'material'");
+        tok_fail_expected(p, t, "texture, interior, a transform or '}' in 'material'");
     }
     (void)at;
 }
@@ -1108,9 +1108,9 @@ void parse_material(Parser *p, const SceneTexture **tex, const Interior **in, co
 static _Noreturn void texture_unsupported(Parser *p, const Token *at, const char *what)
 {
     Token t = *at;
-    t.text = tmp_strndup(p, what, strlen(what));
+    t.text = tok_temp_strndup(p, what, strlen(what));
     t.len = (int)strlen(what);
-    unsupported(p, &t);
+    tok_unsupported(p, &t);
 }
 
 /* The notes of `from` (a texture_map's entry) joined to `*to` (the map's),
@@ -1124,7 +1124,7 @@ static void join_notes(Parser *p, const ApproxNote **to, const ApproxNote *from)
                                  n->pos.column == from->pos.column && n->pos.file == from->pos.file);
         if (seen)
             continue;
-        ApproxNote *c = palloc(p, sizeof *c);
+        ApproxNote *c = tok_scene_alloc(p, sizeof *c);
         *c = *from;
         c->next = *to;
         *to = c;
@@ -1137,7 +1137,7 @@ static void texture_items(Parser *p, SceneTexture *tex, int close);
  * depth (at most MAX_TEXTURE_MAP_DEPTH) and its entries' notes. */
 static void set_texture_map(Parser *p, SceneTexture *tex, const TextureMapEntry *entries, int n, const Token *at)
 {
-    TextureMapEntry *m = palloc(p, sizeof *m * (size_t)n);
+    TextureMapEntry *m = tok_scene_alloc(p, sizeof *m * (size_t)n);
     int depth = 0;
     for (int i = 0; i < n; i++) {
         m[i] = entries[i];
@@ -1162,29 +1162,29 @@ static void set_texture_map(Parser *p, SceneTexture *tex, const TextureMapEntry 
  * textures): each entry a texture as written in texture { }, from the
  * default texture, a texture identifier, pigment, finish, or a pattern and
  * a texture_map of its own. */
-void parse_texture_map(Parser *p, SceneTexture *tex, const Token *at)
+void gram_texture_map(Parser *p, SceneTexture *tex, const Token *at)
 {
-    begin_block(p, "texture_map");
-    const Value *id = map_identifier(p, VAL_TEXTURE_MAP, "texture_map");
+    tok_begin_block(p, "texture_map");
+    const Value *id = gram_map_identifier(p, VAL_TEXTURE_MAP, "texture_map");
     if (id) {
         set_texture_map(p, tex, id->texture->map, id->texture->nmap, at);
         return;
     }
-    nesting_enter(p, at);
+    tok_nesting_enter(p, at);
     TempVec entries;
-    tvec_init(&entries, sizeof(TextureMapEntry));
+    tok_tvec_init(&entries, sizeof(TextureMapEntry));
     double v;
-    while (blend_map_entry(p, "texture_map", &entries, 0, &v)) {
-        SceneTexture *e = new_default_texture(p);
+    while (gram_blend_map_entry(p, "texture_map", &entries, 0, &v)) {
+        SceneTexture *e = gram_default_texture(p);
         e->pos = p->tok.pos;
         texture_items(p, e, ']');
-        TextureMapEntry *slot = tvec_push(p, &entries);
+        TextureMapEntry *slot = tok_tvec_push(p, &entries);
         slot->value = v;
         slot->texture = e;
     }
     if (entries.n < 1)
-        parse_fail(p, p->tok.pos, "Must have at least one entry in map.");
-    nesting_leave(p);
+        tok_fail(p, p->tok.pos, "Must have at least one entry in map.");
+    tok_nesting_leave(p);
     set_texture_map(p, tex, entries.data, entries.n, at);
 }
 
@@ -1195,16 +1195,16 @@ static void parse_texture_list(Parser *p, SceneTexture *tex, int count, const To
 {
     TextureMapEntry e[3];
     int i = 0;
-    nesting_enter(p, at);
-    for (; i < count && is_kw(peek(p), KW_texture); i++) {
-        (void)next(p);
+    tok_nesting_enter(p, at);
+    for (; i < count && tok_is_kw(tok_peek(p), KW_texture); i++) {
+        (void)tok_next(p);
         e[i].value = i;
-        e[i].texture = parse_texture(p);
-        parse_comma(p);
+        e[i].texture = gram_texture(p);
+        expr_comma(p);
     }
-    nesting_leave(p);
+    tok_nesting_leave(p);
     for (; i < count; i++) {
-        SceneTexture *d = new_default_texture(p);
+        SceneTexture *d = gram_default_texture(p);
         d->pos = at->pos;
         e[i].value = i;
         e[i].texture = d;
@@ -1228,46 +1228,46 @@ static void parse_patterned_texture(Parser *p, SceneTexture *tex, const Token *a
     pig->approx = notes;
     transform_identity(&pig->transform);
     tex->normal = NULL; /* its entries have the normals */
-    start_pattern(p, pig, kw);
+    gram_start_pattern(p, pig, kw);
     int listed = kw == KW_checker || kw == KW_hexagon;
     if (listed)
         parse_texture_list(p, tex, kw == KW_checker ? 2 : 3, at);
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, close))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, close))
             break;
         Token here = *t;
-        if (parse_transform_item(p, t, &pig->transform))
+        if (expr_transform_item(p, t, &pig->transform))
             continue;
-        if (pattern_modifier_item(p, pig, t))
+        if (gram_pattern_modifier_item(p, pig, t))
             continue;
         switch (here.type == TK_WORD ? here.kw : -1) {
         case KW_texture_map:
             if (listed)
-                parse_fail(p, here.pos, "texture_map cannot be used with %s (it takes a list of textures)",
-                           keyword_name(kw));
-            parse_texture_map(p, tex, &here);
+                tok_fail(p, here.pos, "texture_map cannot be used with %s (it takes a list of textures)",
+                           tok_keyword_name(kw));
+            gram_texture_map(p, tex, &here);
             continue;
         case KW_no_bump_scale:
             /* POV-Ray then moves the entries' normals through the map's
              * transforms unnormalised: not modelled */
-            approximate(p, &here, APPROX_NORMAL, &tex->approx);
+            tok_approximate(p, &here, APPROX_NORMAL, &tex->approx);
             continue;
         case KW_color_map: case KW_colour_map: case KW_pigment_map:
-            parse_fail(p, here.pos, "%s can only be used in a pigment, not in a texture", keyword_name(here.kw));
+            tok_fail(p, here.pos, "%s can only be used in a pigment, not in a texture", tok_keyword_name(here.kw));
         case KW_pigment: case KW_finish: case KW_normal:
-            parse_fail(p, here.pos, "a patterned texture (%s ... texture_map) has no %s of its own: give it in the "
-                       "textures of its texture_map", keyword_name(kw), keyword_name(here.kw));
+            tok_fail(p, here.pos, "a patterned texture (%s ... texture_map) has no %s of its own: give it in the "
+                       "textures of its texture_map", tok_keyword_name(kw), tok_keyword_name(here.kw));
         default:
             break;
         }
-        if (here.type == TK_WORD && here.kw >= 0 && pattern_support(here.kw) == PAT_NONE &&
-            !pattern_modifier(here.kw))
-            unsupported(p, &here);
-        fail_expected(p, &here, "a pattern modifier, texture_map, a transform or the end of a patterned texture");
+        if (here.type == TK_WORD && here.kw >= 0 && gram_pattern_support(here.kw) == PAT_NONE &&
+            !gram_pattern_modifier(here.kw))
+            tok_unsupported(p, &here);
+        tok_fail_expected(p, &here, "a pattern modifier, texture_map, a transform or the end of a patterned texture");
     }
     if (tex->nmap == 0)
-        parse_fail(p, at->pos, "Patterned texture must have texture_map.");
+        tok_fail(p, at->pos, "Patterned texture must have texture_map.");
 }
 
 /* material_map { [type] "file" [gamma G] [premultiplied B] once
@@ -1276,46 +1276,46 @@ static void parse_patterned_texture(Parser *p, SceneTexture *tex, const Token *a
  * corrected, as POV-Ray reads it), then the textures it chooses among. */
 static void parse_material_map(Parser *p, SceneTexture *tex, const Token *at)
 {
-    begin_block(p, "material_map");
-    nesting_enter(p, at);
+    tok_begin_block(p, "material_map");
+    tok_nesting_enter(p, at);
     Pigment *pig = &tex->pigment;
     const ApproxNote *notes = pig->approx;
     memset(pig, 0, sizeof *pig);
     transform_identity(&pig->transform);
     pig->approx = notes;
     tex->normal = NULL; /* its textures have the normals */
-    parse_image_source(p, pig, at, "material_map", 0);
+    gram_image_source(p, pig, at, "material_map", 0);
     TempVec entries;
-    tvec_init(&entries, sizeof(TextureMapEntry));
+    tok_tvec_init(&entries, sizeof(TextureMapEntry));
     for (;;) {
-        Token *o = next(p);
-        if (is_punct(o, '}'))
+        Token *o = tok_next(p);
+        if (tok_is_punct(o, '}'))
             break;
         Token here = *o;
         int kw = o->type == TK_WORD ? o->kw : -1;
         if (entries.n > 0 && kw != KW_texture) /* the picture's options come before the textures */
-            fail_expected(p, &here, "texture or '}' in 'material_map'");
+            tok_fail_expected(p, &here, "texture or '}' in 'material_map'");
         switch (kw) {
         case KW_once: pig->image_once = 1; continue;
-        case KW_interpolate: pig->image_interpolate = image_interpolation(p, &here); continue;
-        case KW_map_type: pig->image_map_type = image_map_type(p, &here); continue;
+        case KW_interpolate: pig->image_interpolate = gram_image_interpolation(p, &here); continue;
+        case KW_map_type: pig->image_map_type = gram_image_map_type(p, &here); continue;
         case KW_texture: {
             if (entries.n >= 256)
-                parse_fail(p, here.pos, "more than 256 textures in a material_map");
-            TextureMapEntry *slot = tvec_push(p, &entries);
+                tok_fail(p, here.pos, "more than 256 textures in a material_map");
+            TextureMapEntry *slot = tok_tvec_push(p, &entries);
             slot->value = entries.n - 1;
-            slot->texture = parse_texture(p);
+            slot->texture = gram_texture(p);
             continue;
         }
         case KW_repeat: case KW_offset:
-            unsupported(p, &here);
+            tok_unsupported(p, &here);
         default:
-            fail_expected(p, &here, "once, interpolate, map_type or texture in 'material_map'");
+            tok_fail_expected(p, &here, "once, interpolate, map_type or texture in 'material_map'");
         }
     }
     if (entries.n < 1)
-        parse_fail(p, p->tok.pos, "a material_map needs at least one texture (POV-Ray: \"texture expected\")");
-    nesting_leave(p);
+        tok_fail(p, p->tok.pos, "a material_map needs at least one texture (POV-Ray: \"texture expected\")");
+    tok_nesting_leave(p);
     set_texture_map(p, tex, entries.data, entries.n, at);
     tex->material_map = 1;
 }
@@ -1326,17 +1326,17 @@ static void parse_material_map(Parser *p, SceneTexture *tex, const Token *at)
 static void texture_map_transforms(Parser *p, SceneTexture *tex, int close, const Token *what)
 {
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, close))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, close))
             return;
         Transform ignored;
         transform_identity(&ignored);
-        if (parse_transform_item(p, t, tex->pigment.uv_mapping ? &ignored : &tex->pigment.transform))
+        if (expr_transform_item(p, t, tex->pigment.uv_mapping ? &ignored : &tex->pigment.transform))
             continue;
         char msg[160];
         snprintf(msg, sizeof msg, "a transform or the end of the texture after %.*s (a texture_map texture: its "
                  "pigments and finishes are its entries')", what->len > 40 ? 40 : what->len, what->text);
-        fail_expected(p, t, msg);
+        tok_fail_expected(p, t, msg);
     }
 }
 
@@ -1354,14 +1354,14 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
     }
     int only_ids = 1; /* nothing but identifiers so far: a pigment, normal or finish one may follow */
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, close))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, close))
             return;
         Token here = *t;
         /* POV-Ray's [pnf_ids]: `texture { Jade }` with Jade a pigment (old
          * scenes and textures.inc's pigments write them so), before the
          * texture's blocks */
-        const Symbol *pnf = here.type == TK_WORD && here.kw < 0 && only_ids ? token_symbol(p, &here) : NULL;
+        const Symbol *pnf = here.type == TK_WORD && here.kw < 0 && only_ids ? tok_symbol_of(p, &here) : NULL;
         if (pnf && (pnf->value.kind == VAL_PIGMENT || pnf->value.kind == VAL_FINISH || pnf->value.kind == VAL_NORMAL) &&
             tex->nmap == 0) {
             if (pnf->value.kind == VAL_PIGMENT)
@@ -1373,11 +1373,11 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
             first = 0;
             continue;
         }
-        const Value *id = block_identifier(p, t, VAL_TEXTURE, "texture");
+        const Value *id = gram_block_identifier(p, t, VAL_TEXTURE, "texture");
         if (id) {
             SourcePos pos = tex->pos;
             if (id->texture->nmap > 0 && !first)
-                parse_fail(p, here.pos, "'%.*s' is a texture_map texture: it must come first in the texture",
+                tok_fail(p, here.pos, "'%.*s' is a texture_map texture: it must come first in the texture",
                            here.len, here.text);
             *tex = *id->texture;
             tex->pos = pos;
@@ -1390,10 +1390,10 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
         }
         int kw = here.type == TK_WORD ? here.kw : -1;
         switch (kw) {
-        case KW_pigment: parse_pigment(p, &tex->pigment); first = only_ids = 0; continue;
-        case KW_finish: parse_finish(p, &tex->finish); first = only_ids = 0; continue;
+        case KW_pigment: gram_pigment(p, &tex->pigment); first = only_ids = 0; continue;
+        case KW_finish: gram_finish(p, &tex->finish); first = only_ids = 0; continue;
         case KW_normal:
-            tex->normal = parse_normal(p, tex->normal, &here, 1);
+            tex->normal = gram_normal(p, tex->normal, &here, 1);
             first = only_ids = 0;
             continue;
         case KW_no_bump_scale: continue;
@@ -1405,29 +1405,29 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
              * by the transforms inside. After a pigment, an identifier or a
              * transform POV-Ray stops at it ("'}' expected"). */
             if (!first)
-                fail_expected(p, &here, "'}' (uv_mapping must come first in its texture)");
+                tok_fail_expected(p, &here, "'}' (uv_mapping must come first in its texture)");
             texture_items(p, tex, close);
-            const SceneTexture *mapped = texture_uv_mapped(p, tex);
+            const SceneTexture *mapped = gram_texture_uv_mapped(p, tex);
             if (mapped != tex)
                 *tex = *mapped;
             return;
         }
         case KW_texture: /* `texture { }` in a texture, or around a texture_map entry */
-            fail_expected(p, &here, close == ']' ? "the items of a texture (without 'texture { }' around them) in a "
+            tok_fail_expected(p, &here, close == ']' ? "the items of a texture (without 'texture { }' around them) in a "
                                                    "texture_map entry"
                                                  : "pigment, normal, finish, a pattern, a transform or '}' in 'texture'");
         case KW_texture_map:
-            parse_fail(p, here.pos, "texture_map needs a pattern before it (texture { gradient y texture_map { ... } })");
+            tok_fail(p, here.pos, "texture_map needs a pattern before it (texture { gradient y texture_map { ... } })");
         case KW_material_map:
             if (!first)
-                parse_fail(p, here.pos, "material_map must come first in its texture (only transforms may follow "
+                tok_fail(p, here.pos, "material_map must come first in its texture (only transforms may follow "
                                         "it)");
             parse_material_map(p, tex, &here);
             texture_map_transforms(p, tex, close, &here);
             return;
         default:
-            if (token_starts_colour(p, &here))
-                fail_expected(p, &here, close == ']' ? "a texture's items (pigment { ... } ...), not a colour, in a "
+            if (expr_starts_colour(p, &here))
+                tok_fail_expected(p, &here, close == ']' ? "a texture's items (pigment { ... } ...), not a colour, in a "
                                                        "texture_map entry"
                                                      : "pigment { colour ... }, not a colour, in 'texture'");
             break;
@@ -1436,18 +1436,18 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
          * not moved by the texture's transforms). */
         Transform moved;
         transform_identity(&moved);
-        if (parse_transform_item(p, t, &moved)) {
+        if (expr_transform_item(p, t, &moved)) {
             if (!tex->pigment.uv_mapping)
                 transform_compose(&tex->pigment.transform, &moved);
-            tex->normal = normal_transformed(p, tex->normal, &moved);
+            tex->normal = gram_normal_transformed(p, tex->normal, &moved);
             first = only_ids = 0;
             continue;
         }
-        if (kw >= 0 && pattern_support(kw) != PAT_NONE) {
+        if (kw >= 0 && gram_pattern_support(kw) != PAT_NONE) {
             if (!first)
-                parse_fail(p, here.pos, "a texture patterned by %s cannot have a pigment, normal, finish, texture "
-                           "identifier or transform before its pattern", keyword_name(kw));
-            if (pattern_support(kw) == PAT_EVALUATED) {
+                tok_fail(p, here.pos, "a texture patterned by %s cannot have a pigment, normal, finish, texture "
+                           "identifier or transform before its pattern", tok_keyword_name(kw));
+            if (gram_pattern_support(kw) == PAT_EVALUATED) {
                 parse_patterned_texture(p, tex, &here, close);
                 return;
             }
@@ -1460,16 +1460,16 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
             texture_unsupported(p, &here, patterned);
         }
         if (kw >= 0)
-            unsupported(p, &here);
-        fail_expected(p, &here, "pigment, normal, finish, a pattern, a transform or '}' in 'texture'");
+            tok_unsupported(p, &here);
+        tok_fail_expected(p, &here, "pigment, normal, finish, a pattern, a transform or '}' in 'texture'");
     }
 }
 
-SceneTexture *parse_texture(Parser *p)
+SceneTexture *gram_texture(Parser *p)
 {
     Token kw = p->tok;
-    begin_block(p, "texture");
-    SceneTexture *tex = new_default_texture(p);
+    tok_begin_block(p, "texture");
+    SceneTexture *tex = gram_default_texture(p);
     tex->pos = kw.pos;
     texture_items(p, tex, '}');
     return tex;
@@ -1488,11 +1488,11 @@ static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589
  * -- into one colour, with the top layer's finish: an approximation (the
  * lower layers' finishes and filter colours are lost), and patterns in
  * the layers stand by their representative colour. */
-SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at)
+SceneTexture *gram_layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at)
 {
     if (top->nmap > 0 || below->nmap > 0)
         texture_unsupported(p, at, "texture_map in layered textures");
-    SceneTexture *r = palloc(p, sizeof *r);
+    SceneTexture *r = tok_scene_alloc(p, sizeof *r);
     *r = *top;
     if (pigment_is_opaque(&top->pigment))
         return r;
@@ -1520,80 +1520,80 @@ SceneTexture *layer_textures(Parser *p, const SceneTexture *top, const SceneText
     pig->colour.transmit = t;
     /* the notes of both layers, then the blend's own */
     for (const ApproxNote *n = below->approx; n; n = n->next) {
-        ApproxNote *c = palloc(p, sizeof *c);
+        ApproxNote *c = tok_scene_alloc(p, sizeof *c);
         *c = *n;
         c->next = r->approx;
         r->approx = c;
     }
     for (const ApproxNote *n = below->pigment.approx; n; n = n->next) {
-        ApproxNote *c = palloc(p, sizeof *c);
+        ApproxNote *c = tok_scene_alloc(p, sizeof *c);
         *c = *n;
         c->next = pig->approx;
         pig->approx = c;
     }
-    approximate(p, at, APPROX_LAYERS, &r->approx);
+    tok_approximate(p, at, APPROX_LAYERS, &r->approx);
     return r;
 }
 
 /* ---- sky_sphere ------------------------------------------------------------ */
 
-void parse_sky_sphere(Parser *p, SkySphere *sky)
+void gram_sky_sphere(Parser *p, SkySphere *sky)
 {
-    begin_block(p, "sky_sphere");
+    tok_begin_block(p, "sky_sphere");
     TempVec pigments;
-    tvec_init(&pigments, sizeof(Pigment));
+    tok_tvec_init(&pigments, sizeof(Pigment));
     Transform tr;
     transform_identity(&tr);
     for (;;) {
-        Token *t = next(p);
-        if (is_punct(t, '}'))
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
             break;
-        if (parse_transform_item(p, t, &tr))
+        if (expr_transform_item(p, t, &tr))
             continue;
-        if (is_kw(t, KW_pigment)) {
-            Pigment *pig = tvec_push(p, &pigments);
+        if (tok_is_kw(t, KW_pigment)) {
+            Pigment *pig = tok_tvec_push(p, &pigments);
             *pig = p->scene->default_texture.pigment;
             pig->approx = NULL;
             Token at = *t;
-            parse_pigment(p, pig);
+            gram_pigment(p, pig);
             if (pig->uv_mapping && pig->kind != PIGMENT_SOLID) /* as POV-Ray: a sky has no uv */
-                parse_fail(p, at.pos, "uv_mapping cannot be used in a sky_sphere pigment");
+                tok_fail(p, at.pos, "uv_mapping cannot be used in a sky_sphere pigment");
             continue;
         }
         if (t->type == TK_WORD && t->kw < 0) {
             /* A declared sky sphere (skies.inc's S_Cloud1 ...), as POV-Ray
              * only as the first item: its pigments and transform, then more. */
-            Symbol *sym = token_symbol(p, t);
+            Symbol *sym = tok_symbol_of(p, t);
             if (!sym)
-                parse_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
+                tok_fail(p, t->pos, "undeclared identifier '%.*s'", t->len, t->text);
             if (sym->value.kind == VAL_UNSUPPORTED)
-                use_unsupported(p, t, &sym->value);
+                tok_use_unsupported(p, t, &sym->value);
             if (sym->value.kind != VAL_SKY_SPHERE)
-                parse_fail(p, t->pos, "'%.*s' is %s, not a sky_sphere", t->len, t->text,
-                           value_kind_name(sym->value.kind));
+                tok_fail(p, t->pos, "'%.*s' is %s, not a sky_sphere", t->len, t->text,
+                           tok_value_kind_name(sym->value.kind));
             if (pigments.n > 0 || !transform_is_identity(&tr))
-                parse_fail(p, t->pos, "a sky_sphere identifier must come first in 'sky_sphere'");
+                tok_fail(p, t->pos, "a sky_sphere identifier must come first in 'sky_sphere'");
             const SkySphere *from = sym->value.sky;
             for (int i = 0; i < from->npigments; i++)
-                *(Pigment *)tvec_push(p, &pigments) = from->pigments[i];
+                *(Pigment *)tok_tvec_push(p, &pigments) = from->pigments[i];
             tr = from->transform;
             continue;
         }
-        if (is_kw(t, KW_emission)) { /* 3.7.1: scales the sky; 1 is the default */
+        if (tok_is_kw(t, KW_emission)) { /* 3.7.1: scales the sky; 1 is the default */
             Colour c;
             Token at = *t;
-            parse_colour(p, &c, 0);
+            expr_colour(p, &c, 0);
             if (c.r != 1.0 || c.g != 1.0 || c.b != 1.0)
-                unsupported(p, &at);
+                tok_unsupported(p, &at);
             continue;
         }
         if (t->type == TK_WORD && t->kw >= 0)
-            unsupported(p, t);
-        fail_expected(p, t, "pigment, a transform or '}' in 'sky_sphere'");
+            tok_unsupported(p, t);
+        tok_fail_expected(p, t, "pigment, a transform or '}' in 'sky_sphere'");
     }
     /* A second sky_sphere replaces the first, as in POV-Ray. */
     sky->npigments = pigments.n;
-    sky->pigments = palloc(p, sizeof(Pigment) * (size_t)(pigments.n ? pigments.n : 1));
+    sky->pigments = tok_scene_alloc(p, sizeof(Pigment) * (size_t)(pigments.n ? pigments.n : 1));
     if (pigments.n)
         memcpy(sky->pigments, pigments.data, sizeof(Pigment) * (size_t)pigments.n);
     sky->transform = tr;

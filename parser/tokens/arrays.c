@@ -1,12 +1,12 @@
 /* POV-Ray 3.7 arrays: `array[N][M]...` with an optional initialiser
- * `{ {a, b}, {c, d} }`, elements read as `A[i][j]` (next() reads the
+ * `{ {a, b}, {c, d} }`, elements read as `A[i][j]` (tok_next() reads the
  * indices, so an element can stand wherever an identifier can) and set by
  * `#declare A[i] = ...`; dimensions(A) and dimension_size(A, D). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 /* Elements at most: a bound that keeps a typo such as array[1e9] from
  * exhausting memory (POV-Ray would try). */
@@ -17,33 +17,33 @@ static void parse_initialiser(Parser *p, ArrayValue *a, int dim, long base)
     long stride = 1;
     for (int d = dim + 1; d < a->ndims; d++)
         stride *= a->size[d];
-    begin_block(p, "the array size or ','");
+    tok_begin_block(p, "the array size or ','");
     for (int i = 0; i < a->size[dim]; i++) {
         if (i > 0) {
-            Token *t = next(p);
-            if (is_punct(t, '}'))
-                parse_fail(p, t->pos, "this array initialiser has %d element%s where %d are needed", i,
+            Token *t = tok_next(p);
+            if (tok_is_punct(t, '}'))
+                tok_fail(p, t->pos, "this array initialiser has %d element%s where %d are needed", i,
                            i == 1 ? "" : "s", a->size[dim]);
-            if (!is_punct(t, ','))
-                unget(p); /* POV-Ray accepts a missing ',' */
+            if (!tok_is_punct(t, ','))
+                tok_unget(p); /* POV-Ray accepts a missing ',' */
         }
         if (dim + 1 < a->ndims) {
             parse_initialiser(p, a, dim + 1, base + i * stride);
         } else {
-            Token *t = peek(p);
-            if (is_punct(t, '}'))
-                parse_fail(p, t->pos, "this array initialiser has %d element%s where %d are needed", i,
+            Token *t = tok_peek(p);
+            if (tok_is_punct(t, '}'))
+                tok_fail(p, t->pos, "this array initialiser has %d element%s where %d are needed", i,
                            i == 1 ? "" : "s", a->size[dim]);
-            a->elems[base + i].value = parse_value_lenient(p);
+            a->elems[base + i].value = p->hooks->value(p);
         }
     }
-    Token *t = next(p);
-    if (is_punct(t, ','))
-        t = next(p); /* a trailing ',' */
-    if (!is_punct(t, '}')) {
+    Token *t = tok_next(p);
+    if (tok_is_punct(t, ','))
+        t = tok_next(p); /* a trailing ',' */
+    if (!tok_is_punct(t, '}')) {
         char what[96];
         snprintf(what, sizeof what, "'}' after the %d elements of the array initialiser", a->size[dim]);
-        fail_expected(p, t, what);
+        tok_fail_expected(p, t, what);
     }
 }
 
@@ -55,7 +55,7 @@ static int size_class(long n)
     return k;
 }
 
-ArrayValue *array_new(Parser *p, long count)
+ArrayValue *tok_array_new(Parser *p, long count)
 {
     /* The first of a few in count's class that is big enough, or any of
      * the next class (all are). Loops and macro calls make arrays of the
@@ -83,14 +83,14 @@ ArrayValue *array_new(Parser *p, long count)
         a->count = count;
         return a;
     }
-    a = tmp_alloc(p, sizeof *a);
-    a->elems = tmp_alloc(p, sizeof *a->elems * (size_t)count);
+    a = tok_temp_alloc(p, sizeof *a);
+    a->elems = tok_temp_alloc(p, sizeof *a->elems * (size_t)count);
     a->capacity = count;
     a->count = count;
     return a;
 }
 
-void value_give_up(Parser *p, Value *v)
+void tok_value_give_up(Parser *p, Value *v)
 {
     if (v->kind != VAL_ARRAY || !v->array)
         return;
@@ -120,12 +120,12 @@ void value_give_up(Parser *p, Value *v)
     }
 }
 
-Symbol *token_element(const Token *t)
+Symbol *tok_element_of(const Token *t)
 {
     return t->elem->serial == t->elem_serial ? t->elem : NULL;
 }
 
-Value parse_array(Parser *p, const Token *kw)
+Value tok_array_value(Parser *p, const Token *kw)
 {
     ArrayValue shape, *a = &shape; /* the sizes first, then the elements */
     memset(&shape, 0, sizeof shape);
@@ -135,31 +135,31 @@ Value parse_array(Parser *p, const Token *kw)
         /* After the first size, look at the raw text: `#local A = array[N]`
          * with no ';' may be followed by a directive that uses A, which
          * must not be carried out before A is stored. */
-        if (a->ndims > 0 && !lex_next_is_punct(p, '['))
+        if (a->ndims > 0 && !tok_next_is_punct(p, '['))
             break;
-        Token *t = next(p);
-        if (!is_punct(t, '['))
-            fail_expected(p, t, "'[' and the array size after 'array'");
+        Token *t = tok_next(p);
+        if (!tok_is_punct(t, '['))
+            tok_fail_expected(p, t, "'[' and the array size after 'array'");
         if (a->ndims == MAX_ARRAY_DIMS)
-            parse_fail(p, t->pos, "arrays have at most %d dimensions", MAX_ARRAY_DIMS);
-        Token at = *peek(p);
-        double n = parse_float_full(p);
-        expect_punct(p, ']', "the array size");
+            tok_fail(p, t->pos, "arrays have at most %d dimensions", MAX_ARRAY_DIMS);
+        Token at = *tok_peek(p);
+        double n = p->hooks->number_full(p);
+        tok_expect_punct(p, ']', "the array size");
         int size;
         if (!int_from_double(n + 1e-10, 1, (int)MAX_ARRAY_ELEMENTS, &size))
-            parse_fail(p, at.pos, "invalid array size %g (1 to %ld)", n, MAX_ARRAY_ELEMENTS);
+            tok_fail(p, at.pos, "invalid array size %g (1 to %ld)", n, MAX_ARRAY_ELEMENTS);
         a->size[a->ndims++] = size;
         a->count *= size;
         if (a->count > MAX_ARRAY_ELEMENTS)
-            parse_fail(p, at.pos, "array of more than %ld elements", MAX_ARRAY_ELEMENTS);
-        if ((size_t)a->count > limits_memory_left(p) / sizeof *a->elems) /* named at the size that crosses it */
-            limits_over_budget(p, at.pos);
+            tok_fail(p, at.pos, "array of more than %ld elements", MAX_ARRAY_ELEMENTS);
+        if ((size_t)a->count > tok_limits_memory_left(p) / sizeof *a->elems) /* named at the size that crosses it */
+            tok_limits_over_budget(p, at.pos);
     }
-    a = array_new(p, shape.count);
+    a = tok_array_new(p, shape.count);
     a->ndims = shape.ndims;
     memcpy(a->size, shape.size, sizeof a->size);
     a->declared_at = shape.declared_at;
-    if (lex_next_is_punct(p, '{'))
+    if (tok_next_is_punct(p, '{'))
         parse_initialiser(p, a, 0, 0);
     Value v;
     memset(&v, 0, sizeof v);
@@ -168,7 +168,7 @@ Value parse_array(Parser *p, const Token *kw)
     return v;
 }
 
-void read_array_element(Parser *p, Symbol *s)
+void tok_array_element(Parser *p, Symbol *s)
 {
     Token t = p->tok;
     const ArrayValue *a = s->value.array;
@@ -178,21 +178,21 @@ void read_array_element(Parser *p, Symbol *s)
     p->no_macro_calls = 0; /* the indices are ordinary expressions */
     long index = 0;
     for (int d = 0; d < a->ndims; d++) {
-        Token *open = next(p);
-        if (!is_punct(open, '[')) {
+        Token *open = tok_next(p);
+        if (!tok_is_punct(open, '[')) {
             char what[120];
             snprintf(what, sizeof what, "'[': '%.*s' has %d dimensions", t.len > 60 ? 60 : t.len, t.text, a->ndims);
-            fail_expected(p, open, what);
+            tok_fail_expected(p, open, what);
         }
-        Token at = *peek(p);
-        double v = parse_float_full(p);
-        expect_punct(p, ']', "the array index");
+        Token at = *tok_peek(p);
+        double v = p->hooks->number_full(p);
+        tok_expect_punct(p, ']', "the array index");
         int i;
         if (!int_from_double(v, 0, a->size[d] - 1, &i)) {
             if (a->ndims == 1)
-                parse_fail(p, at.pos, "index %g is out of range for '%.*s' (array[%d]: 0 to %d)", v, t.len, t.text,
+                tok_fail(p, at.pos, "index %g is out of range for '%.*s' (array[%d]: 0 to %d)", v, t.len, t.text,
                            a->size[0], a->size[0] - 1);
-            parse_fail(p, at.pos, "index %g is out of range for dimension %d of '%.*s' (0 to %d)", v, d + 1, t.len,
+            tok_fail(p, at.pos, "index %g is out of range for dimension %d of '%.*s' (0 to %d)", v, d + 1, t.len,
                        t.text, a->size[d] - 1);
         }
         index = index * a->size[d] + i;
@@ -212,37 +212,37 @@ void read_array_element(Parser *p, Symbol *s)
 
 static const ArrayValue *array_argument(Parser *p, const char *function)
 {
-    Token t = *next(p);
+    Token t = *tok_next(p);
     if (t.type == TK_WORD && t.kw < 0 && !t.elem) {
-        Symbol *s = symbol_find(p, t.text, t.len);
+        Symbol *s = tok_symbol_find(p, t.text, t.len);
         if (!s)
-            parse_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
+            tok_fail(p, t.pos, "undeclared identifier '%.*s'", t.len, t.text);
         if (s->value.kind == VAL_ARRAY)
             return s->value.array;
-        parse_fail(p, t.pos, "'%s' needs an array, but '%.*s' is %s", function, t.len, t.text,
-                   value_kind_name(s->value.kind));
+        tok_fail(p, t.pos, "'%s' needs an array, but '%.*s' is %s", function, t.len, t.text,
+                   tok_value_kind_name(s->value.kind));
     }
     char what[64];
     snprintf(what, sizeof what, "an array identifier in '%s'", function);
-    fail_expected(p, &t, what);
+    tok_fail_expected(p, &t, what);
 }
 
-double array_function(Parser *p, const Token *t)
+double tok_array_function(Parser *p, const Token *t)
 {
-    const char *name = keyword_name(t->kw);
+    const char *name = tok_keyword_name(t->kw);
     char after[64];
     snprintf(after, sizeof after, "'%s'", name);
-    expect_punct(p, '(', after);
+    tok_expect_punct(p, '(', after);
     const ArrayValue *a = array_argument(p, name);
     double v;
     if (t->kw == KW_dimensions) {
         v = a->ndims;
     } else {
-        expect_punct(p, ',', "the array");
+        tok_expect_punct(p, ',', "the array");
         int d;
         /* POV-Ray warns and answers 0 for a dimension the array lacks */
-        v = int_from_double(parse_float_full(p), 1, a->ndims, &d) ? a->size[d - 1] : 0.0;
+        v = int_from_double(p->hooks->number_full(p), 1, a->ndims, &d) ? a->size[d - 1] : 0.0;
     }
-    expect_punct(p, ')', "the arguments");
+    tok_expect_punct(p, ')', "the arguments");
     return v;
 }

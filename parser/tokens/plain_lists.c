@@ -1,6 +1,6 @@
 /* mesh2's long lists of plain vectors, `<1, -2.5, 3e2>, <...>, ...`, read
- * straight from the text on several threads (parser_internal.h,
- * lex_plain_vector_list). On 10^6 triangles such lists are 95% of a 43 MB
+ * straight from the text on several threads (tokens.h,
+ * tok_plain_vector_list). On 10^6 triangles such lists are 95% of a 43 MB
  * scene, and reading them item by item was the one part of a render left
  * on one thread.
  *
@@ -8,14 +8,14 @@
  * of (digits, signs, '.', 'e', commas, angle brackets and blanks: no
  * comment, identifier or directive). It is cut into pieces at '<', one per
  * thread; each piece counts its vectors, then reads them into their places,
- * every number by the lexer's own conversion (lex_number_text). Anything
+ * every number by the lexer's own conversion (tok_number_text). Anything
  * unexpected anywhere, or a count other than n, and nothing is kept: the
  * caller reads the list item by item, which says what is wrong and where. */
 #include <math.h>
 #include <pthread.h>
 #include <string.h>
 
-#include "parser_internal.h"
+#include "tokens.h"
 
 #define PIECE_MIN_BYTES (1 << 20) /* below, a thread's start costs more than its share */
 #define MAX_PIECES 64
@@ -118,7 +118,7 @@ static void *read_piece(void *arg)
                 goto fail;
             size_t e;
             double v;
-            if (!lex_number_text(b, i, to, &e, &v))
+            if (!tok_number_text(b, i, to, &e, &v))
                 goto fail;
             i = e;
             pc->tokens++;
@@ -208,12 +208,12 @@ static size_t plain_run_end(const char *b, size_t start, size_t size, int thread
     return size;
 }
 
-int lex_plain_vector_list(Parser *p, int n, Vec3 *out, MeshFace *faces, int nvertices)
+int tok_plain_vector_list(Parser *p, int n, Vec3 *out, MeshFace *faces, int nvertices)
 {
     /* Not where the budgets of repeated text or of time must see each
      * token (a loop, a macro's body, a deadline), nor after a token read
      * ahead, unless it is the comma the first item may have before it. */
-    if (n <= 0 || p->deadline > 0.0 || (p->ungot && !is_punct(&p->tok, ',')))
+    if (n <= 0 || p->deadline > 0.0 || (p->ungot && !tok_is_punct(&p->tok, ',')))
         return 0;
     SourceFile *f = &p->files[p->depth - 1];
     if (f->offset < f->repeated_to)

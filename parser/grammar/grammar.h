@@ -1,0 +1,145 @@
+/* The scene grammar: objects, textures, pigments, normals, the camera,
+ * lights, fog, global settings and declarations, and the public entry
+ * points of parser.h (parse_scene.c). It reads values with the expression
+ * evaluator (parser/expressions) and the token stream (parser/tokens). */
+#ifndef HST_GRAMMAR_H
+#define HST_GRAMMAR_H
+
+#include "expressions.h"
+#include "tokens.h"
+
+/* What the grammar keeps while it reads a scene (Parser.gram): the scene's
+ * top-level lists until the parse ends, and the settings later statements
+ * depend on. */
+typedef struct GramState {
+    TempVec objects; /* of SceneObject *, top level */
+    TempVec lights;  /* of SceneLight */
+    TempVec fogs;    /* of SceneFog, in file order */
+    const ApproxNote *global_approx; /* global_settings: radiosity, photons */
+    int media_attenuation_seen; /* a light_source asked for media_attenuation */
+    int default_changed;        /* #default was used */
+    /* POV-Ray's gammaMode while parsing (image_gamma.c) */
+    enum { GAMMA_MODE_NONE, GAMMA_MODE_37_IMPLIED, GAMMA_MODE_36, GAMMA_MODE_37 } gamma_mode;
+} GramState;
+
+/* A value as POV-Ray stores it in a float (SNGL): map values, frequency,
+ * phase, bump_size ... land where POV-Ray's do. */
+static inline double gram_single(double v) { return (double)(float)v; }
+
+/* parse_texture.c */
+SceneTexture *gram_default_texture(Parser *p);
+SceneTexture *gram_texture(Parser *p);   /* after 'texture' */
+void gram_pigment(Parser *p, Pigment *pig); /* after 'pigment' */
+void gram_finish(Parser *p, Finish *f);  /* after 'finish' */
+void gram_interior(Parser *p, Interior *in); /* after 'interior' */
+/* After 'material': POV-Ray's Parse_Material on *tex and *in (an object's
+ * texture and interior so far, or NULL): a material identifier first, then
+ * textures layered on, interiors, and transforms, which move the texture
+ * (not the object). at: the 'material' keyword. */
+void gram_material(Parser *p, const SceneTexture **tex, const Interior **in, const Token *at);
+void gram_skip_normal(Parser *p);              /* after 'normal' */
+/* The identifier at t when it holds `kind` (NULL when t is none; an error
+ * for an identifier of another kind). */
+const Value *gram_block_identifier(Parser *p, const Token *t, ValueKind kind, const char *block);
+/* How hstrace treats a pattern keyword in a pigment. */
+typedef enum { PAT_NONE, PAT_EVALUATED, PAT_APPROXIMATED, PAT_UNSUPPORTED } PatternSupport;
+PatternSupport gram_pattern_support(int kw);
+/* An evaluated pattern at its keyword kw (read): its kind and arguments,
+ * frequency, phase and wave at POV-Ray's defaults. */
+void gram_start_pattern(Parser *p, Pigment *pig, int kw);
+/* frequency, phase, waves, turbulence, warp, noise_generator ... at t
+ * (read): 1 when it was one, its arguments read. */
+int gram_pattern_modifier_item(Parser *p, Pigment *pig, const Token *t);
+int gram_pattern_modifier(int kw);     /* a modifier of patterns hstrace does not evaluate */
+void gram_skip_arguments(Parser *p);   /* such a keyword's arguments */
+/* POV-Ray's Check_Turb: the turbulence `turbulence`, `octaves` ... change. */
+PatternTurbulence *gram_classic_turbulence(Parser *p, Pigment *pig);
+int gram_octaves_value(double v);
+void gram_warp(Parser *p, Pigment *pig, const Token *at); /* after 'warp' */
+/* A blend map's next entry: 0 at its '}', else 1 after '[' and the value. */
+int gram_blend_map_entry(Parser *p, const char *map, const TempVec *entries, int optional, double *value);
+/* After a map's '{': a declared map of `kind` and the '}' after it (POV-Ray
+ * takes one identifier in place of the entries), or NULL. */
+const Value *gram_map_identifier(Parser *p, ValueKind kind, const char *map);
+/* The maps after their keyword `at` (read), into a pigment, a patterned
+ * texture or a normal; also what #declare reads for a declared map. */
+void gram_colour_map(Parser *p, Pigment *pig);
+void gram_pigment_map(Parser *p, Pigment *pig, const Token *at);
+void gram_texture_map(Parser *p, SceneTexture *tex, const Token *at);
+void gram_normal_map(Parser *p, SceneNormal *n, int average);
+void gram_slope_map(Parser *p, SceneNormal *n);
+/* A picture of image_map, bump_map or material_map (`block`), after its
+ * '{', into pig; the picture, the parse's own (a colour-mapped one's
+ * entries are the image_map's to change). */
+SceneImage *gram_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct);
+int gram_image_interpolation(Parser *p, const Token *at); /* after 'interpolate' */
+int gram_image_map_type(Parser *p, const Token *at);      /* after 'map_type': its value */
+
+/* parse_normal.c */
+/* After 'normal' (kw): the normal `from` (NULL: the default texture's)
+ * modified by the block. need_pattern: a normal that ends up with no
+ * pattern is an error (POV-Ray's "No normal type given." for what objects
+ * use; #default and #declare may leave the pattern to later blocks). */
+const SceneNormal *gram_normal(Parser *p, const SceneNormal *from, const Token *kw, int need_pattern);
+/* A copy moved by tr (pattern space to texture space, then tr), as a
+ * texture's transforms move its normal; a uv-mapped normal stays. */
+const SceneNormal *gram_normal_transformed(Parser *p, const SceneNormal *n, const Transform *tr);
+/* The normal seen at the surface's (u, v, 0): an object's uv_mapping. */
+const SceneNormal *gram_normal_uv_mapped(Parser *p, const SceneNormal *n);
+/* A texture seen at the surface's (u, v, 0), as an object's uv_mapping
+ * makes every texture of it and `texture { uv_mapping ... }` makes its own:
+ * its own transforms still place it, the object's and outer textures' do
+ * not move it (POV-Ray's UV_FLAG and uv_mapping pattern); parse_objects.c */
+const SceneTexture *gram_texture_uv_mapped(Parser *p, const SceneTexture *tex);
+/* A layer `top` over `below` (both copied): one texture, see parse_texture.c. */
+SceneTexture *gram_layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at);
+/* sky_sphere { pigment {...} ... transforms } after 'sky_sphere'. */
+void gram_sky_sphere(Parser *p, SkySphere *sky);
+
+/* parse_fog.c: fog { ... } after 'fog' */
+void gram_fog(Parser *p, const Token *kw, SceneFog *fog);
+
+/* parse_objects.c */
+int gram_is_object_keyword(int kw);
+/* An object or light starting at t (already read); returns 1 and fills one
+ * of *obj / *light, or 0 when t starts no object. */
+int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light);
+
+/* parse_camera.c */
+void gram_camera(Parser *p, const Token *t, SceneCamera *cam);
+void gram_default_camera(SceneCamera *cam);
+SceneLight *gram_light_source(Parser *p, const Token *t);
+void gram_transform_light(SceneLight *l, const Transform *tr);
+/* A top-level union: its light_sources (and its inner unions') go to the
+ * scene's lights with the transforms above them applied. */
+void gram_instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth);
+
+/* image_gamma.c: POV-Ray 3.7's reading of a picture's colours, by the
+ * gamma mode the scene is in when the picture is parsed. decode and
+ * untagged go to ParseOptions.load_image; the linear values it returns are
+ * then encoded with working (1 none, 0 sRGB, else a power law). */
+typedef struct {
+    double decode, untagged, working;
+} ImageGammaPlan;
+/* global_settings' first assumed_gamma (0: srgb); later ones are ignored */
+void gram_assumed_gamma_seen(Parser *p, double gamma);
+/* after a #version has set p->version */
+void gram_version_seen(Parser *p);
+/* gamma_correct: colours (image_map) rather than data (bump_map,
+ * material_map); override_given: the picture's own `gamma override` */
+ImageGammaPlan gram_image_gamma_plan(const Parser *p, int gamma_correct, int override_given, double override);
+
+/* approximations.c: the report of what the instantiated scene approximates */
+void gram_collect_approximations(Parser *p);
+
+/* parse_scene.c */
+void gram_declare(Parser *p, const Token *hash, int local);
+/* Any value (a #declare's right side, a macro argument): unsupported things
+ * become VAL_UNSUPPORTED instead of errors. */
+Value gram_value_lenient(Parser *p);
+/* A copy that does not share an array's elements. */
+Value gram_copy_value(Parser *p, const Value *v);
+void gram_default_directive(Parser *p);
+
+
+#endif
