@@ -14,16 +14,9 @@ builddir=${top_builddir:-.}
 hstrace="$builddir/hstrace"
 # shellcheck source=tests/tap.sh
 . "$srcdir/tests/tap.sh"
-povray=""
-if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-if [ -z "$povray" ]; then
-    echo "1..0 # SKIP povray is not installed: nothing to compare with"
-    exit 0
-fi
+need_povray
 [ -x "$hstrace" ] || bail "$hstrace is not built"
-work=$(mktemp -d "${TMPDIR:-/tmp}/hstgamma.XXXXXX") || bail "cannot make a temporary folder"
-trap 'rm -rf "$work"' EXIT
-trap 'exit 1' HUP INT PIPE TERM
+tap_work hstgamma
 
 # The limits per case and format: RMSE and the pixels off by more than 0.02,
 # each LIMIT (MEASURED): the value measured on 2026-11-23 (POV-Ray

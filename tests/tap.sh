@@ -194,3 +194,21 @@ ties_check() {
     check "$1 without its $tap_ties tie pixels: $tap_off of $tap_pixels pixels off by more than 0.02 <= $6 (measured $7)" \
         within "$tap_off" "$6"
 }
+
+# need_povray: sets povray to the program $POVRAY names; without one (empty,
+# or not installed) the whole script is skipped, as TAP says it.
+need_povray() {
+    povray=""
+    if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
+    if [ -z "$povray" ]; then
+        echo "1..0 # SKIP povray is not installed: nothing to compare with"
+        exit 0
+    fi
+}
+
+# tap_work NAME: $work, a temporary folder removed when the script ends.
+tap_work() {
+    work=$(mktemp -d "${TMPDIR:-/tmp}/$1.XXXXXX") || bail "cannot make a temporary folder"
+    trap 'rm -rf "$work"' EXIT
+    trap 'exit 1' HUP INT PIPE TERM
+}

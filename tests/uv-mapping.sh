@@ -19,16 +19,9 @@ builddir=${top_builddir:-.}
 hstrace="$(cd "$builddir" && pwd)/hstrace" # the scenes are rendered from their folder
 # shellcheck source=tests/tap.sh
 . "$srcdir/tests/tap.sh"
-povray=""
-if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-if [ -z "$povray" ]; then
-    echo "1..0 # SKIP povray is not installed: nothing to compare with"
-    exit 0
-fi
+need_povray
 [ -x "$hstrace" ] || bail "$hstrace is not built"
-work=$(mktemp -d "${TMPDIR:-/tmp}/hstuv.XXXXXX") || bail "cannot make a temporary folder"
-trap 'rm -rf "$work"' EXIT
-trap 'exit 1' HUP INT PIPE TERM
+tap_work hstuv
 
 # RMSE each case must keep to, in linear light
 limit=0.001
