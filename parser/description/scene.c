@@ -1,6 +1,7 @@
 /* Defaults of the scene description, as POV-Ray 3.7 defines them. */
 #include "scene.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -79,7 +80,7 @@ int scene_noise_generator(const Scene *s)
         return s->globals.noise_generator;
     /* POV-Ray's default follows the language version (an explicit
      * global_settings value stays). */
-    return (int)(s->version * 100.0 + 0.5) < 350 ? 1 : 2;
+    return floor(s->version * 100.0 + 0.5) < 350.0 ? 1 : 2; /* no int: a version of 1e46 is no error */
 }
 
 Colour colour_map_at(const ColourMapEntry *map, int n, double value)

@@ -34,11 +34,16 @@
  * `gamma` given. */
 #include "grammar.h"
 
-/* The language version in effect: 3.62 without a #version */
+#include <math.h>
+
+/* The language version in effect: 3.62 without a #version. Compared in
+ * hundredths, as POV-Ray rounds it (3.699999 is 3.70); any version, 1e46
+ * or NaN included, is compared without a conversion to int (which would
+ * be undefined beyond its range). */
 static int below_3_7(const Parser *p)
 {
     double version = p->version_given ? p->version : 3.62;
-    return (int)(version * 100.0 + 0.5) < 370;
+    return floor(version * 100.0 + 0.5) < 370.0;
 }
 
 void gram_assumed_gamma_seen(Parser *p, double gamma)
