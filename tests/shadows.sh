@@ -147,7 +147,7 @@ for scene in "$srcdir"/scenes/*.pov "$work/filtered.pov" "$work/contact.pov" "$s
     # hst's own machinery is tested with every light's volumes built
     # (--volumes always); "planned" is the default, where the cost model
     # builds only those that pay (volume_plan.h), often none.
-    for variant in cache volume hst hst:per-point hst:0 hst:1e9 hst:auto:off hst:1e9:off planned; do
+    for variant in cache volume light-buffer hst hst:per-point hst:0 hst:1e9 hst:auto:off hst:1e9:off planned; do
         method=${variant%%:*}
         nth=auto coherence=on volumes=always
         rest=${variant#"$method"}; rest=${rest#:}

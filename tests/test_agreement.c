@@ -40,6 +40,7 @@
 
 #include "fixtures.h"
 #include "grid.h"
+#include "light_buffer.h"
 #include "shadow.h"
 #include "shadow_coherence.h"
 #include "shadow_reference.h"
@@ -142,6 +143,9 @@ static const Variant variants[] = {
     { "hst", 1e9, 0, 1, "hst (N_th 1e9)" },
     { "hst", 4, 1, 1, "hst (N_th 4, pixel coherence)" },
     { "hst", 4, 1, 0, "hst (N_th 4, pixel coherence, grid walk)" },
+    { "light-buffer", 0, 0, 1, "light buffer" },
+    /* every cell split at its first test, down to the last level */
+    { "light-buffer", 1, 0, 1, "light buffer (cells split at once)" },
 };
 #define NVARIANTS (int)(sizeof variants / sizeof variants[0])
 
@@ -187,6 +191,20 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
     /* The pixel coherence is driven here by hand (its neighbours' rows are
      * this test's own), so the context makes none. */
     ShadowPrepared prepared = { .decider = m, .volumes = m->uses_volumes ? (ShadowVolumes *)sv : NULL, .nth = v->nth };
+    LightBuffers lbs;
+    int light_buffer = strcmp(v->method, "light-buffer") == 0;
+    if (light_buffer) {
+        /* nth 1: split at once (the split's work mark is one test) */
+        if (light_buffers_init(&lbs, w, bvh, grid_tolerance(g), (size_t)64 << 20)) {
+            fprintf(stderr, "out of memory\n");
+            exit(99);
+        }
+        if (v->nth > 0) {
+            lbs.split_work = 1;
+            lbs.split_at = 0;
+        }
+        prepared.light_buffers = &lbs;
+    }
     if (shadow_context_init(&ctx, NULL, w, g, &prepared, 0, 0) || (v->coherence && pixel_coherence_init(&pc, w, g))) {
         fprintf(stderr, "out of memory\n");
         exit(99);
@@ -241,6 +259,8 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
         pixel_coherence_free(&pc);
     ctx.coherence = NULL; /* this test's own */
     shadow_context_free(&ctx);
+    if (light_buffer)
+        light_buffers_free(&lbs);
 }
 
 static int verbose; /* --verbose: describe the first disagreements */
@@ -298,6 +318,7 @@ typedef struct {
     long scenes, skipped;
     long tie_blocked, tie_lit;
     long painted, filtered; /* scenes with transparent objects; decisions where coloured light gets through */
+    long by_scheme[NVARIANTS][SCHEME_COUNT]; /* decisions per variant and sub-scheme */
     long close, close_povray; /* transparent surfaces close along the shadow ray; and there POV-Ray's colour */
 } Totals;
 
@@ -550,6 +571,9 @@ static void one_scene(TestRng *rng, Totals *tot)
                         ref = judge(&w, at, &w.lights[li], eps, by_ray, &want, &close, &close_povray);
                     }
                     RGB colour = dec.colour[vi][k][seg][li];
+                    int sch = dec.scheme[vi][k][seg][li];
+                    if (sch >= 0 && sch < SCHEME_COUNT)
+                        tot->by_scheme[vi][sch]++;
                     int bad = ref == REF_TIE ? !same_colour(colour, by_ray, 0) : !same_colour(colour, want, 1e-12);
                     tot->not_ray[vi] += !same_colour(colour, by_ray, 0);
                     if (ref == REF_TIE)
@@ -624,6 +648,15 @@ int main(int argc, char **argv)
                    "%s gives the shadow ray's colour exactly, everywhere (%ld differ of %ld; the shadow ray of the "
                    "same polygon queries)",
                    variants[vi].label, tot.not_ray[vi], tot.decisions);
+        }
+        if (strcmp(variants[vi].method, "light-buffer") == 0) {
+            /* each of the light buffer's ways of deciding must be exercised */
+            tap_ok(tot.by_scheme[vi][SCHEME_BUFFER_LIT] > 0 && tot.by_scheme[vi][SCHEME_BUFFER_COVER] > 0 &&
+                       tot.by_scheme[vi][SCHEME_BUFFER_LIST] > 0,
+                   "%s decided by each of its sub-schemes: %ld empty, %ld cover, %ld list (and %ld by the shadow ray)",
+                   variants[vi].label, tot.by_scheme[vi][SCHEME_BUFFER_LIT], tot.by_scheme[vi][SCHEME_BUFFER_COVER],
+                   tot.by_scheme[vi][SCHEME_BUFFER_LIST],
+                   tot.by_scheme[vi][SCHEME_CONVENTIONAL] + tot.by_scheme[vi][SCHEME_CACHE_HIT]);
         }
         if (tot.other_path[vi])
             tap_diag("%s: %ld decisions at a primary hit other than the grid walk's (polygons meeting within "

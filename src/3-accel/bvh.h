@@ -73,6 +73,15 @@ typedef struct {
     int depth;            /* of the deepest node */
 } Bvh;
 
+/* The exact test of the polygon leaf item k holds (intersect.h): on its
+ * packed copy where there is one, else the polygon's own test; the same
+ * answer either way, bit for bit. */
+static inline double bvh_item_test(const World *w, const Bvh *b, uint32_t k, const RayFrame *frame, double tmax)
+{
+    return b->prims[k].packed ? intersect_packed(&b->packed[k], frame, tmax)
+                              : intersect_polygon_in(w, &w->polygons[b->items[k]], frame, tmax);
+}
+
 /* Builds over every polygon of w (an empty hierarchy for none), the big
  * subtrees on up to `threads` threads; the hierarchy is the same for any
  * number. Returns 0, or -1 when out of memory. */

@@ -208,8 +208,8 @@ static inline void try_nearer(Tracer *tr, const RayFrame *frame, uint32_t pi, do
 static inline double prim_test(const World *w, const Bvh *b, uint32_t k, uint32_t pi, const RayFrame *frame,
                                double tmax)
 {
-    return b->prims[k].packed ? intersect_packed(&b->packed[k], frame, tmax)
-                              : intersect_polygon_in(w, &w->polygons[pi], frame, tmax);
+    (void)pi;
+    return bvh_item_test(w, b, k, frame, tmax);
 }
 
 /* try_nearer for a leaf item, from its record. */

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "light_buffer.h"
 #include "shadow_embree.h"
 #include "shadow_reference.h"
 #include "shadow_volumes.h"
@@ -27,6 +28,7 @@ int shadow_context_init(ShadowContext *ctx, Tracer *tracer, const World *w, cons
     const ShadowMethod *method = p->decider;
     ctx->method = method;
     ctx->embree = p->embree;
+    ctx->light_buffers = p->light_buffers;
     ctx->cost = p->cost;
     ctx->nth = p->nth;
     ctx->verify = verify;
@@ -37,6 +39,11 @@ int shadow_context_init(ShadowContext *ctx, Tracer *tracer, const World *w, cons
     if (!ctx->light_cache)
         return -1;
     shadow_cache_forget(ctx, nl);
+    if (p->light_buffers) {
+        ctx->light_buffer_memo = calloc((size_t)nl, sizeof *ctx->light_buffer_memo);
+        if (!ctx->light_buffer_memo)
+            return -1;
+    }
     /* counted once, by world_build: a context per thread, and the plan's */
     ctx->filtered = malloc(sizeof *ctx->filtered * (size_t)(w->nsee_through + 1));
     if (!ctx->filtered)
@@ -79,6 +86,8 @@ void shadow_context_free(ShadowContext *ctx)
         tracer_free(&ctx->own_tracer);
     ctx->tracer = NULL;
     free(ctx->light_cache);
+    free(ctx->light_buffer_memo);
+    ctx->light_buffer_memo = NULL;
     free(ctx->area_colour);
     free(ctx->area_known);
     free(ctx->area_candidates);
@@ -142,7 +151,8 @@ static void shadow_none_test(ShadowContext *ctx, const ShadowQuery *q, RGB *ligh
 }
 
 const char *const shadow_scheme_names[SCHEME_COUNT] = { "sustain",  "self-shadow", "volume",    "conventional",
-                                                        "cache hit", "area lit",   "area umbra", "area beam" };
+                                                        "cache hit", "area lit",   "area umbra", "area beam",
+                                                        "buffer lit", "buffer cover", "buffer list" };
 
 /* The registry: every method, each a row; the first is the default. Only
  * here are methods named; the rest of the program finds them by name
@@ -201,7 +211,8 @@ static const ShadowMethod none_row = {
 /* The registry's rows, the first the default; a method is its file (its
  * functions) and one row here. */
 static const ShadowMethod *const methods[] = {
-    &hst_row, &conventional_row, &cache_row, &volume_row, &embree_row, &none_row, &shadow_every_lit_method,
+    &hst_row, &conventional_row, &cache_row, &volume_row, &embree_row, &shadow_light_buffer_method, &none_row,
+    &shadow_every_lit_method,
 };
 
 const ShadowMethod *shadow_method_fallback(void)
@@ -238,6 +249,9 @@ void shadow_prepared_free(ShadowPrepared *p)
     free(p->plan);
     free(p->cost);
     shadow_embree_free(p->embree);
+    if (p->light_buffers)
+        light_buffers_free(p->light_buffers);
+    free(p->light_buffers);
     memset(p, 0, sizeof *p);
 }
 
@@ -259,7 +273,7 @@ const char *shadow_method_unavailable(const ShadowMethod *m)
 
 const char *shadow_method_names(void)
 {
-    return "hst, conventional, cache, volume, embree, none";
+    return "hst, conventional, cache, volume, embree, light-buffer, none";
 }
 
 ShadowRecord shadow_record(const ShadowContext *ctx, const ShadowQuery *q, const RGB *answer)

@@ -60,6 +60,9 @@ typedef enum {
      * with the rest of the light by its beam, or decided by a shadow ray
      * against the beam's candidates */
     SCHEME_AREA_LIT, SCHEME_AREA_UMBRA, SCHEME_AREA_BEAM,
+    /* the light buffer (light_buffer.h): no candidate nearer the light than
+     * the point, a proved cover, or the candidates tested */
+    SCHEME_BUFFER_LIT, SCHEME_BUFFER_COVER, SCHEME_BUFFER_LIST,
     SCHEME_COUNT
 } ShadowScheme;
 
@@ -95,6 +98,13 @@ typedef struct {
     uint32_t polygon;
 } FilteredHit;
 
+/* A thread's last light buffer cell of a light (shadow_light_buffer.c),
+ * and where it lies: face and indices at its level. */
+typedef struct LbMemo {
+    const struct LbCell *cell;
+    int face, i, j;
+} LbMemo;
+
 /* A render thread's shadow testing: the tracer it asks (the shading's, or
  * its own when it is used alone), the method, and the methods' per-thread
  * state. */
@@ -127,6 +137,11 @@ typedef struct ShadowContext {
     struct PixelCoherence *coherence; /* hst's pixel coherence (its thread_init makes it), or NULL when off */
     void *method_state;        /* a method's own per-thread data (its thread_init makes it), or NULL */
     const struct EmbreeScene *embree; /* the embree method's scene (shared, read-only), or NULL */
+    struct LightBuffers *light_buffers; /* the lights' buffers (shared, built as points ask), or NULL */
+    struct LbMemo *light_buffer_memo;   /* ... and per light, the cell this thread used last */
+    /* Time of the current decision already counted whole (a light buffer's
+     * cell built), which the sampled timing leaves out (shadow_decide.h). */
+    double untimed_seconds;
     /* Area lights: the samples decided at the current point, a colour per
      * sample of the largest (area_light.c); NULL without area lights. */
     RGB *area_colour;
@@ -212,6 +227,7 @@ typedef struct ShadowPrepared {
     struct VolumePlan *plan;       /* which lights got volumes and why, or NULL */
     struct CostModel *cost;        /* calibrated with the volumes (zero without) */
     struct EmbreeScene *embree;    /* the embree method's scene, or NULL */
+    struct LightBuffers *light_buffers; /* the point lights' light buffers, or NULL */
     double nth;                    /* hst: N_th as decided; negative: per point */
     const char *nth_mode;          /* for the report */
     double plan_seconds;           /* planning, builds included (wall) */
@@ -259,6 +275,16 @@ typedef struct ShadowMethod {
 /* The test-only method (shadow_every_lit.c): every light reaches every
  * point, through every door a method has. */
 extern const ShadowMethod shadow_every_lit_method;
+/* The light buffer (shadow_light_buffer.c). */
+extern const ShadowMethod shadow_light_buffer_method;
+/* Its preparation (the point lights' buffers, empty) and its polygon part
+ * (the planes tested before): the light's cell decides, or the cache
+ * method's polygon part where the light has no buffer or the cell is not
+ * built; counts the decision and its scheme, and returns 1 when the light
+ * is fully blocked. */
+int shadow_light_buffer_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
+                                int errlen);
+int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 
 /* Prepares method m for the render (shadows_on: its prepare; else nothing
  * but the defaults). Returns 0, or -1 with a message in err (out of
@@ -300,9 +326,31 @@ int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 /* The polygon part against a list of candidates instead of the hierarchy:
  * the same answer as shadow_polygons_test when the list holds every
- * polygon (no_shadow ones and q's own left out) the ray can meet. */
+ * polygon the ray can meet (no_shadow ones left out; q's own is passed
+ * over here). */
 int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const uint32_t *candidates, int n,
                                RGB *light);
+/* The same, a candidate at a time, for methods that pass some over by
+ * their own proofs: begin; meet each candidate (1: an opaque polygon
+ * blocks the light fully, and the walk is over: the answer is no light);
+ * else end, which folds the see-through polygons met into *light (1 when
+ * that blocks it fully). */
+typedef struct {
+    ShadowContext *ctx;
+    const ShadowQuery *q;
+    RayFrame frame;
+    double tmin;
+    uint32_t own;
+} ShadowListWalk;
+void shadow_list_begin(ShadowListWalk *lw, ShadowContext *ctx, const ShadowQuery *q);
+int shadow_list_meet(ShadowListWalk *lw, uint32_t polygon);
+/* shadow_list_meet for the polygon of the hierarchy's leaf item `item` (on its packed copy) */
+int shadow_list_meet_item(ShadowListWalk *lw, const Bvh *b, uint32_t item);
+/* shadow_list_meet for a polygon (not q's own) the ray is proved to cross
+ * away from its border, in the test's range: only the distance to its
+ * plane is computed, as the test computes it (the same answer). */
+int shadow_list_meet_crossed(ShadowListWalk *lw, uint32_t polygon);
+int shadow_list_end(ShadowListWalk *lw, RGB *light);
 /* The end of the polygon part: folds the see-through polygons the ray met,
  * ctx->filtered[0..nfiltered) in any order (each polygon once), into *light
  * in the order the light passes them (by distance, then index), once per
@@ -311,6 +359,10 @@ int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const u
 int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 
 void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
+/* Its polygon part (the planes tested before): the last blocker, then the
+ * shadow ray; counts the decision and its scheme, and returns 1 when the
+ * light is fully blocked. */
+int shadow_cache_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 /* The last-blocker cache (shadow_cache.c), for the methods that fire shadow
  * rays: 1 when the opaque polygon that last blocked q's light blocks q's
  * shadow ray too (then the ray's answer is "no light"); after a shadow

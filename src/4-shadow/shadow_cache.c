@@ -82,17 +82,25 @@ void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
         ctx->stats.shadow_blocked++;
         return;
     }
+    shadow_cache_polygons_test(ctx, q, light);
+}
+
+int shadow_cache_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+{
     if (shadow_cached_blocker_hits(ctx, q)) {
         light->r = light->g = light->b = 0.0;
         ctx->last_scheme = SCHEME_CACHE_HIT;
         ctx->stats.shadow_schemes[SCHEME_CACHE_HIT]++;
         ctx->stats.shadow_blocked++;
-        return;
+        return 1;
     }
     ctx->last_blocker = -1;
+    ctx->last_scheme = SCHEME_CONVENTIONAL;
     ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
     if (shadow_polygons_test(ctx, q, light)) {
         ctx->stats.shadow_blocked++;
         shadow_cache_remember(ctx, q, light);
+        return 1;
     }
+    return 0;
 }

@@ -11,6 +11,7 @@
 #include "pigment.h"
 #include "shadow_volumes.h"
 
+#define FOLD_INSERTION_MAX 16 /* see-through hits sorted by insertion up to this many */
 #define POV_SMALL_TOLERANCE 1.0e-3 /* POV-Ray's SMALL_TOLERANCE (and SHADOW_TOLERANCE) */
 
 /* Folds one blocker, hit at `at`, into the light that gets through; returns
@@ -105,33 +106,95 @@ int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     return shadow_fold_filtered(ctx, q, light);
 }
 
+void shadow_list_begin(ShadowListWalk *lw, ShadowContext *ctx, const ShadowQuery *q)
+{
+    ctx->stats.shadow_rays++;
+    ctx->nfiltered = 0;
+    lw->ctx = ctx;
+    lw->q = q;
+    lw->frame = ray_frame(q->point, q->to_light);
+    lw->tmin = trace_min_distance(q->point);
+    lw->own = q->surface->kind == HIT_POLYGON ? (uint32_t)q->surface->index : UINT32_MAX;
+}
+
+/* The polygon met at t (no hit: t <= tmin): 1 when it blocks fully. */
+static int list_met(ShadowListWalk *lw, uint32_t polygon, double t)
+{
+    ShadowWalk sw = { lw->ctx, lw->q, -1 };
+    if (t > lw->tmin && meet_polygon(&sw, polygon, t)) {
+        lw->ctx->last_blocker = sw.blocker;
+        return 1;
+    }
+    return 0;
+}
+
+int shadow_list_meet(ShadowListWalk *lw, uint32_t polygon)
+{
+    if (polygon == lw->own)
+        return 0;
+    ShadowContext *ctx = lw->ctx;
+    const World *w = ctx->tracer->world;
+    /* the hierarchy's leaf test, polygon by polygon (bvh_traverse.h) */
+    ctx->stats.shadow_polygon_tests++;
+    return list_met(lw, polygon, intersect_polygon_in(w, &w->polygons[polygon], &lw->frame, lw->q->distance));
+}
+
+int shadow_list_meet_crossed(ShadowListWalk *lw, uint32_t polygon)
+{
+    ShadowContext *ctx = lw->ctx;
+    ctx->stats.shadow_polygon_tests++;
+    /* the test's own distance to the plane, and its range (intersect.c) */
+    double t = intersect_plane_distance(&ctx->tracer->world->polygons[polygon], &lw->frame);
+    return list_met(lw, polygon, t > 0.0 && t < lw->q->distance ? t : -1.0);
+}
+
+int shadow_list_meet_item(ShadowListWalk *lw, const Bvh *b, uint32_t item)
+{
+    uint32_t polygon = b->items[item];
+    if (polygon == lw->own)
+        return 0;
+    ShadowContext *ctx = lw->ctx;
+    ctx->stats.shadow_polygon_tests++;
+    return list_met(lw, polygon, bvh_item_test(ctx->tracer->world, b, item, &lw->frame, lw->q->distance));
+}
+
+int shadow_list_end(ShadowListWalk *lw, RGB *light)
+{
+    return shadow_fold_filtered(lw->ctx, lw->q, light);
+}
+
 int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const uint32_t *candidates, int n,
                                RGB *light)
 {
-    const World *w = ctx->tracer->world;
-    ctx->stats.shadow_rays++;
-    double tmin = trace_min_distance(q->point);
-    ShadowWalk sw = { ctx, q, -1 };
-    ctx->nfiltered = 0;
-    RayFrame frame = ray_frame(q->point, q->to_light);
-    for (int i = 0; i < n; i++) {
-        /* the hierarchy's leaf test, polygon by polygon (bvh_traverse.h) */
-        ctx->stats.shadow_polygon_tests++;
-        double t = intersect_polygon_in(w, &w->polygons[candidates[i]], &frame, q->distance);
-        if (t > tmin && meet_polygon(&sw, candidates[i], t)) {
+    ShadowListWalk lw;
+    shadow_list_begin(&lw, ctx, q);
+    for (int i = 0; i < n; i++)
+        if (shadow_list_meet(&lw, candidates[i])) {
             light->r = light->g = light->b = 0.0;
-            ctx->last_blocker = sw.blocker;
             return 1;
         }
-    }
-    return shadow_fold_filtered(ctx, q, light);
+    return shadow_list_end(&lw, light);
 }
 
 int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->tracer->world;
-    if (ctx->nfiltered > 1)
+    if (ctx->nfiltered > FOLD_INSERTION_MAX) {
         qsort(ctx->filtered, (size_t)ctx->nfiltered, sizeof *ctx->filtered, by_distance);
+    } else {
+        /* a shadow ray meets a few see-through polygons: insertion sort by
+         * the same order (distance, then index: a total order, so the
+         * result is qsort's) without a call per comparison */
+        for (int i = 1; i < ctx->nfiltered; i++) {
+            FilteredHit h = ctx->filtered[i];
+            int j = i;
+            while (j > 0 && by_distance(&h, &ctx->filtered[j - 1]) < 0) {
+                ctx->filtered[j] = ctx->filtered[j - 1];
+                j--;
+            }
+            ctx->filtered[j] = h;
+        }
+    }
     double last = 0.0;
     for (int i = 0; i < ctx->nfiltered; i++) {
         /* POV-Ray's shadow ray starts again at each see-through surface it

@@ -40,7 +40,8 @@ void shadow_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *through)
 {
     double t0 = shadow_timer_start(ctx);
     ctx->method->test(ctx, q, through);
-    shadow_timer_stop(ctx, t0, 0.0);
+    shadow_timer_stop(ctx, t0, ctx->untimed_seconds);
+    ctx->untimed_seconds = 0.0;
     ctx->stats.shadow_queries++;
     if (ctx->verify)
         shadow_verify(ctx, q, *through);

@@ -9,7 +9,8 @@
 
 const char aov_code_legend[] = "0 none (no hit), 1 sustain, 2 self-shadow, 3 volume, 4 conventional, 5 cache hit, "
                                "6 faces away (not tested), 7 untested (shadows off, shadowless or dark light), "
-                               "8 area lit, 9 area umbra, 10 area beam (an area light's samples, by hst's beam)";
+                               "8 area lit, 9 area umbra, 10 area beam (an area light's samples, by hst's beam), "
+                               "11 buffer lit, 12 buffer cover, 13 buffer list (a light buffer's cell)";
 
 AovCode aov_code_of_scheme(int scheme)
 {
@@ -22,6 +23,9 @@ AovCode aov_code_of_scheme(int scheme)
     case SCHEME_AREA_LIT: return AOV_CODE_AREA_LIT;
     case SCHEME_AREA_UMBRA: return AOV_CODE_AREA_UMBRA;
     case SCHEME_AREA_BEAM: return AOV_CODE_AREA_BEAM;
+    case SCHEME_BUFFER_LIT: return AOV_CODE_BUFFER_LIT;
+    case SCHEME_BUFFER_COVER: return AOV_CODE_BUFFER_COVER;
+    case SCHEME_BUFFER_LIST: return AOV_CODE_BUFFER_LIST;
     default: return AOV_CODE_UNTESTED;
     }
 }

@@ -24,6 +24,9 @@ typedef enum {
     AOV_CODE_AREA_LIT = 8,     /* hst: every sample of an area light proved lit by its beam */
     AOV_CODE_AREA_UMBRA = 9,   /* hst: ... proved blocked (the point in the light's umbra) */
     AOV_CODE_AREA_BEAM = 10,   /* hst: ... decided sample by sample against the beam's candidates */
+    AOV_CODE_BUFFER_LIT = 11,  /* light buffer (hst, light-buffer): no candidate nearer the light */
+    AOV_CODE_BUFFER_COVER = 12, /* ... a polygon covering the cell, nearer the light */
+    AOV_CODE_BUFFER_LIST = 13, /* ... the cell's nearer candidates tested */
     AOV_NCODES
 } AovCode;
 

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "cost_model.h"
+#include "light_buffer.h"
 #include "shadow.h"
 #include "shadow_embree.h"
 #include "shadow_volumes.h"
@@ -30,8 +31,8 @@ void stats_add(RenderStats *t, const RenderStats *p)
  * (ray_counters.def, shade_counters.def, shadow_counters.def): the same
  * table makes the --stats lines and the JSON's objects. */
 typedef enum {
-    LINE_RAYS, LINE_TESTS, LINE_SHADOWS, LINE_COUNTING, LINE_FALLBACKS, LINE_COHERENCE, LINE_AREA, LINE_VERIFY,
-    LINE_REFERENCE
+    LINE_RAYS, LINE_TESTS, LINE_SHADOWS, LINE_COUNTING, LINE_FALLBACKS, LINE_COHERENCE, LINE_BUFFER, LINE_AREA,
+    LINE_VERIFY, LINE_REFERENCE
 } StatsLine;
 
 typedef struct {
@@ -252,6 +253,16 @@ void stats_print(FILE *f, const StatsReport *r)
         if (line_nonzero(s, LINE_COHERENCE))
             print_line(f, "coherence", s, LINE_COHERENCE);
     }
+    if (r->light_buffers) {
+        const LightBuffers *lb = r->light_buffers;
+        unsigned long long cells = atomic_load(&lb->cells), cand = atomic_load(&lb->candidates);
+        fprintf(f, "  light buffer %llu cells built (%.1f candidates a cell), %.1f MiB of %.0f MiB; %llu not built"
+                   " for the budget; built in %.3f s (CPU, summed over threads)\n",
+                cells, cells ? (double)cand / (double)cells : 0.0, (double)atomic_load(&lb->bytes) / 1048576.0,
+                (double)lb->budget / 1048576.0, (unsigned long long)atomic_load(&lb->full),
+                (double)s->shadow.light_buffer_build_ns * 1e-9);
+        print_line(f, "buffer", s, LINE_BUFFER);
+    }
     if (r->embree) {
         const EmbreeSceneInfo *e = shadow_embree_info(r->embree);
         fprintf(f, "  embree      Embree %s, robust, %s quality: %d triangles, %d convex polygons as %d triangles,"
@@ -392,6 +403,14 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
                 fprintf(f, "null}");
         }
         fprintf(f, "]}");
+    }
+    if (r->light_buffers) {
+        const LightBuffers *lb = r->light_buffers;
+        fprintf(f, ",\n  \"light_buffer\": {\"cells\": %llu, \"candidates\": %llu, \"bytes\": %llu, "
+                   "\"budget_bytes\": %llu, \"not_built_for_budget\": %llu, \"build_seconds\": %.6f}",
+                (unsigned long long)atomic_load(&lb->cells), (unsigned long long)atomic_load(&lb->candidates),
+                (unsigned long long)atomic_load(&lb->bytes), (unsigned long long)lb->budget,
+                (unsigned long long)atomic_load(&lb->full), (double)s->shadow.light_buffer_build_ns * 1e-9);
     }
     if (r->embree) {
         const EmbreeSceneInfo *e = shadow_embree_info(r->embree);

@@ -42,6 +42,7 @@ typedef struct {
     const struct VolumePlan *plan;    /* which lights got volumes and why; NULL unless the method uses them */
     const struct ShadowVolumes *volumes; /* NULL unless the method uses them */
     const struct EmbreeScene *embree;    /* NULL unless the method is embree */
+    const struct LightBuffers *light_buffers; /* NULL unless the method keeps light buffers */
     const struct CostModel *cost;     /* the calibration, when made */
     double nth;                       /* N_th used (negative: per point) */
     const char *nth_mode;

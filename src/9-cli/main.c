@@ -293,6 +293,7 @@ static int prepare_shadows(Frame *f, const Options *o, int distributed)
     r->volumes = f->shadows.volumes;
     r->cost = f->shadows.volumes ? f->shadows.cost : NULL;
     r->embree = f->shadows.embree;
+    r->light_buffers = f->shadows.light_buffers;
     r->nth = f->shadows.nth;
     r->nth_mode = f->shadows.nth_mode;
     r->preprocess_seconds = clock_wall() - f->preprocess_start;

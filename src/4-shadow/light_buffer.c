@@ -1,0 +1,763 @@
+/* The light buffer (light_buffer.h): cells built lazily by walking the
+ * hierarchy with their pyramids, split where their points work hard.
+ *
+ * The bound behind "covers the cell". A cover is an opaque convex polygon
+ * whose plane the cell's four (widened) corner rays from the light cross
+ * at least cover_margin m away from the light's side of the plane, at an
+ * angle of at least 1e-2 (|n.D| >= 1e-2 |D|), and whose every edge lies at
+ * least m (in the plane) outside the convex quadrilateral those crossings
+ * make. A point P of the cell farther from the light than the farthest
+ * crossing plus m sends a shadow ray that, in exact arithmetic, crosses
+ * the polygon at least m from every edge, at least m from P and from the
+ * light. The watertight test (intersect.c) works in the ray's frame on
+ * coordinates relative to P, below 2S in size (S: the scene's size, light
+ * included); its products carry errors of a few 2^-53 S^2, and its plane
+ * distance one of a few 2^-53 S. The edge function of an edge of length
+ * e >= 2 sqrt(3) m (the polygon holds a disc of radius m) at a crossing
+ * m away is at least e m 1e-2 / 2 = 1.7e-12 S^2 with m = 1e-5 S, some 10^4
+ * times the error; the plane distance is at least m 1e-2 = 1e-7 S, far
+ * from the test's "starts in the plane" band (1e-12 S) and from its tmin
+ * (1e-9 S). So the test hits, and the ray is blocked: the shadow ray's
+ * decision.
+ *
+ * The bound behind lb_candidate_passed. The point P lies on the light's
+ * side of polygon p's plane by s_P > 6e-8 (|P|_1 + |d|) + 1e-12 dist (the
+ * float plane's error is below 6e-8 (|P|_1 + |d|)), and the light by
+ * s_L >= 1e-3 S. The shadow ray's test computes t = -s_P / (n.dir) (up to
+ * sign conventions) with n.dir = (s_L - s_P) / dist exactly, rounded by a
+ * few 2^-53. Its sign is certain unless |n.dir| is within that rounding,
+ * and then |t| > s_P / 4e-16 > dist: no hit either way. Where P is nearer
+ * the plane than the light t < 0; where farther, t exceeds dist by
+ * s_L dist / (s_P - s_L), relatively at least 1e-3 S / 4S, while the
+ * rounding of t is relatively 2^-51 dist / (s_P - s_L) < 1e-4 once
+ * s_P - s_L > 1e-11 S, and t is beyond 10^3 dist below that. So the test
+ * finds no hit in (tmin, dist): the polygon is passed over exactly.
+ *
+ * tests/test_agreement.c holds the light buffer to the shadow ray and a
+ * long-double reference on random soups (shared edges, coplanar and
+ * transparent polygons, lights in planes), its cells split at once too;
+ * tests/light-buffer.sh runs --verify-shadows on every scene. */
+#include "light_buffer.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "clock.h"
+#include "intersect.h"
+#include "shadow_volumes.h"
+
+/* The cells' widening in the face's coordinates (which run from -1 to 1):
+ * far above the rounding of a direction's coordinates (1e-16), far below a
+ * finest cell (2 / LB_FINE). */
+#define LB_WIDEN 1e-7
+/* LB_COVER_ANGLE (light_buffer.h): the least |n.D| / |D| of a cover's corner rays */
+#define LB_COVER_TRIES 16   /* candidates tried as a cell's cover, nearest first */
+#define LB_COVER_POINTS 16  /* the most points of a polygon tried as a cover */
+/* Footprints are also padded for the rounding of a point's direction to
+ * float, where lb_block_mask compares them: 2^-24 of at most 2 (a face's
+ * coordinates run from -1 to 1, and a point's lies within rounding of
+ * that). */
+#define LB_FLOAT_PAD 1e-6
+
+static inline double comp(Vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
+
+static Vec3 from_face(int axis, double a, double b, double c)
+{
+    double v[3];
+    v[axis] = a;
+    v[(axis + 1) % 3] = b;
+    v[(axis + 2) % 3] = c;
+    return v3(v[0], v[1], v[2]);
+}
+
+/* A cell: its face, level and indices at that level. */
+typedef struct {
+    int face, level, i, j;
+} CellAt;
+
+static int cells_per_side(int level) { return LB_TOP << (2 * level); }
+
+/* A cell's range in the face's coordinates, not widened. */
+static void cell_range(const CellAt *at, double *u0, double *u1, double *v0, double *v1)
+{
+    double w = 2.0 / cells_per_side(at->level);
+    *u0 = -1.0 + w * at->i;
+    *u1 = -1.0 + w * (at->i + 1);
+    *v0 = -1.0 + w * at->j;
+    *v1 = -1.0 + w * (at->j + 1);
+}
+
+/* A cell's pyramid: four side planes through the light (outward unit
+ * normals), and its widened corner directions. */
+typedef struct {
+    Vec3 normal[4];
+    Vec3 corner[4];
+    double width;   /* in the face's coordinates */
+} Pyramid;
+
+static Pyramid pyramid_of(const CellAt *at)
+{
+    int axis = at->face / 2;
+    double s = (at->face & 1) ? -1.0 : 1.0;
+    double u0, u1, v0, v1;
+    cell_range(at, &u0, &u1, &v0, &v1);
+    u0 -= LB_WIDEN, v0 -= LB_WIDEN, u1 += LB_WIDEN, v1 += LB_WIDEN;
+    Pyramid p;
+    /* u >= u0: u0 s X_a - X_b <= 0, and so on (X from the light) */
+    p.normal[0] = v3_normalize(from_face(axis, u0 * s, -1.0, 0.0));
+    p.normal[1] = v3_normalize(from_face(axis, -u1 * s, 1.0, 0.0));
+    p.normal[2] = v3_normalize(from_face(axis, v0 * s, 0.0, -1.0));
+    p.normal[3] = v3_normalize(from_face(axis, -v1 * s, 0.0, 1.0));
+    p.corner[0] = from_face(axis, s, u0, v0);
+    p.corner[1] = from_face(axis, s, u1, v0);
+    p.corner[2] = from_face(axis, s, u1, v1);
+    p.corner[3] = from_face(axis, s, u0, v1);
+    p.width = u1 - u0;
+    return p;
+}
+
+/* 1 when the box [lo, hi] lies wholly outside one of the pyramid's planes
+ * by more than the margin. */
+static int box_outside(const Pyramid *p, Vec3 at, Vec3 lo, Vec3 hi, double margin)
+{
+    for (int k = 0; k < 4; k++) {
+        Vec3 n = p->normal[k];
+        double m = (n.x > 0 ? lo.x - at.x : hi.x - at.x) * n.x + (n.y > 0 ? lo.y - at.y : hi.y - at.y) * n.y +
+                   (n.z > 0 ? lo.z - at.z : hi.z - at.z) * n.z;
+        if (m > margin)
+            return 1;
+    }
+    return 0;
+}
+
+/* The points of polygon p: a triangle's three, or all its outlines'. */
+static const Vec3 *polygon_points(const World *w, const Polygon *p, int *n)
+{
+    if (p->first_outline < 0) {
+        *n = 3;
+        return &w->points[p->first_point];
+    }
+    const int *start = &w->outline_start[p->first_outline];
+    *n = start[p->noutlines] - start[0];
+    return &w->points[start[0]];
+}
+
+/* 1 when every point of polygon p lies outside one of the pyramid's planes
+ * by more than the margin. */
+static int polygon_outside(const World *w, const Polygon *p, const Pyramid *pyr, Vec3 at, double margin)
+{
+    int n;
+    const Vec3 *pts = polygon_points(w, p, &n);
+    for (int k = 0; k < 4; k++) {
+        int all = 1;
+        for (int i = 0; i < n && all; i++)
+            all = v3_dot(pyr->normal[k], v3_sub(pts[i], at)) > margin;
+        if (all)
+            return 1;
+    }
+    return 0;
+}
+
+/* A lower bound of the distance from the light to polygon p, in float
+ * rounded down: the larger of its plane's and its box's distance, shrunk
+ * by far more than their rounding. */
+static float near_bound(const Polygon *p, Vec3 at)
+{
+    double plane = fabs(v3_dot(p->normal, at) - p->d);
+    double dx = fmax(fmax(p->bbox_min.x - at.x, at.x - p->bbox_max.x), 0.0);
+    double dy = fmax(fmax(p->bbox_min.y - at.y, at.y - p->bbox_max.y), 0.0);
+    double dz = fmax(fmax(p->bbox_min.z - at.z, at.z - p->bbox_max.z), 0.0);
+    double d = fmax(plane, sqrt(dx * dx + dy * dy + dz * dz)) * (1.0 - 1e-9);
+    float f = (float)d;
+    if ((double)f > d)
+        f = nextafterf(f, 0.0f);
+    return f;
+}
+
+static float round_up(double x)
+{
+    float f = (float)x;
+    return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
+static float round_down(double x)
+{
+    float f = (float)x;
+    return (double)f > x ? nextafterf(f, -INFINITY) : f;
+}
+
+/* Where polygon p lies on the face (light_buffer.h): the box of its
+ * points' directions in the face's coordinates, padded for the pyramids'
+ * margin at its distance (near) and for rounding. The whole face and
+ * beyond when it cannot be told: a point behind the light or too near it,
+ * seen from this face. */
+static LbFootprint footprint(const LightBuffers *lbs, const Polygon *p, Vec3 at, int face, double near)
+{
+    const LbFootprint anywhere = { -INFINITY, INFINITY, -INFINITY, INFINITY };
+    int axis = face / 2;
+    double s = (face & 1) ? -1.0 : 1.0;
+    if (!(near > 1e3 * lbs->margin))
+        return anywhere;
+    int n;
+    const Vec3 *pts = polygon_points(lbs->world, p, &n);
+    double box[4] = { INFINITY, -INFINITY, INFINITY, -INFINITY };
+    for (int i = 0; i < n; i++) {
+        Vec3 d = v3_sub(pts[i], at);
+        double a = s * comp(d, axis);
+        if (!(a > 1e-6 * v3_length(d)))
+            return anywhere;
+        double u = comp(d, (axis + 1) % 3) / a, v = comp(d, (axis + 2) % 3) / a;
+        box[0] = fmin(box[0], u);
+        box[1] = fmax(box[1], u);
+        box[2] = fmin(box[2], v);
+        box[3] = fmax(box[3], v);
+    }
+    /* The polygon lies in the convex hull of its points, whose directions
+     * the box holds (a central projection keeps convex hulls, for points in
+     * front). A shift of the margin at distance near or more turns a
+     * direction by at most margin / near, at most twice that in the face's
+     * coordinates where they are within 1 (a cell's range); four times for
+     * safety, and the cells' widening. */
+    double pad = 4.0 * lbs->margin / near + LB_WIDEN + LB_FLOAT_PAD;
+    LbFootprint f = { round_down(box[0] - pad), round_up(box[1] + pad), round_down(box[2] - pad),
+                      round_up(box[3] + pad) };
+    return f;
+}
+
+/* Polygon p's plane for lb_candidate_passed: turned toward the light and
+ * rounded to float; zero where the light lies within plane_margin of it. */
+static LbPlane candidate_plane(const LightBuffers *lbs, const Polygon *p, Vec3 at)
+{
+    double s = v3_dot(p->normal, at) - p->d;
+    LbPlane pl = { 0.0f, 0.0f, 0.0f, 0.0f };
+    if (fabs(s) < lbs->plane_margin)
+        return pl;
+    double sign = s > 0.0 ? 1.0 : -1.0;
+    pl.nx = (float)(sign * p->normal.x);
+    pl.ny = (float)(sign * p->normal.y);
+    pl.nz = (float)(sign * p->normal.z);
+    pl.d = (float)(sign * p->d);
+    return pl;
+}
+
+/* Polygon p's shape on the face (light_buffer.h). The margins: outside,
+ * the footprint's (a direction that far out of an edge's line is not the
+ * polygon's, margins included), and the float's rounding of the lines;
+ * inside, the cover's margin carried to the face: a direction d2 inside an
+ * edge's line (in the face's coordinates, which run within 1 of 0 on the
+ * face) is at least 0.29 d2 radians from the plane through the light and
+ * the edge (less only where that plane's trace lies far off the face, and
+ * then the angle is over 0.08), so a crossing at distance r >= near from
+ * the light lies at least 0.29 r d2 from the edge: d2 = 4 cover_margin /
+ * near makes that more than the cover's margin, as the cover's proof asks
+ * (the bound at the top of this file). */
+static LbShape polygon_shape(const LightBuffers *lbs, const Polygon *p, Vec3 at, int face, double near, int opaque)
+{
+    LbShape sh;
+    memset(&sh, 0, sizeof sh);
+    sh.opaque = (uint8_t)opaque;
+    if (!(near > 1e3 * lbs->margin) || (p->noutlines > 1 && p->first_outline >= 0))
+        return sh;
+    int axis = face / 2;
+    double s = (face & 1) ? -1.0 : 1.0;
+    int n;
+    const Vec3 *pts = polygon_points(lbs->world, p, &n);
+    double u[4], v[4];
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        Vec3 d = v3_sub(pts[i], at);
+        double a = s * comp(d, axis);
+        if (!(a > 1e-6 * v3_length(d)))
+            return sh;
+        double pu = comp(d, (axis + 1) % 3) / a, pv = comp(d, (axis + 2) % 3) / a;
+        if (!(fabs(pu) <= 4.0 && fabs(pv) <= 4.0))
+            return sh;
+        if (m > 0 && pu == u[m - 1] && pv == v[m - 1])
+            continue; /* a repeated point */
+        if (m == 4)
+            return sh;
+        u[m] = pu, v[m] = pv;
+        m++;
+    }
+    if (m >= 2 && u[m - 1] == u[0] && v[m - 1] == v[0])
+        m--; /* the closing repeat */
+    if (m < 3)
+        return sh;
+    double area = 0.0;
+    for (int i = 0; i < m; i++)
+        area += u[i] * v[(i + 1) % m] - u[(i + 1) % m] * v[i];
+    if (!(fabs(area) > 1e-12))
+        return sh;
+    double orient = area > 0.0 ? 1.0 : -1.0;
+    for (int i = 0; i < m; i++) {
+        double eu = u[(i + 1) % m] - u[i], ev = v[(i + 1) % m] - v[i];
+        double len = sqrt(eu * eu + ev * ev);
+        if (!(len > 0.0))
+            return sh;
+        double a = -orient * ev / len, b = orient * eu / len;
+        double c0 = -(a * u[i] + b * v[i]);
+        /* convex: every point on the inner side */
+        for (int j = 0; j < m; j++)
+            if (a * u[j] + b * v[j] + c0 < -1e-12)
+                return sh;
+        sh.a[i] = (float)a;
+        sh.b[i] = (float)b;
+        sh.c[i] = (float)c0;
+    }
+    /* the lines' rounding to float: below 6e-8 (|a u| + |b v| + |c|) <= 6e-8 * 14 */
+    const double rounding = 1e-6;
+    sh.out = round_up(4.0 * lbs->margin / near + LB_WIDEN + rounding);
+    sh.in = round_up(4.0 * lbs->cover_margin / near + LB_WIDEN + rounding);
+    sh.n = (uint8_t)m;
+    return sh;
+}
+
+/* A candidate as a cell keeps it. */
+typedef struct {
+    LbPlane plane;
+    LbFootprint footprint;
+    LbShape shape;
+    float near;
+    uint32_t item;
+} Candidate;
+
+typedef struct {
+    Candidate *c;
+    size_t n, cap;
+} CandidateList;
+
+static int candidate_push(CandidateList *l, const Candidate *c)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 32;
+        Candidate *grown = realloc(l->c, cap * sizeof *grown);
+        if (!grown)
+            return -1;
+        l->c = grown;
+        l->cap = cap;
+    }
+    l->c[l->n++] = *c;
+    return 0;
+}
+
+static int by_near(const void *a, const void *b)
+{
+    const Candidate *x = a, *y = b;
+    if (x->near != y->near)
+        return x->near < y->near ? -1 : 1;
+    return x->item < y->item ? -1 : x->item > y->item;
+}
+
+/* Every polygon that may cast the light's shadows into the pyramid: the
+ * hierarchy walked with it, the list in order of the near bound. */
+static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb, const Pyramid *pyr, int face,
+                                 CandidateList *out)
+{
+    const Bvh *b = lbs->bvh;
+    const World *w = lbs->world;
+    const Light *light = &w->lights[lb->light];
+    if (b->nnodes == 0)
+        return 0;
+    uint32_t stack[BVH_STACK];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        uint32_t c = stack[--sp];
+        if (!bvh_is_leaf(c)) {
+            const BvhNode *node = &b->nodes[c];
+            for (int k = BVH_WIDTH - 1; k >= 0; k--) {
+                if (node->child[k] == BVH_EMPTY)
+                    continue;
+                Vec3 lo = v3(node->lo[0][k], node->lo[1][k], node->lo[2][k]);
+                Vec3 hi = v3(node->hi[0][k], node->hi[1][k], node->hi[2][k]);
+                if (!box_outside(pyr, lb->at, lo, hi, lbs->margin))
+                    stack[sp++] = node->child[k];
+            }
+            continue;
+        }
+        uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
+        for (uint32_t k = first; k < end; k++) {
+            if (b->prims[k].hide & HIDE_NO_SHADOW)
+                continue;
+            const Polygon *p = &w->polygons[b->items[k]];
+            /* edge-on to the light: the shadow ray passes it (shadow_conventional.c) */
+            if (shadow_light_side(p, light, lbs->tolerance) == 0)
+                continue;
+            if (polygon_outside(w, p, pyr, lb->at, lbs->margin))
+                continue;
+            float near = near_bound(p, lb->at);
+            Candidate cand = { candidate_plane(lbs, p, lb->at), footprint(lbs, p, lb->at, face, near),
+                               polygon_shape(lbs, p, lb->at, face, near, w->materials[p->material].opaque), near, k };
+            if (candidate_push(out, &cand))
+                return -1;
+        }
+    }
+    qsort(out->c, out->n, sizeof *out->c, by_near);
+    return 0;
+}
+
+/* If opaque polygon p covers the whole pyramid (the bound at the top of
+ * this file), the distance from the light beyond which it blocks every
+ * point of the cell; else infinity. */
+static double cover_beyond(const LightBuffers *lbs, const Polygon *p, const Pyramid *pyr, Vec3 at)
+{
+    const World *w = lbs->world;
+    const double m = lbs->cover_margin;
+    if (p->noutlines > 1 && p->first_outline >= 0)
+        return INFINITY; /* holes */
+    int n;
+    const Vec3 *pts = polygon_points(w, p, &n);
+    if (n > LB_COVER_POINTS)
+        return INFINITY;
+    double light_side = v3_dot(p->normal, at) - p->d;
+    if (fabs(light_side) < m)
+        return INFINITY;
+    /* the corner rays' crossings of the plane */
+    Vec3 x[4];
+    double far = 0.0;
+    for (int k = 0; k < 4; k++) {
+        Vec3 d = pyr->corner[k];
+        double len = v3_length(d), dn = v3_dot(p->normal, d);
+        double t = -light_side / dn;
+        if (!(fabs(dn) >= LB_COVER_ANGLE * len) || !(t > 0.0))
+            return INFINITY;
+        x[k] = v3_add(at, v3_scale(d, t));
+        far = fmax(far, t * len);
+    }
+    /* convex: every point on the inner side of every edge's line (the
+     * orientation from the outline's area), and every crossing at least m
+     * inside every edge; repeated points (a closing repeat) make
+     * zero-length edges, which are skipped */
+    Vec3 area = v3(0, 0, 0);
+    for (int i = 0; i < n; i++)
+        area = v3_add(area, v3_cross(pts[i], pts[(i + 1) % n]));
+    double orient = v3_dot(area, p->normal);
+    if (orient == 0.0)
+        return INFINITY;
+    for (int i = 0; i < n; i++) {
+        Vec3 e = v3_sub(pts[(i + 1) % n], pts[i]);
+        double len = v3_length(e);
+        if (len == 0.0)
+            continue;
+        Vec3 inward = v3_scale(v3_cross(p->normal, e), (orient > 0.0 ? 1.0 : -1.0) / len);
+        for (int j = 0; j < n; j++)
+            if (v3_dot(inward, v3_sub(pts[j], pts[i])) < 0.0)
+                return INFINITY;
+        for (int k = 0; k < 4; k++)
+            if (!(v3_dot(inward, v3_sub(x[k], pts[i])) >= m))
+                return INFINITY;
+    }
+    return far + m;
+}
+
+/* A cell and its lists in one allocation: the header (a multiple of 16
+ * bytes), the five float arrays of whole blocks (aligned for SSE), the
+ * planes, the items. */
+static size_t blocks_of(size_t n) { return (n + LB_BLOCK - 1) / LB_BLOCK * LB_BLOCK; }
+static size_t header_bytes(void) { return (sizeof(LbCell) + 15) / 16 * 16; }
+static size_t cell_bytes(size_t n)
+{
+    return header_bytes() + blocks_of(n) * 5 * sizeof(float) + n * (sizeof(LbPlane) + sizeof(LbShape) + sizeof(uint32_t));
+}
+
+#define CHILDREN_BYTES (LB_SUB * LB_SUB * sizeof(_Atomic(LbCell *)))
+
+/* Takes `bytes` of the budget: 0, or -1 when it would go past it. */
+static int budget_take(LightBuffers *lbs, size_t bytes)
+{
+    size_t before = atomic_fetch_add(&lbs->bytes, bytes);
+    if (before + bytes <= lbs->budget)
+        return 0;
+    atomic_fetch_sub(&lbs->bytes, bytes);
+    atomic_fetch_add(&lbs->full, 1);
+    return -1;
+}
+
+/* A cell of the candidates gathered (in order): its cover found (or its
+ * parent's kept), its list cut where the cover hides the rest; NULL when
+ * out of memory or budget. */
+static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt *at, const CandidateList *l,
+                         const LbCell *parent)
+{
+    const World *w = lbs->world;
+    const Bvh *b = lbs->bvh;
+    Pyramid pyr = pyramid_of(at);
+    /* a parent's cover covers its children: its proof holds for every
+     * point of the parent's widened pyramid, which holds theirs */
+    int32_t cover = parent ? parent->cover : -1;
+    double beyond = parent ? parent->cover_beyond : INFINITY;
+    double u0, u1, v0, v1;
+    cell_range(at, &u0, &u1, &v0, &v1);
+    for (size_t i = 0, tried = 0; i < l->n && tried < LB_COVER_TRIES && (double)l->c[i].near < beyond && cover < 0; i++) {
+        const Polygon *p = &w->polygons[b->items[l->c[i].item]];
+        /* a polygon whose footprint does not hold the cell cannot cover it */
+        const LbFootprint *f = &l->c[i].footprint;
+        if (!w->materials[p->material].opaque || f->u0 > u0 || f->u1 < u1 || f->v0 > v0 || f->v1 < v1)
+            continue;
+        tried++;
+        double d = cover_beyond(lbs, p, &pyr, lb->at);
+        if (d < beyond) {
+            beyond = d;
+            cover = (int32_t)b->items[l->c[i].item];
+        }
+    }
+    /* Points beyond the cover are blocked by it; nearer ones need no
+     * candidate beyond them: what lies beyond the cover is never tested. */
+    size_t n = l->n;
+    if (cover >= 0) {
+        double keep = beyond * (1.0 + 1e-6) + 2.0 * lbs->margin;
+        n = 0;
+        while (n < l->n && (double)l->c[n].near < keep)
+            n++;
+    }
+    size_t bytes = cell_bytes(n);
+    if (budget_take(lbs, bytes))
+        return NULL;
+    LbCell *c = aligned_alloc(16, (bytes + 15) / 16 * 16);
+    if (!c) {
+        atomic_fetch_sub(&lbs->bytes, bytes);
+        return NULL;
+    }
+    size_t nb = blocks_of(n);
+    float *near = (float *)((char *)c + header_bytes());
+    float *fu0 = near + nb, *fu1 = fu0 + nb, *fv0 = fu1 + nb, *fv1 = fv0 + nb;
+    LbPlane *plane = (LbPlane *)(fv1 + nb);
+    LbShape *shape = (LbShape *)(plane + n);
+    uint32_t *item = (uint32_t *)(shape + n);
+    for (size_t i = 0; i < nb; i++) {
+        /* the padding selects no point: beyond every limit, an empty footprint */
+        const LbFootprint none = { INFINITY, -INFINITY, INFINITY, -INFINITY };
+        const LbFootprint *f = i < n ? &l->c[i].footprint : &none;
+        near[i] = i < n ? l->c[i].near : INFINITY;
+        fu0[i] = f->u0;
+        fu1[i] = f->u1;
+        fv0[i] = f->v0;
+        fv1[i] = f->v1;
+    }
+    for (size_t i = 0; i < n; i++) {
+        plane[i] = l->c[i].plane;
+        shape[i] = l->c[i].shape;
+        item[i] = l->c[i].item;
+    }
+    c->n = (uint32_t)n;
+    c->cover = cover;
+    c->cover_beyond = beyond;
+    atomic_init(&c->child, NULL);
+    /* a cell too short, or at the last level, never splits: its work is not counted */
+    atomic_init(&c->work, n > lbs->split_at && at->level < LB_LEVELS - 1 ? 0 : UINT32_MAX);
+    c->near = near;
+    c->u0 = fu0;
+    c->u1 = fu1;
+    c->v0 = fv0;
+    c->v1 = fv1;
+    c->item = item;
+    c->plane = plane;
+    c->shape = shape;
+    c->level = at->level;
+    return c;
+}
+
+static void cell_free(LbCell *c)
+{
+    if (!c)
+        return;
+    _Atomic(LbCell *) *child = atomic_load_explicit(&c->child, memory_order_relaxed);
+    if (child) {
+        for (int k = 0; k < LB_SUB * LB_SUB; k++)
+            cell_free(atomic_load_explicit(&child[k], memory_order_relaxed));
+        free(child);
+    }
+    free(c);
+}
+
+/* The child of cell c at `at` (one level below c): the candidates of c
+ * whose footprints overlap it (footprint() padded them for the child's
+ * widening and margins), in c's order. NULL when out of memory or budget. */
+static LbCell *build_child(LightBuffers *lbs, const LightBuffer *lb, const LbCell *c, const CellAt *at)
+{
+    double u0, u1, v0, v1;
+    cell_range(at, &u0, &u1, &v0, &v1);
+    CandidateList l = { 0 };
+    int failed = 0;
+    for (uint32_t k = 0; k < c->n && !failed; k++) {
+        if (c->u0[k] > u1 || c->u1[k] < u0 || c->v0[k] > v1 || c->v1[k] < v0)
+            continue;
+        Candidate cand = { c->plane[k], { c->u0[k], c->u1[k], c->v0[k], c->v1[k] }, c->shape[k], c->near[k],
+                           c->item[k] };
+        failed = candidate_push(&l, &cand);
+    }
+    LbCell *child = failed ? NULL : make_cell(lbs, lb, at, &l, c);
+    free(l.c);
+    return child;
+}
+
+/* The cell at `at` of the spot (face and finest indices) at a level. */
+static CellAt cell_at(const LbSpot *spot, int level)
+{
+    int shift = 2 * (LB_LEVELS - 1 - level);
+    CellAt at = { spot->face, level, spot->iu >> shift, spot->iv >> shift };
+    return at;
+}
+
+void light_buffer_cell_worked(LightBuffers *lbs, LightBuffer *lb, const LbCell *c, const LbSpot *spot, uint32_t work,
+                              double *built)
+{
+    (void)lb;
+    (void)spot;
+    *built = 0.0;
+    LbCell *cell = (LbCell *)c; /* its counter and children are the only parts that change */
+    uint_fast32_t before = atomic_load_explicit(&cell->work, memory_order_relaxed);
+    if (before >= lbs->split_work)
+        return; /* split, or never to be */
+    before = atomic_fetch_add_explicit(&cell->work, work, memory_order_relaxed);
+    if (before >= lbs->split_work || before + work < lbs->split_work)
+        return;
+    /* this thread took the cell past the mark: it makes the children's
+     * slots, which points fill as they ask */
+    if (budget_take(lbs, CHILDREN_BYTES))
+        return;
+    _Atomic(LbCell *) *child = malloc(CHILDREN_BYTES);
+    if (!child) {
+        atomic_fetch_sub(&lbs->bytes, CHILDREN_BYTES);
+        return;
+    }
+    for (int k = 0; k < LB_SUB * LB_SUB; k++)
+        atomic_init(&child[k], NULL);
+    atomic_store_explicit(&cell->child, child, memory_order_release);
+}
+
+/* Publishes a top cell built into *slot, unless another thread was first:
+ * then that one's is kept and this one freed. Returns the cell in place. */
+static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c)
+{
+    LbCell *expected = NULL;
+    if (atomic_compare_exchange_strong_explicit(slot, &expected, c, memory_order_acq_rel, memory_order_acquire)) {
+        atomic_fetch_add(&lbs->cells, 1);
+        atomic_fetch_add(&lbs->candidates, c->n);
+        return c;
+    }
+    atomic_fetch_sub(&lbs->bytes, cell_bytes(c->n));
+    cell_free(c);
+    return expected;
+}
+
+int light_buffer_spot(Vec3 d, LbSpot *spot)
+{
+    double ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z);
+    int axis = ax >= ay ? (ax >= az ? 0 : 2) : (ay >= az ? 1 : 2);
+    double major = comp(d, axis);
+    if (!(major != 0.0))
+        return 0;
+    spot->face = 2 * axis + (major < 0.0);
+    double inv = 1.0 / fabs(major);
+    double u = comp(d, (axis + 1) % 3) * inv, v = comp(d, (axis + 2) % 3) * inv;
+    spot->u = u;
+    spot->v = v;
+    /* a direction on a cell's border may go to either: both cells'
+     * pyramids hold it, widened */
+    int iu = (int)((u + 1.0) * (0.5 * LB_FINE)), iv = (int)((v + 1.0) * (0.5 * LB_FINE));
+    spot->iu = iu < 0 ? 0 : iu >= LB_FINE ? LB_FINE - 1 : iu;
+    spot->iv = iv < 0 ? 0 : iv >= LB_FINE ? LB_FINE - 1 : iv;
+    return 1;
+}
+
+const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot *spot, double *built)
+{
+    *built = 0.0;
+    CellAt top = cell_at(spot, 0);
+    _Atomic(LbCell *) *slot = &lb->top[spot->face][top.j * LB_TOP + top.i];
+    LbCell *c = atomic_load_explicit(slot, memory_order_acquire);
+    if (!c) {
+        double t0 = clock_wall();
+        CandidateList l = { 0 };
+        Pyramid pyr = pyramid_of(&top);
+        if (gather_from_hierarchy(lbs, lb, &pyr, spot->face, &l) == 0)
+            c = make_cell(lbs, lb, &top, &l, NULL);
+        free(l.c);
+        if (c)
+            c = publish(lbs, slot, c);
+        *built = clock_wall() - t0;
+        if (!c)
+            return NULL;
+    }
+    for (;;) {
+        _Atomic(LbCell *) *child = atomic_load_explicit(&c->child, memory_order_acquire);
+        if (!child)
+            return c;
+        CellAt at = cell_at(spot, c->level + 1);
+        _Atomic(LbCell *) *slot_c = &child[(at.j & (LB_SUB - 1)) * LB_SUB + (at.i & (LB_SUB - 1))];
+        LbCell *next = atomic_load_explicit(slot_c, memory_order_acquire);
+        if (!next) {
+            double t0 = clock_wall();
+            next = build_child(lbs, lb, c, &at);
+            if (next)
+                next = publish(lbs, slot_c, next);
+            *built += clock_wall() - t0;
+            if (!next)
+                return c; /* the budget: the parent's list serves */
+        }
+        c = next;
+    }
+}
+
+int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double tolerance, size_t budget)
+{
+    memset(lbs, 0, sizeof *lbs);
+    lbs->world = w;
+    lbs->bvh = bvh;
+    lbs->tolerance = tolerance;
+    lbs->budget = budget;
+    lbs->split_work = LB_SPLIT_WORK;
+    lbs->split_at = LB_SPLIT_AT;
+    atomic_init(&lbs->bytes, 0);
+    atomic_init(&lbs->cells, 0);
+    atomic_init(&lbs->candidates, 0);
+    atomic_init(&lbs->full, 0);
+    double size = 0.0;
+    if (w->bounds_min.x <= w->bounds_max.x)
+        size = fmax(v3_max_abs(w->bounds_min), v3_max_abs(w->bounds_max));
+    for (int i = 0; i < w->nlights; i++)
+        size = fmax(size, v3_max_abs(w->lights[i].location));
+    lbs->margin = 1e-9 * (1.0 + size);
+    lbs->cover_margin = 1e-5 * (1.0 + size);
+    lbs->plane_margin = 1e-3 * (1.0 + size);
+    lbs->nlights = w->nlights;
+    lbs->light = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *lbs->light);
+    lbs->item_of = malloc(sizeof *lbs->item_of * (size_t)(w->npolygons > 0 ? w->npolygons : 1));
+    if (!lbs->light || !lbs->item_of)
+        return -1;
+    for (int k = 0; k < bvh->nitems; k++)
+        lbs->item_of[bvh->items[k]] = (uint32_t)k;
+    for (int i = 0; i < w->nlights; i++) {
+        const Light *l = &w->lights[i];
+        if (l->kind != LIGHT_POINT || l->shadowless)
+            continue;
+        LightBuffer *lb = calloc(1, sizeof *lb);
+        if (!lb)
+            return -1;
+        lb->light = i;
+        lb->at = l->location;
+        for (int f = 0; f < 6; f++)
+            for (int k = 0; k < LB_TOP * LB_TOP; k++)
+                atomic_init(&lb->top[f][k], NULL);
+        lbs->light[i] = lb;
+    }
+    return 0;
+}
+
+void light_buffers_free(LightBuffers *lbs)
+{
+    for (int i = 0; lbs->light && i < lbs->nlights; i++) {
+        LightBuffer *lb = lbs->light[i];
+        if (!lb)
+            continue;
+        for (int f = 0; f < 6; f++)
+            for (int k = 0; k < LB_TOP * LB_TOP; k++)
+                cell_free(atomic_load_explicit(&lb->top[f][k], memory_order_relaxed));
+        free(lb);
+    }
+    free(lbs->light);
+    free(lbs->item_of);
+    lbs->light = NULL;
+    lbs->item_of = NULL;
+}

@@ -1,0 +1,256 @@
+/* The light buffer (Haines and Greenberg, IEEE CG&A 6(9), 1986; the
+ * paper's reference [2]): a cube of directions around a point light whose
+ * cells list the polygons that can stand between the light and a point
+ * seen through the cell. A point's shadow decision then looks at its
+ * cell only: an opaque polygon that covers the whole cell nearer than the
+ * point is shadow at once; else the list's polygons nearer the light than
+ * the point are looked at, those the point's side of their plane or the
+ * shadow ray's distance from them rules out passed over, and the rest
+ * tested by the shadow ray's own polygon test; none left is lit at once.
+ *
+ * Exactness (the shadow ray's decision, ties included) rests on
+ * conservative steps with margins far above the rounding of the double
+ * arithmetic involved (light_buffer.c works each bound out):
+ * - a cell's list holds every polygon the shadow ray of any point in the
+ *   cell can meet: the cell's pyramid (apex at the light) is widened by
+ *   LB_WIDEN in the face's coordinates and its side planes pushed out by
+ *   the scene's margin (LightBuffers.margin, 1e-9 of its size), which
+ *   covers the rounding of a shadow ray's direction and of the watertight
+ *   test (some 1e-15 of the size); the hierarchy's boxes are rounded
+ *   outward (bvh.h);
+ * - a candidate is passed over when a lower bound of its distance from the
+ *   light (in float, rounded down) is beyond the point; when the point lies
+ *   on the light's side of its plane by more than the float plane's error
+ *   (the light at least plane_margin from it); or when the point's
+ *   direction from the light lies outside the candidate's footprint on
+ *   the face (the box of its points' directions, padded for the margins);
+ * - "covers the cell" is proved in double for convex opaque polygons with
+ *   a margin of 1e-5 of the scene's size on every side and away from the
+ *   light and the point, for rays at least 1e-2 from the polygon's plane.
+ * Everything else is the shadow ray's own test.
+ *
+ * Cells are built lazily, the first time a point asks: a top cell by
+ * walking the hierarchy with its pyramid; a cell whose points have done
+ * LB_SPLIT_WORK candidate tests is split into LB_SUB x LB_SUB children at
+ * once, each candidate going to the children its footprint on the face
+ * overlaps, down to LB_LEVELS levels. Cells are shared by the render's
+ * threads: each is built by one and published atomically (a thread that
+ * loses the race frees its copy), and only its work counter and children
+ * change after that. Their memory is counted against a budget; past it,
+ * no cell is built and the shadow ray decides. */
+#ifndef HST_LIGHT_BUFFER_H
+#define HST_LIGHT_BUFFER_H
+
+#include <math.h>
+#include <stdatomic.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "bvh.h"
+#include "world.h"
+
+#define LB_TOP 8       /* cells per side of a face at the top level */
+#define LB_SUB 4        /* a split cell's children per side (two bits of index a level) */
+#define LB_LEVELS 4     /* levels, the top one included */
+#define LB_SPLIT_AT 8   /* a cell with more candidates than this may split (above the last level) ... */
+#define LB_SPLIT_WORK 8192 /* ... once its points have done this much work (candidates looked at, tests) */
+/* the finest cells per side of a face */
+#define LB_FINE (LB_TOP << (2 * (LB_LEVELS - 1)))
+
+/* A candidate's plane in float, turned so that the light lies on its
+ * positive side; all zero where it must not be used (the light within
+ * plane_margin of the plane). */
+typedef struct {
+    float nx, ny, nz, d;
+} LbPlane;
+
+/* Where a candidate lies on its face, in the face's coordinates: the box
+ * of its points' directions, padded for the pyramids' margins and rounded
+ * outward to float (light_buffer.c); the whole face and beyond where that
+ * cannot be told. */
+typedef struct {
+    float u0, u1, v0, v1;
+} LbFootprint;
+
+/* A candidate's shape on its face: the lines of its edges in the face's
+ * coordinates (a u + b v + c, (a, b) of unit length, positive inside),
+ * for triangles and convex polygons of up to four points that lie in
+ * front of the face (n edges; 0: none kept, the shadow ray's test
+ * decides). A direction more than `out` outside an edge is not the
+ * polygon's (the footprint's margins); one at least `in` inside every edge
+ * crosses the polygon at least the cover's margin from its border
+ * (light_buffer.c). */
+typedef struct {
+    float a[4], b[4], c[4];
+    float in, out;
+    uint8_t n;
+    uint8_t opaque;         /* its material blocks light fully */
+    uint8_t pad_[6];
+} LbShape;
+
+enum { LB_OUTSIDE, LB_UNSURE, LB_INSIDE };
+
+/* Where direction (u, v) of the face lies against shape s. */
+static inline int lb_shape_classify(const LbShape *s, double u, double v)
+{
+    if (s->n == 0)
+        return LB_UNSURE;
+    int inside = 1;
+    for (int k = 0; k < s->n; k++) {
+        double d = (double)s->a[k] * u + (double)s->b[k] * v + (double)s->c[k];
+        if (d < -(double)s->out)
+            return LB_OUTSIDE;
+        inside &= d >= (double)s->in;
+    }
+    return inside ? LB_INSIDE : LB_UNSURE;
+}
+
+/* Candidates are looked at LB_BLOCK at a time (lb_block_mask), their
+ * near bounds and footprints side by side; a list is padded to a whole
+ * block with entries no point selects. */
+#define LB_BLOCK 4
+
+/* What a cell says about the points seen through it. */
+typedef struct LbCell {
+    uint32_t n;             /* candidates */
+    int32_t cover;          /* an opaque polygon covering the whole cell, or -1 */
+    double cover_beyond;    /* ... which blocks every point farther than this from the light */
+    /* split: LB_SUB x LB_SUB slots for its children, row by row, each
+     * built from this cell's list when a point first asks; else NULL */
+    _Atomic(_Atomic(struct LbCell *) *) child;
+    atomic_uint_fast32_t work; /* work done in it, while it may split */
+    /* Per candidate, in blocks (n rounded up to LB_BLOCK): a lower bound of
+     * its distance from the light (ascending), and its footprint. */
+    const float *near, *u0, *u1, *v0, *v1;
+    const uint32_t *item;   /* the candidates as the hierarchy's leaf items (Bvh.items), in that order */
+    const LbPlane *plane;   /* ... their planes */
+    const LbShape *shape;   /* ... and shapes */
+    int level;
+} LbCell;
+
+typedef struct LightBuffer {
+    int light;              /* index in World.lights */
+    Vec3 at;                /* the light's position */
+    _Atomic(LbCell *) top[6][LB_TOP * LB_TOP]; /* face 2 axis + (negative), row by row (u, then v) */
+} LightBuffer;
+
+/* Every light's buffer, shared by the render's threads. */
+typedef struct LightBuffers {
+    const World *world;
+    const Bvh *bvh;
+    double tolerance;       /* the shadow ray's edge-on rule (grid_tolerance) */
+    double margin;          /* absolute margin of the cells' pyramids: 1e-9 of the scene's size */
+    double cover_margin;    /* the cover's margin: 1e-5 of the scene's size */
+    double plane_margin;    /* the least distance of the light from a plane lb_candidate_passed uses: 1e-3 of it */
+    int nlights;
+    LightBuffer **light;    /* per light: its buffer, or NULL (not a point light) */
+    uint32_t *item_of;      /* per polygon, its leaf item in the hierarchy */
+    size_t budget;          /* bytes the cells may take */
+    uint32_t split_work;    /* LB_SPLIT_WORK (tests set less) */
+    uint32_t split_at;      /* LB_SPLIT_AT (tests set less) */
+    atomic_size_t bytes;    /* ... taken */
+    atomic_uint_fast64_t cells, candidates; /* cells published, and their list entries */
+    atomic_uint_fast64_t full; /* cells not built for the budget */
+} LightBuffers;
+
+/* Buffers for the point lights of w (not parallel ones; area lights'
+ * samples are not asked of them): empty, filled as points ask. budget:
+ * the bytes their cells may take. Returns 0, or -1 when out of memory. */
+int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double tolerance, size_t budget);
+void light_buffers_free(LightBuffers *lbs);
+
+/* Where a direction from a light falls on its cube: the face, and the
+ * finest cell's indices. 0 for a zero direction. */
+typedef struct {
+    int face, iu, iv;
+    double u, v;            /* the direction in the face's coordinates */
+} LbSpot;
+int light_buffer_spot(Vec3 from_light, LbSpot *spot);
+
+/* The cell of light buffer lb at spot, built if need be; NULL when the
+ * budget stops it or memory runs out (then the shadow ray decides).
+ * *built: seconds spent building, 0 when the cell was there. */
+const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot *spot, double *built);
+
+/* The cell's points have done `work` more: past the mark, a cell that may
+ * split is split, its children built at once. *built: seconds spent. */
+void light_buffer_cell_worked(LightBuffers *lbs, LightBuffer *lb, const LbCell *c, const LbSpot *spot, uint32_t work,
+                              double *built);
+
+/* A point as the plane tests take it: the point, the sum of its
+ * coordinates' magnitudes, and 1e-12 of its distance to the light. */
+typedef struct {
+    Vec3 p;
+    double size, far;
+} LbPoint;
+
+static inline LbPoint lb_point(Vec3 p, double distance)
+{
+    LbPoint pt = { p, fabs(p.x) + fabs(p.y) + fabs(p.z), 1e-12 * distance };
+    return pt;
+}
+
+/* 1 when point p lies beyond candidate plane pl (away from the light) by
+ * more than its float rounding and `margin`, and the unit direction
+ * to_light meets the plane at least LB_COVER_ANGLE from it (with the
+ * float normal's error): with a shape's LB_INSIDE, the shadow ray crosses
+ * the polygon (light_buffer.c). */
+#define LB_COVER_ANGLE 1e-2
+static inline int lb_candidate_crossed(const LbPlane *pl, const LbPoint *pt, Vec3 to_light, double margin)
+{
+    double s = (double)pl->nx * pt->p.x + (double)pl->ny * pt->p.y + (double)pl->nz * pt->p.z - (double)pl->d;
+    double err = 1.2e-7 * (pt->size + fabs((double)pl->d)) + pt->far;
+    double cosine = (double)pl->nx * to_light.x + (double)pl->ny * to_light.y + (double)pl->nz * to_light.z;
+    return s < -(err + margin) && fabs(cosine) >= LB_COVER_ANGLE + 1e-6;
+}
+
+/* 1 when point p lies on the light's side of candidate plane pl by more
+ * than its float rounding (light_buffer.c: the shadow ray from p cannot
+ * then meet the polygon). */
+static inline int lb_candidate_passed(const LbPlane *pl, const LbPoint *pt)
+{
+    double s = (double)pl->nx * pt->p.x + (double)pl->ny * pt->p.y + (double)pl->nz * pt->p.z - (double)pl->d;
+    return s > 1.2e-7 * (pt->size + fabs((double)pl->d)) + pt->far;
+}
+
+/* The candidates of block b (from LB_BLOCK * b) that a point may need:
+ * nearer the light than limit (a float at least the point's distance
+ * plus the margin) and whose footprint holds the point's direction (u, v)
+ * in float: bit k for the block's k-th. Every point of the point's shadow
+ * ray has that direction (to within the margins the footprints are
+ * padded by, which also cover the rounding of u and v to float), so the
+ * shadow ray cannot meet the others. lb_block_mask_plain one candidate at
+ * a time; lb_block_mask the same comparisons with SSE where the compiler
+ * has it (tests/test_agreement.c holds them to each other). */
+static inline unsigned lb_block_mask_plain(const LbCell *c, uint32_t b, float limit, float u, float v)
+{
+    unsigned mask = 0;
+    for (uint32_t k = 0; k < LB_BLOCK; k++) {
+        uint32_t i = b * LB_BLOCK + k;
+        mask |= (unsigned)(c->near[i] < limit && c->u0[i] <= u && u <= c->u1[i] && c->v0[i] <= v && v <= c->v1[i])
+                << k;
+    }
+    return mask;
+}
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, float limit, float u, float v)
+{
+    uint32_t i = b * LB_BLOCK;
+    __m128 uu = _mm_set1_ps(u), vv = _mm_set1_ps(v);
+    __m128 m = _mm_cmplt_ps(_mm_load_ps(c->near + i), _mm_set1_ps(limit));
+    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(c->u0 + i), uu));
+    m = _mm_and_ps(m, _mm_cmple_ps(uu, _mm_load_ps(c->u1 + i)));
+    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(c->v0 + i), vv));
+    m = _mm_and_ps(m, _mm_cmple_ps(vv, _mm_load_ps(c->v1 + i)));
+    return (unsigned)_mm_movemask_ps(m);
+}
+#else
+static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, float limit, float u, float v)
+{
+    return lb_block_mask_plain(c, b, limit, u, v);
+}
+#endif
+
+#endif

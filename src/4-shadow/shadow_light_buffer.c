@@ -1,0 +1,188 @@
+/* --shadows light-buffer: each point light's light buffer (light_buffer.h)
+ * decides its shadows; what it cannot (area lights' samples, parallel
+ * lights, a cell the memory budget left unbuilt) the shadow ray with the
+ * light's last blocker tried first decides, as the cache method does. Its
+ * decisions are the shadow ray's, exactly: lit where no candidate is
+ * nearer the light than the point, shadow where a proved cover is, else
+ * the shadow ray's own polygon test against the candidates the point's
+ * side of their planes does not rule out.
+ *
+ * hst hands its point lights' decisions here where no volumes pay
+ * (shadow_hst_prepare.c): the light buffer is hst's sub-scheme in light
+ * space. */
+#include "shadow.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "light_buffer.h"
+
+/* The cells' memory. */
+#define LB_BUDGET_DEFAULT ((size_t)256 << 20)
+
+/* The light's buffer for q, or NULL: q is an area light's sample (its
+ * source is not the light itself) or the light has none. */
+static LightBuffer *buffer_for(const ShadowContext *ctx, const ShadowQuery *q)
+{
+    const LightBuffers *lbs = ctx->light_buffers;
+    if (!lbs || !lbs->light[q->light] || q->source != &ctx->tracer->world->lights[q->light])
+        return NULL;
+    return lbs->light[q->light];
+}
+
+/* Time spent building cells, counted whole rather than sampled (shadow_decide.h). */
+static void count_build(ShadowContext *ctx, double seconds)
+{
+    if (seconds > 0.0) {
+        ctx->stats.light_buffer_build_ns += (uint64_t)(seconds * 1e9);
+        ctx->stats.shadow_seconds += seconds;
+        ctx->untimed_seconds += seconds;
+    }
+}
+
+/* The cell at spot: the thread's last one for the light while it still
+ * holds the spot (neighbouring points mostly share a cell), else the
+ * buffer's. */
+static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, int light, const LbSpot *spot)
+{
+    LbMemo *m = &ctx->light_buffer_memo[light];
+    if (m->cell && m->face == spot->face) {
+        int shift = 2 * (LB_LEVELS - 1 - m->cell->level);
+        if ((spot->iu >> shift) == m->i && (spot->iv >> shift) == m->j &&
+            !atomic_load_explicit(&((LbCell *)m->cell)->child, memory_order_acquire))
+            return m->cell;
+    }
+    double built;
+    const LbCell *c = light_buffer_cell(ctx->light_buffers, lb, spot, &built);
+    count_build(ctx, built);
+    if (c) {
+        int shift = 2 * (LB_LEVELS - 1 - c->level);
+        *m = (LbMemo){ c, spot->face, spot->iu >> shift, spot->iv >> shift };
+    }
+    return c;
+}
+
+int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    LightBuffer *lb = buffer_for(ctx, q);
+    LbSpot spot;
+    const LbCell *cell = lb && light_buffer_spot(v3_neg(q->to_light), &spot) ? cell_at_spot(ctx, lb, q->light, &spot)
+                                                                             : NULL;
+    if (!cell)
+        return shadow_cache_polygons_test(ctx, q, light);
+    LightBuffers *lbs = ctx->light_buffers;
+    int own = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
+    if (cell->cover >= 0 && q->distance > cell->cover_beyond && cell->cover != own) {
+        light->r = light->g = light->b = 0.0;
+        ctx->last_scheme = SCHEME_BUFFER_COVER;
+        ctx->stats.shadow_schemes[SCHEME_BUFFER_COVER]++;
+        ctx->stats.shadow_blocked++;
+        return 1;
+    }
+    /* the candidates' near bounds are floats rounded down: the limit is
+     * rounded up */
+    const double limit_d = q->distance * (1.0 + 1e-9) + lbs->margin;
+    const float limit = (float)(limit_d * (1.0 + 0x1p-22)); /* float's rounding is below 2^-24 */
+    const LbPoint point = lb_point(q->point, q->distance);
+    const float u = (float)spot.u, v = (float)spot.v;
+    const uint32_t own_item = own >= 0 ? lbs->item_of[own] : UINT32_MAX;
+    const uint32_t nblocks = (cell->n + LB_BLOCK - 1) / LB_BLOCK;
+    uint32_t looked = 0, tests = 0;
+    int blocked = 0, walking = 0, cache_hit = 0, crossed_opaque = 0;
+    /* The candidates the point needs, by the blocks' footprints and near
+     * bounds, its own polygon and the side of their planes, each tested as
+     * it is found. */
+    ShadowListWalk lw;
+    for (uint32_t b = 0; b < nblocks && !blocked && cell->near[b * LB_BLOCK] < limit; b++) {
+        looked += LB_BLOCK;
+        for (unsigned mask = lb_block_mask(cell, b, limit, u, v); mask && !blocked; mask &= mask - 1) {
+            uint32_t i = b * LB_BLOCK + (uint32_t)__builtin_ctz(mask);
+            /* the point's own polygon: the shadow ray starts on it (passed over) */
+            if (cell->item[i] == own_item || lb_candidate_passed(&cell->plane[i], &point))
+                continue;
+            const LbShape *shape = &cell->shape[i];
+            int where = lb_shape_classify(shape, spot.u, spot.v);
+            if (where == LB_OUTSIDE)
+                continue;
+            int crossed = where == LB_INSIDE &&
+                          lb_candidate_crossed(&cell->plane[i], &point, q->to_light, lbs->cover_margin);
+            if (crossed && shape->opaque) {
+                /* an opaque polygon proved crossed: no light */
+                ctx->last_blocker = (int)lbs->bvh->items[cell->item[i]];
+                crossed_opaque = blocked = 1;
+                break;
+            }
+            if (!walking) {
+                walking = 1;
+                /* the light's last opaque blocker first (the cache method's
+                 * rule), now that some candidate may block: neighbouring
+                 * points in a shadow no cover proves are mostly blocked by
+                 * one polygon */
+                if (shadow_cached_blocker_hits(ctx, q)) {
+                    cache_hit = blocked = 1;
+                    break;
+                }
+                ctx->last_blocker = -1;
+                shadow_list_begin(&lw, ctx, q);
+            }
+            tests++;
+            blocked = crossed ? shadow_list_meet_crossed(&lw, lbs->bvh->items[cell->item[i]])
+                              : shadow_list_meet_item(&lw, lbs->bvh, cell->item[i]);
+        }
+    }
+    if (blocked)
+        light->r = light->g = light->b = 0.0;
+    else if (walking)
+        blocked = shadow_list_end(&lw, light);
+    ctx->last_scheme = cache_hit ? SCHEME_CACHE_HIT : walking || crossed_opaque ? SCHEME_BUFFER_LIST : SCHEME_BUFFER_LIT;
+    ctx->stats.shadow_schemes[ctx->last_scheme]++;
+    ctx->stats.shadow_blocked += (uint64_t)blocked;
+    if (blocked && !cache_hit)
+        shadow_cache_remember(ctx, q, light);
+    ctx->stats.light_buffer_scanned += looked;
+    ctx->stats.light_buffer_candidates += tests;
+    /* the work a split would cut: candidates looked at, and tests at some
+     * four times the cost */
+    if (looked && atomic_load_explicit(&((LbCell *)cell)->work, memory_order_relaxed) < lbs->split_work) {
+        double built;
+        light_buffer_cell_worked(lbs, lb, cell, &spot, looked + 3 * tests, &built);
+        count_build(ctx, built);
+    }
+    return blocked;
+}
+
+static void light_buffer_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    light->r = light->g = light->b = 1.0;
+    ctx->last_scheme = SCHEME_CONVENTIONAL;
+    if (shadow_planes_test(ctx, q, light)) {
+        ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
+        ctx->stats.shadow_blocked++;
+        return;
+    }
+    shadow_light_buffer_polygons_test(ctx, q, light);
+}
+
+int shadow_light_buffer_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
+                                int errlen)
+{
+    (void)self;
+    if (!s->shadows_on)
+        return 0;
+    out->light_buffers = calloc(1, sizeof *out->light_buffers);
+    if (!out->light_buffers ||
+        light_buffers_init(out->light_buffers, s->world, s->bvh, grid_tolerance(s->grid), LB_BUDGET_DEFAULT)) {
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
+    return 0;
+}
+
+const ShadowMethod shadow_light_buffer_method = {
+    .name = "light-buffer",
+    .summary = "each point light's light buffer (Haines and Greenberg 1986): a direction cube whose cells list "
+               "the candidate occluders, built as points ask",
+    .prepare = shadow_light_buffer_prepare,
+    .test = light_buffer_test,
+};
