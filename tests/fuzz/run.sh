@@ -106,7 +106,7 @@ link() { # target, defines: the fuzzer
 # The INI dictionary: the keys the options' table knows, its switches and long
 # options, the words of values, the entry point's own divisions and names.
 {
-    grep -o '\.ini = "[A-Za-z_]*"' "$src/src/render/options_table.c" | sed 's/^\.ini = "\(.*\)"$/"\1="/' | sort -u
+    grep -o '\.ini = "[A-Za-z_]*"' "$src/src/options/options_table.c" | sed 's/^\.ini = "\(.*\)"$/"\1="/' | sort -u
     for w in +W +H +Q +WT +F +FN +FN16 +FE +FP +FT +FC +FB +FJ +FH +L +I +O +A +AM +R +J +UA +MV +D +P +C \
         +GA +GD +GW +GR +GS +KFI +KFF +KI +KF +KC +K +SF +EF +SR +ER +SC +EC -F -J -D -A -GA \
         on off true false yes no 0.5 1e300 -1 2147483648 "%%" "[" "]" "=" ";" "#" "," "'" \
@@ -115,7 +115,7 @@ link() { # target, defines: the fuzzer
     done
     printf '"\\""\n' # a double quote
     printf '"\\x0a%%%%\\x0a"\n'
-    grep -o '"--[a-z0-9-]*"' "$src/src/render/options_table.c" | sort -u
+    grep -o '"--[a-z0-9-]*"' "$src/src/options/options_table.c" | sort -u
 } >"$out/ini.dict"
 
 # The stitch dictionary: the header hstrace writes (attributes, their
