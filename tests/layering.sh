@@ -6,7 +6,7 @@ rooms="
 src/base
 parser/description
 parser parser/tokens parser/expressions parser/grammar
-src/geometry src/material src/accel src/shadow src/shading src/render src/image src/options src/tools src/cli
+src/geometry src/material src/accel src/light src/shadow src/shading src/render src/image src/options src/tools src/cli
 "
 # src/base holds what everything stands on (vectors and transforms, checked
 # conversions, memory, clocks, threads, JSON); parser/description is the

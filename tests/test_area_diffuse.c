@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "area_diffuse.h"
-#include "area_light.h"
+#include "area_light_samples.h"
 #include "tap.h"
 
 static uint64_t rng = 0x9e3779b97f4a7c15ull;

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "light.h"
 #include "shadow_embree.h"
 #include "shadow_reference.h"
 #include "shadow_volumes.h"

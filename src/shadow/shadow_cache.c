@@ -17,7 +17,7 @@
 #include "shadow.h"
 
 #include "intersect.h"
-#include "shadow_volumes.h"
+#include "light.h"
 
 #define CACHE_WARM_UP 16     /* tries before the tally is believed */
 #define CACHE_PAYS_ONE_IN 8  /* the hit rate below which trying first costs more than it saves */
@@ -50,7 +50,7 @@ int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
     const Polygon *p = &w->polygons[pi];
     /* The shadow ray's own rule for a polygon edge-on to the light (an area
      * light's sample may see edge-on what blocked another sample). */
-    if (shadow_light_side(p, q->source, grid_tolerance(ctx->tracer->grid)) == 0)
+    if (light_side_of(p, q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
     ctx->stats.shadow_polygon_tests++;
     /* The shadow ray's test on the shadow ray's frame (the same numbers,

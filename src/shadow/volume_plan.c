@@ -1,7 +1,7 @@
 /* Deciding, per light, whether shadow volumes pay (volume_plan.h). */
 #include "volume_plan.h"
 
-#include "area_light.h"
+#include "light.h"
 
 #include <math.h>
 #include <stdlib.h>
