@@ -23,12 +23,6 @@
 #define CACHE_PAYS_ONE_IN 8  /* the hit rate below which trying first costs more than it saves */
 #define CACHE_PROBE_EVERY 16 /* a cache that does not pay is still tried this often */
 
-void shadow_cache_forget(ShadowContext *ctx, int nlights)
-{
-    for (int i = 0; i < nlights; i++)
-        ctx->light_cache[i] = (LightCache){ .blocker = -1 };
-}
-
 /* Whether this query tries light c's cache, by the tally so far. */
 static int cache_worth_trying(LightCache *c)
 {
@@ -96,3 +90,9 @@ void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
         shadow_cache_remember(ctx, q, light);
     }
 }
+
+const ShadowMethod shadow_cache_method = {
+    .name = "cache",
+    .summary = "shadow rays that first try the light's last opaque blocker (as POV-Ray does)",
+    .test = shadow_cache_test,
+};
