@@ -28,7 +28,7 @@ variants="conventional cache volume hst hst:auto:off hst:per-point planned"
     echo "all methods of a scene interleaved in one session; the split (preprocessing incl. silhouettes,"
     echo "shadow-polygon registration and the cost-model calibration; shadow testing incl. filling shadow"
     echo "buckets; others) is the median of 5 runs of \`--stats-json\`. Ratios are to \`conventional\`."
-    echo "Shadow-testing time is estimated by timing every 31st decision (see src/4-shadow/shadow_decide.h)."
+    echo "Shadow-testing time is estimated by timing every 31st decision (see src/shadow/shadow_decide.h)."
     echo "The hst rows build every light's shadow volumes (\`--volumes always\`, as the paper does); *planned*"
     echo "is the default \`--shadows hst\`, which builds only those the cost model expects to pay (volume_plan.h)."
     echo

@@ -1,6 +1,6 @@
 #!/bin/sh
 # One door per shadow method (issue 40), in TAP: the test-only method
-# every-point-lit (src/4-shadow/shadow_every_lit.c, one file and one row of
+# every-point-lit (src/shadow/shadow_every_lit.c, one file and one row of
 # the registry) goes through the real render loop -- the command line, the
 # method's preparation, its per-thread state, the tile, pixel and segment
 # hooks -- and must give what `none` gives: the same image (its answers are

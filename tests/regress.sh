@@ -10,7 +10,7 @@
 #     pixels at shadow edges and silhouettes where the two renderers break a
 #     tie on a pixel centre differently, as compare's --mask-map marks them;
 #   - every scene: hstrace's shadow mask (+Q3 vs +Q4) against POV-Ray's: no
-#     disagreement away from shadow edges and silhouettes (src/8-tools/mask_compare.h
+#     disagreement away from shadow edges and silhouettes (src/tools/mask_compare.h
 #     has the exact rules), and at most the measured number at them.
 # The hard cases are built to put ties on pixel centres and shadow rays
 # through shared edges: their full image (ties included) is printed as a

@@ -44,6 +44,7 @@
 #include "shadow.h"
 #include "shadow_coherence.h"
 #include "shadow_reference.h"
+#include "shadow_registry.h"
 #include "shadow_volumes.h"
 #include "tap.h"
 #include "tracer.h"

@@ -322,7 +322,7 @@ static void check_threads(const char *method)
 
 /* ---- shadow.L<i> against the +Q3/+Q4 mask method ----------------------------- */
 
-#define MASK_EPSILON 2e-3 /* src/8-tools/mask_compare.c's threshold of a mask pixel */
+#define MASK_EPSILON 2e-3 /* src/tools/mask_compare.c's threshold of a mask pixel */
 
 static void check_masks(const char *name)
 {

@@ -1,4 +1,4 @@
-/* area_illumination's diffuse sum (src/5-shading/area_diffuse.h): the fast
+/* area_illumination's diffuse sum (src/shading/area_diffuse.h): the fast
  * loop, two samples at a time, against the plain one, which computes what
  * shade.c's general loop computes sample by sample: the same light in
  * every texture, bit for bit, over random lights (square and circular
@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "area_diffuse.h"
-#include "area_light.h"
+#include "area_light_samples.h"
 #include "tap.h"
 
 static uint64_t rng = 0x9e3779b97f4a7c15ull;

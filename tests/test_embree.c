@@ -15,6 +15,7 @@
 #include "intersect.h"
 #include "shadow.h"
 #include "shadow_embree.h"
+#include "shadow_registry.h"
 #include "tap.h"
 
 /* A square of side 2r at height y (a convex polygon of one outline). */

@@ -1,4 +1,4 @@
-/* The figures of `hstrace compare` between two images (src/8-tools/image_compare.h):
+/* The figures of `hstrace compare` between two images (src/tools/image_compare.h):
  * RMSE, PSNR, the largest error and where, the share of pixels over the
  * threshold, NaN handling and the heat map, on small images whose figures are
  * worked out by hand below. */

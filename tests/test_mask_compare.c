@@ -1,4 +1,4 @@
-/* Shadow masks compared (src/8-tools/mask_compare.h): disagreements told apart at
+/* Shadow masks compared (src/tools/mask_compare.h): disagreements told apart at
  * shadow edges, at silhouettes and in the interior, shadows from other lights,
  * A's leaks, and the verdict map, on a hand-made 16x12 scene whose counts are
  * worked out below. */

@@ -1,4 +1,4 @@
-/* The options' table (src/6-render/options_table.c) against what users
+/* The options' table (src/options/options_table.c) against what users
  * read: every row named once, --help printed from it, its switches in
  * --help's paragraphs and the man page's OPTIONS, the INI keys hstrace
  * takes in the man page and the keys the man page names in the table, the

@@ -30,6 +30,7 @@
 #include "grid.h"
 #include "intersect.h"
 #include "shadow.h"
+#include "shadow_registry.h"
 #include "shadow_volumes.h"
 #include "tap.h"
 #include "tracer.h"

@@ -16,6 +16,7 @@
 #include "render.h"
 #include "shadow.h"
 #include "shadow_reference.h"
+#include "shadow_registry.h"
 #include "tap.h"
 #include "world.h"
 

@@ -11,6 +11,7 @@
 
 #include <stddef.h>
 
+#include "arena.h"
 #include "transform.h"
 #include "vecmath.h"
 
@@ -477,8 +478,6 @@ typedef struct {
     double omega, lambda;
 } SceneFog;
 
-typedef struct Arena Arena;
-
 typedef struct {
     Arena *arena;
     double version;            /* from #version, default 3.7 */
@@ -503,27 +502,6 @@ typedef struct {
 
 Finish scene_default_finish(void);
 Interior scene_default_interior(void);
-
-/* Arena allocation: zeroed memory that lives as long as the scene. */
-Arena *arena_new(void);
-/* A bound on what arenas may take from the system, shared by the arenas
- * given it (the parser's two): once `used` would pass `limit`, an
- * allocation returns NULL and sets `exceeded`, before any memory is asked
- * for. A budget is the caller's, and one thread's: NULL detaches it. */
-typedef struct {
-    size_t used, limit;
-    int exceeded;
-} ArenaBudget;
-void arena_set_budget(Arena *a, ArenaBudget *budget);
-void *arena_alloc(Arena *a, size_t size);
-/* As arena_alloc, without zeroing (for memory about to be overwritten). */
-void *arena_alloc_uninit(Arena *a, size_t size);
-char *arena_strdup(Arena *a, const char *s);
-/* Gives p's memory back before the arena goes, when p is an allocation
- * bigger than the arena's blocks (which then has a block to itself);
- * returns 1, or 0 and keeps it otherwise. */
-int arena_release(Arena *a, void *p);
-void arena_free(Arena *a);
 
 void scene_free(Scene *scene);
 

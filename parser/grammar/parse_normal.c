@@ -8,7 +8,7 @@
  * (bumps, dents, wrinkles, waves, ripples, quilted), bump_map, average
  * and uv_mapping are read with what they take; of the others, those
  * hstrace evaluates for pigments displace the normal by their slope (the
- * engine's src/2-material/normal.c), and the rest are approximated: the
+ * engine's src/material/normal.c), and the rest are approximated: the
  * normal is left as it is, with a note. */
 #include <stdio.h>
 #include <string.h>

@@ -20,6 +20,7 @@
 #include "parser.h"
 #include "render.h"
 #include "shadow.h"
+#include "shadow_registry.h"
 #include "shadow_volumes.h"
 #include "volume_plan.h"
 #include "world.h"

@@ -55,7 +55,10 @@ san="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all"
 cflags="-std=c11 -g -O1 -fno-omit-frame-pointer -ffp-contract=off -D_POSIX_C_SOURCE=200809L"
 cflags="$cflags -DHST_DATADIR=\"$src/data\" -I$build -I$src/parser -I$src/parser/description"
 cflags="$cflags -I$src/parser/tokens -I$src/parser/expressions -I$src/parser/grammar"
-for room in "$src"/src/[0-8]-*; do cflags="$cflags -I$room"; done
+# every room of the engine but the command line's (its main.c is hstrace)
+for room in "$src"/src/*/; do
+    case $room in */cli/) ;; *) cflags="$cflags -I${room%/}" ;; esac
+done
 pkgs="libpng libjpeg OpenEXR"
 cflags="$cflags $(pkg-config --cflags $pkgs)"
 libs="$(pkg-config --libs $pkgs) -lm -lpthread"
@@ -63,7 +66,7 @@ libs="$(pkg-config --libs $pkgs) -lm -lpthread"
 # Built with Embree (configure found it): its method is in the objects below.
 grep -q '^#define HAVE_EMBREE 1' "$build/config.h" && libs="$libs -lembree3"
 
-# Every C file of the parser and of rooms 0 to 8 (without OpenColorIO's C++),
+# Every C file of the parser and of those rooms (without OpenColorIO's C++),
 # compiled once with the coverage instrumentation and the sanitizers; all of
 # them again when any header has changed since (a struct that grew would
 # otherwise be read with two layouts, and the fuzzer would see nothing).
@@ -73,7 +76,8 @@ if [ "$(cat "$out/obj/headers.sum" 2>/dev/null)" != "$headers" ]; then
     printf '%s\n' "$headers" >"$out/obj/headers.sum"
 fi
 objects=""
-for f in "$src"/parser/*/*.c "$src"/src/[0-8]-*/*.c; do
+for f in "$src"/parser/*/*.c "$src"/src/*/*.c; do
+    case $f in "$src"/src/cli/*) continue ;; esac
     o=$out/obj/$(echo "${f#"$src"/}" | tr / _ | sed 's/\.c$/.o/')
     if [ ! -f "$o" ] || [ "$f" -nt "$o" ] || [ "$src/parser/tokens/tokens.h" -nt "$o" ]; then
         # shellcheck disable=SC2086 # the flags are words
@@ -102,7 +106,7 @@ link() { # target, defines: the fuzzer
 # The INI dictionary: the keys the options' table knows, its switches and long
 # options, the words of values, the entry point's own divisions and names.
 {
-    grep -o '\.ini = "[A-Za-z_]*"' "$src/src/6-render/options_table.c" | sed 's/^\.ini = "\(.*\)"$/"\1="/' | sort -u
+    grep -o '\.ini = "[A-Za-z_]*"' "$src/src/options/options_table.c" | sed 's/^\.ini = "\(.*\)"$/"\1="/' | sort -u
     for w in +W +H +Q +WT +F +FN +FN16 +FE +FP +FT +FC +FB +FJ +FH +L +I +O +A +AM +R +J +UA +MV +D +P +C \
         +GA +GD +GW +GR +GS +KFI +KFF +KI +KF +KC +K +SF +EF +SR +ER +SC +EC -F -J -D -A -GA \
         on off true false yes no 0.5 1e300 -1 2147483648 "%%" "[" "]" "=" ";" "#" "," "'" \
@@ -111,7 +115,7 @@ link() { # target, defines: the fuzzer
     done
     printf '"\\""\n' # a double quote
     printf '"\\x0a%%%%\\x0a"\n'
-    grep -o '"--[a-z0-9-]*"' "$src/src/6-render/options_table.c" | sort -u
+    grep -o '"--[a-z0-9-]*"' "$src/src/options/options_table.c" | sort -u
 } >"$out/ini.dict"
 
 # The stitch dictionary: the header hstrace writes (attributes, their

@@ -122,6 +122,6 @@ int shadow_hst_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPre
      * cache's hits (on desk.pov 1.46 of the 1.54 million blocked rays,
      * each one polygon test instead of a walk through the hierarchy). */
     if (!out->volumes && !world_has_beams(s->world))
-        out->decider = shadow_method_fallback();
+        out->decider = &shadow_cache_method;
     return 0;
 }

@@ -1,8 +1,8 @@
-/* Shadow methods: one interface, selectable by name (--shadows). A method
- * answers, for a shading point and a light, how much of the light arrives:
- * (1,1,1) unblocked, (0,0,0) blocked by an opaque object, a colour when the
- * light passes through transparent (filter/transmit) objects, as POV-Ray
- * filters it. The conventional shadow ray is the exact reference; every
+/* Shadow methods: one interface, selectable by name (--shadows, through
+ * the registry: shadow_registry.h). A method answers, for a shading point
+ * and a light, how much of the light arrives: (1,1,1) unblocked, (0,0,0)
+ * blocked by an opaque object, a colour when the light passes through
+ * transparent (filter/transmit) objects, as POV-Ray filters it. The conventional shadow ray is the exact reference; every
  * other method must give the same answer (--verify-shadows counts where it
  * does not).
  *
@@ -105,6 +105,10 @@ typedef struct LbMemo {
     int face, i, j;
 } LbMemo;
 
+/* The most polygons an hst beam gathers before it gives up (its samples
+ * then decided by the shadow ray through the hierarchy). */
+#define AREA_BEAM_CAP 256
+
 /* A render thread's shadow testing: the tracer it asks (the shading's, or
  * its own when it is used alone), the method, and the methods' per-thread
  * state. */
@@ -150,7 +154,7 @@ typedef struct ShadowContext {
     /* Per light: its samples' places on the grid (index u * size2 + v)
      * when they are the same from every point (no jitter) and there are at
      * most AREA_FIXED_CAP of them; else NULL. The grid's divisions done
-     * once per thread, not per sample (area_light.h). */
+     * once per thread, not per sample (area_light_samples.h). */
     double (**area_fixed_factors)[2];
     int *area_uniform_visits;   /* per light: the samples its sampling visits when all agree */
     int *area_uniform_levels;   /* ... and the levels of means over them */
@@ -164,11 +168,14 @@ struct ShadowPrepared;
 
 /* A thread's context for the prepared method p (its decider, volumes,
  * Embree scene, cost model and N_th): the common part, then the method's
- * own (its thread_init). tracer: the shading's, which the context asks;
- * NULL: a tracer of its own (a context used alone: the plan's pilot, the
- * cost model, tests). verify: --verify-shadows (1) or --verify-reference
- * (2). pixel_coherence: hst may count from the neighbouring pixel.
- * Returns 0, or -1 when out of memory (free it all the same). */
+ * own (its thread_init); a p without a decider gives the common part alone
+ * (the measurements of the cost model and the volume plan, which call the
+ * decisions and the volume methods' thread state themselves). tracer: the
+ * shading's, which the context asks; NULL: a tracer of its own (a context
+ * used alone: the plan's pilot, the cost model, tests). verify:
+ * --verify-shadows (1) or --verify-reference (2). pixel_coherence: hst may
+ * count from the neighbouring pixel. Returns 0, or -1 when out of memory
+ * (free it all the same). */
 int shadow_context_init(ShadowContext *ctx, Tracer *tracer, const World *w, const Grid *g,
                         const struct ShadowPrepared *p, int verify, int pixel_coherence);
 void shadow_context_free(ShadowContext *ctx);
@@ -275,26 +282,22 @@ typedef struct ShadowMethod {
 /* The test-only method (shadow_every_lit.c): every light reaches every
  * point, through every door a method has. */
 extern const ShadowMethod shadow_every_lit_method;
-/* The light buffer (shadow_light_buffer.c). */
+/* The cache method (shadow_cache.c): the shadow ray with the light's last
+ * opaque blocker tried first (exact); also what a method hands its
+ * decisions to where what it prepared would not pay (hst without volumes). */
+extern const ShadowMethod shadow_cache_method;
+/* The light buffer (shadow_light_buffer.c), and its polygon part (the
+ * planes tested before): the light's cell decides, or the cache method's
+ * polygon part where the light has no buffer or the cell is not built;
+ * counts the decision and its scheme, and returns 1 when the light is
+ * fully blocked. */
 extern const ShadowMethod shadow_light_buffer_method;
-/* Its preparation (the point lights' buffers, empty) and its polygon part
- * (the planes tested before): the light's cell decides, or the cache
- * method's polygon part where the light has no buffer or the cell is not
- * built; counts the decision and its scheme, and returns 1 when the light
- * is fully blocked. */
+int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+/* The point lights' buffers, empty, for the render (a method's
+ * preparation: the light-buffer method's, hst's). Returns 0, or -1 with
+ * a message in err. */
 int shadow_light_buffer_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
                                 int errlen);
-int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
-
-/* Prepares method m for the render (shadows_on: its prepare; else nothing
- * but the defaults). Returns 0, or -1 with a message in err (out of
- * memory, a library that failed); out is to be freed either way. */
-int shadow_method_prepare(const ShadowMethod *m, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen);
-void shadow_prepared_free(ShadowPrepared *p);
-/* The shadow ray with the light's last opaque blocker tried first (exact:
- * shadow_cache.c): what a method hands its decisions to where what it
- * prepared would not pay. */
-const ShadowMethod *shadow_method_fallback(void);
 
 /* The record of one decision, the same for every method, for the analysis
  * channels (--aov): read right after test or skip. */
@@ -309,13 +312,6 @@ typedef struct {
  * no opaque polygon on its way), and nothing where it was blocked (the ray
  * stops at the first blocker). answer: the test's answer, NULL after a skip. */
 ShadowRecord shadow_record(const ShadowContext *ctx, const ShadowQuery *q, const RGB *answer);
-
-/* NULL when no method has that name. */
-const ShadowMethod *shadow_method_find(const char *name);
-/* Why this build cannot use method m (embree without Embree), or NULL. */
-const char *shadow_method_unavailable(const ShadowMethod *m);
-/* Names of all methods, comma separated, for messages and --help. */
-const char *shadow_method_names(void);
 
 /* The exact test: a shadow ray walked through the grid to the light,
  * infinite planes first, then polygons. */
@@ -369,9 +365,10 @@ int shadow_cache_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *li
  * ray, remember its blocker when it was opaque and blocked fully. */
 int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q);
 void shadow_cache_remember(ShadowContext *ctx, const ShadowQuery *q, const RGB *light);
-/* Empties the caches of lights [0, nlights) and their tallies: at every
- * tile's start, so that what the cache does for a pixel does not depend on
- * the tiles its thread rendered before. */
+/* Empties the caches of lights [0, nlights) and their tallies (shadow.c:
+ * the context holds them): at every tile's start, so that what the cache
+ * does for a pixel does not depend on the tiles its thread rendered
+ * before. */
 void shadow_cache_forget(ShadowContext *ctx, int nlights);
 void shadow_volume_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
 void shadow_volume_skip(ShadowContext *ctx, const ShadowQuery *q, int faces_away);

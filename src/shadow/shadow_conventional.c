@@ -9,7 +9,7 @@
 
 #include "intersect.h"
 #include "pigment.h"
-#include "shadow_volumes.h"
+#include "light.h"
 
 #define FOLD_INSERTION_MAX 16 /* see-through hits sorted by insertion up to this many */
 #define POV_SMALL_TOLERANCE 1.0e-3 /* POV-Ray's SMALL_TOLERANCE (and SHADOW_TOLERANCE) */
@@ -67,7 +67,7 @@ static int meet_polygon(void *user, uint32_t pi, double t)
     /* A polygon edge-on to the light (the light in its plane) casts no
      * shadow: the ray can only graze it, or meet it at the light itself.
      * The same rule as the shadow volumes'. */
-    if (shadow_light_side(p, sw->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
+    if (light_side_of(p, sw->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
     const Material *m = &w->materials[p->material];
     if (m->opaque) {

@@ -1,7 +1,7 @@
 /* Deciding, per light, whether shadow volumes pay (volume_plan.h). */
 #include "volume_plan.h"
 
-#include "area_light.h"
+#include "light.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -127,8 +127,9 @@ static int pilot_points(VolumePlan *plan, const World *w, const Grid *g, const B
 /* C_ray per light, C_touch and C_record at the pilot's points. */
 static int time_pilot(VolumePlan *plan, const World *w, const Grid *g, const Bvh *bvh)
 {
+    /* the shadow ray keeps no state of its own: the context's common part */
     ShadowContext ctx;
-    ShadowPrepared p = { .decider = shadow_method_find("conventional") };
+    ShadowPrepared p = { 0 };
     if (shadow_context_init(&ctx, NULL, w, g, &p, 0, 0)) {
         shadow_context_free(&ctx);
         return -1;
@@ -239,10 +240,11 @@ int volume_plan_bound(VolumePlan *plan, const World *w)
 static int measure_hst(VolumePlan *plan, const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv,
                        double nth, const CostModel *cost)
 {
+    /* hst's thread state (the volume methods' without pixel coherence) */
     ShadowContext ctx;
-    ShadowPrepared p = { .decider = shadow_method_find("hst"), .volumes = (ShadowVolumes *)sv,
-                         .cost = (CostModel *)cost, .nth = nth };
-    if (shadow_context_init(&ctx, NULL, w, g, &p, 0, 0)) {
+    ShadowPrepared p = { .volumes = (ShadowVolumes *)sv, .cost = (CostModel *)cost, .nth = nth };
+    if (shadow_context_init(&ctx, NULL, w, g, &p, 0, 0) || shadow_volume_thread_init(&ctx, &p, 0)) {
+        shadow_volume_thread_free(&ctx);
         shadow_context_free(&ctx);
         return -1;
     }
@@ -310,6 +312,7 @@ static int measure_hst(VolumePlan *plan, const World *w, const Grid *g, const Bv
     free(ncells);
     free(in_box);
     free(hits);
+    shadow_volume_thread_free(&ctx);
     shadow_context_free(&ctx);
     return status;
 }

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "shadow_embree.h"
+#include "shadow_registry.h"
 
 void vs_povray_options_usage(FILE *f)
 {

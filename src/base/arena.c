@@ -1,6 +1,5 @@
-/* A bump allocator: a scene's many small pieces are freed in one call, which
- * also keeps error paths (the parser unwinds with longjmp) free of leaks. */
-#include "scene.h"
+/* A bump allocator (arena.h). */
+#include "arena.h"
 #include "big_memory.h"
 
 #include <stdint.h>

@@ -1,8 +1,6 @@
 /* Statistics: summing per-thread counters and printing the report. */
 #include "stats.h"
 
-#include "area_light.h"
-
 #include "json_write.h"
 
 #include <errno.h>

@@ -245,9 +245,4 @@ static inline CrossResult shadow_polygon_cross(const ShadowPolygon *sp, Vec3 p1,
 int shadow_bucket_crossings(const ShadowVolumes *sv, const uint32_t *bucket, int n, Vec3 p1, Vec3 p2, int *opaque,
                             int *transparent);
 
-/* Which side of polygon p the light is on, for a point light at `light` or
- * a parallel light along `dir` (unit, toward the light): +1 the normal's
- * side, -1 the other, 0 within tol of p's plane (edge-on). */
-int shadow_light_side(const Polygon *p, const Light *l, double tol);
-
 #endif

@@ -4,7 +4,7 @@
 #include "shadow_volumes.h"
 #include "big_memory.h"
 
-#include "area_light.h"
+#include "light.h"
 
 #include <float.h>
 #include <math.h>
@@ -117,17 +117,6 @@ static int polygon_edges(const World *w, const Polygon *p, PolygonEdge *edges)
             edges[m++] = (PolygonEdge){ s + i, s + (i + 1) % n, left };
     }
     return m;
-}
-
-int shadow_light_side(const Polygon *p, const Light *l, double tol)
-{
-    if (l->kind == LIGHT_PARALLEL) {
-        /* A direction: edge-on when within about 1e-12 rad of the plane. */
-        double s = v3_dot(p->normal, l->direction);
-        return s > 1e-12 ? 1 : s < -1e-12 ? -1 : 0;
-    }
-    double s = v3_dot(p->normal, l->location) - p->d;
-    return s > tol ? 1 : s < -tol ? -1 : 0;
 }
 
 /* ---- edge contributions and merging -------------------------------------- */
@@ -587,7 +576,7 @@ static int classify_light(ShadowVolumes *sv, LightVolumes *lv, const World *w, c
         const Polygon *p = &w->polygons[pi];
         const Material *m = &w->materials[p->material];
         OccluderSide *o = &lv->occluder[pi];
-        o->light_side = (int8_t)shadow_light_side(p, l, tol);
+        o->light_side = (int8_t)light_side_of(p, l, tol);
         o->channel = (int8_t)(m->no_shadow || o->light_side == 0 ? 0 : m->opaque ? 1 : 2);
         if (!o->channel)
             continue;

@@ -39,7 +39,7 @@
 #include "clock.h"
 #include "config.h"
 #include "intersect.h"
-#include "shadow_volumes.h"
+#include "light.h"
 
 #ifdef HAVE_EMBREE
 #include <embree3/rtcore.h>
@@ -154,7 +154,7 @@ static int meet(EmbreeRay *er, uint32_t pi, double t)
     ShadowContext *ctx = er->ctx;
     const World *w = er->es->world;
     const Polygon *p = &w->polygons[pi];
-    if (shadow_light_side(p, er->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
+    if (light_side_of(p, er->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
     if (w->materials[p->material].opaque) {
         er->blocker = (int)pi;

@@ -182,10 +182,11 @@ static double time_shadow_rays(const World *w, const Grid *g, const Bvh *bvh, co
 static double time_gathering(const World *w, const Grid *g, const ShadowVolumes *sv, int width, int height,
                              const int *lights, int nlights, volatile double *sink, int full)
 {
-    /* the volume method's thread state: the buckets and the cells recorded */
+    /* the volume methods' thread state: the buckets and the cells recorded */
     ShadowContext ctx;
-    ShadowPrepared p = { .decider = shadow_method_find("volume"), .volumes = (ShadowVolumes *)sv };
-    if (shadow_context_init(&ctx, NULL, w, g, &p, 0, 0)) {
+    ShadowPrepared p = { .volumes = (ShadowVolumes *)sv };
+    if (shadow_context_init(&ctx, NULL, w, g, &p, 0, 0) || shadow_volume_thread_init(&ctx, &p, 0)) {
+        shadow_volume_thread_free(&ctx);
         shadow_context_free(&ctx);
         return 0.0;
     }
@@ -222,6 +223,7 @@ static double time_gathering(const World *w, const Grid *g, const ShadowVolumes 
         }
     }
     free(cells);
+    shadow_volume_thread_free(&ctx);
     shadow_context_free(&ctx);
     return best < HUGE_VAL ? best : 0.0;
 }

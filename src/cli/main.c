@@ -25,6 +25,7 @@
 #include "area_light.h"
 #include "shadow.h"
 #include "shadow_embree.h"
+#include "shadow_registry.h"
 #include "shadow_volumes.h"
 #include "stats.h"
 #include "stitch.h"

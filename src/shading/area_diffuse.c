@@ -3,7 +3,7 @@
 
 #include <math.h>
 
-#include "area_light.h"
+#include "area_light_samples.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

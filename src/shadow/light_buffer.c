@@ -44,7 +44,7 @@
 
 #include "clock.h"
 #include "intersect.h"
-#include "shadow_volumes.h"
+#include "light.h"
 
 /* The cells' widening in the face's coordinates (which run from -1 to 1):
  * far above the rounding of a direction's coordinates (1e-16), far below a
@@ -381,7 +381,7 @@ static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb,
                 continue;
             const Polygon *p = &w->polygons[b->items[k]];
             /* edge-on to the light: the shadow ray passes it (shadow_conventional.c) */
-            if (shadow_light_side(p, light, lbs->tolerance) == 0)
+            if (light_side_of(p, light, lbs->tolerance) == 0)
                 continue;
             if (polygon_outside(w, p, pyr, lb->at, lbs->margin))
                 continue;

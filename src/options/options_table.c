@@ -16,6 +16,7 @@
 #include "grid.h"
 #include "shadow.h"
 #include "shadow_embree.h"
+#include "shadow_registry.h"
 #include "shadow_volumes.h"
 
 #define MAX_DIMENSION 32768

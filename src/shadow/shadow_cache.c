@@ -17,17 +17,11 @@
 #include "shadow.h"
 
 #include "intersect.h"
-#include "shadow_volumes.h"
+#include "light.h"
 
 #define CACHE_WARM_UP 16     /* tries before the tally is believed */
 #define CACHE_PAYS_ONE_IN 8  /* the hit rate below which trying first costs more than it saves */
 #define CACHE_PROBE_EVERY 16 /* a cache that does not pay is still tried this often */
-
-void shadow_cache_forget(ShadowContext *ctx, int nlights)
-{
-    for (int i = 0; i < nlights; i++)
-        ctx->light_cache[i] = (LightCache){ .blocker = -1 };
-}
 
 /* Whether this query tries light c's cache, by the tally so far. */
 static int cache_worth_trying(LightCache *c)
@@ -50,7 +44,7 @@ int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
     const Polygon *p = &w->polygons[pi];
     /* The shadow ray's own rule for a polygon edge-on to the light (an area
      * light's sample may see edge-on what blocked another sample). */
-    if (shadow_light_side(p, q->source, grid_tolerance(ctx->tracer->grid)) == 0)
+    if (light_side_of(p, q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
     ctx->stats.shadow_polygon_tests++;
     /* The shadow ray's test on the shadow ray's frame (the same numbers,
@@ -104,3 +98,9 @@ int shadow_cache_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *li
     }
     return 0;
 }
+
+const ShadowMethod shadow_cache_method = {
+    .name = "cache",
+    .summary = "shadow rays that first try the light's last opaque blocker (as POV-Ray does)",
+    .test = shadow_cache_test,
+};

@@ -13,6 +13,7 @@
 #include "clock.h"
 #include "fog.h"
 #include "intersect.h"
+#include "light.h"
 #include "pigment.h"
 #include "shadow.h"
 #include "shadow_decide.h"
