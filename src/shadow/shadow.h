@@ -122,6 +122,7 @@ typedef struct ShadowContext {
     int last_blocker;          /* polygon that blocked the last shadow ray, or -1 */
     int last_filtered;         /* transparent polygons the last shadow ray passed */
     unsigned shadow_timer;     /* decisions until the next timed one (shadow_decide.c) */
+    double clock_floor;        /* the least interval between two reads of the clock (shadow_decide.h) */
     LightCache *light_cache;   /* cache method: per light, the last opaque blocker and how often it pays */
     FilteredHit *filtered;     /* the shadow ray's see-through polygons, one slot for each of the world's */
     int nfiltered;

@@ -126,7 +126,10 @@ static void answer(ShadowContext *ctx, const ShadowQuery *q, int condition, RGB 
     }
 }
 
-/* The shadow ray, and what it tells about the polygons. */
+/* The shadow ray, and what it tells about the polygons; counts the
+ * decision. Where the context has the lights' light buffers (hst's, as
+ * its preparation found them worth it), the light's buffer decides the
+ * polygon part: the shadow ray's answer, by its cell (shadow_light_buffer.c). */
 static void conventional(ShadowContext *ctx, const ShadowQuery *q, LightState *out, RGB *light)
 {
     ctx->last_scheme = SCHEME_CONVENTIONAL;
@@ -135,12 +138,20 @@ static void conventional(ShadowContext *ctx, const ShadowQuery *q, LightState *o
     out->self = 0;
     out->condition = COND_UNKNOWN;
     if (shadow_planes_test(ctx, q, light)) {
+        ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
         ctx->stats.shadow_blocked++;
         return;
     }
     ctx->last_filtered = 0;
-    if (shadow_polygons_test(ctx, q, light)) {
-        ctx->stats.shadow_blocked++;
+    int blocked;
+    if (ctx->light_buffers) {
+        blocked = shadow_light_buffer_polygons_test(ctx, q, light); /* counts its scheme and blocked */
+    } else {
+        ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
+        blocked = shadow_polygons_test(ctx, q, light);
+        ctx->stats.shadow_blocked += (uint64_t)blocked;
+    }
+    if (blocked) {
         out->condition = COND_BLOCKED;
     } else if (ctx->last_filtered) {
         out->condition = COND_FILTERED;
@@ -195,10 +206,8 @@ static void decide(ShadowContext *ctx, const ShadowQuery *q, Mode mode, int face
         out->depth_known = 0;
         out->self = 0;
         out->condition = COND_UNKNOWN;
-        if (light) {
+        if (light)
             conventional(ctx, q, out, light);
-            ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
-        }
         return;
     }
     SegmentView v;
@@ -284,7 +293,6 @@ static void decide(ShadowContext *ctx, const ShadowQuery *q, Mode mode, int face
         out->depth_known = 0;
         out->condition = COND_UNKNOWN;
     }
-    ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
 }
 
 void shadow_volume_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
