@@ -19,7 +19,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/hstmethods.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 out="$here/methods.md"
 size="--width 640 --height 480 --threads 1"
-variants="conventional cache volume hst hst:auto:off hst:per-point planned"
+variants="conventional cache volume light-buffer hst hst:auto:off hst:per-point planned"
 {
     echo "# Shadow methods side by side"
     echo

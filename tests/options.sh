@@ -225,7 +225,7 @@ check "--pixel-coherence on carries counts from the neighbouring pixel ($(json "
 # --- --shadows METHOD ---------------------------------------------------------
 # (N_th fixed: eq. 7 depends on timings, and the counts checked on N_th;
 # every light's volumes built: which pay depends on timings too)
-for m in hst conventional cache volume none; do
+for m in hst conventional cache volume light-buffer none; do
     # shellcheck disable=SC2086
     run "$desk" $size --volumes always --nth 1e9 --shadows $m -o "$work/sh-$m.exr" --stats-json "$work/sh-$m.json"
 done
@@ -240,17 +240,17 @@ shadows_volume() { method_is volume && gt "$(scheme "$(sj volume)" volume)" 0 &&
 shadows_hst() { method_is hst && gt "$(scheme "$(sj hst)" sustain)" 0 && gt "$(scheme "$(sj hst)" volume)" 0; }
 shadows_none() {
     method_is none && [ "$(json "$(sj none)" shadow_rays)" = 0 ] && ! same_pixels "$work/sh-none.exr" "$work/sh-hst.exr" &&
-        [ "$(schemes "$(sj none)")" = '"sustain": 0, "self-shadow": 0, "volume": 0, "conventional": 0, "cache hit": 0, "area lit": 0, "area umbra": 0, "area beam": 0' ]
+        [ "$(schemes "$(sj none)")" = '"sustain": 0, "self-shadow": 0, "volume": 0, "conventional": 0, "cache hit": 0, "area lit": 0, "area umbra": 0, "area beam": 0, "buffer lit": 0, "buffer cover": 0, "buffer list": 0' ]
 }
 same_shadows() {
-    for m in conventional cache volume; do same_pixels "$work/sh-$m.exr" "$work/sh-hst.exr" || return 1; done
+    for m in conventional cache volume light-buffer; do same_pixels "$work/sh-$m.exr" "$work/sh-hst.exr" || return 1; done
 }
 check "--shadows conventional: every decision by the shadow ray ($(schemes "$(sj conventional)"))" shadows_conventional
 check "--shadows cache: cache hits, no counting ($(schemes "$(sj cache)"))" shadows_cache
 check "--shadows volume: shadow volumes, no sustain ($(schemes "$(sj volume)"))" shadows_volume
 check "--shadows hst: sustain and shadow volumes ($(schemes "$(sj hst)"))" shadows_hst
 check "--shadows none: no method decides, no shadow ray, and another image than hst's" shadows_none
-check "--shadows conventional, cache, volume and hst: the same image" same_shadows
+check "--shadows conventional, cache, volume, light-buffer and hst: the same image" same_shadows
 
 # --- --volumes auto|always -----------------------------------------------------
 # A mesh of 20000 triangles seen at 16x12: 192 camera rays ask at most 192

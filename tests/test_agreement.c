@@ -195,15 +195,13 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
     LightBuffers lbs;
     int light_buffer = strcmp(v->method, "light-buffer") == 0;
     if (light_buffer) {
-        /* nth 1: split at once (the split's work mark is one test) */
+        /* nth 1: every cell split, down to the last level */
         if (light_buffers_init(&lbs, w, bvh, grid_tolerance(g), (size_t)64 << 20)) {
             fprintf(stderr, "out of memory\n");
             exit(99);
         }
-        if (v->nth > 0) {
-            lbs.split_work = 1;
-            lbs.split_at = 0;
-        }
+        if (v->nth > 0)
+            lbs.split_at = 0; /* every cell split */
         prepared.light_buffers = &lbs;
     }
     if (shadow_context_init(&ctx, NULL, w, g, &prepared, 0, 0) || (v->coherence && pixel_coherence_init(&pc, w, g))) {

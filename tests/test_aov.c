@@ -247,8 +247,10 @@ static void check_known_scene(const Method *m, int exr_float)
                 bad[5] += code1 != 4 && !(code1 == 5 && blocked);
             else if (strcmp(m->name, "volume") == 0)
                 bad[5] += code1 != 3 && code1 != 4;
-            else
-                bad[5] += code1 < 1 || code1 > 4 || code1 == 2; /* sustain, volume or conventional */
+            else if (strcmp(m->name, "light-buffer") == 0)
+                bad[5] += code1 != 5 && (code1 < 11 || code1 > 13); /* the cache's hit, or a cell's */
+            else /* sustain, volume, or a decision as the shadow ray's: its own, the cache's or a light buffer's */
+                bad[5] += code1 < 1 || code1 == 2 || (code1 > 5 && code1 < 11) || code1 > 13;
             /* Facing away: hst decides (sustain or self-shadow), volume keeps
              * its count (volume) or defers (6), the others do not ask (6). */
             if (strcmp(m->name, "hst") == 0)
@@ -260,8 +262,9 @@ static void check_known_scene(const Method *m, int exr_float)
             /* The opaque occluder is the only one counted; the shadow ray
              * knows the count only where light got through (0). */
             float d = at(&c, "depth.L1", x, y);
+            int by_ray = code1 == 4 || code1 == 5 || (code1 >= 11 && code1 <= 13);
             if (m->has_states)
-                bad[7] += !(d == (blocked ? 1 : 0) || (d == -1 && code1 == 4));
+                bad[7] += !(d == (blocked ? 1 : 0) || (d == -1 && by_ray));
             else
                 bad[7] += d != (blocked ? -1 : 0);
             double loss = (1.0 - vis) * cosine;
@@ -360,7 +363,8 @@ static void check_masks(const char *name)
                 snprintf(ch, sizeof ch, "hst.L%d", l);
                 unsigned code = (unsigned)at(&c, ch, x, y);
                 snprintf(ch, sizeof ch, "shadow.L%d", l);
-                any_blocked |= code >= 1 && code <= 5 && at(&c, ch, x, y) < 1.0f;
+                /* decided by a method: 1 to 5, or a light buffer's cell (11 to 13) */
+                any_blocked |= ((code >= 1 && code <= 5) || (code >= 11 && code <= 13)) && at(&c, ch, x, y) < 1.0f;
             }
             int changed = 0, is_mask = 0;
             static const char *const rgb[3] = {"R", "G", "B"}, *const lrgb[3] = {"shadow.loss.R", "shadow.loss.G",
@@ -407,13 +411,14 @@ int main(void)
         printf("Bail out! cannot write %s\n", path);
         return 1;
     }
-    static const Method methods[] = {{"conventional", 0}, {"cache", 0}, {"volume", 1}, {"hst", 1}};
-    for (int k = 0; k < 4; k++)
+    static const Method methods[] = {{"conventional", 0}, {"cache", 0}, {"volume", 1}, {"hst", 1}, {"light-buffer", 0}};
+    for (int k = 0; k < 5; k++)
         check_known_scene(&methods[k], 0);
     check_known_scene(&methods[3], 1);
 
     check_threads("hst");
     check_threads("cache");
+    check_threads("light-buffer");
 
     static const char *const scenes[] = {"desk", "glasses", "stars", "cards", "holes", "mesh2"};
     for (int k = 0; k < 6; k++)

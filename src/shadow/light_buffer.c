@@ -1,5 +1,5 @@
 /* The light buffer (light_buffer.h): cells built lazily by walking the
- * hierarchy with their pyramids, split where their points work hard.
+ * hierarchy with their pyramids, split where their lists are long.
  *
  * The bound behind "covers the cell". A cover is an opaque convex polygon
  * whose plane the cell's four (widened) corner rays from the light cross
@@ -186,11 +186,25 @@ static float round_down(double x)
     return (double)f > x ? nextafterf(f, -INFINITY) : f;
 }
 
-/* Where polygon p lies on the face (light_buffer.h): the box of its
- * points' directions in the face's coordinates, padded for the pyramids'
- * margin at its distance (near) and for rounding. The whole face and
- * beyond when it cannot be told: a point behind the light or too near it,
- * seen from this face. */
+/* Where polygon p lies on the face (light_buffer.h): the box of the
+ * directions, in the face's coordinates, of its points in front of the
+ * face, clamped to [-2, 2] (the cells lie within 1 and their margins of 0),
+ * padded for the pyramids' margin at its distance (near) and for rounding.
+ * The whole face and beyond when the polygon passes too near the light to
+ * tell.
+ *
+ * A point X of the polygon (from the light) at least near away whose
+ * direction lies within 2 of the face's axis has a >= |X| / 3 along it; one
+ * with a < near / 4 lies farther out than that (its other coordinates are
+ * at least 0.68 near). So the polygon is clipped to a >= near / 4: its part
+ * there lies in the convex hull of its points there and of the crossings of
+ * the plane a = near / 4 by the segments between its points on either side
+ * (a convex hull cut by a plane), whose directions the box holds, a
+ * central projection keeping convex hulls for points in front. A shift of
+ * the margin m at such a point turns its direction by at most
+ * m (1 + |u|) / a <= 9 m / near in the face's coordinates: 16 m / near is
+ * padded, and the cells' widening and the float's rounding. */
+#define LB_FOOTPRINT_POINTS 32 /* polygons of more points get the whole face */
 static LbFootprint footprint(const LightBuffers *lbs, const Polygon *p, Vec3 at, int face, double near)
 {
     const LbFootprint anywhere = { -INFINITY, INFINITY, -INFINITY, INFINITY };
@@ -200,25 +214,42 @@ static LbFootprint footprint(const LightBuffers *lbs, const Polygon *p, Vec3 at,
         return anywhere;
     int n;
     const Vec3 *pts = polygon_points(lbs->world, p, &n);
-    double box[4] = { INFINITY, -INFINITY, INFINITY, -INFINITY };
+    if (n > LB_FOOTPRINT_POINTS)
+        return (LbFootprint){ -2.5f, 2.5f, -2.5f, 2.5f };
+    const double clip = 0.25 * near;
+    double a[LB_FOOTPRINT_POINTS], b[LB_FOOTPRINT_POINTS], c[LB_FOOTPRINT_POINTS];
     for (int i = 0; i < n; i++) {
         Vec3 d = v3_sub(pts[i], at);
-        double a = s * comp(d, axis);
-        if (!(a > 1e-6 * v3_length(d)))
-            return anywhere;
-        double u = comp(d, (axis + 1) % 3) / a, v = comp(d, (axis + 2) % 3) / a;
-        box[0] = fmin(box[0], u);
-        box[1] = fmax(box[1], u);
-        box[2] = fmin(box[2], v);
-        box[3] = fmax(box[3], v);
+        a[i] = s * comp(d, axis);
+        b[i] = comp(d, (axis + 1) % 3);
+        c[i] = comp(d, (axis + 2) % 3);
     }
-    /* The polygon lies in the convex hull of its points, whose directions
-     * the box holds (a central projection keeps convex hulls, for points in
-     * front). A shift of the margin at distance near or more turns a
-     * direction by at most margin / near, at most twice that in the face's
-     * coordinates where they are within 1 (a cell's range); four times for
-     * safety, and the cells' widening. */
-    double pad = 4.0 * lbs->margin / near + LB_WIDEN + LB_FLOAT_PAD;
+    double box[4] = { INFINITY, -INFINITY, INFINITY, -INFINITY };
+    int any = 0;
+#define LB_TAKE(aa, bb, cc)                                                                                           \
+    do {                                                                                                              \
+        double u_ = (bb) / (aa), v_ = (cc) / (aa);                                                                    \
+        box[0] = fmin(box[0], u_), box[1] = fmax(box[1], u_);                                                         \
+        box[2] = fmin(box[2], v_), box[3] = fmax(box[3], v_);                                                         \
+        any = 1;                                                                                                      \
+    } while (0)
+    for (int i = 0; i < n; i++) {
+        if (!(a[i] >= clip))
+            continue;
+        LB_TAKE(a[i], b[i], c[i]);
+        for (int j = 0; j < n; j++) {
+            if (a[j] >= clip)
+                continue;
+            double t = (a[i] - clip) / (a[i] - a[j]); /* from i toward j, to the plane */
+            LB_TAKE(clip, b[i] + t * (b[j] - b[i]), c[i] + t * (c[j] - c[i]));
+        }
+    }
+#undef LB_TAKE
+    if (!any)
+        return (LbFootprint){ INFINITY, -INFINITY, INFINITY, -INFINITY }; /* wholly behind: on no cell */
+    for (int k = 0; k < 4; k++)
+        box[k] = fmin(fmax(box[k], -2.0), 2.0);
+    double pad = 16.0 * lbs->margin / near + LB_WIDEN + LB_FLOAT_PAD;
     LbFootprint f = { round_down(box[0] - pad), round_up(box[1] + pad), round_down(box[2] - pad),
                       round_up(box[3] + pad) };
     return f;
@@ -465,11 +496,16 @@ static size_t cell_bytes(size_t n)
 /* Takes `bytes` of the budget: 0, or -1 when it would go past it. */
 static int budget_take(LightBuffers *lbs, size_t bytes)
 {
+    if (atomic_load_explicit(&lbs->exhausted, memory_order_relaxed))
+        return -1;
     size_t before = atomic_fetch_add(&lbs->bytes, bytes);
     if (before + bytes <= lbs->budget)
         return 0;
     atomic_fetch_sub(&lbs->bytes, bytes);
     atomic_fetch_add(&lbs->full, 1);
+    /* past the budget no cell is tried again (each try would gather its
+     * list for nothing): the cells there stand, the shadow ray serves the rest */
+    atomic_store_explicit(&lbs->exhausted, 1, memory_order_relaxed);
     return -1;
 }
 
@@ -542,9 +578,23 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
     c->n = (uint32_t)n;
     c->cover = cover;
     c->cover_beyond = beyond;
-    atomic_init(&c->child, NULL);
-    /* a cell too short, or at the last level, never splits: its work is not counted */
-    atomic_init(&c->work, n > lbs->split_at && at->level < LB_LEVELS - 1 ? 0 : UINT32_MAX);
+    /* A long list above the last level: split, its children built as
+     * points ask. Decided by the list alone, so that which cell answers a
+     * point does not depend on the order points came in (the threads'
+     * timing): the sub-schemes and analysis channels are the same for
+     * any number of threads. */
+    _Atomic(LbCell *) *child = NULL;
+    /* (a split that left the list nearly as long as its parent's, its
+     * candidates wider than the cells, is not split again) */
+    int shorter = !parent || 4 * n < 3 * (size_t)parent->n;
+    if (n > lbs->split_at && shorter && at->level < LB_LEVELS - 1 && budget_take(lbs, CHILDREN_BYTES) == 0) {
+        child = malloc(CHILDREN_BYTES);
+        if (!child)
+            atomic_fetch_sub(&lbs->bytes, CHILDREN_BYTES);
+        for (int k = 0; child && k < LB_SUB * LB_SUB; k++)
+            atomic_init(&child[k], NULL);
+    }
+    atomic_init(&c->child, child);
     c->near = near;
     c->u0 = fu0;
     c->u1 = fu1;
@@ -599,33 +649,6 @@ static CellAt cell_at(const LbSpot *spot, int level)
     return at;
 }
 
-void light_buffer_cell_worked(LightBuffers *lbs, LightBuffer *lb, const LbCell *c, const LbSpot *spot, uint32_t work,
-                              double *built)
-{
-    (void)lb;
-    (void)spot;
-    *built = 0.0;
-    LbCell *cell = (LbCell *)c; /* its counter and children are the only parts that change */
-    uint_fast32_t before = atomic_load_explicit(&cell->work, memory_order_relaxed);
-    if (before >= lbs->split_work)
-        return; /* split, or never to be */
-    before = atomic_fetch_add_explicit(&cell->work, work, memory_order_relaxed);
-    if (before >= lbs->split_work || before + work < lbs->split_work)
-        return;
-    /* this thread took the cell past the mark: it makes the children's
-     * slots, which points fill as they ask */
-    if (budget_take(lbs, CHILDREN_BYTES))
-        return;
-    _Atomic(LbCell *) *child = malloc(CHILDREN_BYTES);
-    if (!child) {
-        atomic_fetch_sub(&lbs->bytes, CHILDREN_BYTES);
-        return;
-    }
-    for (int k = 0; k < LB_SUB * LB_SUB; k++)
-        atomic_init(&child[k], NULL);
-    atomic_store_explicit(&cell->child, child, memory_order_release);
-}
-
 /* Publishes a top cell built into *slot, unless another thread was first:
  * then that one's is kept and this one freed. Returns the cell in place. */
 static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c)
@@ -636,7 +659,7 @@ static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c)
         atomic_fetch_add(&lbs->candidates, c->n);
         return c;
     }
-    atomic_fetch_sub(&lbs->bytes, cell_bytes(c->n));
+    atomic_fetch_sub(&lbs->bytes, cell_bytes(c->n) + (atomic_load(&c->child) ? CHILDREN_BYTES : 0));
     cell_free(c);
     return expected;
 }
@@ -667,6 +690,8 @@ const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot
     CellAt top = cell_at(spot, 0);
     _Atomic(LbCell *) *slot = &lb->top[spot->face][top.j * LB_TOP + top.i];
     LbCell *c = atomic_load_explicit(slot, memory_order_acquire);
+    if (!c && atomic_load_explicit(&lbs->exhausted, memory_order_relaxed))
+        return NULL;
     if (!c) {
         double t0 = clock_wall();
         CandidateList l = { 0 };
@@ -687,6 +712,8 @@ const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot
         CellAt at = cell_at(spot, c->level + 1);
         _Atomic(LbCell *) *slot_c = &child[(at.j & (LB_SUB - 1)) * LB_SUB + (at.i & (LB_SUB - 1))];
         LbCell *next = atomic_load_explicit(slot_c, memory_order_acquire);
+        if (!next && atomic_load_explicit(&lbs->exhausted, memory_order_relaxed))
+            return c; /* the budget: the parent's list serves */
         if (!next) {
             double t0 = clock_wall();
             next = build_child(lbs, lb, c, &at);
@@ -707,12 +734,12 @@ int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double
     lbs->bvh = bvh;
     lbs->tolerance = tolerance;
     lbs->budget = budget;
-    lbs->split_work = LB_SPLIT_WORK;
     lbs->split_at = LB_SPLIT_AT;
     atomic_init(&lbs->bytes, 0);
     atomic_init(&lbs->cells, 0);
     atomic_init(&lbs->candidates, 0);
     atomic_init(&lbs->full, 0);
+    atomic_init(&lbs->exhausted, 0);
     double size = 0.0;
     if (w->bounds_min.x <= w->bounds_max.x)
         size = fmax(v3_max_abs(w->bounds_min), v3_max_abs(w->bounds_max));

@@ -30,13 +30,14 @@
  * Everything else is the shadow ray's own test.
  *
  * Cells are built lazily, the first time a point asks: a top cell by
- * walking the hierarchy with its pyramid; a cell whose points have done
- * LB_SPLIT_WORK candidate tests is split into LB_SUB x LB_SUB children at
- * once, each candidate going to the children its footprint on the face
- * overlaps, down to LB_LEVELS levels. Cells are shared by the render's
- * threads: each is built by one and published atomically (a thread that
- * loses the race frees its copy), and only its work counter and children
- * change after that. Their memory is counted against a budget; past it,
+ * walking the hierarchy with its pyramid; a cell of more than LB_SPLIT_AT
+ * candidates above the last of LB_LEVELS levels is split into LB_SUB x
+ * LB_SUB children, each built from its parent's list (the candidates whose
+ * footprints overlap it) when a point first asks. Cells are shared by the
+ * render's threads: each is built by one and published atomically (a
+ * thread that loses the race frees its copy), and read-only after that;
+ * which cell answers a point depends on the lists alone, not on the order
+ * points came in. Their memory is counted against a budget; past it,
  * no cell is built and the shadow ray decides. */
 #ifndef HST_LIGHT_BUFFER_H
 #define HST_LIGHT_BUFFER_H
@@ -52,8 +53,7 @@
 #define LB_TOP 8       /* cells per side of a face at the top level */
 #define LB_SUB 4        /* a split cell's children per side (two bits of index a level) */
 #define LB_LEVELS 4     /* levels, the top one included */
-#define LB_SPLIT_AT 8   /* a cell with more candidates than this may split (above the last level) ... */
-#define LB_SPLIT_WORK 8192 /* ... once its points have done this much work (candidates looked at, tests) */
+#define LB_SPLIT_AT 32  /* a cell with more candidates than this splits (above the last level) */
 /* the finest cells per side of a face */
 #define LB_FINE (LB_TOP << (2 * (LB_LEVELS - 1)))
 
@@ -118,7 +118,6 @@ typedef struct LbCell {
     /* split: LB_SUB x LB_SUB slots for its children, row by row, each
      * built from this cell's list when a point first asks; else NULL */
     _Atomic(_Atomic(struct LbCell *) *) child;
-    atomic_uint_fast32_t work; /* work done in it, while it may split */
     /* Per candidate, in blocks (n rounded up to LB_BLOCK): a lower bound of
      * its distance from the light (ascending), and its footprint. */
     const float *near, *u0, *u1, *v0, *v1;
@@ -146,11 +145,11 @@ typedef struct LightBuffers {
     LightBuffer **light;    /* per light: its buffer, or NULL (not a point light) */
     uint32_t *item_of;      /* per polygon, its leaf item in the hierarchy */
     size_t budget;          /* bytes the cells may take */
-    uint32_t split_work;    /* LB_SPLIT_WORK (tests set less) */
     uint32_t split_at;      /* LB_SPLIT_AT (tests set less) */
     atomic_size_t bytes;    /* ... taken */
     atomic_uint_fast64_t cells, candidates; /* cells published, and their list entries */
     atomic_uint_fast64_t full; /* cells not built for the budget */
+    atomic_int exhausted;   /* 1: the budget is spent, no more cells are built */
 } LightBuffers;
 
 /* Buffers for the point lights of w (not parallel ones; area lights'
@@ -171,11 +170,6 @@ int light_buffer_spot(Vec3 from_light, LbSpot *spot);
  * budget stops it or memory runs out (then the shadow ray decides).
  * *built: seconds spent building, 0 when the cell was there. */
 const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot *spot, double *built);
-
-/* The cell's points have done `work` more: past the mark, a cell that may
- * split is split, its children built at once. *built: seconds spent. */
-void light_buffer_cell_worked(LightBuffers *lbs, LightBuffer *lb, const LbCell *c, const LbSpot *spot, uint32_t work,
-                              double *built);
 
 /* A point as the plane tests take it: the point, the sum of its
  * coordinates' magnitudes, and 1e-12 of its distance to the light. */

@@ -142,13 +142,6 @@ int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, 
         shadow_cache_remember(ctx, q, light);
     ctx->stats.light_buffer_scanned += looked;
     ctx->stats.light_buffer_candidates += tests;
-    /* the work a split would cut: candidates looked at, and tests at some
-     * four times the cost */
-    if (looked && atomic_load_explicit(&((LbCell *)cell)->work, memory_order_relaxed) < lbs->split_work) {
-        double built;
-        light_buffer_cell_worked(lbs, lb, cell, &spot, looked + 3 * tests, &built);
-        count_build(ctx, built);
-    }
     return blocked;
 }
 
