@@ -17,6 +17,7 @@
 #include "bvh.h"
 #include "cost_model.h"
 #include "grid.h"
+#include "light_buffer.h"
 #include "parser.h"
 #include "render.h"
 #include "shadow.h"
@@ -85,6 +86,32 @@ static void render_tiny(const Scene *scene)
             image_free(&img);
         shadow_volumes_free(&volumes);
     }
+    /* The light buffers (shadow_light_buffer.c), every cell split down to
+     * the last level so that the children's lists are built too. */
+    LightBuffers buffers;
+    if (light_buffers_init(&buffers, &world, &bvh, grid_tolerance(&grid), (size_t)16 << 20) == 0) {
+        buffers.split_at = 0;
+        RenderOptions ropt;
+        memset(&ropt, 0, sizeof ropt);
+        ropt.width = 4;
+        ropt.height = 3;
+        ropt.threads = 1;
+        Quality q = { 1, 1, 1, 0, 1, 1, 1 };
+        ropt.quality = q;
+        ShadowPrepared prepared;
+        memset(&prepared, 0, sizeof prepared);
+        prepared.decider = shadow_method_find("light-buffer");
+        prepared.light_buffers = &buffers;
+        prepared.cost = &cost;
+        ropt.shadows = &prepared;
+        ropt.max_tree_rays = RENDER_DEFAULT_MAX_TREE_RAYS;
+        ropt.bvh = &bvh;
+        Image img;
+        RenderStats stats;
+        if (render_image(&world, &grid, &ropt, &img, &stats) == 0)
+            image_free(&img);
+    }
+    light_buffers_free(&buffers);
     /* The cost model's plan of which volumes pay: its pilot, its estimate
      * on a sample of the polygons, and whatever it builds. */
     VolumePlan plan;
