@@ -139,7 +139,7 @@ for mesh, label in (("mesh-1e5", "10^5 triangles x 4 lights"), ("mesh-1e6", "10^
         c = [open(f"{work}/{mesh}.{m}.{r}.cpu").read().split() for r in range(1, mesh_runs + 1)]
         row[m] = (med(float(x[0]) for x in c), med(int(x[1]) for x in c) / 1024)
     d = load(f"{work}/{mesh}.hst.1.json")
-    lb = "cells " + str(d["light_buffer"]["cells"]) if "light_buffer" in d else "none (a quarter of a polygon per pixel exceeded)"
+    lb = "cells " + str(d["light_buffer"]["cells"]) if "light_buffer" in d else "none (more than one polygon in 20 pixels)"
     print(f"| {label} | {row['conventional'][0]:.2f} | {row['hst'][0]:.2f} | {row['hst'][0] / row['conventional'][0]:.3f} | "
           f"{row['conventional'][1]:.0f} | {row['hst'][1]:.0f} | {row['hst'][1] / row['conventional'][1]:.3f} | {lb} |")
 print()

@@ -52,8 +52,8 @@
 
 #define LB_TOP 8       /* cells per side of a face at the top level */
 #define LB_SUB 4        /* a split cell's children per side (two bits of index a level) */
-#define LB_LEVELS 4     /* levels, the top one included */
-#define LB_SPLIT_AT 32  /* a cell with more candidates than this splits (above the last level) */
+#define LB_LEVELS 3     /* levels, the top one included */
+#define LB_SPLIT_AT 64  /* a cell with more candidates than this splits (above the last level) */
 /* the finest cells per side of a face */
 #define LB_FINE (LB_TOP << (2 * (LB_LEVELS - 1)))
 

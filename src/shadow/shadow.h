@@ -320,6 +320,11 @@ void shadow_conventional_test(ShadowContext *ctx, const ShadowQuery *q, RGB *lig
 /* Its two halves, so that methods sharing the plane part stay exact:
  * both multiply into *light and return 1 when it is fully blocked. */
 int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+/* A decision of the planes' part, then (unless a plane blocks) a method's
+ * polygon part, which counts its own scheme: the cache's and the light
+ * buffer's tests. */
+void shadow_planes_then(ShadowContext *ctx, const ShadowQuery *q, RGB *light,
+                        int (*polygons)(ShadowContext *ctx, const ShadowQuery *q, RGB *light));
 int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 /* The polygon part against a list of candidates instead of the hierarchy:
  * the same answer as shadow_polygons_test when the list holds every

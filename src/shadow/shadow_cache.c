@@ -69,14 +69,7 @@ void shadow_cache_remember(ShadowContext *ctx, const ShadowQuery *q, const RGB *
 
 void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    light->r = light->g = light->b = 1.0;
-    ctx->last_scheme = SCHEME_CONVENTIONAL;
-    if (shadow_planes_test(ctx, q, light)) {
-        ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
-        ctx->stats.shadow_blocked++;
-        return;
-    }
-    shadow_cache_polygons_test(ctx, q, light);
+    shadow_planes_then(ctx, q, light, shadow_cache_polygons_test);
 }
 
 int shadow_cache_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)

@@ -109,14 +109,14 @@ int shadow_volume_prepare(const ShadowMethod *self, const ShadowSetup *s, Shadow
     return prepare_volumes(s, VOLUMES_ALWAYS, out, err, errlen);
 }
 
-/* Whether hst keeps light buffers: where their building, which grows with
- * the polygons the lights see, is repaid by the decisions, which grow with
- * the pixels. Measured (callgrind, instructions above --shadows none,
- * 640x480, 1 thread, the light buffer against the shadow ray): make-mesh
- * 10^4 triangles x 4 lights 0.54x, 3x10^4 0.81x, 10^5 1.71x; the paper's
- * scenes (3.6 to 9.4 thousand polygons) 0.43x to 0.60x. So up to a
- * quarter of a polygon per pixel; the cache method beyond. */
-#define HST_LIGHT_BUFFER_POLYGONS_PER_PIXEL 0.25
+/* Whether hst keeps light buffers: where their building and their memory,
+ * which grow with the polygons the lights see, are repaid by the decisions,
+ * which grow with the pixels. Measured (ns per decision, 640x480, 1
+ * thread, the light buffer against the shadow ray): the paper's scenes
+ * (0.0006 to 0.03 polygons per pixel) 0.47x to 0.83x; make-mesh 10^4
+ * triangles x 4 lights (0.033) 0.75x, 3x10^4 (0.098) 1.5x. So up to one
+ * polygon in 20 pixels; the cache method beyond. */
+#define HST_LIGHT_BUFFER_POLYGONS_PER_PIXEL 0.05
 
 static int light_buffers_pay(const ShadowSetup *s)
 {

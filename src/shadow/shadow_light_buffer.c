@@ -147,14 +147,7 @@ int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, 
 
 static void light_buffer_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    light->r = light->g = light->b = 1.0;
-    ctx->last_scheme = SCHEME_CONVENTIONAL;
-    if (shadow_planes_test(ctx, q, light)) {
-        ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
-        ctx->stats.shadow_blocked++;
-        return;
-    }
-    shadow_light_buffer_polygons_test(ctx, q, light);
+    shadow_planes_then(ctx, q, light, shadow_light_buffer_polygons_test);
 }
 
 int shadow_light_buffer_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
