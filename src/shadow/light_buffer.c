@@ -423,7 +423,8 @@ static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb,
                 return -1;
         }
     }
-    qsort(out->c, out->n, sizeof *out->c, by_near);
+    if (out->n > 1) /* (qsort takes no null array, even of none) */
+        qsort(out->c, out->n, sizeof *out->c, by_near);
     return 0;
 }
 
