@@ -670,7 +670,9 @@ int light_buffer_spot(Vec3 d, LbSpot *spot)
     double ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z);
     int axis = ax >= ay ? (ax >= az ? 0 : 2) : (ay >= az ? 1 : 2);
     double major = comp(d, axis);
-    if (!(major != 0.0))
+    /* a point at the light itself has no direction (NaN or infinite
+     * components): no cell, the shadow ray decides */
+    if (!(isfinite(d.x) && isfinite(d.y) && isfinite(d.z)) || !(fabs(major) > 0.0))
         return 0;
     spot->face = 2 * axis + (major < 0.0);
     double inv = 1.0 / fabs(major);

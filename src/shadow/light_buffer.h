@@ -159,7 +159,8 @@ int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double
 void light_buffers_free(LightBuffers *lbs);
 
 /* Where a direction from a light falls on its cube: the face, and the
- * finest cell's indices. 0 for a zero direction. */
+ * finest cell's indices. 0 for a zero or non-finite direction (a point at
+ * the light). */
 typedef struct {
     int face, iu, iv;
     double u, v;            /* the direction in the face's coordinates */
