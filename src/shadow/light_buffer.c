@@ -92,7 +92,6 @@ static void cell_range(const CellAt *at, double *u0, double *u1, double *v0, dou
 typedef struct {
     Vec3 normal[4];
     Vec3 corner[4];
-    double width;   /* in the face's coordinates */
 } Pyramid;
 
 static Pyramid pyramid_of(const CellAt *at)
@@ -112,7 +111,6 @@ static Pyramid pyramid_of(const CellAt *at)
     p.corner[1] = from_face(axis, s, u1, v0);
     p.corner[2] = from_face(axis, s, u1, v1);
     p.corner[3] = from_face(axis, s, u0, v1);
-    p.width = u1 - u0;
     return p;
 }
 
@@ -158,22 +156,6 @@ static int polygon_outside(const World *w, const Polygon *p, const Pyramid *pyr,
     return 0;
 }
 
-/* A lower bound of the distance from the light to polygon p, in float
- * rounded down: the larger of its plane's and its box's distance, shrunk
- * by far more than their rounding. */
-static float near_bound(const Polygon *p, Vec3 at)
-{
-    double plane = fabs(v3_dot(p->normal, at) - p->d);
-    double dx = fmax(fmax(p->bbox_min.x - at.x, at.x - p->bbox_max.x), 0.0);
-    double dy = fmax(fmax(p->bbox_min.y - at.y, at.y - p->bbox_max.y), 0.0);
-    double dz = fmax(fmax(p->bbox_min.z - at.z, at.z - p->bbox_max.z), 0.0);
-    double d = fmax(plane, sqrt(dx * dx + dy * dy + dz * dz)) * (1.0 - 1e-9);
-    float f = (float)d;
-    if ((double)f > d)
-        f = nextafterf(f, 0.0f);
-    return f;
-}
-
 static float round_up(double x)
 {
     float f = (float)x;
@@ -184,6 +166,18 @@ static float round_down(double x)
 {
     float f = (float)x;
     return (double)f > x ? nextafterf(f, -INFINITY) : f;
+}
+
+/* A lower bound of the distance from the light to polygon p, in float
+ * rounded down: the larger of its plane's and its box's distance, shrunk
+ * by far more than their rounding. */
+static float near_bound(const Polygon *p, Vec3 at)
+{
+    double plane = fabs(v3_dot(p->normal, at) - p->d);
+    double dx = fmax(fmax(p->bbox_min.x - at.x, at.x - p->bbox_max.x), 0.0);
+    double dy = fmax(fmax(p->bbox_min.y - at.y, at.y - p->bbox_max.y), 0.0);
+    double dz = fmax(fmax(p->bbox_min.z - at.z, at.z - p->bbox_max.z), 0.0);
+    return round_down(fmax(plane, sqrt(dx * dx + dy * dy + dz * dz)) * (1.0 - 1e-9));
 }
 
 /* Where polygon p lies on the face (light_buffer.h): the box of the
@@ -519,24 +513,23 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
     const World *w = lbs->world;
     const Bvh *b = lbs->bvh;
     Pyramid pyr = pyramid_of(at);
-    /* a parent's cover covers its children: its proof holds for every
-     * point of the parent's widened pyramid, which holds theirs */
+    /* A parent's cover covers its children: its proof holds for every
+     * point of the parent's widened pyramid, which holds theirs. Else the
+     * first candidate (nearest first) proved to cover the cell. */
     int32_t cover = parent ? parent->cover : -1;
     double beyond = parent ? parent->cover_beyond : INFINITY;
     double u0, u1, v0, v1;
     cell_range(at, &u0, &u1, &v0, &v1);
-    for (size_t i = 0, tried = 0; i < l->n && tried < LB_COVER_TRIES && (double)l->c[i].near < beyond && cover < 0; i++) {
+    for (size_t i = 0, tried = 0; cover < 0 && i < l->n && tried < LB_COVER_TRIES; i++) {
         const Polygon *p = &w->polygons[b->items[l->c[i].item]];
         /* a polygon whose footprint does not hold the cell cannot cover it */
         const LbFootprint *f = &l->c[i].footprint;
         if (!w->materials[p->material].opaque || f->u0 > u0 || f->u1 < u1 || f->v0 > v0 || f->v1 < v1)
             continue;
         tried++;
-        double d = cover_beyond(lbs, p, &pyr, lb->at);
-        if (d < beyond) {
-            beyond = d;
+        beyond = cover_beyond(lbs, p, &pyr, lb->at);
+        if (beyond < INFINITY)
             cover = (int32_t)b->items[l->c[i].item];
-        }
     }
     /* Points beyond the cover are blocked by it; nearer ones need no
      * candidate beyond them: what lies beyond the cover is never tested. */
@@ -595,7 +588,7 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
         for (int k = 0; child && k < LB_SUB * LB_SUB; k++)
             atomic_init(&child[k], NULL);
     }
-    atomic_init(&c->child, child);
+    c->child = child;
     c->near = near;
     c->u0 = fu0;
     c->u1 = fu1;
@@ -612,7 +605,7 @@ static void cell_free(LbCell *c)
 {
     if (!c)
         return;
-    _Atomic(LbCell *) *child = atomic_load_explicit(&c->child, memory_order_relaxed);
+    _Atomic(LbCell *) *child = c->child;
     if (child) {
         for (int k = 0; k < LB_SUB * LB_SUB; k++)
             cell_free(atomic_load_explicit(&child[k], memory_order_relaxed));
@@ -660,7 +653,7 @@ static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c)
         atomic_fetch_add(&lbs->candidates, c->n);
         return c;
     }
-    atomic_fetch_sub(&lbs->bytes, cell_bytes(c->n) + (atomic_load(&c->child) ? CHILDREN_BYTES : 0));
+    atomic_fetch_sub(&lbs->bytes, cell_bytes(c->n) + (c->child ? CHILDREN_BYTES : 0));
     cell_free(c);
     return expected;
 }
@@ -709,7 +702,7 @@ const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot
             return NULL;
     }
     for (;;) {
-        _Atomic(LbCell *) *child = atomic_load_explicit(&c->child, memory_order_acquire);
+        _Atomic(LbCell *) *child = c->child;
         if (!child)
             return c;
         CellAt at = cell_at(spot, c->level + 1);

@@ -116,8 +116,10 @@ typedef struct LbCell {
     int32_t cover;          /* an opaque polygon covering the whole cell, or -1 */
     double cover_beyond;    /* ... which blocks every point farther than this from the light */
     /* split: LB_SUB x LB_SUB slots for its children, row by row, each
-     * built from this cell's list when a point first asks; else NULL */
-    _Atomic(_Atomic(struct LbCell *) *) child;
+     * built from this cell's list when a point first asks; else NULL.
+     * Set when the cell is made (its list decides), before it is
+     * published: only the slots change after. */
+    _Atomic(struct LbCell *) *child;
     /* Per candidate, in blocks (n rounded up to LB_BLOCK): a lower bound of
      * its distance from the light (ascending), and its footprint. */
     const float *near, *u0, *u1, *v0, *v1;

@@ -49,8 +49,9 @@ static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, int light
     LbMemo *m = &ctx->light_buffer_memo[light];
     if (m->cell && m->face == spot->face) {
         int shift = 2 * (LB_LEVELS - 1 - m->cell->level);
-        if ((spot->iu >> shift) == m->i && (spot->iv >> shift) == m->j &&
-            !atomic_load_explicit(&((LbCell *)m->cell)->child, memory_order_acquire))
+        /* (a split cell is remembered only where the budget left its
+         * child unbuilt: it is looked up again) */
+        if ((spot->iu >> shift) == m->i && (spot->iv >> shift) == m->j && !m->cell->child)
             return m->cell;
     }
     double built;
