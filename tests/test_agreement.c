@@ -181,6 +181,51 @@ static int decide_one(ShadowContext *ctx, const World *w, const Hit *hit, const 
     return through->r == 0.0 && through->g == 0.0 && through->b == 0.0;
 }
 
+/* The light buffer's block masks, SSE against plain, and its float plane
+ * test against the double bound it stands for (light_buffer.h), on every
+ * cell built, at the points the variant decided. */
+static long mask_blocks, mask_differ, float_passes, float_not_double;
+
+static void check_cell_masks(const LbCell *c, const LbPoint *pt, const LbSpot *spot)
+{
+    if (!c)
+        return;
+    LbPlane pl;
+    for (uint32_t b = 0; b * LB_BLOCK < c->n; b++) {
+        float u = (float)spot->u, v = (float)spot->v;
+        mask_blocks++;
+        mask_differ += lb_block_mask(c, b, INFINITY, u, v, pt) != lb_block_mask_plain(c, b, INFINITY, u, v, pt);
+        for (uint32_t i = b * LB_BLOCK; i < (b + 1) * LB_BLOCK && i < c->n; i++) {
+            if (!lb_float_passed(c, i, pt))
+                continue;
+            float_passes++;
+            pl = lb_plane_at(c, i);
+            float_not_double += !lb_candidate_passed(&pl, pt);
+        }
+    }
+    for (int k = 0; c->child && k < LB_SUB * LB_SUB; k++)
+        check_cell_masks(atomic_load(&c->child[k]), pt, spot);
+}
+
+static void check_masks(const LightBuffers *lbs, const World *w, Hit hits[PROBES][2])
+{
+    for (int k = 0; k < PROBES; k++)
+        for (int s = 0; s < 2; s++) {
+            if (hits[k][s].kind == HIT_NONE)
+                continue;
+            for (int li = 0; li < w->nlights; li++) {
+                LightBuffer *lb = lbs->light[li];
+                LbSpot spot;
+                Vec3 d = v3_sub(hits[k][s].point, w->lights[li].location);
+                if (!lb || !light_buffer_spot(d, &spot))
+                    continue;
+                LbPoint pt = lb_point(hits[k][s].point, v3_length(d));
+                for (int c = 0; c < LB_TOP * LB_TOP; c++)
+                    check_cell_masks(atomic_load(&lb->top[spot.face][c]), &pt, &spot);
+            }
+        }
+}
+
 static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv, const Variant *v,
                         const Probe *probes,
                         Decisions *dec, int vi, Hit hits[PROBES][2])
@@ -258,8 +303,10 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
         pixel_coherence_free(&pc);
     ctx.coherence = NULL; /* this test's own */
     shadow_context_free(&ctx);
-    if (light_buffer)
+    if (light_buffer) {
+        check_masks(&lbs, w, hits);
         light_buffers_free(&lbs);
+    }
 }
 
 static int verbose; /* --verbose: describe the first disagreements */
@@ -662,5 +709,10 @@ int main(int argc, char **argv)
                      "rounding), held to the reference at their own point",
                      variants[vi].label, tot.other_path[vi]);
     }
+    tap_ok(mask_blocks > 0 && mask_differ == 0, "light buffer: SSE block masks equal the plain ones (%ld differ of %ld)",
+           mask_differ, mask_blocks);
+    tap_ok(float_passes > 0 && float_not_double == 0,
+           "light buffer: every plane the float test passes over, the double bound does too (%ld not, of %ld)",
+           float_not_double, float_passes);
     return tap_done();
 }

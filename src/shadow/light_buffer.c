@@ -337,19 +337,43 @@ static LbShape polygon_shape(const LightBuffers *lbs, const Polygon *p, Vec3 at,
     return sh;
 }
 
-/* A candidate as a cell keeps it. */
+/* A candidate as a cell keeps it; its shape kept once, by its top cell
+ * (its index in CandidateList.shapes while the top cell is gathered,
+ * then in the top cell's LbCell.shapes). */
 typedef struct {
     LbPlane plane;
     LbFootprint footprint;
-    LbShape shape;
     float near;
     uint32_t item;
+    uint32_t shape;
 } Candidate;
 
 typedef struct {
     Candidate *c;
     size_t n, cap;
+    LbShape *shapes;    /* a top cell's, as gathered (children use their top cell's) */
+    size_t nshapes, shapes_cap;
 } CandidateList;
+
+static int shape_push(CandidateList *l, const LbShape *sh)
+{
+    if (l->nshapes == l->shapes_cap) {
+        size_t cap = l->shapes_cap ? 2 * l->shapes_cap : 32;
+        LbShape *grown = realloc(l->shapes, cap * sizeof *grown);
+        if (!grown)
+            return -1;
+        l->shapes = grown;
+        l->shapes_cap = cap;
+    }
+    l->shapes[l->nshapes++] = *sh;
+    return 0;
+}
+
+static void candidates_free(CandidateList *l)
+{
+    free(l->c);
+    free(l->shapes);
+}
 
 static int candidate_push(CandidateList *l, const Candidate *c)
 {
@@ -411,9 +435,10 @@ static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb,
             if (polygon_outside(w, p, pyr, lb->at, lbs->margin))
                 continue;
             float near = near_bound(p, lb->at);
-            Candidate cand = { candidate_plane(lbs, p, lb->at), footprint(lbs, p, lb->at, face, near),
-                               polygon_shape(lbs, p, lb->at, face, near, w->materials[p->material].opaque), near, k };
-            if (candidate_push(out, &cand))
+            LbShape shape = polygon_shape(lbs, p, lb->at, face, near, w->materials[p->material].opaque);
+            Candidate cand = { candidate_plane(lbs, p, lb->at), footprint(lbs, p, lb->at, face, near), near, k,
+                               (uint32_t)out->nshapes };
+            if (shape_push(out, &shape) || candidate_push(out, &cand))
                 return -1;
         }
     }
@@ -477,13 +502,16 @@ static double cover_beyond(const LightBuffers *lbs, const Polygon *p, const Pyra
 }
 
 /* A cell and its lists in one allocation: the header (a multiple of 16
- * bytes), the five float arrays of whole blocks (aligned for SSE), the
- * planes, the items. */
+ * bytes), a top cell's shapes (64 bytes each), the nine float arrays of
+ * whole blocks (aligned for SSE: near bounds, footprints, planes), the
+ * items and the shapes' indices. */
+#define LB_FLOAT_ARRAYS 9
 static size_t blocks_of(size_t n) { return (n + LB_BLOCK - 1) / LB_BLOCK * LB_BLOCK; }
 static size_t header_bytes(void) { return (sizeof(LbCell) + 15) / 16 * 16; }
-static size_t cell_bytes(size_t n)
+static size_t cell_bytes(size_t n, size_t nshapes)
 {
-    return header_bytes() + blocks_of(n) * 5 * sizeof(float) + n * (sizeof(LbPlane) + sizeof(LbShape) + sizeof(uint32_t));
+    return header_bytes() + nshapes * sizeof(LbShape) + blocks_of(n) * LB_FLOAT_ARRAYS * sizeof(float) +
+           n * 2 * sizeof(uint32_t);
 }
 
 #define CHILDREN_BYTES (LB_SUB * LB_SUB * sizeof(_Atomic(LbCell *)))
@@ -505,8 +533,9 @@ static int budget_take(LightBuffers *lbs, size_t bytes)
 }
 
 /* A cell of the candidates gathered (in order): its cover found (or its
- * parent's kept), its list cut where the cover hides the rest; NULL when
- * out of memory or budget. */
+ * parent's kept), its list cut where the cover hides the rest; a top
+ * cell keeps the shapes its list refers to, a child its top cell's. NULL
+ * when out of memory or budget. */
 static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt *at, const CandidateList *l,
                          const LbCell *parent)
 {
@@ -540,35 +569,66 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
         while (n < l->n && (double)l->c[n].near < keep)
             n++;
     }
-    size_t bytes = cell_bytes(n);
-    if (budget_take(lbs, bytes))
+    /* a top cell's shapes: those its list (as cut) refers to, in the
+     * order gathered */
+    uint32_t *renumber = NULL;
+    size_t nshapes = 0;
+    if (!parent) {
+        renumber = malloc(sizeof *renumber * (l->nshapes > 0 ? l->nshapes : 1));
+        if (!renumber)
+            return NULL;
+        for (size_t k = 0; k < l->nshapes; k++)
+            renumber[k] = UINT32_MAX;
+        for (size_t i = 0; i < n; i++)
+            renumber[l->c[i].shape] = 0;
+        for (size_t k = 0; k < l->nshapes; k++)
+            if (renumber[k] == 0)
+                renumber[k] = (uint32_t)nshapes++;
+    }
+    size_t bytes = cell_bytes(n, nshapes);
+    if (budget_take(lbs, bytes)) {
+        free(renumber);
         return NULL;
+    }
     LbCell *c = aligned_alloc(16, (bytes + 15) / 16 * 16);
     if (!c) {
         atomic_fetch_sub(&lbs->bytes, bytes);
+        free(renumber);
         return NULL;
     }
+    LbShape *shapes = (LbShape *)((char *)c + header_bytes());
+    for (size_t k = 0; renumber && k < l->nshapes; k++)
+        if (renumber[k] != UINT32_MAX)
+            shapes[renumber[k]] = l->shapes[k];
     size_t nb = blocks_of(n);
-    float *near = (float *)((char *)c + header_bytes());
+    float *near = (float *)(shapes + nshapes);
     float *fu0 = near + nb, *fu1 = fu0 + nb, *fv0 = fu1 + nb, *fv1 = fv0 + nb;
-    LbPlane *plane = (LbPlane *)(fv1 + nb);
-    LbShape *shape = (LbShape *)(plane + n);
-    uint32_t *item = (uint32_t *)(shape + n);
+    float *pnx = fv1 + nb, *pny = pnx + nb, *pnz = pny + nb, *pd = pnz + nb;
+    uint32_t *item = (uint32_t *)(pd + nb), *shape_at = item + n;
     for (size_t i = 0; i < nb; i++) {
-        /* the padding selects no point: beyond every limit, an empty footprint */
+        /* the padding selects no point: beyond every limit, an empty
+         * footprint, a plane no point passes */
         const LbFootprint none = { INFINITY, -INFINITY, INFINITY, -INFINITY };
+        const LbPlane zero = { 0.0f, 0.0f, 0.0f, 0.0f };
         const LbFootprint *f = i < n ? &l->c[i].footprint : &none;
+        const LbPlane *pl = i < n ? &l->c[i].plane : &zero;
         near[i] = i < n ? l->c[i].near : INFINITY;
         fu0[i] = f->u0;
         fu1[i] = f->u1;
         fv0[i] = f->v0;
         fv1[i] = f->v1;
+        pnx[i] = pl->nx;
+        pny[i] = pl->ny;
+        pnz[i] = pl->nz;
+        pd[i] = pl->d;
     }
     for (size_t i = 0; i < n; i++) {
-        plane[i] = l->c[i].plane;
-        shape[i] = l->c[i].shape;
         item[i] = l->c[i].item;
+        shape_at[i] = renumber ? renumber[l->c[i].shape] : l->c[i].shape;
     }
+    free(renumber);
+    c->nshapes = (uint32_t)nshapes;
+    c->shapes = parent ? parent->shapes : shapes;
     c->n = (uint32_t)n;
     c->cover = cover;
     c->cover_beyond = beyond;
@@ -594,9 +654,12 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
     c->u1 = fu1;
     c->v0 = fv0;
     c->v1 = fv1;
+    c->nx = pnx;
+    c->ny = pny;
+    c->nz = pnz;
+    c->d = pd;
     c->item = item;
-    c->plane = plane;
-    c->shape = shape;
+    c->shape_at = shape_at;
     c->level = at->level;
     return c;
 }
@@ -626,12 +689,12 @@ static LbCell *build_child(LightBuffers *lbs, const LightBuffer *lb, const LbCel
     for (uint32_t k = 0; k < c->n && !failed; k++) {
         if (c->u0[k] > u1 || c->u1[k] < u0 || c->v0[k] > v1 || c->v1[k] < v0)
             continue;
-        Candidate cand = { c->plane[k], { c->u0[k], c->u1[k], c->v0[k], c->v1[k] }, c->shape[k], c->near[k],
-                           c->item[k] };
+        Candidate cand = { lb_plane_at(c, k), { c->u0[k], c->u1[k], c->v0[k], c->v1[k] }, c->near[k], c->item[k],
+                           c->shape_at[k] };
         failed = candidate_push(&l, &cand);
     }
     LbCell *child = failed ? NULL : make_cell(lbs, lb, at, &l, c);
-    free(l.c);
+    candidates_free(&l);
     return child;
 }
 
@@ -653,31 +716,9 @@ static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c)
         atomic_fetch_add(&lbs->candidates, c->n);
         return c;
     }
-    atomic_fetch_sub(&lbs->bytes, cell_bytes(c->n) + (c->child ? CHILDREN_BYTES : 0));
+    atomic_fetch_sub(&lbs->bytes, cell_bytes(c->n, c->nshapes) + (c->child ? CHILDREN_BYTES : 0));
     cell_free(c);
     return expected;
-}
-
-int light_buffer_spot(Vec3 d, LbSpot *spot)
-{
-    double ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z);
-    int axis = ax >= ay ? (ax >= az ? 0 : 2) : (ay >= az ? 1 : 2);
-    double major = comp(d, axis);
-    /* a point at the light itself has no direction (NaN or infinite
-     * components): no cell, the shadow ray decides */
-    if (!(isfinite(d.x) && isfinite(d.y) && isfinite(d.z)) || !(fabs(major) > 0.0))
-        return 0;
-    spot->face = 2 * axis + (major < 0.0);
-    double inv = 1.0 / fabs(major);
-    double u = comp(d, (axis + 1) % 3) * inv, v = comp(d, (axis + 2) % 3) * inv;
-    spot->u = u;
-    spot->v = v;
-    /* a direction on a cell's border may go to either: both cells'
-     * pyramids hold it, widened */
-    int iu = (int)((u + 1.0) * (0.5 * LB_FINE)), iv = (int)((v + 1.0) * (0.5 * LB_FINE));
-    spot->iu = iu < 0 ? 0 : iu >= LB_FINE ? LB_FINE - 1 : iu;
-    spot->iv = iv < 0 ? 0 : iv >= LB_FINE ? LB_FINE - 1 : iv;
-    return 1;
 }
 
 const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot *spot, double *built)
@@ -694,7 +735,7 @@ const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot
         Pyramid pyr = pyramid_of(&top);
         if (gather_from_hierarchy(lbs, lb, &pyr, spot->face, &l) == 0)
             c = make_cell(lbs, lb, &top, &l, NULL);
-        free(l.c);
+        candidates_free(&l);
         if (c)
             c = publish(lbs, slot, c);
         *built = clock_wall() - t0;
@@ -760,6 +801,18 @@ int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double
             return -1;
         lb->light = i;
         lb->at = l->location;
+        lb->plane_side = calloc((size_t)(w->nplanes > 0 ? w->nplanes : 1), sizeof *lb->plane_side);
+        if (!lb->plane_side) {
+            free(lb);
+            return -1;
+        }
+        for (int k = 0; k < w->nplanes; k++) {
+            const InfinitePlane *pl = &w->planes[k];
+            const Material *m = &w->materials[pl->material];
+            double s = v3_dot(pl->normal, lb->at) - pl->d;
+            if (m->opaque && !m->no_shadow && fabs(s) >= lbs->plane_margin)
+                lb->plane_side[k] = s;
+        }
         for (int f = 0; f < 6; f++)
             for (int k = 0; k < LB_TOP * LB_TOP; k++)
                 atomic_init(&lb->top[f][k], NULL);
@@ -777,6 +830,7 @@ void light_buffers_free(LightBuffers *lbs)
         for (int f = 0; f < 6; f++)
             for (int k = 0; k < LB_TOP * LB_TOP; k++)
                 cell_free(atomic_load_explicit(&lb->top[f][k], memory_order_relaxed));
+        free(lb->plane_side);
         free(lb);
     }
     free(lbs->light);

@@ -123,9 +123,15 @@ typedef struct LbCell {
     /* Per candidate, in blocks (n rounded up to LB_BLOCK): a lower bound of
      * its distance from the light (ascending), and its footprint. */
     const float *near, *u0, *u1, *v0, *v1;
+    /* ... and its plane (LbPlane's fields side by side, so that a block's
+     * four are tested at once) */
+    const float *nx, *ny, *nz, *d;
     const uint32_t *item;   /* the candidates as the hierarchy's leaf items (Bvh.items), in that order */
-    const LbPlane *plane;   /* ... their planes */
-    const LbShape *shape;   /* ... and shapes */
+    const uint32_t *shape_at; /* ... and their shapes, in shapes */
+    /* The shapes of the top cell's candidates, kept once by the top cell
+     * (nshapes of them; 0 in its children, which refer to them). */
+    const LbShape *shapes;
+    uint32_t nshapes;
     int level;
 } LbCell;
 
@@ -133,6 +139,11 @@ typedef struct LightBuffer {
     int light;              /* index in World.lights */
     Vec3 at;                /* the light's position */
     _Atomic(LbCell *) top[6][LB_TOP * LB_TOP]; /* face 2 axis + (negative), row by row (u, then v) */
+    /* Per infinite plane of the world: the light's signed distance from it
+     * (n.L - d) where the side test may decide it (light_buffer_plane_side),
+     * else 0 (a plane that is not opaque, casts no shadow, or passes
+     * within plane_margin of the light). */
+    double *plane_side;
 } LightBuffer;
 
 /* Every light's buffer, shared by the render's threads. */
@@ -167,7 +178,37 @@ typedef struct {
     int face, iu, iv;
     double u, v;            /* the direction in the face's coordinates */
 } LbSpot;
-int light_buffer_spot(Vec3 from_light, LbSpot *spot);
+static inline int light_buffer_spot(Vec3 d, LbSpot *spot)
+{
+    double ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z);
+    /* a point at the light itself has no direction (NaN or infinite
+     * components, or none at all): no cell, the shadow ray decides */
+    double sum = ax + ay + az;
+    if (!(sum > 0.0 && sum < INFINITY))
+        return 0;
+    /* the major axis (ties to the lower), and the face's coordinates: the
+     * next two axes in turn, over the major's magnitude */
+    double major, a, b;
+    int axis;
+    if (ax >= ay && ax >= az) {
+        axis = 0, major = d.x, a = d.y, b = d.z;
+    } else if (ay >= az) {
+        axis = 1, major = d.y, a = d.z, b = d.x;
+    } else {
+        axis = 2, major = d.z, a = d.x, b = d.y;
+    }
+    spot->face = 2 * axis + (major < 0.0);
+    double inv = 1.0 / fabs(major);
+    double u = a * inv, v = b * inv;
+    spot->u = u;
+    spot->v = v;
+    /* a direction on a cell's border may go to either: both cells'
+     * pyramids hold it, widened */
+    int iu = (int)((u + 1.0) * (0.5 * LB_FINE)), iv = (int)((v + 1.0) * (0.5 * LB_FINE));
+    spot->iu = iu < 0 ? 0 : iu >= LB_FINE ? LB_FINE - 1 : iu;
+    spot->iv = iv < 0 ? 0 : iv >= LB_FINE ? LB_FINE - 1 : iv;
+    return 1;
+}
 
 /* The cell of light buffer lb at spot, built if need be; NULL when the
  * budget stops it or memory runs out (then the shadow ray decides).
@@ -175,16 +216,39 @@ int light_buffer_spot(Vec3 from_light, LbSpot *spot);
 const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot *spot, double *built);
 
 /* A point as the plane tests take it: the point, the sum of its
- * coordinates' magnitudes, and 1e-12 of its distance to the light. */
+ * coordinates' magnitudes, and 1e-12 of its distance to the light; and
+ * in float for lb_block_mask: the point rounded, and the part of the
+ * passed-over margin that does not depend on the plane (LB_PASS_FLOAT
+ * times the size, plus `far`), rounded up. */
 typedef struct {
     Vec3 p;
     double size, far;
+    float fx, fy, fz, fbase;
 } LbPoint;
+
+/* The float plane test's margin per unit of |P|_1 + |d|: the double
+ * test's 1.2e-7 (lb_candidate_passed) plus the float arithmetic's own
+ * error. That is the point's rounding to float (2^-24 |P|_1 against unit
+ * normals) and the four-term sum's (4 2^-24 (|n.P|_1 + |d|), with
+ * |n_i| <= 1 + 2^-24): together below 3.1e-7 (|P|_1 + |d|); 5e-7 leaves
+ * room for the margin's own rounding (a few 2^-24 of it). A plane that
+ * clears it in float clears lb_candidate_passed's bound in exact
+ * arithmetic. */
+#define LB_PASS_FLOAT 5e-7f
 
 static inline LbPoint lb_point(Vec3 p, double distance)
 {
-    LbPoint pt = { p, fabs(p.x) + fabs(p.y) + fabs(p.z), 1e-12 * distance };
+    double size = fabs(p.x) + fabs(p.y) + fabs(p.z), far = 1e-12 * distance;
+    LbPoint pt = { p, size, far, (float)p.x, (float)p.y, (float)p.z,
+                   (float)((LB_PASS_FLOAT * size + far) * (1.0 + 0x1p-20)) };
     return pt;
+}
+
+/* Candidate i's plane. */
+static inline LbPlane lb_plane_at(const LbCell *c, uint32_t i)
+{
+    LbPlane pl = { c->nx[i], c->ny[i], c->nz[i], c->d[i] };
+    return pl;
 }
 
 /* 1 when point p lies beyond candidate plane pl (away from the light) by
@@ -212,19 +276,34 @@ static inline int lb_candidate_passed(const LbPlane *pl, const LbPoint *pt)
 
 /* The candidates of block b (from LB_BLOCK * b) that a point may need:
  * nearer the light than limit (a float at least the point's distance
- * plus the margin) and whose footprint holds the point's direction (u, v)
- * in float: bit k for the block's k-th. Every point of the point's shadow
- * ray has that direction (to within the margins the footprints are
- * padded by, which also cover the rounding of u and v to float), so the
- * shadow ray cannot meet the others. lb_block_mask_plain one candidate at
- * a time; lb_block_mask the same comparisons with SSE where the compiler
- * has it (tests/test_agreement.c holds them to each other). */
-static inline unsigned lb_block_mask_plain(const LbCell *c, uint32_t b, float limit, float u, float v)
+ * plus the margin), whose footprint holds the point's direction (u, v)
+ * in float, and that the point does not lie clearly on the light's side
+ * of (the float plane test, LB_PASS_FLOAT): bit k for the block's k-th.
+ * Every point of the point's shadow ray has that direction (to within the
+ * margins the footprints are padded by, which also cover the rounding of
+ * u and v to float), so the shadow ray cannot meet the others; nor can it
+ * meet a polygon whose plane the point is on the light's side of
+ * (light_buffer.c). lb_block_mask_plain one candidate at a time;
+ * lb_block_mask the same operations, in the same order, with SSE where
+ * the compiler has it (tests/test_agreement.c holds them to each other). */
+/* The float plane test of candidate i: 1 when it passes the point over. */
+static inline int lb_float_passed(const LbCell *c, uint32_t i, const LbPoint *pt)
+{
+    float x = c->nx[i] * pt->fx, y = c->ny[i] * pt->fy, z = c->nz[i] * pt->fz;
+    float s = ((x + y) + z) - c->d[i];
+    float margin = pt->fbase + LB_PASS_FLOAT * fabsf(c->d[i]);
+    return s > margin;
+}
+
+static inline unsigned lb_block_mask_plain(const LbCell *c, uint32_t b, float limit, float u, float v,
+                                           const LbPoint *pt)
 {
     unsigned mask = 0;
     for (uint32_t k = 0; k < LB_BLOCK; k++) {
         uint32_t i = b * LB_BLOCK + k;
-        mask |= (unsigned)(c->near[i] < limit && c->u0[i] <= u && u <= c->u1[i] && c->v0[i] <= v && v <= c->v1[i])
+        int passed = lb_float_passed(c, i, pt);
+        mask |= (unsigned)(c->near[i] < limit && c->u0[i] <= u && u <= c->u1[i] && c->v0[i] <= v && v <= c->v1[i] &&
+                           !passed)
                 << k;
     }
     return mask;
@@ -232,7 +311,7 @@ static inline unsigned lb_block_mask_plain(const LbCell *c, uint32_t b, float li
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
-static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, float limit, float u, float v)
+static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, float limit, float u, float v, const LbPoint *pt)
 {
     uint32_t i = b * LB_BLOCK;
     __m128 uu = _mm_set1_ps(u), vv = _mm_set1_ps(v);
@@ -241,12 +320,20 @@ static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, float limit, f
     m = _mm_and_ps(m, _mm_cmple_ps(uu, _mm_load_ps(c->u1 + i)));
     m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(c->v0 + i), vv));
     m = _mm_and_ps(m, _mm_cmple_ps(vv, _mm_load_ps(c->v1 + i)));
+    __m128 x = _mm_mul_ps(_mm_load_ps(c->nx + i), _mm_set1_ps(pt->fx));
+    __m128 y = _mm_mul_ps(_mm_load_ps(c->ny + i), _mm_set1_ps(pt->fy));
+    __m128 z = _mm_mul_ps(_mm_load_ps(c->nz + i), _mm_set1_ps(pt->fz));
+    __m128 d = _mm_load_ps(c->d + i);
+    __m128 s = _mm_sub_ps(_mm_add_ps(_mm_add_ps(x, y), z), d);
+    __m128 absd = _mm_andnot_ps(_mm_set1_ps(-0.0f), d);
+    __m128 margin = _mm_add_ps(_mm_set1_ps(pt->fbase), _mm_mul_ps(_mm_set1_ps(LB_PASS_FLOAT), absd));
+    m = _mm_andnot_ps(_mm_cmpgt_ps(s, margin), m);
     return (unsigned)_mm_movemask_ps(m);
 }
 #else
-static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, float limit, float u, float v)
+static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, float limit, float u, float v, const LbPoint *pt)
 {
-    return lb_block_mask_plain(c, b, limit, u, v);
+    return lb_block_mask_plain(c, b, limit, u, v, pt);
 }
 #endif
 

@@ -320,6 +320,9 @@ void shadow_conventional_test(ShadowContext *ctx, const ShadowQuery *q, RGB *lig
 /* Its two halves, so that methods sharing the plane part stay exact:
  * both multiply into *light and return 1 when it is fully blocked. */
 int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+/* One plane's part: World.planes[i] (passed over where it is q's own
+ * surface or casts no shadow); tmin: trace_min_distance(q->point). */
+int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tmin, RGB *light);
 /* A decision of the planes' part, then (unless a plane blocks) a method's
  * polygon part, which counts its own scheme: the cache's and the light
  * buffer's tests. */

@@ -32,20 +32,24 @@ static int pass_through(const World *w, const Material *m, int polygon, const Sh
     return 0;
 }
 
-int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tmin, RGB *light)
 {
     const World *w = ctx->tracer->world;
+    if (q->surface->kind == HIT_PLANE && q->surface->index == i)
+        return 0;
+    const InfinitePlane *pl = &w->planes[i];
+    if (w->materials[pl->material].no_shadow)
+        return 0;
+    double t = intersect_plane(pl, q->point, q->to_light);
+    return t > tmin && t < q->distance && pass_through(w, &w->materials[pl->material], -1, q, t, light);
+}
+
+int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+{
     double tmin = trace_min_distance(q->point);
-    for (int i = 0; i < w->nplanes; i++) {
-        if (q->surface->kind == HIT_PLANE && q->surface->index == i)
-            continue;
-        const InfinitePlane *pl = &w->planes[i];
-        if (w->materials[pl->material].no_shadow)
-            continue;
-        double t = intersect_plane(pl, q->point, q->to_light);
-        if (t > tmin && t < q->distance && pass_through(w, &w->materials[pl->material], -1, q, t, light))
+    for (int i = 0; i < ctx->tracer->world->nplanes; i++)
+        if (shadow_plane_test(ctx, q, i, tmin, light))
             return 1;
-    }
     return 0;
 }
 

@@ -64,9 +64,51 @@ static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, int light
     return c;
 }
 
-int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+/* The infinite planes' part of q's decision (shadow_planes_test's
+ * answer, exactly) for a point light with a buffer: an opaque plane the
+ * light is clear of blocks the shadow ray where the point lies on its
+ * other side. The shadow ray computes t = (d - n.P) / (n.D) and asks
+ * tmin < t < dist. Where the point and the light are on opposite sides,
+ * exactly, t = dist |s_P| / (|s_P| + |s_L|) (s: signed distances from the
+ * plane), and dist >= |s_P| + |s_L|: t is at least |s_P| past the point
+ * and at least |s_L| short of the light; on one side, t < 0 (the point
+ * nearer the plane) or t - dist = dist |s_L| / (|s_P| - |s_L|) >= |s_L|.
+ * With |n.D| >= 1e-6, the computed t's relative error is below 1e-9 (the
+ * dot products' rounding, some 2^-52, over 1e-6), and its absolute error
+ * from n.P's below 1e-10 (|P| + |d|); |s_P| >= 1e-6 (1 + |P| + |d|) and
+ * |s_L| >= 1e-6 (|s_P| + dist) keep every end of the segment (tmin is
+ * 1e-9 (1 + |P|)) far beyond those errors: the side test gives the shadow
+ * ray's answer. Elsewhere, and for planes without a side
+ * (LightBuffer.plane_side), the shadow ray's own plane test decides. */
+static int light_buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, const ShadowQuery *q, RGB *light)
 {
-    LightBuffer *lb = buffer_for(ctx, q);
+    const World *w = ctx->tracer->world;
+    double tmin = trace_min_distance(q->point);
+    for (int i = 0; i < w->nplanes; i++) {
+        double s_light = lb->plane_side[i];
+        if (s_light != 0.0 && !(q->surface->kind == HIT_PLANE && q->surface->index == i)) {
+            const InfinitePlane *pl = &w->planes[i];
+            double num = pl->d - v3_dot(pl->normal, q->point);
+            double cosine = v3_dot(pl->normal, q->to_light);
+            if (fabs(cosine) >= 1e-6 && fabs(num) >= 1e-6 * (1.0 + v3_max_abs(q->point) + fabs(pl->d)) &&
+                fabs(s_light) >= 1e-6 * (fabs(num) + q->distance)) {
+                /* num is -s_P: opposite sides where it has s_L's sign */
+                if ((num > 0.0) == (s_light > 0.0)) {
+                    light->r = light->g = light->b = 0.0;
+                    return 1;
+                }
+                continue;
+            }
+        }
+        if (shadow_plane_test(ctx, q, i, tmin, light))
+            return 1;
+    }
+    return 0;
+}
+
+/* q's decision by buffer lb (NULL: the cache's test), planes aside. */
+static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const ShadowQuery *q, RGB *light)
+{
     LbSpot spot;
     const LbCell *cell = lb && light_buffer_spot(v3_neg(q->to_light), &spot) ? cell_at_spot(ctx, lb, q->light, &spot)
                                                                              : NULL;
@@ -97,17 +139,17 @@ int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, 
     ShadowListWalk lw;
     for (uint32_t b = 0; b < nblocks && !blocked && cell->near[b * LB_BLOCK] < limit; b++) {
         looked += LB_BLOCK;
-        for (unsigned mask = lb_block_mask(cell, b, limit, u, v); mask && !blocked; mask &= mask - 1) {
+        for (unsigned mask = lb_block_mask(cell, b, limit, u, v, &point); mask && !blocked; mask &= mask - 1) {
             uint32_t i = b * LB_BLOCK + (uint32_t)__builtin_ctz(mask);
             /* the point's own polygon: the shadow ray starts on it (passed over) */
-            if (cell->item[i] == own_item || lb_candidate_passed(&cell->plane[i], &point))
+            if (cell->item[i] == own_item)
                 continue;
-            const LbShape *shape = &cell->shape[i];
+            const LbShape *shape = &cell->shapes[cell->shape_at[i]];
             int where = lb_shape_classify(shape, spot.u, spot.v);
             if (where == LB_OUTSIDE)
                 continue;
-            int crossed = where == LB_INSIDE &&
-                          lb_candidate_crossed(&cell->plane[i], &point, q->to_light, lbs->cover_margin);
+            const LbPlane plane = lb_plane_at(cell, i);
+            int crossed = where == LB_INSIDE && lb_candidate_crossed(&plane, &point, q->to_light, lbs->cover_margin);
             if (crossed && shape->opaque) {
                 /* an opaque polygon proved crossed: no light */
                 ctx->last_blocker = (int)lbs->bvh->items[cell->item[i]];
@@ -146,9 +188,24 @@ int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, 
     return blocked;
 }
 
+int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    return buffer_polygons_test(ctx, buffer_for(ctx, q), q, light);
+}
+
+/* shadow_planes_then's decision, the planes by their sides where the
+ * light has a buffer. */
 static void light_buffer_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    shadow_planes_then(ctx, q, light, shadow_light_buffer_polygons_test);
+    LightBuffer *lb = buffer_for(ctx, q);
+    light->r = light->g = light->b = 1.0;
+    ctx->last_scheme = SCHEME_CONVENTIONAL;
+    if (lb ? light_buffer_planes_test(ctx, lb, q, light) : shadow_planes_test(ctx, q, light)) {
+        ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
+        ctx->stats.shadow_blocked++;
+        return;
+    }
+    buffer_polygons_test(ctx, lb, q, light);
 }
 
 int shadow_light_buffer_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
