@@ -677,25 +677,50 @@ static void cell_free(LbCell *c)
     free(c);
 }
 
-/* The child of cell c at `at` (one level below c): the candidates of c
- * whose footprints overlap it (footprint() padded them for the child's
- * widening and margins), in c's order. NULL when out of memory or budget. */
-static LbCell *build_child(LightBuffers *lbs, const LightBuffer *lb, const LbCell *c, const CellAt *at)
+/* The children of split cell c (`at`: any one of them) not yet built:
+ * each the candidates of c whose footprints overlap it (footprint()
+ * padded them for the children's widening and margins), in c's order,
+ * gathered in one pass over c's list, then published. A child that the
+ * budget or memory stops stays unbuilt (its parent's list serves). The
+ * lists depend on c's alone, so which thread builds them does not matter. */
+static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c);
+
+static void build_children(LightBuffers *lbs, const LightBuffer *lb, const LbCell *c, const CellAt *at)
 {
-    double u0, u1, v0, v1;
-    cell_range(at, &u0, &u1, &v0, &v1);
-    CandidateList l = { 0 };
+    CellAt first = { at->face, at->level, at->i & ~(LB_SUB - 1), at->j & ~(LB_SUB - 1) };
+    double u0[LB_SUB], u1[LB_SUB], v0[LB_SUB], v1[LB_SUB];
+    for (int a = 0; a < LB_SUB; a++) {
+        CellAt row = { first.face, first.level, first.i + a, first.j + a };
+        cell_range(&row, &u0[a], &u1[a], &v0[a], &v1[a]);
+    }
+    unsigned wanted = 0; /* the slots to build, bit b * LB_SUB + a */
+    for (int k = 0; k < LB_SUB * LB_SUB; k++)
+        wanted |= (unsigned)(atomic_load_explicit(&c->child[k], memory_order_acquire) == NULL) << k;
+    CandidateList l[LB_SUB * LB_SUB];
+    memset(l, 0, sizeof l);
     int failed = 0;
     for (uint32_t k = 0; k < c->n && !failed; k++) {
-        if (c->u0[k] > u1 || c->u1[k] < u0 || c->v0[k] > v1 || c->v1[k] < v0)
-            continue;
+        unsigned mu = 0, mv = 0;
+        for (int a = 0; a < LB_SUB; a++) {
+            mu |= (unsigned)!(c->u0[k] > u1[a] || c->u1[k] < u0[a]) << a;
+            mv |= (unsigned)!(c->v0[k] > v1[a] || c->v1[k] < v0[a]) << a;
+        }
         Candidate cand = { lb_plane_at(c, k), { c->u0[k], c->u1[k], c->v0[k], c->v1[k] }, c->near[k], c->item[k],
                            c->shape_at[k] };
-        failed = candidate_push(&l, &cand);
+        for (int b = 0; b < LB_SUB && !failed; b++)
+            for (int a = 0; a < LB_SUB && !failed; a++)
+                if ((mu >> a & 1) && (mv >> b & 1) && (wanted >> (b * LB_SUB + a) & 1))
+                    failed = candidate_push(&l[b * LB_SUB + a], &cand);
     }
-    LbCell *child = failed ? NULL : make_cell(lbs, lb, at, &l, c);
-    candidates_free(&l);
-    return child;
+    for (int s = 0; s < LB_SUB * LB_SUB; s++) {
+        if (!failed && (wanted >> s & 1)) {
+            CellAt child_at = { first.face, first.level, first.i + s % LB_SUB, first.j + s / LB_SUB };
+            LbCell *child = make_cell(lbs, lb, &child_at, &l[s], c);
+            if (child)
+                publish(lbs, &c->child[s], child);
+        }
+        candidates_free(&l[s]);
+    }
 }
 
 /* The cell at `at` of the spot (face and finest indices) at a level. */
@@ -753,9 +778,8 @@ const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot
             return c; /* the budget: the parent's list serves */
         if (!next) {
             double t0 = clock_wall();
-            next = build_child(lbs, lb, c, &at);
-            if (next)
-                next = publish(lbs, slot_c, next);
+            build_children(lbs, lb, c, &at);
+            next = atomic_load_explicit(slot_c, memory_order_acquire);
             *built += clock_wall() - t0;
             if (!next)
                 return c; /* the budget: the parent's list serves */

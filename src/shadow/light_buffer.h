@@ -33,7 +33,8 @@
  * walking the hierarchy with its pyramid; a cell of more than LB_SPLIT_AT
  * candidates above the last of LB_LEVELS levels is split into LB_SUB x
  * LB_SUB children, each built from its parent's list (the candidates whose
- * footprints overlap it) when a point first asks. Cells are shared by the
+ * footprints overlap it), all together in one pass over that list when a
+ * point first asks for one of them. Cells are shared by the
  * render's threads: each is built by one and published atomically (a
  * thread that loses the race frees its copy), and read-only after that;
  * which cell answers a point depends on the lists alone, not on the order
@@ -115,8 +116,8 @@ typedef struct LbCell {
     uint32_t n;             /* candidates */
     int32_t cover;          /* an opaque polygon covering the whole cell, or -1 */
     double cover_beyond;    /* ... which blocks every point farther than this from the light */
-    /* split: LB_SUB x LB_SUB slots for its children, row by row, each
-     * built from this cell's list when a point first asks; else NULL.
+    /* split: LB_SUB x LB_SUB slots for its children, row by row, built
+     * from this cell's list when a point first asks for one; else NULL.
      * Set when the cell is made (its list decides), before it is
      * published: only the slots change after. */
     _Atomic(struct LbCell *) *child;
