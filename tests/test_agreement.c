@@ -191,12 +191,12 @@ static void check_cell_masks(const LbCell *c, const LbPoint *pt, const LbSpot *s
     if (!c)
         return;
     LbPlane pl;
+    const LbScan scan = lb_scan(INFINITY, (float)spot->u, (float)spot->v, pt);
     for (uint32_t b = 0; b * LB_BLOCK < c->n; b++) {
-        float u = (float)spot->u, v = (float)spot->v;
         mask_blocks++;
-        mask_differ += lb_block_mask(c, b, INFINITY, u, v, pt) != lb_block_mask_plain(c, b, INFINITY, u, v, pt);
+        mask_differ += lb_block_mask(c, b, &scan) != lb_block_mask_plain(c, b, &scan);
         for (uint32_t i = b * LB_BLOCK; i < (b + 1) * LB_BLOCK && i < c->n; i++) {
-            if (!lb_float_passed(c, i, pt))
+            if (!lb_float_passed(c, i, &scan))
                 continue;
             float_passes++;
             pl = lb_plane_at(c, i);

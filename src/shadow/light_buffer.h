@@ -275,66 +275,90 @@ static inline int lb_candidate_passed(const LbPlane *pl, const LbPoint *pt)
     return s > 1.2e-7 * (pt->size + fabs((double)pl->d)) + pt->far;
 }
 
-/* The candidates of block b (from LB_BLOCK * b) that a point may need:
- * nearer the light than limit (a float at least the point's distance
- * plus the margin), whose footprint holds the point's direction (u, v)
- * in float, and that the point does not lie clearly on the light's side
- * of (the float plane test, LB_PASS_FLOAT): bit k for the block's k-th.
- * Every point of the point's shadow ray has that direction (to within the
- * margins the footprints are padded by, which also cover the rounding of
- * u and v to float), so the shadow ray cannot meet the others; nor can it
- * meet a polygon whose plane the point is on the light's side of
- * (light_buffer.c). lb_block_mask_plain one candidate at a time;
- * lb_block_mask the same operations, in the same order, with SSE where
- * the compiler has it (tests/test_agreement.c holds them to each other). */
-/* The float plane test of candidate i: 1 when it passes the point over. */
-static inline int lb_float_passed(const LbCell *c, uint32_t i, const LbPoint *pt)
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+/* What a point's scan of a cell's blocks compares with, made once per
+ * point (lb_scan): the limit on the near bounds (a float at least the
+ * point's distance plus the margin), the point's direction (u, v) on the
+ * face in float, and the point in float with the plane-independent part
+ * of its margin (LbPoint); with SSE, each also in all four lanes. */
+typedef struct {
+    float limit, u, v, fx, fy, fz, fbase;
+#if defined(__SSE2__)
+    __m128 limit4, u4, v4, fx4, fy4, fz4, fbase4;
+#endif
+} LbScan;
+
+static inline LbScan lb_scan(float limit, float u, float v, const LbPoint *pt)
 {
-    float x = c->nx[i] * pt->fx, y = c->ny[i] * pt->fy, z = c->nz[i] * pt->fz;
-    float s = ((x + y) + z) - c->d[i];
-    float margin = pt->fbase + LB_PASS_FLOAT * fabsf(c->d[i]);
-    return s > margin;
+    LbScan s = { limit, u, v, pt->fx, pt->fy, pt->fz, pt->fbase
+#if defined(__SSE2__)
+                 , _mm_set1_ps(limit), _mm_set1_ps(u), _mm_set1_ps(v), _mm_set1_ps(pt->fx), _mm_set1_ps(pt->fy),
+                 _mm_set1_ps(pt->fz), _mm_set1_ps(pt->fbase)
+#endif
+    };
+    return s;
 }
 
-static inline unsigned lb_block_mask_plain(const LbCell *c, uint32_t b, float limit, float u, float v,
-                                           const LbPoint *pt)
+/* The float plane test of candidate i: 1 when it passes the point over. */
+static inline int lb_float_passed(const LbCell *c, uint32_t i, const LbScan *s)
+{
+    float x = c->nx[i] * s->fx, y = c->ny[i] * s->fy, z = c->nz[i] * s->fz;
+    float side = ((x + y) + z) - c->d[i];
+    float margin = s->fbase + LB_PASS_FLOAT * fabsf(c->d[i]);
+    return side > margin;
+}
+
+/* The candidates of block b (from LB_BLOCK * b) that a point may need:
+ * nearer the light than the scan's limit, whose footprint holds the
+ * point's direction (u, v) in float, and that the point does not lie
+ * clearly on the light's side of (the float plane test, LB_PASS_FLOAT):
+ * bit k for the block's k-th. Every point of the point's shadow ray has
+ * that direction (to within the margins the footprints are padded by,
+ * which also cover the rounding of u and v to float), so the shadow ray
+ * cannot meet the others; nor can it meet a polygon whose plane the point
+ * is on the light's side of (light_buffer.c). lb_block_mask_plain one
+ * candidate at a time; lb_block_mask the same operations, in the same
+ * order, with SSE where the compiler has it (tests/test_agreement.c holds
+ * them to each other). */
+static inline unsigned lb_block_mask_plain(const LbCell *c, uint32_t b, const LbScan *s)
 {
     unsigned mask = 0;
     for (uint32_t k = 0; k < LB_BLOCK; k++) {
         uint32_t i = b * LB_BLOCK + k;
-        int passed = lb_float_passed(c, i, pt);
-        mask |= (unsigned)(c->near[i] < limit && c->u0[i] <= u && u <= c->u1[i] && c->v0[i] <= v && v <= c->v1[i] &&
-                           !passed)
+        int passed = lb_float_passed(c, i, s);
+        mask |= (unsigned)(c->near[i] < s->limit && c->u0[i] <= s->u && s->u <= c->u1[i] && c->v0[i] <= s->v &&
+                           s->v <= c->v1[i] && !passed)
                 << k;
     }
     return mask;
 }
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
-static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, float limit, float u, float v, const LbPoint *pt)
+static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, const LbScan *s)
 {
     uint32_t i = b * LB_BLOCK;
-    __m128 uu = _mm_set1_ps(u), vv = _mm_set1_ps(v);
-    __m128 m = _mm_cmplt_ps(_mm_load_ps(c->near + i), _mm_set1_ps(limit));
-    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(c->u0 + i), uu));
-    m = _mm_and_ps(m, _mm_cmple_ps(uu, _mm_load_ps(c->u1 + i)));
-    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(c->v0 + i), vv));
-    m = _mm_and_ps(m, _mm_cmple_ps(vv, _mm_load_ps(c->v1 + i)));
-    __m128 x = _mm_mul_ps(_mm_load_ps(c->nx + i), _mm_set1_ps(pt->fx));
-    __m128 y = _mm_mul_ps(_mm_load_ps(c->ny + i), _mm_set1_ps(pt->fy));
-    __m128 z = _mm_mul_ps(_mm_load_ps(c->nz + i), _mm_set1_ps(pt->fz));
+    __m128 m = _mm_cmplt_ps(_mm_load_ps(c->near + i), s->limit4);
+    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(c->u0 + i), s->u4));
+    m = _mm_and_ps(m, _mm_cmple_ps(s->u4, _mm_load_ps(c->u1 + i)));
+    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(c->v0 + i), s->v4));
+    m = _mm_and_ps(m, _mm_cmple_ps(s->v4, _mm_load_ps(c->v1 + i)));
+    __m128 x = _mm_mul_ps(_mm_load_ps(c->nx + i), s->fx4);
+    __m128 y = _mm_mul_ps(_mm_load_ps(c->ny + i), s->fy4);
+    __m128 z = _mm_mul_ps(_mm_load_ps(c->nz + i), s->fz4);
     __m128 d = _mm_load_ps(c->d + i);
-    __m128 s = _mm_sub_ps(_mm_add_ps(_mm_add_ps(x, y), z), d);
+    __m128 side = _mm_sub_ps(_mm_add_ps(_mm_add_ps(x, y), z), d);
     __m128 absd = _mm_andnot_ps(_mm_set1_ps(-0.0f), d);
-    __m128 margin = _mm_add_ps(_mm_set1_ps(pt->fbase), _mm_mul_ps(_mm_set1_ps(LB_PASS_FLOAT), absd));
-    m = _mm_andnot_ps(_mm_cmpgt_ps(s, margin), m);
+    __m128 margin = _mm_add_ps(s->fbase4, _mm_mul_ps(_mm_set1_ps(LB_PASS_FLOAT), absd));
+    m = _mm_andnot_ps(_mm_cmpgt_ps(side, margin), m);
     return (unsigned)_mm_movemask_ps(m);
 }
 #else
-static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, float limit, float u, float v, const LbPoint *pt)
+static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, const LbScan *s)
 {
-    return lb_block_mask_plain(c, b, limit, u, v, pt);
+    return lb_block_mask_plain(c, b, s);
 }
 #endif
 

@@ -137,9 +137,10 @@ static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const Shado
      * bounds, its own polygon and the side of their planes, each tested as
      * it is found. */
     ShadowListWalk lw;
+    const LbScan scan = lb_scan(limit, u, v, &point);
     for (uint32_t b = 0; b < nblocks && !blocked && cell->near[b * LB_BLOCK] < limit; b++) {
         looked += LB_BLOCK;
-        for (unsigned mask = lb_block_mask(cell, b, limit, u, v, &point); mask && !blocked; mask &= mask - 1) {
+        for (unsigned mask = lb_block_mask(cell, b, &scan); mask && !blocked; mask &= mask - 1) {
             uint32_t i = b * LB_BLOCK + (uint32_t)__builtin_ctz(mask);
             /* the point's own polygon: the shadow ray starts on it (passed over) */
             if (cell->item[i] == own_item)
