@@ -502,15 +502,13 @@ static double cover_beyond(const LightBuffers *lbs, const Polygon *p, const Pyra
 }
 
 /* A cell and its lists in one allocation: the header (a multiple of 16
- * bytes), a top cell's shapes (64 bytes each), the nine float arrays of
- * whole blocks (aligned for SSE: near bounds, footprints, planes), the
- * items and the shapes' indices. */
-#define LB_FLOAT_ARRAYS 9
+ * bytes), a top cell's shapes (64 bytes each), the blocks (LbBlock,
+ * aligned for SSE), the items and the shapes' indices. */
 static size_t blocks_of(size_t n) { return (n + LB_BLOCK - 1) / LB_BLOCK * LB_BLOCK; }
 static size_t header_bytes(void) { return (sizeof(LbCell) + 15) / 16 * 16; }
 static size_t cell_bytes(size_t n, size_t nshapes)
 {
-    return header_bytes() + nshapes * sizeof(LbShape) + blocks_of(n) * LB_FLOAT_ARRAYS * sizeof(float) +
+    return header_bytes() + nshapes * sizeof(LbShape) + blocks_of(n) / LB_BLOCK * sizeof(LbBlock) +
            n * 2 * sizeof(uint32_t);
 }
 
@@ -601,10 +599,8 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
         if (renumber[k] != UINT32_MAX)
             shapes[renumber[k]] = l->shapes[k];
     size_t nb = blocks_of(n);
-    float *near = (float *)(shapes + nshapes);
-    float *fu0 = near + nb, *fu1 = fu0 + nb, *fv0 = fu1 + nb, *fv1 = fv0 + nb;
-    float *pnx = fv1 + nb, *pny = pnx + nb, *pnz = pny + nb, *pd = pnz + nb;
-    uint32_t *item = (uint32_t *)(pd + nb), *shape_at = item + n;
+    LbBlock *block = (LbBlock *)(shapes + nshapes);
+    uint32_t *item = (uint32_t *)(block + nb / LB_BLOCK), *shape_at = item + n;
     for (size_t i = 0; i < nb; i++) {
         /* the padding selects no point: beyond every limit, an empty
          * footprint, a plane no point passes */
@@ -612,15 +608,17 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
         const LbPlane zero = { 0.0f, 0.0f, 0.0f, 0.0f };
         const LbFootprint *f = i < n ? &l->c[i].footprint : &none;
         const LbPlane *pl = i < n ? &l->c[i].plane : &zero;
-        near[i] = i < n ? l->c[i].near : INFINITY;
-        fu0[i] = f->u0;
-        fu1[i] = f->u1;
-        fv0[i] = f->v0;
-        fv1[i] = f->v1;
-        pnx[i] = pl->nx;
-        pny[i] = pl->ny;
-        pnz[i] = pl->nz;
-        pd[i] = pl->d;
+        LbBlock *bl = &block[i / LB_BLOCK];
+        size_t k = i % LB_BLOCK;
+        bl->near[k] = i < n ? l->c[i].near : INFINITY;
+        bl->u0[k] = f->u0;
+        bl->u1[k] = f->u1;
+        bl->v0[k] = f->v0;
+        bl->v1[k] = f->v1;
+        bl->nx[k] = pl->nx;
+        bl->ny[k] = pl->ny;
+        bl->nz[k] = pl->nz;
+        bl->d[k] = pl->d;
     }
     for (size_t i = 0; i < n; i++) {
         item[i] = l->c[i].item;
@@ -649,15 +647,7 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
             atomic_init(&child[k], NULL);
     }
     c->child = child;
-    c->near = near;
-    c->u0 = fu0;
-    c->u1 = fu1;
-    c->v0 = fv0;
-    c->v1 = fv1;
-    c->nx = pnx;
-    c->ny = pny;
-    c->nz = pnz;
-    c->d = pd;
+    c->block = block;
     c->item = item;
     c->shape_at = shape_at;
     c->level = at->level;
@@ -700,13 +690,15 @@ static void build_children(LightBuffers *lbs, const LightBuffer *lb, const LbCel
     memset(l, 0, sizeof l);
     int failed = 0;
     for (uint32_t k = 0; k < c->n && !failed; k++) {
+        const LbBlock *bl = &c->block[k / LB_BLOCK];
+        uint32_t j = k % LB_BLOCK;
+        const LbFootprint f = { bl->u0[j], bl->u1[j], bl->v0[j], bl->v1[j] };
         unsigned mu = 0, mv = 0;
         for (int a = 0; a < LB_SUB; a++) {
-            mu |= (unsigned)!(c->u0[k] > u1[a] || c->u1[k] < u0[a]) << a;
-            mv |= (unsigned)!(c->v0[k] > v1[a] || c->v1[k] < v0[a]) << a;
+            mu |= (unsigned)!(f.u0 > u1[a] || f.u1 < u0[a]) << a;
+            mv |= (unsigned)!(f.v0 > v1[a] || f.v1 < v0[a]) << a;
         }
-        Candidate cand = { lb_plane_at(c, k), { c->u0[k], c->u1[k], c->v0[k], c->v1[k] }, c->near[k], c->item[k],
-                           c->shape_at[k] };
+        Candidate cand = { lb_plane_at(c, k), f, bl->near[j], c->item[k], c->shape_at[k] };
         for (int b = 0; b < LB_SUB && !failed; b++)
             for (int a = 0; a < LB_SUB && !failed; a++)
                 if ((mu >> a & 1) && (mv >> b & 1) && (wanted >> (b * LB_SUB + a) & 1))

@@ -111,6 +111,15 @@ static inline int lb_shape_classify(const LbShape *s, double u, double v)
  * block with entries no point selects. */
 #define LB_BLOCK 4
 
+/* LB_BLOCK candidates of a cell, each field's four side by side (so that
+ * they are tested at once) and the block's fields together (so that a
+ * point's scan reads the blocks it needs in order): the near bounds, the
+ * footprints, the planes (LbPlane's fields). */
+typedef struct LbBlock {
+    float near[LB_BLOCK], u0[LB_BLOCK], u1[LB_BLOCK], v0[LB_BLOCK], v1[LB_BLOCK];
+    float nx[LB_BLOCK], ny[LB_BLOCK], nz[LB_BLOCK], d[LB_BLOCK];
+} LbBlock;
+
 /* What a cell says about the points seen through it. */
 typedef struct LbCell {
     uint32_t n;             /* candidates */
@@ -122,11 +131,8 @@ typedef struct LbCell {
      * published: only the slots change after. */
     _Atomic(struct LbCell *) *child;
     /* Per candidate, in blocks (n rounded up to LB_BLOCK): a lower bound of
-     * its distance from the light (ascending), and its footprint. */
-    const float *near, *u0, *u1, *v0, *v1;
-    /* ... and its plane (LbPlane's fields side by side, so that a block's
-     * four are tested at once) */
-    const float *nx, *ny, *nz, *d;
+     * its distance from the light (ascending), its footprint and plane */
+    const struct LbBlock *block;
     const uint32_t *item;   /* the candidates as the hierarchy's leaf items (Bvh.items), in that order */
     const uint32_t *shape_at; /* ... and their shapes, in shapes */
     /* The shapes of the top cell's candidates, kept once by the top cell
@@ -248,7 +254,9 @@ static inline LbPoint lb_point(Vec3 p, double distance)
 /* Candidate i's plane. */
 static inline LbPlane lb_plane_at(const LbCell *c, uint32_t i)
 {
-    LbPlane pl = { c->nx[i], c->ny[i], c->nz[i], c->d[i] };
+    const LbBlock *b = &c->block[i / LB_BLOCK];
+    uint32_t k = i % LB_BLOCK;
+    LbPlane pl = { b->nx[k], b->ny[k], b->nz[k], b->d[k] };
     return pl;
 }
 
@@ -305,9 +313,11 @@ static inline LbScan lb_scan(float limit, float u, float v, const LbPoint *pt)
 /* The float plane test of candidate i: 1 when it passes the point over. */
 static inline int lb_float_passed(const LbCell *c, uint32_t i, const LbScan *s)
 {
-    float x = c->nx[i] * s->fx, y = c->ny[i] * s->fy, z = c->nz[i] * s->fz;
-    float side = ((x + y) + z) - c->d[i];
-    float margin = s->fbase + LB_PASS_FLOAT * fabsf(c->d[i]);
+    const LbBlock *b = &c->block[i / LB_BLOCK];
+    uint32_t k = i % LB_BLOCK;
+    float x = b->nx[k] * s->fx, y = b->ny[k] * s->fy, z = b->nz[k] * s->fz;
+    float side = ((x + y) + z) - b->d[k];
+    float margin = s->fbase + LB_PASS_FLOAT * fabsf(b->d[k]);
     return side > margin;
 }
 
@@ -325,12 +335,12 @@ static inline int lb_float_passed(const LbCell *c, uint32_t i, const LbScan *s)
  * them to each other). */
 static inline unsigned lb_block_mask_plain(const LbCell *c, uint32_t b, const LbScan *s)
 {
+    const LbBlock *bl = &c->block[b];
     unsigned mask = 0;
     for (uint32_t k = 0; k < LB_BLOCK; k++) {
-        uint32_t i = b * LB_BLOCK + k;
-        int passed = lb_float_passed(c, i, s);
-        mask |= (unsigned)(c->near[i] < s->limit && c->u0[i] <= s->u && s->u <= c->u1[i] && c->v0[i] <= s->v &&
-                           s->v <= c->v1[i] && !passed)
+        int passed = lb_float_passed(c, b * LB_BLOCK + k, s);
+        mask |= (unsigned)(bl->near[k] < s->limit && bl->u0[k] <= s->u && s->u <= bl->u1[k] && bl->v0[k] <= s->v &&
+                           s->v <= bl->v1[k] && !passed)
                 << k;
     }
     return mask;
@@ -339,16 +349,16 @@ static inline unsigned lb_block_mask_plain(const LbCell *c, uint32_t b, const Lb
 #if defined(__SSE2__)
 static inline unsigned lb_block_mask(const LbCell *c, uint32_t b, const LbScan *s)
 {
-    uint32_t i = b * LB_BLOCK;
-    __m128 m = _mm_cmplt_ps(_mm_load_ps(c->near + i), s->limit4);
-    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(c->u0 + i), s->u4));
-    m = _mm_and_ps(m, _mm_cmple_ps(s->u4, _mm_load_ps(c->u1 + i)));
-    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(c->v0 + i), s->v4));
-    m = _mm_and_ps(m, _mm_cmple_ps(s->v4, _mm_load_ps(c->v1 + i)));
-    __m128 x = _mm_mul_ps(_mm_load_ps(c->nx + i), s->fx4);
-    __m128 y = _mm_mul_ps(_mm_load_ps(c->ny + i), s->fy4);
-    __m128 z = _mm_mul_ps(_mm_load_ps(c->nz + i), s->fz4);
-    __m128 d = _mm_load_ps(c->d + i);
+    const LbBlock *bl = &c->block[b];
+    __m128 m = _mm_cmplt_ps(_mm_load_ps(bl->near), s->limit4);
+    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(bl->u0), s->u4));
+    m = _mm_and_ps(m, _mm_cmple_ps(s->u4, _mm_load_ps(bl->u1)));
+    m = _mm_and_ps(m, _mm_cmple_ps(_mm_load_ps(bl->v0), s->v4));
+    m = _mm_and_ps(m, _mm_cmple_ps(s->v4, _mm_load_ps(bl->v1)));
+    __m128 x = _mm_mul_ps(_mm_load_ps(bl->nx), s->fx4);
+    __m128 y = _mm_mul_ps(_mm_load_ps(bl->ny), s->fy4);
+    __m128 z = _mm_mul_ps(_mm_load_ps(bl->nz), s->fz4);
+    __m128 d = _mm_load_ps(bl->d);
     __m128 side = _mm_sub_ps(_mm_add_ps(_mm_add_ps(x, y), z), d);
     __m128 absd = _mm_andnot_ps(_mm_set1_ps(-0.0f), d);
     __m128 margin = _mm_add_ps(s->fbase4, _mm_mul_ps(_mm_set1_ps(LB_PASS_FLOAT), absd));

@@ -138,7 +138,7 @@ static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const Shado
      * it is found. */
     ShadowListWalk lw;
     const LbScan scan = lb_scan(limit, u, v, &point);
-    for (uint32_t b = 0; b < nblocks && !blocked && cell->near[b * LB_BLOCK] < limit; b++) {
+    for (uint32_t b = 0; b < nblocks && !blocked && cell->block[b].near[0] < limit; b++) {
         looked += LB_BLOCK;
         for (unsigned mask = lb_block_mask(cell, b, &scan); mask && !blocked; mask &= mask - 1) {
             uint32_t i = b * LB_BLOCK + (uint32_t)__builtin_ctz(mask);
