@@ -114,6 +114,31 @@ for scene in ["desk", "glasses", "stars", "cards"]:
     d = load(f"{work}/{scene}.hst.1.json")
     lb_rows.append((scene, d))
 print()
+print("## The camera's hits and the secondary ones apart")
+print()
+print("ns per decision at the hits of camera rays and at those of reflected, refracted and transmitted rays"
+      " (`time.shadow_testing_secondary` over `shadows.secondary_queries`), medians as above; the share of"
+      " decisions at secondary hits in brackets.")
+print()
+print("| scene | " + " | ".join(f"{m} camera / secondary" for m in methods if m != "none") + " |")
+print("|---|" + "---|" * (len(methods) - 1))
+for scene in ["desk", "glasses", "stars", "cards"]:
+    cells = []
+    for m in methods:
+        if m == "none":
+            continue
+        cam, sec, share = [], [], 0.0
+        for r in range(1, runs + 1):
+            d = load(f"{work}/{scene}.{m}.{r}.json")
+            q, q2 = d["shadows"]["queries"], d["shadows"].get("secondary_queries", 0)
+            t, t2 = d["time"]["shadow_testing"], d["time"].get("shadow_testing_secondary", 0.0)
+            cam.append(1e9 * (t - t2) / max(q - q2, 1))
+            if q2:
+                sec.append(1e9 * t2 / q2)
+            share = q2 / max(q, 1)
+        cells.append(f"{med(cam):.1f} / " + (f"{med(sec):.1f} ({100 * share:.0f}%)" if sec else "- (0%)"))
+    print(f"| {scene} | " + " | ".join(cells) + " |")
+print()
 print("## hst's sub-schemes and its light buffer (first round)")
 print()
 print("| scene | decisions | buffer lit | buffer cover | buffer list | cache hit | shadow ray | cells | MiB | build (ms) | candidates looked at / tested per decision |")

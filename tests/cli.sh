@@ -98,6 +98,20 @@ check "--stats prints the Table 2 rows: shadow testing" grep -q "shadow testing"
 check "--stats prints the Table 2 rows: preprocessing" grep -q preprocessing "$work/err"
 check "--stats-json writes JSON with the time split" grep -q '"shadow_testing"' "$work/s.json"
 check "PPM output is binary P6" [ "$(head -c 2 "$work/s.ppm")" = P6 ]
+# The decisions at the hits of reflected and refracted rays counted apart:
+# glasses refracts, cards has no mirror and no glass.
+secondary() {
+    python3 -c 'import json, sys
+d = json.load(open(sys.argv[1])); q, q2 = d["shadows"]["queries"], d["shadows"]["secondary_queries"]
+t, t2 = d["time"]["shadow_testing"], d["time"]["shadow_testing_secondary"]
+ok = (0 < q2 < q and 0 < t2 < t) if sys.argv[2] == "some" else (q2 == 0 and t2 == 0)
+sys.exit(0 if ok else 1)' "$1" "$2"
+}
+run "$srcdir/scenes/glasses.pov" --width 64 --height 48 -o "$work/g.ppm" --stats --stats-json "$work/g.json"
+check "--stats-json: glasses' decisions at refracted rays' hits counted apart, with their time" secondary "$work/g.json" some
+check "--stats: the decisions line gives both ns figures" grep -q "ns at secondary hits" "$work/err"
+run "$srcdir/scenes/cards.pov" --width 64 --height 48 -o "$work/c.ppm" --stats-json "$work/c.json"
+check "--stats-json: cards has no secondary hits, none counted" secondary "$work/c.json" none
 
 # Options keep their values whatever follows them.
 run "$srcdir/scenes/desk.pov" --width 32 --height 24 -o "$work/o.png" --volumes always --pixel-coherence off --tolerance 0 \

@@ -243,7 +243,9 @@ static void *worker_main(void *arg)
          * machine. Scaling each tile's share by the tile's CPU time over
          * its wall time takes that out (no change on an idle machine). */
         double *shadow_seconds = &ctx.shadow.stats.shadow_seconds;
+        double *secondary_seconds = &ctx.shadow.stats.shadow_seconds_secondary;
         double tile_wall = clock_wall(), tile_cpu = clock_thread_cpu(), shadow_before = *shadow_seconds;
+        double secondary_before = *secondary_seconds;
         long pixels = render_tile(&ctx, &loop, job, tile);
         if (ctx.expired) {
             atomic_store(&job->expired, 1);
@@ -258,8 +260,10 @@ static void *worker_main(void *arg)
         tile_cpu = clock_thread_cpu() - tile_cpu;
         if (opt->tile_seconds)
             opt->tile_seconds[tile] = tile_cpu; /* each tile is one thread's */
-        if (tile_wall > 0.0 && tile_cpu < tile_wall)
+        if (tile_wall > 0.0 && tile_cpu < tile_wall) {
             *shadow_seconds = shadow_before + (*shadow_seconds - shadow_before) * (tile_cpu / tile_wall);
+            *secondary_seconds = secondary_before + (*secondary_seconds - secondary_before) * (tile_cpu / tile_wall);
+        }
         atomic_fetch_add(&job->done_tiles, 1);
         /* At most four times a second, from half a second on. */
         if (job->opt->progress && wk->index == 0) {

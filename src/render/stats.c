@@ -205,6 +205,19 @@ void stats_print(FILE *f, const StatsReport *r)
     print_line(f, "rays", s, LINE_RAYS);
     print_line(f, "tests", s, LINE_TESTS);
     print_line(f, "shadows", s, LINE_SHADOWS);
+    {
+        /* ns a decision, the camera's hits and the secondary ones apart */
+        const ShadowCounters *c = &s->shadow;
+        uint64_t primary = c->shadow_queries - c->shadow_queries_secondary;
+        double primary_s = c->shadow_seconds - c->shadow_seconds_secondary;
+        fprintf(f, "  decisions   %.1f ns each at the camera's hits (%llu)", primary ? 1e9 * primary_s / (double)primary : 0.0,
+                (unsigned long long)primary);
+        if (c->shadow_queries_secondary)
+            fprintf(f, ", %.1f ns at secondary hits (%llu)",
+                    1e9 * c->shadow_seconds_secondary / (double)c->shadow_queries_secondary,
+                    (unsigned long long)c->shadow_queries_secondary);
+        fprintf(f, "\n");
+    }
     fprintf(f, "  sub-schemes");
     for (int i = 0; i < SCHEME_COUNT; i++)
         fprintf(f, "  %s %llu", shadow_scheme_names[i], (unsigned long long)s->shadow.shadow_schemes[i]);
@@ -361,10 +374,11 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
         }
         fprintf(f, "\n  ],\n");
     }
-    fprintf(f, "  \"time\": {\"parse\": %.6f, \"preprocessing\": %.6f, \"shadow_testing\": %.6f, \"others\": %.6f, "
+    fprintf(f, "  \"time\": {\"parse\": %.6f, \"preprocessing\": %.6f, \"shadow_testing\": %.6f, "
+               "\"shadow_testing_secondary\": %.6f, \"others\": %.6f, "
                "\"total\": %.6f, \"wall\": %.6f, \"world\": %.6f, \"hierarchy\": %.6f, \"volume_plan\": %.6f, "
                "\"building_volumes\": %.6f},\n",
-            r->parse_seconds, r->preprocess_seconds, s->shadow.shadow_seconds, others,
+            r->parse_seconds, r->preprocess_seconds, s->shadow.shadow_seconds, s->shadow.shadow_seconds_secondary, others,
             r->parse_seconds + r->preprocess_seconds + s->shadow.shadow_seconds + others, r->wall_seconds,
             r->world_seconds, r->hierarchy_seconds, r->plan_seconds, r->volumes_seconds);
     fprintf(f, "  \"rays\": {");

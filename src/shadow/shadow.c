@@ -160,6 +160,7 @@ void shadow_counters_add(ShadowCounters *t, const ShadowCounters *p)
         t->shadow_disagreements_by_scheme[i] += p->shadow_disagreements_by_scheme[i];
     }
     t->shadow_seconds += p->shadow_seconds;
+    t->shadow_seconds_secondary += p->shadow_seconds_secondary;
 }
 
 const char *const shadow_scheme_names[SCHEME_COUNT] = { "sustain",  "self-shadow", "volume",    "conventional",

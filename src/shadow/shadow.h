@@ -78,6 +78,7 @@ typedef struct {
     uint64_t shadow_schemes[SCHEME_COUNT]; /* decisions, in the order of ShadowScheme */
     uint64_t shadow_disagreements_by_scheme[SCHEME_COUNT];
     double shadow_seconds;        /* time spent deciding shadows, summed over threads */
+    double shadow_seconds_secondary; /* ... of which for shading points at secondary hits */
 } ShadowCounters;
 
 void shadow_counters_add(ShadowCounters *total, const ShadowCounters *part);

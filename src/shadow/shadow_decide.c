@@ -38,11 +38,19 @@ void shadow_verify(ShadowContext *ctx, const ShadowQuery *q, RGB got)
 
 void shadow_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *through)
 {
+    double before = ctx->stats.shadow_seconds;
     double t0 = shadow_timer_start(ctx);
     ctx->method->test(ctx, q, through);
     shadow_timer_stop(ctx, t0, ctx->untimed_seconds);
     ctx->untimed_seconds = 0.0;
     ctx->stats.shadow_queries++;
+    /* Points at the hits of reflected, refracted and transmitted rays
+     * counted apart (their time too: the sampled share and any cell built
+     * for them), since their coherence differs from the camera's hits. */
+    if (q->segment && q->segment->from && q->segment->from->kind != HIT_NONE) {
+        ctx->stats.shadow_queries_secondary++;
+        ctx->stats.shadow_seconds_secondary += ctx->stats.shadow_seconds - before;
+    }
     if (ctx->verify)
         shadow_verify(ctx, q, *through);
 }
