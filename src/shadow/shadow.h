@@ -49,6 +49,13 @@ typedef struct {
                           * one sample of that area light (area_light.h) */
 } ShadowQuery;
 
+/* 1 when q's point is the hit of a reflected, refracted or transmitted
+ * ray, 0 at a camera ray's hit. */
+static inline int shadow_query_secondary(const ShadowQuery *q)
+{
+    return q->segment && q->segment->from && q->segment->from->kind != HIT_NONE;
+}
+
 /* How a decision was made (statistics, --verify-shadows, --aov). A test
  * always sets ctx->last_scheme; a skip sets it only when it decides the
  * state at P2 (sustain, self-shadow, volume), so callers that want to know
@@ -100,7 +107,9 @@ typedef struct {
 } FilteredHit;
 
 /* A thread's last light buffer cell of a light (shadow_light_buffer.c),
- * and where it lies: face and indices at its level. */
+ * and where it lies: face and indices at its level. One for the camera's
+ * hits and one for the secondary ones, which interleave with them but
+ * are coherent among themselves (shadow_query_secondary). */
 typedef struct LbMemo {
     const struct LbCell *cell;
     int face, i, j;
@@ -144,7 +153,7 @@ typedef struct ShadowContext {
     void *method_state;        /* a method's own per-thread data (its thread_init makes it), or NULL */
     const struct EmbreeScene *embree; /* the embree method's scene (shared, read-only), or NULL */
     struct LightBuffers *light_buffers; /* the lights' buffers (shared, built as points ask), or NULL */
-    struct LbMemo *light_buffer_memo;   /* ... and per light, the cell this thread used last */
+    struct LbMemo *light_buffer_memo;   /* ... and per light, 2 light + secondary: the cell this thread used last */
     /* Time of the current decision already counted whole (a light buffer's
      * cell built), which the sampled timing leaves out (shadow_decide.h). */
     double untimed_seconds;

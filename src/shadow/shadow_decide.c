@@ -47,7 +47,7 @@ void shadow_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *through)
     /* Points at the hits of reflected, refracted and transmitted rays
      * counted apart (their time too: the sampled share and any cell built
      * for them), since their coherence differs from the camera's hits. */
-    if (q->segment && q->segment->from && q->segment->from->kind != HIT_NONE) {
+    if (shadow_query_secondary(q)) {
         ctx->stats.shadow_queries_secondary++;
         ctx->stats.shadow_seconds_secondary += ctx->stats.shadow_seconds - before;
     }
