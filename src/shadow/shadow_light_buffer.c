@@ -44,9 +44,9 @@ static void count_build(ShadowContext *ctx, double seconds)
 /* The cell at spot: the thread's last one for the light while it still
  * holds the spot (neighbouring points mostly share a cell), else the
  * buffer's. */
-static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, int light, const LbSpot *spot)
+static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, const ShadowQuery *q, const LbSpot *spot)
 {
-    LbMemo *m = &ctx->light_buffer_memo[light];
+    LbMemo *m = &ctx->light_buffer_memo[2 * q->light + shadow_query_secondary(q)];
     if (m->cell && m->face == spot->face) {
         int shift = 2 * (LB_LEVELS - 1 - m->cell->level);
         /* (a split cell is remembered only where the budget left its
@@ -110,7 +110,7 @@ static int light_buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, c
 static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const ShadowQuery *q, RGB *light)
 {
     LbSpot spot;
-    const LbCell *cell = lb && light_buffer_spot(v3_neg(q->to_light), &spot) ? cell_at_spot(ctx, lb, q->light, &spot)
+    const LbCell *cell = lb && light_buffer_spot(v3_neg(q->to_light), &spot) ? cell_at_spot(ctx, lb, q, &spot)
                                                                              : NULL;
     if (!cell)
         return shadow_cache_polygons_test(ctx, q, light);
