@@ -141,8 +141,8 @@ static int version_switch(const OptionRow *row, const char *arg, const char *v, 
     double x;
     if (option_parse_double(v, &x) || fabs(x - 3.7) > 1e-9) {
         int sw = arg[0] == '+' || arg[0] == '-';
-        snprintf(err, (size_t)errlen, "%s%s%s%s%s: hstrace reads scenes as POV-Ray 3.7 does (+MV3.7 or Version=3.7 "
-                 "only)", sw ? "'" : "", arg, sw ? "" : "=", sw ? "" : v, sw ? "'" : "");
+        snprintf(err, (size_t)errlen, "%s%s%s%s%s: hstrace reads scenes as POV-Ray 3.7 does (+MV3.7 only, or "
+                 "Version=3.7)", sw ? "'" : "", arg, sw ? "" : "=", sw ? "" : v, sw ? "'" : "");
         return -1;
     }
     opt->language_version_given = 1;
