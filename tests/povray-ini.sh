@@ -6,8 +6,9 @@
 # povray.ini of its own width (the system's, and those after it, a height
 # too), removed one after the other: the size --stats-json reports says
 # which was read, and that only one was. --no-povray-ini reads none; the
-# command line overrides what it says; its Library_Path, Output_File_Type,
-# Input_File_Name and Display mean what the man page says; a mistake in it
+# command line overrides what it says; its Library_Path (for include files
+# and INI files), Output_File_Type, Input_File_Name and Display mean what
+# the man page says; a mistake in it
 # is named at its FILE:LINE:COLUMN. With povray installed, POV-Ray renders
 # at the size hstrace does with the same $POVINI, folder and $HOME, and
 # with the machine's own system povray.ini (when there is one).
@@ -145,6 +146,20 @@ hst "$here" lib.pov -o lib.png
 check "Library_Path in povray.ini: the include is found there" exited 0
 hst "$here" lib.pov -o lib.png --no-povray-ini
 check "... and not without it (--no-povray-ini: cannot open, exit status 3)" exited 3 "cannot open include file 'mine.inc'"
+# INI files named by the command line (or Include_Ini) are looked for in
+# the library paths too, as POV-Ray finds Debian's quickres.ini; a name
+# without extension gets .ini.
+printf 'Width=33\nHeight=22\n' >"$work/lib/size.ini"
+printf '[Small]\nWidth=34\nHeight=23\n' >"$work/lib/sections.ini"
+hst "$here" scene.pov size.ini -o a.png
+check "an INI file named on the command line, not in the current folder: found in povray.ini's Library_Path (33x22)" \
+    size_from 33 22 "./povray.ini"
+hst "$here" scene.pov "sections.ini[small]" -o a.png
+check "... with a section (34x23)" size_from 34 23 "./povray.ini"
+hst "$here" scene.pov Include_Ini=size -o a.png
+check "Include_Ini=size: size.ini, found in the library path (33x22)" size_from 33 22 "./povray.ini"
+hst "$here" scene.pov size.ini -o a.png --no-povray-ini
+check "... and not without povray.ini's Library_Path (cannot open, exit status 3)" exited 3 "cannot open INI file 'size.ini'"
 printf 'Width=12\nHeight=9\nOutput_File_Type=E\n' >"$here/povray.ini"
 rm -f "$here/scene.exr" "$here/scene.png"
 hst "$here" scene.pov
@@ -181,18 +196,20 @@ check "... --help does not read it (exit status 0)" exited 0
 rm "$here/povray.ini"
 
 # --- against POV-Ray ------------------------------------------------------------
-# pov_size DIR: POV-Ray's render of scene.pov in DIR, with $POVINI and $HOME
-# as hst's; prints the PNG's size.
+# pov_size DIR [ARG...]: POV-Ray's render of scene.pov in DIR, with $POVINI
+# and $HOME as hst's; prints the PNG's size.
 pov_size() {
-    rm -f "$1/pov.png"
+    d=$1
+    shift
+    rm -f "$d/pov.png"
     (
-        cd "$1" || exit 99
+        cd "$d" || exit 99
         unset POVINI
         if [ -n "$povini" ]; then POVINI=$povini && export POVINI; fi
-        HOME=$myhome "$povray" +Iscene.pov +Opov.png +FN -A -D -GA +WT1 ||
-            HOME=$myhome "$povray" +Iscene.pov +Opov.png +FN -A -D -GA +WT1
+        HOME=$myhome "$povray" +Iscene.pov "$@" +Opov.png +FN -A -D -GA +WT1 ||
+            HOME=$myhome "$povray" +Iscene.pov "$@" +Opov.png +FN -A -D -GA +WT1
     ) >"$work/pov.log" 2>&1
-    png_size "$1/pov.png"
+    png_size "$d/pov.png"
 }
 # as_povray DESC DIR: hstrace and POV-Ray render scene.pov in DIR at one size
 as_povray() {
@@ -212,6 +229,11 @@ else
     as_povray "\$POVINI cannot be opened: the current folder's" "$here"
     povini=""
     as_povray "the current folder's" "$here"
+    printf 'Library_Path="%s"\n' "$work/lib" >>"$here/povray.ini"
+    hst "$here" scene.pov size.ini -o hst.png
+    h=$(png_size "$here/hst.png" 2>/dev/null) p=$(pov_size "$here" size.ini)
+    check "an INI file found in povray.ini's Library_Path: POV-Ray renders at hstrace's size (${h:-none})" \
+        test "${p:-none}" = "${h:-no image}"
     rm "$here/povray.ini"
     as_povray "the user's" "$here"
     # The machine's own system povray.ini, both reading it.

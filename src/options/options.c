@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "options.h"
@@ -585,9 +586,53 @@ static void apply_default(const OptionRow *r, Options *opt)
 /* Reads the INI file spec (with its section) and applies its entries;
  * where is the position of the line that included it ("FILE:LINE:COLUMN"),
  * NULL for the command line. */
+/* Where POV-Ray 3.7 finds an INI file it is given by name
+ * (frontend/processrenderoptions.cpp, OpenINIFileStream): in the current
+ * folder, then in each library path given so far (so Debian's povray.ini
+ * finds quickres.ini and res120.ini in /usr/share/povray-3.7/ini), each
+ * place trying the name as given when it has an extension of up to three
+ * letters, then the name with .ini and with .INI. The spec's section stays
+ * on. The first found, as a spec the options own; spec itself when none is
+ * (its reading then says it cannot be opened), or NULL when out of memory. */
+static const char *find_ini(Options *opt, const char *spec)
+{
+    size_t n = strlen(spec);
+    const char *open = n > 0 && spec[n - 1] == ']' ? strrchr(spec, '[') : NULL;
+    size_t name_len = open ? (size_t)(open - spec) : n;
+    const char *section = spec + name_len;
+    const char *dot = NULL;
+    for (const char *c = spec; c < spec + name_len; c++)
+        dot = *c == '.' ? c : *c == '/' ? NULL : dot;
+    int has_extension = dot && (size_t)(spec + name_len - dot) <= 4;
+    static const char *const tails[] = { "", ".ini", ".INI" };
+    for (int d = -1; d < opt->ninclude_paths; d++) {
+        if (d >= 0 && spec[0] == '/')
+            break; /* a full path is where it says */
+        const char *dir = d < 0 ? "" : opt->include_paths[d];
+        for (int t = has_extension ? 0 : 1; t < 3; t++) {
+            char path[PATH_MAX];
+            int len = snprintf(path, sizeof path, "%s%s%.*s%s", dir, d < 0 ? "" : "/", (int)name_len, spec, tails[t]);
+            struct stat st;
+            if (len <= 0 || (size_t)len >= sizeof path || stat(path, &st) != 0)
+                continue;
+            if (d < 0 && t == 0)
+                return spec;
+            char full[PATH_MAX + 256];
+            len = snprintf(full, sizeof full, "%s%s", path, section);
+            return len > 0 && (size_t)len < sizeof full ? option_own_string(opt, full, (size_t)len) : spec;
+        }
+    }
+    return spec;
+}
+
 static int read_ini(Options *opt, const char *spec, const char *where, int depth, char *err, int errlen)
 {
     char msg[700];
+    spec = find_ini(opt, spec);
+    if (!spec) {
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
     if (opt->ninis >= INI_MAX_FILES || opt->ini_bytes > INI_MAX_TOTAL_BYTES) {
         snprintf(msg, sizeof msg, "'%s': INI files read %d times, %zu bytes in all: more than the %d files or %u MiB "
                  "one command may read (do INI files include each other again and again?)",
