@@ -583,9 +583,6 @@ static void apply_default(const OptionRow *r, Options *opt)
 #define INI_MAX_FILES 1000
 #define INI_MAX_TOTAL_BYTES (16u << 20)
 
-/* Reads the INI file spec (with its section) and applies its entries;
- * where is the position of the line that included it ("FILE:LINE:COLUMN"),
- * NULL for the command line. */
 /* Where POV-Ray 3.7 finds an INI file it is given by name
  * (frontend/processrenderoptions.cpp, OpenINIFileStream): in the current
  * folder, then in each library path given so far (so Debian's povray.ini
@@ -625,6 +622,9 @@ static const char *find_ini(Options *opt, const char *spec)
     return spec;
 }
 
+/* Reads the INI file spec (with its section) and applies its entries;
+ * where is the position of the line that included it ("FILE:LINE:COLUMN"),
+ * NULL for the command line. */
 static int read_ini(Options *opt, const char *spec, const char *where, int depth, char *err, int errlen)
 {
     char msg[700];
