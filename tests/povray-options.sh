@@ -8,7 +8,9 @@
 # exactly these with these verdicts; no key is unknown to the INI reader;
 # an ignored key renders; a refused one is an error at its INI line,
 # naming the key and what it is about (exit status 1, no image); the
-# switches, each form, likewise on the command line. And Version=3.7 (as
+# switches, each form, likewise on the command line (one that takes no
+# value given one is unknown); POV-Ray's Unix front end's -help, -?,
+# -version, --V (honoured) and --benchmark (refused). And Version=3.7 (as
 # Blender's exporter writes it) means +MV3.7: a scene without #version is a
 # 3.7 scene, the PNG POV-Ray writes from the same INI file, code for code.
 #
@@ -190,6 +192,25 @@ check_status "no key of POV-Ray 3.7's is unknown to hstrace's INI reader (honour
     "$unknown" 0
 run scene.pov +W8 +H6 Bogus_Key=1 -o k.png
 check "a key POV-Ray does not know is unknown (exit status 1)" exited 1 "unknown INI key 'Bogus_Key'"
+# A switch that takes no value, given one, is no switch (as in POV-Ray).
+for sw in +B5 +UD1 +Vx -version2; do
+    run scene.pov +W8 +H6 "$sw" -o k.png
+    check "$sw: no switch of POV-Ray's, exit status 1" exited 1 "unknown POV-Ray switch '$sw'"
+done
+# POV-Ray's Unix front end's own options.
+for o in -help '-?'; do
+    run "$o"
+    check "$o: hstrace's --help (exit status 0)" test "$status $(grep -c '^usage: hstrace' "$work/out")" = "0 1"
+done
+for o in -version --V; do
+    run "$o"
+    check "$o: hstrace's --version (exit status 0)" test "$status $(grep -c '^hstrace [0-9]' "$work/out")" = "0 1"
+done
+for o in --benchmark -benchmark; do
+    run "$o"
+    check "$o: refused, exit status 1, naming it" \
+        exited 1 "'$o': POV-Ray's built-in benchmark scene is not supported by hstrace"
+done
 
 # --- each switch, in its forms -----------------------------------------------------------
 # SWITCH|exit status|what it is about (refused)

@@ -315,6 +315,11 @@ static int long_value(const OptionRow *r, const char *v, Options *opt, char *err
 static int long_option(const OptionRow *r, int argc, char **argv, int *i, Options *opt, char *err, int errlen)
 {
     const char *a = argv[*i];
+    if (r->type == OPT_UNSUPPORTED) {
+        snprintf(err, (size_t)errlen, "'%s': %s is not supported by hstrace (make bench runs hstrace's own)", a,
+                 r->reason);
+        return -1;
+    }
     if (r->type == OPT_FLAG) {
         int *level = INT_FIELD(opt, r);
         if (*level < (int)r->lo)
@@ -386,7 +391,9 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
     case OPT_CUSTOM:
         return r->handler(r, arg, v, opt, err, errlen);
     case OPT_IGNORED:
-        return 0; /* whatever follows: it cannot change the image or the files */
+        if (*v && !r->ignore_rest)
+            break; /* no switch of POV-Ray's: +B5 */
+        return 0; /* it cannot change the image or the files */
     case OPT_UNSUPPORTED:
         if (!on && r->ini_as == INI_AS_ON_OFF)
             return 0; /* off: POV-Ray's default, nothing asked for */
@@ -812,14 +819,18 @@ const char *options_output_extension(const Options *opt)
     }
 }
 
-/* Is word one of argv's (the options that decide whether povray.ini is
- * read, before anything else is)? */
-static int has_word(int argc, char **argv, const char *word)
+/* Is povray.ini to be read? Not with --no-povray-ini, and not for what
+ * only prints (--help, --version, --povray-options and their POV-Ray
+ * spellings): looked for before anything else is read. */
+static int wants_povray_ini(int argc, char **argv)
 {
+    static const char *const words[] = { "--no-povray-ini", "--help", "-h", "-help", "-?", "--version", "-version",
+                                         "--V", "--povray-options" };
     for (int i = 1; i < argc; i++)
-        if (strcmp(argv[i], word) == 0)
-            return 1;
-    return 0;
+        for (size_t k = 0; k < sizeof words / sizeof words[0]; k++)
+            if (strcmp(argv[i], words[k]) == 0)
+                return 0;
+    return 1;
 }
 
 /* POV-Ray's povray.ini (povray_ini.h), read as the first of the settings
@@ -898,9 +909,7 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             apply_default(&option_rows[i], opt);
     /* povray.ini is a render's: not read for what only prints */
     const char *ini_scene = NULL;
-    if (!has_word(argc, argv, "--no-povray-ini") && !has_word(argc, argv, "--help") && !has_word(argc, argv, "-h") &&
-        !has_word(argc, argv, "--version") && !has_word(argc, argv, "--povray-options") &&
-        read_povray_ini(opt, &ini_scene, err, errlen))
+    if (wants_povray_ini(argc, argv) && read_povray_ini(opt, &ini_scene, err, errlen))
         return -1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];

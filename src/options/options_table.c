@@ -315,8 +315,11 @@ static int file_gamma_key(const OptionRow *row, const char *arg, const char *val
 #define UNSUPPORTED(key, sw, why) { .ini = key, .pov = sw, .type = OPT_UNSUPPORTED, .reason = why }
 #define UNSUPPORTED_ON(key, sw, why) \
     { .ini = key, .pov = sw, .type = OPT_UNSUPPORTED, .ini_as = INI_AS_ON_OFF, .reason = why }
-/* A key or switch that cannot change the image or the files, and why. */
+/* A key or switch that cannot change the image or the files, and why; the
+ * switch takes nothing after it (+B5 is no switch, as in POV-Ray), but
+ * ..._VALUE's takes a value (+BM2). */
 #define IGNORED(key, sw, why) { .ini = key, .pov = sw, .type = OPT_IGNORED, .reason = why }
+#define IGNORED_VALUE(key, sw, why) { .ini = key, .pov = sw, .type = OPT_IGNORED, .ignore_rest = 1, .reason = why }
 
 static const OptionWord plane_words[] = {
     { "double", PLANES_DOUBLE }, { "float", PLANES_FLOAT }, { "float-naive", PLANES_FLOAT_NAIVE }, { NULL, 0 }
@@ -451,6 +454,14 @@ const OptionRow option_rows[] = {
       .help = "write the same statistics as JSON" },
     { .name = "--help", .type = OPT_FLAG, .field = OPTION_FIELD(help), .lo = 1, .help = "show this help" },
     { .short_name = "-h", .type = OPT_FLAG, .field = OPTION_FIELD(help), .lo = 1 }, /* not in --help */
+    /* POV-Ray's Unix front end's own (vfe/unix/unixoptions.cpp, Standard_Options),
+     * not in --help: the man page's POV-RAY OPTIONS names them */
+    { .short_name = "-help", .type = OPT_FLAG, .field = OPTION_FIELD(help), .lo = 1 },
+    { .short_name = "-?", .type = OPT_FLAG, .field = OPTION_FIELD(help), .lo = 1 },
+    { .short_name = "-version", .type = OPT_FLAG, .field = OPTION_FIELD(version), .lo = 1 },
+    { .short_name = "--V", .type = OPT_FLAG, .field = OPTION_FIELD(version), .lo = 1 },
+    { .short_name = "--benchmark", .type = OPT_UNSUPPORTED, .reason = "POV-Ray's built-in benchmark scene" },
+    { .short_name = "-benchmark", .type = OPT_UNSUPPORTED, .reason = "POV-Ray's built-in benchmark scene" },
     { .name = "--version", .type = OPT_FLAG, .field = OPTION_FIELD(version), .lo = 1, .help = "show the version" },
     /* options_parse looks for it before anything else is read */
     { .name = "--no-povray-ini", .type = OPT_FLAG, .field = OPTION_FIELD(no_povray_ini), .lo = 1,
@@ -576,16 +587,16 @@ const OptionRow option_rows[] = {
     IGNORED("Continue_Trace", "+C", "continues an interrupted render: hstrace writes whole files only, so it "
             "renders the whole image"),
     IGNORED("Verbose", "+V", "POV-Ray's verbose messages"),
-    IGNORED("Preview_Start_Size", "+SP", "the mosaic preview of the display window: hstrace has none"),
-    IGNORED("Preview_End_Size", "+EP", "the mosaic preview of the display window: hstrace has none"),
+    IGNORED_VALUE("Preview_Start_Size", "+SP", "the mosaic preview of the display window: hstrace has none"),
+    IGNORED_VALUE("Preview_End_Size", "+EP", "the mosaic preview of the display window: hstrace has none"),
     IGNORED("Draw_Vistas", "+UD", "draws the vista buffer in the display window: hstrace has none"),
     IGNORED("Video_Mode", NULL, "the display window's mode: hstrace has none"),
     IGNORED("Palette", NULL, "the display window's palette: hstrace has none"),
-    IGNORED("Test_Abort", "+X", "polls the keyboard to stop a render (hstrace stops on a signal)"),
+    IGNORED_VALUE("Test_Abort", "+X", "polls the keyboard to stop a render (hstrace stops on a signal)"),
     IGNORED("Test_Abort_Count", NULL, "how often +X polls the keyboard"),
     IGNORED("Bounding", "+B", "POV-Ray's bounding: speed only (hstrace bounds in its own hierarchy)"),
-    IGNORED("Bounding_Method", "+BM", "POV-Ray's bounding: speed only (hstrace bounds in its own hierarchy)"),
-    IGNORED("Bounding_Threshold", "+MB", "POV-Ray's bounding: speed only (hstrace bounds in its own hierarchy)"),
+    IGNORED_VALUE("Bounding_Method", "+BM", "POV-Ray's bounding: speed only (hstrace bounds in its own hierarchy)"),
+    IGNORED_VALUE("Bounding_Threshold", "+MB", "POV-Ray's bounding: speed only (hstrace bounds in its own hierarchy)"),
     IGNORED("BSP_BaseAccessCost", NULL, "tunes POV-Ray's BSP tree: speed only"),
     IGNORED("BSP_ChildAccessCost", NULL, "tunes POV-Ray's BSP tree: speed only"),
     IGNORED("BSP_ISectCost", NULL, "tunes POV-Ray's BSP tree: speed only"),
@@ -595,10 +606,10 @@ const OptionRow option_rows[] = {
     IGNORED("Vista_Buffer", "+UV", "POV-Ray's vista buffer: speed only, and POV-Ray 3.7 ignores it too"),
     IGNORED("Remove_Bounds", "+UR", "POV-Ray's bounding: speed only"),
     IGNORED("Split_Unions", "+SU", "POV-Ray's bounding: speed only"),
-    IGNORED("Render_Block_Step", "+RS", "the order the blocks are rendered in: the image does not depend on it"),
-    IGNORED("Render_Pattern", "+RP", "the order the blocks are rendered in: the image does not depend on it"),
-    IGNORED("Max_Image_Buffer_Memory", "+MI", "POV-Ray's image buffer on disk: hstrace keeps the image in memory"),
-    IGNORED("Warning_Level", "+WL", "which of POV-Ray's own warnings it prints"),
+    IGNORED_VALUE("Render_Block_Step", "+RS", "the order the blocks are rendered in: the image does not depend on it"),
+    IGNORED_VALUE("Render_Pattern", "+RP", "the order the blocks are rendered in: the image does not depend on it"),
+    IGNORED_VALUE("Max_Image_Buffer_Memory", "+MI", "POV-Ray's image buffer on disk: hstrace keeps the image in memory"),
+    IGNORED_VALUE("Warning_Level", "+WL", "which of POV-Ray's own warnings it prints"),
     IGNORED("Buffer_Output", NULL, "no longer used by POV-Ray 3.7 (it warns and goes on)"),
     IGNORED("Buffer_Size", NULL, "no longer used by POV-Ray 3.7 (it warns and goes on)"),
     IGNORED("Create_Histogram", NULL, "no longer used by POV-Ray 3.7 (it warns and goes on)"),
@@ -608,7 +619,7 @@ const OptionRow option_rows[] = {
     /* What only matters with a setting refused below. */
     IGNORED("Odd_Field", "+UO", "which field Field_Render renders (refused when on)"),
     IGNORED("Dither_Method", NULL, "how Dither dithers (refused when on)"),
-    IGNORED("Radiosity_File_Name", "+RF", "the file Radiosity_From_File and Radiosity_To_File use (refused when on)"),
+    IGNORED_VALUE("Radiosity_File_Name", "+RF", "the file Radiosity_From_File and Radiosity_To_File use (refused when on)"),
     IGNORED("Radiosity_Vain_Pretrace", "+RVP", "radiosity's pretrace: hstrace approximates radiosity "
             "(APPROXIMATIONS in the man page)"),
     IGNORED("High_Reproducibility", "+HR", "radiosity's reproducibility: hstrace approximates radiosity "
