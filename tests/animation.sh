@@ -1,7 +1,8 @@
 #!/bin/sh
 # POV-Ray's animations, in TAP: the values a scene sees (clock, clock_on,
 # clock_delta, initial_clock, final_clock, frame_number, initial_frame,
-# final_frame) for a still, +K, +KFI/+KFF, +KI/+KF, +KC and +SF/+EF, against
+# final_frame) for a still, +K, +KFI/+KFF, +KI/+KF, +KC, +SF/+EF and +STP
+# (Frame_Step), against
 # what POV-Ray 3.7.0.10 prints for the same switches (measured, written
 # below; and against POV-Ray itself when it is installed); the frames'
 # file names; an animation of 3 frames whose box moves with clock, from
@@ -77,6 +78,20 @@ expect subset "+KFI1 +KFF10 +SF0.5 +EF0.7" \
     "C=0.444444447756 CO=1 CD=0.111111000000 IC=0.000000 FC=1.000000 FN=5 IF=1 FF=10" \
     "C=0.555555582047 CO=1 CD=0.111111000000 IC=0.000000 FC=1.000000 FN=6 IF=1 FF=10" \
     "C=0.666666686535 CO=1 CD=0.111111000000 IC=0.000000 FC=1.000000 FN=7 IF=1 FF=10"
+expect step "+KFI1 +KFF7 +STP3" \
+    "C=0.000000000000 CO=1 CD=0.166667000000 IC=0.000000 FC=1.000000 FN=1 IF=1 FF=7" \
+    "C=0.500000000000 CO=1 CD=0.166667000000 IC=0.000000 FC=1.000000 FN=4 IF=1 FF=7" \
+    "C=1.000000000000 CO=1 CD=0.166667000000 IC=0.000000 FC=1.000000 FN=7 IF=1 FF=7"
+expect step-subset "+KFI1 +KFF10 +SF2 +EF9 Frame_Step=4" \
+    "C=0.111111111939 CO=1 CD=0.111111000000 IC=0.000000 FC=1.000000 FN=2 IF=1 FF=10" \
+    "C=0.555555582047 CO=1 CD=0.111111000000 IC=0.000000 FC=1.000000 FN=6 IF=1 FF=10"
+step_names() {
+    [ -s "$work/step1.png" ] && [ -s "$work/step4.png" ] && [ -s "$work/step7.png" ] || return 1
+    for f in "$work"/step?.png; do
+        case $f in */step[147].png) ;; *) echo "also $f"; return 1 ;; esac
+    done
+}
+check "+STP3 of frames 1 to 7: step1.png, step4.png and step7.png written, as POV-Ray names them, and no other" step_names
 names() { [ -s "$work/subset05.png" ] && [ -s "$work/subset06.png" ] && [ -s "$work/subset07.png" ] &&
     [ ! -e "$work/subset04.png" ] && [ ! -e "$work/subset08.png" ] && [ ! -e "$work/subset.png" ]; }
 check "+KFF10: frames 5 to 7 written as subset05.png .. subset07.png, padded to the final frame's digits" names

@@ -8,7 +8,8 @@
 # (measured on desk: RMSE 1.9e-5, 1.0e-5 and 1.9e-4). And: the limits see
 # anti-aliasing and the jitter (desk without either is outside them), the
 # same image on 1 and 2 threads and from every exact method with no
-# disagreement, INI keys meaning what the switches mean, and bad values.
+# disagreement, INI keys meaning what the switches mean, +BS (Render_Block_Size)
+# and +AG (Antialias_Gamma) against POV-Ray, and bad values.
 # Without povray the comparisons are TAP SKIPs.
 #
 # Environment: top_builddir (default .), POVRAY (path or name of povray;
@@ -67,6 +68,40 @@ if [ -n "$povray" ] && [ -s "$work/desk.m1.pov.exr" ] && [ -s "$work/desk.m1j.po
         fails "$hstrace" compare "$work/desk.m1.pov.exr" "$work/desk.plain.exr" --max-rmse 0.001 --max-share 0.001
     check "desk without jitter (+A0.3 -J) is outside the limits of POV-Ray's jittered +A0.3 (the jitter is POV-Ray's)" \
         fails "$hstrace" compare "$work/desk.m1j.pov.exr" "$work/desk.m1.hst.exr" --max-rmse 0.001 --max-share 0.001
+fi
+
+# +BS (Render_Block_Size) and +AG (Antialias_Gamma) against POV-Ray: desk at
+# +A0.1, where the blocks' edges and the gamma change pixels (measured with
+# 3.7.0.10: hstrace's +BS8 and +AG1 images RMSE 1.5e-5 and 1.9e-5 from
+# POV-Ray's at the same settings; 1.4e-3 from POV-Ray's at 32 and 2.5).
+# The limit: about five times the first, a tenth of the second.
+for set in "bs8:+A0.1 +BS8" "ag1:+A0.1 +AG1" "plain:+A0.1"; do
+    tag=${set%%:*} switches=${set#*:}
+    # shellcheck disable=SC2086 # the switches are words
+    run desk.pov +W160 +H120 $switches +FE -o "desk.$tag.hst.exr"
+    check "desk $switches: hstrace renders" exited 0
+done
+printf 'Antialias=on\nAntialias_Threshold=0.1\nRender_Block_Size=8\n' >"$work/bs.ini"
+run desk.pov bs.ini +W160 +H120 +FE -o desk.bs8ini.hst.exr
+check "Render_Block_Size=8 in an INI file: the image of +A0.1 +BS8" \
+    "$hstrace" compare "$work/desk.bs8.hst.exr" "$work/desk.bs8ini.hst.exr" --max-error 0
+for tag in bs8 ag1; do
+    check_fails "desk $tag: another image than the default's (the option changes pixels)" \
+        "$hstrace" compare "$work/desk.plain.hst.exr" "$work/desk.$tag.hst.exr" --max-error 0
+done
+if [ -z "$povray" ]; then
+    skip "desk +A0.1 +BS8 and +AG1 as POV-Ray renders them" "povray not installed"
+else
+    for set in "bs8:+A0.1 +BS8" "ag1:+A0.1 +AG1"; do
+        tag=${set%%:*} switches=${set#*:}
+        # shellcheck disable=SC2086
+        (cd "$work" && { "$povray" +Idesk.pov +W160 +H120 $switches +FE "+Odesk.$tag.pov.exr" -D -GA +WT1 ||
+            "$povray" +Idesk.pov +W160 +H120 $switches +FE "+Odesk.$tag.pov.exr" -D -GA +WT1; }) >"$work/pov.log" 2>&1
+        check "desk $switches: as POV-Ray renders it (RMSE <= 1e-4)" \
+            "$hstrace" compare "$work/desk.$tag.pov.exr" "$work/desk.$tag.hst.exr" --max-rmse 1e-4
+        check_fails "desk $switches: POV-Ray's image is outside that limit from hstrace's default (+A0.1 alone)" \
+            "$hstrace" compare "$work/desk.$tag.pov.exr" "$work/desk.plain.hst.exr" --max-rmse 1e-4
+    done
 fi
 
 # The same image on 1 and 2 threads, and from every exact method, verified.

@@ -302,7 +302,8 @@ check "--strict: the first approximation is an error at FILE:LINE:COLUMN, status
     exited 2 "approx.pov:4:33: 'photons' is only approximated by hstrace (photon mapping ignored); --strict makes it an error"
 check "--strict: no image" [ ! -e "$work/s.png" ]
 
-# hstrace's own colors.inc when POV-Ray's include folder is absent.
+# hstrace's own colors.inc when POV-Ray's include folder is absent (nor
+# named by $POVINC, which the suite sets for POV-Ray: hstrace reads it too).
 cat >"$work/colours.pov" <<'POV'
 #include "colors.inc"
 camera { location <0, 0, -3> look_at 0 }
@@ -310,11 +311,11 @@ light_source { <1, 2, -3> White }
 background { SkyBlue }
 triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> pigment { NeonPink } }
 POV
-HSTRACE_POVRAY_INCLUDE='' "$hstrace" "$work/colours.pov" --width 40 --height 30 -o "$work/c.png" 2>"$work/err"
+HSTRACE_POVRAY_INCLUDE='' POVINC='' "$hstrace" "$work/colours.pov" --width 40 --height 30 -o "$work/c.png" 2>"$work/err"
 status=$?
 check "#include \"colors.inc\" works with POV-Ray's include folder hidden (hstrace's own)" exited 0
 printf '#include "textures.inc"\n' >"$work/textures.pov"
-HSTRACE_POVRAY_INCLUDE='' "$hstrace" "$work/textures.pov" --width 8 --height 6 -o "$work/t.png" 2>"$work/err"
+HSTRACE_POVRAY_INCLUDE='' POVINC='' "$hstrace" "$work/textures.pov" --width 8 --height 6 -o "$work/t.png" 2>"$work/err"
 status=$?
 check "other include files need POV-Ray's folder: a clear I/O error, status 3" exited 3 "cannot open include file 'textures.inc'"
 tap_end

@@ -15,6 +15,9 @@
 #   - tests/options.map names at least one test file and check for it, and
 #     every entry holds: the file exists, contains the check's description
 #     (a literal part of it) and uses the option itself.
+# And POV-Ray 3.7's INI keys and switches: the man page's POV-RAY OPTIONS
+# lists the same, with the same verdicts, as the options' table
+# (`hstrace --povray-options`), no more and no fewer.
 # Entries for options documented nowhere are failures too (stale entries).
 #
 # Environment: top_srcdir, top_builddir (default .).
@@ -258,6 +261,70 @@ while read -r c o; do
     entries=$(awk -v c="$c" -v o="$o" '$1 == c && $2 == o && $3 !~ /^(help|man)-lacks:$/ { k++ } END { print k + 0 }' "$work/map")
     check "$c $o: mapped to $entries check(s) in tests/options.map that would notice it broken" mapped "$c" "$o"
 done <"$work/all"
+
+# --- POV-Ray's keys and switches: the man page against the options' table ---
+# The man page's POV-RAY OPTIONS lists every INI key and switch of POV-Ray
+# 3.7 with hstrace's verdict; `hstrace --povray-options` prints the table's
+# (src/options/options_table.c). A row of the table missing from the man
+# page, an entry of the man page that is no row, or another verdict, fails.
+# Each as "KEY SWITCH VERDICT" ("-" for none; refused-when-on).
+man_povray() {
+    awk '
+        $1 == ".SH" { sec = $0; tag = 0; next }
+        sec != ".SH POV-RAY OPTIONS" { next }
+        $1 == ".TP" { tag = 1; next }
+        tag == 1 {
+            line = $0; sub(/^\.B[RI]* +/, "", line); gsub(/\\-/, "-", line)
+            key = "-"; sw = "-"; n = split(line, t, /[ ,"]+/)
+            for (i = 1; i <= n; i++) if (t[i] ~ /^[+]/) sw = t[i]; else if (t[i] ~ /^[A-Z]/) key = t[i]
+            tag = 2; next
+        }
+        tag == 2 {
+            v = $1; sub(/[:.]$/, "", v); if (v == "refused" && $2 == "when") v = "refused-when-on"
+            print key, sw, v; tag = 0
+        }' "$1" | sort
+}
+listed_povray() {
+    "$hstrace" --povray-options | awk '{ v = $3; sub(/:$/, "", v); if ($3 == "refused" && $4 == "when") v = "refused-when-on"
+        print $1, $2, v }' | sort
+}
+cat >"$work/povray.sample" <<'MAN'
+.SH OPTIONS
+.TP
+.B Not_This +NT
+honoured: another section.
+.SH POV-RAY OPTIONS
+Text.
+.TP
+.B Some_Key +SK
+honoured: text.
+.TP
+.B Key_Alone
+refused when on: field rendering.
+.TP
+.B Other +O
+ignored: why.
+.SH COMPARE
+MAN
+check "extraction of POV-RAY OPTIONS from a made-up man page: keys, switches, verdicts, that section only" \
+    test "$(man_povray "$work/povray.sample" | tr '\n' ' ')" = "Key_Alone - refused-when-on Other +O ignored Some_Key +SK honoured "
+man_povray "$man" >"$work/man.povray"
+listed_povray >"$work/listed.povray"
+check "the man page's POV-RAY OPTIONS: $(grep -c . "$work/man.povray") keys and switches found (at least 100)" \
+    test "$(grep -c . "$work/man.povray")" -ge 100
+check "--povray-options: $(grep -c . "$work/listed.povray") keys and switches (at least 100)" \
+    test "$(grep -c . "$work/listed.povray")" -ge 100
+# by name: KEY SWITCH
+awk '{ print $1, $2 }' "$work/man.povray" >"$work/man.names"
+awk '{ print $1, $2 }' "$work/listed.povray" >"$work/listed.names"
+missing=$(comm -23 "$work/listed.names" "$work/man.names" | tr '\n' ';')
+extra=$(comm -13 "$work/listed.names" "$work/man.names" | tr '\n' ';')
+check "every row of the options' table (--povray-options) is in the man page's POV-RAY OPTIONS${missing:+ (missing: $missing)}" \
+    test -z "$missing"
+check "every entry of the man page's POV-RAY OPTIONS is a row of the table${extra:+ (not rows: $extra)}" test -z "$extra"
+other=$(comm -3 "$work/listed.povray" "$work/man.povray" | awk 'NF' | tr -s ' \t' ' ' | tr '\n' ';')
+check "the man page's POV-RAY OPTIONS lists what --povray-options lists, each with its verdict${other:+ (differ: $other)}" \
+    test -z "$other"
 
 # Entries for options that are documented nowhere.
 while read -r c o rest; do

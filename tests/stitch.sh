@@ -155,6 +155,20 @@ render aa-d +A0.3 +SR21 +ER48
 run stitch aa-c.exr aa-d.exr -o aa-off.exr
 check "+AM1, areas off the grid: written (exit 0) with a warning naming the part" \
     exited 0 "warning: aa-c.exr (rows 1-20, columns 1-64): anti-aliasing method 1 (+AM1) works in 32-pixel blocks"
+# +BS16: its own blocks, recorded in the parts' options.
+render bs-full +A0.3 +BS16
+render bs-a +A0.3 +BS16 +SR1 +ER16
+render bs-b +A0.3 +BS16 +SR17 +ER48
+stitched bs bs-full bs-a bs-b
+check "+AM1 +BS16, areas on the 16-pixel grid: no warning" fails grep -q warning "$work/err"
+render bs-c +A0.3 +BS16 +SR1 +ER20
+render bs-d +A0.3 +BS16 +SR21 +ER48
+run stitch bs-c.exr bs-d.exr -o bs-off.exr
+check "+AM1 +BS16, areas off the grid: the warning names its 16-pixel blocks" \
+    exited 0 "warning: bs-c.exr (rows 1-20, columns 1-64): anti-aliasing method 1 (+AM1) works in 16-pixel blocks"
+render aa-e +A0.3 +SR17 +ER48
+run stitch bs-a.exr aa-e.exr -o bs-mixed.exr
+check "a +BS16 part and a default one: refused (exit status 1), their options differ" exited 1 "+BS16"
 
 # --- analysis channels from parts whose N_th was timed apart ------------------------
 render timed-a --aov all --volumes always +SR1 +ER20

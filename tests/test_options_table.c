@@ -246,8 +246,8 @@ int main(void)
     /* The defaults options_parse gives, as they were before the table. */
     Options o;
     char err[1024];
-    char *argv[] = { "hstrace", "x.pov", NULL };
-    int status = options_parse(2, argv, &o, err, (int)sizeof err);
+    char *argv[] = { "hstrace", "x.pov", "--no-povray-ini", NULL };
+    int status = options_parse(3, argv, &o, err, (int)sizeof err);
     tap_ok(status == 0 && o.width == 320 && o.height == 240 && o.quality == 9 && strcmp(o.shadows, "hst") == 0 &&
                o.nth.mode == NTH_AUTO && o.max_tree_rays == 1L << 20 && o.pixel_coherence == 1 &&
                o.tolerance == GRID_TOLERANCE && o.plane_precision == 0 && o.volumes_always == 0 && o.threads == 0,

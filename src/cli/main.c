@@ -323,6 +323,7 @@ static int set_render_options(Frame *f, const Options *o, int distributed, const
         ropt->aa.gamma = o->aa_gamma;
         ropt->aa.work_gamma = f->working_gamma;
         ropt->aa.jitter = o->jitter_on ? (o->jitter_amount < 1.0 ? o->jitter_amount : 1.0) : 0.0; /* clipped, as POV-Ray */
+        ropt->aa.block = o->render_block_size;
     }
     ropt->x0 = o->area_x0;
     ropt->y0 = o->area_y0;
@@ -450,7 +451,8 @@ static int write_image(Frame *f, int argc, char **argv, const Options *o, const 
     double t = clock_wall();
     /* with gamma correction off, POV-Ray's working and file gamma are both
      * Display_Gamma (sRGB unless set): its pixels go out as they are, an
-     * EXR's decoded by it */
+     * EXR's decoded by it; else the file gamma is File_Gamma (sRGB unless
+     * set), which EXR and HDR, linear, do not use */
     const int gamma_off = scene_gamma_correction_off(f->scene);
     image_decode_working_gamma(&f->img, gamma_off ? o->display_gamma : f->working_gamma);
     ImageWriteOptions wopt;
@@ -461,7 +463,7 @@ static int write_image(Frame *f, int argc, char **argv, const Options *o, const 
     wopt.tga_rle = o->output_type == 'C';
     wopt.jpeg_quality = o->jpeg_quality;
     wopt.software = "hstrace " PACKAGE_VERSION;
-    wopt.display_gamma = gamma_off ? o->display_gamma : 0.0; /* else sRGB, POV-Ray's File_Gamma */
+    wopt.display_gamma = gamma_off ? o->display_gamma : o->file_gamma;
     wopt.display = f->colour; /* or OpenColorIO's display/view transform */
     if (f->colour != NULL) {
         wopt.have_chromaticities = colour_display_chromaticities(f->colour, wopt.chromaticities) == 0;
@@ -525,6 +527,10 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
     if (o->threads <= 0 && mpi_job_size() > 1)
         f.threads = f.threads / mpi_job_local_size() > 1 ? f.threads / mpi_job_local_size() : 1;
     f.report.scene = o->scene;
+    f.report.povray_ini = o->povray_ini;
+    f.report.povray_ini_why = o->povray_ini ? o->povray_ini_why
+                              : o->no_povray_ini ? "--no-povray-ini"
+                                                 : "none where POV-Ray looks for one";
     f.report.shadow_method = o->shadows;
     f.report.width = o->width;
     f.report.height = o->height;
@@ -578,6 +584,7 @@ static int main_rank(int argc, char **argv, double wall0)
 {
     Options opt;
     char err[1024];
+    int status = EXIT_OK;
     if (options_parse(argc, argv, &opt, err, sizeof err)) {
         /* An INI file's mistake begins with its FILE:LINE:COLUMN. */
         fprintf(stderr, opt.error_has_position ? "%s\n" : "hstrace: %s\n", err);
@@ -585,9 +592,11 @@ static int main_rank(int argc, char **argv, double wall0)
         options_free(&opt);
         return io ? EXIT_IO : EXIT_USAGE;
     }
-    if (opt.help || opt.version) {
+    if (opt.help || opt.version || opt.povray_options) {
         if (opt.help)
             options_usage(stdout);
+        else if (opt.povray_options)
+            status = options_povray_list(stdout) ? EXIT_IO : EXIT_OK;
         else if (shadow_embree_built())
             printf("hstrace %s (%s; Embree %s; %s)\n", PACKAGE_VERSION, colour_ocio_version(), shadow_embree_version(),
                    mpi_job_built() ? "Open MPI" : "no MPI");
@@ -595,9 +604,12 @@ static int main_rank(int argc, char **argv, double wall0)
             printf("hstrace %s (%s; no Embree; %s)\n", PACKAGE_VERSION, colour_ocio_version(),
                    mpi_job_built() ? "Open MPI" : "no MPI");
         options_free(&opt);
-        return EXIT_OK;
+        return status;
     }
 
+    if (opt.povray_ini_warning[0] && opt.warning_console)
+        fprintf(stderr, "hstrace: warning: %s; the search for povray.ini goes on, as POV-Ray's does\n",
+                opt.povray_ini_warning);
     if (opt.display_asked)
         fprintf(stderr, "hstrace: note: +D: hstrace has no display window; the image goes to its file only\n");
     if (opt.pause_asked)
@@ -614,21 +626,22 @@ static int main_rank(int argc, char **argv, double wall0)
      * its messages; a rank that fails alone ends the job, named by
      * mpirun). */
     const int ranks = mpi_job_size(), rank = mpi_job_rank();
-    const int by_frames = ranks > 1 && anim.animated && anim.last - anim.first + 1 >= ranks;
+    const int by_frames = ranks > 1 && anim.animated && animation_frames(&anim) >= ranks;
     const int distributed = ranks > 1 && !by_frames;
     if (distributed && rank != 0 && !freopen("/dev/null", "w", stderr))
         return EXIT_IO;
     char *default_name = opt.output ? NULL : default_output(opt.scene, options_output_extension(&opt));
     const char *output = opt.output ? opt.output : default_name;
-    int status = output ? EXIT_OK : EXIT_IO;
+    status = output ? EXIT_OK : EXIT_IO;
     if (ranks > 1 && rank == 0 && opt.stats)
         fprintf(stderr, "hstrace: %d ranks, %s\n", ranks, by_frames ? "the frames spread over them" : "the tiles of each frame spread over them");
     if (!output)
         fprintf(stderr, "hstrace: out of memory\n");
     /* Each frame is parsed, built and rendered anew, as POV-Ray does, and
      * written to its own numbered file; the first that fails ends the run. */
-    for (int frame = anim.first; status == EXIT_OK && frame <= anim.last; frame++) {
-        if (by_frames && (frame - anim.first) % ranks != rank)
+    for (int frame = anim.first; status == EXIT_OK && frame <= anim.last; frame += anim.step) {
+        const int nth = (frame - anim.first) / anim.step; /* counted from 0 */
+        if (by_frames && nth % ranks != rank)
             continue;
         /* The values as POV-Ray 3.7 hands them to the scene (animation.h). */
         ParseAnimation pa = { animation_clock(&anim, frame), pov_declared_value(anim.clock_delta),
@@ -643,8 +656,8 @@ static int main_rank(int argc, char **argv, double wall0)
             status = EXIT_IO;
         } else {
             if (anim.animated && isatty(STDERR_FILENO))
-                fprintf(stderr, "hstrace: frame %d (%d of %d), clock %g: %s\n", frame, frame - anim.first + 1,
-                        anim.last - anim.first + 1, pa.clock, name);
+                fprintf(stderr, "hstrace: frame %d (%d of %d), clock %g: %s\n", frame, nth + 1, animation_frames(&anim),
+                        pa.clock, name);
             status = render_frame(argc, argv, &opt, anim.animated ? &pa : &still, name ? name : output,
                                   json ? json : opt.stats_json, frame == anim.first ? wall0 : clock_wall(), distributed);
         }

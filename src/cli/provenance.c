@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "antialias.h"
 #include "aov.h"
 #include "config.h"
 #include "cost_model.h"
@@ -93,12 +94,15 @@ static char *resolved_options(const Options *opt, const ParseAnimation *anim, co
      * (the render clips the threshold and the jitter to 1). */
     char aa[256] = "";
     if (opt->antialias_on) {
-        char threshold[32], gamma[32], jitter[32];
+        char threshold[32], gamma[32], jitter[32], block[32] = "";
         shortest(threshold, sizeof threshold, opt->aa_threshold);
         shortest(gamma, sizeof gamma, opt->aa_gamma);
         shortest(jitter, sizeof jitter, opt->jitter_amount);
-        snprintf(aa, sizeof aa, " +A%s +AM%d +R%d Antialias_Gamma=%s %s%s", threshold, opt->aa_method, opt->aa_depth,
-                 gamma, opt->jitter_on ? "+J" : "-J", opt->jitter_on ? jitter : "");
+        /* the blocks it decides in, when not POV-Ray's default */
+        if (opt->render_block_size != ANTIALIAS_BLOCK)
+            snprintf(block, sizeof block, " +BS%d", opt->render_block_size);
+        snprintf(aa, sizeof aa, " +A%s +AM%d +R%d Antialias_Gamma=%s %s%s%s", threshold, opt->aa_method, opt->aa_depth,
+                 gamma, opt->jitter_on ? "+J" : "-J", opt->jitter_on ? jitter : "", block);
     }
     char clock[48] = "";
     if (anim && anim->clock_on) {

@@ -30,6 +30,7 @@ static int subset_in_range(double v, const char *what, char *err, int errlen)
 int animation_plan(const Options *opt, Animation *a, char *err, int errlen)
 {
     memset(a, 0, sizeof *a);
+    a->step = opt->frame_step > 1 ? opt->frame_step : 1;
     a->still_clock = (float)opt->clock;
     a->still_clock_on = opt->have_clock;
     a->initial_frame = opt->initial_frame > 0 ? opt->initial_frame : 0;
@@ -69,6 +70,11 @@ int animation_plan(const Options *opt, Animation *a, char *err, int errlen)
     for (int i = a->final_frame; i >= 10; i /= 10)
         a->digits++;
     return 0;
+}
+
+int animation_frames(const Animation *a)
+{
+    return (a->last - a->first) / a->step + 1;
 }
 
 double animation_clock(const Animation *a, int frame)

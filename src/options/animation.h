@@ -9,7 +9,7 @@
  *
  * rendering frames +SF .. +EF (a value below 1 other than 0 is a fraction
  * of the frames; without +EF, the final frame, or the one before it with
- * +KC). It animates when +KFF is above +KFI; else a still is rendered, with
+ * +KC), every +STP-th of them from +SF's (Frame_Step; below 1 is 1). It animates when +KFF is above +KFI; else a still is rendered, with
  * clock +K (clock_on true when +K is given) and the other values 0. Frame n of "name.ext" is written to "nameNNN.ext", the number
  * padded with zeros to the digits of the final frame. */
 #ifndef HST_ANIMATION_H
@@ -19,7 +19,8 @@
 
 typedef struct {
     int animated;           /* 0: a still */
-    int first, last;        /* the frames rendered, inclusive */
+    int first, last;        /* the frames rendered, inclusive: first, first + step, ... up to last */
+    int step;               /* Frame_Step, 1 or more */
     int initial_frame, final_frame;
     double initial_clock, final_clock, clock_delta;
     double still_clock;     /* +K, for a still */
@@ -29,6 +30,9 @@ typedef struct {
 
 /* Returns 0, or -1 with a message (an empty range of frames). */
 int animation_plan(const Options *opt, Animation *a, char *err, int errlen);
+
+/* How many frames are rendered. */
+int animation_frames(const Animation *a);
 
 /* The clock of frame n, as the scene sees it (single precision, as POV-Ray
  * keeps it); a still's is +K's. */

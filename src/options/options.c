@@ -9,12 +9,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "options.h"
 
 #include "ini_file.h"
 #include "options_table.h"
+#include "povray_ini.h"
 #include "shadow.h"
 
 int option_parse_int(const char *s, int lo, int hi, int *out)
@@ -97,7 +99,8 @@ static const char usage_tail[] =
     "accepted and change nothing, +D with a note (no display window). A scene named\n"
     "without an extension is NAME.pov, as in POV-Ray.\n"
     "Anti-aliasing as POV-Ray 3.7's: +A[threshold] (0.3), -A, +AM1 / +AM2 (method),\n"
-    "+Rn (depth, 3), +J[amount] / -J (POV-Ray's own jitter, on by default).\n"
+    "+Rn (depth, 3), +J[amount] / -J (POV-Ray's own jitter, on by default), +AGn\n"
+    "(Antialias_Gamma, 2.5), +BSn (Render_Block_Size: the blocks it decides in, 32).\n"
     "+UA: an alpha channel (PNG, Targa, BMP; EXR always has one), the background\n"
     "transparent, as POV-Ray 3.7's; -UA (the default) composites it.\n"
     "+C (continue: hstrace leaves no partial image, so it renders all), +MV3.7,\n"
@@ -107,14 +110,24 @@ static const char usage_tail[] =
     "shown; a stream to a file (+GW name) and +GI name (an INI file) are refused.\n"
     "On a terminal a progress line shows the pixels done and the time left.\n"
     "Animation: +KFIn +KFFn (first and last frame), +KIf +KFf (their clocks), +KC\n"
-    "(cyclic), +SFn +EFn (the frames rendered), +Kf (a still's clock); each frame is\n"
-    "parsed and rendered anew and written to NAMEnn.EXT, as POV-Ray numbers them.\n"
+    "(cyclic), +SFn +EFn (the frames rendered), +STPn (every n-th of them), +Kf (a\n"
+    "still's clock); each frame is parsed and rendered anew and written to\n"
+    "NAMEnn.EXT, as POV-Ray numbers them.\n"
     "Partial renders: +SRn +ERn +SCn +ECn (rows and columns from 1, or fractions below\n"
     "1), the rest of the image black, as POV-Ray writes them.\n"
+    "Accepted and ignored, since they cannot change the image or the files: +B +BMn\n"
+    "+MBn +SU +UR +UL +UV (POV-Ray's bounding and buffers), +UD, +X, +WLn, +MIn, +RSn\n"
+    "+RPn (the blocks' order), +UO, +RFname, +RVP, +HR. Refused, with why: +UF (field\n"
+    "rendering), +TH (dithering), +RFI +RFO (radiosity files), +RTR +KLA (real-time\n"
+    "ray tracing), +HI (an include header); their - forms (off) are accepted.\n"
+    "--povray-options lists every POV-Ray INI key and switch and what hstrace does.\n"
     "POV-Ray INI files (FILE.ini, FILE.ini[SECTION]) and INI options given as KEY=VALUE\n"
     "(Input_File_Name, Output_File_Name, Width, Height, Quality, Work_Threads,\n"
-    "Library_Path, Output_File_Type, Bits_Per_Color, Declare=NAME=VALUE, Initial_Frame,\n"
-    "...: see the man page); settings apply in order, later ones winning.\n"
+    "Library_Path, Output_File_Type, Bits_Per_Color, File_Gamma, Version,\n"
+    "Declare=NAME=VALUE, Initial_Frame, ...: see the man page); settings apply in\n"
+    "order, later ones winning, after the povray.ini POV-Ray reads ($POVINI, else\n"
+    "./povray.ini, ~/.povray/3.7/povray.ini, /etc/povray/3.7/povray.ini: the first\n"
+    "found; --no-povray-ini reads none) and before $POVINC's include folder.\n"
     "\n"
     "Exit status: 0 success, 1 bad usage (also a mistake in an INI file, a display,\n"
     "view or colour space the config lacks), 2 scene error, 3 input/output error (also\n"
@@ -179,6 +192,12 @@ int options_is_long(const char *arg, const char *name)
 
 int option_add_include(Options *opt, const char *dir, char *err, int errlen)
 {
+    /* A folder named again is searched where it was first named, as POV-Ray
+     * drops the repeats of its library paths (vfe/vfecontrol.cpp): povray.ini
+     * and a command line often name the same ones. */
+    for (int i = 0; i < opt->ninclude_paths; i++)
+        if (strcmp(opt->include_paths[i], dir) == 0)
+            return 0;
     if (opt->ninclude_paths >= MAX_INCLUDE_PATHS) {
         snprintf(err, (size_t)errlen, "too many include paths (at most %d)", MAX_INCLUDE_PATHS);
         return -1;
@@ -296,6 +315,11 @@ static int long_value(const OptionRow *r, const char *v, Options *opt, char *err
 static int long_option(const OptionRow *r, int argc, char **argv, int *i, Options *opt, char *err, int errlen)
 {
     const char *a = argv[*i];
+    if (r->type == OPT_UNSUPPORTED) {
+        snprintf(err, (size_t)errlen, "'%s': %s is not supported by hstrace (make bench runs hstrace's own)", a,
+                 r->reason);
+        return -1;
+    }
     if (r->type == OPT_FLAG) {
         int *level = INT_FIELD(opt, r);
         if (*level < (int)r->lo)
@@ -328,11 +352,15 @@ static const OptionRow *switch_row(const char *arg)
 static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen)
 {
     const OptionRow *r = switch_row(arg);
-    const char *v = r ? arg + strlen(r->pov) : "";
+    if (!r) {
+        snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
+        return -1;
+    }
+    const char *v = arg + strlen(r->pov);
     int on = arg[0] == '+', bad = 0;
-    if (r && r->given)
+    if (r->given)
         *(int *)field_of(opt, r->given) = 1;
-    switch (r ? r->type : OPT_IGNORED) {
+    switch (r->type) {
     case OPT_INT: {
         int unused;
         bad = option_parse_int(v, (int)r->lo, (int)r->hi, r->field ? INT_FIELD(opt, r) : &unused);
@@ -362,6 +390,15 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
         return 0;
     case OPT_CUSTOM:
         return r->handler(r, arg, v, opt, err, errlen);
+    case OPT_IGNORED:
+        if (*v && !r->ignore_rest)
+            break; /* no switch of POV-Ray's: +B5 */
+        return 0; /* it cannot change the image or the files */
+    case OPT_UNSUPPORTED:
+        if (!on && r->ini_as == INI_AS_ON_OFF)
+            return 0; /* off: POV-Ray's default, nothing asked for */
+        snprintf(err, (size_t)errlen, "'%s': %s is not supported by hstrace yet", arg, r->reason);
+        return -1;
     default:
         break;
     }
@@ -369,7 +406,7 @@ static int parse_pov_switch(const char *arg, Options *opt, char *err, int errlen
         snprintf(err, (size_t)errlen, "'%s': %s", arg, r->pov_expect);
         return -1;
     }
-    if (r && (r->type == OPT_INT || r->type == OPT_REAL))
+    if (r->type == OPT_INT || r->type == OPT_REAL)
         return 0;
     snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
     return -1;
@@ -422,6 +459,19 @@ static int ini_value(const OptionRow *r, const char *value, const char *where, O
 {
     int b, bad = 0;
     double x;
+    if (r->type == OPT_IGNORED)
+        return 0;
+    if (r->type == OPT_UNSUPPORTED) {
+        /* a key refused only when on takes off, POV-Ray's default */
+        if (r->ini_as == INI_AS_ON_OFF && parse_bool(value, &b)) {
+            snprintf(msg, (size_t)msglen, "%s=%s: expected on or off", r->ini, value);
+            return -1;
+        }
+        if (r->ini_as == INI_AS_ON_OFF && !b)
+            return 0;
+        snprintf(msg, (size_t)msglen, "%s: %s is not supported by hstrace yet", r->ini, r->reason);
+        return -1;
+    }
     if (r->ini_as == INI_AS_SWITCH) {
         char sw[600];
         snprintf(sw, sizeof sw, "%s%s", r->pov, value);
@@ -469,10 +519,7 @@ static int ini_value(const OptionRow *r, const char *value, const char *where, O
         return option_add_include(opt, value, msg, msglen);
     case OPT_CUSTOM:
         return r->handler(r, r->ini, value, opt, msg, msglen);
-    case OPT_UNSUPPORTED:
-        snprintf(msg, (size_t)msglen, "%s: %s is not supported by hstrace yet", r->ini, r->reason);
-        return -1;
-    default: /* OPT_IGNORED */
+    default:
         break;
     }
     if (bad) {
@@ -543,12 +590,56 @@ static void apply_default(const OptionRow *r, Options *opt)
 #define INI_MAX_FILES 1000
 #define INI_MAX_TOTAL_BYTES (16u << 20)
 
+/* Where POV-Ray 3.7 finds an INI file it is given by name
+ * (frontend/processrenderoptions.cpp, OpenINIFileStream): in the current
+ * folder, then in each library path given so far (so Debian's povray.ini
+ * finds quickres.ini and res120.ini in /usr/share/povray-3.7/ini), each
+ * place trying the name as given when it has an extension of up to three
+ * letters, then the name with .ini and with .INI. The spec's section stays
+ * on. The first found, as a spec the options own; spec itself when none is
+ * (its reading then says it cannot be opened), or NULL when out of memory. */
+static const char *find_ini(Options *opt, const char *spec)
+{
+    size_t n = strlen(spec);
+    const char *open = n > 0 && spec[n - 1] == ']' ? strrchr(spec, '[') : NULL;
+    size_t name_len = open ? (size_t)(open - spec) : n;
+    const char *section = spec + name_len;
+    const char *dot = NULL;
+    for (const char *c = spec; c < spec + name_len; c++)
+        dot = *c == '.' ? c : *c == '/' ? NULL : dot;
+    int has_extension = dot && (size_t)(spec + name_len - dot) <= 4;
+    static const char *const tails[] = { "", ".ini", ".INI" };
+    for (int d = -1; d < opt->ninclude_paths; d++) {
+        if (d >= 0 && spec[0] == '/')
+            break; /* a full path is where it says */
+        const char *dir = d < 0 ? "" : opt->include_paths[d];
+        for (int t = has_extension ? 0 : 1; t < 3; t++) {
+            char path[PATH_MAX];
+            int len = snprintf(path, sizeof path, "%s%s%.*s%s", dir, d < 0 ? "" : "/", (int)name_len, spec, tails[t]);
+            struct stat st;
+            if (len <= 0 || (size_t)len >= sizeof path || stat(path, &st) != 0)
+                continue;
+            if (d < 0 && t == 0)
+                return spec;
+            char full[PATH_MAX + 256];
+            len = snprintf(full, sizeof full, "%s%s", path, section);
+            return len > 0 && (size_t)len < sizeof full ? option_own_string(opt, full, (size_t)len) : spec;
+        }
+    }
+    return spec;
+}
+
 /* Reads the INI file spec (with its section) and applies its entries;
  * where is the position of the line that included it ("FILE:LINE:COLUMN"),
  * NULL for the command line. */
 static int read_ini(Options *opt, const char *spec, const char *where, int depth, char *err, int errlen)
 {
     char msg[700];
+    spec = find_ini(opt, spec);
+    if (!spec) {
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
     if (opt->ninis >= INI_MAX_FILES || opt->ini_bytes > INI_MAX_TOTAL_BYTES) {
         snprintf(msg, sizeof msg, "'%s': INI files read %d times, %zu bytes in all: more than the %d files or %u MiB "
                  "one command may read (do INI files include each other again and again?)",
@@ -728,12 +819,98 @@ const char *options_output_extension(const Options *opt)
     }
 }
 
+/* Is povray.ini to be read? Not with --no-povray-ini, and not for what
+ * only prints (--help, --version, --povray-options and their POV-Ray
+ * spellings): looked for before anything else is read. */
+static int wants_povray_ini(int argc, char **argv)
+{
+    static const char *const words[] = { "--no-povray-ini", "--help", "-h", "-help", "-?", "--version", "-version",
+                                         "--V", "--povray-options" };
+    for (int i = 1; i < argc; i++)
+        for (size_t k = 0; k < sizeof words / sizeof words[0]; k++)
+            if (strcmp(argv[i], words[k]) == 0)
+                return 0;
+    return 1;
+}
+
+/* POV-Ray's povray.ini (povray_ini.h), read as the first of the settings
+ * so that everything after it overrides it. What it says is the machine's
+ * default for POV-Ray: its scene is one when the command line names none;
+ * its output type yields to an output named with another type's extension
+ * (-o out.exr); its Display=on and Pause_When_Done=on bring no note. */
+static int read_povray_ini(Options *opt, const char **scene, char *err, int errlen)
+{
+    PovrayIni ini;
+    int found = povray_ini_find(&ini);
+    snprintf(opt->povray_ini_warning, sizeof opt->povray_ini_warning, "%s", ini.warning);
+    if (!found)
+        return 0;
+    opt->povray_ini = option_own_string(opt, ini.path, strlen(ini.path));
+    opt->povray_ini_why = ini.why;
+    if (!opt->povray_ini) {
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
+    if (read_ini(opt, opt->povray_ini, NULL, 0, err, errlen)) {
+        size_t n = strlen(err);
+        if (n + 1 < (size_t)errlen)
+            snprintf(err + n, (size_t)errlen - n, " (read as %s, before the command line; --no-povray-ini reads none)",
+                     ini.why);
+        return -1;
+    }
+    *scene = opt->scene;
+    opt->scene = NULL;
+    opt->output_type_given = 0;
+    opt->display_asked = 0;
+    opt->pause_asked = 0;
+    return 0;
+}
+
+/* $POVINC: one more include folder, after all others, as POV-Ray's Unix
+ * front end adds it (vfe/unix/unixconsole.cpp). */
+static int add_povinc(Options *opt, char *err, int errlen)
+{
+    const char *dir = getenv("POVINC");
+    if (!dir || !dir[0])
+        return 0;
+    char *own = option_own_string(opt, dir, strlen(dir));
+    if (!own) {
+        snprintf(err, (size_t)errlen, "out of memory");
+        return -1;
+    }
+    return option_add_include(opt, own, err, errlen);
+}
+
+/* An output named with an image type's extension: a type that povray.ini
+ * alone gave yields to it. */
+static void output_type_from_name(Options *opt)
+{
+    if (!opt->output_type || opt->output_type_given || !opt->output)
+        return;
+    const char *base = strrchr(opt->output, '/'), *dot;
+    base = base ? base + 1 : opt->output;
+    dot = strrchr(base, '.');
+    static const struct { const char *ext; int type; } types[] = {
+        { ".png", 'N' }, { ".exr", 'E' }, { ".ppm", 'P' }, { ".tga", 'T' }, { ".bmp", 'B' },
+        { ".jpg", 'J' }, { ".jpeg", 'J' }, { ".hdr", 'H' },
+    };
+    for (size_t i = 0; dot && i < sizeof types / sizeof types[0]; i++)
+        if (strcasecmp(dot, types[i].ext) == 0 && !(types[i].type == 'T' && opt->output_type == 'C')) {
+            opt->output_type = types[i].type;
+            return;
+        }
+}
+
 int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
 {
     memset(opt, 0, sizeof *opt);
     for (size_t i = 0; i < option_nrows; i++)
         if (option_rows[i].dflt)
             apply_default(&option_rows[i], opt);
+    /* povray.ini is a render's: not read for what only prints */
+    const char *ini_scene = NULL;
+    if (wants_povray_ini(argc, argv) && read_povray_ini(opt, &ini_scene, err, errlen))
+        return -1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const OptionRow *r = long_row(a);
@@ -764,7 +941,12 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
             return -1;
         }
     }
-    if (!opt->help && !opt->version && !opt->scene) {
+    if (!opt->scene)
+        opt->scene = ini_scene;
+    if (add_povinc(opt, err, errlen))
+        return -1;
+    output_type_from_name(opt);
+    if (!opt->help && !opt->version && !opt->povray_options && !opt->scene) {
         snprintf(err, (size_t)errlen, "no scene file given (see --help)");
         return -1;
     }
@@ -797,8 +979,13 @@ int options_parse(int argc, char **argv, Options *opt, char *err, int errlen)
                 return -1;
             }
         } else if (strcasecmp(dot, ext) != 0 && !(opt->output_type == 'J' && strcasecmp(dot, ".jpeg") == 0)) {
-            snprintf(err, (size_t)errlen, "+F%c asks for %s, but the output '%s' is named for another type",
-                     opt->output_type, ext + 1, opt->output);
+            if (opt->output_type_given)
+                snprintf(err, (size_t)errlen, "+F%c asks for %s, but the output '%s' is named for another type",
+                         opt->output_type, ext + 1, opt->output);
+            else
+                snprintf(err, (size_t)errlen, "%s's Output_File_Type=%c asks for %s, but the output '%s' is named "
+                         "for no image type", opt->povray_ini ? opt->povray_ini : "povray.ini", opt->output_type,
+                         ext + 1, opt->output);
             return -1;
         }
     }

@@ -60,6 +60,14 @@ typedef struct {
     /* OpenColorIO (see colour.h); NULL when not given. */
     const char *ocio_config, *display, *view, *colorspace;
     int help, version;
+    int povray_options;           /* --povray-options: list POV-Ray's keys and switches */
+    /* POV-Ray's povray.ini (povray_ini.h), read before everything else
+     * unless --no-povray-ini: the file read (NULL: none), why that one, and
+     * a warning to show (a $POVINI that cannot be opened), or "". */
+    int no_povray_ini;
+    const char *povray_ini;
+    const char *povray_ini_why;
+    char povray_ini_warning[320];
     /* Declare=NAME=VALUE from the command line and INI files, in order. */
     OptionDeclare *declares;
     int ndeclares;
@@ -73,11 +81,18 @@ typedef struct {
      * correction off (no assumed_gamma, below 3.7): what an EXR holds and
      * what a PNG's gAMA chunk says. */
     double display_gamma;
+    /* File_Gamma: 0 sRGB (POV-Ray's default), else a power law (1: none).
+     * POV-Ray 3.7 encodes its PNG, PPM, Targa, BMP and JPEG files with it
+     * (PNG's gAMA chunk says it, an sRGB chunk too for sRGB); EXR and HDR
+     * stay linear; a scene that turns gamma correction off gets
+     * Display_Gamma instead (frontend/renderfrontend.h, imageprocessing.cpp). */
+    double file_gamma;
     /* +MV3.7: the scene's language version is 3.7 from its first line, as
      * if it had a #version (which changes how its pictures are read). */
     int language_version_given;
     int jitter_on;                /* +J / -J, Jitter (on) */
     double jitter_amount;         /* +Jn, Jitter_Amount (1) */
+    int render_block_size;        /* +BSn, Render_Block_Size (32): anti-aliasing's blocks */
     char antialias_by[720];       /* what turned it on, for the message */
     int antialias_positioned;     /* ... which begins with FILE:LINE:COLUMN */
     /* Animation, as POV-Ray's +KFIn +KFFn +KIf +KFf +KC +SFx +EFx and the
@@ -85,6 +100,7 @@ typedef struct {
     int initial_frame, final_frame;
     double initial_clock, final_clock;
     int cyclic;
+    int frame_step;               /* +STPn, Frame_Step (1; below 1 is 1) */
     int have_subset_start, have_subset_end;
     double subset_start, subset_end;
     double clock;
@@ -98,6 +114,7 @@ typedef struct {
     int area_x0, area_y0, area_x1, area_y1;               /* +K or Clock= given: clock_on in a still */
     int output_type;              /* POV-Ray's +F: 0 none given, 'N' PNG, 'E' EXR, 'P' PPM,
                                    * 'T' Targa, 'C' RLE Targa, 'B' BMP, 'J' JPEG, 'H' HDR */
+    int output_type_given;        /* +F or Output_File_Type after povray.ini (whose type yields to -o's name) */
     int jpeg_quality;             /* the INI key Compression: 0 (POV-Ray's default, 85) to 255 */
     int output_alpha;             /* +UA / Output_Alpha: an alpha channel, the background transparent */
     int no_output;                /* -F: render, write no image */
@@ -125,6 +142,9 @@ void options_free(Options *opt);
 /* The output file's extension for POV-Ray's +F type (".png" without one). */
 const char *options_output_extension(const Options *opt);
 void options_usage(FILE *f);
+/* --povray-options: POV-Ray 3.7's INI keys and switches and what hstrace
+ * does with each (options_list.c). 0, or -1 when out of memory. */
+int options_povray_list(FILE *f);
 
 /* For subcommands' parsers: is arg the long option name, alone or as
  * "name=value"? And its value ("--name=value" or "--name value", advancing

@@ -133,13 +133,16 @@ static int jitter_switch(const OptionRow *row, const char *arg, const char *v, O
     return 0;
 }
 
-/* +MV3.7: the only language version hstrace reads. */
+/* +MV3.7 and the INI key Version=3.7: the only language version hstrace
+ * reads. arg is the switch ("+MV3.7") or the key ("Version"). */
 static int version_switch(const OptionRow *row, const char *arg, const char *v, Options *opt, char *err, int errlen)
 {
     (void)row;
     double x;
     if (option_parse_double(v, &x) || fabs(x - 3.7) > 1e-9) {
-        snprintf(err, (size_t)errlen, "'%s': hstrace reads scenes as POV-Ray 3.7 does (+MV3.7 only)", arg);
+        int sw = arg[0] == '+' || arg[0] == '-';
+        snprintf(err, (size_t)errlen, "%s%s%s%s%s: hstrace reads scenes as POV-Ray 3.7 does (+MV3.7 only, or "
+                 "Version=3.7)", sw ? "'" : "", arg, sw ? "" : "=", sw ? "" : v, sw ? "'" : "");
         return -1;
     }
     opt->language_version_given = 1;
@@ -200,10 +203,6 @@ static int stream_switch(const OptionRow *row, const char *arg, const char *v, O
     (void)row; (void)v;
     int on = arg[0] == '+';
     int which = toupper((unsigned char)arg[2]);
-    if (which == 'I') {
-        snprintf(err, (size_t)errlen, "'%s': writing INI files is not supported by hstrace", arg);
-        return -1;
-    }
     if (!which || !strchr("ADFRSWP", which) || (which == 'P' && arg[3])) {
         snprintf(err, (size_t)errlen, "unknown POV-Ray switch '%s'", arg);
         return -1;
@@ -264,21 +263,43 @@ static int declare_key(const OptionRow *row, const char *arg, const char *text, 
     return 0;
 }
 
-/* Display_Gamma: POV-Ray's Parse_Gamma of an option, sRGB or a power law. */
+/* A gamma option as POV-Ray 3.7 reads one (frontend/processrenderoptions.cpp,
+ * the gamma keys' special handler; vfe/vfecontrol.cpp refuses a power law
+ * below 0.001): "sRGB" (any case), else a power-law gamma from 0.001, 1
+ * being no curve at all. POV-Ray 3.7.0 knows no other curve (no bt709).
+ * Into *out: 0 for sRGB, else the power. 0, or -1 with the message. */
+#define GAMMA_MIN 0.001
+static int parse_gamma_key(const OptionRow *row, const char *value, double *out, char *err, int errlen)
+{
+    double v;
+    if (strcasecmp(value, "srgb") == 0) {
+        *out = 0.0;
+        return 0;
+    }
+    if (option_parse_double(value, &v) || !(v >= GAMMA_MIN)) {
+        snprintf(err, (size_t)errlen, "%s=%s: expected sRGB or a power-law gamma from %g (POV-Ray 3.7 knows no "
+                 "other curve)", row->ini, value, GAMMA_MIN);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+/* Display_Gamma: the working and file gamma of a scene that turns gamma
+ * correction off (options.h). */
 static int display_gamma_key(const OptionRow *row, const char *arg, const char *value, Options *opt, char *err,
                              int errlen)
 {
     (void)arg;
-    double v;
-    if (strcasecmp(value, "srgb") == 0) {
-        opt->display_gamma = 0.0;
-    } else if (option_parse_double(value, &v) || !(v > 0.0)) {
-        snprintf(err, (size_t)errlen, "%s=%s: expected sRGB or a number above 0", row->ini, value);
-        return -1;
-    } else {
-        opt->display_gamma = v;
-    }
-    return 0;
+    return parse_gamma_key(row, value, &opt->display_gamma, err, errlen);
+}
+
+/* File_Gamma: the encoding of the integer output types (options.h). */
+static int file_gamma_key(const OptionRow *row, const char *arg, const char *value, Options *opt, char *err,
+                          int errlen)
+{
+    (void)arg;
+    return parse_gamma_key(row, value, &opt->file_gamma, err, errlen);
 }
 
 /* ---- the rows --------------------------------------------------------------
@@ -288,8 +309,17 @@ static int display_gamma_key(const OptionRow *row, const char *arg, const char *
 
 #define ANY_NUMBER -DBL_MAX, DBL_MAX
 #define FROM_ZERO 0.0, DBL_MAX
-#define UNSUPPORTED(key, why) { .ini = key, .type = OPT_UNSUPPORTED, .reason = why }
-#define IGNORED(key) { .ini = key, .type = OPT_IGNORED }
+/* A key (or switch, or both: NULL for none) POV-Ray 3.7 takes and hstrace
+ * refuses, with what it is about; ..._ON: refused only when on (off is
+ * POV-Ray's default and asks for nothing). */
+#define UNSUPPORTED(key, sw, why) { .ini = key, .pov = sw, .type = OPT_UNSUPPORTED, .reason = why }
+#define UNSUPPORTED_ON(key, sw, why) \
+    { .ini = key, .pov = sw, .type = OPT_UNSUPPORTED, .ini_as = INI_AS_ON_OFF, .reason = why }
+/* A key or switch that cannot change the image or the files, and why; the
+ * switch takes nothing after it (+B5 is no switch, as in POV-Ray), but
+ * ..._VALUE's takes a value (+BM2). */
+#define IGNORED(key, sw, why) { .ini = key, .pov = sw, .type = OPT_IGNORED, .reason = why }
+#define IGNORED_VALUE(key, sw, why) { .ini = key, .pov = sw, .type = OPT_IGNORED, .ignore_rest = 1, .reason = why }
 
 static const OptionWord plane_words[] = {
     { "double", PLANES_DOUBLE }, { "float", PLANES_FLOAT }, { "float-naive", PLANES_FLOAT_NAIVE }, { NULL, 0 }
@@ -424,17 +454,38 @@ const OptionRow option_rows[] = {
       .help = "write the same statistics as JSON" },
     { .name = "--help", .type = OPT_FLAG, .field = OPTION_FIELD(help), .lo = 1, .help = "show this help" },
     { .short_name = "-h", .type = OPT_FLAG, .field = OPTION_FIELD(help), .lo = 1 }, /* not in --help */
+    /* POV-Ray's Unix front end's own (vfe/unix/unixoptions.cpp, Standard_Options),
+     * not in --help: the man page's POV-RAY OPTIONS names them */
+    { .short_name = "-help", .type = OPT_FLAG, .field = OPTION_FIELD(help), .lo = 1 },
+    { .short_name = "-?", .type = OPT_FLAG, .field = OPTION_FIELD(help), .lo = 1 },
+    { .short_name = "-version", .type = OPT_FLAG, .field = OPTION_FIELD(version), .lo = 1 },
+    { .short_name = "--V", .type = OPT_FLAG, .field = OPTION_FIELD(version), .lo = 1 },
+    { .short_name = "--benchmark", .type = OPT_UNSUPPORTED, .reason = "POV-Ray's built-in benchmark scene" },
+    { .short_name = "-benchmark", .type = OPT_UNSUPPORTED, .reason = "POV-Ray's built-in benchmark scene" },
     { .name = "--version", .type = OPT_FLAG, .field = OPTION_FIELD(version), .lo = 1, .help = "show the version" },
+    /* options_parse looks for it before anything else is read */
+    { .name = "--no-povray-ini", .type = OPT_FLAG, .field = OPTION_FIELD(no_povray_ini), .lo = 1,
+      .help = "read no povray.ini (by default the one POV-Ray 3.7 reads:\n"
+              "$POVINI, ./povray.ini, the user's, the system's; see FILES)" },
+    { .name = "--povray-options", .type = OPT_FLAG, .field = OPTION_FIELD(povray_options), .lo = 1,
+      .help = "list POV-Ray 3.7's INI keys and switches, each honoured,\n"
+              "ignored or refused, and why" },
 
-    /* ---- POV-Ray's switches and INI keys only (--help's paragraphs) ---- */
+    /* ---- POV-Ray's switches and INI keys only (--help's paragraphs) ----
+     * Every key and switch of POV-Ray 3.7's own tables (RenderOptions_INI_Table
+     * and RenderOptions_Cmd_Table in frontend/processrenderoptions.cpp of
+     * 3.7.0.10) has a row: honoured, ignored with why, or refused with why
+     * (--povray-options lists them; the man page's POV-RAY OPTIONS too). */
     { .pov = "+I", .ini = "Input_File_Name", .type = OPT_STRING, .field = OPTION_FIELD(scene) },
     { .pov = "+Q", .ini = "Quality", .ini_as = INI_AS_SWITCH, .type = OPT_INT, .field = OPTION_FIELD(quality),
       .lo = 0, .hi = 11, .dflt = "9", .pov_expect = "quality must be 0 to 11" },
     { .pov = "+F", .ini = "Output_File_Type", .ini_as = INI_AS_SWITCH, .type = OPT_CUSTOM,
-      .handler = output_type_switch },
+      .handler = output_type_switch, .given = OPTION_FIELD(output_type_given) },
     { .ini = "Output_To_File", .type = OPT_BOOL, .inverted = 1, .field = OPTION_FIELD(no_output) },
     { .ini = "Bits_Per_Color", .type = OPT_PARSED, .parse = parse_bits, .field = OPTION_FIELD(png16),
       .ini_expect = "1 to 16" },
+    { .ini = "Bits_Per_Colour", .type = OPT_PARSED, .parse = parse_bits, .field = OPTION_FIELD(png16),
+      .ini_expect = "1 to 16" }, /* POV-Ray's other spelling */
     /* POV-Ray keeps 0..255; JPEG's quality is it, up to 100 */
     { .ini = "Compression", .type = OPT_INT, .field = OPTION_FIELD(jpeg_quality), .lo = 0, .hi = 255,
       .ini_expect = "0 to 255" },
@@ -442,6 +493,10 @@ const OptionRow option_rows[] = {
       .field = OPTION_FIELD(output_alpha) },
     { .ini = "Declare", .type = OPT_CUSTOM, .handler = declare_key },
     { .ini = "Include_Ini", .type = OPT_INCLUDE_INI },
+    /* Gamma, as POV-Ray 3.7 applies it (options.h). */
+    { .ini = "Display_Gamma", .type = OPT_CUSTOM, .handler = display_gamma_key },
+    { .ini = "File_Gamma", .type = OPT_CUSTOM, .handler = file_gamma_key },
+    { .pov = "+MV", .ini = "Version", .type = OPT_CUSTOM, .handler = version_switch },
     /* Anti-aliasing, as POV-Ray 3.7's. */
     { .pov = "+A", .ini = "Antialias", .ini_as = INI_AS_ON_OFF, .type = OPT_CUSTOM, .handler = antialias_switch },
     { .ini = "Antialias_Threshold", .type = OPT_REAL, .field = OPTION_FIELD(aa_threshold), .lo = 0.0,
@@ -450,42 +505,39 @@ const OptionRow option_rows[] = {
       .dflt = "1", .pov_expect = "the sampling method is 1 or 2", .ini_expect = "1 or 2" },
     { .pov = "+R", .ini = "Antialias_Depth", .type = OPT_INT, .field = OPTION_FIELD(aa_depth), .lo = 1, .hi = 9,
       .dflt = "3", .pov_expect = "the anti-aliasing depth is 1 to 9", .ini_expect = "1 to 9" },
-    { .ini = "Antialias_Gamma", .type = OPT_REAL, .field = OPTION_FIELD(aa_gamma), .lo = 0.0, .hi = DBL_MAX,
-      .dflt = "2.5", .ini_expect = "a number from 0" },
+    { .pov = "+AG", .ini = "Antialias_Gamma", .type = OPT_REAL, .field = OPTION_FIELD(aa_gamma), .lo = 0.0,
+      .hi = DBL_MAX, .dflt = "2.5", .pov_expect = "the anti-aliasing gamma is a number from 0",
+      .ini_expect = "a number from 0" },
     { .pov = "+J", .ini = "Jitter", .ini_as = INI_AS_ON_OFF, .type = OPT_CUSTOM, .handler = jitter_switch,
       .dflt = "on" },
     { .ini = "Jitter_Amount", .type = OPT_REAL, .field = OPTION_FIELD(jitter_amount), .lo = 0.0, .hi = DBL_MAX,
       .dflt = "1", .ini_expect = "a number from 0" },
-    { .ini = "Display_Gamma", .type = OPT_CUSTOM, .handler = display_gamma_key },
-    { .pov = "+MV", .type = OPT_CUSTOM, .handler = version_switch },
-    /* Continue an interrupted render: hstrace never leaves a partial image
-     * behind (it writes whole files), so there is nothing to continue and
-     * the render is made whole. */
-    { .pov = "+C", .type = OPT_SIGN },
-    /* No display window: main says so once. */
+    /* The blocks POV-Ray renders, which its anti-aliasing decides in (from
+     * 4 pixels: vfe/vfecontrol.cpp refuses less; a larger one than the
+     * render area is the area, backend/scene/view.cpp). */
+    { .pov = "+BS", .ini = "Render_Block_Size", .ini_as = INI_AS_SWITCH, .type = OPT_INT,
+      .field = OPTION_FIELD(render_block_size), .lo = 4, .hi = 1000000000, .dflt = "32",
+      .pov_expect = "the render block size is a whole number from 4" },
+    /* No display window: main says so once (not for povray.ini's). */
     { .pov = "+D", .ini = "Display", .ini_as = INI_AS_ON_OFF, .type = OPT_SIGN,
-      .field = OPTION_FIELD(display_asked), .ignore_rest = 1 },
+      .field = OPTION_FIELD(display_asked), .ignore_rest = 1,
+      .reason = "the display window: hstrace has none (a note says so)" },
     { .pov = "+P", .ini = "Pause_When_Done", .ini_as = INI_AS_ON_OFF, .type = OPT_SIGN,
-      .field = OPTION_FIELD(pause_asked) },
-    { .pov = "+V", .type = OPT_SIGN, .ignore_rest = 1 }, /* verbosity */
-    /* The mosaic preview's block sizes: they change only what a display
-     * window would show first, and hstrace has none. */
-    { .pov = "+SP", .type = OPT_INT, .lo = 1, .hi = 64, .pov_expect = "expected a number" },
-    { .pov = "+EP", .type = OPT_INT, .lo = 1, .hi = 64, .pov_expect = "expected a number" },
+      .field = OPTION_FIELD(pause_asked), .reason = "waits at the display window: hstrace has none (a note says so)" },
     /* The console streams: one handler reads the letter. */
     { .pov = "+GA", .ini = "All_Console", .ini_as = INI_AS_ON_OFF, .type = OPT_CUSTOM, .handler = stream_switch,
       .dflt = "on" },
     { .pov = "+GD", .ini = "Debug_Console", .ini_as = INI_AS_ON_OFF, .type = OPT_CUSTOM, .handler = stream_switch },
-    { .pov = "+GF", .type = OPT_CUSTOM, .handler = stream_switch },
+    { .pov = "+GF", .ini = "Fatal_Console", .ini_as = INI_AS_ON_OFF, .type = OPT_CUSTOM, .handler = stream_switch,
+      .reason = "errors are always shown (an exit status alone would not say what went wrong)" },
     { .pov = "+GR", .ini = "Render_Console", .ini_as = INI_AS_ON_OFF, .type = OPT_CUSTOM,
       .handler = stream_switch },
     { .pov = "+GS", .ini = "Statistic_Console", .ini_as = INI_AS_ON_OFF, .type = OPT_CUSTOM,
       .handler = stream_switch },
     { .pov = "+GW", .ini = "Warning_Console", .ini_as = INI_AS_ON_OFF, .type = OPT_CUSTOM,
       .handler = stream_switch },
-    { .pov = "+GP", .type = OPT_CUSTOM, .handler = stream_switch },
-    { .pov = "+GI", .type = OPT_CUSTOM, .handler = stream_switch },
-    IGNORED("Fatal_Console"), /* errors are always shown */
+    { .pov = "+GP", .ini = "Append_File", .ini_as = INI_AS_ON_OFF, .type = OPT_CUSTOM, .handler = stream_switch,
+      .reason = "appends to the console files, which hstrace does not write" },
     /* Animation (animation.h). Frame numbers are those of +KFF: a larger
      * one names no frame. */
     { .pov = "+KFI", .ini = "Initial_Frame", .ini_as = INI_AS_SWITCH, .type = OPT_INT,
@@ -509,6 +561,10 @@ const OptionRow option_rows[] = {
     { .pov = "+EF", .ini = "Subset_End_Frame", .ini_as = INI_AS_SWITCH, .type = OPT_REAL,
       .field = OPTION_FIELD(subset_end), .given = OPTION_FIELD(have_subset_end), .lo = 0.0, .hi = 1e9,
       .pov_expect = "expected a frame number or fraction from 0 to 1000000000" },
+    /* Every n-th frame; below 1 is 1, as POV-Ray takes it. */
+    { .pov = "+STP", .ini = "Frame_Step", .ini_as = INI_AS_SWITCH, .type = OPT_INT,
+      .field = OPTION_FIELD(frame_step), .lo = -1000000000, .hi = 1000000000, .dflt = "1",
+      .pov_expect = "expected a whole number" },
     /* Partial renders. No image has more rows or columns than
      * MAX_DIMENSION: a larger value names none (the image's own size is
      * checked at the end of options_parse). */
@@ -525,45 +581,78 @@ const OptionRow option_rows[] = {
       .field = OPTION_FIELD(end_col), .given = OPTION_FIELD(have_end_col), .lo = 0.0, .hi = MAX_DIMENSION,
       .pov_expect = "expected a row or column (or fraction) from 0 to " MAX_DIMENSION_TEXT },
 
-    /* ---- INI keys that cannot change the image or the files ---- */
-    IGNORED("Verbose"), IGNORED("Draw_Vistas"), IGNORED("Preview_Start_Size"), IGNORED("Preview_End_Size"),
-    IGNORED("Test_Abort"), IGNORED("Test_Abort_Count"), IGNORED("Bounding"), IGNORED("Bounding_Method"),
-    IGNORED("Bounding_Threshold"), IGNORED("Light_Buffer"), IGNORED("Vista_Buffer"), IGNORED("Remove_Bounds"),
-    IGNORED("Split_Unions"), IGNORED("Warning_Level"), IGNORED("Buffer_Output"), IGNORED("Buffer_Size"),
+    /* ---- POV-Ray's keys and switches that cannot change the image or the files ---- */
+    /* hstrace never leaves a partial image behind (it writes whole files),
+     * so there is nothing to continue: the whole image is rendered. */
+    IGNORED("Continue_Trace", "+C", "continues an interrupted render: hstrace writes whole files only, so it "
+            "renders the whole image"),
+    IGNORED("Verbose", "+V", "POV-Ray's verbose messages"),
+    IGNORED_VALUE("Preview_Start_Size", "+SP", "the mosaic preview of the display window: hstrace has none"),
+    IGNORED_VALUE("Preview_End_Size", "+EP", "the mosaic preview of the display window: hstrace has none"),
+    IGNORED("Draw_Vistas", "+UD", "draws the vista buffer in the display window: hstrace has none"),
+    IGNORED("Video_Mode", NULL, "the display window's mode: hstrace has none"),
+    IGNORED("Palette", NULL, "the display window's palette: hstrace has none"),
+    IGNORED_VALUE("Test_Abort", "+X", "polls the keyboard to stop a render (hstrace stops on a signal)"),
+    IGNORED("Test_Abort_Count", NULL, "how often +X polls the keyboard"),
+    IGNORED("Bounding", "+B", "POV-Ray's bounding: speed only (hstrace bounds in its own hierarchy)"),
+    IGNORED_VALUE("Bounding_Method", "+BM", "POV-Ray's bounding: speed only (hstrace bounds in its own hierarchy)"),
+    IGNORED_VALUE("Bounding_Threshold", "+MB", "POV-Ray's bounding: speed only (hstrace bounds in its own hierarchy)"),
+    IGNORED("BSP_BaseAccessCost", NULL, "tunes POV-Ray's BSP tree: speed only"),
+    IGNORED("BSP_ChildAccessCost", NULL, "tunes POV-Ray's BSP tree: speed only"),
+    IGNORED("BSP_ISectCost", NULL, "tunes POV-Ray's BSP tree: speed only"),
+    IGNORED("BSP_MaxDepth", NULL, "tunes POV-Ray's BSP tree: speed only"),
+    IGNORED("BSP_MissChance", NULL, "tunes POV-Ray's BSP tree: speed only"),
+    IGNORED("Light_Buffer", "+UL", "POV-Ray's light buffer: speed only, and POV-Ray 3.7 ignores it too"),
+    IGNORED("Vista_Buffer", "+UV", "POV-Ray's vista buffer: speed only, and POV-Ray 3.7 ignores it too"),
+    IGNORED("Remove_Bounds", "+UR", "POV-Ray's bounding: speed only"),
+    IGNORED("Split_Unions", "+SU", "POV-Ray's bounding: speed only"),
+    IGNORED_VALUE("Render_Block_Step", "+RS", "the order the blocks are rendered in: the image does not depend on it"),
+    IGNORED_VALUE("Render_Pattern", "+RP", "the order the blocks are rendered in: the image does not depend on it"),
+    IGNORED_VALUE("Max_Image_Buffer_Memory", "+MI", "POV-Ray's image buffer on disk: hstrace keeps the image in memory"),
+    IGNORED_VALUE("Warning_Level", "+WL", "which of POV-Ray's own warnings it prints"),
+    IGNORED("Buffer_Output", NULL, "no longer used by POV-Ray 3.7 (it warns and goes on)"),
+    IGNORED("Buffer_Size", NULL, "no longer used by POV-Ray 3.7 (it warns and goes on)"),
+    IGNORED("Create_Histogram", NULL, "no longer used by POV-Ray 3.7 (it warns and goes on)"),
+    IGNORED("Histogram_Type", NULL, "no longer used by POV-Ray 3.7 (it warns and goes on)"),
+    IGNORED("Histogram_Name", NULL, "no longer used by POV-Ray 3.7 (it warns and goes on)"),
+    IGNORED("Histogram_Grid_Size", NULL, "no longer used by POV-Ray 3.7 (it warns and goes on)"),
+    /* What only matters with a setting refused below. */
+    IGNORED("Odd_Field", "+UO", "which field Field_Render renders (refused when on)"),
+    IGNORED("Dither_Method", NULL, "how Dither dithers (refused when on)"),
+    IGNORED_VALUE("Radiosity_File_Name", "+RF", "the file Radiosity_From_File and Radiosity_To_File use (refused when on)"),
+    IGNORED("Radiosity_Vain_Pretrace", "+RVP", "radiosity's pretrace: hstrace approximates radiosity "
+            "(APPROXIMATIONS in the man page)"),
+    IGNORED("High_Reproducibility", "+HR", "radiosity's reproducibility: hstrace approximates radiosity "
+            "(APPROXIMATIONS in the man page)"),
+    IGNORED("Pre_Scene_Return", NULL, "acts on Pre_Scene_Command's exit status (the command is refused)"),
+    IGNORED("Pre_Frame_Return", NULL, "acts on Pre_Frame_Command's exit status (the command is refused)"),
+    IGNORED("Post_Scene_Return", NULL, "acts on Post_Scene_Command's exit status (the command is refused)"),
+    IGNORED("Post_Frame_Return", NULL, "acts on Post_Frame_Command's exit status (the command is refused)"),
+    IGNORED("User_Abort_Return", NULL, "acts on User_Abort_Command's exit status (the command is refused)"),
+    IGNORED("Fatal_Error_Return", NULL, "acts on Fatal_Error_Command's exit status (the command is refused)"),
 
-    /* ---- POV-Ray's INI keys for what hstrace does not do yet ---- */
-    UNSUPPORTED("Field_Render", "field rendering"),
-    UNSUPPORTED("Odd_Field", "field rendering"),
-    UNSUPPORTED("Frame_Step", "frame steps (POV-Ray 3.8)"),
-    UNSUPPORTED("Continue_Trace", "continuing a render"),
-    UNSUPPORTED("Create_Continue_Trace_Log", "continuing a render"),
-    UNSUPPORTED("Create_Ini", "writing INI files"),
-    UNSUPPORTED("Histogram_Type", "histograms"),
-    UNSUPPORTED("Histogram_Name", "histograms"),
-    UNSUPPORTED("Histogram_Grid_Size", "histograms"),
-    UNSUPPORTED("Dither", "dithering"),
-    UNSUPPORTED("Dither_Method", "dithering"),
-    UNSUPPORTED("File_Gamma", "output gamma"),
-    UNSUPPORTED("Radiosity_From_File", "radiosity files"),
-    UNSUPPORTED("Radiosity_To_File", "radiosity files"),
-    UNSUPPORTED("Radiosity_File_Name", "radiosity files"),
-    UNSUPPORTED("Radiosity_Vain_Pretrace", "radiosity"),
-    UNSUPPORTED("High_Reproducibility", "radiosity"),
-    UNSUPPORTED("Pre_Scene_Command", "shell-out commands"),
-    UNSUPPORTED("Pre_Frame_Command", "shell-out commands"),
-    UNSUPPORTED("Post_Scene_Command", "shell-out commands"),
-    UNSUPPORTED("Post_Frame_Command", "shell-out commands"),
-    UNSUPPORTED("User_Abort_Command", "shell-out commands"),
-    UNSUPPORTED("Fatal_Error_Command", "shell-out commands"),
-    UNSUPPORTED("Include_Header", "an include file for every scene"),
-    UNSUPPORTED("All_File", "console files"),
-    UNSUPPORTED("Debug_File", "console files"),
-    UNSUPPORTED("Fatal_File", "console files"),
-    UNSUPPORTED("Render_File", "console files"),
-    UNSUPPORTED("Statistic_File", "console files"),
-    UNSUPPORTED("Warning_File", "console files"),
-    UNSUPPORTED("Video_Mode", "the display"),
-    UNSUPPORTED("Palette", "the display"),
+    /* ---- POV-Ray's keys and switches for what hstrace does not do ---- */
+    UNSUPPORTED_ON("Field_Render", "+UF", "field rendering"),
+    UNSUPPORTED_ON("Dither", "+TH", "dithering"),
+    UNSUPPORTED_ON("Grayscale_Output", NULL, "greyscale output"),
+    UNSUPPORTED_ON("Radiosity_From_File", "+RFI", "radiosity files"),
+    UNSUPPORTED_ON("Radiosity_To_File", "+RFO", "radiosity files"),
+    UNSUPPORTED_ON("Real_Time_Raytracing", "+RTR", "real-time ray tracing (a display loop)"),
+    UNSUPPORTED_ON("Clockless_Animation", "+KLA", "clockless animation (real-time ray tracing's)"),
+    UNSUPPORTED("Create_Ini", "+GI", "writing INI files"),
+    UNSUPPORTED("Include_Header", "+HI", "an include file for every scene"),
+    UNSUPPORTED("Pre_Scene_Command", NULL, "shell-out commands"),
+    UNSUPPORTED("Pre_Frame_Command", NULL, "shell-out commands"),
+    UNSUPPORTED("Post_Scene_Command", NULL, "shell-out commands"),
+    UNSUPPORTED("Post_Frame_Command", NULL, "shell-out commands"),
+    UNSUPPORTED("User_Abort_Command", NULL, "shell-out commands"),
+    UNSUPPORTED("Fatal_Error_Command", NULL, "shell-out commands"),
+    UNSUPPORTED("All_File", NULL, "console files"),
+    UNSUPPORTED("Debug_File", NULL, "console files"),
+    UNSUPPORTED("Fatal_File", NULL, "console files"),
+    UNSUPPORTED("Render_File", NULL, "console files"),
+    UNSUPPORTED("Statistic_File", NULL, "console files"),
+    UNSUPPORTED("Warning_File", NULL, "console files"),
 };
 
 const size_t option_nrows = sizeof option_rows / sizeof option_rows[0];

@@ -32,8 +32,9 @@ typedef enum {
     OPT_SIGN,        /* a switch without value: +X 1, -X 0 */
     OPT_BOOL,        /* an INI key's on/off (inverted: off sets 1) */
     OPT_INCLUDE_INI, /* Include_Ini: reads another INI file in its place */
-    OPT_IGNORED,     /* an INI key that cannot change the image or the files */
-    OPT_UNSUPPORTED  /* an INI key for what hstrace does not do: refused with reason */
+    OPT_IGNORED,     /* a key or switch that cannot change the image or the files: accepted, reason says why */
+    OPT_UNSUPPORTED  /* a key or switch for what hstrace does not do: refused with reason (with ini_as
+                      * INI_AS_ON_OFF, only when on: off is POV-Ray's default and changes nothing) */
 } OptionType;
 
 /* How an INI key's value is taken. */
@@ -84,7 +85,11 @@ struct OptionRow {
     const char *expect;     /* long option's message: "--NAME 'VALUE': EXPECT" */
     const char *pov_expect; /* switch's message: "'SWITCH': POV_EXPECT" */
     const char *ini_expect; /* INI key's message: "KEY=VALUE: expected INI_EXPECT" */
-    const char *reason;     /* OPT_UNSUPPORTED: what it is about */
+    /* OPT_UNSUPPORTED: what it is about ("field rendering"); a row that is
+     * accepted and changes nothing (OPT_IGNORED, and the few that also set
+     * a field for a note): why. --povray-options lists a row with a reason
+     * as refused or ignored, one without as honoured. */
+    const char *reason;
 };
 
 extern const OptionRow option_rows[];

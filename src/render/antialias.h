@@ -19,7 +19,8 @@
  * Colours are compared gamma encoded (x^(1/Antialias_Gamma), 2.5 by
  * default, after decoding the scene's working gamma) as the sum of the absolute differences of red, green, blue and
  * transmit, in single precision as POV-Ray keeps colours. Blocks are 32
- * pixels square from the render area's corner; what a block decides does
+ * pixels square (Render_Block_Size, +BS) from the render area's corner, no
+ * larger than the area's longer side (backend/scene/view.cpp); what a block decides does
  * not depend on any other, so the image is the same for any thread count.
  * Jitter (on by default) moves each supersample by POV-Ray's own
  * deterministic offsets, the amount spread over the samples' spacing;
@@ -36,6 +37,7 @@ typedef struct {
     double gamma;     /* Antialias_Gamma; <= 0: compare the colours as they are */
     double work_gamma; /* the scene's working gamma (assumed_gamma): decoded before; 0 or 1: none */
     double jitter;    /* Jitter_Amount, 0..1 (0: no jitter) */
+    int block;        /* the blocks' side in pixels (Render_Block_Size); 0: ANTIALIAS_BLOCK */
 } Antialias;
 
 /* A colour as POV-Ray's render keeps it: red, green, blue, transmit. */

@@ -293,7 +293,11 @@ void render_tile_grid(const RenderOptions *opt, TileGrid *t)
     t->y1 = opt->y1 > 0 ? opt->y1 : opt->height;
     /* POV-Ray's anti-aliasing decides by blocks of its own size, from the
      * area's corner; the plain render's tiles lie on the image's grid. */
-    t->tile_size = opt->aa.method ? ANTIALIAS_BLOCK : TILE;
+    int block = opt->aa.block > 0 ? opt->aa.block : ANTIALIAS_BLOCK;
+    int span = t->x1 - t->x0 > t->y1 - t->y0 ? t->x1 - t->x0 : t->y1 - t->y0;
+    if (block > span)
+        block = span; /* as POV-Ray: one block, the whole area */
+    t->tile_size = opt->aa.method ? block : TILE;
     t->grid_x0 = opt->aa.method ? t->x0 : 0;
     t->grid_y0 = opt->aa.method ? t->y0 : 0;
     t->tile_x0 = (t->x0 - t->grid_x0) / t->tile_size;

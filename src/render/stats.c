@@ -178,6 +178,8 @@ void stats_print(FILE *f, const StatsReport *r)
             r->threads, r->threads == 1 ? "" : "s", r->shadow_method);
     fprintf(f, "  scene       %d polygons (%d degenerate dropped), %d infinite planes, %d lights\n", r->npolygons,
             r->ndegenerate, r->nplanes, r->nlights);
+    if (r->povray_ini_why)
+        fprintf(f, "  povray.ini  %s (%s)\n", r->povray_ini ? r->povray_ini : "none", r->povray_ini_why);
     for (int i = 0; i < r->napproximations; i++) {
         const SceneApproximation *a = &r->approximations[i];
         fprintf(f, "  %-11s %s: %d place%s, first %s at %s:%d:%d\n", i == 0 ? "approximated" : "",
@@ -328,7 +330,12 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
         if ((unsigned char)*c >= 0x20)
             fputc(*c, f);
     }
-    fprintf(f, "\",\n  \"shadow_method\": \"%s\",\n  \"width\": %d,\n  \"height\": %d,\n  \"threads\": %d,\n",
+    fprintf(f, "\",\n  \"povray_ini\": ");
+    if (r->povray_ini)
+        json_write_string(f, r->povray_ini);
+    else
+        fprintf(f, "null");
+    fprintf(f, ",\n  \"shadow_method\": \"%s\",\n  \"width\": %d,\n  \"height\": %d,\n  \"threads\": %d,\n",
             r->shadow_method, r->width, r->height, r->threads);
     fprintf(f, "  \"polygons\": %d,\n  \"degenerate_dropped\": %d,\n  \"planes\": %d,\n  \"lights\": %d,\n", r->npolygons,
             r->ndegenerate, r->nplanes, r->nlights);

@@ -24,6 +24,9 @@ void stats_add(RenderStats *total, const RenderStats *part);
 /* The report: phases (the rows of the paper's Table 2) and counters. */
 typedef struct {
     const char *scene;
+    /* The povray.ini the options were read after (NULL: none), and which
+     * one it is, or why none was read; NULL: not said. */
+    const char *povray_ini, *povray_ini_why;
     const char *shadow_method;
     int width, height, threads;
     int grid[3];

@@ -203,29 +203,33 @@ static int check_cover(const Part *part, const StitchArea *area, int n)
     return 0;
 }
 
-/* POV-Ray's anti-aliasing method 1 decides in 32-pixel blocks laid from the
- * area's corner, as POV-Ray's partial renders do: a part whose edges are
- * off that grid has pixels a single render may not have. Said, not
- * refused: the image is still anti-aliased throughout. */
+/* POV-Ray's anti-aliasing method 1 decides in 32-pixel blocks (+BS's, when
+ * the options say) laid from the area's corner, as POV-Ray's partial
+ * renders do: a part whose edges are off that grid has pixels a single
+ * render may not have. Said, not refused: the image is still anti-aliased
+ * throughout. */
 static void warn_antialias(const Part *part, int n)
 {
-    int am1 = 0;
-    for (int k = 0; k < part[0].line.nwords; k++)
-        am1 |= strcmp(part[0].line.word[k], "+AM1") == 0;
+    int am1 = 0, block = ANTIALIAS_BLOCK;
+    for (int k = 0; k < part[0].line.nwords; k++) {
+        const char *w = part[0].line.word[k];
+        am1 |= strcmp(w, "+AM1") == 0;
+        if (strncmp(w, "+BS", 3) == 0 && atoi(w + 3) >= 4)
+            block = atoi(w + 3);
+    }
     if (!am1)
         return;
     for (int k = 0; k < n; k++) {
         StitchArea a = part[k].line.area;
         int w = part[k].head.width, h = part[k].head.height;
-        if (a.x0 % ANTIALIAS_BLOCK || a.y0 % ANTIALIAS_BLOCK || (a.x1 != w && a.x1 % ANTIALIAS_BLOCK) ||
-            (a.y1 != h && a.y1 % ANTIALIAS_BLOCK)) {
+        if (a.x0 % block || a.y0 % block || (a.x1 != w && a.x1 % block) || (a.y1 != h && a.y1 % block)) {
             char where[128];
             describe(where, sizeof where, a);
             fprintf(stderr,
                     PROGRAM ": warning: %s (%s): anti-aliasing method 1 (+AM1) works in %d-pixel blocks laid from the "
                             "area's corner, as POV-Ray's does; off that grid its pixels can differ from a single "
                             "render's (areas on multiples of %d rows and columns, or +AM2, stitch exactly)\n",
-                    part[k].path, where, ANTIALIAS_BLOCK, ANTIALIAS_BLOCK);
+                    part[k].path, where, block, block);
             return;
         }
     }

@@ -169,13 +169,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!inc)
         (void)unlink("inc.ini"); /* the last input's */
     if (write_file("fuzz.ini", ini, n_ini) == 0 && (!inc || write_file("inc.ini", inc, n_inc) == 0)) {
-        char *argv[MAX_WORDS + 2];
+        char *argv[MAX_WORDS + 3];
         int argc = 0;
         argv[argc++] = "hstrace";
+        argv[argc++] = "--no-povray-ini"; /* the input's settings only, not the machine's */
         if (words) {
             /* one word a line: the part's newlines become the ends of words */
             words[n_words] = '\0';
-            for (char *w = words; w && argc < MAX_WORDS + 1;) {
+            for (char *w = words; w && argc < MAX_WORDS + 2;) {
                 char *nl = strchr(w, '\n');
                 if (nl)
                     *nl = '\0';
