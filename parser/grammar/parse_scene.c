@@ -169,6 +169,17 @@ static void skip_poisoned_value(Parser *p, int start_depth)
         }
         return;
     }
+    /* A value poisoned after it was read whole -- a texture layer that
+     * --strict refuses once it is blended -- leaves nothing to skip.
+     * Reading on would carry out the directives after it before the value
+     * is stored: skies.inc's `#declare O_Cloud2 = union { ... T_Cloud3
+     * ... }` right after T_Cloud3 would find T_Cloud3 undeclared. Only
+     * when the poisoning token is the last one read may its arguments
+     * follow. */
+    const Token *last = &p->tok;
+    if (last->pos.line != p->poison_by.line || last->pos.column != p->poison_by.column ||
+        last->pos.file != p->poison_by.file)
+        return;
     /* The keyword itself was unsupported: `sphere {...}`, `array[3] {...}`,
      * `function(x) {...}`, a macro call `Foo(1, 2)`. */
     for (;;) {
