@@ -758,10 +758,44 @@ static int object_id_follows(Parser *p, int kw)
     return k == VAL_OBJECT || k == VAL_LIGHT || (k == VAL_UNSUPPORTED && kw == KW_union);
 }
 
+/* A declared object or light named on its own, as LDCad ends its model
+ * (`#declare Model = union {...}` then `Model`): POV-Ray 3.7's Parse_Object
+ * takes an object identifier as a copy of it, without modifiers, wherever
+ * it takes an object -- at the top level (Parse_Frame) and among a union's
+ * children (Parse_CSG). Returns 0 when t is no such identifier; one that
+ * holds an unsupported declaration is that declaration's error. */
+static int bare_object_identifier(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
+{
+    if (t->type != TK_WORD || t->kw >= 0)
+        return 0;
+    Symbol *s = tok_symbol_of(p, t);
+    if (!s)
+        return 0;
+    const Value *v = &s->value;
+    if (v->kind == VAL_UNSUPPORTED)
+        tok_use_unsupported(p, t, v);
+    if (v->kind == VAL_LIGHT) {
+        SceneLight *l = tok_scene_alloc(p, sizeof *l);
+        *l = *v->light;
+        l->pos = t->pos;
+        *light = l;
+        return 1;
+    }
+    if (v->kind != VAL_OBJECT)
+        return 0;
+    SceneObject *o = tok_scene_alloc(p, sizeof *o);
+    *o = *v->object;
+    o->pos = t->pos;
+    *obj = o;
+    return 1;
+}
+
 int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
 {
     *obj = NULL;
     *light = NULL;
+    if (bare_object_identifier(p, t, obj, light))
+        return 1;
     if (t->type != TK_WORD || (!gram_is_object_keyword(t->kw) && t->kw != KW_light_source))
         return 0;
     Token kw = *t;
