@@ -1,7 +1,9 @@
 #!/bin/sh
 # What exporters write that POV-Ray 3.7's parser takes (issue 42), in TAP.
 # Scenes written here in the style of each exporter's output -- LDCad's
-# declared model named on its own line -- are rendered by hstrace and by the
+# declared model named on its own line, Blender's `diffuse 0.8 0` and
+# finish subsurface, POV-Ray 3.0's max_trace_level outside global_settings
+# -- are rendered by hstrace and by the
 # installed POV-Ray (+Q9, and +Q3/+Q4 for the shadow masks) and compared by
 # `hstrace compare` against the limits measured for each (the table below;
 # issue 42's bar is an RMSE of at most 0.002 and no shadow-mask
@@ -122,6 +124,196 @@ camera {
 }
 POV
 
+# --- Blender's exporter: its finishes and meshes --------------------------
+# `diffuse 0.8 0`: POV-Ray 3.7's Parse_Finish reads `diffuse [albedo]
+# Amount [,] [Backside]` with an optional comma (Parse_Comma) and the
+# backside wherever an expression starts (Allow_Float, default 0), so the
+# second number is the backside's, 0: no light from behind. A finish's
+# `subsurface { translucency C }` counts only where global_settings turns
+# subsurface light transport on (trace.cpp), which this scene does not.
+# Also as the exporter writes them: `texture { uv_mapping pigment {...} }`,
+# texture_list without commas, three equal texture indices per face (POV-Ray
+# blends a face's three textures by weight, which for one texture differs
+# from it by its rounding: most of the RMSE below), an empty pattern
+# declared with a function of it, the camera placed by rotate and
+# translate, a light by a matrix.
+cat >"$work/blender.pov" <<'POV'
+//----------------------------------------------
+//--In the style of Blender's POV-Ray exporter--
+//----------------------------------------------
+#version 3.7;
+
+//--Global settings--
+global_settings {
+    assumed_gamma 1.0
+    max_trace_level 5
+    ambient_light rgb<0.2, 0.2, 0.2>
+}
+
+//--Patterns Definitions--
+#declare PAT_Tex =
+pigment {
+}
+#declare fPAT_Tex=
+function{pigment{PAT_Tex}}
+
+//--Background--
+background {rgbt<0.05, 0.06, 0.08, 0>}
+
+//--Cameras--
+#declare camLocation  = <7.48, 5.34, 6.51>;
+#declare camLookAt = <-27.1, 46.69, -0.9>;
+camera {
+    location  <0, 0, 0>
+    look_at  <0, 0, -1>
+    right <-1.3333333333333333, 0, 0>
+    up <0, 1, 0>
+    angle  49.134343
+    rotate  <-27.1, 46.69, -0.9>
+    translate <7.48, 5.34, 6.51>
+}
+
+//--Lamps--
+light_source {
+    < 0,0,0 >
+    color rgb<1.6, 1.6, 1.6>
+    fade_distance 15.0
+    fade_power 2
+    matrix <-0.290865, -0.055189, -0.955171,  -0.771101, 0.604525, 0.199883,  0.566393, 0.794672, -0.218391,  4.076245, 5.903862, -1.005454>
+}
+#declare lampTarget1= vrotate(<-4.076,-1.005,-5.904>,<0.6503,0.05522,1.866>);
+
+//--Material Definitions--
+#default{ pigment{ color srgb 0.8 }}
+#declare shader_ = finish {  //translation of spec and mir levels for when no map influences them
+    diffuse 0.8
+    phong 70.0
+}
+#declare shader_Material = finish {  //translation of spec and mir levels for when no map influences them
+    brilliance 1.8
+    phong 0.5
+    phong_size 25.2
+    diffuse 0.8 0
+    ambient 0.5
+    emission 0
+    conserve_energy
+}
+#declare shader_Skin = finish {
+    specular 0.25
+    roughness 0.05
+    diffuse 0.7, 0
+    ambient 0.3
+    emission 0
+    subsurface { translucency <0.8, 0.3, 0.2> }
+}
+
+//--Mesh objects--
+#declare DATACube =
+mesh2 {
+    vertex_vectors {
+        8,
+        <1.000000, 1.000000, -1.000000>,
+        <1.000000, -1.000000, -1.000000>,
+        <-1.000000, -1.000000, -1.000000>,
+        <-1.000000, 1.000000, -1.000000>,
+        <1.000000, 0.999999, 1.000000>,
+        <0.999999, -1.000001, 1.000000>,
+        <-1.000000, -1.000000, 1.000000>,
+        <-1.000000, 1.000000, 1.000000>
+    }
+    normal_vectors {
+        6,
+        <0.000000, 0.000000, -1.000000>,
+        <-0.000000, -1.000000, -0.000000>,
+        <1.000000, -0.000000, 0.000000>,
+        <-1.000000, 0.000000, -0.000000>,
+        <0.000000, 1.000000, 0.000000>,
+        <0.000000, -0.000000, 1.000000>
+    }
+    uv_vectors {
+        4,
+        <0, 0>, <1, 0>, <1, 1>, <0, 1>
+    }
+    texture_list {
+        2
+        texture {
+            pigment {rgbft<0.8, 0.2, 0.15, 0, 0>}
+            finish {shader_Material}
+        }
+        texture {
+            uv_mapping pigment { checker rgb <0.9, 0.9, 0.2> rgb <0.1, 0.3, 0.8> scale 0.25 }
+            finish {shader_Skin}
+        }
+    }
+    face_indices {
+        12,
+        <0,1,2>, 0,0,0,
+        <0,2,3>, 0,0,0,
+        <4,7,6>, 1,1,1,
+        <4,6,5>, 1,1,1,
+        <0,4,5>, 1,1,1,
+        <0,5,1>, 1,1,1,
+        <1,5,6>, 0,0,0,
+        <1,6,2>, 0,0,0,
+        <2,6,7>, 0,0,0,
+        <2,7,3>, 0,0,0,
+        <4,0,3>, 1,1,1,
+        <4,3,7>, 1,1,1
+    }
+    normal_indices {
+        12,
+        <0,0,0>, <0,0,0>, <5,5,5>, <5,5,5>, <2,2,2>, <2,2,2>,
+        <1,1,1>, <1,1,1>, <3,3,3>, <3,3,3>, <4,4,4>, <4,4,4>
+    }
+    uv_indices {
+        12,
+        <0,1,2>, <0,2,3>, <0,1,2>, <0,2,3>, <0,1,2>, <0,2,3>,
+        <0,1,2>, <0,2,3>, <0,1,2>, <0,2,3>, <0,1,2>, <0,2,3>
+    }
+    interior {
+        ior 1.000000
+    }
+    photons{    }
+    radiosity {
+        importance   1
+    }
+}
+//----Blender Object Name:OBCube----
+object {
+    DATACube
+    matrix <1.000000, 0.000000, 0.000000,  0.000000, -0.000000, -1.000000,  0.000000, 1.000000, -0.000000,  0.000000, 0.000000, 0.000000>
+}
+//----Blender Object Name:OBPlane----
+#declare DATAPlane =
+mesh2 {
+    vertex_vectors { 4, <-6,-6,0>, <6,-6,0>, <6,6,0>, <-6,6,0> }
+    texture_list { 1 texture { pigment {rgbft<0.7, 0.7, 0.7, 0, 0>} finish {shader_} } }
+    face_indices { 2, <0,1,2>, 0,0,0, <0,2,3>, 0,0,0 }
+}
+object {
+    DATAPlane
+    matrix <1,0,0, 0,0,-1, 0,1,0, 0,-1.01,0>
+}
+POV
+
+# --- POV-Ray 3.0's places for global settings ------------------------------
+cat >"$work/toplevel.pov" <<'POV'
+// Settings where POV-Ray 3.0 scenes wrote them, outside global_settings:
+// POV-Ray 3.7's Parse_Frame still reads max_trace_level there (the
+// mirrors show how deep), and max_intersections, which no longer matters.
+#version 3.7;
+global_settings { assumed_gamma 1 }
+max_trace_level 2
+max_intersections 64
+camera { location <0.3, 1, -3> look_at <0, 1, 0> }
+light_source { <2, 4, -3> color rgb 1 }
+#declare Mirror = finish { ambient 0.05 diffuse 0.3 reflection 0.8 }
+polygon { 4, <-2,0,1>, <2,0,1>, <2,2,1>, <-2,2,1> pigment { rgb <0.9, 0.9, 1> } finish { Mirror } }
+polygon { 4, <-2,0,-4>, <2,0,-4>, <2,2,-4>, <-2,2,-4> pigment { rgb <1, 0.9, 0.8> } finish { Mirror } }
+plane { y, 0 pigment { checker rgb <0.8, 0.2, 0.1> rgb 0.9 scale 0.5 } }
+triangle { <-0.5,0.2,0>, <0.5,0.2,0>, <0,1.2,0> pigment { rgb <0.2, 0.7, 0.3> } }
+POV
+
 # The limits per scene, 240x180 (the rule of tests/regress.sh): each LIMIT
 # (MEASURED) pair is the limit and the value measured against POV-Ray
 # 3.7.0.10 (one thread; the same in two runs), about the larger of twice
@@ -132,8 +324,10 @@ POV
 limits='
 # scene       RMSE   (measured)   off (m.)  mask pixels (m.)
 ldcad         1e-5   (3.53e-6)    1 (0)     1 (0)
+blender       3.8e-4 (1.90e-4)    1 (0)     1 (0)
+toplevel      1e-5   (1.92e-6)    1 (0)     1 (0)
 '
-scenes="ldcad"
+scenes="ldcad blender toplevel"
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
 for name in $scenes; do
@@ -180,5 +374,15 @@ Model|undeclared identifier 'Model'
 #declare S = sphere { 0, 1 } S|'sphere' is not supported by hstrace (declared at
 #declare S = sphere { 0, 1 } union { triangle { 0, x, y } S }|'sphere' is not supported by hstrace (declared at
 #declare T = triangle { 0, x, y } union { T object { T } }|expected an object modifier or '}' in 'object', found 'object'
+triangle { 0, x, y pigment { rgb 1 } finish { subsurface { translucency 0.5 scattering 1 } } }|expected translucency, anisotropy or '}' in 'subsurface', found 'scattering'
+triangle { 0, x, y pigment { rgb 1 } finish { diffuse 0.6 0.2 0.1 } }|expected a finish item or '}' in 'finish', found '0.1'
 BAD
+# A backside diffuse other than 0 lights the surface from behind, which
+# hstrace does not model: reported, and refused by --strict.
+printf 'camera { location <0,0,-3> look_at 0 }\nlight_source { <2,4,-3> rgb 1 }\ntriangle { <-1,-1,0>, <1,-1,0>, <0,1,0> pigment { rgb 1 } finish { diffuse 0.6 0.3 } }\n' >"$work/back.pov"
+run "$work/back.pov" --width 8 --height 6 -o "$work/back.png"
+check "diffuse 0.6 0.3: renders, the backside reported as approximated at FILE:LINE:COLUMN" \
+    exited 0 "^$work/back.pov:3:80: warning: 'diffuse's backside value' approximated"
+run "$work/back.pov" --width 8 --height 6 --strict -o "$work/back-strict.png"
+check "... refused with --strict, status 2" exited 2 "^$work/back.pov:3:80: 'diffuse's backside value' is only approximated"
 tap_end
