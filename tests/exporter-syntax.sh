@@ -2,8 +2,9 @@
 # What exporters write that POV-Ray 3.7's parser takes (issue 42), in TAP.
 # Scenes written here in the style of each exporter's output -- LDCad's
 # declared model named on its own line, Blender's `diffuse 0.8 0` and
-# finish subsurface, POV-Ray 3.0's max_trace_level outside global_settings
-# -- are rendered by hstrace and by the
+# finish subsurface, POV-Ray 3.0's max_trace_level outside global_settings,
+# L3P's declarations in a scene without #version (which POV-Ray 3.7 takes
+# for a 3.6 one) -- are rendered by hstrace and by the
 # installed POV-Ray (+Q9, and +Q3/+Q4 for the shadow masks) and compared by
 # `hstrace compare` against the limits measured for each (the table below;
 # issue 42's bar is an RMSE of at most 0.002 and no shadow-mask
@@ -314,6 +315,228 @@ plane { y, 0 pigment { checker rgb <0.8, 0.2, 0.1> rgb 0.9 scale 0.5 } }
 triangle { <-0.5,0.2,0>, <0.5,0.2,0>, <0,1.2,0> pigment { rgb <0.2, 0.7, 0.3> } }
 POV
 
+# --- L3P: declarations guarded by #ifndef, materials by macros, no #version
+# POV-Ray 3.7 takes a scene without #version for a 3.6 one wherever it
+# keeps 3.6's rules (EffectiveLanguageVersion: 3.62): here the transparent
+# brick's own light, 1 - (filter * max(r, g, b) + transmit) (trace.cpp).
+cat >"$work/l3p.pov" <<'POV'
+// In the style of L3P's POV-Ray export: no #version (POV-Ray 3.7 reads it
+// as a 3.6 scene), quality switches, finishes and colours declared only
+// where not yet declared, materials by macros, parts as unions of meshes
+// placed by two matrices each, the model a declared union.
+#if (version < 3.1)
+	#error "This POV code requires at least version 3.1\n"
+#end
+
+#declare L3Version = 1.4;
+#declare L3Quality = 2;  // Quality level, 0=BBox, 1=no refr, 2=normal
+#declare L3SW = 0.5;  // Width of seam between two bricks
+#declare L3Bumps = 0;  // 1=on 0=off
+#declare L3Ambient = 0.4;
+#declare L3Diffuse = 0.4;
+#declare L3Ior     = 1.25;
+#declare L3NormalBumps = normal { bumps 0.01 scale 20 }
+#declare L3SWT = (L3SW ? L3SW : 0.001);  // At least a small seam when transparent
+
+#ifndef (L3FinishOpaque)
+#declare L3FinishOpaque = finish {
+	ambient L3Ambient
+	diffuse L3Diffuse
+	#if (L3Quality >= 2)
+		phong 0.5
+		phong_size 40
+		reflection 0.08
+	#end
+}
+#end
+#ifndef (L3FinishTransparent)
+#declare L3FinishTransparent = finish {
+	ambient L3Ambient
+	diffuse L3Diffuse
+	#if (L3Quality >= 2)
+		phong 0.5
+		phong_size 40
+		reflection 0.2
+	#end
+}
+#end
+
+#ifndef (L3TextureOpaqueRGB)
+#macro L3TextureOpaqueRGB(r,g,b)
+texture {
+	pigment { rgb <r/255,g/255,b/255> }
+	finish { L3FinishOpaque }
+	#if (L3Bumps & (L3Quality > 1)) normal { L3NormalBumps } #end
+}
+#end
+#end
+#ifndef (L3TextureTransparentRGBA)
+#macro L3TextureTransparentRGBA(r,g,b,a)
+#local f = (a >= 128 ? 0.85 + (a-128) * 0.15 / (255-128) : a * 0.85 / 255);
+texture {
+	pigment { rgb <r/255,g/255,b/255> #if (L3Quality > 1) filter f #end }
+	finish { L3FinishTransparent }
+}
+#end
+#end
+#ifndef (L3Material)
+#macro L3Material(tex)
+material {
+	texture { tex }
+}
+#end
+#end
+#ifndef (L3MaterialT)
+#macro L3MaterialT(tex)
+material {
+	texture { tex }
+	#if (L3Quality > 1)
+		interior { ior L3Ior }
+	#end
+}
+#end
+#end
+
+//// Color 4 Red
+#ifndef (L3Texture4)
+#declare L3Texture4 = L3TextureOpaqueRGB(201,26,9)
+#end
+#ifndef (L3Color4)
+#declare L3Color4 = L3Material(L3Texture4)
+#end
+//// Color 7 Light_Grey
+#ifndef (L3Texture7)
+#declare L3Texture7 = L3TextureOpaqueRGB(155,161,157)
+#end
+#ifndef (L3Color7)
+#declare L3Color7 = L3Material(L3Texture7)
+#end
+//// Color 41 Trans_Medium_Blue
+#ifndef (L3Texture41)
+#declare L3Texture41 = L3TextureTransparentRGBA(85,154,183,128)
+#end
+#ifndef (L3Color41)
+#declare L3Color41 = L3MaterialT(L3Texture41)
+#end
+
+//// Primitive box5.dat
+#ifndef (box5_dot_dat)
+#declare box5_dot_dat = object {
+	mesh {
+		triangle { <-1,1,1>, <1,1,1>, <1,1,-1> }
+		triangle { <1,1,-1>, <-1,1,-1>, <-1,1,1> }
+		triangle { <-1,1,1>, <-1,0,1>, <1,0,1> }
+		triangle { <1,0,1>, <1,1,1>, <-1,1,1> }
+		triangle { <-1,1,-1>, <-1,0,-1>, <-1,0,1> }
+		triangle { <-1,0,1>, <-1,1,1>, <-1,1,-1> }
+		triangle { <1,1,-1>, <1,0,-1>, <-1,0,-1> }
+		triangle { <-1,0,-1>, <-1,1,-1>, <1,1,-1> }
+		triangle { <1,1,1>, <1,0,1>, <1,0,-1> }
+		triangle { <1,0,-1>, <1,1,-1>, <1,1,1> }
+	}
+}
+#end // ifndef (box5_dot_dat)
+
+//// Part 3003.dat: a brick 2 x 2 without studs
+#ifndef (_3003_dot_dat)
+#declare _3003_dot_dat = #if (L3Quality = 0) box { <-20,-4,-20>, <20,24,20> } #else union {
+	object { box5_dot_dat matrix <16,0,0,0,-20,0,0,0,16,0,24,0> }
+	mesh {
+		triangle { <20,24,20>, <16,24,16>, <-16,24,16> }
+		triangle { <-16,24,16>, <-20,24,20>, <20,24,20> }
+		triangle { <-20,24,20>, <-16,24,16>, <-16,24,-16> }
+		triangle { <-16,24,-16>, <-20,24,-20>, <-20,24,20> }
+		triangle { <-20,24,-20>, <-16,24,-16>, <16,24,-16> }
+		triangle { <16,24,-16>, <20,24,-20>, <-20,24,-20> }
+		triangle { <20,24,-20>, <16,24,-16>, <16,24,16> }
+		triangle { <16,24,16>, <20,24,20>, <20,24,-20> }
+	}
+	object { box5_dot_dat matrix <20,0,0,0,-24,0,0,0,20,0,24,0> }
+}
+#end
+#end // ifndef (_3003_dot_dat)
+
+//// Model
+#ifndef (model_dot_ldr)
+#declare model_dot_ldr = union {
+	// 1 4  -30 0 0  1 0 0  0 1 0  0 0 1 3003.dat
+	object {
+		_3003_dot_dat
+		matrix <1-L3SW/40,0,0,0,1-L3SW/28,0,0,0,1-L3SW/40,0,L3SW/2.8,0>
+		matrix <1,0,0,0,1,0,0,0,1,-30,0,0>
+		#if (version >= 3.1) material #else texture #end { L3Color4 }
+	}
+	// 1 41  20 0 10  1 0 0  0 1 0  0 0 1 3003.dat
+	object {
+		_3003_dot_dat
+		matrix <1-L3SWT/40,0,0,0,1-L3SWT/28,0,0,0,1-L3SWT/40,0,L3SWT/2.8,0>
+		matrix <1,0,0,0,1,0,0,0,1,20,0,10>
+		#if (version >= 3.1) material #else texture #end { L3Color41 }
+	}
+	// 1 16  -5 -24 0  0.866 0 0.5  0 1 0  -0.5 0 0.866 3003.dat
+	object {
+		_3003_dot_dat
+		matrix <1-L3SW/40,0,0,0,1-L3SW/28,0,0,0,1-L3SW/40,0,L3SW/2.8,0>
+		matrix <0.866,0,-0.5,0,1,0,0.5,0,0.866,-5,-24,0>
+	}
+}
+#end // ifndef (model_dot_ldr)
+
+camera {
+	#declare L3ViewingAngle = 60;
+	#declare L3Sky = -y;
+	sky      L3Sky
+	right    -4/3*x
+	#declare L3LookAt = <0,-14,0>;
+	#declare L3Location = <60,-120,-160>;
+	angle    L3ViewingAngle
+	location L3Location
+	look_at  L3LookAt
+	rotate   <0,1e-5,0> // Prevent gap between adjacent quads
+}
+
+//// Lights
+light_source {
+	<-100,-300,-200>  // Latitude,Longitude,Radius
+	color rgb <1,1,1>
+}
+light_source {
+	<200,-250,-100>
+	color rgb <0.6,0.6,0.6>
+}
+
+//// Floor
+object {
+	plane { y, 24 hollow }
+	texture {
+		pigment { color rgb <0.8,0.8,0.8> }
+		finish { ambient L3Ambient diffuse L3Diffuse }
+	}
+}
+
+//// ModelObject model.ldr
+object { model_dot_ldr #if (version >= 3.1) material #else texture #end { L3Color7 } }
+POV
+
+# --- no #version: the rest of POV-Ray 3.6's rules POV-Ray 3.7 keeps ---------
+cat >"$work/nover.pov" <<'POV'
+// No #version, as many exporters write: POV-Ray 3.7 keeps its 3.6 rules
+// for such a scene (EffectiveLanguageVersion 3.62): the background's
+// transmit is not composited, the sky's filtering layers let the
+// background through the 3.6 way, and a filtering surface's own light is
+// 1 - (filter * max(r, g, b) + transmit). No assumed_gamma: gamma
+// correction is off.
+camera { location <0, 1.2, -4> look_at <0, 1, 0> }
+light_source { <3, 6, -4> color rgb 1 }
+background { rgbt <0.2, 0.4, 0.8, 0.5> }
+sky_sphere {
+  pigment { gradient y color_map { [0.3 rgbf <0.8, 0.8, 1, 0.6>] [0.9 rgbt <0.1, 0.1, 0.4, 0.3>] } }
+}
+plane { y, 0 pigment { checker rgb <0.9, 0.9, 0.8> rgb <0.3, 0.4, 0.3> } }
+box { <-1.6, 0, -0.5>, <-0.2, 1.4, 0.5> pigment { rgbf <0.8, 0.3, 0.2, 0.85> } finish { ambient 0.4 diffuse 0.4 phong 0.5 reflection 0.2 } interior { ior 1.25 } }
+box { <0.2, 0, -0.5>, <1.6, 1.4, 0.5> pigment { rgbft <0.2, 0.5, 0.7, 0.5, 0.3> } finish { ambient 0.3 diffuse 0.5 } }
+POV
+
 # The limits per scene, 240x180 (the rule of tests/regress.sh): each LIMIT
 # (MEASURED) pair is the limit and the value measured against POV-Ray
 # 3.7.0.10 (one thread; the same in two runs), about the larger of twice
@@ -326,8 +549,10 @@ limits='
 ldcad         1e-5   (3.53e-6)    1 (0)     1 (0)
 blender       3.8e-4 (1.90e-4)    1 (0)     1 (0)
 toplevel      1e-5   (1.92e-6)    1 (0)     1 (0)
+l3p           1e-5   (4.76e-6)    1 (0)     1 (0)
+nover         7.7e-5 (3.84e-5)    1 (0)     1 (0)
 '
-scenes="ldcad blender toplevel"
+scenes="ldcad blender toplevel l3p nover"
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
 for name in $scenes; do

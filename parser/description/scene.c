@@ -74,6 +74,11 @@ int scene_gamma_correction_off(const Scene *s)
     return !s->globals.has_assumed_gamma && !(s->version_given && s->version >= 3.7);
 }
 
+double scene_effective_version(const Scene *s)
+{
+    return s->version_given ? s->version : 3.62;
+}
+
 int scene_noise_generator(const Scene *s)
 {
     if (s->globals.noise_generator)

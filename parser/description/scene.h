@@ -525,6 +525,13 @@ double scene_working_gamma(const Scene *s);
  * gamma are then the Display_Gamma option's (frontend's CreateView). */
 int scene_gamma_correction_off(const Scene *s);
 
+/* The language version POV-Ray 3.7 keeps its older rules by (its
+ * EffectiveLanguageVersion): the scene's last #version (or +MV), and 3.62
+ * for a scene that gives none, which POV-Ray takes as written for 3.6 (as
+ * L3P's exports are): the background, the sky, a see-through texture's own
+ * light and radiosity's ambient follow it. */
+double scene_effective_version(const Scene *s);
+
 /* The noise generator of patterns that name none (POV-Ray 3.7: the one of
  * global_settings, else 2, or 1 for a scene whose #version is below 3.5). */
 int scene_noise_generator(const Scene *s);
