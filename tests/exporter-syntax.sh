@@ -4,7 +4,8 @@
 # declared model named on its own line, Blender's `diffuse 0.8 0` and
 # finish subsurface, POV-Ray 3.0's max_trace_level outside global_settings,
 # L3P's declarations in a scene without #version (which POV-Ray 3.7 takes
-# for a 3.6 one) -- are rendered by hstrace and by the
+# for a 3.6 one), vertex-colour exports' three texture indices per face --
+# are rendered by hstrace and by the
 # installed POV-Ray (+Q9, and +Q3/+Q4 for the shadow masks) and compared by
 # `hstrace compare` against the limits measured for each (the table below;
 # issue 42's bar is an RMSE of at most 0.002 and no shadow-mask
@@ -537,6 +538,52 @@ box { <-1.6, 0, -0.5>, <-0.2, 1.4, 0.5> pigment { rgbf <0.8, 0.3, 0.2, 0.85> } f
 box { <0.2, 0, -0.5>, <1.6, 1.4, 0.5> pigment { rgbft <0.2, 0.5, 0.7, 0.5, 0.3> } finish { ambient 0.3 diffuse 0.5 } }
 POV
 
+# --- textures per vertex, all three the same ---------------------------------
+# POV-Ray blends a face's three textures by weight (Mesh::Determine_Textures),
+# which for one texture three times differs from it by rounding: the RMSE.
+cat >"$work/vcol.pov" <<'POV'
+// Per-vertex textures as vertex-colour exporters (three.js's POVExporter,
+// vispy) write them: a texture_list of colours and three indices per face,
+// here the same three on each face; and a mesh triangle's texture_list of
+// three declared textures (POV-Ray's Parse_Mesh_Texture), the same three.
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 2, -5> look_at <0, 0.5, 0> }
+light_source { <3, 6, -4> color rgb 1 }
+plane { y, 0 pigment { rgb 0.8 } }
+#declare surface1 = mesh2 {
+vertex_vectors {
+  5,
+  <-2,0,0>,
+  <-1,0,0>,
+  <-1.5,1.5,0>,
+  <-0.5,1.5,0.5>,
+  <-2.2,1.4,0.5>,
+  }
+texture_list {
+  3,
+texture{pigment{rgb <0.9,0.2,0.1>}}
+texture{pigment{rgb <0.1,0.7,0.2>}}
+texture{pigment{rgb <0.2,0.3,0.9>}}
+}
+face_indices {
+  3,
+  <0,1,2>, 0, 0, 0
+  <1,3,2>, 1, 1, 1
+  <0,2,4>, 2, 2, 2
+  }
+}
+union {
+  object { surface1 }
+  pigment{rgb 1}
+}
+#declare Gold = texture { pigment { rgb <1, 0.8, 0.3> } finish { phong 0.6 } }
+mesh {
+  triangle { <0.5,0,0>, <2,0,0>, <1.2,1.6,0.3> texture_list { Gold, Gold, Gold } }
+  triangle { <0.5,0,0>, <1.2,1.6,0.3>, <0.3,1.2,0.6> texture_list { Gold Gold Gold } }
+}
+POV
+
 # The limits per scene, 240x180 (the rule of tests/regress.sh): each LIMIT
 # (MEASURED) pair is the limit and the value measured against POV-Ray
 # 3.7.0.10 (one thread; the same in two runs), about the larger of twice
@@ -551,8 +598,9 @@ blender       3.8e-4 (1.90e-4)    1 (0)     1 (0)
 toplevel      1e-5   (1.92e-6)    1 (0)     1 (0)
 l3p           1e-5   (4.76e-6)    1 (0)     1 (0)
 nover         7.7e-5 (3.84e-5)    1 (0)     1 (0)
+vcol          6.8e-5 (3.40e-5)    1 (0)     1 (0)
 '
-scenes="ldcad blender toplevel l3p nover"
+scenes="ldcad blender toplevel l3p nover vcol"
 povray=""
 if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
 for name in $scenes; do
@@ -601,7 +649,26 @@ Model|undeclared identifier 'Model'
 #declare T = triangle { 0, x, y } union { T object { T } }|expected an object modifier or '}' in 'object', found 'object'
 triangle { 0, x, y pigment { rgb 1 } finish { subsurface { translucency 0.5 scattering 1 } } }|expected translucency, anisotropy or '}' in 'subsurface', found 'scattering'
 triangle { 0, x, y pigment { rgb 1 } finish { diffuse 0.6 0.2 0.1 } }|expected a finish item or '}' in 'finish', found '0.1'
+#declare P = pigment { rgb 1 } mesh { triangle { 0, x, y texture_list { P, P, P } } }|'P' cannot be used in a texture_list
 BAD
+# Three different textures on a face, one per vertex: POV-Ray blends them
+# by the point's place in the face, hstrace shows the first: reported at
+# the first such face, refused by --strict; the same three are not.
+sed 's/<1,3,2>, 1, 1, 1/<1,3,2>, 1, 2, 0/' "$work/vcol.pov" >"$work/vcol3.pov"
+run "$work/vcol3.pov" --width 8 --height 6 -o "$work/vcol3.png"
+check "mesh2 faces with three different texture indices: render, reported as approximated at the first" \
+    exited 0 "^$work/vcol3.pov:28:15: warning: 'a texture per vertex' approximated"
+run "$work/vcol3.pov" --width 8 --height 6 --strict -o "$work/vcol3-strict.png"
+check "... refused with --strict where the declared mesh is used, status 2, naming the face" \
+    exited 2 "^$work/vcol3.pov:33:12: 'a texture per vertex' is only approximated by hstrace; --strict makes it an error (declared at $work/vcol3.pov:28)"
+sed 's/texture_list { Gold Gold Gold }/texture_list { Gold Gold T2 }/; s/^#declare Gold = .*/&\n#declare T2 = texture { Gold pigment { rgb 0.5 } }/' "$work/vcol.pov" >"$work/vcol4.pov"
+run "$work/vcol4.pov" --width 8 --height 6 --strict -o "$work/vcol4.png"
+check "a mesh triangle's texture_list of different textures: refused with --strict, status 2" \
+    exited 2 "^$work/vcol4.pov:[0-9]*:[0-9]*: 'a texture per vertex' is only approximated"
+run "$work/vcol.pov" --width 8 --height 6 --strict -o "$work/vcol-strict.png"
+check "the same three textures per vertex: nothing reported, not refused by --strict" \
+    test "$status $(wc -c <"$work/err" | tr -d ' ')" = "0 0"
+
 # A backside diffuse other than 0 lights the surface from behind, which
 # hstrace does not model: reported, and refused by --strict.
 printf 'camera { location <0,0,-3> look_at 0 }\nlight_source { <2,4,-3> rgb 1 }\ntriangle { <-1,-1,0>, <1,-1,0>, <0,1,0> pigment { rgb 1 } finish { diffuse 0.6 0.3 } }\n' >"$work/back.pov"

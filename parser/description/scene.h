@@ -42,6 +42,7 @@ typedef enum {
     APPROX_RADIOSITY,     /* global radiosity / subsurface: ignored */
     APPROX_FOCAL_BLUR,    /* camera aperture / normal: a pinhole camera */
     APPROX_FOG,           /* fog on light rays (media_attenuation) */
+    APPROX_VERTEX_TEXTURES, /* a mesh face's texture per vertex: the first one on the whole face */
     APPROX_KINDS
 } ApproxKind;
 
