@@ -1,16 +1,16 @@
 #!/bin/sh
 # What exporters write that POV-Ray 3.7's parser takes (issue 42), in TAP.
 # Scenes written here in the style of each exporter's output -- LDCad's
-# declared model named on its own line, Blender's `diffuse 0.8 0` and
-# finish subsurface, POV-Ray 3.0's max_trace_level outside global_settings,
-# L3P's declarations in a scene without #version (which POV-Ray 3.7 takes
-# for a 3.6 one), vertex-colour exports' three texture indices per face --
-# are rendered by hstrace and by the
-# installed POV-Ray (+Q9, and +Q3/+Q4 for the shadow masks) and compared by
-# `hstrace compare` against the limits measured for each (the table below;
-# issue 42's bar is an RMSE of at most 0.002 and no shadow-mask
-# disagreement in the interior). Then the mistakes near those forms: status
-# 2 at FILE:LINE:COLUMN, no image.
+# declared model named on its own line; Blender's `diffuse 0.8 0` and
+# finish subsurface; POV-Ray 3.0's max_trace_level outside global_settings;
+# L3P's declarations in a scene without #version, which POV-Ray 3.7 takes
+# for a 3.6 one; vertex-colour exports' three texture indices per face --
+# are rendered by hstrace and by the installed POV-Ray (+Q9, and +Q3/+Q4
+# for the shadow masks) and compared by `hstrace compare` against the
+# limits measured for each (the table below; issue 42's bar is an RMSE of
+# at most 0.002 and no shadow-mask disagreement in the interior). Then the
+# mistakes near those forms (status 2 at FILE:LINE:COLUMN, no image) and
+# what they approximate (reported, refused by --strict).
 #
 # Environment: top_srcdir, top_builddir (default .), POVRAY (path or name of
 # povray; may be empty).
@@ -585,10 +585,10 @@ mesh {
 POV
 
 # The limits per scene, 240x180 (the rule of tests/regress.sh): each LIMIT
-# (MEASURED) pair is the limit and the value measured against POV-Ray
-# 3.7.0.10 (one thread; the same in two runs), about the larger of twice
-# that and 1e-5 for an RMSE, twice that and 1 for a count of pixels: the
-# full +Q9 image's RMSE and its pixels off by more than 0.02, and the
+# (MEASURED) pair is the limit and the value measured on 2026-12-07 against
+# POV-Ray 3.7.0.10 (one thread; the same in two runs), about the larger of
+# twice that and 1e-5 for an RMSE, twice that and 1 for a count of pixels:
+# the full +Q9 image's RMSE and its pixels off by more than 0.02, and the
 # shadow-mask pixels that disagree (at edges and silhouettes; none may in
 # the interior).
 limits='
