@@ -8,7 +8,8 @@
 # POV-Ray, compared by `hstrace compare` against the limits measured for
 # each scene (the table below): the image (RMSE and pixels off by more than
 # 0.02) and the shadow mask (none in the interior).
-# Then the command line: --strict, the approximation report of --stats and
+# Then the command line: --strict (which refuses only what the scene uses:
+# skies.inc), the approximation report of --stats and
 # --stats-json, and hstrace's own colors.inc with POV-Ray's folder hidden.
 #
 # Environment: top_srcdir, top_builddir (default .), POVRAY (may be empty).
@@ -301,6 +302,40 @@ run "$work/approx.pov" --width 40 --height 30 -o "$work/s.png" --strict
 check "--strict: the first approximation is an error at FILE:LINE:COLUMN, status 2" \
     exited 2 "approx.pov:4:33: 'photons' is only approximated by hstrace (photon mapping ignored); --strict makes it an error"
 check "--strict: no image" [ ! -e "$work/s.png" ]
+
+# --strict refuses only what the scene uses (issue 42): skies.inc, read
+# from POV-Ray's include folder, declares skies hstrace renders exactly and
+# others it approximates (T_Cloud3, a layered texture, is used by O_Cloud2
+# right after it, which --strict once reported as undeclared).
+incdir=/usr/share/povray-3.7/include
+if [ -f "$incdir/skies.inc" ]; then
+    for use in "none|" "S_Cloud5|sky_sphere { S_Cloud5 }"; do
+        what=${use%%|*}
+        printf '#version 3.7;\n#include "colors.inc"\n#include "skies.inc"\ncamera { location <0, 1, -4> look_at <0, 1.5, 0> }\nlight_source { <2, 4, -3> rgb 1 }\ntriangle { <-1,0,0>, <1,0,0>, <0,2,0> pigment { rgb <1, 0.5, 0.2> } }\n%s\n' \
+            "${use#*|}" >"$work/skies-$what.pov"
+        run "$work/skies-$what.pov" --width 40 --height 30 -o "$work/skies-$what.png"
+        check "skies.inc, using $what of it: renders" exited 0
+        run "$work/skies-$what.pov" --width 40 --height 30 --strict -o "$work/skies-$what-strict.png"
+        check "skies.inc, using $what of it: renders with --strict" exited 0
+        check "... the same image" "$hstrace" compare "$work/skies-$what.png" "$work/skies-$what-strict.png" --max-error 0
+    done
+    printf '#version 3.7;\n#include "colors.inc"\n#include "skies.inc"\ncamera { location <0, 1, -4> look_at <0, 1.5, 0> }\nplane { y, 500 texture { T_Cloud3 scale 600 } }\n' \
+        >"$work/skies-layers.pov"
+    run "$work/skies-layers.pov" --width 40 --height 30 --strict -o "$work/skies-layers.png"
+    check "skies.inc's T_Cloud3, used: --strict refuses it at the use, status 2, naming its declaration" \
+        exited 2 "^$work/skies-layers.pov:5:26: 'texture' is only approximated by hstrace; --strict makes it an error (declared at $incdir/skies.inc:[0-9]*)\$"
+    check "... no image" [ ! -e "$work/skies-layers.png" ]
+    printf '#version 3.7;\n#include "colors.inc"\n#include "skies.inc"\ncamera { location <0, 1, -4> look_at <0, 1.5, 0> }\nplane { y, 500 texture { T_Cloud9 } }\n' \
+        >"$work/skies-undeclared.pov"
+    for strict in "" --strict; do
+        run "$work/skies-undeclared.pov" --width 40 --height 30 $strict -o "$work/skies-undeclared.png"
+        check "an undeclared identifier the scene uses${strict:+, with $strict}: status 2 at FILE:LINE:COLUMN, no image" \
+            exited 2 "^$work/skies-undeclared.pov:5:26: undeclared identifier 'T_Cloud9'\$"
+        check "... no image" [ ! -e "$work/skies-undeclared.png" ]
+    done
+else
+    skip "skies.inc and --strict" "POV-Ray's include files are not installed (Debian package povray-includes; $incdir absent)"
+fi
 
 # hstrace's own colors.inc when POV-Ray's include folder is absent (nor
 # named by $POVINC, which the suite sets for POV-Ray: hstrace reads it too).

@@ -74,6 +74,11 @@ int scene_gamma_correction_off(const Scene *s)
     return !s->globals.has_assumed_gamma && !(s->version_given && s->version >= 3.7);
 }
 
+double scene_effective_version(const Scene *s)
+{
+    return s->version_given ? s->version : 3.62;
+}
+
 int scene_noise_generator(const Scene *s)
 {
     if (s->globals.noise_generator)
@@ -144,6 +149,8 @@ static const struct {
                                         "other surfaces, and (as POV-Ray 3.7 with radiosity) no finish's ambient" },
     [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
     [APPROX_FOG] = { "fog", "fog between lights and surfaces (media_attenuation) ignored" },
+    [APPROX_VERTEX_TEXTURES] = { "vertex-textures", "a mesh face's textures per vertex not blended: the first "
+                                                    "vertex's texture on the whole face" },
 };
 
 const char *approx_kind_name(ApproxKind k)

@@ -42,6 +42,7 @@ typedef enum {
     APPROX_RADIOSITY,     /* global radiosity / subsurface: ignored */
     APPROX_FOCAL_BLUR,    /* camera aperture / normal: a pinhole camera */
     APPROX_FOG,           /* fog on light rays (media_attenuation) */
+    APPROX_VERTEX_TEXTURES, /* a mesh face's texture per vertex: the first one on the whole face */
     APPROX_KINDS
 } ApproxKind;
 
@@ -524,6 +525,13 @@ double scene_working_gamma(const Scene *s);
  * no assumed_gamma, a version below 3.7 or none): the working and file
  * gamma are then the Display_Gamma option's (frontend's CreateView). */
 int scene_gamma_correction_off(const Scene *s);
+
+/* The language version POV-Ray 3.7 keeps its older rules by (its
+ * EffectiveLanguageVersion): the scene's last #version (or +MV), and 3.62
+ * for a scene that gives none, which POV-Ray takes as written for 3.6 (as
+ * L3P's exports are): the background, the sky, a see-through texture's own
+ * light and radiosity's ambient follow it. */
+double scene_effective_version(const Scene *s);
 
 /* The noise generator of patterns that name none (POV-Ray 3.7: the one of
  * global_settings, else 2, or 1 for a scene whose #version is below 3.5). */

@@ -332,6 +332,24 @@ static int add_mesh_texture(Parser *p, MeshBuilder *mb, const SceneTexture *t)
     return mb->textures.n - 1;
 }
 
+/* A face given a texture per vertex (mesh2's three indices, a mesh
+ * triangle's texture_list), as vertex-coloured exports write them: POV-Ray
+ * blends the three textures by the point's place in the face
+ * (Mesh::Determine_Textures); hstrace shows the first on the whole face,
+ * exact when the three are one. Noted once per mesh, at the first face
+ * whose textures differ (`at`). */
+static void note_vertex_textures(Parser *p, SceneObject *o, const Token *at, int *noted)
+{
+    if (*noted)
+        return;
+    *noted = 1;
+    static const char what[] = "a texture per vertex";
+    Token t = *at;
+    t.text = what;
+    t.len = (int)sizeof what - 1;
+    tok_approximate(p, &t, APPROX_VERTEX_TEXTURES, &o->approx);
+}
+
 static void finish_mesh(Parser *p, SceneObject *o, MeshBuilder *mb)
 {
     /* mesh2's lists are read into the scene's arena (reserve_list): kept as they are */
@@ -393,6 +411,7 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
     SceneObject *o = new_object(p, OBJ_MESH, kw);
     MeshBuilder mb;
     init_mesh_builder(&mb);
+    int noted = 0; /* a face with a texture per vertex, noted */
     for (;;) {
         Token *t = tok_next(p);
         if (tok_is_kw(t, KW_triangle) || tok_is_kw(t, KW_smooth_triangle)) {
@@ -420,6 +439,24 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
                 if (tok_is_kw(t, KW_texture)) {
                     int idx = add_mesh_texture(p, &mb, gram_texture(p));
                     ((MeshFace *)mb.faces.data)[mb.faces.n - 1].texture = idx;
+                } else if (tok_is_kw(t, KW_texture_list)) {
+                    /* POV-Ray's Parse_Mesh_Texture: three declared textures, one per vertex */
+                    Token at = *t;
+                    const SceneTexture *vertex[3];
+                    tok_begin_block(p, "texture_list");
+                    for (int i = 0; i < 3; i++) {
+                        if (i)
+                            expr_comma(p);
+                        Token *id = tok_next(p);
+                        const Value *v = gram_block_identifier(p, id, VAL_TEXTURE, "texture_list");
+                        if (!v)
+                            tok_fail_expected(p, id, "a texture identifier in a mesh triangle's texture_list");
+                        vertex[i] = v->texture;
+                    }
+                    tok_expect_punct(p, '}', "texture_list");
+                    if (vertex[1] != vertex[0] || vertex[2] != vertex[0])
+                        note_vertex_textures(p, o, &at, &noted);
+                    ((MeshFace *)mb.faces.data)[mb.faces.n - 1].texture = add_mesh_texture(p, &mb, vertex[0]);
                 } else if (tok_is_kw(t, KW_uv_vectors)) {
                     MeshFace *face = (MeshFace *)mb.faces.data + mb.faces.n - 1;
                     for (int i = 0; i < 3; i++) {
@@ -432,7 +469,7 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
                 } else {
                     if (t->type == TK_WORD && t->kw >= 0)
                         tok_unsupported(p, t);
-                    tok_fail_expected(p, t, "texture, uv_vectors or '}' in a mesh triangle");
+                    tok_fail_expected(p, t, "texture, texture_list, uv_vectors or '}' in a mesh triangle");
                 }
             }
         } else if (tok_is_kw(t, KW_inside_vector)) {
@@ -484,6 +521,7 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
     MeshBuilder mb;
     init_mesh_builder(&mb);
     int have_faces = 0, have_normal_indices = 0, have_uv_indices = 0;
+    int noted = 0; /* a face with a texture per vertex, noted */
     for (;;) {
         Token *t = tok_next(p);
         Token at = *t;
@@ -543,7 +581,7 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                 f->n[0] = f->n[1] = f->n[2] = -1;
                 f->uv[0] = f->uv[1] = f->uv[2] = -1;
                 f->texture = -1;
-                /* one texture index, or three (per vertex: hstrace uses the first) */
+                /* one texture index, or three: one per vertex (note_vertex_textures) */
                 for (int k = 0; k < 3; k++) {
                     expr_comma(p);
                     if (!expr_starts_float(p, tok_peek(p)))
@@ -554,6 +592,8 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                         tok_fail(p, it.pos, "texture index out of range in mesh2");
                     if (k == 0)
                         f->texture = ti;
+                    else if (ti != f->texture)
+                        note_vertex_textures(p, o, &it, &noted);
                 }
             }
             expr_comma(p); /* POV-Ray takes a comma after every item, the last too */
@@ -758,10 +798,44 @@ static int object_id_follows(Parser *p, int kw)
     return k == VAL_OBJECT || k == VAL_LIGHT || (k == VAL_UNSUPPORTED && kw == KW_union);
 }
 
+/* A declared object or light named on its own, as LDCad ends its model
+ * (`#declare Model = union {...}` then `Model`): POV-Ray 3.7's Parse_Object
+ * takes an object identifier as a copy of it, without modifiers, wherever
+ * it takes an object -- at the top level (Parse_Frame) and among a union's
+ * children (Parse_CSG). Returns 0 when t is no such identifier; one that
+ * holds an unsupported declaration is that declaration's error. */
+static int bare_object_identifier(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
+{
+    if (t->type != TK_WORD || t->kw >= 0)
+        return 0;
+    Symbol *s = tok_symbol_of(p, t);
+    if (!s)
+        return 0;
+    const Value *v = &s->value;
+    if (v->kind == VAL_UNSUPPORTED)
+        tok_use_unsupported(p, t, v);
+    if (v->kind == VAL_LIGHT) {
+        SceneLight *l = tok_scene_alloc(p, sizeof *l);
+        *l = *v->light;
+        l->pos = t->pos;
+        *light = l;
+        return 1;
+    }
+    if (v->kind != VAL_OBJECT)
+        return 0;
+    SceneObject *o = tok_scene_alloc(p, sizeof *o);
+    *o = *v->object;
+    o->pos = t->pos;
+    *obj = o;
+    return 1;
+}
+
 int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light)
 {
     *obj = NULL;
     *light = NULL;
+    if (bare_object_identifier(p, t, obj, light))
+        return 1;
     if (t->type != TK_WORD || (!gram_is_object_keyword(t->kw) && t->kw != KW_light_source))
         return 0;
     Token kw = *t;

@@ -169,6 +169,17 @@ static void skip_poisoned_value(Parser *p, int start_depth)
         }
         return;
     }
+    /* A value poisoned after it was read whole -- a texture layer that
+     * --strict refuses once it is blended -- leaves nothing to skip.
+     * Reading on would carry out the directives after it before the value
+     * is stored: skies.inc's `#declare O_Cloud2 = union { ... T_Cloud3
+     * ... }` right after T_Cloud3 would find T_Cloud3 undeclared. Only
+     * when the poisoning token is the last one read may its arguments
+     * follow. */
+    const Token *last = &p->tok;
+    if (last->pos.line != p->poison_by.line || last->pos.column != p->poison_by.column ||
+        last->pos.file != p->poison_by.file)
+        return;
     /* The keyword itself was unsupported: `sphere {...}`, `array[3] {...}`,
      * `function(x) {...}`, a macro call `Foo(1, 2)`. */
     for (;;) {
@@ -391,6 +402,21 @@ void gram_default_directive(Parser *p)
 
 /* ---- scene statements ---------------------------------------------------- */
 
+/* max_trace_level's value, after the keyword: at least 1, and at most
+ * POV-Ray's limit, with a warning. */
+static void max_trace_level(Parser *p)
+{
+    Token at = *tok_peek(p);
+    double v = expr_float(p);
+    p->scene->globals.max_trace_level = int_clamped(v, 1, MAX_TRACE_LEVEL_LIMIT);
+    if (v > MAX_TRACE_LEVEL_LIMIT) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "max_trace_level %g is more than POV-Ray's limit, %d: %d is used", v,
+                 MAX_TRACE_LEVEL_LIMIT, MAX_TRACE_LEVEL_LIMIT);
+        tok_warning(p, at.pos, msg);
+    }
+}
+
 static void parse_global_settings(Parser *p)
 {
     GlobalSettings *g = &p->scene->globals;
@@ -419,19 +445,7 @@ static void parse_global_settings(Parser *p)
             gram_assumed_gamma_seen(p, gamma);
             break;
         }
-        case KW_max_trace_level: {
-            /* POV-Ray: at least 1, and at most its limit, with a warning */
-            Token at = *tok_peek(p);
-            double v = expr_float(p);
-            g->max_trace_level = int_clamped(v, 1, MAX_TRACE_LEVEL_LIMIT);
-            if (v > MAX_TRACE_LEVEL_LIMIT) {
-                char msg[160];
-                snprintf(msg, sizeof msg, "max_trace_level %g is more than POV-Ray's limit, %d: %d is used", v,
-                         MAX_TRACE_LEVEL_LIMIT, MAX_TRACE_LEVEL_LIMIT);
-                tok_warning(p, at.pos, msg);
-            }
-            break;
-        }
+        case KW_max_trace_level: max_trace_level(p); break;
         case KW_adc_bailout: g->adc_bailout = expr_float(p); break;
         case KW_ambient_light:
             expr_colour(p, &c, 0);
@@ -530,6 +544,16 @@ static void parse_statements(Parser *p)
             /* `default { ... }` without '#': the older spelling, which POV-Ray
              * 3.7 still reads as #default (several of its sample scenes use it). */
             gram_default_directive(p);
+            break;
+        case KW_max_trace_level:
+            /* POV-Ray 3.0's place for it, which POV-Ray 3.7's Parse_Frame
+             * still reads as the global setting, with this warning */
+            tok_warning(p, t.pos, "'max_trace_level' should be in global_settings block");
+            max_trace_level(p);
+            break;
+        case KW_max_intersections:
+            /* no effect in POV-Ray 3.7 (Parse_Frame reads it and says so) */
+            (void)expr_float(p);
             break;
         default:
             if (t.type == TK_WORD && t.kw >= 0)

@@ -929,6 +929,23 @@ static void parse_reflection(Parser *p, Finish *f)
     }
 }
 
+/* A finish's subsurface block, after 'subsurface': its colours read and
+ * dropped (POV-Ray's Parse_Finish takes translucency and anisotropy, each
+ * a colour, in any order). */
+static void subsurface_block(Parser *p)
+{
+    tok_begin_block(p, "subsurface");
+    for (;;) {
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
+            return;
+        if (!tok_is_kw(t, KW_translucency) && !tok_is_kw(t, KW_anisotropy))
+            tok_fail_expected(p, t, "translucency, anisotropy or '}' in 'subsurface'");
+        Colour ignored;
+        expr_colour(p, &ignored, 0);
+    }
+}
+
 void gram_finish(Parser *p, Finish *f)
 {
     int diffuse_albedo = 0, phong_albedo = 0, specular_albedo = 0;
@@ -952,17 +969,25 @@ void gram_finish(Parser *p, Finish *f)
             expr_colour(p, &c, 0);
             colour_to_rgb(f->emission, &c);
             break;
-        case KW_diffuse:
+        case KW_diffuse: {
+            /* POV-Ray 3.7's Parse_Finish: `diffuse [albedo] Amount [,]
+             * [Backside]`, the comma optional (Parse_Comma) and the backside
+             * read wherever an expression starts (Allow_Float, default 0):
+             * Blender's exporter writes `diffuse 0.8 0`. A minus sign joins
+             * the amount instead (`diffuse 0.8 -0.2` is 0.6), as there. */
             diffuse_albedo = allow_albedo(p);
             f->diffuse = expr_float(p);
-            if (tok_is_punct(tok_next(p), ',')) {
-                Token back = *tok_peek(p);
-                if (expr_float(p) != 0.0) /* light through the back: not modelled */
-                    tok_approximate(p, &back, APPROX_FINISH, &f->approx);
-            } else {
-                tok_unget(p);
+            expr_comma(p);
+            Token back = *tok_peek(p);
+            if (expr_starts_expression(p, &back) && expr_float(p) != 0.0) {
+                /* light from behind the surface: not modelled */
+                static const char what[] = "diffuse's backside value";
+                back.text = what;
+                back.len = (int)sizeof what - 1;
+                tok_approximate(p, &back, APPROX_FINISH, &f->approx);
             }
             break;
+        }
         case KW_brilliance: f->brilliance = expr_float(p); break;
         case KW_crand:
             f->crand = expr_float(p);
@@ -992,6 +1017,14 @@ void gram_finish(Parser *p, Finish *f)
             break;
         case KW_ior: case KW_caustics: case KW_refraction: /* pre-3.0 spellings of interior settings */
             (void)expr_float(p);
+            break;
+        case KW_subsurface:
+            /* `subsurface { translucency C anisotropy C }`, as Blender's
+             * exporter writes it: POV-Ray 3.7 uses it only where
+             * global_settings turns subsurface light transport on (trace.cpp:
+             * useSubsurface && UseSubsurface), which hstrace reports as
+             * approximated there; elsewhere the finish is as without it. */
+            subsurface_block(p);
             break;
         default:
             if (t->type == TK_WORD && t->kw >= 0)

@@ -165,10 +165,11 @@ void tok_fail_expected(Parser *p, const Token *found, const char *what)
 
 /* Inside a #declare an unsupported thing only poisons the declaration: the
  * error comes when (if ever) the scene uses it. */
-static _Noreturn void poison(Parser *p, const char *what, SourcePos at, int strict_only)
+static _Noreturn void poison(Parser *p, const char *what, SourcePos at, const Token *by, int strict_only)
 {
     p->poison_what = what;
     p->poison_at = at;
+    p->poison_by = by->pos;
     p->poison_strict = strict_only;
     longjmp(*p->poison_jmp, 1);
 }
@@ -179,7 +180,7 @@ void tok_approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNot
     snprintf(what, sizeof what, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
     if (p->opts->strict) {
         if (p->declaring)
-            poison(p, tok_temp_strndup(p, what, strlen(what)), t->pos, 1);
+            poison(p, tok_temp_strndup(p, what, strlen(what)), t->pos, t, 1);
         tok_fail(p, t->pos, "%s is only approximated by hstrace (%s); --strict makes it an error", what,
                    approx_kind_effect(kind));
     }
@@ -200,14 +201,14 @@ void tok_unsupported(Parser *p, const Token *t)
     char buf[96];
     snprintf(buf, sizeof buf, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
     if (p->declaring)
-        poison(p, tok_temp_strndup(p, buf, strlen(buf)), t->pos, 0);
+        poison(p, tok_temp_strndup(p, buf, strlen(buf)), t->pos, t, 0);
     tok_fail(p, t->pos, "%s is not supported by hstrace", buf);
 }
 
 void tok_use_unsupported(Parser *p, const Token *t, const Value *v)
 {
     if (p->declaring)
-        poison(p, v->what, v->declared_at, v->strict_only);
+        poison(p, v->what, v->declared_at, t, v->strict_only);
     if (v->strict_only)
         tok_fail(p, t->pos, "%s is only approximated by hstrace; --strict makes it an error (declared at %s:%d)",
                    v->what, v->declared_at.file, v->declared_at.line);

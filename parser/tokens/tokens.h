@@ -321,6 +321,11 @@ typedef struct Parser {
     jmp_buf *poison_jmp;
     const char *poison_what;
     SourcePos poison_at;
+    /* Where the token that poisoned the value stands (an unsupported
+     * keyword, an identifier holding an unsupported value, a texture layer
+     * --strict refuses): when it is the last token read, the arguments of
+     * what it starts may still follow. */
+    SourcePos poison_by;
     /* An unsupported identifier or function inside a declared expression:
      * the expression is read to its end (its value is then unsupported). */
     const char *deferred_what;

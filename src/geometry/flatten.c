@@ -980,7 +980,10 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
     w->background_filter = scene->background.filter;
     w->background_transmit = scene->background.transmit;
     w->background = w->background_colour;
-    if (scene->version >= 3.7) { /* POV-Ray 3.7 composites it on black */
+    /* POV-Ray's older rules where it keeps them: a scene without #version
+     * is taken as a 3.6 one (scene_effective_version). */
+    const double version = scene_effective_version(scene);
+    if (version >= 3.7) { /* POV-Ray 3.7 composites it on black */
         w->background.r *= 1.0 - scene->background.transmit;
         w->background.g *= 1.0 - scene->background.transmit;
         w->background.b *= 1.0 - scene->background.transmit;
@@ -1001,14 +1004,15 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
         }
         w->sky->pigments = pigments;
     }
-    w->legacy_sky = scene->version < 3.7;
+    w->legacy_sky = version < 3.7;
+    w->legacy_layer_light = version < 3.7;
     w->nfogs = scene->nfogs;
     w->fogs = scene->fogs;
     w->ambient_light = rgb_of(&scene->globals.ambient_light);
     /* POV-Ray 3.7 uses no finish's ambient once radiosity is on (the
      * radiosity, not modelled here, stands in for it); 3.6 scenes keep it,
      * and so do renders below +Q9, where POV-Ray turns radiosity off. */
-    w->radiosity_replaces_ambient = scene->globals.radiosity && scene->version >= 3.7;
+    w->radiosity_replaces_ambient = scene->globals.radiosity && version >= 3.7;
     w->max_trace_level = scene->globals.max_trace_level > 0 ? scene->globals.max_trace_level : 5;
     /* As POV-Ray takes it: 0 (or less) prunes no ray (the parser gives
      * POV-Ray's default, 1/255, when the scene says none). */

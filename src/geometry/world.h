@@ -158,6 +158,10 @@ typedef struct {
      * its own copy of the pigments, noise generators resolved (owned). */
     SkySphere *sky;
     int legacy_sky;       /* #version below 3.7: POV-Ray 3.6's layering of the sky's filter */
+    /* #version below 3.7: a see-through texture's own light is reduced by
+     * POV-Ray 3.6's 1 - (filter * max(r, g, b) + transmit) instead of 3.7's
+     * 1 - filter - transmit (trace.cpp keeps it for such scenes) */
+    int legacy_layer_light;
     int nfogs;
     const SceneFog *fogs; /* the scene's, read-only */
     RGB ambient_light;

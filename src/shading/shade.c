@@ -230,7 +230,7 @@ typedef struct {
     RGB pigment;
     const Finish *finish;
     Vec3 normal;          /* its shading normal, facing the arriving ray */
-    double att;           /* its own light's share: 1 - filter - transmit */
+    double att;           /* its own light's share: 1 - filter - transmit (3.6 scenes: texture_own_light) */
     RGB reflec;           /* its reflectivity, and the weight of its reflected ray */
     double reflect_weight;
     RGB acc;              /* its light so far: ambient and emission, then the lights' */
@@ -663,6 +663,8 @@ static void texture_own_light(ShadeContext *ctx, const Ray *ray, const Material 
     }
     const Colour *pc = &t->colour;
     double att = 1.0 - pc->filter - pc->transmit;
+    if (w->legacy_layer_light) /* POV-Ray 3.6's formula, kept for its scenes */
+        att = 1.0 - (pc->filter * fmax(pc->r, fmax(pc->g, pc->b)) + pc->transmit);
     t->att = att;
     /* POV-Ray's radiosity (at +Q9, its "advanced light") takes ambient's place */
     RGB amb = w->radiosity_replaces_ambient && ctx->quality.volume ? (RGB){ 0, 0, 0 } : w->ambient_light;
