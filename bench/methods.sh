@@ -87,7 +87,8 @@ c = hst.get("cost_model")
 if c:
     print(f"\nCost model (hst run): C_s {c['c_s_ns']:.1f} ns, C_i {c['c_i_ns']:.1f} ns, C_c {c['c_c_ns']:.1f} ns, "
           f"C_o {c['c_o_ns']:.1f} ns, p {c['p']:.4f}, alpha {c['alpha']:.3f}, N_c {c['n_c']:.1f}, N_o {c['n_o']:.1f}, "
-          f"N_th (eq. 7) {c['nth_eq7']:.1f}; calibration {1000 * c['seconds']:.1f} ms.")
+          f"N_th (eq. 7) " + (f"{c['nth_eq7']:.1f}" if c['nth_eq7'] is not None else "none (no finite optimum)") +
+          f"; calibration {1000 * c['seconds']:.1f} ms.")
 v = hst.get("volumes")
 if v:
     sp = ", ".join(f"{l['shadow_polygons']} ({l['cell_registrations']} registrations)" for l in v["lights"])
