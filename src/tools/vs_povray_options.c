@@ -42,6 +42,8 @@ void vs_povray_options_usage(FILE *f)
 
 void vs_povray_options_free(VsPovrayOptions *opt)
 {
+    /* (the render options hold what the povray.ini read allocated) */
+    options_free(&opt->render);
     free(opt->render_args);
     opt->render_args = NULL;
     opt->nrender_args = 0;
@@ -205,6 +207,7 @@ int vs_povray_options_parse(int argc, char **argv, VsPovrayOptions *opt, char *e
     }
     return 0;
 fail:
+    options_free(&opt->render);
     free(rargv);
     opt->render_args = NULL;
     return -1;
