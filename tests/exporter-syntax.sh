@@ -601,37 +601,8 @@ nover         7.7e-5 (3.84e-5)    1 (0)     1 (0)
 vcol          6.8e-5 (3.40e-5)    1 (0)     1 (0)
 '
 scenes="ldcad blender toplevel l3p nover vcol"
-povray=""
-if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-for name in $scenes; do
-    rendered=1
-    for q in 9 3 4; do
-        run "$work/$name.pov" --width 240 --height 180 "+Q$q" -o "$work/$name.h$q.exr"
-        check "$name: hstrace renders at +Q$q" exited 0 || rendered=0
-    done
-    if [ -z "$povray" ]; then
-        for d in "image matches POV-Ray" "shadow mask matches POV-Ray"; do
-            skip "$name: $d" "povray not installed (Debian package povray)"
-        done
-        continue
-    fi
-    # shellcheck disable=SC2046 # three limits, each with its measured value
-    set -- $(limit_row "$limits" "$name")
-    if [ $# -ne 6 ]; then
-        not_ok "$name: limits recorded in tests/exporter-syntax.sh"
-        continue
-    fi
-    for q in 9 3 4; do
-        # POV-Ray 3.7 can time out starting its threads on a loaded machine: one retry
-        (cd "$work" && { "$povray" "+I$name.pov" "+O$name.p$q.exr" +FE +W240 +H180 -A -D -GA +WT1 "+Q$q" >/dev/null 2>&1 ||
-            "$povray" "+I$name.pov" "+O$name.p$q.exr" +FE +W240 +H180 -A -D -GA +WT1 "+Q$q" >/dev/null 2>&1; })
-        [ -s "$work/$name.p$q.exr" ] || { not_ok "$name: POV-Ray renders at +Q$q"; rendered=0; }
-    done
-    [ $rendered = 1 ] || continue
-    a=$work/$name.p b=$work/$name.h
-    image_check "$name: image matches POV-Ray" "${a}9.exr" "${b}9.exr" "$1" "$2" "$3" "$4"
-    mask_check "$name: shadow mask matches POV-Ray" "${a}3.exr" "${a}4.exr" "${b}3.exr" "${b}4.exr" "$5" "$6"
-done
+# shellcheck disable=SC2086 # the names, one word each
+povray_scenes_check "$limits" tests/exporter-syntax.sh $scenes
 
 # --- mistakes near those forms ----------------------------------------------
 # Each: status 2, the message at FILE:LINE:COLUMN, no image.

@@ -229,37 +229,7 @@ declsky       1e-5   (1.37e-6)    1 (0)     1 (0)
 legacy        1e-5   (9.78e-7)    1 (0)     1 (0)
 reflect       1e-5   (1.70e-6)    1 (0)     1 (0)
 '
-povray=""
-if [ -n "${POVRAY:-}" ]; then povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
-for name in patterns binding flags noise lights unionlights fog declsky legacy reflect; do
-    rendered=1
-    for q in 9 3 4; do
-        run "$work/$name.pov" --width 240 --height 180 "+Q$q" -o "$work/$name.h$q.exr"
-        check "$name: hstrace renders at +Q$q" exited 0 || rendered=0
-    done
-    if [ -z "$povray" ]; then
-        for d in "image matches POV-Ray" "shadow mask matches POV-Ray"; do
-            skip "$name: $d" "povray not installed (Debian package povray)"
-        done
-        continue
-    fi
-    # shellcheck disable=SC2046 # three limits, each with its measured value
-    set -- $(limit_row "$limits" "$name")
-    if [ $# -ne 6 ]; then
-        not_ok "$name: limits recorded in tests/modelling.sh"
-        continue
-    fi
-    for q in 9 3 4; do
-        # POV-Ray 3.7 can time out starting its threads on a loaded machine: one retry
-        (cd "$work" && { "$povray" "+I$name.pov" "+O$name.p$q.exr" +FE +W240 +H180 -A -D -GA +WT1 "+Q$q" >/dev/null 2>&1 ||
-            "$povray" "+I$name.pov" "+O$name.p$q.exr" +FE +W240 +H180 -A -D -GA +WT1 "+Q$q" >/dev/null 2>&1; })
-        [ -s "$work/$name.p$q.exr" ] || { not_ok "$name: POV-Ray renders at +Q$q"; rendered=0; }
-    done
-    [ $rendered = 1 ] || continue
-    a=$work/$name.p b=$work/$name.h
-    image_check "$name: image matches POV-Ray" "${a}9.exr" "${b}9.exr" "$1" "$2" "$3" "$4"
-    mask_check "$name: shadow mask matches POV-Ray" "${a}3.exr" "${a}4.exr" "${b}3.exr" "${b}4.exr" "$5" "$6"
-done
+povray_scenes_check "$limits" tests/modelling.sh patterns binding flags noise lights unionlights fog declsky legacy reflect
 
 printf '#version 3.7;\nlight_source { <0, 5, 0> rgb 1 radius 12 spotlight }\n' >"$work/radius.pov"
 run "$work/radius.pov" --width 8 --height 6 -o "$work/r.png"

@@ -169,6 +169,49 @@ mask_check() {
     check "$tap_label: $tap_disagree pixels disagree <= $tap_max (measured $tap_measured)" \
         within "$tap_disagree" "$tap_max"
 }
+# povray_scenes_check TABLE SCRIPT NAME...: each $work/NAME.pov rendered by
+# hstrace (with the caller's run) and by POV-Ray ($POVRAY, skipped when not
+# installed) at 240x180, +Q9 for the image and +Q3/+Q4 for the shadow mask,
+# held to NAME's row of the limits TABLE (limit_row; SCRIPT names the file
+# that records them).
+povray_scenes_check() {
+    tap_limits=$1 tap_script=$2
+    shift 2
+    tap_povray=""
+    if [ -n "${POVRAY:-}" ]; then tap_povray=$(command -v "$POVRAY" 2>/dev/null || true); fi
+    for tap_name in "$@"; do
+        tap_rendered=1
+        for tap_q in 9 3 4; do
+            run "$work/$tap_name.pov" --width 240 --height 180 "+Q$tap_q" -o "$work/$tap_name.h$tap_q.exr"
+            check "$tap_name: hstrace renders at +Q$tap_q" exited 0 || tap_rendered=0
+        done
+        if [ -z "$tap_povray" ]; then
+            for tap_d in "image matches POV-Ray" "shadow mask matches POV-Ray"; do
+                skip "$tap_name: $tap_d" "povray not installed (Debian package povray)"
+            done
+            continue
+        fi
+        # shellcheck disable=SC2046 # three limits, each with its measured value
+        set -- $(limit_row "$tap_limits" "$tap_name")
+        if [ $# -ne 6 ]; then
+            not_ok "$tap_name: limits recorded in $tap_script"
+            continue
+        fi
+        for tap_q in 9 3 4; do
+            # POV-Ray 3.7 can time out starting its threads on a loaded machine: one retry
+            (cd "$work" && { "$tap_povray" "+I$tap_name.pov" "+O$tap_name.p$tap_q.exr" +FE +W240 +H180 -A -D -GA +WT1 \
+                "+Q$tap_q" >/dev/null 2>&1 ||
+                "$tap_povray" "+I$tap_name.pov" "+O$tap_name.p$tap_q.exr" +FE +W240 +H180 -A -D -GA +WT1 \
+                    "+Q$tap_q" >/dev/null 2>&1; })
+            [ -s "$work/$tap_name.p$tap_q.exr" ] || { not_ok "$tap_name: POV-Ray renders at +Q$tap_q"; tap_rendered=0; }
+        done
+        [ $tap_rendered = 1 ] || continue
+        tap_a=$work/$tap_name.p tap_b=$work/$tap_name.h
+        image_check "$tap_name: image matches POV-Ray" "${tap_a}9.exr" "${tap_b}9.exr" "$1" "$2" "$3" "$4"
+        mask_check "$tap_name: shadow mask matches POV-Ray" "${tap_a}3.exr" "${tap_a}4.exr" "${tap_b}3.exr" \
+            "${tap_b}4.exr" "$5" "$6"
+    done
+}
 # no_interior STATUS INTERIOR: compare exited 0 and counted 0 interior pixels
 no_interior() {
     if [ "$1" = 0 ] && [ "$2" = 0 ]; then return 0; fi

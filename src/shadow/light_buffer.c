@@ -355,38 +355,45 @@ typedef struct {
     size_t nshapes, shapes_cap;
 } CandidateList;
 
+/* Room for one more of *items (n used of *cap, each `size` bytes): 0, or
+ * -1 when out of memory. */
+static int room_for_one(void **items, size_t n, size_t *cap, size_t size)
+{
+    if (n < *cap)
+        return 0;
+    size_t grown_cap = *cap ? 2 * *cap : 32;
+    void *grown = realloc(*items, grown_cap * size);
+    if (!grown)
+        return -1;
+    *items = grown;
+    *cap = grown_cap;
+    return 0;
+}
+
 static int shape_push(CandidateList *l, const LbShape *sh)
 {
-    if (l->nshapes == l->shapes_cap) {
-        size_t cap = l->shapes_cap ? 2 * l->shapes_cap : 32;
-        LbShape *grown = realloc(l->shapes, cap * sizeof *grown);
-        if (!grown)
-            return -1;
-        l->shapes = grown;
-        l->shapes_cap = cap;
-    }
-    l->shapes[l->nshapes++] = *sh;
-    return 0;
+    void *items = l->shapes;
+    int failed = room_for_one(&items, l->nshapes, &l->shapes_cap, sizeof *sh);
+    l->shapes = items;
+    if (!failed)
+        l->shapes[l->nshapes++] = *sh;
+    return failed;
+}
+
+static int candidate_push(CandidateList *l, const Candidate *c)
+{
+    void *items = l->c;
+    int failed = room_for_one(&items, l->n, &l->cap, sizeof *c);
+    l->c = items;
+    if (!failed)
+        l->c[l->n++] = *c;
+    return failed;
 }
 
 static void candidates_free(CandidateList *l)
 {
     free(l->c);
     free(l->shapes);
-}
-
-static int candidate_push(CandidateList *l, const Candidate *c)
-{
-    if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 32;
-        Candidate *grown = realloc(l->c, cap * sizeof *grown);
-        if (!grown)
-            return -1;
-        l->c = grown;
-        l->cap = cap;
-    }
-    l->c[l->n++] = *c;
-    return 0;
 }
 
 static int by_near(const void *a, const void *b)
