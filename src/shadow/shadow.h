@@ -98,6 +98,7 @@ typedef struct {
     int blocker;               /* the polygon, or -1 */
     unsigned tries, hits;      /* cache tries in this tile and the hits among them */
     unsigned skipped;          /* queries the cache sat out since its last try */
+    int lit_last;              /* 1: the light's last decision here found no polygon blocking it fully */
 } LightCache;
 
 /* A see-through polygon a shadow ray met, at distance t. */

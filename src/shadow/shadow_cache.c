@@ -12,8 +12,12 @@
  * 36 hits in 380,973 queries on make-mesh.sh 10^6 8 at 320x240, shadow
  * testing 7% slower than the plain shadow ray), the light's cache sits
  * out all but one query in CACHE_PROBE_EVERY, and those probes let it
- * back in when the hits return. Which queries try it changes how a
- * decision is reached, never the decision. */
+ * back in when the hits return. And a light's cache is not tried right
+ * after a decision that found no polygon blocking the light: lit points
+ * mostly neighbour lit points, where every try misses (make-mesh 10^5 x 4
+ * at 640x480: shadow testing 1.5% fewer instructions, and the cache hits
+ * 50,086 -> 63,064, the tally no longer diluted by lit points). Which
+ * queries try it changes how a decision is reached, never the decision. */
 #include "shadow.h"
 
 #include "intersect.h"
@@ -38,7 +42,7 @@ int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
 {
     LightCache *c = &ctx->light_cache[q->light];
     int pi = c->blocker;
-    if (pi < 0 || (q->surface->kind == HIT_POLYGON && q->surface->index == pi) || !cache_worth_trying(c))
+    if (pi < 0 || c->lit_last || (q->surface->kind == HIT_POLYGON && q->surface->index == pi) || !cache_worth_trying(c))
         return 0;
     const World *w = ctx->tracer->world;
     const Polygon *p = &w->polygons[pi];
@@ -87,8 +91,10 @@ int shadow_cache_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *li
     if (shadow_polygons_test(ctx, q, light)) {
         ctx->stats.shadow_blocked++;
         shadow_cache_remember(ctx, q, light);
+        ctx->light_cache[q->light].lit_last = 0;
         return 1;
     }
+    ctx->light_cache[q->light].lit_last = 1;
     return 0;
 }
 

@@ -184,6 +184,7 @@ static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const Shado
     ctx->stats.shadow_blocked += (uint64_t)blocked;
     if (blocked && !cache_hit)
         shadow_cache_remember(ctx, q, light);
+    ctx->light_cache[q->light].lit_last = !blocked;
     ctx->stats.light_buffer_scanned += looked;
     ctx->stats.light_buffer_candidates += tests;
     return blocked;
