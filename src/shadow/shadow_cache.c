@@ -38,12 +38,11 @@ static int cache_worth_trying(LightCache *c)
     return 1;
 }
 
-int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
+/* The try itself, out of line: the queries the cache sits out (on a big
+ * mesh nearly all) cost the checks of shadow_cached_blocker_hits alone. */
+static __attribute__((noinline)) int cached_blocker_try(ShadowContext *ctx, const ShadowQuery *q, LightCache *c,
+                                                        int pi)
 {
-    LightCache *c = &ctx->light_cache[q->light];
-    int pi = c->blocker;
-    if (pi < 0 || c->lit_last || (q->surface->kind == HIT_POLYGON && q->surface->index == pi) || !cache_worth_trying(c))
-        return 0;
     const World *w = ctx->tracer->world;
     const Polygon *p = &w->polygons[pi];
     /* The shadow ray's own rule for a polygon edge-on to the light (an area
@@ -62,6 +61,15 @@ int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
     int hit = t > trace_min_distance(q->point) && t < q->distance;
     c->hits += (unsigned)hit;
     return hit;
+}
+
+int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
+{
+    LightCache *c = &ctx->light_cache[q->light];
+    int pi = c->blocker;
+    if (pi < 0 || c->lit_last || (q->surface->kind == HIT_POLYGON && q->surface->index == pi) || !cache_worth_trying(c))
+        return 0;
+    return cached_blocker_try(ctx, q, c, pi);
 }
 
 void shadow_cache_remember(ShadowContext *ctx, const ShadowQuery *q, const RGB *light)
