@@ -36,7 +36,7 @@
  * tests/test_agreement.c holds the light buffer to the shadow ray and a
  * long-double reference on random soups (shared edges, coplanar and
  * transparent polygons, lights in planes), its cells split at once too;
- * tests/light-buffer.sh runs --verify-shadows on every scene. */
+ * tests/shadows.sh runs --verify-shadows on every scene with every method. */
 #include "light_buffer.h"
 
 #include <stdlib.h>
@@ -223,8 +223,9 @@ static LbFootprint footprint(const LightBuffers *lbs, const Polygon *p, Vec3 at,
 #define LB_TAKE(aa, bb, cc)                                                                                           \
     do {                                                                                                              \
         double u_ = (bb) / (aa), v_ = (cc) / (aa);                                                                    \
-        box[0] = fmin(box[0], u_), box[1] = fmax(box[1], u_);                                                         \
-        box[2] = fmin(box[2], v_), box[3] = fmax(box[3], v_);                                                         \
+        /* (no NaN here: aa >= clip > 0 and the points are finite) */                                                \
+        box[0] = u_ < box[0] ? u_ : box[0], box[1] = u_ > box[1] ? u_ : box[1];                                       \
+        box[2] = v_ < box[2] ? v_ : box[2], box[3] = v_ > box[3] ? v_ : box[3];                                       \
         any = 1;                                                                                                      \
     } while (0)
     for (int i = 0; i < n; i++) {
@@ -242,7 +243,7 @@ static LbFootprint footprint(const LightBuffers *lbs, const Polygon *p, Vec3 at,
     if (!any)
         return (LbFootprint){ INFINITY, -INFINITY, INFINITY, -INFINITY }; /* wholly behind: on no cell */
     for (int k = 0; k < 4; k++)
-        box[k] = fmin(fmax(box[k], -2.0), 2.0);
+        box[k] = box[k] < -2.0 ? -2.0 : box[k] > 2.0 ? 2.0 : box[k];
     double pad = 16.0 * lbs->margin / near + LB_WIDEN + LB_FLOAT_PAD;
     LbFootprint f = { round_down(box[0] - pad), round_up(box[1] + pad), round_down(box[2] - pad),
                       round_up(box[3] + pad) };
@@ -520,6 +521,7 @@ static size_t cell_bytes(size_t n, size_t nshapes)
 }
 
 #define CHILDREN_BYTES (LB_SUB * LB_SUB * sizeof(_Atomic(LbCell *)))
+_Static_assert(LB_SUB * LB_SUB <= 16, "build_children keeps a candidate's children in 16 bits");
 
 /* Takes `bytes` of the budget: 0, or -1 when it would go past it. */
 static int budget_take(LightBuffers *lbs, size_t bytes)
@@ -677,7 +679,7 @@ static void cell_free(LbCell *c)
 /* The children of split cell c (`at`: any one of them) not yet built:
  * each the candidates of c whose footprints overlap it (footprint()
  * padded them for the children's widening and margins), in c's order,
- * gathered in one pass over c's list, then published. A child that the
+ * gathered in two passes over c's list (the lists' lengths, then the lists), then published. A child that the
  * budget or memory stops stays unbuilt (its parent's list serves). The
  * lists depend on c's alone, so which thread builds them does not matter. */
 static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c);
@@ -693,24 +695,50 @@ static void build_children(LightBuffers *lbs, const LightBuffer *lb, const LbCel
     unsigned wanted = 0; /* the slots to build, bit b * LB_SUB + a */
     for (int k = 0; k < LB_SUB * LB_SUB; k++)
         wanted |= (unsigned)(atomic_load_explicit(&c->child[k], memory_order_acquire) == NULL) << k;
+    /* Two passes: which wanted children each candidate's footprint
+     * overlaps (and so how long each child's list is), then the lists
+     * filled, each allocated once at its length. */
     CandidateList l[LB_SUB * LB_SUB];
     memset(l, 0, sizeof l);
-    int failed = 0;
+    uint16_t *over = malloc(sizeof *over * (c->n > 0 ? c->n : 1));
+    int failed = !over;
+    size_t count[LB_SUB * LB_SUB] = { 0 };
     for (uint32_t k = 0; k < c->n && !failed; k++) {
         const LbBlock *bl = &c->block[k / LB_BLOCK];
         uint32_t j = k % LB_BLOCK;
-        const LbFootprint f = { bl->u0[j], bl->u1[j], bl->v0[j], bl->v1[j] };
         unsigned mu = 0, mv = 0;
         for (int a = 0; a < LB_SUB; a++) {
-            mu |= (unsigned)!(f.u0 > u1[a] || f.u1 < u0[a]) << a;
-            mv |= (unsigned)!(f.v0 > v1[a] || f.v1 < v0[a]) << a;
+            mu |= (unsigned)!(bl->u0[j] > u1[a] || bl->u1[j] < u0[a]) << a;
+            mv |= (unsigned)!(bl->v0[j] > v1[a] || bl->v1[j] < v0[a]) << a;
         }
-        Candidate cand = { lb_plane_at(c, k), f, bl->near[j], c->item[k], c->shape_at[k] };
-        for (int b = 0; b < LB_SUB && !failed; b++)
-            for (int a = 0; a < LB_SUB && !failed; a++)
-                if ((mu >> a & 1) && (mv >> b & 1) && (wanted >> (b * LB_SUB + a) & 1))
-                    failed = candidate_push(&l[b * LB_SUB + a], &cand);
+        unsigned m = 0;
+        for (int b = 0; b < LB_SUB; b++)
+            if (mv >> b & 1)
+                m |= mu << (b * LB_SUB);
+        over[k] = (uint16_t)(m & wanted);
+        for (unsigned bits = over[k]; bits; bits &= bits - 1)
+            count[__builtin_ctz(bits)]++;
     }
+    for (int s = 0; s < LB_SUB * LB_SUB && !failed; s++) {
+        if (count[s] == 0)
+            continue;
+        l[s].c = malloc(sizeof *l[s].c * count[s]);
+        l[s].cap = count[s];
+        failed = !l[s].c;
+    }
+    for (uint32_t k = 0; k < c->n && !failed; k++) {
+        if (!over[k])
+            continue;
+        const LbBlock *bl = &c->block[k / LB_BLOCK];
+        uint32_t j = k % LB_BLOCK;
+        const Candidate cand = { lb_plane_at(c, k), { bl->u0[j], bl->u1[j], bl->v0[j], bl->v1[j] }, bl->near[j],
+                                 c->item[k], c->shape_at[k] };
+        for (unsigned bits = over[k]; bits; bits &= bits - 1) {
+            CandidateList *to = &l[__builtin_ctz(bits)];
+            to->c[to->n++] = cand;
+        }
+    }
+    free(over);
     for (int s = 0; s < LB_SUB * LB_SUB; s++) {
         if (!failed && (wanted >> s & 1)) {
             CellAt child_at = { first.face, first.level, first.i + s % LB_SUB, first.j + s / LB_SUB };

@@ -33,7 +33,7 @@
  * walking the hierarchy with its pyramid; a cell of more than LB_SPLIT_AT
  * candidates above the last of LB_LEVELS levels is split into LB_SUB x
  * LB_SUB children, each built from its parent's list (the candidates whose
- * footprints overlap it), all together in one pass over that list when a
+ * footprints overlap it), all together in two passes over that list when a
  * point first asks for one of them. Cells are shared by the
  * render's threads: each is built by one and published atomically (a
  * thread that loses the race frees its copy), and read-only after that;
