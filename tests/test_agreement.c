@@ -185,6 +185,45 @@ static int decide_one(ShadowContext *ctx, const World *w, const Hit *hit, const 
  * test against the double bound it stands for (light_buffer.h), on every
  * cell built, at the points the variant decided. */
 static long mask_blocks, mask_differ, float_passes, float_not_double;
+static long shapes_classified, shapes_differ, shapes_sure, shapes_not_bound;
+
+/* The shape's verdict for direction (u, v) against the bound it stands
+ * for (light_buffer.h), in long double on the stored lines: 1 when it holds. */
+static int shape_verdict_holds(const LbShape *sh, int where, double u, double v)
+{
+    long double pad = LB_SHAPE_FLOAT_PAD;
+    int outside = 0, inside = 1;
+    for (int k = 0; k < sh->n; k++) {
+        long double d = (long double)sh->a[k] * u + (long double)sh->b[k] * v + (long double)sh->c[k];
+        outside |= d < -((long double)sh->out - pad);
+        inside &= d >= (long double)sh->in - pad;
+    }
+    return where == LB_OUTSIDE ? outside : where == LB_INSIDE ? inside : 1;
+}
+
+/* A shape's verdicts at directions within the float's rounding of where
+ * they change: at `out` outside and `in` inside each edge, a few ulps to
+ * either side, along the edge. (Probes elsewhere seldom come that close.) */
+static void check_shape_borders(const LbShape *sh)
+{
+    for (int k = 0; k < sh->n; k++) {
+        double a = sh->a[k], b = sh->b[k], c = sh->c[k];
+        const double at[4] = { -sh->out, sh->in, -sh->out * (1 + 1e-7), sh->in * (1 - 1e-7) };
+        for (int j = 0; j < 4; j++)
+            for (int t = -3; t <= 3; t++) {
+                double off = at[j] - c, u = a * off - b * 0.1 * t, v = b * off + a * 0.1 * t;
+                if (!(fabs(u) <= 1.0 && fabs(v) <= 1.0))
+                    continue;
+                for (int e = -4; e <= 4; e++) {
+                    float fu = nextafterf((float)u, e < 0 ? -INFINITY : INFINITY);
+                    fu = e == 0 ? (float)u : fu;
+                    int where = lb_shape_classify(sh, fu, (float)v);
+                    shapes_sure += where != LB_UNSURE;
+                    shapes_not_bound += !shape_verdict_holds(sh, where, fu, (float)v);
+                }
+            }
+    }
+}
 
 static void check_cell_masks(const LbCell *c, const LbPoint *pt, const LbSpot *spot)
 {
@@ -196,6 +235,12 @@ static void check_cell_masks(const LbCell *c, const LbPoint *pt, const LbSpot *s
         mask_blocks++;
         mask_differ += lb_block_mask(c, b, &scan) != lb_block_mask_plain(c, b, &scan);
         for (uint32_t i = b * LB_BLOCK; i < (b + 1) * LB_BLOCK && i < c->n; i++) {
+            const LbShape *sh = &c->shapes[c->shape_at[i]];
+            int where = lb_shape_classify(sh, (float)spot->u, (float)spot->v);
+            shapes_classified++;
+            shapes_differ += where != lb_shape_classify_plain(sh, (float)spot->u, (float)spot->v);
+            shapes_sure += where != LB_UNSURE;
+            shapes_not_bound += !shape_verdict_holds(sh, where, spot->u, spot->v);
             if (!lb_float_passed(c, i, &scan))
                 continue;
             float_passes++;
@@ -224,6 +269,14 @@ static void check_masks(const LightBuffers *lbs, const World *w, Hit hits[PROBES
                     check_cell_masks(atomic_load(&lb->top[spot.face][c]), &pt, &spot);
             }
         }
+    /* every shape kept (by its top cell), at its borders */
+    for (int li = 0; li < w->nlights; li++)
+        for (int f = 0; lbs->light[li] && f < 6; f++)
+            for (int c = 0; c < LB_TOP * LB_TOP; c++) {
+                const LbCell *top = atomic_load(&lbs->light[li]->top[f][c]);
+                for (uint32_t k = 0; top && k < top->nshapes; k++)
+                    check_shape_borders(&top->shapes[k]);
+            }
 }
 
 static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv, const Variant *v,
@@ -714,5 +767,10 @@ int main(int argc, char **argv)
     tap_ok(float_passes > 0 && float_not_double == 0,
            "light buffer: every plane the float test passes over, the double bound does too (%ld not, of %ld)",
            float_not_double, float_passes);
+    tap_ok(shapes_classified > 0 && shapes_differ == 0,
+           "light buffer: SSE shape classes equal the plain ones (%ld differ of %ld)", shapes_differ, shapes_classified);
+    tap_ok(shapes_sure > 0 && shapes_not_bound == 0,
+           "light buffer: every shape's outside or inside holds in exact arithmetic with its margins (%ld not, of %ld)",
+           shapes_not_bound, shapes_sure);
     return tap_done();
 }

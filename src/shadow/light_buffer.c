@@ -332,8 +332,10 @@ static LbShape polygon_shape(const LightBuffers *lbs, const Polygon *p, Vec3 at,
     }
     /* the lines' rounding to float: below 6e-8 (|a u| + |b v| + |c|) <= 6e-8 * 14 */
     const double rounding = 1e-6;
-    sh.out = round_up(4.0 * lbs->margin / near + LB_WIDEN + rounding);
-    sh.in = round_up(4.0 * lbs->cover_margin / near + LB_WIDEN + rounding);
+    sh.out = round_up(4.0 * lbs->margin / near + LB_WIDEN + rounding + LB_SHAPE_FLOAT_PAD);
+    sh.in = round_up(4.0 * lbs->cover_margin / near + LB_WIDEN + rounding + LB_SHAPE_FLOAT_PAD);
+    for (int i = m; i < 4; i++)
+        sh.c[i] = 1.0f; /* no edge: every direction inside */
     sh.n = (uint8_t)m;
     return sh;
 }

@@ -146,7 +146,7 @@ static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const Shado
             if (cell->item[i] == own_item)
                 continue;
             const LbShape *shape = &cell->shapes[cell->shape_at[i]];
-            int where = lb_shape_classify(shape, spot.u, spot.v);
+            int where = lb_shape_classify(shape, u, v);
             if (where == LB_OUTSIDE)
                 continue;
             const LbPlane plane = lb_plane_at(cell, i);
