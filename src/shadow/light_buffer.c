@@ -599,7 +599,7 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
         free(renumber);
         return NULL;
     }
-    LbCell *c = aligned_alloc(16, (bytes + 15) / 16 * 16);
+    LbCell *c = shared_arena_alloc(&lbs->arena, bytes);
     if (!c) {
         atomic_fetch_sub(&lbs->bytes, bytes);
         free(renumber);
@@ -651,7 +651,7 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
      * candidates wider than the cells, is not split again) */
     int shorter = !parent || 4 * n < 3 * (size_t)parent->n;
     if (n > lbs->split_at && shorter && at->level < LB_LEVELS - 1 && budget_take(lbs, CHILDREN_BYTES) == 0) {
-        child = malloc(CHILDREN_BYTES);
+        child = shared_arena_alloc(&lbs->arena, CHILDREN_BYTES);
         if (!child)
             atomic_fetch_sub(&lbs->bytes, CHILDREN_BYTES);
         for (int k = 0; child && k < LB_SUB * LB_SUB; k++)
@@ -663,19 +663,6 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
     c->shape_at = shape_at;
     c->level = at->level;
     return c;
-}
-
-static void cell_free(LbCell *c)
-{
-    if (!c)
-        return;
-    _Atomic(LbCell *) *child = c->child;
-    if (child) {
-        for (int k = 0; k < LB_SUB * LB_SUB; k++)
-            cell_free(atomic_load_explicit(&child[k], memory_order_relaxed));
-        free(child);
-    }
-    free(c);
 }
 
 /* The children of split cell c (`at`: any one of them) not yet built:
@@ -760,8 +747,9 @@ static CellAt cell_at(const LbSpot *spot, int level)
     return at;
 }
 
-/* Publishes a top cell built into *slot, unless another thread was first:
- * then that one's is kept and this one freed. Returns the cell in place. */
+/* Publishes a cell built into *slot, unless another thread was first: then
+ * that one's is kept, and this one's memory stays unused in the arena
+ * (counted as taken) until the buffers go. Returns the cell in place. */
 static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c)
 {
     LbCell *expected = NULL;
@@ -770,8 +758,6 @@ static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c)
         atomic_fetch_add(&lbs->candidates, c->n);
         return c;
     }
-    atomic_fetch_sub(&lbs->bytes, cell_bytes(c->n, c->nshapes) + (c->child ? CHILDREN_BYTES : 0));
-    cell_free(c);
     return expected;
 }
 
@@ -830,6 +816,9 @@ int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double
     atomic_init(&lbs->candidates, 0);
     atomic_init(&lbs->full, 0);
     atomic_init(&lbs->exhausted, 0);
+    if (shared_arena_init(&lbs->arena, LB_ARENA_CHUNK))
+        return -1;
+    lbs->arena_made = 1;
     double size = 0.0;
     if (w->bounds_min.x <= w->bounds_max.x)
         size = fmax(v3_max_abs(w->bounds_min), v3_max_abs(w->bounds_max));
@@ -880,9 +869,6 @@ void light_buffers_free(LightBuffers *lbs)
         LightBuffer *lb = lbs->light[i];
         if (!lb)
             continue;
-        for (int f = 0; f < 6; f++)
-            for (int k = 0; k < LB_TOP * LB_TOP; k++)
-                cell_free(atomic_load_explicit(&lb->top[f][k], memory_order_relaxed));
         free(lb->plane_side);
         free(lb);
     }
@@ -890,4 +876,7 @@ void light_buffers_free(LightBuffers *lbs)
     free(lbs->item_of);
     lbs->light = NULL;
     lbs->item_of = NULL;
+    if (lbs->arena_made)
+        shared_arena_free(&lbs->arena); /* every cell */
+    lbs->arena_made = 0;
 }

@@ -49,6 +49,7 @@
 #include <stdint.h>
 
 #include "bvh.h"
+#include "shared_arena.h"
 #include "world.h"
 
 #define LB_TOP 8       /* cells per side of a face at the top level */
@@ -202,7 +203,12 @@ typedef struct LightBuffers {
     atomic_uint_fast64_t cells, candidates; /* cells published, and their list entries */
     atomic_uint_fast64_t full; /* cells not built for the budget */
     atomic_int exhausted;   /* 1: the budget is spent, no more cells are built */
+    SharedArena arena;      /* the cells' memory, all of it freed with the buffers */
+    int arena_made;
 } LightBuffers;
+
+/* The cells' arena's chunks: the least size that asks for huge pages. */
+#define LB_ARENA_CHUNK ((size_t)4 << 20)
 
 /* Buffers for the point lights of w (not parallel ones; area lights'
  * samples are not asked of them): empty, filled as points ask. budget:
