@@ -11,6 +11,7 @@
 #include "area_diffuse.h"
 #include "area_light.h"
 #include "clock.h"
+#include "fade.h"
 #include "fog.h"
 #include "intersect.h"
 #include "light.h"
@@ -632,7 +633,7 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
     /* The segment ray->org -> hit and, where the method keeps them, a row
      * of light states for the hit. */
     LightState *row = shadow_segment_begin(&ctx->shadow, &hit, ray->from.kind == HIT_NONE);
-    Segment seg = { ray->org, ray->dir, &ray->from, ray->state, row };
+    Segment seg = { ray->org, ray->dir, &ray->from, ray->state, row, ray->inside.key, ray->inside.n };
     ctx->depth++;
     shade_hit(ctx, ray, &hit, &seg, weight, level, out);
     ctx->depth--;
@@ -704,19 +705,8 @@ static void texture_colour(ShadeContext *ctx, const Ray *ray, const Hit *hit, co
         Radiance rfr = { 0, 0, 0, 0 };
         tir = trace_refraction(ctx, ray, hit, state, m, t->normal, raw, weight * w1, level, &rfr);
         RGB attc = { 1.0, 1.0, 1.0 };
-        if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON) {
-            if (m->fade_power >= 1000) {
-                double depth = hit->t / m->fade_distance;
-                attc.r = exp(-(1.0 - m->fade_colour.r) * depth);
-                attc.g = exp(-(1.0 - m->fade_colour.g) * depth);
-                attc.b = exp(-(1.0 - m->fade_colour.b) * depth);
-            } else {
-                double a = 1.0 + pow(hit->t / m->fade_distance, m->fade_power);
-                attc.r = m->fade_colour.r + (1.0 - m->fade_colour.r) / a;
-                attc.g = m->fade_colour.g + (1.0 - m->fade_colour.g) / a;
-                attc.b = m->fade_colour.b + (1.0 - m->fade_colour.b) / a;
-            }
-        }
+        if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON)
+            attc = interior_fade(m, hit->t);
         if (tir) {
             out->r += attc.r * rfr.r;
             out->g += attc.g * rfr.g;

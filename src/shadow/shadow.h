@@ -35,6 +35,11 @@ typedef struct {
     const Hit *from;              /* P1's surface (HIT_NONE: the eye) */
     const LightState *from_state; /* per light at P1; NULL: the eye's */
     LightState *state;            /* per light at P2, filled by the method; NULL: not kept */
+    /* The interiors the segment runs inside (the ray's, innermost last;
+     * may be 0 with NULL): POV-Ray's shadow ray starts inside them, which
+     * decides where it fades (shadow_fold_filtered). */
+    const void *const *inside;
+    int ninside;
 } Segment;
 
 typedef struct {

@@ -2,11 +2,13 @@
  * point toward the light, through the hierarchy (or the grid), stopped by
  * the first opaque polygon. Transparent polygons on the way filter the light
  * (POV-Ray multiplies rgb*filter + transmit of each, a texture_map's
- * textures' blended), in the order the light passes them. */
+ * textures' blended), in the order the light passes them, and fade by
+ * the way they travel inside fading interiors (shadow_fold_filtered). */
 #include "shadow.h"
 
 #include <stdlib.h>
 
+#include "fade.h"
 #include "intersect.h"
 #include "pigment.h"
 #include "light.h"
@@ -180,6 +182,42 @@ int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const u
     return shadow_list_end(&lw, light);
 }
 
+/* The fading interiors a shadow ray is inside, kept as POV-Ray keeps them:
+ * its shadow ray is a copy of the ray that found the point, so it starts
+ * inside that ray's interiors (ComputeOneDiffuseLight), and each
+ * see-through surface it passes toggles the surface's interior, whichever
+ * way the surface faces (ComputeShadowMedia: leaves it when inside, else
+ * enters). Only interiors that fade need keeping: a key's membership
+ * changes only at its own surfaces, which all share its fade. */
+#define FADE_NESTING_MAX 32
+
+typedef struct {
+    int n;
+    const void *key[FADE_NESTING_MAX];
+} FadeInside;
+
+static void fade_inside_begin(FadeInside *in, const ShadowQuery *q)
+{
+    in->n = 0;
+    const Segment *seg = q->segment;
+    for (int i = 0; seg && i < seg->ninside && in->n < FADE_NESTING_MAX; i++)
+        in->key[in->n++] = seg->inside[i];
+}
+
+/* Toggles key; 1 when the ray was inside it (and has now left). Deeper
+ * nesting than FADE_NESTING_MAX interiors at once is not kept. */
+static int fade_inside_toggle(FadeInside *in, const void *key)
+{
+    for (int i = 0; i < in->n; i++)
+        if (in->key[i] == key) {
+            in->key[i] = in->key[--in->n];
+            return 1;
+        }
+    if (in->n < FADE_NESTING_MAX)
+        in->key[in->n++] = key;
+    return 0;
+}
+
 int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->tracer->world;
@@ -199,6 +237,8 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
             ctx->filtered[j] = h;
         }
     }
+    FadeInside inside;
+    fade_inside_begin(&inside, q);
     double last = 0.0;
     for (int i = 0; i < ctx->nfiltered; i++) {
         /* POV-Ray's shadow ray starts again at each see-through surface it
@@ -207,6 +247,7 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
          * shared edge, coplanar panes) filter once. */
         if (i > 0 && ctx->filtered[i].t - last <= POV_SMALL_TOLERANCE)
             continue;
+        double from = last; /* the point, or the last surface filtered: where this leg starts */
         last = ctx->filtered[i].t;
         uint32_t pi = ctx->filtered[i].polygon;
         const Material *m = &w->materials[w->polygons[pi].material];
@@ -215,6 +256,16 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
              * not one for the cache, which takes a hit anywhere as blocked */
             ctx->last_blocker = -1;
             return 1;
+        }
+        /* Light that crossed a fading interior to reach this surface of
+         * it fades by the length of the leg (ComputeShadowTexture): the
+         * legs between surfaces, in order, as POV-Ray restarts the ray at
+         * each. */
+        if (interior_fades_shadows(m) && fade_inside_toggle(&inside, m->interior_key)) {
+            RGB f = interior_fade(m, last - from);
+            light->r *= f.r;
+            light->g *= f.g;
+            light->b *= f.b;
         }
         ctx->last_filtered++;
     }
