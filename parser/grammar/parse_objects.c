@@ -105,6 +105,31 @@ const SceneTexture *gram_texture_uv_mapped(Parser *p, const SceneTexture *tex)
     return copy;
 }
 
+/* An object's photons { }, as POV-Ray 3.7's Parse_Object_Mods reads it:
+ * `target [spacing]` makes the object a photon target where the spacing
+ * multiplier (default 1) is positive; the rest (refraction, reflection,
+ * pass_through, collect) only steer photons, which hstrace does not shoot. */
+static void object_photons(Parser *p, SceneObject *o)
+{
+    tok_begin_block(p, "photons");
+    for (;;) {
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
+            return;
+        switch (t->type == TK_WORD ? t->kw : -1) {
+        case KW_target: {
+            double spacing = expr_starts_float(p, tok_peek(p)) ? expr_float(p) : 1.0;
+            o->photon_target = spacing > 0.0;
+            break;
+        }
+        case KW_refraction: case KW_reflection: (void)expr_float(p); break;
+        case KW_pass_through: case KW_collect: (void)optional_bool(p); break;
+        default:
+            tok_fail_expected(p, t, "target, refraction, reflection, pass_through, collect or '}' in 'photons'");
+        }
+    }
+}
+
 /* Modifiers up to the object's closing '}'. */
 static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
 {
@@ -162,10 +187,9 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_sturm: case KW_split_union: skip_optional_float(p); break;
         case KW_uv_mapping: uv = 1; break; /* every texture of the object, at the end */
         case KW_cutaway_textures: break; /* no effect on solid colours */
-        case KW_photons: /* parsed past: hstrace has no photon mapping */
-            tok_approximate(p, &at, APPROX_PHOTONS, &o->approx);
-            tok_begin_block(p, "photons");
-            tok_skip_block_body(p);
+        case KW_photons:
+            tok_note_approximation(p, &at, APPROX_PHOTONS, &o->photons);
+            object_photons(p, o);
             break;
         case KW_radiosity: /* per-object radiosity settings: nothing without radiosity */
             tok_begin_block(p, "radiosity");

@@ -272,6 +272,9 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->fade_distance = it->fade_distance;
     m->fade_power = it->fade_power;
     m->fade_colour = rgb_of(&it->fade_colour);
+    /* A plain texture's finish caustics replaces the interior's (POV-Ray's
+     * Post_Process moves it there). */
+    m->caustics = tex->nmap == 0 && tex->finish.caustics >= 0.0 ? tex->finish.caustics : it->caustics;
     m->opaque = map >= 0 ? w->maps[map].opaque : pigment_is_opaque(&tex->pigment);
     m->no_shadow = in->no_shadow;
     m->no_image = in->no_image;

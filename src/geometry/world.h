@@ -60,6 +60,10 @@ typedef struct {
     const void *interior_key;
     double fade_distance, fade_power;
     RGB fade_colour;
+    /* POV-Ray's fake caustics (0: none): light through a see-through
+     * surface of it is multiplied by 1 + |cos|^caustics, cos between the
+     * surface's normal and the shadow ray (ComputeShadowTexture). */
+    double caustics;
     int opaque;           /* filter == transmit == 0 everywhere: blocks light fully */
     int no_shadow, no_image, no_reflection, double_illuminate;
     int hollow;           /* fog goes on inside it (POV-Ray's hollow) */

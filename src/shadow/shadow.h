@@ -141,6 +141,7 @@ typedef struct ShadowContext {
     LightCache *light_cache;   /* cache method: per light, the last opaque blocker and how often it pays */
     FilteredHit *filtered;     /* the shadow ray's see-through polygons, one slot for each of the world's */
     int nfiltered;
+    int perturb_normals;       /* the render perturbs normals (+Q8): so do fake caustics (shadow_conventional.c) */
     int verify;                /* 1: check every decision against the shadow ray (--verify-shadows);
                                   2: and against the long-double reference (--verify-reference) */
     long double reference_eps; /* the reference's margin of ties */

@@ -6,6 +6,7 @@
  * the way they travel inside fading interiors (shadow_fold_filtered). */
 #include "shadow.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "fade.h"
@@ -16,14 +17,48 @@
 #define FOLD_INSERTION_MAX 16 /* see-through hits sorted by insertion up to this many */
 #define POV_SMALL_TOLERANCE 1.0e-3 /* POV-Ray's SMALL_TOLERANCE (and SHADOW_TOLERANCE) */
 
-/* Folds one blocker, hit at `at`, into the light that gets through; returns
- * 1 when the light is now fully blocked. */
-static int pass_through(const World *w, const Material *m, int polygon, const ShadowQuery *q, double t, RGB *light)
+/* What a see-through surface with POV-Ray's fake caustics lets through
+ * (ComputeShadowTexture): each texture's rgb * filter + transmit times
+ * 1 + |cos|^caustics, cos between the texture's normal and the shadow
+ * ray, blended by weight; the light brightens where the ray crosses the
+ * surface head-on. The normal is the surface's (a smooth triangle's
+ * interpolated one) turned against the ray, then perturbed by the
+ * texture's normal pattern where the render perturbs normals, as POV-Ray
+ * does (ComputeShadowColour, Perturb_Normal). */
+static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int polygon, const InfinitePlane *plane,
+                              const ShadowQuery *q, Vec3 at, int *blocks)
+{
+    const World *w = ctx->tracer->world;
+    Vec3 n = plane ? plane->normal : polygon_shading_normal(w, &w->polygons[polygon], at);
+    if (v3_dot(n, q->to_light) > 0.0)
+        n = v3_neg(n);
+    SurfaceTexture tx[MAX_SURFACE_TEXTURES];
+    int nt = material_textures_normals_at(w, m, polygon, at, n, ctx->perturb_normals, tx);
+    RGB through = { 0, 0, 0 };
+    *blocks = 1;
+    for (int i = 0; i < nt; i++) {
+        const Colour *c = &tx[i].colour;
+        double k = tx[i].weight * (1.0 + pow(fabs(v3_dot(tx[i].normal, q->to_light)), m->caustics));
+        through.r += k * (c->r * c->filter + c->transmit);
+        through.g += k * (c->g * c->filter + c->transmit);
+        through.b += k * (c->b * c->filter + c->transmit);
+        *blocks &= c->filter == 0.0 && c->transmit == 0.0;
+    }
+    return through;
+}
+
+/* Folds one blocker (a polygon, or an infinite plane), hit at distance t,
+ * into the light that gets through; returns 1 when the light is now fully
+ * blocked. */
+static int pass_through(const ShadowContext *ctx, const Material *m, int polygon, const InfinitePlane *plane,
+                        const ShadowQuery *q, double t, RGB *light)
 {
     int blocks = 1;
     RGB through = { 0, 0, 0 };
+    Vec3 at = v3_add(q->point, v3_scale(q->to_light, t));
     if (!m->opaque)
-        through = material_filter_at(w, m, polygon, v3_add(q->point, v3_scale(q->to_light, t)), &blocks);
+        through = m->caustics != 0.0 ? caustics_filter_at(ctx, m, polygon, plane, q, at, &blocks)
+                                     : material_filter_at(ctx->tracer->world, m, polygon, at, &blocks);
     if (blocks) {
         light->r = light->g = light->b = 0.0;
         return 1;
@@ -43,7 +78,7 @@ int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tm
     if (w->materials[pl->material].no_shadow)
         return 0;
     double t = intersect_plane(pl, q->point, q->to_light);
-    return t > tmin && t < q->distance && pass_through(w, &w->materials[pl->material], -1, q, t, light);
+    return t > tmin && t < q->distance && pass_through(ctx, &w->materials[pl->material], -1, pl, q, t, light);
 }
 
 int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
@@ -251,7 +286,7 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
         last = ctx->filtered[i].t;
         uint32_t pi = ctx->filtered[i].polygon;
         const Material *m = &w->materials[w->polygons[pi].material];
-        if (pass_through(w, m, (int)pi, q, ctx->filtered[i].t, light)) {
+        if (pass_through(ctx, m, (int)pi, NULL, q, ctx->filtered[i].t, light)) {
             /* a patterned see-through polygon blocks only where it is opaque:
              * not one for the cache, which takes a hit anywhere as blocked */
             ctx->last_blocker = -1;
