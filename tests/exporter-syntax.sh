@@ -6,7 +6,7 @@
 # L3P's declarations in a scene without #version, which POV-Ray 3.7 takes
 # for a 3.6 one; vertex-colour exports' three texture indices per face;
 # LeoCAD's parts with LGEO-like fading transparent materials; Blender's
-# caustics and photons blocks --
+# caustics and photons blocks; three different textures per vertex --
 # are rendered by hstrace and by the installed POV-Ray (+Q9, and +Q3/+Q4
 # for the shadow masks) and compared by `hstrace compare` against the
 # limits measured for each (the table below; issue 42's bar is an RMSE of
@@ -586,6 +586,56 @@ mesh {
 }
 POV
 
+# --- textures per vertex, three different ones ------------------------------
+# POV-Ray shades each of a face's three textures whole, the lights once
+# for all (its light colour cache), and blends the shaded colours by the
+# point's barycentric weights (Mesh::Determine_Textures, ComputeTextureColour;
+# a weight below adc_bailout is left out); a shadow ray through the face is
+# filtered by the three textures' filters blended the same way
+# (ComputeShadowColour). Different finishes and see-through textures among
+# them, in a mesh2 and in mesh triangles' texture_lists.
+cat >"$work/vtex.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 2, -5> look_at <0, 0.5, 0> }
+light_source { <3, 6, -4> color rgb 1 }
+plane { y, 0 pigment { rgb 0.8 } }
+#declare surface1 = mesh2 {
+vertex_vectors {
+  5,
+  <-2,0,0>,
+  <-1,0,0>,
+  <-1.5,1.5,0>,
+  <-0.5,1.5,0.5>,
+  <-2.2,1.4,0.5>,
+  }
+texture_list {
+  3,
+texture{pigment{rgb <0.9,0.2,0.1>}}
+texture{pigment{rgb <0.1,0.7,0.2>} finish { phong 0.8 }}
+texture{pigment{rgbf <0.2,0.3,0.9,0.7>}}
+}
+face_indices {
+  3,
+  <0,1,2>, 0, 1, 2
+  <1,3,2>, 1, 2, 0
+  <0,2,4>, 2, 0, 1
+  }
+}
+union {
+  object { surface1 }
+  pigment{rgb 1}
+}
+#declare Gold = texture { pigment { rgb <1, 0.8, 0.3> } finish { phong 0.6 } }
+#declare Glass = texture { pigment { rgbf <0.7, 0.9, 1, 0.8> } finish { reflection 0.2 } }
+#declare Red = texture { pigment { rgb <0.9, 0.1, 0.1> } }
+mesh {
+  triangle { <0.5,0,0>, <2,0,0>, <1.2,1.6,0.3> texture_list { Gold, Glass, Red } }
+  triangle { <0.5,0,0>, <1.2,1.6,0.3>, <0.3,1.2,0.6> texture_list { Red Gold Glass } }
+  interior { ior 1.3 }
+}
+POV
+
 # --- LeoCAD with LGEO-like materials: transparent parts whose interiors fade
 # POV-Ray 3.7 fades a shadow ray through a fading interior by the law it
 # applies to rays seen through it (trace.cpp, ComputeShadowTexture), over
@@ -841,7 +891,8 @@ POV
 # the full +Q9 image's RMSE and its pixels off by more than 0.02, and the
 # shadow-mask pixels that disagree (at edges and silhouettes; none may in
 # the interior). leocad's limit is issue 42's bar, below twice its RMSE;
-# leocad, fading and blendph were measured on 2026-12-07 too, when added.
+# leocad, fading, blendph and vtex were measured on 2026-12-07 too, when
+# added.
 limits='
 # scene       RMSE   (measured)   off (m.)  mask pixels (m.)
 ldcad         1e-5   (3.53e-6)    1 (0)     1 (0)
@@ -853,8 +904,9 @@ vcol          6.8e-5 (3.40e-5)    1 (0)     1 (0)
 leocad        2e-3   (1.05e-3)    30 (15)   1 (0)
 fading        2.4e-5 (1.16e-5)    1 (0)     1 (0)
 blendph       3.6e-4 (1.79e-4)    4 (2)     1 (0)
+vtex          1e-5   (3.33e-6)    1 (0)     1 (0)
 '
-scenes="ldcad blender toplevel l3p nover vcol leocad fading blendph"
+scenes="ldcad blender toplevel l3p nover vcol leocad fading blendph vtex"
 # shellcheck disable=SC2086 # the names, one word each
 povray_scenes_check "$limits" tests/exporter-syntax.sh $scenes
 
@@ -876,23 +928,31 @@ triangle { 0, x, y pigment { rgb 1 } finish { subsurface { translucency 0.5 scat
 triangle { 0, x, y pigment { rgb 1 } finish { diffuse 0.6 0.2 0.1 } }|expected a finish item or '}' in 'finish', found '0.1'
 #declare P = pigment { rgb 1 } mesh { triangle { 0, x, y texture_list { P, P, P } } }|'P' cannot be used in a texture_list
 BAD
-# Three different textures on a face, one per vertex: POV-Ray blends them
-# by the point's place in the face, hstrace shows the first: reported at
-# the first such face, refused by --strict; the same three are not.
-sed 's/<1,3,2>, 1, 1, 1/<1,3,2>, 1, 2, 0/' "$work/vcol.pov" >"$work/vcol3.pov"
-run "$work/vcol3.pov" --width 8 --height 6 -o "$work/vcol3.png"
-check "mesh2 faces with three different texture indices: render, reported as approximated at the first" \
-    exited 0 "^$work/vcol3.pov:28:15: warning: 'a texture per vertex' approximated"
-run "$work/vcol3.pov" --width 8 --height 6 --strict -o "$work/vcol3-strict.png"
-check "... refused with --strict where the declared mesh is used, status 2, naming the face" \
-    exited 2 "^$work/vcol3.pov:33:12: 'a texture per vertex' is only approximated by hstrace; --strict makes it an error (declared at $work/vcol3.pov:28)"
-sed 's/texture_list { Gold Gold Gold }/texture_list { Gold Gold T2 }/; s/^#declare Gold = .*/&\n#declare T2 = texture { Gold pigment { rgb 0.5 } }/' "$work/vcol.pov" >"$work/vcol4.pov"
-run "$work/vcol4.pov" --width 8 --height 6 --strict -o "$work/vcol4.png"
-check "a mesh triangle's texture_list of different textures: refused with --strict, status 2" \
-    exited 2 "^$work/vcol4.pov:[0-9]*:[0-9]*: 'a texture per vertex' is only approximated"
+# Three different textures on a face, one per vertex (vtex, above, rendered
+# against POV-Ray): --strict accepts them, and the same three too. A
+# texture_map among them is not blended (the first vertex's texture shows
+# on the whole face): reported at the first such face, refused by --strict
+# where the declared mesh is used, or at once in a mesh triangle's
+# texture_list.
+run "$work/vtex.pov" --width 8 --height 6 --strict -o "$work/vtex-strict.png"
+check "three different plain textures per vertex: --strict renders, nothing reported" \
+    test "$status $(wc -c <"$work/err" | tr -d ' ')" = "0 0"
 run "$work/vcol.pov" --width 8 --height 6 --strict -o "$work/vcol-strict.png"
 check "the same three textures per vertex: nothing reported, not refused by --strict" \
     test "$status $(wc -c <"$work/err" | tr -d ' ')" = "0 0"
+sed 's/^texture{pigment{rgbf <0.2,0.3,0.9,0.7>}}$/texture{ checker texture { pigment { rgb 1 } } texture { pigment { rgbf <0.2,0.3,0.9,0.7> } } scale 0.2 }/' \
+    "$work/vtex.pov" >"$work/vtexmap.pov"
+run "$work/vtexmap.pov" --width 8 --height 6 -o "$work/vtexmap.png"
+check "mesh2 faces with a texture_map among their textures per vertex: render, reported as approximated at the first" \
+    exited 0 "^$work/vtexmap.pov:23:15: warning: 'a texture per vertex' approximated: a texture_map among"
+run "$work/vtexmap.pov" --width 8 --height 6 --strict -o "$work/vtexmap-strict.png"
+check "... refused with --strict where the declared mesh is used, status 2, naming the face" \
+    exited 2 "^$work/vtexmap.pov:29:12: 'a texture per vertex' is only approximated by hstrace; --strict makes it an error (declared at $work/vtexmap.pov:23)"
+sed 's/^#declare Glass = .*/#declare Glass = texture { checker texture { Gold } texture { Red } }/; s/^#declare Red = .*//; s/^#declare Gold = .*/&\n#declare Red = texture { pigment { rgb <0.9, 0.1, 0.1> } }/' \
+    "$work/vtex.pov" >"$work/vtexmap2.pov"
+run "$work/vtexmap2.pov" --width 8 --height 6 --strict -o "$work/vtexmap2.png"
+check "a mesh triangle's texture_list with a texture_map: refused with --strict, status 2" \
+    exited 2 "^$work/vtexmap2.pov:[0-9]*:[0-9]*: 'a texture per vertex' is only approximated"
 
 # photons: accepted by --strict where they change nothing in POV-Ray's image
 # (blendph, above: rendered with --strict here, nothing reported); once

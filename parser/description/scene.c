@@ -150,8 +150,8 @@ static const struct {
                                         "other surfaces, and (as POV-Ray 3.7 with radiosity) no finish's ambient" },
     [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
     [APPROX_FOG] = { "fog", "fog between lights and surfaces (media_attenuation) ignored" },
-    [APPROX_VERTEX_TEXTURES] = { "vertex-textures", "a mesh face's textures per vertex not blended: the first "
-                                                    "vertex's texture on the whole face" },
+    [APPROX_VERTEX_TEXTURES] = { "vertex-textures", "a texture_map among a mesh face's textures per vertex: the "
+                                                    "first vertex's texture on the whole face" },
 };
 
 const char *approx_kind_name(ApproxKind k)

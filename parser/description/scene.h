@@ -313,6 +313,10 @@ typedef struct {
     int n[3];       /* normal indices, or -1 for a flat triangle */
     int uv[3];      /* uv coordinate indices (mesh.uvs), or -1: uv (0, 0) */
     int texture;    /* index into the mesh's textures, or -1 for the object's */
+    /* A texture per vertex (mesh2's three indices, a triangle's
+     * texture_list) where they differ: the second and third vertex's,
+     * `texture` the first's; -1: the face has one texture. */
+    int texture2, texture3;
 } MeshFace;
 
 typedef struct SceneObject SceneObject;

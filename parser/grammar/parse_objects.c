@@ -358,13 +358,17 @@ static int add_mesh_texture(Parser *p, MeshBuilder *mb, const SceneTexture *t)
 
 /* A face given a texture per vertex (mesh2's three indices, a mesh
  * triangle's texture_list), as vertex-coloured exports write them: POV-Ray
- * blends the three textures by the point's place in the face
- * (Mesh::Determine_Textures); hstrace shows the first on the whole face,
- * exact when the three are one. Noted once per mesh, at the first face
- * whose textures differ (`at`). */
-static void note_vertex_textures(Parser *p, SceneObject *o, const Token *at, int *noted)
+ * blends the three textures' shaded colours by the point's place in the
+ * face (Mesh::Determine_Textures), and so does hstrace where the three are
+ * plain textures (flatten.c, pigment.h); a texture_map among them leaves
+ * the face with the first vertex's texture, an approximation noted once
+ * per mesh, at the first such face (`at`). Called for faces whose three
+ * textures differ. */
+static int is_map(const SceneTexture *t) { return t && t->nmap > 0; }
+
+static void vertex_textures(Parser *p, SceneObject *o, const Token *at, const SceneTexture *const tex[3], int *noted)
 {
-    if (*noted)
+    if (*noted || !(is_map(tex[0]) || is_map(tex[1]) || is_map(tex[2])))
         return;
     *noted = 1;
     static const char what[] = "a texture per vertex";
@@ -455,7 +459,7 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
                     *(Vec3 *)tok_tvec_push(p, &mb.normals) = tri.u.triangle.n[i];
                 }
             }
-            f->texture = -1;
+            f->texture = f->texture2 = f->texture3 = -1;
             for (;;) {
                 t = tok_next(p);
                 if (tok_is_punct(t, '}'))
@@ -478,9 +482,13 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
                         vertex[i] = v->texture;
                     }
                     tok_expect_punct(p, '}', "texture_list");
-                    if (vertex[1] != vertex[0] || vertex[2] != vertex[0])
-                        note_vertex_textures(p, o, &at, &noted);
-                    ((MeshFace *)mb.faces.data)[mb.faces.n - 1].texture = add_mesh_texture(p, &mb, vertex[0]);
+                    MeshFace *face = (MeshFace *)mb.faces.data + mb.faces.n - 1;
+                    face->texture = add_mesh_texture(p, &mb, vertex[0]);
+                    if (vertex[1] != vertex[0] || vertex[2] != vertex[0]) {
+                        vertex_textures(p, o, &at, vertex, &noted);
+                        face->texture2 = add_mesh_texture(p, &mb, vertex[1]);
+                        face->texture3 = add_mesh_texture(p, &mb, vertex[2]);
+                    }
                 } else if (tok_is_kw(t, KW_uv_vectors)) {
                     MeshFace *face = (MeshFace *)mb.faces.data + mb.faces.n - 1;
                     for (int i = 0; i < 3; i++) {
@@ -604,20 +612,29 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                     tok_fail(p, vt.pos, "mesh2 face index out of range (%d vertices)", mb.vertices.n);
                 f->n[0] = f->n[1] = f->n[2] = -1;
                 f->uv[0] = f->uv[1] = f->uv[2] = -1;
-                f->texture = -1;
-                /* one texture index, or three: one per vertex (note_vertex_textures) */
+                f->texture = f->texture2 = f->texture3 = -1;
+                /* one texture index, or three: one per vertex (vertex_textures) */
+                int ti[3], nt = 0;
+                Token first_other = *tok_peek(p);
                 for (int k = 0; k < 3; k++) {
                     expr_comma(p);
                     if (!expr_starts_float(p, tok_peek(p)))
                         break;
                     Token it = *tok_peek(p);
-                    int ti;
-                    if (!mesh_index(expr_float(p), mb.textures.n, &ti))
+                    if (k == 1)
+                        first_other = it;
+                    if (!mesh_index(expr_float(p), mb.textures.n, &ti[k]))
                         tok_fail(p, it.pos, "texture index out of range in mesh2");
-                    if (k == 0)
-                        f->texture = ti;
-                    else if (ti != f->texture)
-                        note_vertex_textures(p, o, &it, &noted);
+                    nt++;
+                }
+                if (nt > 0)
+                    f->texture = ti[0];
+                if (nt == 3 && (ti[1] != ti[0] || ti[2] != ti[0])) {
+                    const SceneTexture *const *list = (const SceneTexture *const *)mb.textures.data;
+                    const SceneTexture *const vertex[3] = { list[ti[0]], list[ti[1]], list[ti[2]] };
+                    vertex_textures(p, o, &first_other, vertex, &noted);
+                    f->texture2 = ti[1];
+                    f->texture3 = ti[2];
                 }
             }
             expr_comma(p); /* POV-Ray takes a comma after every item, the last too */

@@ -765,7 +765,7 @@ static void shade_textures(ShadeContext *ctx, const Ray *ray, const Hit *hit, co
         direct_light(ctx, m, hit, seg, ray->dir, normal, lit, n);
     else
         skip_all_lights(ctx, hit, seg);
-    if (n == 1) {
+    if (n == 1 && lit[0].weight == 1.0) {
         texture_colour(ctx, ray, hit, state, m, raw, weight, level, &lit[0], out);
         return;
     }
@@ -789,7 +789,8 @@ static void lit_texture(LitTexture *t, const SurfaceTexture *s)
     t->normal = s->normal;
 }
 
-/* A texture_map's hit: shaded with the textures around its value here. Apart
+/* A texture_map's hit: shaded with the textures around its value here (or
+ * a mesh face's with a texture per vertex: with the three, pigment.h). Apart
  * (never inlined), so that plain textures' hits, which recurse through
  * shade_hit as deep as the ray tree, keep a small stack frame. */
 __attribute__((noinline)) static void shade_map_hit(ShadeContext *ctx, const Ray *ray, const Hit *hit,
@@ -816,7 +817,7 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
                                        : w->planes[hit.index].normal;
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
-    if (m->map >= 0) {
+    if (m->map >= 0 || (hit.kind == HIT_POLYGON && w->polygons[hit.index].vertex_materials >= 0)) {
         if (ctx->aov && ctx->depth == 1)
             aov_record_hit(ctx->aov, hit.t, hit.point, raw); /* a map's textures have normals each */
         shade_map_hit(ctx, ray, &hit, seg, m, raw, raw, weight, level, out);
