@@ -763,6 +763,26 @@ box { <0.5, 0.5, -1>, <2.5, 1.5, 1>
   interior { ior 1.5 fade_distance 0.7 fade_power 1001 } }
 POV
 
+# --- under water: a plane's fading interior ---------------------------------
+# A point under the water plane (found by a ray refracted into it) starts
+# its shadow ray inside the plane's interior: the light fades at the
+# surface over the leg from the last see-through surface before it (here
+# the orange box's, which stands out of the water), or from the point; and
+# the box's own fading interior is crossed by the surface, where the leg of
+# the light inside the box starts again.
+cat >"$work/water.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 max_trace_level 8 }
+camera { location <0, 3, -6> look_at <0, -0.5, 0> angle 55 }
+light_source { <3, 8, -3> color rgb 1 }
+plane { y, -2 pigment { checker rgb <0.9, 0.85, 0.7> rgb <0.5, 0.45, 0.4> } }
+plane { y, 0 pigment { rgbf <0.8, 0.9, 1, 0.9> } finish { reflection 0.1 }
+  interior { ior 1.33 fade_distance 1.5 fade_power 2 fade_colour <0.1, 0.5, 0.6> } }
+box { <-0.5, -1.9, -0.5>, <0.5, 0.8, 0.5> pigment { rgbf <1, 0.5, 0.3, 0.8> }
+  interior { ior 1.0 fade_distance 0.5 fade_power 1001 } rotate y*30 translate <1, 0, 0.5> }
+box { <-0.4, -2, -0.4>, <0.4, 1, 0.4> pigment { rgb <0.3, 0.6, 0.3> } translate <-1.5, 0, 1> }
+POV
+
 # --- Blender's exporter with caustics and photons on ------------------------
 # photons { } on the objects and the lamp, an object a target, but no
 # global photons block: POV-Ray 3.7 maps no photons (it shoots them only
@@ -891,8 +911,8 @@ POV
 # the full +Q9 image's RMSE and its pixels off by more than 0.02, and the
 # shadow-mask pixels that disagree (at edges and silhouettes; none may in
 # the interior). leocad's limit is issue 42's bar, below twice its RMSE;
-# leocad, fading, blendph and vtex were measured on 2026-12-07 too, when
-# added.
+# leocad, fading, blendph, vtex and water were measured on 2026-12-07 too,
+# when added.
 limits='
 # scene       RMSE   (measured)   off (m.)  mask pixels (m.)
 ldcad         1e-5   (3.53e-6)    1 (0)     1 (0)
@@ -905,8 +925,9 @@ leocad        2e-3   (1.05e-3)    30 (15)   1 (0)
 fading        2.4e-5 (1.16e-5)    1 (0)     1 (0)
 blendph       3.6e-4 (1.79e-4)    4 (2)     1 (0)
 vtex          1e-5   (3.33e-6)    1 (0)     1 (0)
+water         1.2e-4 (5.73e-5)    1 (0)     1 (0)
 '
-scenes="ldcad blender toplevel l3p nover vcol leocad fading blendph vtex"
+scenes="ldcad blender toplevel l3p nover vcol leocad fading blendph vtex water"
 # shellcheck disable=SC2086 # the names, one word each
 povray_scenes_check "$limits" tests/exporter-syntax.sh $scenes
 

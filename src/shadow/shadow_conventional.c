@@ -69,16 +69,53 @@ static int pass_through(const ShadowContext *ctx, const Material *m, int polygon
     return 0;
 }
 
+static int segment_inside(const ShadowQuery *q, const void *key);
+static double plane_leg_start(ShadowContext *ctx, const ShadowQuery *q, double tmin, double t);
+
+/* The nearest see-through infinite plane the shadow ray passes between
+ * `from` and t (beyond tmin), or from: the planes are tested apart from the
+ * polygons, but a leg inside a fading interior starts at the last surface
+ * the light was filtered by, which may be one of them. */
+static double last_plane_between(const ShadowContext *ctx, const ShadowQuery *q, double tmin, double from, double t)
+{
+    const World *w = ctx->tracer->world;
+    for (int i = 0; i < w->nplanes; i++) {
+        const InfinitePlane *pl = &w->planes[i];
+        if ((q->surface->kind == HIT_PLANE && q->surface->index == i) || w->materials[pl->material].no_shadow)
+            continue;
+        double tp = intersect_plane(pl, q->point, q->to_light);
+        if (tp > tmin && tp > from && tp < t)
+            from = tp;
+    }
+    return from;
+}
+
 int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tmin, RGB *light)
 {
     const World *w = ctx->tracer->world;
     if (q->surface->kind == HIT_PLANE && q->surface->index == i)
         return 0;
     const InfinitePlane *pl = &w->planes[i];
-    if (w->materials[pl->material].no_shadow)
+    const Material *m = &w->materials[pl->material];
+    if (m->no_shadow)
         return 0;
     double t = intersect_plane(pl, q->point, q->to_light);
-    return t > tmin && t < q->distance && pass_through(ctx, &w->materials[pl->material], -1, pl, q, t, light);
+    if (!(t > tmin && t < q->distance))
+        return 0;
+    if (pass_through(ctx, m, -1, pl, q, t, light))
+        return 1;
+    /* A plane is crossed once: the shadow ray fades at it where it starts
+     * inside its interior (under water, seen through its surface), over
+     * the leg from the last see-through polygon before it, which only the
+     * polygons in the way tell: looked up here, so that every method, which
+     * tests the planes through this function, gets the same light. */
+    if (interior_fades_shadows(m) && segment_inside(q, m->interior_key)) {
+        RGB f = interior_fade(m, t - last_plane_between(ctx, q, tmin, plane_leg_start(ctx, q, tmin, t), t));
+        light->r *= f.r;
+        light->g *= f.g;
+        light->b *= f.b;
+    }
+    return 0;
 }
 
 int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
@@ -253,9 +290,17 @@ static int fade_inside_toggle(FadeInside *in, const void *key)
     return 0;
 }
 
-int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+static int segment_inside(const ShadowQuery *q, const void *key)
 {
-    const World *w = ctx->tracer->world;
+    for (int i = 0; q->segment && i < q->segment->ninside; i++)
+        if (q->segment->inside[i] == key)
+            return 1;
+    return 0;
+}
+
+/* ctx->filtered in the order the light passes them. */
+static void sort_filtered(ShadowContext *ctx)
+{
     if (ctx->nfiltered > FOLD_INSERTION_MAX) {
         qsort(ctx->filtered, (size_t)ctx->nfiltered, sizeof *ctx->filtered, by_distance);
     } else {
@@ -272,6 +317,35 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
             ctx->filtered[j] = h;
         }
     }
+}
+
+/* Where the shadow ray's leg to a plane hit at t starts: at the last
+ * see-through polygon it filters by before t (the same rule as
+ * shadow_fold_filtered's), or at the point. With an opaque polygon in the
+ * way the light is blocked anyway: the point then. The walk leaves
+ * ctx->filtered to the polygon test that follows, which starts it afresh. */
+static double plane_leg_start(ShadowContext *ctx, const ShadowQuery *q, double tmin, double t)
+{
+    int exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
+    ShadowWalk sw = { ctx, q, -1 };
+    ctx->nfiltered = 0;
+    uint64_t tests = 0;
+    if (trace_segment_hits(ctx->tracer, q->point, q->to_light, tmin, t, exclude, HIDE_NO_SHADOW, meet_polygon, &sw,
+                           &tests))
+        return 0.0;
+    sort_filtered(ctx);
+    double last = 0.0;
+    for (int i = 0; i < ctx->nfiltered; i++)
+        if (i == 0 || ctx->filtered[i].t - last > POV_SMALL_TOLERANCE)
+            last = ctx->filtered[i].t;
+    ctx->nfiltered = 0;
+    return last;
+}
+
+int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    const World *w = ctx->tracer->world;
+    sort_filtered(ctx);
     FadeInside inside;
     fade_inside_begin(&inside, q);
     double last = 0.0;
@@ -297,6 +371,8 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
          * legs between surfaces, in order, as POV-Ray restarts the ray at
          * each. */
         if (interior_fades_shadows(m) && fade_inside_toggle(&inside, m->interior_key)) {
+            if (w->nplanes)
+                from = last_plane_between(ctx, q, trace_min_distance(q->point), from, last);
             RGB f = interior_fade(m, last - from);
             light->r *= f.r;
             light->g *= f.g;
