@@ -1098,8 +1098,17 @@ void gram_material(Parser *p, const SceneTexture **tex, const Interior **in, con
         if (id) {
             if (id->material_texture)
                 *tex = *tex ? gram_layer_textures(p, id->material_texture, *tex, &here) : id->material_texture;
-            if (id->material_interior)
-                *in = id->material_interior; /* never changed in place: a new one replaces it */
+            if (id->material_interior) {
+                /* POV-Ray's Parse_Material gives each use of a declared
+                 * material an interior of its own (a copy): two objects of
+                 * one transparent material are two interiors to the rays
+                 * that cross both, e.g. a brick's studs inside the brick
+                 * stacked on it (the interior's identity is its address:
+                 * Material.interior_key) */
+                Interior *own = tok_scene_alloc(p, sizeof *own);
+                *own = *id->material_interior;
+                *in = own;
+            }
             continue;
         }
         if (tok_is_kw(t, KW_texture)) {
