@@ -751,12 +751,13 @@ POV
 # --- fading interiors and fake caustics, bare ------------------------------
 # Both fades (power 2 with a colour, and the exponential power 1001) and a
 # finish's caustics, which POV-Ray 3.7 moves to the interior unscaled
-# (Post_Process), multiplying the light through the box by 1 + |cos|^1.
+# (Post_Process), multiplying the light through the box by 1 + |cos|^1;
+# the light an area light (at +Q9), each sample's shadow ray faded.
 cat >"$work/fading.pov" <<'POV'
 #version 3.7;
 global_settings { assumed_gamma 1 max_trace_level 10 }
 camera { location <0, 6, -9> look_at <0, 0.5, 0> angle 45 }
-light_source { <3, 10, -4> color rgb 1 }
+light_source { <3, 10, -4> color rgb 1 area_light <1.5, 0, 0>, <0, 0, 1.5>, 3, 3 }
 box { <-6, -1, -6>, <6, 0, 6> pigment { rgb <0.9, 0.9, 0.8> } }
 box { <-2.5, 0.5, -1>, <-0.5, 2.5, 1>
   pigment { rgbf <1, 0.4, 0.3, 0.9> } finish { phong 0.5 }
