@@ -767,6 +767,22 @@ box { <0.5, 0.5, -1>, <2.5, 1.5, 1>
   interior { ior 1.5 fade_distance 0.7 fade_power 1001 } }
 POV
 
+# --- a declared glass object placed twice, the copies overlapping -----------
+# POV-Ray's Copy_Object gives each copy an interior of its own: a ray from
+# one into the other enters the second (its ior, its fade) while inside the
+# first.
+cat >"$work/declared.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 max_trace_level 10 }
+camera { location <0, 5, -8> look_at <0, 0.8, 0> angle 45 }
+light_source { <2, 10, -3> color rgb 1 }
+box { <-6, -1, -6>, <6, 0, 6> pigment { rgb <0.9, 0.9, 0.8> } }
+#declare Pane = object { box { <-1, 0.2, -1>, <1, 1.4, 1> }
+  pigment { rgbf <0.6, 0.8, 1, 0.9> } interior { ior 1.3 fade_distance 0.6 fade_power 2 fade_colour <0.2, 0.4, 0.8> } }
+object { Pane translate <-0.6, 0, 0> }
+object { Pane rotate y*20 translate <0.6, 0.5, 0.3> }
+POV
+
 # --- under water: a plane's fading interior ---------------------------------
 # A point under the water plane (found by a ray refracted into it) starts
 # its shadow ray inside the plane's interior: the light fades at the
@@ -914,8 +930,8 @@ POV
 # twice that and 1e-5 for an RMSE, twice that and 1 for a count of pixels:
 # the full +Q9 image's RMSE and its pixels off by more than 0.02, and the
 # shadow-mask pixels that disagree (at edges and silhouettes; none may in
-# the interior). leocad, fading, blendph, vtex and water were measured on
-# 2026-12-07 too, when added.
+# the interior). leocad, fading, blendph, vtex, water and declared were
+# measured on 2026-12-07 too, when added.
 limits='
 # scene       RMSE   (measured)   off (m.)  mask pixels (m.)
 ldcad         1e-5   (3.53e-6)    1 (0)     1 (0)
@@ -929,8 +945,9 @@ fading        2.4e-5 (1.16e-5)    1 (0)     1 (0)
 blendph       3.6e-4 (1.79e-4)    4 (2)     1 (0)
 vtex          1e-5   (3.33e-6)    1 (0)     1 (0)
 water         1.2e-4 (5.73e-5)    1 (0)     1 (0)
+declared      4e-5   (1.96e-5)    1 (0)     1 (0)
 '
-scenes="ldcad blender toplevel l3p nover vcol leocad fading blendph vtex water"
+scenes="ldcad blender toplevel l3p nover vcol leocad fading blendph vtex water declared"
 # shellcheck disable=SC2086 # the names, one word each
 povray_scenes_check "$limits" tests/exporter-syntax.sh $scenes
 

@@ -761,6 +761,22 @@ static void parse_light_object_mods(Parser *p, SceneLight *l)
     }
 }
 
+/* A use of a declared object: a copy of its top, which shares the rest. Its
+ * interior is copied too, as POV-Ray's Copy_Object copies it: each copy is
+ * an interior of its own to the rays that cross several (the interior's
+ * identity is its address, Material.interior_key). */
+static SceneObject *copy_declared_object(Parser *p, const SceneObject *declared)
+{
+    SceneObject *o = tok_scene_alloc(p, sizeof *o);
+    *o = *declared;
+    if (declared->interior) {
+        Interior *own = tok_scene_alloc(p, sizeof *own);
+        *own = *declared->interior;
+        o->interior = own;
+    }
+    return o;
+}
+
 /* Appends the light_sources of union `o` and of the unions inside it to the
  * scene's lights, in world space: `outer` is the transform of o's parents.
  * Order as POV-Ray's Post_Process: depth first, as written. */
@@ -803,8 +819,7 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
         }
         if (v->kind != VAL_OBJECT)
             tok_fail(p, t.pos, "'%.*s' is not an object", t.len, t.text);
-        SceneObject *o = tok_scene_alloc(p, sizeof *o);
-        *o = *v->object;
+        SceneObject *o = copy_declared_object(p, v->object);
         o->pos = kw->pos;
         parse_object_mods(p, o, "object");
         *obj = o;
@@ -864,8 +879,7 @@ static int bare_object_identifier(Parser *p, const Token *t, SceneObject **obj, 
     }
     if (v->kind != VAL_OBJECT)
         return 0;
-    SceneObject *o = tok_scene_alloc(p, sizeof *o);
-    *o = *v->object;
+    SceneObject *o = copy_declared_object(p, v->object);
     o->pos = t->pos;
     *obj = o;
     return 1;
