@@ -8,6 +8,7 @@
 
 #include "bvh.h"
 #include "grid.h"
+#include "instance.h"
 #include "world.h"
 
 /* What a surface hit is: a grid polygon or an infinite plane. */
@@ -15,7 +16,7 @@ typedef enum { HIT_NONE, HIT_POLYGON, HIT_PLANE } HitKind;
 
 typedef struct {
     HitKind kind;
-    int index;          /* polygon or plane index */
+    int index;          /* polygon id (instance.h: a world polygon's index, or an instance's polygon) or plane index */
     double t;
     Vec3 point;
 } Hit;
@@ -126,7 +127,7 @@ int trace_point_touches_other(Tracer *t, const Hit *hit, double tol);
 
 static inline int hit_material(const World *w, const Hit *h)
 {
-    return h->kind == HIT_POLYGON ? w->polygons[h->index].material : w->planes[h->index].material;
+    return h->kind == HIT_POLYGON ? world_polygon_material(w, h->index) : w->planes[h->index].material;
 }
 
 #endif

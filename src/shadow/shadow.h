@@ -288,6 +288,9 @@ typedef struct ShadowMethod {
     int blind;
     /* 1: for the tests only: found by name, but listed nowhere. */
     int hidden;
+    /* 1: decides on a world with instances (instance.h) as on a flat one;
+     * 0: wants world-space polygons (shadow_method_takes_instances). */
+    int instances;
 } ShadowMethod;
 
 /* The test-only method (shadow_every_lit.c): every light reaches every

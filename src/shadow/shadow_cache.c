@@ -41,7 +41,8 @@ int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
     if (pi < 0 || (q->surface->kind == HIT_POLYGON && q->surface->index == pi) || !cache_worth_trying(c))
         return 0;
     const World *w = ctx->tracer->world;
-    const Polygon *p = &w->polygons[pi];
+    Polygon scratch;
+    const Polygon *p = world_polygon_plane(w, pi, &scratch);
     /* The shadow ray's own rule for a polygon edge-on to the light (an area
      * light's sample may see edge-on what blocked another sample). */
     if (light_side_of(p, q->source, grid_tolerance(ctx->tracer->grid)) == 0)
@@ -54,7 +55,7 @@ int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
      * answer is its answer, wherever in the polygon (border included) the
      * hit lies. */
     c->tries++;
-    double t = intersect_polygon(w, p, q->point, q->to_light);
+    double t = world_polygon_hit(w, pi, q->point, q->to_light); /* an instance's: on instance_ray's ray, as the walk */
     int hit = t > trace_min_distance(q->point) && t < q->distance;
     c->hits += (unsigned)hit;
     return hit;
@@ -96,4 +97,5 @@ const ShadowMethod shadow_cache_method = {
     .name = "cache",
     .summary = "shadow rays that first try the light's last opaque blocker (as POV-Ray does)",
     .test = shadow_cache_test,
+    .instances = 1,
 };

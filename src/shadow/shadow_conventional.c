@@ -67,13 +67,15 @@ static int meet_polygon(void *user, uint32_t pi, double t)
     ShadowWalk *sw = user;
     ShadowContext *ctx = sw->ctx;
     const World *w = ctx->tracer->world;
-    const Polygon *p = &w->polygons[pi];
+    Polygon scratch;
+    const Polygon *p = world_polygon_plane(w, (int)pi, &scratch);
     /* A polygon edge-on to the light (the light in its plane) casts no
      * shadow: the ray can only graze it, or meet it at the light itself.
-     * The same rule as the shadow volumes'. */
+     * The same rule as the shadow volumes'. (An instance's polygon: its
+     * plane carried to world space, the same for every method.) */
     if (light_side_of(p, sw->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
-    const Material *m = &w->materials[p->material];
+    const Material *m = &w->materials[world_polygon_material(w, (int)pi)];
     if (m->opaque) {
         sw->blocker = (int)pi;
         return 1;
@@ -209,8 +211,8 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
             continue;
         last = ctx->filtered[i].t;
         uint32_t pi = ctx->filtered[i].polygon;
-        const Material *m = &w->materials[w->polygons[pi].material];
-        if (pass_through(w, m, (int)pi, q, ctx->filtered[i].t, light)) {
+        const Material *m = &w->materials[world_polygon_material(w, (int)pi)];
+        if (pass_through(w, m, world_uv_polygon(w, (int)pi), q, ctx->filtered[i].t, light)) {
             /* a patterned see-through polygon blocks only where it is opaque:
              * not one for the cache, which takes a hit anywhere as blocked */
             ctx->last_blocker = -1;

@@ -129,6 +129,13 @@ static int light_buffers_pay(const ShadowSetup *s)
 
 int shadow_hst_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen)
 {
+    /* A world with instances (shadow_method_takes_instances): no volumes,
+     * which want world-space polygons, and no light buffers, whose cells
+     * list world polygons; its decisions are the cache method's. */
+    if (s->world->ninstances > 0) {
+        out->decider = &shadow_cache_method;
+        return 0;
+    }
     if (prepare_volumes(s, s->volumes_always ? VOLUMES_ALWAYS : VOLUMES_AUTO, out, err, errlen))
         return -1;
     /* The lights' light buffers, where they pay: hst's decisions by the
