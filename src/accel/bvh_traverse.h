@@ -52,6 +52,7 @@ BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, co
                     continue;
                 const Instance *in = &w->instances[item & ~BVH_INSTANCE];
                 Vec3 lorg, ldir;
+                tr->stats.instance_walks++;
                 instance_ray(in, org, dir, &lorg, &ldir);
                 BVH_TRAVERSE_NAME(nearest_in_bvh)(tr, &b->protos[in->prototype], in, lorg, ldir, tmin, plane_t,
                                                   exclude, hit, best);
@@ -64,7 +65,8 @@ BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, co
                 frame = ray_frame(org, dir);
                 framed = 1;
             }
-            try_nearer_prim(tr, b, &frame, k, (uint32_t)id, tmin, plane_t, hit, best);
+            try_nearer_prim(tr, b, &frame, k, (uint32_t)id, inst ? (int)(inst - w->instances) : -1, tmin, plane_t,
+                            hit, best);
         }
     }
 }
@@ -107,6 +109,7 @@ BVH_TRAVERSE_TARGET static int BVH_TRAVERSE_NAME(segment_hits_in_bvh)(Tracer *tr
                     continue;
                 const Instance *in = &w->instances[pi & ~BVH_INSTANCE];
                 Vec3 lorg, ldir;
+                tr->stats.instance_walks++;
                 instance_ray(in, org, dir, &lorg, &ldir);
                 if (BVH_TRAVERSE_NAME(segment_hits_in_bvh)(tr, &b->protos[in->prototype], in, lorg, ldir, tmin, tmax,
                                                            exclude, hide, visit, user, tests))
@@ -123,8 +126,11 @@ BVH_TRAVERSE_TARGET static int BVH_TRAVERSE_NAME(segment_hits_in_bvh)(Tracer *tr
                 framed = 1;
             }
             double t = bvh_item_test(w, b, k, &frame, tmax); /* negative at tmax or beyond */
-            if (t > tmin && visit(user, (uint32_t)id, t))
-                return 1;
+            if (t > tmin) {
+                tr->visiting = inst ? (int)(inst - w->instances) : -1;
+                if (visit(user, (uint32_t)id, t))
+                    return 1;
+            }
         }
     }
     return 0;

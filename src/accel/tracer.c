@@ -185,12 +185,13 @@ void tracer_use_avx2(Tracer *t, int on)
 /* Takes polygon pi's hit at t when it is nearer than the best so far, or as
  * near and of a lower index: the rule for exact ties, so that the answer
  * does not depend on the order the polygons were tested in. */
-static inline void take_nearer(Hit *hit, double *best, uint32_t pi, double t)
+static inline void take_nearer(Hit *hit, double *best, uint32_t pi, int instance, double t)
 {
     if (hit->kind == HIT_NONE || t < *best || (int)pi < hit->index) {
         *best = t;
         hit->kind = HIT_POLYGON;
         hit->index = (int)pi;
+        hit->instance = instance;
     }
 }
 
@@ -212,7 +213,7 @@ static inline void try_nearer(Tracer *tr, const RayFrame *frame, uint32_t pi, do
     tr->stats.polygon_tests++;
     double t = intersect_polygon_in(w, &w->polygons[pi], frame, test_limit(hit, *best, plane_t));
     if (t > tmin)
-        take_nearer(hit, best, pi, t);
+        take_nearer(hit, best, pi, -1, t);
 }
 
 /* The exact test of the polygon a leaf item holds (bvh.h): on its packed
@@ -226,14 +227,14 @@ static inline double prim_test(const World *w, const Bvh *b, uint32_t k, uint32_
 
 /* try_nearer for item k of hierarchy b, polygon id `id`, from its record. */
 static inline void try_nearer_prim(Tracer *tr, const Bvh *b, const RayFrame *frame, uint32_t k, uint32_t id,
-                                   double tmin, double plane_t, Hit *hit, double *best)
+                                   int instance, double tmin, double plane_t, Hit *hit, double *best)
 {
     if (b->prims[k].hide & tr->hide)
         return;
     tr->stats.polygon_tests++;
     double t = prim_test(tr->world, b, k, id, frame, test_limit(hit, *best, plane_t));
     if (t > tmin)
-        take_nearer(hit, best, id, t);
+        take_nearer(hit, best, id, instance, t);
 }
 
 /* Whether an instance's polygon pi (in World.polygons) is hidden from the
@@ -359,6 +360,7 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     const World *w = tr->world;
     double tmin = trace_min_distance(org);
     hit->kind = HIT_NONE;
+    hit->instance = -1;
 
     /* Planes first: they bound the polygon query, and on an exact tie (a
      * box resting on a plane) the plane wins, as it does in POV-Ray, whose

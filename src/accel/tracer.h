@@ -19,6 +19,8 @@ typedef struct {
     int index;          /* polygon id (instance.h: a world polygon's index, or an instance's polygon) or plane index */
     double t;
     Vec3 point;
+    int instance;       /* the instance of an instance's polygon as the query found it (a hint:
+                         * world_polygon_hinted checks it; last, so that {kind, index, t, point} sets none) */
 } Hit;
 
 /* (HIDE_NO_IMAGE, HIDE_NO_REFLECTION and HIDE_NO_SHADOW: bvh.h) */
@@ -52,6 +54,10 @@ typedef struct {
     int segment_ncells, segment_cells_cap;
     int segment_in_box;
     Vec3 record_min, record_max;
+    /* trace_segment_hits: the instance whose polygon the visitor is being
+     * handed (an index in World.instances), -1 for a world polygon: a hint
+     * for world_polygon_hinted. */
+    int visiting;
     /* trace_point_touches_other's answer for the last point asked about. */
     int touch_valid, touch_kind, touch_index, touch_result;
     Vec3 touch_point;
@@ -127,7 +133,8 @@ int trace_point_touches_other(Tracer *t, const Hit *hit, double tol);
 
 static inline int hit_material(const World *w, const Hit *h)
 {
-    return h->kind == HIT_POLYGON ? world_polygon_material(w, h->index) : w->planes[h->index].material;
+    return h->kind == HIT_POLYGON ? world_polygon_material_hinted(w, h->index, h->instance)
+                                  : w->planes[h->index].material;
 }
 
 #endif

@@ -36,18 +36,32 @@ static inline int instance_of_id(const World *w, int id)
     return lo;
 }
 
+/* Whether instance i holds polygon id. */
+static inline int instance_holds(const World *w, int i, int id)
+{
+    return i >= 0 && i < w->ninstances && id >= w->instances[i].first_id &&
+           id < w->instances[i].first_id + w->prototypes[w->instances[i].prototype].npolygons;
+}
+
 /* The polygon record of id (an instance's: its prototype's, in the
- * prototype's space), and its instance (-1: a world polygon). */
-static inline const Polygon *world_polygon_of_id(const World *w, int id, int *instance)
+ * prototype's space), and its instance (-1: a world polygon). `hint`: an
+ * instance that may hold it (a walk's, a hit's), tried before the search;
+ * anything else (-1) is fine. */
+static inline const Polygon *world_polygon_hinted(const World *w, int id, int hint, int *instance)
 {
     if (id < w->npolygons) {
         *instance = -1;
         return &w->polygons[id];
     }
-    int i = instance_of_id(w, id);
+    int i = instance_holds(w, hint, id) ? hint : instance_of_id(w, id);
     const Instance *in = &w->instances[i];
     *instance = i;
     return &w->polygons[w->prototypes[in->prototype].first_polygon + (id - in->first_id)];
+}
+
+static inline const Polygon *world_polygon_of_id(const World *w, int id, int *instance)
+{
+    return world_polygon_hinted(w, id, -1, instance);
 }
 
 /* The id of an instance's prototype polygon pi (an index in World.polygons). */
@@ -62,14 +76,19 @@ static inline int instance_material(const World *w, const Instance *in, const Po
     return w->instance_materials[in->first_material + p->material];
 }
 
-/* The material of polygon id. */
-static inline int world_polygon_material(const World *w, int id)
+/* The material of polygon id; `hint` as world_polygon_hinted's. */
+static inline int world_polygon_material_hinted(const World *w, int id, int hint)
 {
     if (id < w->npolygons)
         return w->polygons[id].material;
     int i;
-    const Polygon *p = world_polygon_of_id(w, id, &i);
+    const Polygon *p = world_polygon_hinted(w, id, hint, &i);
     return instance_material(w, &w->instances[i], p);
+}
+
+static inline int world_polygon_material(const World *w, int id)
+{
+    return world_polygon_material_hinted(w, id, -1);
 }
 
 /* The polygon the uv coordinates of id's hits are read from, or -1: an
@@ -94,16 +113,18 @@ static inline void instance_ray(const Instance *in, Vec3 org, Vec3 dir, Vec3 *lo
 }
 
 /* Polygon id's exact test against org + t dir (intersect_polygon's answer;
- * an instance's in its space, on instance_ray's ray). */
-double world_polygon_hit(const World *w, int id, Vec3 org, Vec3 dir);
+ * an instance's in its space, on instance_ray's ray); `hint` as
+ * world_polygon_hinted's. */
+double world_polygon_hit(const World *w, int id, int hint, Vec3 org, Vec3 dir);
 
 /* Polygon id's plane in world space: for a world polygon the polygon
  * itself; for an instance's, *scratch with the normal and d carried to
- * world space (its other fields the prototype's: for plane tests only). */
-const Polygon *world_polygon_plane(const World *w, int id, Polygon *scratch);
+ * world space (its other fields the prototype's: for plane tests only).
+ * `hint` as world_polygon_hinted's. */
+const Polygon *world_polygon_plane(const World *w, int id, int hint, Polygon *scratch);
 
 /* The shading normal (smooth normals interpolated) of polygon id at the
- * world point x, in world space, unit. */
-Vec3 world_polygon_shading_normal(const World *w, int id, Vec3 x);
+ * world point x, in world space, unit; `hint` as world_polygon_hinted's. */
+Vec3 world_polygon_shading_normal(const World *w, int id, int hint, Vec3 x);
 
 #endif

@@ -822,7 +822,7 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
     const World *w = ctx->tracer.world;
     const Hit hit = *hitp;
     const Material *m = &w->materials[hit_material(w, &hit)];
-    Vec3 raw = hit.kind == HIT_POLYGON ? world_polygon_shading_normal(w, hit.index, hit.point)
+    Vec3 raw = hit.kind == HIT_POLYGON ? world_polygon_shading_normal(w, hit.index, hit.instance, hit.point)
                                        : w->planes[hit.index].normal;
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);

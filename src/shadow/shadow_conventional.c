@@ -68,14 +68,16 @@ static int meet_polygon(void *user, uint32_t pi, double t)
     ShadowContext *ctx = sw->ctx;
     const World *w = ctx->tracer->world;
     Polygon scratch;
-    const Polygon *p = world_polygon_plane(w, (int)pi, &scratch);
+    /* the walk's instance, when it is one's polygon: no search */
+    const int hint = ctx->tracer->visiting;
+    const Polygon *p = world_polygon_plane(w, (int)pi, hint, &scratch);
     /* A polygon edge-on to the light (the light in its plane) casts no
      * shadow: the ray can only graze it, or meet it at the light itself.
      * The same rule as the shadow volumes'. (An instance's polygon: its
      * plane carried to world space, the same for every method.) */
     if (light_side_of(p, sw->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
-    const Material *m = &w->materials[world_polygon_material(w, (int)pi)];
+    const Material *m = &w->materials[world_polygon_material_hinted(w, (int)pi, hint)];
     if (m->opaque) {
         sw->blocker = (int)pi;
         return 1;
