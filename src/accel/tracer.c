@@ -445,3 +445,18 @@ int trace_segment_hits(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double tmax,
     } while (grid_walk_next(g, &walk));
     return 0;
 }
+
+int trace_instance_hits(Tracer *tr, int instance, Vec3 org, Vec3 dir, double tmin, double tmax, int exclude,
+                        unsigned hide, TraceHitVisitor visit, void *user, uint64_t *tests)
+{
+    const Instance *in = &tr->world->instances[instance];
+    const Bvh *b = &tr->bvh->protos[in->prototype];
+    Vec3 lorg, ldir;
+    tr->stats.instance_walks++;
+    instance_ray(in, org, dir, &lorg, &ldir);
+#if BVH_HAVE_AVX2_PATH
+    if (tr->avx2)
+        return segment_hits_in_bvh_avx2(tr, b, in, lorg, ldir, tmin, tmax, exclude, hide, visit, user, tests);
+#endif
+    return segment_hits_in_bvh_sse2(tr, b, in, lorg, ldir, tmin, tmax, exclude, hide, visit, user, tests);
+}

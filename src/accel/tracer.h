@@ -124,6 +124,13 @@ typedef int (*TraceHitVisitor)(void *user, uint32_t polygon, double t);
 int trace_segment_hits(Tracer *t, Vec3 org, Vec3 dir, double tmin, double tmax, int exclude, unsigned hide,
                        TraceHitVisitor visit, void *user, uint64_t *tests);
 
+/* trace_segment_hits for the polygons of one instance (World.instances)
+ * alone: the walk trace_segment_hits makes of it, so the same polygons at
+ * the same t. For lists of candidates that name instances (the light
+ * buffer's cells). */
+int trace_instance_hits(Tracer *t, int instance, Vec3 org, Vec3 dir, double tmin, double tmax, int exclude,
+                        unsigned hide, TraceHitVisitor visit, void *user, uint64_t *tests);
+
 /* Does the hit point lie (within tol) on a polygon besides its own: on the
  * border of its own (so on the neighbours sharing that edge or vertex), or
  * in the plane and area of another? A depth count carried to or from such a

@@ -156,9 +156,23 @@ int shadow_list_meet_crossed(ShadowListWalk *lw, uint32_t polygon)
     return list_met(lw, polygon, t > 0.0 && t < lw->q->distance ? t : -1.0);
 }
 
+/* The visitor of an instance's walk for a list: list_met. */
+static int list_visit(void *user, uint32_t polygon, double t)
+{
+    return list_met(user, polygon, t);
+}
+
 int shadow_list_meet_item(ShadowListWalk *lw, const Bvh *b, uint32_t item)
 {
     uint32_t polygon = b->items[item];
+    if (polygon & BVH_INSTANCE) {
+        /* an instance: its polygons met by the shadow ray's own walk of it
+         * (trace_segment_hits's), its own polygon left out there */
+        ShadowContext *ctx = lw->ctx;
+        return trace_instance_hits(ctx->tracer, (int)(polygon & ~BVH_INSTANCE), lw->q->point, lw->q->to_light,
+                                   lw->tmin, lw->q->distance, lw->own == UINT32_MAX ? -1 : (int)lw->own,
+                                   HIDE_NO_SHADOW, list_visit, lw, &ctx->stats.shadow_polygon_tests);
+    }
     if (polygon == lw->own)
         return 0;
     ShadowContext *ctx = lw->ctx;
