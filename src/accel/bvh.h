@@ -127,6 +127,29 @@ BvhRay bvh_ray(Vec3 org, Vec3 dir);
 /* bvh_ray without the SSE2 lanes (org2, inv2, left unset), for the AVX2
  * box test, which broadcasts org and inv itself: made once per ray,
  * shadow rays included, so the copies it would not read are not made. */
+/* bvh_ray_scalar (and bvh_ray) for a ray whose direction's inverses
+ * (1 / dir, per axis) are already made (instance_inverse_dir). */
+static inline void bvh_ray_scalar_inverse(BvhRay *r, Vec3 org, const double inv[3])
+{
+    const double o[3] = { org.x, org.y, org.z };
+    for (int a = 0; a < 3; a++) {
+        r->org[a] = o[a];
+        r->inv[a] = inv[a];
+        r->neg[a] = signbit(r->inv[a]) != 0;
+    }
+}
+
+static inline void bvh_ray_inverse(BvhRay *r, Vec3 org, const double inv[3])
+{
+    bvh_ray_scalar_inverse(r, org, inv);
+#if defined(__SSE2__)
+    for (int a = 0; a < 3; a++) {
+        r->org2[a] = _mm_set1_pd(r->org[a]);
+        r->inv2[a] = _mm_set1_pd(r->inv[a]);
+    }
+#endif
+}
+
 static inline void bvh_ray_scalar(BvhRay *r, Vec3 org, Vec3 dir)
 {
     const double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };

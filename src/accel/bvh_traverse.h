@@ -12,8 +12,8 @@
  * prototype's: the instance it is walked for): nearer children first,
  * those the ray enters beyond the best hit so far skipped. */
 BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, const Bvh *b, const Instance *inst,
-                                                                  Vec3 org, Vec3 dir, double tmin, double plane_t,
-                                                                  int exclude, Hit *hit, double *best)
+                                                                  Vec3 org, Vec3 dir, const double *inv, double tmin,
+                                                                  double plane_t, int exclude, Hit *hit, double *best)
 {
     if (b->nnodes == 0)
         return;
@@ -23,7 +23,10 @@ BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, co
     RayFrame frame;
     int framed = 0;
     BvhRay br;
-    BVH_TRAVERSE_RAY(&br, org, dir);
+    if (inv)
+        BVH_TRAVERSE_RAY_INV(&br, org, inv);
+    else
+        BVH_TRAVERSE_RAY(&br, org, dir);
     Pending stack[BVH_STACK];
     int sp = 0;
     stack[sp].child = 0;
@@ -52,9 +55,11 @@ BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, co
                     continue;
                 const Instance *in = &w->instances[item & ~BVH_INSTANCE];
                 Vec3 lorg, ldir;
+                double linv[3];
                 tr->stats.instance_walks++;
                 instance_ray(in, org, dir, &lorg, &ldir);
-                BVH_TRAVERSE_NAME(nearest_in_bvh)(tr, &b->protos[in->prototype], in, lorg, ldir, tmin, plane_t,
+                instance_inverse_dir(in, br.inv, ldir, linv);
+                BVH_TRAVERSE_NAME(nearest_in_bvh)(tr, &b->protos[in->prototype], in, lorg, ldir, linv, tmin, plane_t,
                                                   exclude, hit, best);
                 continue;
             }
@@ -74,10 +79,10 @@ BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, co
 /* Every polygon the segment meets, to the visitor, until it says stop
  * (trace_segment_hits); the order is the tree's, not the distance's. */
 BVH_TRAVERSE_TARGET static int BVH_TRAVERSE_NAME(segment_hits_in_bvh)(Tracer *tr, const Bvh *b, const Instance *inst,
-                                                                      Vec3 org, Vec3 dir, double tmin, double tmax,
-                                                                      int exclude, unsigned hide,
-                                                                      TraceHitVisitor visit, void *user,
-                                                                      uint64_t *tests)
+                                                                      Vec3 org, Vec3 dir, const double *inv,
+                                                                      double tmin, double tmax, int exclude,
+                                                                      unsigned hide, TraceHitVisitor visit,
+                                                                      void *user, uint64_t *tests)
 {
     const World *w = tr->world;
     if (b->nnodes == 0)
@@ -85,7 +90,10 @@ BVH_TRAVERSE_TARGET static int BVH_TRAVERSE_NAME(segment_hits_in_bvh)(Tracer *tr
     RayFrame frame; /* made at the first leaf polygon, as nearest_in_bvh's */
     int framed = 0;
     BvhRay br;
-    BVH_TRAVERSE_RAY(&br, org, dir);
+    if (inv)
+        BVH_TRAVERSE_RAY_INV(&br, org, inv);
+    else
+        BVH_TRAVERSE_RAY(&br, org, dir);
     uint32_t stack[BVH_STACK];
     int sp = 0;
     stack[sp++] = 0;
@@ -109,10 +117,12 @@ BVH_TRAVERSE_TARGET static int BVH_TRAVERSE_NAME(segment_hits_in_bvh)(Tracer *tr
                     continue;
                 const Instance *in = &w->instances[pi & ~BVH_INSTANCE];
                 Vec3 lorg, ldir;
+                double linv[3];
                 tr->stats.instance_walks++;
                 instance_ray(in, org, dir, &lorg, &ldir);
-                if (BVH_TRAVERSE_NAME(segment_hits_in_bvh)(tr, &b->protos[in->prototype], in, lorg, ldir, tmin, tmax,
-                                                           exclude, hide, visit, user, tests))
+                instance_inverse_dir(in, br.inv, ldir, linv);
+                if (BVH_TRAVERSE_NAME(segment_hits_in_bvh)(tr, &b->protos[in->prototype], in, lorg, ldir, linv, tmin,
+                                                           tmax, exclude, hide, visit, user, tests))
                     return 1;
                 continue;
             }

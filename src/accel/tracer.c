@@ -310,21 +310,25 @@ static inline int push_children(Pending *stack, int sp, const BvhNode *n, unsign
 #define BVH_TRAVERSE_NAME(f) f##_sse2
 #define BVH_TRAVERSE_NODE_HITS bvh_node_hits
 #define BVH_TRAVERSE_RAY(r, org, dir) (*(r) = bvh_ray(org, dir))
+#define BVH_TRAVERSE_RAY_INV bvh_ray_inverse
 #define BVH_TRAVERSE_TARGET
 #include "bvh_traverse.h"
 #undef BVH_TRAVERSE_NAME
 #undef BVH_TRAVERSE_NODE_HITS
 #undef BVH_TRAVERSE_RAY
+#undef BVH_TRAVERSE_RAY_INV
 #undef BVH_TRAVERSE_TARGET
 #if BVH_HAVE_AVX2_PATH
 #define BVH_TRAVERSE_NAME(f) f##_avx2
 #define BVH_TRAVERSE_NODE_HITS bvh_node_hits_avx2
 #define BVH_TRAVERSE_RAY bvh_ray_scalar
+#define BVH_TRAVERSE_RAY_INV bvh_ray_scalar_inverse
 #define BVH_TRAVERSE_TARGET __attribute__((target("avx2")))
 #include "bvh_traverse.h"
 #undef BVH_TRAVERSE_NAME
 #undef BVH_TRAVERSE_NODE_HITS
 #undef BVH_TRAVERSE_RAY
+#undef BVH_TRAVERSE_RAY_INV
 #undef BVH_TRAVERSE_TARGET
 #else
 #define nearest_in_bvh_avx2 nearest_in_bvh_sse2
@@ -383,9 +387,9 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     double best = HUGE_VAL;
     int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
     if (tr->bvh && tr->avx2)
-        nearest_in_bvh_avx2(tr, tr->bvh, NULL, org, dir, tmin, plane_t, exclude, hit, &best);
+        nearest_in_bvh_avx2(tr, tr->bvh, NULL, org, dir, NULL, tmin, plane_t, exclude, hit, &best);
     else if (tr->bvh)
-        nearest_in_bvh_sse2(tr, tr->bvh, NULL, org, dir, tmin, plane_t, exclude, hit, &best);
+        nearest_in_bvh_sse2(tr, tr->bvh, NULL, org, dir, NULL, tmin, plane_t, exclude, hit, &best);
     else
         nearest_in_grid(tr, org, dir, tmin, plane_t, exclude, hit, &best);
     if (hit->kind == HIT_NONE) {
@@ -416,10 +420,10 @@ int trace_segment_hits(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double tmax,
     if (tr->bvh) {
 #if BVH_HAVE_AVX2_PATH
         if (tr->avx2)
-            return segment_hits_in_bvh_avx2(tr, tr->bvh, NULL, org, dir, tmin, tmax, exclude, hide, visit, user,
+            return segment_hits_in_bvh_avx2(tr, tr->bvh, NULL, org, dir, NULL, tmin, tmax, exclude, hide, visit, user,
                                             tests);
 #endif
-        return segment_hits_in_bvh_sse2(tr, tr->bvh, NULL, org, dir, tmin, tmax, exclude, hide, visit, user, tests);
+        return segment_hits_in_bvh_sse2(tr, tr->bvh, NULL, org, dir, NULL, tmin, tmax, exclude, hide, visit, user, tests);
     }
     RayFrame frame = ray_frame(org, dir);
     const Grid *g = tr->grid;
@@ -456,7 +460,7 @@ int trace_instance_hits(Tracer *tr, int instance, Vec3 org, Vec3 dir, double tmi
     instance_ray(in, org, dir, &lorg, &ldir);
 #if BVH_HAVE_AVX2_PATH
     if (tr->avx2)
-        return segment_hits_in_bvh_avx2(tr, b, in, lorg, ldir, tmin, tmax, exclude, hide, visit, user, tests);
+        return segment_hits_in_bvh_avx2(tr, b, in, lorg, ldir, NULL, tmin, tmax, exclude, hide, visit, user, tests);
 #endif
-    return segment_hits_in_bvh_sse2(tr, b, in, lorg, ldir, tmin, tmax, exclude, hide, visit, user, tests);
+    return segment_hits_in_bvh_sse2(tr, b, in, lorg, ldir, NULL, tmin, tmax, exclude, hide, visit, user, tests);
 }

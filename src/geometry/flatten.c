@@ -1045,6 +1045,22 @@ static int build_prototypes(Builder *b)
         }
         it->bbox_min = lo;
         it->bbox_max = hi;
+        /* a signed permutation: each local axis one world axis, +-1 exactly */
+        const double(*inv)[4] = it->to_world.inv;
+        it->permutation = 1;
+        for (int a = 0; a < 3; a++) {
+            int found = 0;
+            for (int j = 0; j < 3; j++) {
+                if (inv[j][a] == 1.0 || inv[j][a] == -1.0) {
+                    found++;
+                    it->axis[a] = j;
+                    it->sign[a] = inv[j][a];
+                } else if (inv[j][a] != 0.0) {
+                    found = 2;
+                }
+            }
+            it->permutation &= found == 1;
+        }
         w->bounds_min = v3_min(w->bounds_min, lo);
         w->bounds_max = v3_max(w->bounds_max, hi);
         w->instances[n++] = *it;

@@ -112,6 +112,18 @@ static inline void instance_ray(const Instance *in, Vec3 org, Vec3 dir, Vec3 *lo
                dir.x * m[0][2] + dir.y * m[1][2] + dir.z * m[2][2]);
 }
 
+/* The inverses of the components of ldir (instance_ray's direction of a
+ * ray whose own direction has inverses winv): 1 / ldir, bit for bit. For
+ * a signed permutation, ldir's components are the ray's, signed, exactly
+ * (the products by 0 add nothing), and 1 / (s d) is s (1 / d): no
+ * division, but where a component is 0 (its zero's sign is the sum's). */
+static inline void instance_inverse_dir(const Instance *in, const double winv[3], Vec3 ldir, double linv[3])
+{
+    const double l[3] = { ldir.x, ldir.y, ldir.z };
+    for (int i = 0; i < 3; i++)
+        linv[i] = in->permutation && l[i] != 0.0 ? in->sign[i] * winv[in->axis[i]] : 1.0 / l[i];
+}
+
 /* Polygon id's exact test against org + t dir (intersect_polygon's answer;
  * an instance's in its space, on instance_ray's ray); `hint` as
  * world_polygon_hinted's. */

@@ -130,6 +130,12 @@ typedef struct {
     int first_id;         /* the id (instance.h) of its first polygon */
     int first_material;   /* World.instance_materials[first_material + slot] */
     int hidden;           /* some material of it is no_image, no_reflection or no_shadow */
+    /* 1: the inverse's linear part is a signed permutation (quarter turns
+     * and mirrors, as LDraw parts mostly are): local axis i is world axis
+     * axis[i] times sign[i], exactly (instance_inverse_dir) */
+    int permutation;
+    int axis[3];
+    double sign[3];
     Vec3 bbox_min, bbox_max; /* of its polygons, in world space */
 } Instance;
 
