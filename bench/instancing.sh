@@ -63,7 +63,7 @@ for r in $(seq 1 "$runs"); do
 done
 "$hstrace" compare "$work/pov.png" "$work/inst.png" --json >"$work/cmp-inst.json" 2>/dev/null || true
 "$hstrace" compare "$work/flat.png" "$work/inst.png" --json >"$work/cmp-flat.json" 2>/dev/null || true
-pov_version=$("$povray" --version 2>&1 | head -n 1)
+pov_version=$("$povray" --version 2>&1 | grep -m 1 "^POV-Ray" || echo "version unknown")
 cpu_model=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)
 load=$(cut -d ' ' -f 1-3 /proc/loadavg)
 

@@ -657,8 +657,16 @@ static int build(Builder *bd, int first, int count, int depth, const Box *bounds
         best_split(&bn, bounds, splittable, bd->plain, &best_axis, &best_bin, &best_cost);
     }
     int by_sah = best_axis >= 0 && best_cost < COST_INTERSECT * count;
+    /* An instance (instance.h) takes a leaf of its own: its box is then
+     * the leaf's, tested with its siblings' four at a time, where in a
+     * shared leaf it would be tested alone before its walk. */
+    int instance = 0;
+    for (int i = 0; i < count && count > 1 && count <= LEAF_MAX; i++)
+        instance |= (it[i].polygon & BVH_INSTANCE) != 0;
+    if (!by_sah && instance)
+        by_sah = best_axis >= 0; /* the best split there is, if any; else halving, below */
     if (!by_sah) {
-        if (count <= LEAF_MAX) {
+        if (count <= LEAF_MAX && !instance) {
             bd->nodes[ni].index = (uint32_t)first;
             bd->nodes[ni].count = (uint16_t)count;
             return 0;

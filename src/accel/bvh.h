@@ -83,9 +83,10 @@ struct Bvh {
     Bvh *protos;
     int nprotos;
     /* The top level's: instance i's box as the build saw it (rounded
-     * outward, with the margin), lo[3] then hi[3], at 6 i: a leaf holds up
-     * to four items, so a ray can meet a leaf and miss an instance in it,
-     * which its box test then spares the walk of its prototype. */
+     * outward, with the margin), lo[3] then hi[3], at 6 i: an instance
+     * has a leaf of its own (so the node test tests its box), but where a
+     * leaf holds more (a degenerate split) its box is tested before its
+     * walk. */
     float *instance_box;
 };
 

@@ -50,8 +50,9 @@ BVH_TRAVERSE_TARGET static void BVH_TRAVERSE_NAME(nearest_in_bvh)(Tracer *tr, co
         for (uint32_t k = first; k < end; k++) {
             uint32_t item = b->items[k];
             if (item & BVH_INSTANCE) {
-                if (!bvh_box_hit(&b->instance_box[6 * (item & ~BVH_INSTANCE)], &br,
-                                 hit->kind == HIT_NONE ? plane_t : *best))
+                /* alone in its leaf (bvh.c), its box was the leaf's */
+                if (end - first > 1 && !bvh_box_hit(&b->instance_box[6 * (item & ~BVH_INSTANCE)], &br,
+                                                    hit->kind == HIT_NONE ? plane_t : *best))
                     continue;
                 const Instance *in = &w->instances[item & ~BVH_INSTANCE];
                 Vec3 lorg, ldir;
@@ -113,7 +114,7 @@ BVH_TRAVERSE_TARGET static int BVH_TRAVERSE_NAME(segment_hits_in_bvh)(Tracer *tr
         for (uint32_t k = first; k < end; k++) {
             uint32_t pi = b->items[k];
             if (pi & BVH_INSTANCE) {
-                if (!bvh_box_hit(&b->instance_box[6 * (pi & ~BVH_INSTANCE)], &br, tmax))
+                if (end - first > 1 && !bvh_box_hit(&b->instance_box[6 * (pi & ~BVH_INSTANCE)], &br, tmax))
                     continue;
                 const Instance *in = &w->instances[pi & ~BVH_INSTANCE];
                 Vec3 lorg, ldir;
