@@ -363,7 +363,7 @@ const OptionRow option_rows[] = {
               "each copy placed by its transform (less memory, a faster\n"
               "build), where the shadow method takes instances (hst\n"
               "without area lights or --volumes always, conventional,\n"
-              "cache, light-buffer); off: every copy flattened",
+              "cache, light-buffer, embree); off: every copy flattened",
       .expect = "expected auto or off" },
     { .name = "--pixel-coherence", .type = OPT_WORDS, .words = on_off_words, .field = OPTION_FIELD(pixel_coherence),
       .dflt = "on", .value_name = "on|off",

@@ -60,6 +60,7 @@ static const ShadowMethod embree_row = {
     .prepare = shadow_embree_prepare,
     .test = shadow_embree_test,
     .inexact = 1,
+    .instances = 1,
 };
 static const ShadowMethod none_row = {
     .name = "none",
