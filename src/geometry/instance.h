@@ -105,6 +105,16 @@ static inline int world_uv_polygon(const World *w, int id)
 static inline void instance_ray(const Instance *in, Vec3 org, Vec3 dir, Vec3 *lorg, Vec3 *ldir)
 {
     const double(*m)[4] = in->to_world.inv;
+    if (in->permutation) {
+        /* a signed permutation: the products by 0 and 1 the matrix's
+         * arithmetic would make add nothing (but the sign of a zero) */
+        const double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };
+        const int *a = in->axis;
+        const double *s = in->sign;
+        *lorg = v3(s[0] * o[a[0]] + m[3][0], s[1] * o[a[1]] + m[3][1], s[2] * o[a[2]] + m[3][2]);
+        *ldir = v3(s[0] * d[a[0]], s[1] * d[a[1]], s[2] * d[a[2]]);
+        return;
+    }
     *lorg = v3(org.x * m[0][0] + org.y * m[1][0] + org.z * m[2][0] + m[3][0],
                org.x * m[0][1] + org.y * m[1][1] + org.z * m[2][1] + m[3][1],
                org.x * m[0][2] + org.y * m[1][2] + org.z * m[2][2] + m[3][2]);
@@ -114,14 +124,13 @@ static inline void instance_ray(const Instance *in, Vec3 org, Vec3 dir, Vec3 *lo
 
 /* The inverses of the components of ldir (instance_ray's direction of a
  * ray whose own direction has inverses winv): 1 / ldir, bit for bit. For
- * a signed permutation, ldir's components are the ray's, signed, exactly
- * (the products by 0 add nothing), and 1 / (s d) is s (1 / d): no
- * division, but where a component is 0 (its zero's sign is the sum's). */
+ * a signed permutation, ldir's components are the ray's, signed
+ * (instance_ray), and 1 / (s d) is s (1 / d), zeros included: no division. */
 static inline void instance_inverse_dir(const Instance *in, const double winv[3], Vec3 ldir, double linv[3])
 {
     const double l[3] = { ldir.x, ldir.y, ldir.z };
     for (int i = 0; i < 3; i++)
-        linv[i] = in->permutation && l[i] != 0.0 ? in->sign[i] * winv[in->axis[i]] : 1.0 / l[i];
+        linv[i] = in->permutation ? in->sign[i] * winv[in->axis[i]] : 1.0 / l[i];
 }
 
 /* Polygon id's exact test against org + t dir (intersect_polygon's answer;
