@@ -258,20 +258,32 @@ cat >"$work/approx.pov" <<'POV'
 camera { location <0, 1, -4> look_at 0 }
 light_source { <2, 4, -3> rgb 1 photons { reflection on } }
 plane { y, -1 pigment { crackle color_map { [0 rgb 0] [1 rgb 1] } } }
-triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> texture { Bumpy } }
+triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> texture { Bumpy } photons { target } }
+global_settings { photons { count 100 } }
 POV
 run "$work/approx.pov" --width 40 --height 30 -o "$work/a.png" --stats --stats-json "$work/a.json"
 check "approximated features render by default" exited 0
 check "a warning names the approximated pattern at FILE:LINE:COLUMN" \
     grep -q "approx.pov:5:25: warning: 'crackle' approximated: pattern shown as one colour" "$work/err"
 check "--stats lists the photons approximation with its position" \
-    grep -q "photon mapping ignored: 1 place, first 'photons' at .*approx.pov:4:33" "$work/err"
+    grep -q "photon mapping ignored: 3 places, first 'photons' at .*approx.pov:6:59" "$work/err"
 check "--stats-json lists the normal approximation with its position" \
     grep -q '"kind": "normal", "count": 1, "first": ".*approx.pov:2:55", "what": "'"'"'crackle'"'"'"' "$work/a.json"
 run "$work/approx.pov" --width 40 --height 30 -o "$work/s.png" --strict
 check "--strict: the first approximation is an error at FILE:LINE:COLUMN, status 2" \
-    exited 2 "approx.pov:4:33: 'photons' is only approximated by hstrace (photon mapping ignored); --strict makes it an error"
+    exited 2 "approx.pov:5:25: 'crackle' is only approximated by hstrace"
 check "--strict: no image" [ ! -e "$work/s.png" ]
+# photons only once the scene is read: they count where global_settings
+# turns photon mapping on and an object is a target, both of which may come
+# after the block.
+sed '5d; 2s/normal { crackle 0.5 scale 0.1 }//' "$work/approx.pov" >"$work/photons.pov"
+run "$work/photons.pov" --width 40 --height 30 -o "$work/p.png" --strict
+check "--strict: photons where they change POV-Ray's image are an error at the first, status 2" \
+    exited 2 "photons.pov:5:59: 'photons' is only approximated by hstrace (photon mapping ignored: global_settings turns it on and an object is a target); --strict makes it an error"
+sed '$d' "$work/photons.pov" >"$work/nophotons.pov"
+run "$work/nophotons.pov" --width 40 --height 30 -o "$work/p.png" --strict
+check "--strict: the same without global photons renders, nothing reported" \
+    test "$status $(wc -c <"$work/err" | tr -d ' ')" = "0 0"
 
 # --strict refuses only what the scene uses (issue 42): skies.inc, read
 # from POV-Ray's include folder, declares skies hstrace renders exactly and

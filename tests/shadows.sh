@@ -37,7 +37,10 @@ json_number() {
 
 # Beside the project's scenes, one made for the cases they lack: filtered
 # light through transparent cards in front of opaque ones, a transparent
-# plane, a parallel light, a mirror, and a glass slab that refracts.
+# plane, a parallel light, a mirror, and a glass slab that refracts and
+# fades, with fake caustics (light through it is dimmed and tinted by the
+# way it runs inside, and brightened where it crosses the slab head-on,
+# which only the shadow ray computes: the others must leave it to it).
 cat >"$work/filtered.pov" <<'POV'
 #version 3.7;
 global_settings { assumed_gamma 1 max_trace_level 6 }
@@ -51,7 +54,8 @@ polygon { 5, <-1, 0>, <1, 0>, <1, 1.5>, <-1, 1.5>, <-1, 0>
 polygon { 5, <-1, 0>, <1, 0>, <1, 1.2>, <-1, 1.2>, <-1, 0>
   pigment { color rgbt <0.2, 0.8, 0.3, 0.5> } rotate y*30 translate <0.9, 0.1, 0.2> }
 box { <-0.4, 0, -0.4>, <0.4, 0.8, 0.4> pigment { color rgb <0.3, 0.3, 0.9> } translate <0.2, 0, 1.6> }
-box { <-1, 0, -0.05>, <1, 1, 0.05> pigment { color rgbf <1, 1, 1, 0.9> } interior { ior 1.5 }
+box { <-1, 0, -0.05>, <1, 1, 0.05> pigment { color rgbf <1, 1, 1, 0.9> }
+  interior { ior 1.5 fade_distance 0.08 fade_power 2 fade_colour <0.9, 0.5, 0.2> caustics 0.3 }
   finish { reflection 0.1 } rotate y*-20 translate <-1.6, 0, -1> }
 triangle { <1.5, 0, -1.5>, <2.5, 0, -0.5>, <2, 1.5, -1> pigment { color rgb 0.9 } finish { reflection 0.6 } }
 POV

@@ -16,7 +16,10 @@
  * and a decision is the colour of the light that gets through: the
  * reference's is written here from POV-Ray's rule, the product of
  * rgb * filter + transmit of every polygon the reference finds in the way
- * (black if one is opaque).
+ * (black if one is opaque). In some of them the closed tetrahedron is one
+ * see-through object with a fading interior, and the reference fades the
+ * light by the way the shadow ray runs inside it, as POV-Ray does
+ * (fade_along).
  *
  * The reference separates clear cases from ties: a decision is a tie when
  * some polygon is met within 1e-12 of the scene's size of its border, of the
@@ -75,8 +78,11 @@ static void paint(Scene *s, TestRng *r)
     }
 }
 
-static void random_scene(Scene *s, TestRng *r)
+/* Returns the index of the closed tetrahedron's first triangle among the
+ * scene's objects, or -1 when it has none. */
+static int random_scene(Scene *s, TestRng *r)
 {
+    int tetrahedron = -1;
     int ntri = 2 + (int)(rng_uniform(r) * 4);
     for (int k = 0; k < ntri; k++)
         fixture_triangle(s, lattice_point(r, 2), lattice_point(r, 2), lattice_point(r, 2));
@@ -116,10 +122,36 @@ static void random_scene(Scene *s, TestRng *r)
     }
     if (rng_uniform(r) < 0.3) { /* a closed tetrahedron */
         Vec3 a = lattice_point(r, 2), b = lattice_point(r, 2), c = lattice_point(r, 2), d = lattice_point(r, 2);
+        tetrahedron = s->nobjects;
         fixture_triangle(s, a, b, c);
         fixture_triangle(s, a, d, b);
         fixture_triangle(s, b, d, c);
         fixture_triangle(s, c, d, a);
+    }
+    return tetrahedron;
+}
+
+/* The tetrahedron's four triangles made one see-through object with a
+ * fading interior (their one interior, as a mesh's), as exporters write
+ * transparent parts: a shadow ray through it is dimmed and tinted by the
+ * way it runs inside. Linear or exponential fade (power 1001), tinted or
+ * not. */
+static void paint_fading(Scene *s, int first, TestRng *r)
+{
+    static const double powers[3] = { 1, 2, 1001 };
+    Interior *in = arena_alloc(s->arena, sizeof *in);
+    *in = scene_default_interior();
+    in->fade_distance = 0.5 + rng_uniform(r);
+    in->fade_power = powers[(int)(rng_uniform(r) * 3)];
+    if (rng_uniform(r) < 0.5) {
+        in->fade_colour.r = 0.8;
+        in->fade_colour.g = 0.3;
+        in->fade_colour.b = 0.1;
+    }
+    double filter = rng_uniform(r) < 0.5 ? 0.9 : 0.0;
+    for (int k = first; k < first + 4; k++) {
+        fixture_pigment(s, s->objects[k], 0.9, 0.7, 0.5, filter, 0.9 - filter);
+        s->objects[k]->interior = in;
     }
 }
 
@@ -185,6 +217,45 @@ static int decide_one(ShadowContext *ctx, const World *w, const Hit *hit, const 
  * test against the double bound it stands for (light_buffer.h), on every
  * cell built, at the points the variant decided. */
 static long mask_blocks, mask_differ, float_passes, float_not_double;
+static long shapes_classified, shapes_differ, shapes_sure, shapes_not_bound;
+
+/* The shape's verdict for direction (u, v) against the bound it stands
+ * for (light_buffer.h), in long double on the stored lines: 1 when it holds. */
+static int shape_verdict_holds(const LbShape *sh, int where, double u, double v)
+{
+    long double pad = LB_SHAPE_FLOAT_PAD;
+    int outside = 0, inside = 1;
+    for (int k = 0; k < sh->n; k++) {
+        long double d = (long double)sh->a[k] * u + (long double)sh->b[k] * v + (long double)sh->c[k];
+        outside |= d < -((long double)sh->out - pad);
+        inside &= d >= (long double)sh->in - pad;
+    }
+    return where == LB_OUTSIDE ? outside : where == LB_INSIDE ? inside : 1;
+}
+
+/* A shape's verdicts at directions within the float's rounding of where
+ * they change: at `out` outside and `in` inside each edge, a few ulps to
+ * either side, along the edge. (Probes elsewhere seldom come that close.) */
+static void check_shape_borders(const LbShape *sh)
+{
+    for (int k = 0; k < sh->n; k++) {
+        double a = sh->a[k], b = sh->b[k], c = sh->c[k];
+        const double at[4] = { -sh->out, sh->in, -sh->out * (1 + 1e-7), sh->in * (1 - 1e-7) };
+        for (int j = 0; j < 4; j++)
+            for (int t = -3; t <= 3; t++) {
+                double off = at[j] - c, u = a * off - b * 0.1 * t, v = b * off + a * 0.1 * t;
+                if (!(fabs(u) <= 1.0 && fabs(v) <= 1.0))
+                    continue;
+                for (int e = -4; e <= 4; e++) {
+                    float fu = nextafterf((float)u, e < 0 ? -INFINITY : INFINITY);
+                    fu = e == 0 ? (float)u : fu;
+                    int where = lb_shape_classify(sh, fu, (float)v);
+                    shapes_sure += where != LB_UNSURE;
+                    shapes_not_bound += !shape_verdict_holds(sh, where, fu, (float)v);
+                }
+            }
+    }
+}
 
 static void check_cell_masks(const LbCell *c, const LbPoint *pt, const LbSpot *spot)
 {
@@ -196,6 +267,12 @@ static void check_cell_masks(const LbCell *c, const LbPoint *pt, const LbSpot *s
         mask_blocks++;
         mask_differ += lb_block_mask(c, b, &scan) != lb_block_mask_plain(c, b, &scan);
         for (uint32_t i = b * LB_BLOCK; i < (b + 1) * LB_BLOCK && i < c->n; i++) {
+            const LbShape *sh = &c->shapes[c->shape_at[i]];
+            int where = lb_shape_classify(sh, (float)spot->u, (float)spot->v);
+            shapes_classified++;
+            shapes_differ += where != lb_shape_classify_plain(sh, (float)spot->u, (float)spot->v);
+            shapes_sure += where != LB_UNSURE;
+            shapes_not_bound += !shape_verdict_holds(sh, where, spot->u, spot->v);
             if (!lb_float_passed(c, i, &scan))
                 continue;
             float_passes++;
@@ -224,6 +301,14 @@ static void check_masks(const LightBuffers *lbs, const World *w, Hit hits[PROBES
                     check_cell_masks(atomic_load(&lb->top[spot.face][c]), &pt, &spot);
             }
         }
+    /* every shape kept (by its top cell), at its borders */
+    for (int li = 0; li < w->nlights; li++)
+        for (int f = 0; lbs->light[li] && f < 6; f++)
+            for (int c = 0; c < LB_TOP * LB_TOP; c++) {
+                const LbCell *top = atomic_load(&lbs->light[li]->top[f][c]);
+                for (uint32_t k = 0; top && k < top->nshapes; k++)
+                    check_shape_borders(&top->shapes[k]);
+            }
 }
 
 static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const ShadowVolumes *sv, const Variant *v,
@@ -276,7 +361,7 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
                 pc.hit = h1;
                 pc.have_hit = 1;
             }
-            Segment seg = { w->camera.location, dir, &none, NULL, m->uses_volumes ? row0 : NULL };
+            Segment seg = { w->camera.location, dir, &none, NULL, m->uses_volumes ? row0 : NULL, NULL, 0 };
             for (int li = 0; li < nl; li++)
             {
                 dec->decision[vi][k][0][li] =
@@ -287,7 +372,7 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
             Vec3 d2 = probes[k].bounce_dir;
             if (trace_nearest(ctx.tracer, h1.point, d2, HUGE_VAL, &h1, &h2)) {
                 hits[k][1] = h2;
-                Segment seg2 = { h1.point, d2, &h1, m->uses_volumes ? row0 : NULL, m->uses_volumes ? row1 : NULL };
+                Segment seg2 = { h1.point, d2, &h1, m->uses_volumes ? row0 : NULL, m->uses_volumes ? row1 : NULL, NULL, 0 };
                 for (int li = 0; li < nl; li++)
                 {
                     dec->decision[vi][k][1][li] =
@@ -376,12 +461,58 @@ typedef struct {
 typedef struct {
     ld t;
     RGB factor;
+    const Material *m;
 } Filter;
 
 static int filter_cmp(const void *a, const void *b)
 {
     const Filter *x = a, *y = b;
     return x->t < y->t ? -1 : x->t > y->t;
+}
+
+/* POV-Ray 3.7's fade of a shadow ray (render/trace.cpp): the ray starts
+ * outside every interior here (the test's segments carry none), passes the
+ * surfaces f[0 .. n) in order, entering a surface's interior where it is
+ * outside it and leaving it where inside (ComputeShadowMedia); at a surface
+ * of an interior it is inside, the light is multiplied by the interior's
+ * fade over the distance from the previous surface (ComputeShadowTexture):
+ * fade_colour + (1 - fade_colour) / (1 + (d / fade_distance)^fade_power),
+ * or exp(-(1 - fade_colour) d / fade_distance) for a power of 1000 or more.
+ * Written out here, not taken from the engine. */
+static long faded; /* decisions the reference faded */
+
+/* Multiplies *c by the fades of the surfaces f[0 .. n), in order; 1 when
+ * some interior faded it. */
+static int fade_along(const Filter *f, int n, RGB *c)
+{
+    const void *inside[64];
+    int ninside = 0, any = 0;
+    ld from = 0;
+    for (int i = 0; i < n; i++) {
+        const Material *m = f[i].m;
+        ld d = f[i].t - from;
+        from = f[i].t;
+        if (!(m->fade_power > 0 && fabs(m->fade_distance) > 1e-10))
+            continue;
+        int was = -1;
+        for (int k = 0; k < ninside; k++)
+            if (inside[k] == m->interior_key)
+                was = k;
+        if (was < 0) {
+            inside[ninside++] = m->interior_key;
+            continue;
+        }
+        inside[was] = inside[--ninside];
+        double x = (double)(d / m->fade_distance);
+        double k[3], fc[3] = { m->fade_colour.r, m->fade_colour.g, m->fade_colour.b };
+        for (int ch = 0; ch < 3; ch++)
+            k[ch] = m->fade_power >= 1000 ? exp(-(1 - fc[ch]) * x) : fc[ch] + (1 - fc[ch]) / (1 + pow(x, m->fade_power));
+        c->r *= k[0];
+        c->g *= k[1];
+        c->b *= k[2];
+        any = 1;
+    }
+    return any;
 }
 
 /* The reference's colour: POV-Ray's rule (each surface the shadow ray
@@ -429,6 +560,7 @@ static RefAnswer reference_colour(const World *w, const Hit *at, const Light *l,
             ld np = (ld)poly->normal.x * at->point.x + (ld)poly->normal.y * at->point.y +
                     (ld)poly->normal.z * at->point.z;
             f[nf].t = ((ld)poly->d - np) / nd;
+            f[nf].m = m;
             f[nf++].factor = k;
         }
     }
@@ -448,16 +580,20 @@ static RefAnswer reference_colour(const World *w, const Hit *at, const Light *l,
     }
     for (int k = 0; *close && k < combos && k < 64; k++) {
         RGB a = { 1, 1, 1 };
+        Filter picked[64];
         for (int g = 0, rest = k; g < ng; g++) {
             int size = start[g + 1] - start[g];
-            const RGB *pick = &f[start[g] + rest % size].factor;
+            picked[g] = f[start[g] + rest % size];
             rest /= size;
-            a.r *= pick->r;
-            a.g *= pick->g;
-            a.b *= pick->b;
+            a.r *= picked[g].factor.r;
+            a.g *= picked[g].factor.g;
+            a.b *= picked[g].factor.b;
         }
+        fade_along(picked, ng, &a); /* the surface picked of each group is the one the ray passes */
         alt[(*nalt)++] = a;
     }
+    if (!*close)
+        faded += fade_along(f, nf, c);
     return c->r == 1 && c->g == 1 && c->b == 1 ? REF_LIT : REF_BLOCKED;
 }
 
@@ -493,13 +629,15 @@ static RefAnswer judge(const World *w, const Hit *at, const Light *l, ld eps, RG
 static void one_scene(TestRng *rng, Totals *tot)
 {
     Scene *s = fixture_scene(64);
-    random_scene(s, rng);
+    int tetrahedron = random_scene(s, rng);
     /* Every other scene transparent in part, painted by a generator of its
      * own: the scenes' geometry is the one without transparency. */
     if ((tot->scenes + tot->skipped) % 2) {
         TestRng colours = { rng->s ^ 0xD1B54A32D192ED03ull };
         paint(s, &colours);
         tot->painted++;
+        if (tetrahedron >= 0 && rng_uniform(&colours) < 0.7)
+            paint_fading(s, tetrahedron, &colours);
     }
     SceneLight lights[MAX_LIGHTS];
     memset(lights, 0, sizeof lights);
@@ -679,6 +817,7 @@ int main(int argc, char **argv)
              tot.close, tot.filtered);
     tap_ok(tot.decisions > 50 * scenes, "enough decisions checked (%ld)", tot.decisions);
     tap_ok(tot.filtered * 20 > tot.decisions, "enough of them through transparent objects only (%ld)", tot.filtered);
+    tap_ok(faded * 200 > tot.decisions, "enough of them through a fading interior (%ld)", faded);
     tap_ok(tot.close > 0 && tot.close_povray == tot.close,
            "the shadow ray gives POV-Ray's colour where transparent surfaces lie within 1e-3 of each other along it, "
            "filtering once per group of them (%ld of %ld)",
@@ -714,5 +853,10 @@ int main(int argc, char **argv)
     tap_ok(float_passes > 0 && float_not_double == 0,
            "light buffer: every plane the float test passes over, the double bound does too (%ld not, of %ld)",
            float_not_double, float_passes);
+    tap_ok(shapes_classified > 0 && shapes_differ == 0,
+           "light buffer: SSE shape classes equal the plain ones (%ld differ of %ld)", shapes_differ, shapes_classified);
+    tap_ok(shapes_sure > 0 && shapes_not_bound == 0,
+           "light buffer: every shape's outside or inside holds in exact arithmetic with its margins (%ld not, of %ld)",
+           shapes_not_bound, shapes_sure);
     return tap_done();
 }

@@ -71,6 +71,7 @@ static SceneObject *lattice_mesh(Scene *s, TestRng *r)
             face->uv[k] = -1;
         }
         face->texture = -1;
+        face->texture2 = face->texture3 = -1;
     }
     return o;
 }
@@ -289,7 +290,7 @@ static void one_scene(TestRng *rng, Totals *tot)
         if (trace_nearest(ray.ctx.tracer, h1.point, bounce[k], HUGE_VAL, &h1, &at[1]))
             nat = 2;
         for (int a = 0; a < nat; a++) {
-            Segment seg = { a == 0 ? eye : h1.point, a == 0 ? dir : bounce[k], a == 0 ? &none : &h1, NULL, NULL };
+            Segment seg = { a == 0 ? eye : h1.point, a == 0 ? dir : bounce[k], a == 0 ? &none : &h1, NULL, NULL, NULL, 0 };
             for (int li = 0; li < nl; li++) {
                 RGB want = decide(&ray.ctx, &wi, &at[a], &seg, li);
                 tot->decisions++;

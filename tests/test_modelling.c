@@ -212,7 +212,8 @@ static void test_approximations(void)
               "box { 0, 1 pigment { P } }\nbox { 0, 1 pigment { P } }\n"
               "box { 0, 1 normal { facets 0.5 } }\n"
               "light_source { 0, 1 photons { refraction on } }\n"
-              "global_settings { radiosity { } }\n");
+              "global_settings { radiosity { } photons { count 100 } }\n"
+              "box { 0, 1 photons { target reflection on } }\n");
     tap_ok(s != NULL, "approximated features parse");
     if (s) {
         int pattern = -1, normal = -1, photons = -1, rad = -1;
@@ -228,7 +229,9 @@ static void test_approximations(void)
                    s->approximations[pattern].first.column == 24 && strcmp(s->approximations[pattern].what, "'crackle'") == 0,
                "a declared pattern used twice: one place, at its declaration 1:24");
         tap_ok(normal >= 0 && s->approximations[normal].first.line == 4, "object normal (facets) at line 4");
-        tap_ok(photons >= 0 && rad >= 0, "photons and radiosity reported");
+        tap_ok(photons >= 0 && rad >= 0 && s->approximations[photons].count == 3 &&
+                   s->approximations[photons].first.line == 7,
+               "photons (global, light and target: 3 places, the first at the target, line 7) and radiosity reported");
         tap_ok(colour_is(s->objects[0]->texture->pigment.colour, 0.5, 0, 0, 0, 0) &&
                    s->objects[0]->texture->pigment.kind == PIGMENT_SOLID,
                "an approximated pattern shows its colour map at 0.5");
@@ -281,8 +284,26 @@ static void test_strict(void)
                              &strict_opts);
     tap_ok(area != NULL, "--strict accepts an area_light (sampled as POV-Ray samples it, not approximated)");
     scene_free(area);
-    expect_error_with(&strict_opts, "global_settings { photons { count 100 } }", 1, 19, "'photons' is only approximated",
-                      "--strict: photons");
+    expect_error_with(&strict_opts, "global_settings { photons { count 100 } }\nbox { 0, 1 photons { target 0.5 } }", 2, 12,
+                      "'photons' is only approximated",
+                      "--strict: photons, where global_settings turns them on and an object is a target");
+    {
+        /* Photon mapping changes nothing in POV-Ray 3.7 without both: accepted. */
+        static const char *const silent[] = {
+            "box { 0, 1 photons { target reflection on refraction on collect off pass_through } }\n"
+            "light_source { 0, 1 photons { refraction on reflection on } }",
+            "global_settings { photons { count 100 } }\nbox { 0, 1 photons { collect off } }",
+            "global_settings { photons { spacing 0.1 } }\nbox { 0, 1 photons { target 0 } }",
+            "global_settings { photons { count 100 } }\n#declare B = box { 0, 1 photons { target } }\nbox { 0, 1 }",
+        };
+        for (size_t i = 0; i < sizeof silent / sizeof silent[0]; i++) {
+            Scene *quiet = parse_with(silent[i], &strict_opts);
+            tap_ok(quiet && quiet->napproximations == 0, "--strict accepts photons that change nothing (case %zu)", i + 1);
+            scene_free(quiet);
+        }
+    }
+    expect_error_with(&strict_opts, "box { 0, 1 photons { target bogus } }", 1, 29, "expected",
+                      "photons { }: what POV-Ray does not take is an error at its position");
     expect_error_with(&strict_opts, "camera { location -z aperture 0.4 focal_point 0 }", 1, 22,
                       "'aperture' is only approximated", "--strict: focal blur");
     expect_error_with(&strict_opts, "#declare T = texture { normal { facets 1 } }\n\nbox { 0, 1 texture { T } }", 3, 22,

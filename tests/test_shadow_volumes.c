@@ -257,7 +257,7 @@ static void check_cards(Scene *s, const CardProbe *probes, int nprobes, const ch
             }
             LightState state[1];
             memset(state, 0, sizeof state);
-            Segment seg = { w.camera.location, dir, &eye, NULL, m->uses_volumes ? state : NULL };
+            Segment seg = { w.camera.location, dir, &eye, NULL, m->uses_volumes ? state : NULL, NULL, 0 };
             const Light *l = &w.lights[0];
             Vec3 d = v3_sub(l->location, h.point);
             double distance = v3_length(d);

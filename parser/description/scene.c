@@ -16,6 +16,7 @@ Finish scene_default_finish(void)
     f.roughness = 0.05;
     f.reflection_falloff = 1.0;
     f.reflection_exponent = 1.0;
+    f.caustics = -1.0;
     return f;
 }
 
@@ -143,14 +144,14 @@ static const struct {
     [APPROX_WARP] = { "warp", "pattern warps other than turbulence ignored" },
     [APPROX_LAYERS] = { "layers", "texture layers blended into one, with the top layer's finish" },
     [APPROX_FINISH] = { "finish", "finish item ignored" },
-    [APPROX_CAUSTICS] = { "caustics", "interior caustics and dispersion ignored" },
+    [APPROX_DISPERSION] = { "dispersion", "dispersion ignored" },
     [APPROX_PHOTONS] = { "photons", "photon mapping ignored" },
     [APPROX_RADIOSITY] = { "radiosity", "radiosity and subsurface light transport ignored: no light gathered from "
                                         "other surfaces, and (as POV-Ray 3.7 with radiosity) no finish's ambient" },
     [APPROX_FOCAL_BLUR] = { "camera", "focal blur and camera normal ignored: a pinhole camera" },
     [APPROX_FOG] = { "fog", "fog between lights and surfaces (media_attenuation) ignored" },
-    [APPROX_VERTEX_TEXTURES] = { "vertex-textures", "a mesh face's textures per vertex not blended: the first "
-                                                    "vertex's texture on the whole face" },
+    [APPROX_VERTEX_TEXTURES] = { "vertex-textures", "a texture_map among a mesh face's textures per vertex: the "
+                                                    "first vertex's texture on the whole face" },
 };
 
 const char *approx_kind_name(ApproxKind k)

@@ -37,7 +37,7 @@ typedef enum {
     APPROX_WARP,          /* warps other than turbulence, turbulence on checker/hexagon/gradient: ignored */
     APPROX_LAYERS,        /* layered textures blended into one */
     APPROX_FINISH,        /* irid, crand, diffuse backside: ignored */
-    APPROX_CAUSTICS,      /* interior caustics, dispersion: ignored */
+    APPROX_DISPERSION,    /* an interior's dispersion: ignored */
     APPROX_PHOTONS,       /* photons { } blocks: ignored */
     APPROX_RADIOSITY,     /* global radiosity / subsurface: ignored */
     APPROX_FOCAL_BLUR,    /* camera aperture / normal: a pinhole camera */
@@ -246,6 +246,10 @@ typedef struct {
     int reflection_fresnel;     /* `reflection { ... fresnel }` */
     double reflection_metallic; /* `reflection { ... metallic }` */
     int conserve_energy;
+    /* A finish's `caustics` (POV-Ray's Temp_Caustics, default -1: none),
+     * which POV-Ray moves to the object's interior where the object's
+     * texture is a plain one (Post_Process). */
+    double caustics;
     const ApproxNote *approx;
 } Finish;
 
@@ -255,6 +259,9 @@ typedef struct {
     double fade_distance; /* 0: none */
     double fade_power;
     Colour fade_colour;
+    /* Fake caustics: 45 times the value written, as POV-Ray keeps it (0:
+     * none). */
+    double caustics;
 } Interior;
 
 struct SceneTexture;
@@ -306,6 +313,10 @@ typedef struct {
     int n[3];       /* normal indices, or -1 for a flat triangle */
     int uv[3];      /* uv coordinate indices (mesh.uvs), or -1: uv (0, 0) */
     int texture;    /* index into the mesh's textures, or -1 for the object's */
+    /* A texture per vertex (mesh2's three indices, a triangle's
+     * texture_list) where they differ: the second and third vertex's,
+     * `texture` the first's; -1: the face has one texture. */
+    int texture2, texture3;
 } MeshFace;
 
 typedef struct SceneObject SceneObject;
@@ -324,8 +335,12 @@ struct SceneObject {
      * after it do (pattern to world = pigment transform, then the inverse of
      * this, then the object's transform, then its parents'). */
     Transform texture_bind;
-    const ApproxNote *approx; /* photons { } on the object */
-    unsigned no_shadow : 1, no_image : 1, no_reflection : 1, hollow : 1, inverse : 1;
+    const ApproxNote *approx;
+    /* The object's photons { }: a note counted only where photon mapping
+     * would run (gram_collect_approximations), and whether it makes the
+     * object a photon target. */
+    const ApproxNote *photons;
+    unsigned no_shadow : 1, no_image : 1, no_reflection : 1, hollow : 1, inverse : 1, photon_target : 1;
     int double_illuminate;
     /* Levels of unions from this object down (1: a union of other objects,
      * 0: not a union). The parser keeps it at MAX_NESTING (200) at most, so
@@ -417,7 +432,8 @@ typedef struct SceneLight {
     double fade_distance; /* 0: no fading */
     double fade_power;
     AreaLight area;
-    const ApproxNote *approx; /* photons, media_attenuation */
+    const ApproxNote *approx; /* media_attenuation */
+    const ApproxNote *photons; /* photons { }: counted as the objects' are */
 } SceneLight;
 
 typedef enum {

@@ -19,6 +19,7 @@ typedef struct {
     size_t cap, n;
     SceneApproximation per_kind[APPROX_KINDS];
     int failed;
+    int photons;          /* photon mapping would run: count the photons { } blocks */
 } Tally;
 
 static size_t note_hash(const ApproxNote *n)
@@ -115,6 +116,8 @@ static void tally_object(Tally *t, const SceneObject *o, int depth)
     if (depth > 1000)
         return;
     tally_notes(t, o->approx);
+    if (t->photons)
+        tally_notes(t, o->photons);
     tally_texture(t, o->texture);
     if (o->interior)
         tally_notes(t, o->interior->approx);
@@ -126,23 +129,65 @@ static void tally_object(Tally *t, const SceneObject *o, int depth)
             tally_texture(t, o->u.mesh.textures[i]);
 }
 
+/* Whether o, or an object in it, is a photon target. */
+static int photon_target(const SceneObject *o, int depth)
+{
+    if (o->photon_target)
+        return 1;
+    if (o->kind == OBJ_UNION && depth < 1000)
+        for (int i = 0; i < o->u.csg.nchildren; i++)
+            if (photon_target(o->u.csg.children[i], depth + 1))
+                return 1;
+    return 0;
+}
+
+/* Photon mapping changes POV-Ray 3.7's image only where global_settings
+ * turns it on and some object is a target: photons are shot only at
+ * targets (photonshootingstrategy.cpp), and with none stored the shading
+ * is as without (trace.cpp asks for surfacePhotonMap.numPhotons > 0, also
+ * where it darkens shadows through targets). Exporters write photons { }
+ * on objects and lights whatever the scene's settings; those count only
+ * then, and so does the global block. */
+static int photons_in_use(Parser *p)
+{
+    if (!p->gram->global_photons)
+        return 0;
+    for (int i = 0; i < p->gram->objects.n; i++)
+        if (photon_target(((SceneObject **)p->gram->objects.data)[i], 0))
+            return 1;
+    return 0;
+}
+
 void gram_collect_approximations(Parser *p)
 {
     Scene *s = p->scene;
     Tally t;
     memset(&t, 0, sizeof t);
+    t.photons = photons_in_use(p);
     for (int i = 0; i < p->gram->objects.n; i++)
         tally_object(&t, ((SceneObject **)p->gram->objects.data)[i], 0);
-    for (int i = 0; i < p->gram->lights.n; i++)
-        tally_notes(&t, ((SceneLight *)p->gram->lights.data)[i].approx);
+    for (int i = 0; i < p->gram->lights.n; i++) {
+        const SceneLight *l = &((SceneLight *)p->gram->lights.data)[i];
+        tally_notes(&t, l->approx);
+        if (t.photons)
+            tally_notes(&t, l->photons);
+    }
     tally_notes(&t, s->camera.approx);
     tally_texture(&t, &s->default_texture);
     for (int i = 0; i < s->sky.npigments; i++)
         tally_pigment(&t, &s->sky.pigments[i]);
     tally_notes(&t, p->gram->global_approx);
+    if (t.photons)
+        tally_notes(&t, p->gram->global_photons);
     free(t.slots);
     if (t.failed)
         tok_fail(p, p->last_pos, "out of memory");
+    /* --strict for photons, counted only where the rest of the scene makes
+     * them change the image (the other kinds refused it where parsed) */
+    const SceneApproximation *ph = &t.per_kind[APPROX_PHOTONS];
+    if (p->opts->strict && ph->count > 0)
+        tok_fail(p, ph->first, "%s is only approximated by hstrace (%s: global_settings turns it on and an object is a "
+                 "target); --strict makes it an error", ph->what, approx_kind_effect(APPROX_PHOTONS));
     int n = 0;
     for (int k = 0; k < APPROX_KINDS; k++)
         n += t.per_kind[k].count > 0;

@@ -15,7 +15,8 @@ typedef struct GramState {
     TempVec objects; /* of SceneObject *, top level */
     TempVec lights;  /* of SceneLight */
     TempVec fogs;    /* of SceneFog, in file order */
-    const ApproxNote *global_approx; /* global_settings: radiosity, photons */
+    const ApproxNote *global_approx; /* global_settings: radiosity, subsurface, fog's media */
+    const ApproxNote *global_photons; /* global_settings' photons { }: counted as the objects' are */
     int media_attenuation_seen; /* a light_source asked for media_attenuation */
     int default_changed;        /* #default was used */
     /* POV-Ray's gammaMode while parsing (image_gamma.c) */

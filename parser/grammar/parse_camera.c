@@ -252,7 +252,7 @@ SceneLight *gram_light_source(Parser *p, const Token *kw)
                 (void)expr_float(p);
             break;
         case KW_photons: /* photon settings: parsed past, not modelled */
-            tok_approximate(p, t, APPROX_PHOTONS, &l->approx);
+            tok_note_approximation(p, t, APPROX_PHOTONS, &l->photons);
             tok_begin_block(p, "photons");
             tok_skip_block_body(p);
             break;

@@ -105,6 +105,31 @@ const SceneTexture *gram_texture_uv_mapped(Parser *p, const SceneTexture *tex)
     return copy;
 }
 
+/* An object's photons { }, as POV-Ray 3.7's Parse_Object_Mods reads it:
+ * `target [spacing]` makes the object a photon target where the spacing
+ * multiplier (default 1) is positive; the rest (refraction, reflection,
+ * pass_through, collect) only steer photons, which hstrace does not shoot. */
+static void object_photons(Parser *p, SceneObject *o)
+{
+    tok_begin_block(p, "photons");
+    for (;;) {
+        Token *t = tok_next(p);
+        if (tok_is_punct(t, '}'))
+            return;
+        switch (t->type == TK_WORD ? t->kw : -1) {
+        case KW_target: {
+            double spacing = expr_starts_float(p, tok_peek(p)) ? expr_float(p) : 1.0;
+            o->photon_target = spacing > 0.0;
+            break;
+        }
+        case KW_refraction: case KW_reflection: (void)expr_float(p); break;
+        case KW_pass_through: case KW_collect: (void)optional_bool(p); break;
+        default:
+            tok_fail_expected(p, t, "target, refraction, reflection, pass_through, collect or '}' in 'photons'");
+        }
+    }
+}
+
 /* Modifiers up to the object's closing '}'. */
 static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
 {
@@ -162,10 +187,9 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_sturm: case KW_split_union: skip_optional_float(p); break;
         case KW_uv_mapping: uv = 1; break; /* every texture of the object, at the end */
         case KW_cutaway_textures: break; /* no effect on solid colours */
-        case KW_photons: /* parsed past: hstrace has no photon mapping */
-            tok_approximate(p, &at, APPROX_PHOTONS, &o->approx);
-            tok_begin_block(p, "photons");
-            tok_skip_block_body(p);
+        case KW_photons:
+            tok_note_approximation(p, &at, APPROX_PHOTONS, &o->photons);
+            object_photons(p, o);
             break;
         case KW_radiosity: /* per-object radiosity settings: nothing without radiosity */
             tok_begin_block(p, "radiosity");
@@ -334,13 +358,17 @@ static int add_mesh_texture(Parser *p, MeshBuilder *mb, const SceneTexture *t)
 
 /* A face given a texture per vertex (mesh2's three indices, a mesh
  * triangle's texture_list), as vertex-coloured exports write them: POV-Ray
- * blends the three textures by the point's place in the face
- * (Mesh::Determine_Textures); hstrace shows the first on the whole face,
- * exact when the three are one. Noted once per mesh, at the first face
- * whose textures differ (`at`). */
-static void note_vertex_textures(Parser *p, SceneObject *o, const Token *at, int *noted)
+ * blends the three textures' shaded colours by the point's place in the
+ * face (Mesh::Determine_Textures), and so does hstrace where the three are
+ * plain textures (flatten.c, pigment.h); a texture_map among them leaves
+ * the face with the first vertex's texture, an approximation noted once
+ * per mesh, at the first such face (`at`). Called for faces whose three
+ * textures differ. */
+static int is_map(const SceneTexture *t) { return t && t->nmap > 0; }
+
+static void vertex_textures(Parser *p, SceneObject *o, const Token *at, const SceneTexture *const tex[3], int *noted)
 {
-    if (*noted)
+    if (*noted || !(is_map(tex[0]) || is_map(tex[1]) || is_map(tex[2])))
         return;
     *noted = 1;
     static const char what[] = "a texture per vertex";
@@ -431,7 +459,7 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
                     *(Vec3 *)tok_tvec_push(p, &mb.normals) = tri.u.triangle.n[i];
                 }
             }
-            f->texture = -1;
+            f->texture = f->texture2 = f->texture3 = -1;
             for (;;) {
                 t = tok_next(p);
                 if (tok_is_punct(t, '}'))
@@ -454,9 +482,13 @@ static SceneObject *parse_mesh(Parser *p, const Token *kw)
                         vertex[i] = v->texture;
                     }
                     tok_expect_punct(p, '}', "texture_list");
-                    if (vertex[1] != vertex[0] || vertex[2] != vertex[0])
-                        note_vertex_textures(p, o, &at, &noted);
-                    ((MeshFace *)mb.faces.data)[mb.faces.n - 1].texture = add_mesh_texture(p, &mb, vertex[0]);
+                    MeshFace *face = (MeshFace *)mb.faces.data + mb.faces.n - 1;
+                    face->texture = add_mesh_texture(p, &mb, vertex[0]);
+                    if (vertex[1] != vertex[0] || vertex[2] != vertex[0]) {
+                        vertex_textures(p, o, &at, vertex, &noted);
+                        face->texture2 = add_mesh_texture(p, &mb, vertex[1]);
+                        face->texture3 = add_mesh_texture(p, &mb, vertex[2]);
+                    }
                 } else if (tok_is_kw(t, KW_uv_vectors)) {
                     MeshFace *face = (MeshFace *)mb.faces.data + mb.faces.n - 1;
                     for (int i = 0; i < 3; i++) {
@@ -580,20 +612,29 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
                     tok_fail(p, vt.pos, "mesh2 face index out of range (%d vertices)", mb.vertices.n);
                 f->n[0] = f->n[1] = f->n[2] = -1;
                 f->uv[0] = f->uv[1] = f->uv[2] = -1;
-                f->texture = -1;
-                /* one texture index, or three: one per vertex (note_vertex_textures) */
+                f->texture = f->texture2 = f->texture3 = -1;
+                /* one texture index, or three: one per vertex (vertex_textures) */
+                int ti[3], nt = 0;
+                Token first_other = *tok_peek(p);
                 for (int k = 0; k < 3; k++) {
                     expr_comma(p);
                     if (!expr_starts_float(p, tok_peek(p)))
                         break;
                     Token it = *tok_peek(p);
-                    int ti;
-                    if (!mesh_index(expr_float(p), mb.textures.n, &ti))
+                    if (k == 1)
+                        first_other = it;
+                    if (!mesh_index(expr_float(p), mb.textures.n, &ti[k]))
                         tok_fail(p, it.pos, "texture index out of range in mesh2");
-                    if (k == 0)
-                        f->texture = ti;
-                    else if (ti != f->texture)
-                        note_vertex_textures(p, o, &it, &noted);
+                    nt++;
+                }
+                if (nt > 0)
+                    f->texture = ti[0];
+                if (nt == 3 && (ti[1] != ti[0] || ti[2] != ti[0])) {
+                    const SceneTexture *const *list = (const SceneTexture *const *)mb.textures.data;
+                    const SceneTexture *const vertex[3] = { list[ti[0]], list[ti[1]], list[ti[2]] };
+                    vertex_textures(p, o, &first_other, vertex, &noted);
+                    f->texture2 = ti[1];
+                    f->texture3 = ti[2];
                 }
             }
             expr_comma(p); /* POV-Ray takes a comma after every item, the last too */
@@ -720,6 +761,22 @@ static void parse_light_object_mods(Parser *p, SceneLight *l)
     }
 }
 
+/* A use of a declared object: a copy of its top, which shares the rest. Its
+ * interior is copied too, as POV-Ray's Copy_Object copies it: each copy is
+ * an interior of its own to the rays that cross several (the interior's
+ * identity is its address, Material.interior_key). */
+static SceneObject *copy_declared_object(Parser *p, const SceneObject *declared)
+{
+    SceneObject *o = tok_scene_alloc(p, sizeof *o);
+    *o = *declared;
+    if (declared->interior) {
+        Interior *own = tok_scene_alloc(p, sizeof *own);
+        *own = *declared->interior;
+        o->interior = own;
+    }
+    return o;
+}
+
 /* Appends the light_sources of union `o` and of the unions inside it to the
  * scene's lights, in world space: `outer` is the transform of o's parents.
  * Order as POV-Ray's Post_Process: depth first, as written. */
@@ -762,8 +819,7 @@ static void parse_object_statement(Parser *p, const Token *kw, SceneObject **obj
         }
         if (v->kind != VAL_OBJECT)
             tok_fail(p, t.pos, "'%.*s' is not an object", t.len, t.text);
-        SceneObject *o = tok_scene_alloc(p, sizeof *o);
-        *o = *v->object;
+        SceneObject *o = copy_declared_object(p, v->object);
         o->pos = kw->pos;
         parse_object_mods(p, o, "object");
         *obj = o;
@@ -823,8 +879,7 @@ static int bare_object_identifier(Parser *p, const Token *t, SceneObject **obj, 
     }
     if (v->kind != VAL_OBJECT)
         return 0;
-    SceneObject *o = tok_scene_alloc(p, sizeof *o);
-    *o = *v->object;
+    SceneObject *o = copy_declared_object(p, v->object);
     o->pos = t->pos;
     *obj = o;
     return 1;

@@ -455,7 +455,10 @@ static void parse_global_settings(Parser *p)
         case KW_radiosity: case KW_photons: case KW_subsurface:
             /* Not modelled: parsed past and ignored, so scenes written for
              * POV-Ray still load (their lighting will differ). */
-            tok_approximate(p, &t, t.kw == KW_photons ? APPROX_PHOTONS : APPROX_RADIOSITY, &p->gram->global_approx);
+            if (t.kw == KW_photons)
+                tok_note_approximation(p, &t, APPROX_PHOTONS, &p->gram->global_photons);
+            else
+                tok_approximate(p, &t, APPROX_RADIOSITY, &p->gram->global_approx);
             if (t.kw == KW_radiosity)
                 g->radiosity = 1;
             tok_begin_block(p, tok_keyword_name(t.kw));

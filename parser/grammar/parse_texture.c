@@ -1015,8 +1015,11 @@ void gram_finish(Parser *p, Finish *f)
             tok_begin_block(p, "irid");
             tok_skip_block_body(p);
             break;
-        case KW_ior: case KW_caustics: case KW_refraction: /* pre-3.0 spellings of interior settings */
+        case KW_ior: case KW_refraction: /* pre-3.0 spellings of interior settings */
             (void)expr_float(p);
+            break;
+        case KW_caustics: /* POV-Ray 3.7 still takes it here, unscaled (Parse_Finish) */
+            f->caustics = (float)expr_float(p); /* single precision, as POV-Ray keeps it */
             break;
         case KW_subsurface:
             /* `subsurface { translucency C anisotropy C }`, as Blender's
@@ -1061,12 +1064,15 @@ void gram_interior(Parser *p, Interior *in)
         case KW_fade_power: in->fade_power = expr_float(p); break;
         case KW_fade_color:
         case KW_fade_colour: expr_colour(p, &in->fade_colour, 0); break;
-        case KW_caustics: case KW_dispersion: case KW_dispersion_samples: {
-            /* fake caustics and dispersion: not modelled */
+        case KW_caustics: /* fake caustics, in shadows (shadow_conventional.c) */
+            in->caustics = (float)(expr_float(p) * 45.0); /* Parse_Interior's scale, in single precision */
+            break;
+        case KW_dispersion: case KW_dispersion_samples: {
+            /* dispersion: not modelled */
             Token at = *t;
             double v = expr_float(p);
-            if ((at.kw == KW_caustics && v != 0.0) || (at.kw == KW_dispersion && v != 1.0))
-                tok_approximate(p, &at, APPROX_CAUSTICS, &in->approx);
+            if (at.kw == KW_dispersion && v != 1.0)
+                tok_approximate(p, &at, APPROX_DISPERSION, &in->approx);
             break;
         }
         default:
@@ -1092,8 +1098,17 @@ void gram_material(Parser *p, const SceneTexture **tex, const Interior **in, con
         if (id) {
             if (id->material_texture)
                 *tex = *tex ? gram_layer_textures(p, id->material_texture, *tex, &here) : id->material_texture;
-            if (id->material_interior)
-                *in = id->material_interior; /* never changed in place: a new one replaces it */
+            if (id->material_interior) {
+                /* POV-Ray's Parse_Material gives each use of a declared
+                 * material an interior of its own (a copy): two objects of
+                 * one transparent material are two interiors to the rays
+                 * that cross both, e.g. a brick's studs inside the brick
+                 * stacked on it (the interior's identity is its address:
+                 * Material.interior_key) */
+                Interior *own = tok_scene_alloc(p, sizeof *own);
+                *own = *id->material_interior;
+                *in = own;
+            }
             continue;
         }
         if (tok_is_kw(t, KW_texture)) {

@@ -184,6 +184,13 @@ void tok_approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNot
         tok_fail(p, t->pos, "%s is only approximated by hstrace (%s); --strict makes it an error", what,
                    approx_kind_effect(kind));
     }
+    tok_note_approximation(p, t, kind, notes);
+}
+
+void tok_note_approximation(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes)
+{
+    char what[96];
+    snprintf(what, sizeof what, "'%.*s'", t->len > 60 ? 60 : t->len, t->text);
     ApproxNote *n = tok_scene_alloc(p, sizeof *n);
     n->kind = kind;
     n->pos = t->pos;

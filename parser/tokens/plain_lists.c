@@ -144,7 +144,7 @@ static void *read_piece(void *arg)
                     goto fail;
             f->n[0] = f->n[1] = f->n[2] = -1;
             f->uv[0] = f->uv[1] = f->uv[2] = -1;
-            f->texture = -1;
+            f->texture = f->texture2 = f->texture3 = -1;
         } else {
             pc->out[k] = v3(c[0], c[1], c[2]);
         }

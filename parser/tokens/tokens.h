@@ -369,6 +369,10 @@ _Noreturn void tok_unsupported(Parser *p, const Token *t);
 /* A feature at `t` that hstrace approximates (an ApproxKind): a note added
  * to *notes; with --strict an error (in a #declare: a poisoned value). */
 void tok_approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes);
+/* The note alone, not refused by --strict here: for what approximates only
+ * depending on the rest of the scene, which the collection decides
+ * (gram_collect_approximations: photons). */
+void tok_note_approximation(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes);
 /* Use of an identifier holding an unsupported declaration. */
 _Noreturn void tok_use_unsupported(Parser *p, const Token *t, const Value *v);
 /* In a declaration: remember the first unsupported thing of an expression

@@ -33,6 +33,7 @@ typedef struct {
 typedef struct {
     World *w;
     int cap_polygons, cap_points, cap_outlines, cap_outline_boxes, cap_normals, cap_planes, cap_materials, cap_uvs;
+    int cap_vertex_materials;
     int cap_maps, cap_map_entries;
     /* The texture_maps built so far, by their entries (a hash set of the
      * description's entry arrays, which copies of a texture share), so
@@ -283,6 +284,9 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->fade_distance = it->fade_distance;
     m->fade_power = it->fade_power;
     m->fade_colour = rgb_of(&it->fade_colour);
+    /* A plain texture's finish caustics replaces the interior's (POV-Ray's
+     * Post_Process moves it there). */
+    m->caustics = tex->nmap == 0 && tex->finish.caustics >= 0.0 ? tex->finish.caustics : it->caustics;
     m->opaque = map >= 0 ? w->maps[map].opaque : pigment_is_opaque(&tex->pigment);
     m->no_shadow = in->no_shadow;
     m->no_image = in->no_image;
@@ -364,6 +368,7 @@ static int triangle_record(Vec3 a, Vec3 c1, Vec3 c2, int material, int first_poi
     p->noutlines = 1;
     p->smooth_normals = -1;
     p->uv = -1;
+    p->vertex_materials = -1;
     p->material = material;
     pts[0] = a;
     pts[1] = c1;
@@ -449,6 +454,7 @@ static int add_polygon(Builder *b, const Vec3 *pts, int n, const int *starts, in
     p->noutlines = noutlines;
     p->smooth_normals = -1;
     p->uv = -1;
+    p->vertex_materials = -1;
     p->material = material;
     for (int k = 0; boxed && k < noutlines; k++) {
         OutlineBox box = { pts[starts[k]], pts[starts[k]] };
@@ -494,6 +500,35 @@ static int attach_uv(Builder *b, int npolygons_before, const Vec3 uv[3])
     w->polygons[w->npolygons - 1].uv = w->nuvs;
     for (int i = 0; i < 3; i++)
         w->uvs[w->nuvs++] = uv[i];
+    return 0;
+}
+
+/* A face with a texture per vertex, its three materials m[0..2]: POV-Ray
+ * blends the three textures' shaded colours by the point's place in the
+ * face (Mesh::Determine_Textures), which the shading and the shadow rays'
+ * filter do from these (pigment.h). Kept where the three are plain
+ * textures; a texture_map among them (which the parser reports) leaves
+ * the face with the first vertex's. The face's own material, which says
+ * whether it can let light through and holds the object's interior, is
+ * the first see-through one of the three. Returns 0, or -1 on allocation
+ * failure. */
+static int attach_vertex_materials(Builder *b, int npolygons_before, const int m[3])
+{
+    World *w = b->w;
+    if (w->npolygons == npolygons_before)
+        return 0; /* degenerate: no face */
+    for (int i = 0; i < 3; i++)
+        if (w->materials[m[i]].map >= 0)
+            return 0;
+    if (GROW(b, vertex_materials, cap_vertex_materials, w->nvertex_materials + 3))
+        return -1;
+    Polygon *p = &w->polygons[w->npolygons - 1];
+    p->vertex_materials = w->nvertex_materials;
+    for (int i = 0; i < 3; i++) {
+        w->vertex_materials[w->nvertex_materials++] = m[i];
+        if (w->materials[p->material].opaque && !w->materials[m[i]].opaque)
+            p->material = m[i];
+    }
     return 0;
 }
 
@@ -683,6 +718,9 @@ static int faces_fill_in_parallel(const Builder *b, const SceneObject *o, int ma
     for (int i = 0; i < o->u.mesh.ntextures; i++)
         if (builds_uv(b, face_material[i]))
             return 0;
+    for (int f = 0; f < o->u.mesh.nfaces; f++)
+        if (o->u.mesh.faces[f].texture2 >= 0)
+            return 0; /* a texture per vertex: attach_vertex_materials, face by face */
     return 1;
 }
 
@@ -802,7 +840,14 @@ static int flatten_mesh_faces(Builder *b, const SceneObject *o, const Inherited 
         int m = (face->texture >= 0 && face->texture < nt) ? face_material[face->texture] : material;
         int before = b->w->npolygons;
         rc = add_triangle(b, v[0], v[1], v[2], smooth ? n : NULL, m);
-        if (rc == 0 && builds_uv(b, m)) {
+        int needs_uv = builds_uv(b, m);
+        if (rc == 0 && face->texture >= 0 && face->texture2 >= 0 && face->texture2 < nt && face->texture3 >= 0 &&
+            face->texture3 < nt) {
+            const int vm[3] = { m, face_material[face->texture2], face_material[face->texture3] };
+            needs_uv |= builds_uv(b, vm[1]) || builds_uv(b, vm[2]);
+            rc = attach_vertex_materials(b, before, vm);
+        }
+        if (rc == 0 && needs_uv) {
             Vec3 uv[3];
             for (int i = 0; i < 3; i++) {
                 int k = face->uv[i];
@@ -919,8 +964,8 @@ static int count_mesh_uses(Builder *b, const SceneObject *o, int depth)
 /* Mesh o placed as `in` says, as an instance of its prototype: its
  * materials made as flatten_mesh makes them (slot 0 `material`, slot
  * 1 + i its texture i's). A mesh placed once, or whose materials read uv
- * coordinates (kept per polygon, in world-space polygons only), is
- * flattened. */
+ * coordinates or whose faces have a texture per vertex (both kept per
+ * polygon, in world-space polygons only), is flattened. */
 static int instance_mesh(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
     World *w = b->w;
@@ -936,6 +981,9 @@ static int instance_mesh(Builder *b, const SceneObject *o, const Inherited *in, 
     int shared = o->u.mesh.nfaces >= INSTANCE_MIN_FACES && b->use_count[h] >= 2 && !uses_uv(w, material);
     for (int i = 0; shared && i < nt; i++)
         shared = !uses_uv(w, face_material[i]);
+    /* a texture per vertex (World.vertex_materials) is kept per world polygon */
+    for (int f = 0; shared && f < o->u.mesh.nfaces; f++)
+        shared = o->u.mesh.faces[f].texture2 < 0 && o->u.mesh.faces[f].texture3 < 0;
     if (!shared) {
         int rc = flatten_mesh_faces(b, o, in, material, face_material);
         free(face_material);
@@ -1314,6 +1362,7 @@ void world_free(World *w)
     free(w->outline_box);
     free(w->vertex_normals);
     free(w->uvs);
+    free(w->vertex_materials);
     if (w->sky)
         free(w->sky->pigments);
     free(w->sky);

@@ -312,23 +312,32 @@ double intersect_plane(const InfinitePlane *pl, Vec3 org, Vec3 dir)
     return t > 0.0 ? t : -1.0;
 }
 
-Vec3 polygon_shading_normal(const World *w, const Polygon *p, Vec3 q)
+int polygon_barycentric(const World *w, const Polygon *p, Vec3 q, double b[3])
 {
-    if (p->smooth_normals < 0)
-        return p->normal;
-    /* Barycentric weights from sub-triangle areas in the projection; this is
-     * the same interpolation POV-Ray's smooth triangles use, written plainly. */
+    /* From sub-triangle areas in the projection: the weights POV-Ray's
+     * smooth triangles and mesh faces compute (Calculate_Smooth_T), written
+     * plainly. */
     const Vec3 *v = &w->points[p->first_point];
-    const Vec3 *n = &w->vertex_normals[p->smooth_normals];
     int iu = p->axis_u, iv = p->axis_v;
     double qu = comp(q, iu), qv = comp(q, iv);
     double area = edge_side(comp(v[0], iu), comp(v[0], iv), comp(v[1], iu), comp(v[1], iv), comp(v[2], iu), comp(v[2], iv));
     if (area == 0.0)
+        return 0;
+    b[0] = edge_side(comp(v[1], iu), comp(v[1], iv), comp(v[2], iu), comp(v[2], iv), qu, qv) / area;
+    b[1] = edge_side(comp(v[2], iu), comp(v[2], iv), comp(v[0], iu), comp(v[0], iv), qu, qv) / area;
+    b[2] = 1.0 - b[0] - b[1];
+    return 1;
+}
+
+Vec3 polygon_shading_normal(const World *w, const Polygon *p, Vec3 q)
+{
+    if (p->smooth_normals < 0)
         return p->normal;
-    double b0 = edge_side(comp(v[1], iu), comp(v[1], iv), comp(v[2], iu), comp(v[2], iv), qu, qv) / area;
-    double b1 = edge_side(comp(v[2], iu), comp(v[2], iv), comp(v[0], iu), comp(v[0], iv), qu, qv) / area;
-    double b2 = 1.0 - b0 - b1;
-    Vec3 r = v3_add(v3_add(v3_scale(n[0], b0), v3_scale(n[1], b1)), v3_scale(n[2], b2));
+    const Vec3 *n = &w->vertex_normals[p->smooth_normals];
+    double b[3];
+    if (!polygon_barycentric(w, p, q, b))
+        return p->normal;
+    Vec3 r = v3_add(v3_add(v3_scale(n[0], b[0]), v3_scale(n[1], b[1])), v3_scale(n[2], b[2]));
     double len = v3_length(r);
     return len > 0.0 ? v3_scale(r, 1.0 / len) : p->normal;
 }

@@ -89,5 +89,8 @@ int outline_contains(const Vec3 *pts, int n, int iu, int iv, double qu, double q
 /* The shading normal of p at q: the plane normal, or the interpolated
  * vertex normal of a smooth triangle. Not yet flipped toward the viewer. */
 Vec3 polygon_shading_normal(const World *w, const Polygon *p, Vec3 q);
+/* The barycentric weights b[0..2] of point q (in the plane) in triangle p,
+ * one per point; 0 when the triangle has no area in its projection. */
+int polygon_barycentric(const World *w, const Polygon *p, Vec3 q, double b[3]);
 
 #endif

@@ -60,6 +60,10 @@ typedef struct {
     const void *interior_key;
     double fade_distance, fade_power;
     RGB fade_colour;
+    /* POV-Ray's fake caustics (0: none): light through a see-through
+     * surface of it is multiplied by 1 + |cos|^caustics, cos between the
+     * surface's normal and the shadow ray (ComputeShadowTexture). */
+    double caustics;
     int opaque;           /* filter == transmit == 0 everywhere: blocks light fully */
     int no_shadow, no_image, no_reflection, double_illuminate;
     int hollow;           /* fog goes on inside it (POV-Ray's hollow) */
@@ -79,6 +83,8 @@ typedef struct {
     int smooth_normals;   /* index of 3 normals in World.vertex_normals, or -1 */
     int uv;               /* index of the uv of its first 3 points in World.uvs, or -1
                              (kept only where a uv_mapping pigment needs it) */
+    int vertex_materials; /* index of its 3 points' materials in World.vertex_materials, or -1:
+                             a face with a texture per vertex, blended (pigment.h) */
     int material;
     Vec3 bbox_min, bbox_max;
 } Polygon;
@@ -160,6 +166,8 @@ typedef struct {
     Vec3 *vertex_normals;
     int nuvs;
     Vec3 *uvs;            /* (u, v, 0) */
+    int nvertex_materials;
+    int *vertex_materials; /* per face with a texture per vertex, its 3 materials (plain textures) */
     int nplanes;
     InfinitePlane *planes;
     int nmaterials;

@@ -11,6 +11,7 @@
 #include <math.h>
 
 #include "convert.h"
+#include "intersect.h"
 #include "noise.h"
 #include "normal.h"
 
@@ -610,9 +611,44 @@ SurfaceTexture material_plain_texture_at(const World *w, const Material *m, int 
     return t;
 }
 
+/* A face with a texture per vertex (POV-Ray's Mesh::Determine_Textures):
+ * its three plain textures, weighed by the point's barycentric weights
+ * (normalised by their sum, as POV-Ray does); one whose weight is below
+ * adc_bailout is left out and the others keep theirs (ComputeTextureColour
+ * and ComputeShadowColour skip it), so near a vertex the weights sum to a
+ * little less than 1. Each is shaded whole and the shaded colours blended,
+ * as a texture_map's are. */
+static int vertex_textures_at(const World *w, int polygon, Vec3 world_point, const NormalAsk *ask,
+                              SurfaceTexture out[MAX_SURFACE_TEXTURES])
+{
+    const Polygon *p = &w->polygons[polygon];
+    double b[3];
+    if (!polygon_barycentric(w, p, world_point, b))
+        b[0] = 1.0, b[1] = b[2] = 0.0;
+    double sum = b[0] + b[1] + b[2];
+    int n = 0;
+    for (int i = 0; i < 3; i++) {
+        double weight = b[i] / sum;
+        if (weight < w->adc_bailout)
+            continue;
+        const Material *m = &w->materials[w->vertex_materials[p->vertex_materials + i]];
+        out[n] = material_plain_texture_at(w, m, polygon, world_point, ask ? ask->normal : v3(0, 0, 0),
+                                           ask && ask->perturb);
+        out[n++].weight = weight;
+    }
+    if (n == 0) { /* adc_bailout above a third: POV-Ray shades with no texture, black */
+        out[0] = material_plain_texture_at(w, &w->materials[p->material], polygon, world_point,
+                                           ask ? ask->normal : v3(0, 0, 0), 0);
+        out[n++].weight = 0.0;
+    }
+    return n;
+}
+
 static int textures_at(const World *w, const Material *m, int polygon, Vec3 world_point, const NormalAsk *ask,
                        SurfaceTexture out[MAX_SURFACE_TEXTURES])
 {
+    if (polygon >= 0 && w->polygons[polygon].vertex_materials >= 0)
+        return vertex_textures_at(w, polygon, world_point, ask, out);
     if (m->map < 0) {
         out[0] = material_plain_texture_at(w, m, polygon, world_point, ask ? ask->normal : v3(0, 0, 0),
                                            ask && ask->perturb);
@@ -643,7 +679,7 @@ RGB material_filter_at(const World *w, const Material *m, int polygon, Vec3 worl
     const Colour *c = &t[0].colour;
     RGB through = { c->r * c->filter + c->transmit, c->g * c->filter + c->transmit, c->b * c->filter + c->transmit };
     *blocks = c->filter == 0.0 && c->transmit == 0.0;
-    if (n == 1)
+    if (n == 1 && t[0].weight == 1.0)
         return through;
     /* POV-Ray's ComputeShadowTexture for each texture, blended by weight */
     through.r *= t[0].weight;

@@ -67,8 +67,12 @@ typedef struct {
  * `polygon` (-1: a plane): for a plain texture itself (weight 1); for a
  * texture_map, at each level the two entries around the pattern's value
  * there, or the one it falls on (POV-Ray's ComputeOneTextureColour and
- * Search_Blend_Map). Returns how many, 1 to MAX_SURFACE_TEXTURES; their
- * weights sum to 1. */
+ * Search_Blend_Map); for a mesh face with a texture per vertex
+ * (Polygon.vertex_materials, whatever m), the three vertices' textures by
+ * the point's place in the face (Mesh::Determine_Textures). Returns how
+ * many, 1 to MAX_SURFACE_TEXTURES; their weights sum to 1, or, for a face
+ * with a texture per vertex, to a little less where one's weight is below
+ * adc_bailout and left out, as POV-Ray leaves it. */
 int material_textures_at(const World *w, const Material *m, int polygon, Vec3 world_point,
                          SurfaceTexture out[MAX_SURFACE_TEXTURES]);
 /* A plain texture (m->map < 0) at a point, with its shading normal:

@@ -214,6 +214,7 @@ static void *worker_main(void *arg)
         failed = shadow_context_init(&ctx.shadow, &ctx.tracer, job->world, job->grid, shadows, opt->verify,
                                      opt->pixel_coherence && !opt->aa.method) ||
                  (opt->aov && aov_pixel_init(&aov, job->world->nlights, shadows->decider->blind));
+        ctx.shadow.perturb_normals = ctx.quality.normal;
     }
     if (failed) {
         aov_pixel_free(&aov);

@@ -11,6 +11,7 @@
 #include "area_diffuse.h"
 #include "area_light.h"
 #include "clock.h"
+#include "fade.h"
 #include "fog.h"
 #include "intersect.h"
 #include "light.h"
@@ -632,7 +633,7 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
     /* The segment ray->org -> hit and, where the method keeps them, a row
      * of light states for the hit. */
     LightState *row = shadow_segment_begin(&ctx->shadow, &hit, ray->from.kind == HIT_NONE);
-    Segment seg = { ray->org, ray->dir, &ray->from, ray->state, row };
+    Segment seg = { ray->org, ray->dir, &ray->from, ray->state, row, ray->inside.key, ray->inside.n };
     ctx->depth++;
     shade_hit(ctx, ray, &hit, &seg, weight, level, out);
     ctx->depth--;
@@ -704,19 +705,8 @@ static void texture_colour(ShadeContext *ctx, const Ray *ray, const Hit *hit, co
         Radiance rfr = { 0, 0, 0, 0 };
         tir = trace_refraction(ctx, ray, hit, state, m, t->normal, raw, weight * w1, level, &rfr);
         RGB attc = { 1.0, 1.0, 1.0 };
-        if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON) {
-            if (m->fade_power >= 1000) {
-                double depth = hit->t / m->fade_distance;
-                attc.r = exp(-(1.0 - m->fade_colour.r) * depth);
-                attc.g = exp(-(1.0 - m->fade_colour.g) * depth);
-                attc.b = exp(-(1.0 - m->fade_colour.b) * depth);
-            } else {
-                double a = 1.0 + pow(hit->t / m->fade_distance, m->fade_power);
-                attc.r = m->fade_colour.r + (1.0 - m->fade_colour.r) / a;
-                attc.g = m->fade_colour.g + (1.0 - m->fade_colour.g) / a;
-                attc.b = m->fade_colour.b + (1.0 - m->fade_colour.b) / a;
-            }
-        }
+        if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON)
+            attc = interior_fade(m, hit->t);
         if (tir) {
             out->r += attc.r * rfr.r;
             out->g += attc.g * rfr.g;
@@ -775,7 +765,7 @@ static void shade_textures(ShadeContext *ctx, const Ray *ray, const Hit *hit, co
         direct_light(ctx, m, hit, seg, ray->dir, normal, lit, n);
     else
         skip_all_lights(ctx, hit, seg);
-    if (n == 1) {
+    if (n == 1 && lit[0].weight == 1.0) {
         texture_colour(ctx, ray, hit, state, m, raw, weight, level, &lit[0], out);
         return;
     }
@@ -799,7 +789,8 @@ static void lit_texture(LitTexture *t, const SurfaceTexture *s)
     t->normal = s->normal;
 }
 
-/* A texture_map's hit: shaded with the textures around its value here. Apart
+/* A texture_map's hit: shaded with the textures around its value here (or
+ * a mesh face's with a texture per vertex: with the three, pigment.h). Apart
  * (never inlined), so that plain textures' hits, which recurse through
  * shade_hit as deep as the ray tree, keep a small stack frame. */
 __attribute__((noinline)) static void shade_map_hit(ShadeContext *ctx, const Ray *ray, const Hit *hit,
@@ -826,7 +817,9 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
                                        : w->planes[hit.index].normal;
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
-    if (m->map >= 0) {
+    /* (an instance's polygon has no materials per vertex: flatten.c instances no such mesh) */
+    if (m->map >= 0 ||
+        (hit.kind == HIT_POLYGON && hit.index < w->npolygons && w->polygons[hit.index].vertex_materials >= 0)) {
         if (ctx->aov && ctx->depth == 1)
             aov_record_hit(ctx->aov, hit.t, hit.point, raw); /* a map's textures have normals each */
         shade_map_hit(ctx, ray, &hit, seg, m, raw, raw, weight, level, out);

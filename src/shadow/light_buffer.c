@@ -36,7 +36,7 @@
  * tests/test_agreement.c holds the light buffer to the shadow ray and a
  * long-double reference on random soups (shared edges, coplanar and
  * transparent polygons, lights in planes), its cells split at once too;
- * tests/light-buffer.sh runs --verify-shadows on every scene. */
+ * tests/shadows.sh runs --verify-shadows on every scene with every method. */
 #include "light_buffer.h"
 
 #include <stdlib.h>
@@ -221,8 +221,9 @@ static LbFootprint points_footprint(const LightBuffers *lbs, const Vec3 *pts, in
 #define LB_TAKE(aa, bb, cc)                                                                                           \
     do {                                                                                                              \
         double u_ = (bb) / (aa), v_ = (cc) / (aa);                                                                    \
-        box[0] = fmin(box[0], u_), box[1] = fmax(box[1], u_);                                                         \
-        box[2] = fmin(box[2], v_), box[3] = fmax(box[3], v_);                                                         \
+        /* (no NaN here: aa >= clip > 0 and the points are finite) */                                                \
+        box[0] = u_ < box[0] ? u_ : box[0], box[1] = u_ > box[1] ? u_ : box[1];                                       \
+        box[2] = v_ < box[2] ? v_ : box[2], box[3] = v_ > box[3] ? v_ : box[3];                                       \
         any = 1;                                                                                                      \
     } while (0)
     for (int i = 0; i < n; i++) {
@@ -240,7 +241,7 @@ static LbFootprint points_footprint(const LightBuffers *lbs, const Vec3 *pts, in
     if (!any)
         return (LbFootprint){ INFINITY, -INFINITY, INFINITY, -INFINITY }; /* wholly behind: on no cell */
     for (int k = 0; k < 4; k++)
-        box[k] = fmin(fmax(box[k], -2.0), 2.0);
+        box[k] = box[k] < -2.0 ? -2.0 : box[k] > 2.0 ? 2.0 : box[k];
     double pad = 16.0 * lbs->margin / near + LB_WIDEN + LB_FLOAT_PAD;
     LbFootprint f = { round_down(box[0] - pad), round_up(box[1] + pad), round_down(box[2] - pad),
                       round_up(box[3] + pad) };
@@ -337,8 +338,10 @@ static LbShape polygon_shape(const LightBuffers *lbs, const Polygon *p, Vec3 at,
     }
     /* the lines' rounding to float: below 6e-8 (|a u| + |b v| + |c|) <= 6e-8 * 14 */
     const double rounding = 1e-6;
-    sh.out = round_up(4.0 * lbs->margin / near + LB_WIDEN + rounding);
-    sh.in = round_up(4.0 * lbs->cover_margin / near + LB_WIDEN + rounding);
+    sh.out = round_up(4.0 * lbs->margin / near + LB_WIDEN + rounding + LB_SHAPE_FLOAT_PAD);
+    sh.in = round_up(4.0 * lbs->cover_margin / near + LB_WIDEN + rounding + LB_SHAPE_FLOAT_PAD);
+    for (int i = m; i < 4; i++)
+        sh.c[i] = 1.0f; /* no edge: every direction inside */
     sh.n = (uint8_t)m;
     return sh;
 }
@@ -560,6 +563,7 @@ static size_t cell_bytes(size_t n, size_t nshapes)
 }
 
 #define CHILDREN_BYTES (LB_SUB * LB_SUB * sizeof(_Atomic(LbCell *)))
+_Static_assert(LB_SUB * LB_SUB <= 16, "build_children keeps a candidate's children in 16 bits");
 
 /* Takes `bytes` of the budget: 0, or -1 when it would go past it. */
 static int budget_take(LightBuffers *lbs, size_t bytes)
@@ -637,7 +641,7 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
         free(renumber);
         return NULL;
     }
-    LbCell *c = aligned_alloc(16, (bytes + 15) / 16 * 16);
+    LbCell *c = shared_arena_alloc(&lbs->arena, bytes);
     if (!c) {
         atomic_fetch_sub(&lbs->bytes, bytes);
         free(renumber);
@@ -689,7 +693,7 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
      * candidates wider than the cells, is not split again) */
     int shorter = !parent || 4 * n < 3 * (size_t)parent->n;
     if (n > lbs->split_at && shorter && at->level < LB_LEVELS - 1 && budget_take(lbs, CHILDREN_BYTES) == 0) {
-        child = malloc(CHILDREN_BYTES);
+        child = shared_arena_alloc(&lbs->arena, CHILDREN_BYTES);
         if (!child)
             atomic_fetch_sub(&lbs->bytes, CHILDREN_BYTES);
         for (int k = 0; child && k < LB_SUB * LB_SUB; k++)
@@ -703,23 +707,10 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
     return c;
 }
 
-static void cell_free(LbCell *c)
-{
-    if (!c)
-        return;
-    _Atomic(LbCell *) *child = c->child;
-    if (child) {
-        for (int k = 0; k < LB_SUB * LB_SUB; k++)
-            cell_free(atomic_load_explicit(&child[k], memory_order_relaxed));
-        free(child);
-    }
-    free(c);
-}
-
 /* The children of split cell c (`at`: any one of them) not yet built:
  * each the candidates of c whose footprints overlap it (footprint()
  * padded them for the children's widening and margins), in c's order,
- * gathered in one pass over c's list, then published. A child that the
+ * gathered in two passes over c's list (the lists' lengths, then the lists), then published. A child that the
  * budget or memory stops stays unbuilt (its parent's list serves). The
  * lists depend on c's alone, so which thread builds them does not matter. */
 static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c);
@@ -735,24 +726,50 @@ static void build_children(LightBuffers *lbs, const LightBuffer *lb, const LbCel
     unsigned wanted = 0; /* the slots to build, bit b * LB_SUB + a */
     for (int k = 0; k < LB_SUB * LB_SUB; k++)
         wanted |= (unsigned)(atomic_load_explicit(&c->child[k], memory_order_acquire) == NULL) << k;
+    /* Two passes: which wanted children each candidate's footprint
+     * overlaps (and so how long each child's list is), then the lists
+     * filled, each allocated once at its length. */
     CandidateList l[LB_SUB * LB_SUB];
     memset(l, 0, sizeof l);
-    int failed = 0;
+    uint16_t *over = malloc(sizeof *over * (c->n > 0 ? c->n : 1));
+    int failed = !over;
+    size_t count[LB_SUB * LB_SUB] = { 0 };
     for (uint32_t k = 0; k < c->n && !failed; k++) {
         const LbBlock *bl = &c->block[k / LB_BLOCK];
         uint32_t j = k % LB_BLOCK;
-        const LbFootprint f = { bl->u0[j], bl->u1[j], bl->v0[j], bl->v1[j] };
         unsigned mu = 0, mv = 0;
         for (int a = 0; a < LB_SUB; a++) {
-            mu |= (unsigned)!(f.u0 > u1[a] || f.u1 < u0[a]) << a;
-            mv |= (unsigned)!(f.v0 > v1[a] || f.v1 < v0[a]) << a;
+            mu |= (unsigned)!(bl->u0[j] > u1[a] || bl->u1[j] < u0[a]) << a;
+            mv |= (unsigned)!(bl->v0[j] > v1[a] || bl->v1[j] < v0[a]) << a;
         }
-        Candidate cand = { lb_plane_at(c, k), f, bl->near[j], c->item[k], c->shape_at[k] };
-        for (int b = 0; b < LB_SUB && !failed; b++)
-            for (int a = 0; a < LB_SUB && !failed; a++)
-                if ((mu >> a & 1) && (mv >> b & 1) && (wanted >> (b * LB_SUB + a) & 1))
-                    failed = candidate_push(&l[b * LB_SUB + a], &cand);
+        unsigned m = 0;
+        for (int b = 0; b < LB_SUB; b++)
+            if (mv >> b & 1)
+                m |= mu << (b * LB_SUB);
+        over[k] = (uint16_t)(m & wanted);
+        for (unsigned bits = over[k]; bits; bits &= bits - 1)
+            count[__builtin_ctz(bits)]++;
     }
+    for (int s = 0; s < LB_SUB * LB_SUB && !failed; s++) {
+        if (count[s] == 0)
+            continue;
+        l[s].c = malloc(sizeof *l[s].c * count[s]);
+        l[s].cap = count[s];
+        failed = !l[s].c;
+    }
+    for (uint32_t k = 0; k < c->n && !failed; k++) {
+        if (!over[k])
+            continue;
+        const LbBlock *bl = &c->block[k / LB_BLOCK];
+        uint32_t j = k % LB_BLOCK;
+        const Candidate cand = { lb_plane_at(c, k), { bl->u0[j], bl->u1[j], bl->v0[j], bl->v1[j] }, bl->near[j],
+                                 c->item[k], c->shape_at[k] };
+        for (unsigned bits = over[k]; bits; bits &= bits - 1) {
+            CandidateList *to = &l[__builtin_ctz(bits)];
+            to->c[to->n++] = cand;
+        }
+    }
+    free(over);
     for (int s = 0; s < LB_SUB * LB_SUB; s++) {
         if (!failed && (wanted >> s & 1)) {
             CellAt child_at = { first.face, first.level, first.i + s % LB_SUB, first.j + s / LB_SUB };
@@ -772,8 +789,9 @@ static CellAt cell_at(const LbSpot *spot, int level)
     return at;
 }
 
-/* Publishes a top cell built into *slot, unless another thread was first:
- * then that one's is kept and this one freed. Returns the cell in place. */
+/* Publishes a cell built into *slot, unless another thread was first: then
+ * that one's is kept, and this one's memory stays unused in the arena
+ * (counted as taken) until the buffers go. Returns the cell in place. */
 static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c)
 {
     LbCell *expected = NULL;
@@ -782,8 +800,6 @@ static LbCell *publish(LightBuffers *lbs, _Atomic(LbCell *) *slot, LbCell *c)
         atomic_fetch_add(&lbs->candidates, c->n);
         return c;
     }
-    atomic_fetch_sub(&lbs->bytes, cell_bytes(c->n, c->nshapes) + (c->child ? CHILDREN_BYTES : 0));
-    cell_free(c);
     return expected;
 }
 
@@ -842,6 +858,9 @@ int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double
     atomic_init(&lbs->candidates, 0);
     atomic_init(&lbs->full, 0);
     atomic_init(&lbs->exhausted, 0);
+    if (shared_arena_init(&lbs->arena, LB_ARENA_CHUNK))
+        return -1;
+    lbs->arena_made = 1;
     double size = 0.0;
     if (w->bounds_min.x <= w->bounds_max.x)
         size = fmax(v3_max_abs(w->bounds_min), v3_max_abs(w->bounds_max));
@@ -893,9 +912,6 @@ void light_buffers_free(LightBuffers *lbs)
         LightBuffer *lb = lbs->light[i];
         if (!lb)
             continue;
-        for (int f = 0; f < 6; f++)
-            for (int k = 0; k < LB_TOP * LB_TOP; k++)
-                cell_free(atomic_load_explicit(&lb->top[f][k], memory_order_relaxed));
         free(lb->plane_side);
         free(lb);
     }
@@ -903,4 +919,7 @@ void light_buffers_free(LightBuffers *lbs)
     free(lbs->item_of);
     lbs->light = NULL;
     lbs->item_of = NULL;
+    if (lbs->arena_made)
+        shared_arena_free(&lbs->arena); /* every cell */
+    lbs->arena_made = 0;
 }

@@ -33,7 +33,7 @@
  * walking the hierarchy with its pyramid; a cell of more than LB_SPLIT_AT
  * candidates above the last of LB_LEVELS levels is split into LB_SUB x
  * LB_SUB children, each built from its parent's list (the candidates whose
- * footprints overlap it), all together in one pass over that list when a
+ * footprints overlap it), all together in two passes over that list when a
  * point first asks for one of them. Cells are shared by the
  * render's threads: each is built by one and published atomically (a
  * thread that loses the race frees its copy), and read-only after that;
@@ -49,6 +49,7 @@
 #include <stdint.h>
 
 #include "bvh.h"
+#include "shared_arena.h"
 #include "world.h"
 
 #define LB_TOP 8       /* cells per side of a face at the top level */
@@ -77,10 +78,12 @@ typedef struct {
  * coordinates (a u + b v + c, (a, b) of unit length, positive inside),
  * for triangles and convex polygons of up to four points that lie in
  * front of the face (n edges; 0: none kept, the shadow ray's test
- * decides). A direction more than `out` outside an edge is not the
- * polygon's (the footprint's margins); one at least `in` inside every edge
- * crosses the polygon at least the cover's margin from its border
- * (light_buffer.c). */
+ * decides; the lines past the n-th are 0 u + 0 v + 1, which every
+ * direction is inside of). A direction more than `out` outside an edge is
+ * not the polygon's (the footprint's margins); one at least `in` inside
+ * every edge crosses the polygon at least the cover's margin from its
+ * border (light_buffer.c). Both margins hold LB_SHAPE_FLOAT_PAD for
+ * lb_shape_classify's float arithmetic. */
 typedef struct {
     float a[4], b[4], c[4];
     float in, out;
@@ -91,20 +94,50 @@ typedef struct {
 
 enum { LB_OUTSIDE, LB_UNSURE, LB_INSIDE };
 
-/* Where direction (u, v) of the face lies against shape s. */
-static inline int lb_shape_classify(const LbShape *s, double u, double v)
+/* lb_shape_classify's error: a line's value a u + b v + c evaluated in
+ * float, at the direction (u, v) rounded to float (|u|, |v| <= 1 on the
+ * face), against the same in exact arithmetic. |a|, |b| <= 1 + 2^-24 and
+ * |c| <= 4 (|a| + |b|) (the shape's points lie within 4 of the axis): the
+ * terms sum to at most 7.2, so the three roundings cost below
+ * 3 2^-24 7.2 = 1.3e-6, and u's and v's own 2^-24 below 1.2e-7 more. */
+#define LB_SHAPE_FLOAT_PAD 2e-6
+
+/* Where direction (u, v) of the face (rounded to float) lies against
+ * shape s: outside by more than s->out - LB_SHAPE_FLOAT_PAD of some edge
+ * in exact arithmetic, inside by at least s->in - LB_SHAPE_FLOAT_PAD of
+ * every edge, or unsure. lb_shape_classify_plain one edge at a time;
+ * lb_shape_classify the same operations with SSE where the compiler has
+ * it (tests/test_agreement.c holds them to each other and to the bound). */
+static inline int lb_shape_classify_plain(const LbShape *s, float u, float v)
 {
     if (s->n == 0)
         return LB_UNSURE;
-    int inside = 1;
-    for (int k = 0; k < s->n; k++) {
-        double d = (double)s->a[k] * u + (double)s->b[k] * v + (double)s->c[k];
-        if (d < -(double)s->out)
-            return LB_OUTSIDE;
-        inside &= d >= (double)s->in;
+    int outside = 0, inside = 1;
+    for (int k = 0; k < 4; k++) {
+        float d = (s->a[k] * u + s->b[k] * v) + s->c[k];
+        outside |= d < -s->out;
+        inside &= d >= s->in;
     }
-    return inside ? LB_INSIDE : LB_UNSURE;
+    return outside ? LB_OUTSIDE : inside ? LB_INSIDE : LB_UNSURE;
 }
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+
+static inline int lb_shape_classify(const LbShape *s, float u, float v)
+{
+    if (s->n == 0)
+        return LB_UNSURE;
+    __m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(s->a), _mm_set1_ps(u)),
+                                     _mm_mul_ps(_mm_loadu_ps(s->b), _mm_set1_ps(v))),
+                          _mm_loadu_ps(s->c));
+    if (_mm_movemask_ps(_mm_cmplt_ps(d, _mm_set1_ps(-s->out))))
+        return LB_OUTSIDE;
+    return _mm_movemask_ps(_mm_cmpge_ps(d, _mm_set1_ps(s->in))) == 0xF ? LB_INSIDE : LB_UNSURE;
+}
+#else
+static inline int lb_shape_classify(const LbShape *s, float u, float v) { return lb_shape_classify_plain(s, u, v); }
+#endif
 
 /* Candidates are looked at LB_BLOCK at a time (lb_block_mask), their
  * near bounds and footprints side by side; a list is padded to a whole
@@ -171,7 +204,12 @@ typedef struct LightBuffers {
     atomic_uint_fast64_t cells, candidates; /* cells published, and their list entries */
     atomic_uint_fast64_t full; /* cells not built for the budget */
     atomic_int exhausted;   /* 1: the budget is spent, no more cells are built */
+    SharedArena arena;      /* the cells' memory, all of it freed with the buffers */
+    int arena_made;
 } LightBuffers;
+
+/* The cells' arena's chunks: the least size that asks for huge pages. */
+#define LB_ARENA_CHUNK ((size_t)4 << 20)
 
 /* Buffers for the point lights of w (not parallel ones; area lights'
  * samples are not asked of them): empty, filled as points ask. budget:

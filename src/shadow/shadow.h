@@ -35,6 +35,11 @@ typedef struct {
     const Hit *from;              /* P1's surface (HIT_NONE: the eye) */
     const LightState *from_state; /* per light at P1; NULL: the eye's */
     LightState *state;            /* per light at P2, filled by the method; NULL: not kept */
+    /* The interiors the segment runs inside (the ray's, innermost last;
+     * may be 0 with NULL): POV-Ray's shadow ray starts inside them, which
+     * decides where it fades (shadow_fold_filtered). */
+    const void *const *inside;
+    int ninside;
 } Segment;
 
 typedef struct {
@@ -103,6 +108,7 @@ typedef struct {
     int instance;
     unsigned tries, hits;      /* cache tries in this tile and the hits among them */
     unsigned skipped;          /* queries the cache sat out since its last try */
+    int lit_last;              /* 1: the light's last decision here found no polygon blocking it fully */
 } LightCache;
 
 /* A see-through polygon a shadow ray met, at distance t. */
@@ -141,6 +147,7 @@ typedef struct ShadowContext {
     LightCache *light_cache;   /* cache method: per light, the last opaque blocker and how often it pays */
     FilteredHit *filtered;     /* the shadow ray's see-through polygons, one slot for each of the world's */
     int nfiltered;
+    int perturb_normals;       /* the render perturbs normals (+Q8): so do fake caustics (shadow_conventional.c) */
     int verify;                /* 1: check every decision against the shadow ray (--verify-shadows);
                                   2: and against the long-double reference (--verify-reference) */
     long double reference_eps; /* the reference's margin of ties */

@@ -12,8 +12,12 @@
  * 36 hits in 380,973 queries on make-mesh.sh 10^6 8 at 320x240, shadow
  * testing 7% slower than the plain shadow ray), the light's cache sits
  * out all but one query in CACHE_PROBE_EVERY, and those probes let it
- * back in when the hits return. Which queries try it changes how a
- * decision is reached, never the decision. */
+ * back in when the hits return. And a light's cache is not tried right
+ * after a decision that found no polygon blocking the light: lit points
+ * mostly neighbour lit points, where every try misses (make-mesh 10^5 x 4
+ * at 640x480: shadow testing 1.5% fewer instructions, and the cache hits
+ * 50,086 -> 63,064, the tally no longer diluted by lit points). Which
+ * queries try it changes how a decision is reached, never the decision. */
 #include "shadow.h"
 
 #include "intersect.h"
@@ -34,12 +38,11 @@ static int cache_worth_trying(LightCache *c)
     return 1;
 }
 
-int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
+/* The try itself, out of line: the queries the cache sits out (on a big
+ * mesh nearly all) cost the checks of shadow_cached_blocker_hits alone. */
+static __attribute__((noinline)) int cached_blocker_try(ShadowContext *ctx, const ShadowQuery *q, LightCache *c,
+                                                        int pi)
 {
-    LightCache *c = &ctx->light_cache[q->light];
-    int pi = c->blocker;
-    if (pi < 0 || (q->surface->kind == HIT_POLYGON && q->surface->index == pi) || !cache_worth_trying(c))
-        return 0;
     const World *w = ctx->tracer->world;
     /* The shadow ray's own rule for a polygon edge-on to the light (an area
      * light's sample may see edge-on what blocked another sample), on the
@@ -58,6 +61,15 @@ int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
     int hit = t > trace_min_distance(q->point) && t < q->distance;
     c->hits += (unsigned)hit;
     return hit;
+}
+
+int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
+{
+    LightCache *c = &ctx->light_cache[q->light];
+    int pi = c->blocker;
+    if (pi < 0 || c->lit_last || (q->surface->kind == HIT_POLYGON && q->surface->index == pi) || !cache_worth_trying(c))
+        return 0;
+    return cached_blocker_try(ctx, q, c, pi);
 }
 
 void shadow_cache_remember(ShadowContext *ctx, const ShadowQuery *q, const RGB *light)
@@ -95,8 +107,10 @@ int shadow_cache_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *li
     if (shadow_polygons_test(ctx, q, light)) {
         ctx->stats.shadow_blocked++;
         shadow_cache_remember(ctx, q, light);
+        ctx->light_cache[q->light].lit_last = 0;
         return 1;
     }
+    ctx->light_cache[q->light].lit_last = 1;
     return 0;
 }
 

@@ -2,11 +2,14 @@
  * point toward the light, through the hierarchy (or the grid), stopped by
  * the first opaque polygon. Transparent polygons on the way filter the light
  * (POV-Ray multiplies rgb*filter + transmit of each, a texture_map's
- * textures' blended), in the order the light passes them. */
+ * textures' blended), in the order the light passes them, and fade by
+ * the way they travel inside fading interiors (shadow_fold_filtered). */
 #include "shadow.h"
 
+#include <math.h>
 #include <stdlib.h>
 
+#include "fade.h"
 #include "intersect.h"
 #include "pigment.h"
 #include "light.h"
@@ -14,14 +17,52 @@
 #define FOLD_INSERTION_MAX 16 /* see-through hits sorted by insertion up to this many */
 #define POV_SMALL_TOLERANCE 1.0e-3 /* POV-Ray's SMALL_TOLERANCE (and SHADOW_TOLERANCE) */
 
-/* Folds one blocker, hit at `at`, into the light that gets through; returns
- * 1 when the light is now fully blocked. */
-static int pass_through(const World *w, const Material *m, int polygon, const ShadowQuery *q, double t, RGB *light)
+/* What a see-through surface with POV-Ray's fake caustics lets through
+ * (ComputeShadowTexture): each texture's rgb * filter + transmit times
+ * 1 + |cos|^caustics, cos between the texture's normal and the shadow
+ * ray, blended by weight; the light brightens where the ray crosses the
+ * surface head-on. The normal is the surface's (a smooth triangle's
+ * interpolated one) turned against the ray, then perturbed by the
+ * texture's normal pattern where the render perturbs normals, as POV-Ray
+ * does (ComputeShadowColour, Perturb_Normal). */
+static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int polygon, const InfinitePlane *plane,
+                              const ShadowQuery *q, Vec3 at, int *blocks)
+{
+    const World *w = ctx->tracer->world;
+    /* polygon: its id (instance.h; an instance's normal carried out) */
+    Vec3 n = plane ? plane->normal : world_polygon_shading_normal(w, polygon, -1, at);
+    if (v3_dot(n, q->to_light) > 0.0)
+        n = v3_neg(n);
+    SurfaceTexture tx[MAX_SURFACE_TEXTURES];
+    int nt = material_textures_normals_at(w, m, plane ? -1 : world_uv_polygon(w, polygon), at, n, ctx->perturb_normals,
+                                          tx);
+    RGB through = { 0, 0, 0 };
+    *blocks = 1;
+    for (int i = 0; i < nt; i++) {
+        const Colour *c = &tx[i].colour;
+        double k = tx[i].weight * (1.0 + pow(fabs(v3_dot(tx[i].normal, q->to_light)), m->caustics));
+        through.r += k * (c->r * c->filter + c->transmit);
+        through.g += k * (c->g * c->filter + c->transmit);
+        through.b += k * (c->b * c->filter + c->transmit);
+        *blocks &= c->filter == 0.0 && c->transmit == 0.0;
+    }
+    return through;
+}
+
+/* Folds one blocker (a polygon, by its id (instance.h), or an infinite
+ * plane), hit at distance t, into the light that gets through; returns 1
+ * when the light is now fully blocked. */
+static int pass_through(const ShadowContext *ctx, const Material *m, int polygon, const InfinitePlane *plane,
+                        const ShadowQuery *q, double t, RGB *light)
 {
     int blocks = 1;
     RGB through = { 0, 0, 0 };
+    Vec3 at = v3_add(q->point, v3_scale(q->to_light, t));
     if (!m->opaque)
-        through = material_filter_at(w, m, polygon, v3_add(q->point, v3_scale(q->to_light, t)), &blocks);
+        through = m->caustics != 0.0 ? caustics_filter_at(ctx, m, polygon, plane, q, at, &blocks)
+                                     : material_filter_at(ctx->tracer->world, m,
+                                                          plane ? -1 : world_uv_polygon(ctx->tracer->world, polygon),
+                                                          at, &blocks);
     if (blocks) {
         light->r = light->g = light->b = 0.0;
         return 1;
@@ -32,16 +73,53 @@ static int pass_through(const World *w, const Material *m, int polygon, const Sh
     return 0;
 }
 
+static int segment_inside(const ShadowQuery *q, const void *key);
+static double plane_leg_start(ShadowContext *ctx, const ShadowQuery *q, double tmin, double t);
+
+/* The nearest see-through infinite plane the shadow ray passes between
+ * `from` and t (beyond tmin), or from: the planes are tested apart from the
+ * polygons, but a leg inside a fading interior starts at the last surface
+ * the light was filtered by, which may be one of them. */
+static double last_plane_between(const ShadowContext *ctx, const ShadowQuery *q, double tmin, double from, double t)
+{
+    const World *w = ctx->tracer->world;
+    for (int i = 0; i < w->nplanes; i++) {
+        const InfinitePlane *pl = &w->planes[i];
+        if ((q->surface->kind == HIT_PLANE && q->surface->index == i) || w->materials[pl->material].no_shadow)
+            continue;
+        double tp = intersect_plane(pl, q->point, q->to_light);
+        if (tp > tmin && tp > from && tp < t)
+            from = tp;
+    }
+    return from;
+}
+
 int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tmin, RGB *light)
 {
     const World *w = ctx->tracer->world;
     if (q->surface->kind == HIT_PLANE && q->surface->index == i)
         return 0;
     const InfinitePlane *pl = &w->planes[i];
-    if (w->materials[pl->material].no_shadow)
+    const Material *m = &w->materials[pl->material];
+    if (m->no_shadow)
         return 0;
     double t = intersect_plane(pl, q->point, q->to_light);
-    return t > tmin && t < q->distance && pass_through(w, &w->materials[pl->material], -1, q, t, light);
+    if (!(t > tmin && t < q->distance))
+        return 0;
+    if (pass_through(ctx, m, -1, pl, q, t, light))
+        return 1;
+    /* A plane is crossed once: the shadow ray fades at it where it starts
+     * inside its interior (under water, seen through its surface), over
+     * the leg from the last see-through polygon before it, which only the
+     * polygons in the way tell: looked up here, so that every method, which
+     * tests the planes through this function, gets the same light. */
+    if (interior_fades_shadows(m) && segment_inside(q, m->interior_key)) {
+        RGB f = interior_fade(m, t - last_plane_between(ctx, q, tmin, plane_leg_start(ctx, q, tmin, t), t));
+        light->r *= f.r;
+        light->g *= f.g;
+        light->b *= f.b;
+    }
+    return 0;
 }
 
 int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
@@ -198,9 +276,53 @@ int shadow_polygons_test_among(ShadowContext *ctx, const ShadowQuery *q, const u
     return shadow_list_end(&lw, light);
 }
 
-int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+/* The fading interiors a shadow ray is inside, kept as POV-Ray keeps them:
+ * its shadow ray is a copy of the ray that found the point, so it starts
+ * inside that ray's interiors (ComputeOneDiffuseLight), and each
+ * see-through surface it passes toggles the surface's interior, whichever
+ * way the surface faces (ComputeShadowMedia: leaves it when inside, else
+ * enters). Only interiors that fade need keeping: a key's membership
+ * changes only at its own surfaces, which all share its fade. */
+#define FADE_NESTING_MAX 32
+
+typedef struct {
+    int n;
+    const void *key[FADE_NESTING_MAX];
+} FadeInside;
+
+static void fade_inside_begin(FadeInside *in, const ShadowQuery *q)
 {
-    const World *w = ctx->tracer->world;
+    in->n = 0;
+    const Segment *seg = q->segment;
+    for (int i = 0; seg && i < seg->ninside && in->n < FADE_NESTING_MAX; i++)
+        in->key[in->n++] = seg->inside[i];
+}
+
+/* Toggles key; 1 when the ray was inside it (and has now left). Deeper
+ * nesting than FADE_NESTING_MAX interiors at once is not kept. */
+static int fade_inside_toggle(FadeInside *in, const void *key)
+{
+    for (int i = 0; i < in->n; i++)
+        if (in->key[i] == key) {
+            in->key[i] = in->key[--in->n];
+            return 1;
+        }
+    if (in->n < FADE_NESTING_MAX)
+        in->key[in->n++] = key;
+    return 0;
+}
+
+static int segment_inside(const ShadowQuery *q, const void *key)
+{
+    for (int i = 0; q->segment && i < q->segment->ninside; i++)
+        if (q->segment->inside[i] == key)
+            return 1;
+    return 0;
+}
+
+/* ctx->filtered in the order the light passes them. */
+static void sort_filtered(ShadowContext *ctx)
+{
     if (ctx->nfiltered > FOLD_INSERTION_MAX) {
         qsort(ctx->filtered, (size_t)ctx->nfiltered, sizeof *ctx->filtered, by_distance);
     } else {
@@ -217,6 +339,37 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
             ctx->filtered[j] = h;
         }
     }
+}
+
+/* Where the shadow ray's leg to a plane hit at t starts: at the last
+ * see-through polygon it filters by before t (the same rule as
+ * shadow_fold_filtered's), or at the point. With an opaque polygon in the
+ * way the light is blocked anyway: the point then. The walk leaves
+ * ctx->filtered to the polygon test that follows, which starts it afresh. */
+static double plane_leg_start(ShadowContext *ctx, const ShadowQuery *q, double tmin, double t)
+{
+    int exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
+    ShadowWalk sw = { ctx, q, -1 };
+    ctx->nfiltered = 0;
+    uint64_t tests = 0;
+    if (trace_segment_hits(ctx->tracer, q->point, q->to_light, tmin, t, exclude, HIDE_NO_SHADOW, meet_polygon, &sw,
+                           &tests))
+        return 0.0;
+    sort_filtered(ctx);
+    double last = 0.0;
+    for (int i = 0; i < ctx->nfiltered; i++)
+        if (i == 0 || ctx->filtered[i].t - last > POV_SMALL_TOLERANCE)
+            last = ctx->filtered[i].t;
+    ctx->nfiltered = 0;
+    return last;
+}
+
+int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    const World *w = ctx->tracer->world;
+    sort_filtered(ctx);
+    FadeInside inside;
+    fade_inside_begin(&inside, q);
     double last = 0.0;
     for (int i = 0; i < ctx->nfiltered; i++) {
         /* POV-Ray's shadow ray starts again at each see-through surface it
@@ -225,14 +378,27 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
          * shared edge, coplanar panes) filter once. */
         if (i > 0 && ctx->filtered[i].t - last <= POV_SMALL_TOLERANCE)
             continue;
+        double from = last; /* the point, or the last surface filtered: where this leg starts */
         last = ctx->filtered[i].t;
         uint32_t pi = ctx->filtered[i].polygon;
         const Material *m = &w->materials[world_polygon_material(w, (int)pi)];
-        if (pass_through(w, m, world_uv_polygon(w, (int)pi), q, ctx->filtered[i].t, light)) {
+        if (pass_through(ctx, m, (int)pi, NULL, q, ctx->filtered[i].t, light)) {
             /* a patterned see-through polygon blocks only where it is opaque:
              * not one for the cache, which takes a hit anywhere as blocked */
             ctx->last_blocker = -1;
             return 1;
+        }
+        /* Light that crossed a fading interior to reach this surface of
+         * it fades by the length of the leg (ComputeShadowTexture): the
+         * legs between surfaces, in order, as POV-Ray restarts the ray at
+         * each. */
+        if (interior_fades_shadows(m) && fade_inside_toggle(&inside, m->interior_key)) {
+            if (w->nplanes)
+                from = last_plane_between(ctx, q, trace_min_distance(q->point), from, last);
+            RGB f = interior_fade(m, last - from);
+            light->r *= f.r;
+            light->g *= f.g;
+            light->b *= f.b;
         }
         ctx->last_filtered++;
     }

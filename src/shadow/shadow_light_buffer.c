@@ -147,7 +147,7 @@ static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const Shado
             if (cell->item[i] == own_item)
                 continue;
             const LbShape *shape = &cell->shapes[cell->shape_at[i]];
-            int where = lb_shape_classify(shape, spot.u, spot.v);
+            int where = lb_shape_classify(shape, u, v);
             if (where == LB_OUTSIDE)
                 continue;
             const LbPlane plane = lb_plane_at(cell, i);
@@ -185,6 +185,7 @@ static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const Shado
     ctx->stats.shadow_blocked += (uint64_t)blocked;
     if (blocked && !cache_hit)
         shadow_cache_remember(ctx, q, light);
+    ctx->light_cache[q->light].lit_last = !blocked;
     ctx->stats.light_buffer_scanned += looked;
     ctx->stats.light_buffer_candidates += tests;
     return blocked;

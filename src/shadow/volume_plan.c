@@ -136,7 +136,7 @@ static int time_pilot(VolumePlan *plan, const World *w, const Grid *g, const Bvh
     }
     tracer_use_bvh(ctx.tracer, bvh);
     Hit eye = { HIT_NONE, -1, 0.0, { 0, 0, 0 }, -1 };
-    Segment seg = { { 0, 0, 0 }, { 0, 0, 0 }, &eye, NULL, NULL };
+    Segment seg = { { 0, 0, 0 }, { 0, 0, 0 }, &eye, NULL, NULL, NULL, 0 };
     volatile double sink = 0.0;
     for (int li = 0; li < w->nlights; li++) {
         LightPlan *lp = &plan->light[li];
@@ -283,7 +283,7 @@ static int measure_hst(VolumePlan *plan, const World *w, const Grid *g, const Bv
                 double t0 = clock_thread_cpu();
                 for (int i = 0; i < plan->npoints; i++) {
                     ShadowQuery q;
-                    Segment seg = { plan->org[i], plan->dir[i], &eye, NULL, ctx.states };
+                    Segment seg = { plan->org[i], plan->dir[i], &eye, NULL, ctx.states, NULL, 0 };
                     q.segment = &seg;
                     if (!asks(w, plan, i, li, &q))
                         continue;
