@@ -657,8 +657,16 @@ static int build(Builder *bd, int first, int count, int depth, const Box *bounds
         best_split(&bn, bounds, splittable, bd->plain, &best_axis, &best_bin, &best_cost);
     }
     int by_sah = best_axis >= 0 && best_cost < COST_INTERSECT * count;
+    /* An instance (instance.h) takes a leaf of its own: its box is then
+     * the leaf's, tested with its siblings' four at a time, where in a
+     * shared leaf it would be tested alone before its walk. */
+    int instance = 0;
+    for (int i = 0; i < count && count > 1 && count <= LEAF_MAX; i++)
+        instance |= (it[i].polygon & BVH_INSTANCE) != 0;
+    if (!by_sah && instance)
+        by_sah = best_axis >= 0; /* the best split there is, if any; else halving, below */
     if (!by_sah) {
-        if (count <= LEAF_MAX) {
+        if (count <= LEAF_MAX && !instance) {
             bd->nodes[ni].index = (uint32_t)first;
             bd->nodes[ni].count = (uint16_t)count;
             return 0;
@@ -996,11 +1004,9 @@ static int collapse_on_threads(Collapser *c, int threads)
  * rays start) has covers that error up to rays within 1e-6 of the plane's
  * direction; it is 2e-10 of the scene's size, too little to cost a box
  * test. A scene beyond float's range gets none (its boxes are infinite). */
-static double box_margin(const World *w, double polygons_max_abs)
+static double box_margin(double origins_max_abs, double polygons_max_abs)
 {
-    const Camera *c = &w->camera;
-    double s = v3_max_abs(c->location) + v3_length(c->right) + v3_length(c->up) + v3_length(c->direction);
-    s = fmax(s, polygons_max_abs);
+    double s = fmax(origins_max_abs, polygons_max_abs);
     return isfinite(s) ? s * 0x1p-32 : 0.0;
 }
 
@@ -1012,18 +1018,37 @@ static double box_margin(const World *w, double polygons_max_abs)
 typedef struct {
     const World *w;
     BuildItem *items;
-    int first, end;
+    int first, end;       /* items: polygons src_first + [0, npolygons), then the world's instances */
+    int src_first, npolygons;
     double max_abs, margin;
     Box bounds, cbounds;
 } SetupJob;
+
+/* Item i's box: a polygon's, or an instance's in world space. */
+static void item_box(const SetupJob *j, int i, Vec3 *lo, Vec3 *hi, uint32_t *item)
+{
+    if (i < j->npolygons) {
+        const Polygon *p = &j->w->polygons[j->src_first + i];
+        *lo = p->bbox_min;
+        *hi = p->bbox_max;
+        *item = (uint32_t)(j->src_first + i);
+    } else {
+        const Instance *in = &j->w->instances[i - j->npolygons];
+        *lo = in->bbox_min;
+        *hi = in->bbox_max;
+        *item = BVH_INSTANCE | (uint32_t)(i - j->npolygons);
+    }
+}
 
 static void *largest_coordinate(void *arg)
 {
     SetupJob *j = arg;
     double s = 0.0;
     for (int i = j->first; i < j->end; i++) {
-        const Polygon *p = &j->w->polygons[i];
-        s = fmax(s, fmax(v3_max_abs(p->bbox_min), v3_max_abs(p->bbox_max)));
+        Vec3 lo, hi;
+        uint32_t item;
+        item_box(j, i, &lo, &hi, &item);
+        s = fmax(s, fmax(v3_max_abs(lo), v3_max_abs(hi)));
     }
     j->max_abs = s;
     return NULL;
@@ -1035,16 +1060,18 @@ static void *make_items(void *arg)
     box_empty(&j->bounds);
     box_empty(&j->cbounds);
     for (int i = j->first; i < j->end; i++) {
-        const Polygon *p = &j->w->polygons[i];
+        Vec3 blo, bhi;
+        uint32_t item;
+        item_box(j, i, &blo, &bhi, &item);
         BuildItem *it = &j->items[i];
-        double lo[3] = { p->bbox_min.x, p->bbox_min.y, p->bbox_min.z };
-        double hi[3] = { p->bbox_max.x, p->bbox_max.y, p->bbox_max.z };
+        double lo[3] = { blo.x, blo.y, blo.z };
+        double hi[3] = { bhi.x, bhi.y, bhi.z };
         for (int a = 0; a < 3; a++) {
             it->lo[a] = round_down(lo[a] - j->margin);
             it->hi[a] = round_up(hi[a] + j->margin);
             it->centre[a] = (float)(0.5 * (lo[a] + hi[a]));
         }
-        it->polygon = (uint32_t)i;
+        it->polygon = item;
         it->hi_pad = 0.0f;
         it->centre_pad = 0.0f;
         box_grow(&j->bounds, it->lo, it->hi);
@@ -1061,6 +1088,7 @@ typedef struct {
     BvhPrim *prims;
     PackedPolygon *packed;
     int first, end;
+    int prototype;        /* a prototype's polygons: materials are its instances', hidden by them */
 } PrimJob;
 
 static void *make_prims(void *arg)
@@ -1068,11 +1096,20 @@ static void *make_prims(void *arg)
     PrimJob *j = arg;
     const World *w = j->w;
     for (int k = j->first; k < j->end; k++) {
-        const Polygon *p = &w->polygons[j->order[k]];
-        const Material *m = &w->materials[p->material];
         BvhPrim *pr = &j->prims[k];
-        pr->hide = (m->no_image ? HIDE_NO_IMAGE : 0u) | (m->no_reflection ? HIDE_NO_REFLECTION : 0u) |
-                   (m->no_shadow ? HIDE_NO_SHADOW : 0u);
+        if (j->order[k] & BVH_INSTANCE) { /* an instance: its own walk hides what it hides */
+            pr->hide = 0u;
+            pr->packed = 0u;
+            continue;
+        }
+        const Polygon *p = &w->polygons[j->order[k]];
+        if (j->prototype) {
+            pr->hide = 0u;
+        } else {
+            const Material *m = &w->materials[p->material];
+            pr->hide = (m->no_image ? HIDE_NO_IMAGE : 0u) | (m->no_reflection ? HIDE_NO_REFLECTION : 0u) |
+                       (m->no_shadow ? HIDE_NO_SHADOW : 0u);
+        }
         pr->packed = j->packed ? (uint32_t)polygon_pack(w, p, &j->packed[k]) : 0u;
     }
     return NULL;
@@ -1081,10 +1118,14 @@ static void *make_prims(void *arg)
 /* Polygons per set-up thread, at least. */
 #define SETUP_PER_THREAD_MIN 50000
 
-static int build_bvh(Bvh *b, const World *w, int threads, int plain)
+/* The hierarchy over polygons [src_first, src_first + npolygons) of w and,
+ * with `instances`, the world's instances (the top level); rays start
+ * within origins_max_abs of the origin, in the space of the polygons. */
+static int build_bvh_over(Bvh *b, const World *w, int src_first, int npolygons, int instances, double origins_max_abs,
+                          int threads, int plain)
 {
     memset(b, 0, sizeof *b);
-    int n = w->npolygons;
+    int n = npolygons + (instances ? w->ninstances : 0);
     Builder bd;
     memset(&bd, 0, sizeof bd);
     threads = threads > 1 ? threads : 1;
@@ -1106,14 +1147,14 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     int nj = parallel_jobs(n, SETUP_PER_THREAD_MIN, threads);
     double max_abs = 0.0;
     for (int k = 0; k < nj; k++) {
-        jobs[k] = (SetupJob){ .w = w, .items = bd.items };
+        jobs[k] = (SetupJob){ .w = w, .items = bd.items, .src_first = src_first, .npolygons = npolygons };
         jobs[k].first = (int)((long long)n * k / nj);
         jobs[k].end = (int)((long long)n * (k + 1) / nj);
     }
     parallel_run(nj, largest_coordinate, jobs, sizeof jobs[0]);
     for (int k = 0; k < nj; k++)
         max_abs = fmax(max_abs, jobs[k].max_abs);
-    const double margin = box_margin(w, max_abs);
+    const double margin = box_margin(origins_max_abs, max_abs);
     for (int k = 0; k < nj; k++)
         jobs[k].margin = margin;
     parallel_run(nj, make_items, jobs, sizeof jobs[0]);
@@ -1123,6 +1164,21 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     for (int k = 0; k < nj; k++) {
         box_join(&bounds, &jobs[k].bounds);
         box_join(&cbounds, &jobs[k].cbounds);
+    }
+    if (instances && w->ninstances > 0) {
+        /* the instances' boxes as built, before the build moves the items */
+        b->instance_box = malloc(sizeof *b->instance_box * 6 * (size_t)w->ninstances);
+        if (!b->instance_box) {
+            free(bd.items);
+            free(order);
+            free(bd.nodes);
+            return -1;
+        }
+        for (int i = 0; i < w->ninstances; i++)
+            for (int a = 0; a < 3; a++) {
+                b->instance_box[6 * i + a] = bd.items[npolygons + i].lo[a];
+                b->instance_box[6 * i + 3 + a] = bd.items[npolygons + i].hi[a];
+            }
     }
     int failed = n > 0 && build(&bd, 0, n, 1, &bounds, &cbounds);
     for (int i = 0; i < n && !failed; i++)
@@ -1171,6 +1227,8 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     if (failed) {
         free(order);
         free(c.nodes);
+        free(b->instance_box);
+        b->instance_box = NULL;
         return -1;
     }
     BvhPrim *prims = big_malloc(sizeof *prims * (size_t)(n > 0 ? n : 1));
@@ -1180,12 +1238,15 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
         free(packed);
         free(order);
         free(c.nodes);
+        free(b->instance_box);
+        b->instance_box = NULL;
         return -1;
     }
     PrimJob pj[PARALLEL_MAX_JOBS];
     nj = parallel_jobs(n, SETUP_PER_THREAD_MIN, threads);
     for (int k = 0; k < nj; k++)
-        pj[k] = (PrimJob){ w, order, prims, packed, (int)((long long)n * k / nj), (int)((long long)n * (k + 1) / nj) };
+        pj[k] = (PrimJob){ w, order, prims, packed, (int)((long long)n * k / nj), (int)((long long)n * (k + 1) / nj),
+                           !instances };
     parallel_run(nj, make_prims, pj, sizeof pj[0]);
     b->prims = prims;
     b->packed = packed;
@@ -1197,12 +1258,72 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     return 0;
 }
 
+/* The farthest from the origin a ray starts in world space: the camera
+ * (with its frame) or any surface point. */
+static double world_origins_max_abs(const World *w)
+{
+    const Camera *c = &w->camera;
+    double s = v3_max_abs(c->location) + v3_length(c->right) + v3_length(c->up) + v3_length(c->direction);
+    if (w->bounds_min.x <= w->bounds_max.x)
+        s = fmax(s, fmax(v3_max_abs(w->bounds_min), v3_max_abs(w->bounds_max)));
+    return s;
+}
+
+/* The same in prototype k's space, over its instances: where the camera
+ * and the corners of the world's box land there. */
+static double prototype_origins_max_abs(const World *w, int k)
+{
+    const Camera *c = &w->camera;
+    double frame = v3_length(c->right) + v3_length(c->up) + v3_length(c->direction);
+    double s = 0.0;
+    for (int i = 0; i < w->ninstances; i++) {
+        const Instance *in = &w->instances[i];
+        if (in->prototype != k)
+            continue;
+        s = fmax(s, v3_max_abs(inverse_transform_point(&in->to_world, c->location)) +
+                        v3_length(inverse_transform_direction(&in->to_world, v3(frame, frame, frame))));
+        for (int q = 0; q < 8 && w->bounds_min.x <= w->bounds_max.x; q++) {
+            Vec3 x = v3(q & 1 ? w->bounds_max.x : w->bounds_min.x, q & 2 ? w->bounds_max.y : w->bounds_min.y,
+                        q & 4 ? w->bounds_max.z : w->bounds_min.z);
+            s = fmax(s, v3_max_abs(inverse_transform_point(&in->to_world, x)));
+        }
+    }
+    return s;
+}
+
+static int build_bvh(Bvh *b, const World *w, int threads, int plain)
+{
+    if (build_bvh_over(b, w, 0, w->npolygons, 1, world_origins_max_abs(w), threads, plain))
+        return -1;
+    if (w->nprototypes == 0)
+        return 0;
+    b->protos = calloc((size_t)w->nprototypes, sizeof *b->protos);
+    if (!b->protos) {
+        bvh_free(b);
+        return -1;
+    }
+    b->nprotos = w->nprototypes;
+    for (int k = 0; k < w->nprototypes; k++) {
+        const Prototype *pr = &w->prototypes[k];
+        if (build_bvh_over(&b->protos[k], w, pr->first_polygon, pr->npolygons, 0, prototype_origins_max_abs(w, k),
+                           threads, plain)) {
+            bvh_free(b);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 int bvh_build(Bvh *b, const World *w, int threads) { return build_bvh(b, w, threads, 0); }
 
 int bvh_build_plain(Bvh *b, const World *w, int threads) { return build_bvh(b, w, threads, 1); }
 
 void bvh_free(Bvh *b)
 {
+    for (int k = 0; k < b->nprotos; k++)
+        bvh_free(&b->protos[k]);
+    free(b->protos);
+    free(b->instance_box);
     free(b->nodes);
     free(b->items);
     free(b->prims);
@@ -1235,15 +1356,6 @@ BvhRay bvh_ray(Vec3 org, Vec3 dir)
     return r;
 }
 
-void bvh_ray_scalar(BvhRay *r, Vec3 org, Vec3 dir)
-{
-    const double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };
-    for (int a = 0; a < 3; a++) {
-        r->org[a] = o[a];
-        r->inv[a] = 1.0 / d[a];
-        r->neg[a] = signbit(r->inv[a]) != 0;
-    }
-}
 
 unsigned bvh_node_hits_plain(const BvhNode *n, const BvhRay *r, double t0, double t1, double enter[BVH_WIDTH])
 {

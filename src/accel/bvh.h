@@ -13,6 +13,7 @@
 #ifndef HST_BVH_H
 #define HST_BVH_H
 
+#include <math.h>
 #include <stdint.h>
 
 #if defined(__SSE2__)
@@ -63,15 +64,31 @@ typedef struct {
  * copies). */
 #define BVH_PACK_MAX (1 << 17)
 
-typedef struct {
+/* A leaf item that is an instance (World.instances, in the low bits) rather
+ * than a polygon: the top level's only (instance.h). */
+#define BVH_INSTANCE 0x80000000u
+
+typedef struct Bvh Bvh;
+struct Bvh {
     BvhNode *nodes;       /* nodes[0] is the root (none when there are no polygons) */
     int nnodes;
-    uint32_t *items;      /* polygon indices, leaf by leaf */
+    uint32_t *items;      /* polygon indices (or BVH_INSTANCE | instance), leaf by leaf */
     BvhPrim *prims;       /* prims[k] for polygon items[k] */
     PackedPolygon *packed; /* packed[k] where prims[k].packed; NULL above BVH_PACK_MAX polygons */
     int nitems;
     int depth;            /* of the deepest node */
-} Bvh;
+    /* The top level's: one hierarchy per prototype (World.prototypes),
+     * over its polygons in its own space; its items are their indices in
+     * World.polygons, its prims hide nothing (the instance's walk does). */
+    Bvh *protos;
+    int nprotos;
+    /* The top level's: instance i's box as the build saw it (rounded
+     * outward, with the margin), lo[3] then hi[3], at 6 i: an instance
+     * has a leaf of its own (so the node test tests its box), but where a
+     * leaf holds more (a degenerate split) its box is tested before its
+     * walk. */
+    float *instance_box;
+};
 
 /* The exact test of the polygon leaf item k holds (intersect.h): on its
  * packed copy where there is one, else the polygon's own test; the same
@@ -111,7 +128,38 @@ BvhRay bvh_ray(Vec3 org, Vec3 dir);
 /* bvh_ray without the SSE2 lanes (org2, inv2, left unset), for the AVX2
  * box test, which broadcasts org and inv itself: made once per ray,
  * shadow rays included, so the copies it would not read are not made. */
-void bvh_ray_scalar(BvhRay *r, Vec3 org, Vec3 dir);
+/* bvh_ray_scalar (and bvh_ray) for a ray whose direction's inverses
+ * (1 / dir, per axis) are already made (instance_inverse_dir). */
+static inline void bvh_ray_scalar_inverse(BvhRay *r, Vec3 org, const double inv[3])
+{
+    const double o[3] = { org.x, org.y, org.z };
+    for (int a = 0; a < 3; a++) {
+        r->org[a] = o[a];
+        r->inv[a] = inv[a];
+        r->neg[a] = signbit(r->inv[a]) != 0;
+    }
+}
+
+static inline void bvh_ray_inverse(BvhRay *r, Vec3 org, const double inv[3])
+{
+    bvh_ray_scalar_inverse(r, org, inv);
+#if defined(__SSE2__)
+    for (int a = 0; a < 3; a++) {
+        r->org2[a] = _mm_set1_pd(r->org[a]);
+        r->inv2[a] = _mm_set1_pd(r->inv[a]);
+    }
+#endif
+}
+
+static inline void bvh_ray_scalar(BvhRay *r, Vec3 org, Vec3 dir)
+{
+    const double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };
+    for (int a = 0; a < 3; a++) {
+        r->org[a] = o[a];
+        r->inv[a] = 1.0 / d[a];
+        r->neg[a] = signbit(r->inv[a]) != 0;
+    }
+}
 
 /* Which of node n's children the ray meets for some t in [t0, t1]: bit k for
  * child k; enter[k] is where it enters child k's box (meaningful where the
@@ -196,6 +244,22 @@ __attribute__((target("avx2"))) static inline unsigned bvh_node_hits_avx2(const 
 #else
 #define BVH_HAVE_AVX2_PATH 0
 #endif
+
+/* Does the ray meet the box lo[3], hi[3] (Bvh.instance_box) for some t in
+ * [0, t1]? bvh_node_hits_plain's arithmetic for one child: as conservative. */
+static inline int bvh_box_hit(const float box[6], const BvhRay *r, double t1)
+{
+    double near = 0.0, far = t1 * BVH_GROW;
+    for (int a = 0; a < 3; a++) {
+        double lo = r->neg[a] ? box[3 + a] : box[a];
+        double hi = r->neg[a] ? box[a] : box[3 + a];
+        double tn = (lo - r->org[a]) * r->inv[a];
+        double tf = (hi - r->org[a]) * r->inv[a] * BVH_GROW;
+        near = tn > near ? tn : near; /* NaN: not taken */
+        far = tf < far ? tf : far;
+    }
+    return near <= far;
+}
 
 /* 1 when this processor runs bvh_node_hits_avx2 (and the build has it). */
 int bvh_have_avx2(void);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "instance.h"
 #include "intersect.h"
 
 void ray_counters_add(RayCounters *t, const RayCounters *p)
@@ -66,6 +67,8 @@ static int touches_other_in_bvh(Tracer *t, const Hit *hit, double tol)
         hi[a] = v3_comp(hit->point, a) + 5.0 * tol;
     }
     int own = hit->kind == HIT_POLYGON ? hit->index : -1;
+    if (own >= w->npolygons)
+        return 1; /* on an instance's polygon: said to touch (see below) */
     uint32_t stack[BVH_STACK];
     int sp = 0;
     stack[sp++] = 0;
@@ -83,6 +86,13 @@ static int touches_other_in_bvh(Tracer *t, const Hit *hit, double tol)
             }
             for (uint32_t i = 0, first = bvh_leaf_first(c); i < bvh_leaf_count(c); i++) {
                 uint32_t pi = b->items[first + i];
+                /* An instance near the point is said to touch it: the
+                 * answer errs to the safe side (a caller then asks the
+                 * shadow ray), and the methods that carry depth counts
+                 * build no instances (shadow volumes want world-space
+                 * polygons: instancing is off for them). */
+                if (pi & BVH_INSTANCE)
+                    return 1;
                 if ((int)pi != own && touches(w, pi, hit->point, tol))
                     return 1;
             }
@@ -98,6 +108,8 @@ static int touches_other(Tracer *t, const Hit *hit, double tol)
 {
     const World *w = t->world;
     const Grid *g = t->grid;
+    if (hit->kind == HIT_POLYGON && hit->index >= w->npolygons)
+        return 1; /* an instance's polygon: see touches_other_in_bvh */
     if (hit->kind == HIT_POLYGON && polygon_classify_point(w, &w->polygons[hit->index], hit->point, tol) < 0)
         return 1; /* on its own polygon's border: on the neighbours' too */
     if (t->bvh)
@@ -173,12 +185,13 @@ void tracer_use_avx2(Tracer *t, int on)
 /* Takes polygon pi's hit at t when it is nearer than the best so far, or as
  * near and of a lower index: the rule for exact ties, so that the answer
  * does not depend on the order the polygons were tested in. */
-static inline void take_nearer(Hit *hit, double *best, uint32_t pi, double t)
+static inline void take_nearer(Hit *hit, double *best, uint32_t pi, int instance, double t)
 {
     if (hit->kind == HIT_NONE || t < *best || (int)pi < hit->index) {
         *best = t;
         hit->kind = HIT_POLYGON;
         hit->index = (int)pi;
+        hit->instance = instance;
     }
 }
 
@@ -200,7 +213,7 @@ static inline void try_nearer(Tracer *tr, const RayFrame *frame, uint32_t pi, do
     tr->stats.polygon_tests++;
     double t = intersect_polygon_in(w, &w->polygons[pi], frame, test_limit(hit, *best, plane_t));
     if (t > tmin)
-        take_nearer(hit, best, pi, t);
+        take_nearer(hit, best, pi, -1, t);
 }
 
 /* The exact test of the polygon a leaf item holds (bvh.h): on its packed
@@ -212,16 +225,23 @@ static inline double prim_test(const World *w, const Bvh *b, uint32_t k, uint32_
     return bvh_item_test(w, b, k, frame, tmax);
 }
 
-/* try_nearer for a leaf item, from its record. */
-static inline void try_nearer_prim(Tracer *tr, const RayFrame *frame, uint32_t k, uint32_t pi, double tmin,
-                                   double plane_t, Hit *hit, double *best)
+/* try_nearer for item k of hierarchy b, polygon id `id`, from its record. */
+static inline void try_nearer_prim(Tracer *tr, const Bvh *b, const RayFrame *frame, uint32_t k, uint32_t id,
+                                   int instance, double tmin, double plane_t, Hit *hit, double *best)
 {
-    if (tr->bvh->prims[k].hide & tr->hide)
+    if (b->prims[k].hide & tr->hide)
         return;
     tr->stats.polygon_tests++;
-    double t = prim_test(tr->world, tr->bvh, k, pi, frame, test_limit(hit, *best, plane_t));
+    double t = prim_test(tr->world, b, k, id, frame, test_limit(hit, *best, plane_t));
     if (t > tmin)
-        take_nearer(hit, best, pi, t);
+        take_nearer(hit, best, id, instance, t);
+}
+
+/* Whether an instance's polygon pi (in World.polygons) is hidden from the
+ * query: its material is the instance's. */
+static inline int instance_hidden(const World *w, const Instance *in, uint32_t pi, unsigned hide)
+{
+    return material_hidden(&w->materials[instance_material(w, in, &w->polygons[pi])], hide);
 }
 
 /* The nearest polygon by the grid: cell by cell, a hit inside a cell
@@ -290,21 +310,25 @@ static inline int push_children(Pending *stack, int sp, const BvhNode *n, unsign
 #define BVH_TRAVERSE_NAME(f) f##_sse2
 #define BVH_TRAVERSE_NODE_HITS bvh_node_hits
 #define BVH_TRAVERSE_RAY(r, org, dir) (*(r) = bvh_ray(org, dir))
+#define BVH_TRAVERSE_RAY_INV bvh_ray_inverse
 #define BVH_TRAVERSE_TARGET
 #include "bvh_traverse.h"
 #undef BVH_TRAVERSE_NAME
 #undef BVH_TRAVERSE_NODE_HITS
 #undef BVH_TRAVERSE_RAY
+#undef BVH_TRAVERSE_RAY_INV
 #undef BVH_TRAVERSE_TARGET
 #if BVH_HAVE_AVX2_PATH
 #define BVH_TRAVERSE_NAME(f) f##_avx2
 #define BVH_TRAVERSE_NODE_HITS bvh_node_hits_avx2
 #define BVH_TRAVERSE_RAY bvh_ray_scalar
+#define BVH_TRAVERSE_RAY_INV bvh_ray_scalar_inverse
 #define BVH_TRAVERSE_TARGET __attribute__((target("avx2")))
 #include "bvh_traverse.h"
 #undef BVH_TRAVERSE_NAME
 #undef BVH_TRAVERSE_NODE_HITS
 #undef BVH_TRAVERSE_RAY
+#undef BVH_TRAVERSE_RAY_INV
 #undef BVH_TRAVERSE_TARGET
 #else
 #define nearest_in_bvh_avx2 nearest_in_bvh_sse2
@@ -340,6 +364,7 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     const World *w = tr->world;
     double tmin = trace_min_distance(org);
     hit->kind = HIT_NONE;
+    hit->instance = -1;
 
     /* Planes first: they bound the polygon query, and on an exact tie (a
      * box resting on a plane) the plane wins, as it does in POV-Ray, whose
@@ -362,9 +387,9 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     double best = HUGE_VAL;
     int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
     if (tr->bvh && tr->avx2)
-        nearest_in_bvh_avx2(tr, org, dir, tmin, plane_t, exclude, hit, &best);
+        nearest_in_bvh_avx2(tr, tr->bvh, NULL, org, dir, NULL, tmin, plane_t, exclude, hit, &best);
     else if (tr->bvh)
-        nearest_in_bvh_sse2(tr, org, dir, tmin, plane_t, exclude, hit, &best);
+        nearest_in_bvh_sse2(tr, tr->bvh, NULL, org, dir, NULL, tmin, plane_t, exclude, hit, &best);
     else
         nearest_in_grid(tr, org, dir, tmin, plane_t, exclude, hit, &best);
     if (hit->kind == HIT_NONE) {
@@ -390,16 +415,17 @@ int trace_segment_hits(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double tmax,
                        TraceHitVisitor visit, void *user, uint64_t *tests)
 {
     const World *w = tr->world;
-    if (w->npolygons == 0)
+    if (w->npolygons == 0 && w->ninstances == 0)
         return 0;
-    RayFrame frame = ray_frame(org, dir);
     if (tr->bvh) {
 #if BVH_HAVE_AVX2_PATH
         if (tr->avx2)
-            return segment_hits_in_bvh_avx2(tr, &frame, org, dir, tmin, tmax, exclude, hide, visit, user, tests);
+            return segment_hits_in_bvh_avx2(tr, tr->bvh, NULL, org, dir, NULL, tmin, tmax, exclude, hide, visit, user,
+                                            tests);
 #endif
-        return segment_hits_in_bvh_sse2(tr, &frame, org, dir, tmin, tmax, exclude, hide, visit, user, tests);
+        return segment_hits_in_bvh_sse2(tr, tr->bvh, NULL, org, dir, NULL, tmin, tmax, exclude, hide, visit, user, tests);
     }
+    RayFrame frame = ray_frame(org, dir);
     const Grid *g = tr->grid;
     GridWalk walk;
     if (!grid_walk_begin(g, org, dir, 0.0, tmax, &walk))
@@ -422,4 +448,19 @@ int trace_segment_hits(Tracer *tr, Vec3 org, Vec3 dir, double tmin, double tmax,
         }
     } while (grid_walk_next(g, &walk));
     return 0;
+}
+
+int trace_instance_hits(Tracer *tr, int instance, Vec3 org, Vec3 dir, double tmin, double tmax, int exclude,
+                        unsigned hide, TraceHitVisitor visit, void *user, uint64_t *tests)
+{
+    const Instance *in = &tr->world->instances[instance];
+    const Bvh *b = &tr->bvh->protos[in->prototype];
+    Vec3 lorg, ldir;
+    tr->stats.instance_walks++;
+    instance_ray(in, org, dir, &lorg, &ldir);
+#if BVH_HAVE_AVX2_PATH
+    if (tr->avx2)
+        return segment_hits_in_bvh_avx2(tr, b, in, lorg, ldir, NULL, tmin, tmax, exclude, hide, visit, user, tests);
+#endif
+    return segment_hits_in_bvh_sse2(tr, b, in, lorg, ldir, NULL, tmin, tmax, exclude, hide, visit, user, tests);
 }

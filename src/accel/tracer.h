@@ -8,6 +8,7 @@
 
 #include "bvh.h"
 #include "grid.h"
+#include "instance.h"
 #include "world.h"
 
 /* What a surface hit is: a grid polygon or an infinite plane. */
@@ -15,9 +16,11 @@ typedef enum { HIT_NONE, HIT_POLYGON, HIT_PLANE } HitKind;
 
 typedef struct {
     HitKind kind;
-    int index;          /* polygon or plane index */
+    int index;          /* polygon id (instance.h: a world polygon's index, or an instance's polygon) or plane index */
     double t;
     Vec3 point;
+    int instance;       /* the instance of an instance's polygon as the query found it (a hint:
+                         * world_polygon_hinted checks it; last, so that {kind, index, t, point} sets none) */
 } Hit;
 
 /* (HIDE_NO_IMAGE, HIDE_NO_REFLECTION and HIDE_NO_SHADOW: bvh.h) */
@@ -51,6 +54,10 @@ typedef struct {
     int segment_ncells, segment_cells_cap;
     int segment_in_box;
     Vec3 record_min, record_max;
+    /* trace_segment_hits: the instance whose polygon the visitor is being
+     * handed (an index in World.instances), -1 for a world polygon: a hint
+     * for world_polygon_hinted. */
+    int visiting;
     /* trace_point_touches_other's answer for the last point asked about. */
     int touch_valid, touch_kind, touch_index, touch_result;
     Vec3 touch_point;
@@ -117,6 +124,13 @@ typedef int (*TraceHitVisitor)(void *user, uint32_t polygon, double t);
 int trace_segment_hits(Tracer *t, Vec3 org, Vec3 dir, double tmin, double tmax, int exclude, unsigned hide,
                        TraceHitVisitor visit, void *user, uint64_t *tests);
 
+/* trace_segment_hits for the polygons of one instance (World.instances)
+ * alone: the walk trace_segment_hits makes of it, so the same polygons at
+ * the same t. For lists of candidates that name instances (the light
+ * buffer's cells). */
+int trace_instance_hits(Tracer *t, int instance, Vec3 org, Vec3 dir, double tmin, double tmax, int exclude,
+                        unsigned hide, TraceHitVisitor visit, void *user, uint64_t *tests);
+
 /* Does the hit point lie (within tol) on a polygon besides its own: on the
  * border of its own (so on the neighbours sharing that edge or vertex), or
  * in the plane and area of another? A depth count carried to or from such a
@@ -126,7 +140,8 @@ int trace_point_touches_other(Tracer *t, const Hit *hit, double tol);
 
 static inline int hit_material(const World *w, const Hit *h)
 {
-    return h->kind == HIT_POLYGON ? w->polygons[h->index].material : w->planes[h->index].material;
+    return h->kind == HIT_POLYGON ? world_polygon_material_hinted(w, h->index, h->instance)
+                                  : w->planes[h->index].material;
 }
 
 #endif

@@ -238,7 +238,16 @@ static int build_world(Frame *f, const Options *o)
      * the build's together). */
     WorldLimits wlim = { o->max_memory ? o->max_memory : parse_default_max_memory(),
                          o->max_parse_seconds > 0.0 ? f->parse_start + o->max_parse_seconds : 0.0,
-                         o->max_parse_seconds };
+                         o->max_parse_seconds, 0 };
+    /* Meshes placed many times kept once (instance.h) where the method
+     * decides on instances, and --verify-reference's brute force (which
+     * reads world-space polygons) is not asked for. */
+    int area_lights = 0;
+    for (int i = 0; i < f->scene->nlights; i++)
+        area_lights |= f->scene->lights[i].area.size1 > 0;
+    const ShadowMethod *method = shadow_method_find(o->shadows);
+    wlim.instance_meshes = o->instancing && method && o->verify_shadows < 2 &&
+                           shadow_method_takes_instances(method, o->volumes_always, area_lights);
     if (world_build_limited(&f->world, f->scene, f->threads, &wlim, &werr)) {
         if (werr.pos.file && werr.pos.line > 0)
             fprintf(stderr, "%s:%d:%d: %s\n", werr.pos.file, werr.pos.line, werr.pos.column, werr.message);
@@ -303,6 +312,10 @@ static int prepare_shadows(Frame *f, const Options *o, int distributed)
     r->grid_registered = grid_registered(&f->grid);
     r->npolygons = f->world.npolygons;
     r->ndegenerate = f->world.ndegenerate;
+    r->ninstances = f->world.ninstances;
+    r->nprototypes = f->world.nprototypes;
+    r->nproto_polygons = f->world.nproto_polygons;
+    r->ninstanced_polygons = f->world.nids - f->world.npolygons;
     r->nplanes = f->world.nplanes;
     r->nlights = f->world.nlights;
     return EXIT_OK;

@@ -123,10 +123,10 @@ static char *resolved_options(const Options *opt, const ParseAnimation *anim, co
         return NULL;
     int pp = opt->plane_precision >= 0 && opt->plane_precision < 3 ? opt->plane_precision : 0;
     size_t at = (size_t)snprintf(s, len,
-             "--width %d --height %d +Q%d --shadows %s --volumes %s --nth %s --pixel-coherence %s --tolerance %s "
-             "--plane-precision %s --grid %dx%dx%d --threads %d%s%s%s%s%s%s",
+             "--width %d --height %d +Q%d --shadows %s --volumes %s --nth %s --pixel-coherence %s --instancing %s "
+             "--tolerance %s --plane-precision %s --grid %dx%dx%d --threads %d%s%s%s%s%s%s",
              opt->width, opt->height, opt->quality, opt->shadows, opt->volumes_always ? "always" : "auto", nth,
-             opt->pixel_coherence ? "on" : "off",
+             opt->pixel_coherence ? "on" : "off", opt->instancing ? "auto" : "off",
              tolerance, precision_names[pp], r->grid[0], r->grid[1], r->grid[2], r->threads,
              opt->exr_float ? " --exr-float" : "",
              opt->verify_shadows == 2 ? " --verify-reference" : opt->verify_shadows ? " --verify-shadows" : "",

@@ -51,6 +51,17 @@ typedef struct {
      * copies, exported parts) would each take a material of over a
      * kilobyte, the same bytes. */
     MaterialMemo memo[MATERIAL_MEMO];
+    /* Instancing (WorldLimits.instance_meshes): how often each mesh's
+     * faces (shared by every copy of a declared mesh) are placed, and the
+     * prototype each shared one became (-1: none yet), by a hash set of the
+     * face arrays; the meshes the prototypes are made from. */
+    int instancing;
+    const void **use_key;
+    int *use_count, *use_proto;
+    size_t use_slots, use_used;
+    const SceneObject **proto_mesh;
+    int cap_prototypes, cap_instances, cap_instance_materials;
+    int slots;            /* making prototypes: polygons' materials are slots, which read no uv */
 } Builder;
 
 /* Grows *array (of `size`-byte items) so that index `need` fits. */
@@ -470,6 +481,13 @@ static int uses_uv(const World *w, int material)
     return (m->pattern.kind != PIGMENT_SOLID && m->pattern.uv_mapping) || (m->normal && m->normal->kind == NORMAL_UV);
 }
 
+/* uses_uv of a polygon's material as the builder makes it: a prototype's
+ * polygons hold slots, whose materials read no uv (instance_mesh). */
+static int builds_uv(const Builder *b, int material)
+{
+    return !b->slots && uses_uv(b->w, material);
+}
+
 /* Gives the polygon added last the uv coordinates of its first 3 points
  * (when it was added: degenerate ones are dropped). */
 static int attach_uv(Builder *b, int npolygons_before, const Vec3 uv[3])
@@ -695,10 +713,10 @@ static void *fill_face_run(void *arg)
 static int faces_fill_in_parallel(const Builder *b, const SceneObject *o, int material, const int *face_material)
 {
     if (b->threads < 2 || o->u.mesh.nfaces < 2 * FACES_PER_THREAD_MIN || o->u.mesh.nnormals > 0 ||
-        uses_uv(b->w, material))
+        builds_uv(b, material))
         return 0;
     for (int i = 0; i < o->u.mesh.ntextures; i++)
-        if (uses_uv(b->w, face_material[i]))
+        if (builds_uv(b, face_material[i]))
             return 0;
     for (int f = 0; f < o->u.mesh.nfaces; f++)
         if (o->u.mesh.faces[f].texture2 >= 0)
@@ -747,26 +765,38 @@ static void fill_faces(Builder *b, const SceneObject *o, const Inherited *in, in
     w->npoints += 3 * made;
 }
 
-static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, int material)
+/* The materials of a mesh's own textures (face_material[i] for texture i;
+ * the object's where it has none), malloc'd: *out NULL when it has none.
+ * Returns 0, or -1 on failure. */
+static int mesh_face_materials(Builder *b, const SceneObject *o, const Inherited *in, int material, int **out)
 {
     const int nt = o->u.mesh.ntextures;
-    int *face_material = NULL;
-    if (nt > 0) {
-        face_material = malloc(sizeof(int) * (size_t)nt);
-        if (!face_material) {
-            b->failed = 1;
+    *out = NULL;
+    if (nt == 0)
+        return 0;
+    int *face_material = malloc(sizeof(int) * (size_t)nt);
+    if (!face_material) {
+        b->failed = 1;
+        return -1;
+    }
+    for (int i = 0; i < nt; i++) {
+        const SceneTexture *t = o->u.mesh.textures[i];
+        /* face textures are written before the mesh's transforms: they all move them */
+        face_material[i] = t ? add_material(b, in, t, &in->transform, o->pos) : material;
+        if (face_material[i] < 0) {
+            free(face_material);
             return -1;
         }
-        for (int i = 0; i < nt; i++) {
-            const SceneTexture *t = o->u.mesh.textures[i];
-            /* face textures are written before the mesh's transforms: they all move them */
-            face_material[i] = t ? add_material(b, in, t, &in->transform, o->pos) : material;
-            if (face_material[i] < 0) {
-                free(face_material);
-                return -1;
-            }
-        }
     }
+    *out = face_material;
+    return 0;
+}
+
+/* The mesh's faces as polygons, face textures to face_material (NULL: none). */
+static int flatten_mesh_faces(Builder *b, const SceneObject *o, const Inherited *in, int material,
+                              const int *face_material)
+{
+    const int nt = o->u.mesh.ntextures;
     /* Room for every face at once (rather than by doublings, each copying
      * what is there): a big mesh is most of the world. */
     int rc = 0;
@@ -777,7 +807,6 @@ static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, i
         rc = -1;
     if (rc == 0 && faces_fill_in_parallel(b, o, material, face_material)) {
         fill_faces(b, o, in, material, face_material);
-        free(face_material);
         return 0;
     }
     for (int f = 0; f < o->u.mesh.nfaces && rc == 0; f++) {
@@ -811,11 +840,11 @@ static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, i
         int m = (face->texture >= 0 && face->texture < nt) ? face_material[face->texture] : material;
         int before = b->w->npolygons;
         rc = add_triangle(b, v[0], v[1], v[2], smooth ? n : NULL, m);
-        int needs_uv = uses_uv(b->w, m);
+        int needs_uv = builds_uv(b, m);
         if (rc == 0 && face->texture >= 0 && face->texture2 >= 0 && face->texture2 < nt && face->texture3 >= 0 &&
             face->texture3 < nt) {
             const int vm[3] = { m, face_material[face->texture2], face_material[face->texture3] };
-            needs_uv |= uses_uv(b->w, vm[1]) || uses_uv(b->w, vm[2]);
+            needs_uv |= builds_uv(b, vm[1]) || builds_uv(b, vm[2]);
             rc = attach_vertex_materials(b, before, vm);
         }
         if (rc == 0 && needs_uv) {
@@ -827,6 +856,15 @@ static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, i
             rc = attach_uv(b, before, uv);
         }
     }
+    return rc;
+}
+
+static int flatten_mesh(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    int *face_material;
+    if (mesh_face_materials(b, o, in, material, &face_material))
+        return -1;
+    int rc = flatten_mesh_faces(b, o, in, material, face_material);
     free(face_material);
     return rc;
 }
@@ -849,6 +887,234 @@ static int flatten_plane(Builder *b, const SceneObject *o, const Inherited *in, 
     pl->normal = wn;
     pl->d = v3_dot(wn, wp);
     pl->material = material;
+    return 0;
+}
+
+/* ---- instancing: a mesh placed two or more times, kept once ------------- */
+
+/* The fewest faces a shared mesh is instanced with: below, its polygons
+ * flattened cost less than an instance's transform, box and second walk. */
+#define INSTANCE_MIN_FACES 8
+
+/* The slot of key (a mesh's face array) in the hash set of uses, grown as
+ * needed; -1 when out of memory. */
+static long use_slot(Builder *b, const void *key)
+{
+    if (2 * (b->use_used + 1) > b->use_slots) {
+        size_t n = b->use_slots ? 2 * b->use_slots : 256;
+        const void **keys = calloc(n, sizeof *keys);
+        int *count = calloc(n, sizeof *count), *proto = calloc(n, sizeof *proto);
+        if (!keys || !count || !proto) {
+            free(keys);
+            free(count);
+            free(proto);
+            return -1;
+        }
+        for (size_t i = 0; i < b->use_slots; i++) {
+            if (!b->use_key[i])
+                continue;
+            size_t h = ((uintptr_t)b->use_key[i] >> 4) * 0x9E3779B97F4A7C15u % n;
+            while (keys[h])
+                h = (h + 1) % n;
+            keys[h] = b->use_key[i];
+            count[h] = b->use_count[i];
+            proto[h] = b->use_proto[i];
+        }
+        free(b->use_key);
+        free(b->use_count);
+        free(b->use_proto);
+        b->use_key = keys;
+        b->use_count = count;
+        b->use_proto = proto;
+        b->use_slots = n;
+    }
+    size_t h = ((uintptr_t)key >> 4) * 0x9E3779B97F4A7C15u % b->use_slots;
+    while (b->use_key[h] && b->use_key[h] != key)
+        h = (h + 1) % b->use_slots;
+    if (!b->use_key[h]) {
+        b->use_key[h] = key;
+        b->use_count[h] = 0;
+        b->use_proto[h] = -1;
+        b->use_used++;
+    }
+    return (long)h;
+}
+
+/* Counts the placements of every mesh under o (the copies of a declared
+ * mesh, or of a union holding it, share its face array). */
+static int count_mesh_uses(Builder *b, const SceneObject *o, int depth)
+{
+    if (depth > 1000)
+        return 0;
+    if (o->kind == OBJ_UNION) {
+        for (int i = 0; i < o->u.csg.nchildren; i++)
+            if (count_mesh_uses(b, o->u.csg.children[i], depth + 1))
+                return -1;
+        return 0;
+    }
+    if (o->kind != OBJ_MESH || o->u.mesh.nfaces < INSTANCE_MIN_FACES)
+        return 0;
+    long h = use_slot(b, o->u.mesh.faces);
+    if (h < 0)
+        return -1;
+    b->use_count[h]++;
+    return 0;
+}
+
+/* Mesh o placed as `in` says, as an instance of its prototype: its
+ * materials made as flatten_mesh makes them (slot 0 `material`, slot
+ * 1 + i its texture i's). A mesh placed once, or whose materials read uv
+ * coordinates or whose faces have a texture per vertex (both kept per
+ * polygon, in world-space polygons only), is flattened. */
+static int instance_mesh(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    World *w = b->w;
+    long h = o->u.mesh.nfaces >= INSTANCE_MIN_FACES ? use_slot(b, o->u.mesh.faces) : 0;
+    if (h < 0) {
+        b->failed = 1;
+        return -1;
+    }
+    int *face_material;
+    if (mesh_face_materials(b, o, in, material, &face_material))
+        return -1;
+    const int nt = o->u.mesh.ntextures;
+    int shared = o->u.mesh.nfaces >= INSTANCE_MIN_FACES && b->use_count[h] >= 2 && !uses_uv(w, material);
+    for (int i = 0; shared && i < nt; i++)
+        shared = !uses_uv(w, face_material[i]);
+    /* a texture per vertex (World.vertex_materials) is kept per world polygon */
+    for (int f = 0; shared && f < o->u.mesh.nfaces; f++)
+        shared = o->u.mesh.faces[f].texture2 < 0 && o->u.mesh.faces[f].texture3 < 0;
+    if (!shared) {
+        int rc = flatten_mesh_faces(b, o, in, material, face_material);
+        free(face_material);
+        return rc;
+    }
+    if (b->use_proto[h] < 0) {
+        if (GROW(b, prototypes, cap_prototypes, w->nprototypes)) {
+            free(face_material);
+            return -1;
+        }
+        const SceneObject **meshes = realloc(b->proto_mesh, sizeof *meshes * (size_t)(w->nprototypes + 1));
+        if (!meshes) {
+            free(face_material);
+            b->failed = 1;
+            return -1;
+        }
+        b->proto_mesh = meshes;
+        meshes[w->nprototypes] = o;
+        memset(&w->prototypes[w->nprototypes], 0, sizeof *w->prototypes);
+        w->prototypes[w->nprototypes].nslots = 1 + nt;
+        b->use_proto[h] = w->nprototypes++;
+    }
+    if (GROW(b, instances, cap_instances, w->ninstances) ||
+        GROW(b, instance_materials, cap_instance_materials, w->ninstance_materials + nt)) {
+        free(face_material);
+        return -1;
+    }
+    Instance *it = &w->instances[w->ninstances++];
+    memset(it, 0, sizeof *it);
+    it->to_world = in->transform;
+    it->prototype = b->use_proto[h];
+    it->first_material = w->ninstance_materials;
+    for (int s = 0; s <= nt; s++) {
+        int m = s == 0 ? material : face_material[s - 1];
+        const Material *mm = &w->materials[m];
+        it->hidden |= mm->no_image || mm->no_reflection || mm->no_shadow;
+        w->instance_materials[w->ninstance_materials++] = m;
+    }
+    free(face_material);
+    return 0;
+}
+
+/* The prototypes' polygons, in their own space, after the world's (which
+ * npolygons then counts alone), and the instances' ids and world boxes. */
+static int build_prototypes(Builder *b)
+{
+    World *w = b->w;
+    const int nworld = w->npolygons;
+    const Vec3 keep_min = w->bounds_min, keep_max = w->bounds_max;
+    Inherited own;
+    memset(&own, 0, sizeof own);
+    transform_identity(&own.transform);
+    transform_identity(&own.texture_space);
+    b->slots = 1;
+    for (int k = 0; k < w->nprototypes; k++) {
+        const SceneObject *o = b->proto_mesh[k];
+        Prototype *pr = &w->prototypes[k];
+        int *slot = malloc(sizeof(int) * (size_t)(pr->nslots));
+        if (!slot) {
+            b->failed = 1;
+            return -1;
+        }
+        for (int s = 1; s < pr->nslots; s++)
+            slot[s - 1] = s;
+        pr->first_polygon = w->npolygons;
+        w->bounds_min = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
+        w->bounds_max = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+        int rc = flatten_mesh_faces(b, o, &own, 0, slot);
+        free(slot);
+        if (rc)
+            return -1;
+        pr = &w->prototypes[k];
+        pr->npolygons = w->npolygons - pr->first_polygon;
+        pr->bbox_min = w->bounds_min;
+        pr->bbox_max = w->bounds_max;
+    }
+    b->slots = 0;
+    w->nproto_polygons = w->npolygons - nworld;
+    w->npolygons = nworld;
+    w->bounds_min = keep_min;
+    w->bounds_max = keep_max;
+    /* Instances of a prototype of no polygons (every face degenerate) go. */
+    int n = 0;
+    long long id = nworld;
+    for (int i = 0; i < w->ninstances; i++) {
+        Instance *it = &w->instances[i];
+        const Prototype *pr = &w->prototypes[it->prototype];
+        if (pr->npolygons == 0)
+            continue;
+        if (id + pr->npolygons > INT32_MAX / 2) {
+            b->failed = 1; /* more polygon ids than an int holds */
+            return -1;
+        }
+        it->first_id = (int)id;
+        id += pr->npolygons;
+        /* the box of its polygons' points carried to world space */
+        Vec3 lo = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL), hi = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+        for (int q = pr->first_polygon; q < pr->first_polygon + pr->npolygons; q++) {
+            const Polygon *p = &w->polygons[q];
+            for (int j = 0; j < p->npoints; j++) {
+                Vec3 x = transform_point(&it->to_world, w->points[p->first_point + j]);
+                lo = v3_min(lo, x);
+                hi = v3_max(hi, x);
+            }
+            if (!w->materials[w->instance_materials[it->first_material + p->material]].opaque)
+                w->nsee_through++;
+        }
+        it->bbox_min = lo;
+        it->bbox_max = hi;
+        /* a signed permutation: each local axis one world axis, +-1 exactly */
+        const double(*inv)[4] = it->to_world.inv;
+        it->permutation = 1;
+        for (int a = 0; a < 3; a++) {
+            int found = 0;
+            for (int j = 0; j < 3; j++) {
+                if (inv[j][a] == 1.0 || inv[j][a] == -1.0) {
+                    found++;
+                    it->axis[a] = j;
+                    it->sign[a] = inv[j][a];
+                } else if (inv[j][a] != 0.0) {
+                    found = 2;
+                }
+            }
+            it->permutation &= found == 1;
+        }
+        w->bounds_min = v3_min(w->bounds_min, lo);
+        w->bounds_max = v3_max(w->bounds_max, hi);
+        w->instances[n++] = *it;
+    }
+    w->ninstances = n;
+    w->nids = (int)id;
     return 0;
 }
 
@@ -896,7 +1162,7 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
     switch (o->kind) {
     case OBJ_POLYGON: return flatten_polygon(b, o, &in, material);
     case OBJ_TRIANGLE: return flatten_triangle(b, o, &in, material);
-    case OBJ_MESH: return flatten_mesh(b, o, &in, material);
+    case OBJ_MESH: return b->instancing ? instance_mesh(b, o, &in, material) : flatten_mesh(b, o, &in, material);
     case OBJ_BOX: return flatten_box(b, o, &in, material);
     case OBJ_PLANE: return flatten_plane(b, o, &in, material);
     case OBJ_UNION: break;
@@ -923,6 +1189,16 @@ static void build_lights(World *w, const Scene *scene)
         l->point_at = sl->point_at;
         l->area = sl->area;
     }
+}
+
+static void builder_free(Builder *b)
+{
+    free(b->map_keys);
+    free(b->map_index);
+    free(b->use_key);
+    free(b->use_count);
+    free(b->use_proto);
+    free(b->proto_mesh);
 }
 
 int world_build(World *w, const Scene *scene, WorldError *err) { return world_build_threads(w, scene, 1, err); }
@@ -980,9 +1256,17 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
     w->bounds_max = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
     w->noise_generator = scene_noise_generator(scene);
     w->number_of_waves = scene->globals.number_of_waves;
-    Builder b = { .w = w, .threads = threads, .deadline = limits ? limits->deadline : 0.0 };
+    Builder b = { .w = w, .threads = threads, .deadline = limits ? limits->deadline : 0.0,
+                  .instancing = limits && limits->instance_meshes };
     for (int i = 0; i < MATERIAL_MEMO; i++)
         b.memo[i].index = -1;
+    for (int i = 0; b.instancing && i < scene->nobjects; i++)
+        if (count_mesh_uses(&b, scene->objects[i], 0)) {
+            snprintf(err->message, sizeof err->message, "out of memory while counting the scene's meshes");
+            builder_free(&b);
+            world_free(w);
+            return -1;
+        }
     Inherited root;
     memset(&root, 0, sizeof root);
     transform_identity(&root.transform);
@@ -998,16 +1282,21 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
                 snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
             err->over_budget = b.timed_out;
             err->pos = scene->objects[i]->pos;
-            free(b.map_keys);
-            free(b.map_index);
+            builder_free(&b);
             world_free(w);
             return -1;
         }
     }
-    free(b.map_keys);
-    free(b.map_index);
     for (int i = 0; i < w->npolygons; i++)
         w->nsee_through += !w->materials[w->polygons[i].material].opaque;
+    w->nids = w->npolygons;
+    if (w->nprototypes > 0 && build_prototypes(&b)) {
+        snprintf(err->message, sizeof err->message, "out of memory while making the scene's instances");
+        builder_free(&b);
+        world_free(w);
+        return -1;
+    }
+    builder_free(&b);
     w->nlights = scene->nlights;
     w->lights = calloc((size_t)(scene->nlights > 0 ? scene->nlights : 1), sizeof(Light));
     if (!w->lights) {
@@ -1082,5 +1371,8 @@ void world_free(World *w)
     free(w->maps);
     free(w->map_entries);
     free(w->lights);
+    free(w->prototypes);
+    free(w->instances);
+    free(w->instance_materials);
     memset(w, 0, sizeof *w);
 }

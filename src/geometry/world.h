@@ -119,6 +119,32 @@ typedef struct {
     Vec3 lo, hi;
 } OutlineBox;
 
+/* Instancing (instance.h): a mesh the scene places two or more times keeps
+ * its polygons once, in its own space (a prototype), and each placement is
+ * an instance: the prototype, its transform and its materials. */
+typedef struct {
+    int first_polygon, npolygons; /* World.polygons, past the world's own */
+    /* Materials per instance: slot 0 the mesh's own (or inherited) texture,
+     * slot 1 + i the mesh's texture i; its polygons' `material` is a slot. */
+    int nslots;
+    Vec3 bbox_min, bbox_max;      /* of its polygons, in its own space */
+} Prototype;
+
+typedef struct {
+    Transform to_world;   /* the prototype's space to world (inv: back) */
+    int prototype;
+    int first_id;         /* the id (instance.h) of its first polygon */
+    int first_material;   /* World.instance_materials[first_material + slot] */
+    int hidden;           /* some material of it is no_image, no_reflection or no_shadow */
+    /* 1: the inverse's linear part is a signed permutation (quarter turns
+     * and mirrors, as LDraw parts mostly are): local axis i is world axis
+     * axis[i] times sign[i], exactly (instance_inverse_dir) */
+    int permutation;
+    int axis[3];
+    double sign[3];
+    Vec3 bbox_min, bbox_max; /* of its polygons, in world space */
+} Instance;
+
 /* Whether a polygon's outlines have boxes (World.outline_box): when it has
  * holes, or one outline of 5 points or more; a box costs three of the
  * crossing count's projections, more than a quad's whole count saves. */
@@ -180,6 +206,17 @@ typedef struct {
     int number_of_waves;  /* global_settings: the sources of waves and ripples normals */
     Vec3 bounds_min, bounds_max; /* of all polygons; empty when min > max */
     int ndegenerate;      /* polygons dropped at build: no area, up to rounding */
+    /* Instances (instance.h); none unless the build was asked to make
+     * them (WorldLimits.instance_meshes). npolygons counts the world-space
+     * polygons only; the prototypes' follow them in `polygons`. */
+    int nproto_polygons;
+    int nprototypes;
+    Prototype *prototypes;
+    int ninstances;
+    Instance *instances;
+    int ninstance_materials;
+    int *instance_materials;
+    int nids;             /* npolygons + every instance's polygons: the polygon ids a hit may carry */
     int nsee_through;     /* polygons whose material is not opaque (a shadow ray meets at most these, each
                              once: the room for what it filters) */
 } World;
@@ -201,6 +238,10 @@ typedef struct {
      * goes; what it stands for (--max-parse-seconds) is in max_seconds. */
     double deadline;
     double max_seconds;
+    /* 1: a mesh placed two or more times is kept once, as a prototype with
+     * instances (instance.h), where its materials allow it; 0: every copy
+     * flattened to world-space polygons. */
+    int instance_meshes;
 } WorldLimits;
 
 /* Returns 0, or -1 with err filled (e.g. out of memory). */

@@ -48,6 +48,10 @@ typedef struct {
     int with_alpha, width;
     unsigned *samples; /* 4 per pixel; [3] set only with alpha */
     float *scratch;    /* 3 per pixel, for the display transform */
+    /* 8-bit samples by the curve: threshold[k - 1] the least float whose
+     * sample is k (image_encode_thresholds), so that a sample is a search
+     * of 255 floats rather than a powf; NULL: none (encoded as they come) */
+    float *threshold;
 } ImageRowEncoder;
 
 /* Returns 0, or -1 when out of memory. */

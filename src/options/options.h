@@ -36,6 +36,7 @@ typedef struct {
     NthSetting nth;               /* hst's N_th (--nth: a number, auto or per-point) */
     int verify_shadows;        /* 1 --verify-shadows, 2 --verify-reference */
     int pixel_coherence;          /* hst: counts from the neighbouring pixel (--pixel-coherence) */
+    int instancing;               /* meshes placed many times kept once (--instancing auto: 1; off: 0) */
     int volumes_always;           /* hst: build every light's volumes (--volumes always); 0: auto */
     int grid[3];                  /* 0: choose from the polygon count */
     const char *include_paths[MAX_INCLUDE_PATHS];

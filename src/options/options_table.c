@@ -326,6 +326,7 @@ static const OptionWord plane_words[] = {
 };
 static const OptionWord volumes_words[] = { { "auto", 0 }, { "always", 1 }, { NULL, 0 } };
 static const OptionWord on_off_words[] = { { "on", 1 }, { "off", 0 }, { NULL, 0 } };
+static const OptionWord instancing_words[] = { { "auto", 1 }, { "off", 0 }, { NULL, 0 } };
 
 const OptionRow option_rows[] = {
     { .name = "--output", .short_name = "-o", .pov = "+O", .ini = "Output_File_Name", .type = OPT_STRING,
@@ -356,6 +357,14 @@ const OptionRow option_rows[] = {
               "build on this image, else shadow rays only (default auto);\n"
               "always: every light's, as the paper does",
       .expect = "expected auto or always" },
+    { .name = "--instancing", .type = OPT_WORDS, .words = instancing_words, .field = OPTION_FIELD(instancing),
+      .dflt = "auto", .value_name = "auto|off",
+      .help = "auto: a mesh placed two or more times is kept once and\n"
+              "each copy placed by its transform (less memory, a faster\n"
+              "build), where the shadow method takes instances (hst\n"
+              "without area lights or --volumes always, conventional,\n"
+              "cache, light-buffer, embree); off: every copy flattened",
+      .expect = "expected auto or off" },
     { .name = "--pixel-coherence", .type = OPT_WORDS, .words = on_off_words, .field = OPTION_FIELD(pixel_coherence),
       .dflt = "on", .value_name = "on|off",
       .help = "hst: carry depth counts from the previous pixel's\n"

@@ -178,6 +178,9 @@ void stats_print(FILE *f, const StatsReport *r)
             r->threads, r->threads == 1 ? "" : "s", r->shadow_method);
     fprintf(f, "  scene       %d polygons (%d degenerate dropped), %d infinite planes, %d lights\n", r->npolygons,
             r->ndegenerate, r->nplanes, r->nlights);
+    if (r->ninstances > 0)
+        fprintf(f, "  instances   %d placements of %d meshes: %d polygons kept once place %d more\n", r->ninstances,
+                r->nprototypes, r->nproto_polygons, r->ninstanced_polygons);
     if (r->povray_ini_why)
         fprintf(f, "  povray.ini  %s (%s)\n", r->povray_ini ? r->povray_ini : "none", r->povray_ini_why);
     for (int i = 0; i < r->napproximations; i++) {
@@ -339,6 +342,9 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
             r->shadow_method, r->width, r->height, r->threads);
     fprintf(f, "  \"polygons\": %d,\n  \"degenerate_dropped\": %d,\n  \"planes\": %d,\n  \"lights\": %d,\n", r->npolygons,
             r->ndegenerate, r->nplanes, r->nlights);
+    fprintf(f,
+            "  \"instances\": %d,\n  \"prototypes\": %d,\n  \"prototype_polygons\": %d,\n  \"instanced_polygons\": %d,\n",
+            r->ninstances, r->nprototypes, r->nproto_polygons, r->ninstanced_polygons);
     fprintf(f, "  \"approximations\": [");
     for (int i = 0; i < r->napproximations; i++) {
         const SceneApproximation *a = &r->approximations[i];

@@ -34,6 +34,10 @@ typedef struct {
     int grid_registered;              /* the polygons registered in its cells (grid_register) */
     int npolygons, nplanes, nlights;
     int ndegenerate;             /* polygons dropped at build: no area up to rounding */
+    /* Instancing (instance.h): placements kept as instances, the meshes
+     * they place (prototypes) and those meshes' polygons, kept once, and
+     * the polygons the instances place */
+    int ninstances, nprototypes, nproto_polygons, ninstanced_polygons;
     int napproximations;         /* what the scene uses that hstrace approximates */
     const SceneApproximation *approximations;
     double parse_seconds, preprocess_seconds, output_seconds, wall_seconds;

@@ -800,7 +800,7 @@ __attribute__((noinline)) static void shade_map_hit(ShadeContext *ctx, const Ray
     const World *w = ctx->tracer.world;
     SurfaceTexture found[MAX_SURFACE_TEXTURES];
     LitTexture lit[MAX_SURFACE_TEXTURES];
-    int n = material_textures_normals_at(w, m, hit->kind == HIT_POLYGON ? hit->index : -1, hit->point, normal,
+    int n = material_textures_normals_at(w, m, hit->kind == HIT_POLYGON ? world_uv_polygon(w, hit->index) : -1, hit->point, normal,
                                          ctx->quality.normal, found);
     for (int i = 0; i < n; i++)
         lit_texture(&lit[i], &found[i]);
@@ -813,18 +813,20 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
     const World *w = ctx->tracer.world;
     const Hit hit = *hitp;
     const Material *m = &w->materials[hit_material(w, &hit)];
-    Vec3 raw = hit.kind == HIT_POLYGON ? polygon_shading_normal(w, &w->polygons[hit.index], hit.point)
+    Vec3 raw = hit.kind == HIT_POLYGON ? world_polygon_shading_normal(w, hit.index, hit.instance, hit.point)
                                        : w->planes[hit.index].normal;
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
-    if (m->map >= 0 || (hit.kind == HIT_POLYGON && w->polygons[hit.index].vertex_materials >= 0)) {
+    /* (an instance's polygon has no materials per vertex: flatten.c instances no such mesh) */
+    if (m->map >= 0 ||
+        (hit.kind == HIT_POLYGON && hit.index < w->npolygons && w->polygons[hit.index].vertex_materials >= 0)) {
         if (ctx->aov && ctx->depth == 1)
             aov_record_hit(ctx->aov, hit.t, hit.point, raw); /* a map's textures have normals each */
         shade_map_hit(ctx, ray, &hit, seg, m, raw, raw, weight, level, out);
         return;
     }
     const SurfaceTexture own =
-        material_plain_texture_at(w, m, hit.kind == HIT_POLYGON ? hit.index : -1, hit.point, raw, ctx->quality.normal);
+        material_plain_texture_at(w, m, hit.kind == HIT_POLYGON ? world_uv_polygon(w, hit.index) : -1, hit.point, raw, ctx->quality.normal);
     if (ctx->aov && ctx->depth == 1)
         aov_record_hit(ctx->aov, hit.t, hit.point, own.normal);
     LitTexture lit;

@@ -199,15 +199,13 @@ static float near_bound(const Polygon *p, Vec3 at)
  * m (1 + |u|) / a <= 9 m / near in the face's coordinates: 16 m / near is
  * padded, and the cells' widening and the float's rounding. */
 #define LB_FOOTPRINT_POINTS 32 /* polygons of more points get the whole face */
-static LbFootprint footprint(const LightBuffers *lbs, const Polygon *p, Vec3 at, int face, double near)
+static LbFootprint points_footprint(const LightBuffers *lbs, const Vec3 *pts, int n, Vec3 at, int face, double near)
 {
     const LbFootprint anywhere = { -INFINITY, INFINITY, -INFINITY, INFINITY };
     int axis = face / 2;
     double s = (face & 1) ? -1.0 : 1.0;
     if (!(near > 1e3 * lbs->margin))
         return anywhere;
-    int n;
-    const Vec3 *pts = polygon_points(lbs->world, p, &n);
     if (n > LB_FOOTPRINT_POINTS)
         return (LbFootprint){ -2.5f, 2.5f, -2.5f, 2.5f };
     const double clip = 0.25 * near;
@@ -249,6 +247,14 @@ static LbFootprint footprint(const LightBuffers *lbs, const Polygon *p, Vec3 at,
                       round_up(box[3] + pad) };
     return f;
 }
+
+static LbFootprint footprint(const LightBuffers *lbs, const Polygon *p, Vec3 at, int face, double near)
+{
+    int n;
+    const Vec3 *pts = polygon_points(lbs->world, p, &n);
+    return points_footprint(lbs, pts, n, at, face, near);
+}
+
 
 /* Polygon p's plane for lb_candidate_passed: turned toward the light and
  * rounded to float; zero where the light lies within plane_margin of it. */
@@ -407,6 +413,34 @@ static int by_near(const void *a, const void *b)
     return x->item < y->item ? -1 : x->item > y->item;
 }
 
+/* An instance as a candidate (instance.h): its box (Bvh.instance_box,
+ * rounded outward with the hierarchy's margin) stands for its polygons,
+ * which it holds. Its near bound is the box's distance from the light,
+ * its footprint the box's corners' (the convex hull of the corners holds
+ * the polygons, which is all points_footprint asks), its plane none and
+ * its shape none (never crossed, never a cover): a point that selects it
+ * has the instance's polygons met by the shadow ray's own walk of it. */
+static int instance_candidate(const LightBuffers *lbs, const LightBuffer *lb, const Pyramid *pyr, int face,
+                              const float box[6], uint32_t k, CandidateList *out)
+{
+    Vec3 lo = v3(box[0], box[1], box[2]), hi = v3(box[3], box[4], box[5]);
+    if (box_outside(pyr, lb->at, lo, hi, lbs->margin))
+        return 0;
+    Vec3 at = lb->at;
+    double dx = fmax(fmax(lo.x - at.x, at.x - hi.x), 0.0);
+    double dy = fmax(fmax(lo.y - at.y, at.y - hi.y), 0.0);
+    double dz = fmax(fmax(lo.z - at.z, at.z - hi.z), 0.0);
+    float near = round_down(sqrt(dx * dx + dy * dy + dz * dz) * (1.0 - 1e-9));
+    Vec3 corner[8];
+    for (int q = 0; q < 8; q++)
+        corner[q] = v3(q & 1 ? hi.x : lo.x, q & 2 ? hi.y : lo.y, q & 4 ? hi.z : lo.z);
+    LbShape shape;
+    memset(&shape, 0, sizeof shape);
+    Candidate cand = { { 0.0f, 0.0f, 0.0f, 0.0f }, points_footprint(lbs, corner, 8, at, face, near), near, k,
+                       (uint32_t)out->nshapes };
+    return shape_push(out, &shape) || candidate_push(out, &cand) ? -1 : 0;
+}
+
 /* Every polygon that may cast the light's shadows into the pyramid: the
  * hierarchy walked with it, the list in order of the near bound. */
 static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb, const Pyramid *pyr, int face,
@@ -438,6 +472,12 @@ static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb,
         for (uint32_t k = first; k < end; k++) {
             if (b->prims[k].hide & HIDE_NO_SHADOW)
                 continue;
+            if (b->items[k] & BVH_INSTANCE) {
+                if (instance_candidate(lbs, lb, pyr, face, &b->instance_box[6 * (b->items[k] & ~BVH_INSTANCE)], k,
+                                       out))
+                    return -1;
+                continue;
+            }
             const Polygon *p = &w->polygons[b->items[k]];
             /* edge-on to the light: the shadow ray passes it (shadow_conventional.c) */
             if (light_side_of(p, light, lbs->tolerance) == 0)
@@ -559,6 +599,8 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
     double u0, u1, v0, v1;
     cell_range(at, &u0, &u1, &v0, &v1);
     for (size_t i = 0, tried = 0; cover < 0 && i < l->n && tried < LB_COVER_TRIES; i++) {
+        if (b->items[l->c[i].item] & BVH_INSTANCE)
+            continue; /* an instance covers nothing it is proved to */
         const Polygon *p = &w->polygons[b->items[l->c[i].item]];
         /* a polygon whose footprint does not hold the cell cannot cover it */
         const LbFootprint *f = &l->c[i].footprint;
@@ -833,7 +875,8 @@ int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double
     if (!lbs->light || !lbs->item_of)
         return -1;
     for (int k = 0; k < bvh->nitems; k++)
-        lbs->item_of[bvh->items[k]] = (uint32_t)k;
+        if (!(bvh->items[k] & BVH_INSTANCE))
+            lbs->item_of[bvh->items[k]] = (uint32_t)k;
     for (int i = 0; i < w->nlights; i++) {
         const Light *l = &w->lights[i];
         if (l->kind != LIGHT_POINT || l->shadowless)

@@ -196,7 +196,8 @@ typedef struct LightBuffers {
     double plane_margin;    /* the least distance of the light from a plane lb_candidate_passed uses: 1e-3 of it */
     int nlights;
     LightBuffer **light;    /* per light: its buffer, or NULL (not a point light) */
-    uint32_t *item_of;      /* per polygon, its leaf item in the hierarchy */
+    uint32_t *item_of;      /* per world polygon, its leaf item in the hierarchy (instances' polygons
+                             * are their instance's item's, instance.h) */
     size_t budget;          /* bytes the cells may take */
     uint32_t split_at;      /* LB_SPLIT_AT (tests set less) */
     atomic_size_t bytes;    /* ... taken */

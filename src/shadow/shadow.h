@@ -100,7 +100,12 @@ void shadow_counters_add(ShadowCounters *total, const ShadowCounters *part);
  * shading point's neighbours on a mesh of small triangles are seldom
  * blocked by the same one, and a miss costs a polygon test). */
 typedef struct {
-    int blocker;               /* the polygon, or -1 */
+    int blocker;               /* the polygon (its id, instance.h), or -1 */
+    /* Its plane in world space (world_polygon_plane: an instance's is
+     * carried out with a square root), made when it is remembered rather
+     * than at every try, and its instance (-1: a world polygon) */
+    Polygon plane;
+    int instance;
     unsigned tries, hits;      /* cache tries in this tile and the hits among them */
     unsigned skipped;          /* queries the cache sat out since its last try */
     int lit_last;              /* 1: the light's last decision here found no polygon blocking it fully */
@@ -295,6 +300,9 @@ typedef struct ShadowMethod {
     int blind;
     /* 1: for the tests only: found by name, but listed nowhere. */
     int hidden;
+    /* 1: decides on a world with instances (instance.h) as on a flat one;
+     * 0: wants world-space polygons (shadow_method_takes_instances). */
+    int instances;
 } ShadowMethod;
 
 /* The test-only method (shadow_every_lit.c): every light reaches every

@@ -44,10 +44,10 @@ static __attribute__((noinline)) int cached_blocker_try(ShadowContext *ctx, cons
                                                         int pi)
 {
     const World *w = ctx->tracer->world;
-    const Polygon *p = &w->polygons[pi];
     /* The shadow ray's own rule for a polygon edge-on to the light (an area
-     * light's sample may see edge-on what blocked another sample). */
-    if (light_side_of(p, q->source, grid_tolerance(ctx->tracer->grid)) == 0)
+     * light's sample may see edge-on what blocked another sample), on the
+     * plane the shadow ray's walk takes (world_polygon_plane's, kept). */
+    if (light_side_of(&c->plane, q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
     ctx->stats.shadow_polygon_tests++;
     /* The shadow ray's test on the shadow ray's frame (the same numbers,
@@ -57,7 +57,7 @@ static __attribute__((noinline)) int cached_blocker_try(ShadowContext *ctx, cons
      * answer is its answer, wherever in the polygon (border included) the
      * hit lies. */
     c->tries++;
-    double t = intersect_polygon(w, p, q->point, q->to_light);
+    double t = world_polygon_hit(w, pi, c->instance, q->point, q->to_light); /* an instance's: on instance_ray's ray, as the walk */
     int hit = t > trace_min_distance(q->point) && t < q->distance;
     c->hits += (unsigned)hit;
     return hit;
@@ -75,8 +75,16 @@ int shadow_cached_blocker_hits(ShadowContext *ctx, const ShadowQuery *q)
 void shadow_cache_remember(ShadowContext *ctx, const ShadowQuery *q, const RGB *light)
 {
     /* Only opaque blockers are cached: a hit must mean "no light". */
-    if (ctx->last_blocker >= 0 && light->r == 0.0 && light->g == 0.0 && light->b == 0.0)
-        ctx->light_cache[q->light].blocker = ctx->last_blocker;
+    LightCache *c = &ctx->light_cache[q->light];
+    if (ctx->last_blocker >= 0 && light->r == 0.0 && light->g == 0.0 && light->b == 0.0 &&
+        c->blocker != ctx->last_blocker) {
+        const World *w = ctx->tracer->world;
+        c->blocker = ctx->last_blocker;
+        const Polygon *p = world_polygon_plane(w, c->blocker, -1, &c->plane);
+        if (p != &c->plane)
+            c->plane = *p;
+        (void)world_polygon_hinted(w, c->blocker, -1, &c->instance);
+    }
 }
 
 void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
@@ -110,4 +118,5 @@ const ShadowMethod shadow_cache_method = {
     .name = "cache",
     .summary = "shadow rays that first try the light's last opaque blocker (as POV-Ray does)",
     .test = shadow_cache_test,
+    .instances = 1,
 };

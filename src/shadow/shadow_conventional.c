@@ -29,11 +29,13 @@ static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int p
                               const ShadowQuery *q, Vec3 at, int *blocks)
 {
     const World *w = ctx->tracer->world;
-    Vec3 n = plane ? plane->normal : polygon_shading_normal(w, &w->polygons[polygon], at);
+    /* polygon: its id (instance.h; an instance's normal carried out) */
+    Vec3 n = plane ? plane->normal : world_polygon_shading_normal(w, polygon, -1, at);
     if (v3_dot(n, q->to_light) > 0.0)
         n = v3_neg(n);
     SurfaceTexture tx[MAX_SURFACE_TEXTURES];
-    int nt = material_textures_normals_at(w, m, polygon, at, n, ctx->perturb_normals, tx);
+    int nt = material_textures_normals_at(w, m, plane ? -1 : world_uv_polygon(w, polygon), at, n, ctx->perturb_normals,
+                                          tx);
     RGB through = { 0, 0, 0 };
     *blocks = 1;
     for (int i = 0; i < nt; i++) {
@@ -47,9 +49,9 @@ static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int p
     return through;
 }
 
-/* Folds one blocker (a polygon, or an infinite plane), hit at distance t,
- * into the light that gets through; returns 1 when the light is now fully
- * blocked. */
+/* Folds one blocker (a polygon, by its id (instance.h), or an infinite
+ * plane), hit at distance t, into the light that gets through; returns 1
+ * when the light is now fully blocked. */
 static int pass_through(const ShadowContext *ctx, const Material *m, int polygon, const InfinitePlane *plane,
                         const ShadowQuery *q, double t, RGB *light)
 {
@@ -58,7 +60,9 @@ static int pass_through(const ShadowContext *ctx, const Material *m, int polygon
     Vec3 at = v3_add(q->point, v3_scale(q->to_light, t));
     if (!m->opaque)
         through = m->caustics != 0.0 ? caustics_filter_at(ctx, m, polygon, plane, q, at, &blocks)
-                                     : material_filter_at(ctx->tracer->world, m, polygon, at, &blocks);
+                                     : material_filter_at(ctx->tracer->world, m,
+                                                          plane ? -1 : world_uv_polygon(ctx->tracer->world, polygon),
+                                                          at, &blocks);
     if (blocks) {
         light->r = light->g = light->b = 0.0;
         return 1;
@@ -141,13 +145,17 @@ static int meet_polygon(void *user, uint32_t pi, double t)
     ShadowWalk *sw = user;
     ShadowContext *ctx = sw->ctx;
     const World *w = ctx->tracer->world;
-    const Polygon *p = &w->polygons[pi];
+    Polygon scratch;
+    /* the walk's instance, when it is one's polygon: no search */
+    const int hint = ctx->tracer->visiting;
+    const Polygon *p = world_polygon_plane(w, (int)pi, hint, &scratch);
     /* A polygon edge-on to the light (the light in its plane) casts no
      * shadow: the ray can only graze it, or meet it at the light itself.
-     * The same rule as the shadow volumes'. */
+     * The same rule as the shadow volumes'. (An instance's polygon: its
+     * plane carried to world space, the same for every method.) */
     if (light_side_of(p, sw->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
-    const Material *m = &w->materials[p->material];
+    const Material *m = &w->materials[world_polygon_material_hinted(w, (int)pi, hint)];
     if (m->opaque) {
         sw->blocker = (int)pi;
         return 1;
@@ -226,9 +234,23 @@ int shadow_list_meet_crossed(ShadowListWalk *lw, uint32_t polygon)
     return list_met(lw, polygon, t > 0.0 && t < lw->q->distance ? t : -1.0);
 }
 
+/* The visitor of an instance's walk for a list: list_met. */
+static int list_visit(void *user, uint32_t polygon, double t)
+{
+    return list_met(user, polygon, t);
+}
+
 int shadow_list_meet_item(ShadowListWalk *lw, const Bvh *b, uint32_t item)
 {
     uint32_t polygon = b->items[item];
+    if (polygon & BVH_INSTANCE) {
+        /* an instance: its polygons met by the shadow ray's own walk of it
+         * (trace_segment_hits's), its own polygon left out there */
+        ShadowContext *ctx = lw->ctx;
+        return trace_instance_hits(ctx->tracer, (int)(polygon & ~BVH_INSTANCE), lw->q->point, lw->q->to_light,
+                                   lw->tmin, lw->q->distance, lw->own == UINT32_MAX ? -1 : (int)lw->own,
+                                   HIDE_NO_SHADOW, list_visit, lw, &ctx->stats.shadow_polygon_tests);
+    }
     if (polygon == lw->own)
         return 0;
     ShadowContext *ctx = lw->ctx;
@@ -359,7 +381,7 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
         double from = last; /* the point, or the last surface filtered: where this leg starts */
         last = ctx->filtered[i].t;
         uint32_t pi = ctx->filtered[i].polygon;
-        const Material *m = &w->materials[w->polygons[pi].material];
+        const Material *m = &w->materials[world_polygon_material(w, (int)pi)];
         if (pass_through(ctx, m, (int)pi, NULL, q, ctx->filtered[i].t, light)) {
             /* a patterned see-through polygon blocks only where it is opaque:
              * not one for the cache, which takes a hit anywhere as blocked */

@@ -18,7 +18,14 @@
  *   even-odd rule does not have; they are few (--stats counts them), so an
  *   exact test costs little and keeps their decisions the shadow ray's;
  * - no_shadow polygons not at all (the shadow ray skips them; leaving them
- *   out is the same rule at no cost per ray).
+ *   out is the same rule at no cost per ray);
+ * - a world with instances (instance.h): each prototype's triangles in a
+ *   scene of their own, in its space, and each instance as an Embree
+ *   instance of it (its transform rounded to float); the filter names the
+ *   hit by the instance's polygon id and takes its distance on the polygon's
+ *   plane in the instance's space, on the ray instance_ray carries there,
+ *   as the shadow ray's walk does, and leaves out what the instance's
+ *   materials make no_shadow.
  *
  * The filter (and the user geometry's test) rejects a hit on the shading
  * point's own polygon, on a polygon edge-on to the light, or at a distance
@@ -38,6 +45,7 @@
 
 #include "clock.h"
 #include "config.h"
+#include "instance.h"
 #include "intersect.h"
 #include "light.h"
 
@@ -58,6 +66,10 @@ struct EmbreeScene {
     const World *world;
     uint32_t *triangle_polygon; /* Embree triangle -> world polygon */
     uint32_t *user_polygon;     /* user primitive -> world polygon */
+    RTCScene *proto;            /* per prototype: its triangles' scene, in its space */
+    int nproto;
+    int *instance_of;           /* the top scene's geometry ID -> World.instances (-1: none) */
+    unsigned ninstance_of;
     EmbreeSceneInfo info;
     char error[256];            /* the device's first error */
 };
@@ -139,6 +151,8 @@ typedef struct {
     const ShadowQuery *q;
     const EmbreeScene *es;
     RayFrame frame;       /* the double ray, for distances and the exact test */
+    int framed_instance;  /* the instance `local` is the ray of, or -1 */
+    RayFrame local;       /* the ray in that instance's space (instance_ray) */
     double tmin;
     int exclude;          /* the shading point's own polygon, or -1 */
     uint32_t mark;        /* stamp of this ray: see-through polygons taken once */
@@ -147,20 +161,32 @@ typedef struct {
 
 /* 1: pi blocks (opaque, within the segment); 0: the ray goes on. t: the
  * hit's double distance on pi's plane. */
-static int meet(EmbreeRay *er, uint32_t pi, double t)
+static int meet(EmbreeRay *er, uint32_t pi, int instance, double t)
 {
     if ((int)pi == er->exclude || !(t > er->tmin && t < er->q->distance))
         return 0;
     ShadowContext *ctx = er->ctx;
     const World *w = er->es->world;
-    const Polygon *p = &w->polygons[pi];
+    Polygon scratch;
+    const Polygon *p = world_polygon_plane(w, (int)pi, instance, &scratch);
     if (light_side_of(p, er->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
-    if (w->materials[p->material].opaque) {
+    const Material *m = &w->materials[world_polygon_material_hinted(w, (int)pi, instance)];
+    if (m->no_shadow)
+        return 0; /* an instance's: its material's (world polygons so made are not in the scene) */
+    if (m->opaque) {
         er->blocker = (int)pi;
         return 1;
     }
-    if (bucket_admit(ctx->tracer, er->mark, pi)) {
+    if ((int)pi >= w->npolygons) {
+        /* an instance's polygon, taken once: the stamps are the world's */
+        for (int i = 0; i < ctx->nfiltered; i++)
+            if (ctx->filtered[i].polygon == pi)
+                return 0;
+        ctx->filtered[ctx->nfiltered].t = t;
+        ctx->filtered[ctx->nfiltered].polygon = pi;
+        ctx->nfiltered++;
+    } else if (bucket_admit(ctx->tracer, er->mark, pi)) {
         ctx->filtered[ctx->nfiltered].t = t;
         ctx->filtered[ctx->nfiltered].polygon = pi;
         ctx->nfiltered++;
@@ -179,7 +205,39 @@ static void triangle_filter(const struct RTCFilterFunctionNArguments *args)
             continue;
         uint32_t pi = polygon_of[prim[i]];
         double t = intersect_plane_distance(&er->es->world->polygons[pi], &er->frame);
-        if (!meet(er, pi, t))
+        if (!meet(er, pi, -1, t))
+            args->valid[i] = 0;
+    }
+}
+
+/* The occlusion filter of a prototype's triangles, hit through an
+ * instance (its geometry ID in the hit's instance column). */
+static void instance_filter(const struct RTCFilterFunctionNArguments *args)
+{
+    EmbreeRay *er = (EmbreeRay *)args->context;
+    const EmbreeScene *es = er->es;
+    const World *w = es->world;
+    const unsigned *prim = (const unsigned *)args->hit + 5 * args->N; /* RTCHitN's primID column */
+    const unsigned *inst = (const unsigned *)args->hit + 7 * args->N; /* ... instID, level 0 */
+    for (unsigned i = 0; i < args->N; i++) {
+        if (args->valid[i] == 0)
+            continue;
+        int k = inst[i] < es->ninstance_of ? es->instance_of[inst[i]] : -1;
+        if (k < 0) {
+            args->valid[i] = 0;
+            continue;
+        }
+        const Instance *in = &w->instances[k];
+        if (er->framed_instance != k) {
+            Vec3 lorg, ldir;
+            instance_ray(in, er->frame.org, er->frame.dir, &lorg, &ldir);
+            er->local = ray_frame(lorg, ldir);
+            er->framed_instance = k;
+        }
+        const Prototype *pr = &w->prototypes[in->prototype];
+        uint32_t pi = (uint32_t)(in->first_id + (int)prim[i]);
+        double t = intersect_plane_distance(&w->polygons[pr->first_polygon + (int)prim[i]], &er->local);
+        if (!meet(er, pi, k, t))
             args->valid[i] = 0;
     }
 }
@@ -206,7 +264,7 @@ static void user_occluded(const struct RTCOccludedFunctionNArguments *args)
     uint32_t pi = es->user_polygon[args->primID];
     er->ctx->stats.shadow_polygon_tests++;
     double t = intersect_polygon_in(es->world, &es->world->polygons[pi], &er->frame, er->q->distance);
-    if (!meet(er, pi, t))
+    if (!meet(er, pi, -1, t))
         return;
     float *tfar = (float *)args->ray + 8 * args->N; /* RTCRayN's tfar column */
     for (unsigned i = 0; i < args->N; i++)
@@ -225,6 +283,83 @@ static int fail(EmbreeScene *es, char *err, int errlen, const char *what)
     snprintf(err, (size_t)errlen, "Embree: %s%s%s", what, es && es->error[0] ? ": " : "", es ? es->error : "");
     shadow_embree_free(es);
     return 0;
+}
+
+/* Each prototype's triangles (a mesh's, every one a triangle) in a scene
+ * of their own, and each instance of it in the top scene. 1, or 0 when
+ * out of memory. */
+static int add_instances(EmbreeScene *es)
+{
+    const World *w = es->world;
+    es->proto = calloc((size_t)w->nprototypes, sizeof *es->proto);
+    if (!es->proto)
+        return 0;
+    es->nproto = w->nprototypes;
+    for (int k = 0; k < w->nprototypes; k++) {
+        const Prototype *pr = &w->prototypes[k];
+        RTCScene sc = rtcNewScene(es->device);
+        es->proto[k] = sc;
+        if (!sc)
+            return 0;
+        rtcSetSceneFlags(sc, RTC_SCENE_FLAG_ROBUST);
+        rtcSetSceneBuildQuality(sc, EMBREE_QUALITY);
+        RTCGeometry g = rtcNewGeometry(es->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        size_t n = (size_t)(pr->npolygons > 0 ? pr->npolygons : 1);
+        float *v = g ? rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 4 * sizeof(float), 3 * n)
+                     : NULL;
+        unsigned *tri = g ? rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n)
+                          : NULL;
+        if (!v || !tri) {
+            if (g)
+                rtcReleaseGeometry(g);
+            return 0;
+        }
+        for (int q = 0; q < pr->npolygons; q++) {
+            const Polygon *p = &w->polygons[pr->first_polygon + q];
+            for (int j = 0; j < 3; j++) { /* meshes make triangles only */
+                Vec3 x = w->points[p->first_point + j];
+                v[4 * (3 * q + j)] = (float)x.x;
+                v[4 * (3 * q + j) + 1] = (float)x.y;
+                v[4 * (3 * q + j) + 2] = (float)x.z;
+                v[4 * (3 * q + j) + 3] = 0.0f;
+                tri[3 * q + j] = (unsigned)(3 * q + j);
+            }
+        }
+        rtcSetGeometryOccludedFilterFunction(g, instance_filter);
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(sc, g);
+        rtcReleaseGeometry(g);
+        rtcCommitScene(sc);
+    }
+    for (int i = 0; i < w->ninstances; i++) {
+        const Instance *in = &w->instances[i];
+        RTCGeometry g = rtcNewGeometry(es->device, RTC_GEOMETRY_TYPE_INSTANCE);
+        if (!g)
+            return 0;
+        rtcSetGeometryInstancedScene(g, es->proto[in->prototype]);
+        /* object to world, row vectors (p M): Embree's column-major 3x4 is
+         * the same numbers, column j being M's row j */
+        float xfm[12];
+        for (int r = 0; r < 4; r++)
+            for (int c = 0; c < 3; c++)
+                xfm[3 * r + c] = (float)in->to_world.m[r][c];
+        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        rtcCommitGeometry(g);
+        unsigned id = rtcAttachGeometry(es->scene, g);
+        rtcReleaseGeometry(g);
+        if (id >= es->ninstance_of) {
+            unsigned cap = id + 1 > 2 * es->ninstance_of ? id + 1 : 2 * es->ninstance_of;
+            int *map = realloc(es->instance_of, sizeof *map * cap);
+            if (!map)
+                return 0;
+            for (unsigned j = es->ninstance_of; j < cap; j++)
+                map[j] = -1;
+            es->instance_of = map;
+            es->ninstance_of = cap;
+        }
+        es->instance_of[id] = i;
+    }
+    return 1;
 }
 
 EmbreeScene *shadow_embree_build(const World *w, int threads, char *err, int errlen)
@@ -356,6 +491,8 @@ EmbreeScene *shadow_embree_build(const World *w, int threads, char *err, int err
     free(idx);
     free(how);
     free(fan);
+    if (ok && w->ninstances > 0)
+        ok = add_instances(es);
     if (ok)
         rtcCommitScene(es->scene);
     if (!ok || es->error[0] || rtcGetDeviceError(es->device) != RTC_ERROR_NONE) {
@@ -374,6 +511,11 @@ void shadow_embree_free(EmbreeScene *es)
         rtcReleaseScene(es->scene);
     if (es->device)
         rtcReleaseDevice(es->device);
+    for (int k = 0; k < es->nproto; k++)
+        if (es->proto[k])
+            rtcReleaseScene(es->proto[k]);
+    free(es->proto);
+    free(es->instance_of);
     free(es->triangle_polygon);
     free(es->user_polygon);
     free(es);
@@ -398,6 +540,7 @@ void shadow_embree_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     er.q = q;
     er.es = ctx->embree;
     er.frame = ray_frame(q->point, q->to_light);
+    er.framed_instance = -1;
     er.tmin = trace_min_distance(q->point);
     er.exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
     er.mark = trace_new_segment(ctx->tracer);
@@ -438,6 +581,83 @@ struct EmbreeScene {
 int shadow_embree_built(void) { return 0; }
 
 const char *shadow_embree_version(void) { return NULL; }
+
+/* Each prototype's triangles (a mesh's, every one a triangle) in a scene
+ * of their own, and each instance of it in the top scene. 1, or 0 when
+ * out of memory. */
+static int add_instances(EmbreeScene *es)
+{
+    const World *w = es->world;
+    es->proto = calloc((size_t)w->nprototypes, sizeof *es->proto);
+    if (!es->proto)
+        return 0;
+    es->nproto = w->nprototypes;
+    for (int k = 0; k < w->nprototypes; k++) {
+        const Prototype *pr = &w->prototypes[k];
+        RTCScene sc = rtcNewScene(es->device);
+        es->proto[k] = sc;
+        if (!sc)
+            return 0;
+        rtcSetSceneFlags(sc, RTC_SCENE_FLAG_ROBUST);
+        rtcSetSceneBuildQuality(sc, EMBREE_QUALITY);
+        RTCGeometry g = rtcNewGeometry(es->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        size_t n = (size_t)(pr->npolygons > 0 ? pr->npolygons : 1);
+        float *v = g ? rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 4 * sizeof(float), 3 * n)
+                     : NULL;
+        unsigned *tri = g ? rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n)
+                          : NULL;
+        if (!v || !tri) {
+            if (g)
+                rtcReleaseGeometry(g);
+            return 0;
+        }
+        for (int q = 0; q < pr->npolygons; q++) {
+            const Polygon *p = &w->polygons[pr->first_polygon + q];
+            for (int j = 0; j < 3; j++) { /* meshes make triangles only */
+                Vec3 x = w->points[p->first_point + j];
+                v[4 * (3 * q + j)] = (float)x.x;
+                v[4 * (3 * q + j) + 1] = (float)x.y;
+                v[4 * (3 * q + j) + 2] = (float)x.z;
+                v[4 * (3 * q + j) + 3] = 0.0f;
+                tri[3 * q + j] = (unsigned)(3 * q + j);
+            }
+        }
+        rtcSetGeometryOccludedFilterFunction(g, instance_filter);
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(sc, g);
+        rtcReleaseGeometry(g);
+        rtcCommitScene(sc);
+    }
+    for (int i = 0; i < w->ninstances; i++) {
+        const Instance *in = &w->instances[i];
+        RTCGeometry g = rtcNewGeometry(es->device, RTC_GEOMETRY_TYPE_INSTANCE);
+        if (!g)
+            return 0;
+        rtcSetGeometryInstancedScene(g, es->proto[in->prototype]);
+        /* object to world, row vectors (p M): Embree's column-major 3x4 is
+         * the same numbers, column j being M's row j */
+        float xfm[12];
+        for (int r = 0; r < 4; r++)
+            for (int c = 0; c < 3; c++)
+                xfm[3 * r + c] = (float)in->to_world.m[r][c];
+        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        rtcCommitGeometry(g);
+        unsigned id = rtcAttachGeometry(es->scene, g);
+        rtcReleaseGeometry(g);
+        if (id >= es->ninstance_of) {
+            unsigned cap = id + 1 > 2 * es->ninstance_of ? id + 1 : 2 * es->ninstance_of;
+            int *map = realloc(es->instance_of, sizeof *map * cap);
+            if (!map)
+                return 0;
+            for (unsigned j = es->ninstance_of; j < cap; j++)
+                map[j] = -1;
+            es->instance_of = map;
+            es->ninstance_of = cap;
+        }
+        es->instance_of[id] = i;
+    }
+    return 1;
+}
 
 EmbreeScene *shadow_embree_build(const World *w, int threads, char *err, int errlen)
 {

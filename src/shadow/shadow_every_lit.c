@@ -86,4 +86,5 @@ const ShadowMethod shadow_every_lit_method = {
     .segment_end = every_lit_segment_end,
     .test = every_lit_test,
     .hidden = 1,
+    .instances = 1,
 };

@@ -123,13 +123,19 @@ static int light_buffers_pay(const ShadowSetup *s)
     int point_lights = 0;
     for (int i = 0; i < s->world->nlights; i++)
         point_lights += s->world->lights[i].kind == LIGHT_POINT && !s->world->lights[i].shadowless;
-    return point_lights > 0 &&
-           (double)s->world->npolygons <= HST_LIGHT_BUFFER_POLYGONS_PER_PIXEL * (double)s->width * (double)s->height;
+    /* the polygons the lights see: instances' too (instance.h) */
+    const World *w = s->world;
+    double polygons = w->nids > w->npolygons ? w->nids : w->npolygons;
+    return point_lights > 0 && polygons <= HST_LIGHT_BUFFER_POLYGONS_PER_PIXEL * (double)s->width * (double)s->height;
 }
 
 int shadow_hst_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen)
 {
-    if (prepare_volumes(s, s->volumes_always ? VOLUMES_ALWAYS : VOLUMES_AUTO, out, err, errlen))
+    /* A world with instances (shadow_method_takes_instances) gets no
+     * volumes, which want world-space polygons: its decisions are the
+     * light buffer's or the cache method's, as below. */
+    if (s->world->ninstances == 0 &&
+        prepare_volumes(s, s->volumes_always ? VOLUMES_ALWAYS : VOLUMES_AUTO, out, err, errlen))
         return -1;
     /* The lights' light buffers, where they pay: hst's decisions by the
      * shadow ray (lights without volumes, and where a count does not

@@ -129,7 +129,8 @@ static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const Shado
     const float limit = (float)(limit_d * (1.0 + 0x1p-22)); /* float's rounding is below 2^-24 */
     const LbPoint point = lb_point(q->point, q->distance);
     const float u = (float)spot.u, v = (float)spot.v;
-    const uint32_t own_item = own >= 0 ? lbs->item_of[own] : UINT32_MAX;
+    /* an instance's own polygon is left out by its instance's walk */
+    const uint32_t own_item = own >= 0 && own < lbs->world->npolygons ? lbs->item_of[own] : UINT32_MAX;
     const uint32_t nblocks = (cell->n + LB_BLOCK - 1) / LB_BLOCK;
     uint32_t looked = 0, tests = 0;
     int blocked = 0, walking = 0, cache_hit = 0, crossed_opaque = 0;
@@ -231,4 +232,5 @@ const ShadowMethod shadow_light_buffer_method = {
                "the candidate occluders, built as points ask",
     .prepare = shadow_light_buffer_prepare,
     .test = light_buffer_test,
+    .instances = 1,
 };

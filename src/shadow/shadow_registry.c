@@ -40,6 +40,7 @@ static const ShadowMethod conventional_row = {
     .name = "conventional",
     .summary = "a shadow ray per light through the grid (exact reference)",
     .test = shadow_conventional_test,
+    .instances = 1,
 };
 static const ShadowMethod volume_row = {
     .name = "volume",
@@ -59,12 +60,14 @@ static const ShadowMethod embree_row = {
     .prepare = shadow_embree_prepare,
     .test = shadow_embree_test,
     .inexact = 1,
+    .instances = 1,
 };
 static const ShadowMethod none_row = {
     .name = "none",
     .summary = "no shadows: every light reaches every point",
     .test = shadow_none_test,
     .blind = 1,
+    .instances = 1,
 };
 
 /* The registry's rows, the first the default; a method is its file (its
@@ -113,6 +116,15 @@ const ShadowMethod *shadow_method_find(const char *name)
         if (strcmp(methods[i]->name, name) == 0)
             return methods[i];
     return NULL;
+}
+
+int shadow_method_takes_instances(const ShadowMethod *m, int volumes_always, int area_lights)
+{
+    /* hst with no volumes (they want world-space polygons) and no area
+     * light (its beams read polygons' planes) decides as the cache does */
+    if (m == &hst_row)
+        return !volumes_always && !area_lights;
+    return m->instances;
 }
 
 const char *shadow_method_unavailable(const ShadowMethod *m)

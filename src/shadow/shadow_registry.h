@@ -10,6 +10,10 @@
 
 /* NULL when no method has that name. */
 const ShadowMethod *shadow_method_find(const char *name);
+/* Whether method m decides on a world with instances (instance.h): with
+ * hst's --volumes always (volumes_always) or any area light (area_lights)
+ * in the scene, or not. A method that does not gets a flattened world. */
+int shadow_method_takes_instances(const ShadowMethod *m, int volumes_always, int area_lights);
 /* Why this build cannot use method m (embree without Embree), or NULL. */
 const char *shadow_method_unavailable(const ShadowMethod *m);
 /* Names of all methods, comma separated, for messages and --help. */

@@ -38,7 +38,7 @@ static void render_tiny(const Scene *scene)
      * scene's tree before anything is made, not built for 15 s. */
     World world;
     WorldError werr;
-    WorldLimits limits = { (size_t)64 << 20, 0.0, 0.0 };
+    WorldLimits limits = { (size_t)64 << 20, 0.0, 0.0, 0 }; /* flattened: shadow volumes below */
     if (world_build_limited(&world, scene, 1, &limits, &werr))
         return;
     Vec3 extra[1 + 8 * 16];
