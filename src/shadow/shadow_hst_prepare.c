@@ -112,10 +112,13 @@ int shadow_volume_prepare(const ShadowMethod *self, const ShadowSetup *s, Shadow
 /* Whether hst keeps light buffers: where their building and their memory,
  * which grow with the polygons the lights see, are repaid by the decisions,
  * which grow with the pixels. Measured (ns per decision, 640x480, 1
- * thread, the light buffer against the shadow ray): the paper's scenes
- * (0.0006 to 0.03 polygons per pixel) 0.47x to 0.83x; make-mesh 10^4
- * triangles x 4 lights (0.033) 0.75x, 3x10^4 (0.098) 1.5x. So up to one
- * polygon in 20 pixels; the cache method beyond. */
+ * thread, the light buffer against the shadow ray and the cache method,
+ * which hst uses without buffers): the paper's scenes (0.0006 to 0.03
+ * polygons per pixel) 0.49x to 0.86x the shadow ray's; make-mesh x 4
+ * lights, 10^4 triangles (0.033) 104.6 ns against the shadow ray's 141.1
+ * and the cache's 121.6, 2x10^4 (0.065) 163.1 against 158.0 and 142.0,
+ * 3x10^4 (0.098) 200.7 against 177.8 and 170.1 (medians of 3). So up to
+ * one polygon in 20 pixels; the cache method beyond. */
 #define HST_LIGHT_BUFFER_POLYGONS_PER_PIXEL 0.05
 
 static int light_buffers_pay(const ShadowSetup *s)
