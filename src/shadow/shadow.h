@@ -102,10 +102,13 @@ void shadow_counters_add(ShadowCounters *total, const ShadowCounters *part);
 typedef struct {
     int blocker;               /* the polygon (its id, instance.h), or -1 */
     /* Its plane in world space (world_polygon_plane: an instance's is
-     * carried out with a square root), made when it is remembered rather
-     * than at every try, and its instance (-1: a world polygon) */
+     * carried out with a square root) and its instance (-1: a world
+     * polygon), made at its first try rather than at every try, nor when
+     * it is remembered (on a big mesh the blocker changes at nearly every
+     * blocked decision and the cache sits out most of them) */
     Polygon plane;
     int instance;
+    int plane_made;            /* 1: plane and instance are the blocker's */
     unsigned tries, hits;      /* cache tries in this tile and the hits among them */
     unsigned skipped;          /* queries the cache sat out since its last try */
     int lit_last;              /* 1: the light's last decision here found no polygon blocking it fully */

@@ -44,6 +44,13 @@ static __attribute__((noinline)) int cached_blocker_try(ShadowContext *ctx, cons
                                                         int pi)
 {
     const World *w = ctx->tracer->world;
+    if (!c->plane_made) {
+        const Polygon *p = world_polygon_plane(w, pi, -1, &c->plane);
+        if (p != &c->plane)
+            c->plane = *p;
+        (void)world_polygon_hinted(w, pi, -1, &c->instance);
+        c->plane_made = 1;
+    }
     /* The shadow ray's own rule for a polygon edge-on to the light (an area
      * light's sample may see edge-on what blocked another sample), on the
      * plane the shadow ray's walk takes (world_polygon_plane's, kept). */
@@ -78,12 +85,8 @@ void shadow_cache_remember(ShadowContext *ctx, const ShadowQuery *q, const RGB *
     LightCache *c = &ctx->light_cache[q->light];
     if (ctx->last_blocker >= 0 && light->r == 0.0 && light->g == 0.0 && light->b == 0.0 &&
         c->blocker != ctx->last_blocker) {
-        const World *w = ctx->tracer->world;
         c->blocker = ctx->last_blocker;
-        const Polygon *p = world_polygon_plane(w, c->blocker, -1, &c->plane);
-        if (p != &c->plane)
-            c->plane = *p;
-        (void)world_polygon_hinted(w, c->blocker, -1, &c->instance);
+        c->plane_made = 0; /* made at its first try */
     }
 }
 
