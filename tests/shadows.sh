@@ -230,5 +230,10 @@ for scene in "$srcdir"/scenes/*.pov "$work/filtered.pov" "$work/contact.pov" "$s
     fi
     "$hstrace" "$scene" --volumes always --exr-float --threads 1 -o "$work/$name.t1.exr" 2>/dev/null
     check "$name: hst gives the same image on 1 and 2 threads" same_pixels "$work/$name.t1.exr" "$work/$name.hst.exr"
+    # the default (volumes as planned, the light buffer or the cache deciding
+    # the rest) on one thread, against conventional's two
+    "$hstrace" "$scene" --exr-float --threads 1 -o "$work/$name.planned.t1.exr" 2>/dev/null
+    check "$name: hst as planned gives the same image on 1 and 2 threads" same_pixels "$work/$name.planned.t1.exr" \
+        "$work/$name.planned.exr"
 done
 tap_end
