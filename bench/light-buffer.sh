@@ -29,7 +29,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/hstlb.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 out="$here/light-buffer.md"
 methods="conventional cache light-buffer hst none"
-"$hstrace" --version 2>/dev/null | grep -q -i embree && methods="embree $methods"
+"$hstrace" --version 2>/dev/null | grep -q "Embree [0-9]" && methods="embree $methods"
 
 # cpu CMD...: runs CMD, prints its user + sys seconds and peak KiB, from
 # the kernel's resource usage to the microsecond (/usr/bin/time rounds to
