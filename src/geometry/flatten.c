@@ -13,6 +13,7 @@
 #include "clock.h"
 #include "memory_budget.h"
 #include "parallel.h"
+#include "ptr_map.h"
 #include "world_estimate.h"
 
 /* add_material's memo: 2^6 materials made lately, by a hash of what made
@@ -38,9 +39,7 @@ typedef struct {
     /* The texture_maps built so far, by their entries (a hash set of the
      * description's entry arrays, which copies of a texture share), so
      * that each is built once however many objects and maps use it. */
-    const TextureMapEntry **map_keys;
-    int *map_index;
-    size_t map_slots, map_used;
+    PtrMap maps_built;    /* entry array -> its index in World.maps */
     int failed;
     int threads;          /* a big mesh's faces are made on up to this many (fill_faces) */
     double deadline;      /* WorldLimits.deadline: 0 none */
@@ -56,9 +55,8 @@ typedef struct {
      * prototype each shared one became (-1: none yet), by a hash set of the
      * face arrays; the meshes the prototypes are made from. */
     int instancing;
-    const void **use_key;
-    int *use_count, *use_proto;
-    size_t use_slots, use_used;
+    PtrMap mesh_uses;     /* face array -> its placements */
+    PtrMap mesh_proto;    /* face array -> its prototype (World.prototypes) */
     const SceneObject **proto_mesh;
     int cap_prototypes, cap_instances, cap_instance_materials;
     int slots;            /* making prototypes: polygons' materials are slots, which read no uv */
@@ -105,60 +103,6 @@ static void resolve_noise_generator(Pigment *pig, int scene_generator)
         pig->noise_generator = scene_generator;
 }
 
-static size_t map_hash(const TextureMapEntry *key, size_t slots)
-{
-    uint64_t h = (uint64_t)(uintptr_t)key * 0x9E3779B97F4A7C15u;
-    return (size_t)(h >> 17) & (slots - 1);
-}
-
-/* The texture_map already built for `key`, or -1. */
-static int find_map(const Builder *b, const TextureMapEntry *key)
-{
-    if (b->map_slots == 0)
-        return -1;
-    for (size_t j = map_hash(key, b->map_slots);; j = (j + 1) & (b->map_slots - 1)) {
-        if (!b->map_keys[j])
-            return -1;
-        if (b->map_keys[j] == key)
-            return b->map_index[j];
-    }
-}
-
-static int remember_map(Builder *b, const TextureMapEntry *key, int index)
-{
-    if ((b->map_used + 1) * 2 > b->map_slots) {
-        size_t slots = b->map_slots ? b->map_slots * 2 : 64;
-        const TextureMapEntry **keys = calloc(slots, sizeof *keys);
-        int *idx = calloc(slots, sizeof *idx);
-        if (!keys || !idx) {
-            free(keys);
-            free(idx);
-            b->failed = 1;
-            return -1;
-        }
-        for (size_t i = 0; i < b->map_slots; i++) {
-            if (!b->map_keys[i])
-                continue;
-            size_t j = map_hash(b->map_keys[i], slots);
-            while (keys[j])
-                j = (j + 1) & (slots - 1);
-            keys[j] = b->map_keys[i];
-            idx[j] = b->map_index[i];
-        }
-        free(b->map_keys);
-        free(b->map_index);
-        b->map_keys = keys;
-        b->map_index = idx;
-        b->map_slots = slots;
-    }
-    size_t j = map_hash(key, b->map_slots);
-    while (b->map_keys[j])
-        j = (j + 1) & (b->map_slots - 1);
-    b->map_keys[j] = key;
-    b->map_index[j] = index;
-    b->map_used++;
-    return 0;
-}
 
 static Finish engine_finish(const Finish *f)
 {
@@ -173,7 +117,7 @@ static Finish engine_finish(const Finish *f)
  * parser keeps them MAX_TEXTURE_MAP_DEPTH deep at most). */
 static int build_map(Builder *b, const SceneTexture *tex)
 {
-    int found = find_map(b, tex->map);
+    int found = ptr_map_get(&b->maps_built, tex->map);
     if (found >= 0)
         return found;
     World *w = b->w;
@@ -215,8 +159,10 @@ static int build_map(Builder *b, const SceneTexture *tex)
         me->finish = engine_finish(&e->finish);
         me->normal = e->normal && e->normal->kind != NORMAL_NONE ? e->normal : NULL;
     }
-    if (remember_map(b, tex->map, w->nmaps))
+    if (ptr_map_put(&b->maps_built, tex->map, w->nmaps)) {
+        b->failed = 1;
         return -1;
+    }
     return w->nmaps++;
 }
 
@@ -896,49 +842,6 @@ static int flatten_plane(Builder *b, const SceneObject *o, const Inherited *in, 
  * flattened cost less than an instance's transform, box and second walk. */
 #define INSTANCE_MIN_FACES 8
 
-/* The slot of key (a mesh's face array) in the hash set of uses, grown as
- * needed; -1 when out of memory. */
-static long use_slot(Builder *b, const void *key)
-{
-    if (2 * (b->use_used + 1) > b->use_slots) {
-        size_t n = b->use_slots ? 2 * b->use_slots : 256;
-        const void **keys = calloc(n, sizeof *keys);
-        int *count = calloc(n, sizeof *count), *proto = calloc(n, sizeof *proto);
-        if (!keys || !count || !proto) {
-            free(keys);
-            free(count);
-            free(proto);
-            return -1;
-        }
-        for (size_t i = 0; i < b->use_slots; i++) {
-            if (!b->use_key[i])
-                continue;
-            size_t h = ((uintptr_t)b->use_key[i] >> 4) * 0x9E3779B97F4A7C15u % n;
-            while (keys[h])
-                h = (h + 1) % n;
-            keys[h] = b->use_key[i];
-            count[h] = b->use_count[i];
-            proto[h] = b->use_proto[i];
-        }
-        free(b->use_key);
-        free(b->use_count);
-        free(b->use_proto);
-        b->use_key = keys;
-        b->use_count = count;
-        b->use_proto = proto;
-        b->use_slots = n;
-    }
-    size_t h = ((uintptr_t)key >> 4) * 0x9E3779B97F4A7C15u % b->use_slots;
-    while (b->use_key[h] && b->use_key[h] != key)
-        h = (h + 1) % b->use_slots;
-    if (!b->use_key[h]) {
-        b->use_key[h] = key;
-        b->use_count[h] = 0;
-        b->use_proto[h] = -1;
-        b->use_used++;
-    }
-    return (long)h;
-}
 
 /* Counts the placements of every mesh under o (the copies of a declared
  * mesh, or of a union holding it, share its face array). */
@@ -954,11 +857,8 @@ static int count_mesh_uses(Builder *b, const SceneObject *o, int depth)
     }
     if (o->kind != OBJ_MESH || o->u.mesh.nfaces < INSTANCE_MIN_FACES)
         return 0;
-    long h = use_slot(b, o->u.mesh.faces);
-    if (h < 0)
-        return -1;
-    b->use_count[h]++;
-    return 0;
+    int placed = ptr_map_get(&b->mesh_uses, o->u.mesh.faces);
+    return ptr_map_put(&b->mesh_uses, o->u.mesh.faces, placed < 0 ? 1 : placed + 1);
 }
 
 /* Mesh o placed as `in` says, as an instance of its prototype: its
@@ -969,16 +869,12 @@ static int count_mesh_uses(Builder *b, const SceneObject *o, int depth)
 static int instance_mesh(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
     World *w = b->w;
-    long h = o->u.mesh.nfaces >= INSTANCE_MIN_FACES ? use_slot(b, o->u.mesh.faces) : 0;
-    if (h < 0) {
-        b->failed = 1;
-        return -1;
-    }
     int *face_material;
     if (mesh_face_materials(b, o, in, material, &face_material))
         return -1;
     const int nt = o->u.mesh.ntextures;
-    int shared = o->u.mesh.nfaces >= INSTANCE_MIN_FACES && b->use_count[h] >= 2 && !uses_uv(w, material);
+    int shared = o->u.mesh.nfaces >= INSTANCE_MIN_FACES && ptr_map_get(&b->mesh_uses, o->u.mesh.faces) >= 2 &&
+                 !uses_uv(w, material);
     for (int i = 0; shared && i < nt; i++)
         shared = !uses_uv(w, face_material[i]);
     /* a texture per vertex (World.vertex_materials) is kept per world polygon */
@@ -989,7 +885,8 @@ static int instance_mesh(Builder *b, const SceneObject *o, const Inherited *in, 
         free(face_material);
         return rc;
     }
-    if (b->use_proto[h] < 0) {
+    int proto = ptr_map_get(&b->mesh_proto, o->u.mesh.faces);
+    if (proto < 0) {
         if (GROW(b, prototypes, cap_prototypes, w->nprototypes)) {
             free(face_material);
             return -1;
@@ -1004,7 +901,12 @@ static int instance_mesh(Builder *b, const SceneObject *o, const Inherited *in, 
         meshes[w->nprototypes] = o;
         memset(&w->prototypes[w->nprototypes], 0, sizeof *w->prototypes);
         w->prototypes[w->nprototypes].nslots = 1 + nt;
-        b->use_proto[h] = w->nprototypes++;
+        if (ptr_map_put(&b->mesh_proto, o->u.mesh.faces, w->nprototypes)) {
+            free(face_material);
+            b->failed = 1;
+            return -1;
+        }
+        proto = w->nprototypes++;
     }
     if (GROW(b, instances, cap_instances, w->ninstances) ||
         GROW(b, instance_materials, cap_instance_materials, w->ninstance_materials + nt)) {
@@ -1014,7 +916,7 @@ static int instance_mesh(Builder *b, const SceneObject *o, const Inherited *in, 
     Instance *it = &w->instances[w->ninstances++];
     memset(it, 0, sizeof *it);
     it->to_world = in->transform;
-    it->prototype = b->use_proto[h];
+    it->prototype = proto;
     it->first_material = w->ninstance_materials;
     for (int s = 0; s <= nt; s++) {
         int m = s == 0 ? material : face_material[s - 1];
@@ -1193,11 +1095,9 @@ static void build_lights(World *w, const Scene *scene)
 
 static void builder_free(Builder *b)
 {
-    free(b->map_keys);
-    free(b->map_index);
-    free(b->use_key);
-    free(b->use_count);
-    free(b->use_proto);
+    ptr_map_free(&b->maps_built);
+    ptr_map_free(&b->mesh_uses);
+    ptr_map_free(&b->mesh_proto);
     free(b->proto_mesh);
 }
 

@@ -1,22 +1,21 @@
 /* Counting what a flattening will make (world_estimate.h). */
 #include "world_estimate.h"
 
-#include <stdint.h>
 #include <stdlib.h>
+
+#include "ptr_map.h"
 
 /* The hierarchy's build (bvh.c) per polygon: its primitive, packed copy and
  * share of the nodes, measured on unions of boxes (tests/hostile.sh's
  * union-doublings scenes). */
 #define HIERARCHY_BYTES_PER_POLYGON 96.0
 
-typedef struct {
-    const SceneObject *key;
-    double bytes, polygons;
-} Slot;
-
+/* What each union counted (a union is what copies share): its bytes and
+ * polygons at the index the map gives it. */
 struct WorldEstimate {
-    Slot *slots;
-    size_t nslots, used;
+    PtrMap counted;
+    double *bytes, *polygons;
+    int n, cap;
 };
 
 WorldEstimate *world_estimate_new(void)
@@ -26,41 +25,33 @@ WorldEstimate *world_estimate_new(void)
 
 void world_estimate_free(WorldEstimate *e)
 {
-    if (e)
-        free(e->slots);
+    if (e) {
+        ptr_map_free(&e->counted);
+        free(e->bytes);
+        free(e->polygons);
+    }
     free(e);
-}
-
-static size_t slot_of(const WorldEstimate *e, const SceneObject *o)
-{
-    uint64_t h = (uint64_t)(uintptr_t)o * 0x9E3779B97F4A7C15u;
-    size_t j = (size_t)(h >> 17) & (e->nslots - 1);
-    while (e->slots[j].key && e->slots[j].key != o)
-        j = (j + 1) & (e->nslots - 1);
-    return j;
 }
 
 static int remember(WorldEstimate *e, const SceneObject *o, double bytes, double polygons)
 {
-    if ((e->used + 1) * 2 > e->nslots) {
-        size_t n = e->nslots ? e->nslots * 2 : 256;
-        Slot *old = e->slots;
-        size_t nold = e->nslots;
-        e->slots = calloc(n, sizeof *e->slots);
-        if (!e->slots) {
-            e->slots = old;
+    if (e->n == e->cap) {
+        int cap = e->cap ? 2 * e->cap : 256;
+        double *nb = realloc(e->bytes, sizeof *nb * (size_t)cap);
+        if (!nb)
             return -1;
-        }
-        e->nslots = n;
-        for (size_t i = 0; i < nold; i++)
-            if (old[i].key)
-                e->slots[slot_of(e, old[i].key)] = old[i];
-        free(old);
+        e->bytes = nb;
+        double *np = realloc(e->polygons, sizeof *np * (size_t)cap);
+        if (!np)
+            return -1;
+        e->polygons = np;
+        e->cap = cap;
     }
-    Slot *s = &e->slots[slot_of(e, o)];
-    if (!s->key)
-        e->used++;
-    *s = (Slot){ o, bytes, polygons };
+    if (ptr_map_put(&e->counted, o, e->n))
+        return -1;
+    e->bytes[e->n] = bytes;
+    e->polygons[e->n] = polygons;
+    e->n++;
     return 0;
 }
 
@@ -100,13 +91,11 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
 
 int world_estimate_object(WorldEstimate *e, const SceneObject *o, double *bytes, double *polygons)
 {
-    if (e->nslots) {
-        const Slot *s = &e->slots[slot_of(e, o)];
-        if (s->key) {
-            *bytes = s->bytes;
-            *polygons = s->polygons;
-            return 0;
-        }
+    int k = ptr_map_get(&e->counted, o);
+    if (k >= 0) {
+        *bytes = e->bytes[k];
+        *polygons = e->polygons[k];
+        return 0;
     }
     double b = 0.0, n = 0.0;
     if (o->kind == OBJ_UNION) {
