@@ -484,6 +484,7 @@ static int write_image(Frame *f, int argc, char **argv, const Options *o, const 
         wopt.have_chromaticities = 1;
         memcpy(wopt.chromaticities, colour_rec709_chromaticities, sizeof wopt.chromaticities);
     }
+    wopt.threads = f->threads;
     wopt.channels = f->aov.channels;
     wopt.nchannels = f->aov.nchannels;
     f->report.wall_seconds = clock_wall() - wall0; /* so far: the header is written before the pixels */

@@ -57,6 +57,9 @@ typedef struct {
     int nchannels;
     const ImageAttribute *attributes;
     int nattributes;
+    /* Threads an encoder may use (EXR compresses its chunks side by side;
+     * the file is the same for any number); 0 or 1: the calling thread. */
+    int threads;
 } ImageWriteOptions;
 
 /* Turns colours encoded with a working gamma (scene_working_gamma: 1

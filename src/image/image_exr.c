@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "image_codec.h"
+#include "parallel.h"
 
 typedef struct {
     int fd;
@@ -146,22 +147,171 @@ static exr_result_t set_attribute(exr_context_t ctx, int part, const ImageAttrib
     }
 }
 
+/* Offsets into an RGBA pixel; extra channels are planes of their own. */
+static const char *const rgba_names[4] = { "A", "B", "G", "R" };
+static const int rgba_offsets[4] = { 3, 2, 1, 0 };
+
+/* Points the pipeline's channels at the image's samples of its chunk. */
+static exr_result_t point_channels(exr_encode_pipeline_t *enc, const exr_chunk_info_t *cinfo, const Image *img,
+                                   const ImageWriteOptions *opt)
+{
+    const int w = img->width;
+    const int nextra = opt->channels ? opt->nchannels : 0;
+    for (int c = 0; c < enc->channel_count; c++) {
+        exr_coding_channel_info_t *ch = &enc->channels[c];
+        int k = 0;
+        while (k < 4 && strcmp(ch->channel_name, rgba_names[k]) != 0)
+            k++;
+        if (k < 4) {
+            /* The library converts our float samples to the channel type. */
+            ch->user_data_type = EXR_PIXEL_FLOAT;
+            ch->user_bytes_per_element = 4;
+            ch->user_pixel_stride = 4 * (int32_t)sizeof(float);
+            ch->user_line_stride = w * 4 * (int32_t)sizeof(float);
+            ch->encode_from_ptr =
+                (const uint8_t *)(img->rgba + (size_t)(cinfo->start_y) * (size_t)w * 4 + rgba_offsets[k]);
+            continue;
+        }
+        int e = 0;
+        while (e < nextra && strcmp(ch->channel_name, opt->channels[e].name) != 0)
+            e++;
+        if (e == nextra)
+            return EXR_ERR_INVALID_ARGUMENT;
+        /* A plane of 4-byte samples: floats, or uint32 for UINT. */
+        const ImageChannel *x = &opt->channels[e];
+        ch->user_data_type = x->type == IMAGE_CHANNEL_UINT ? EXR_PIXEL_UINT : EXR_PIXEL_FLOAT;
+        ch->user_bytes_per_element = 4;
+        ch->user_pixel_stride = 4;
+        ch->user_line_stride = w * 4;
+        ch->encode_from_ptr = (const uint8_t *)x->data + (size_t)cinfo->start_y * (size_t)w * 4;
+    }
+    return EXR_ERR_SUCCESS;
+}
+
+/* A chunk encoded: its bytes as the file takes them. */
+typedef struct {
+    void *bytes;
+    uint64_t size;
+} ExrChunkBytes;
+
+/* The pipeline's last step, instead of writing: the chunk's bytes kept
+ * (those the library's own step would write: the compressed buffer, which
+ * is the packed one when nothing is compressed), to be written in order. */
+static exr_result_t keep_chunk(exr_encode_pipeline_t *enc)
+{
+    ExrChunkBytes *c = enc->encoding_user_data;
+    c->bytes = malloc(enc->compressed_bytes > 0 ? enc->compressed_bytes : 1);
+    if (!c->bytes)
+        return EXR_ERR_OUT_OF_MEMORY;
+    memcpy(c->bytes, enc->compressed_buffer, enc->compressed_bytes);
+    c->size = enc->compressed_bytes;
+    return EXR_ERR_SUCCESS;
+}
+
+/* A share of the chunks, encoded on one thread with its own pipeline:
+ * chunks first, first + stride, ... Its errors go to its own message. */
+typedef struct {
+    exr_context_t ctx;
+    int part;
+    const Image *img;
+    const ImageWriteOptions *opt;
+    const exr_chunk_info_t *cinfo; /* every chunk's */
+    ExrChunkBytes *out;            /* ... and its bytes */
+    int nchunks, first, stride;
+    exr_result_t rv;
+    ExrIO io;
+    char msg[256];
+} ExrEncodeJob;
+
+static void *encode_chunks(void *arg)
+{
+    ExrEncodeJob *job = arg;
+    ExrIO *caller = exr_writing; /* (job 0 runs on the writing thread) */
+    exr_writing = &job->io;
+    exr_encode_pipeline_t enc;
+    memset(&enc, 0, sizeof enc);
+    int started = 0;
+    exr_result_t rv = EXR_ERR_SUCCESS;
+    for (int i = job->first; i < job->nchunks && rv == EXR_ERR_SUCCESS; i += job->stride) {
+        if (!started) {
+            rv = exr_encoding_initialize(job->ctx, job->part, &job->cinfo[i], &enc);
+            started = rv == EXR_ERR_SUCCESS;
+            if (started)
+                rv = point_channels(&enc, &job->cinfo[i], job->img, job->opt);
+            if (rv == EXR_ERR_SUCCESS)
+                rv = exr_encoding_choose_default_routines(job->ctx, job->part, &enc);
+        } else {
+            rv = exr_encoding_update(job->ctx, job->part, &job->cinfo[i], &enc);
+            if (rv == EXR_ERR_SUCCESS)
+                rv = point_channels(&enc, &job->cinfo[i], job->img, job->opt);
+        }
+        if (rv != EXR_ERR_SUCCESS)
+            break;
+        /* written later, in order, by the writing thread */
+        enc.yield_until_ready_fn = NULL;
+        enc.write_fn = keep_chunk;
+        enc.encoding_user_data = &job->out[i];
+        rv = exr_encoding_run(job->ctx, job->part, &enc);
+    }
+    if (started)
+        exr_encoding_destroy(job->ctx, &enc);
+    job->rv = rv;
+    exr_writing = caller;
+    return NULL;
+}
+
+/* Chunks a job takes at least: fewer are not worth a thread. */
+#define EXR_CHUNKS_PER_JOB 8
+
+/* Encodes every chunk, on up to opt->threads threads, and writes them in
+ * order: the same bytes for any number of threads (each chunk is
+ * compressed on its own). */
+static exr_result_t write_chunks(exr_context_t ctx, int part, const Image *img, const ImageWriteOptions *opt,
+                                 int lines, ExrIO *io)
+{
+    const int h = img->height;
+    const int nchunks = (h + lines - 1) / lines;
+    exr_chunk_info_t *cinfo = calloc((size_t)nchunks, sizeof *cinfo);
+    ExrChunkBytes *out = calloc((size_t)nchunks, sizeof *out);
+    int njobs = parallel_jobs(nchunks, EXR_CHUNKS_PER_JOB, opt->threads > 1 ? opt->threads : 1);
+    ExrEncodeJob *jobs = calloc((size_t)njobs, sizeof *jobs);
+    exr_result_t rv = EXR_ERR_SUCCESS;
+    if (!cinfo || !out || !jobs)
+        rv = EXR_ERR_OUT_OF_MEMORY;
+    for (int i = 0; i < nchunks && rv == EXR_ERR_SUCCESS; i++)
+        rv = exr_write_scanline_chunk_info(ctx, part, i * lines, &cinfo[i]);
+    if (rv == EXR_ERR_SUCCESS) {
+        for (int j = 0; j < njobs; j++)
+            jobs[j] = (ExrEncodeJob){ ctx, part, img, opt, cinfo, out, nchunks, j, njobs, EXR_ERR_SUCCESS,
+                                      { io->fd, jobs[j].msg, (int)sizeof jobs[j].msg, 0 }, { 0 } };
+        parallel_run(njobs, encode_chunks, jobs, sizeof *jobs);
+        for (int j = 0; j < njobs && rv == EXR_ERR_SUCCESS; j++) {
+            rv = jobs[j].rv;
+            if (rv != EXR_ERR_SUCCESS && jobs[j].io.have_err)
+                keep_first_error(io, jobs[j].msg);
+        }
+    }
+    for (int i = 0; i < nchunks && rv == EXR_ERR_SUCCESS; i++)
+        rv = exr_write_scanline_chunk(ctx, part, cinfo[i].start_y, out[i].bytes, out[i].size);
+    for (int i = 0; out && i < nchunks; i++)
+        free(out[i].bytes);
+    free(jobs);
+    free(out);
+    free(cinfo);
+    return rv;
+}
+
 int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char *err, int errlen)
 {
-    /* Offsets into an RGBA pixel; extra channels are planes of their own. */
-    static const char *const names[4] = { "A", "B", "G", "R" };
-    static const int offsets[4] = { 3, 2, 1, 0 };
     ExrIO io = { fd, err, errlen, 0 };
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_context_t ctx = NULL;
-    exr_encode_pipeline_t enc;
     exr_pixel_type_t ptype = opt->exr_float ? EXR_PIXEL_FLOAT : EXR_PIXEL_HALF;
     const int w = img->width, h = img->height;
     const int nextra = opt->channels ? opt->nchannels : 0;
-    int part, lines, started = 0;
+    int part, lines;
     exr_result_t rv;
 
-    memset(&enc, 0, sizeof enc);
     init.user_data = &io;
     init.write_fn = exr_fd_write;
     init.error_handler_fn = on_exr_write_error;
@@ -174,7 +324,7 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
     if (rv == EXR_ERR_SUCCESS)
         rv = exr_initialize_required_attr_simple(ctx, part, w, h, exr_compression_of(opt->exr_compression));
     for (int c = 0; c < 4 && rv == EXR_ERR_SUCCESS; c++)
-        rv = exr_add_channel(ctx, part, names[c], ptype, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
+        rv = exr_add_channel(ctx, part, rgba_names[c], ptype, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
     for (int c = 0; c < nextra && rv == EXR_ERR_SUCCESS; c++)
         rv = exr_add_channel(ctx, part, opt->channels[c].name, exr_type_of(opt->channels[c].type),
                              EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
@@ -193,62 +343,10 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
         rv = exr_write_header(ctx);
     if (rv == EXR_ERR_SUCCESS)
         rv = exr_get_scanlines_per_chunk(ctx, part, &lines);
+    if (rv == EXR_ERR_SUCCESS)
+        rv = write_chunks(ctx, part, img, opt, lines, &io);
     if (rv != EXR_ERR_SUCCESS)
         goto fail;
-
-    for (int y = 0; y < h; y += lines) {
-        exr_chunk_info_t cinfo;
-        rv = exr_write_scanline_chunk_info(ctx, part, y, &cinfo);
-        if (rv != EXR_ERR_SUCCESS)
-            goto fail;
-        if (!started) {
-            rv = exr_encoding_initialize(ctx, part, &cinfo, &enc);
-            started = rv == EXR_ERR_SUCCESS;
-        } else {
-            rv = exr_encoding_update(ctx, part, &cinfo, &enc);
-        }
-        if (rv != EXR_ERR_SUCCESS)
-            goto fail;
-        for (int c = 0; c < enc.channel_count; c++) {
-            exr_coding_channel_info_t *ch = &enc.channels[c];
-            int k = 0;
-            while (k < 4 && strcmp(ch->channel_name, names[k]) != 0)
-                k++;
-            if (k < 4) {
-                /* The library converts our float samples to the channel type. */
-                ch->user_data_type = EXR_PIXEL_FLOAT;
-                ch->user_bytes_per_element = 4;
-                ch->user_pixel_stride = 4 * (int32_t)sizeof(float);
-                ch->user_line_stride = w * 4 * (int32_t)sizeof(float);
-                ch->encode_from_ptr =
-                    (const uint8_t *)(img->rgba + (size_t)(cinfo.start_y) * (size_t)w * 4 + offsets[k]);
-                continue;
-            }
-            int e = 0;
-            while (e < nextra && strcmp(ch->channel_name, opt->channels[e].name) != 0)
-                e++;
-            if (e == nextra) {
-                rv = EXR_ERR_INVALID_ARGUMENT;
-                goto fail;
-            }
-            /* A plane of 4-byte samples: floats, or uint32 for UINT. */
-            const ImageChannel *x = &opt->channels[e];
-            ch->user_data_type = x->type == IMAGE_CHANNEL_UINT ? EXR_PIXEL_UINT : EXR_PIXEL_FLOAT;
-            ch->user_bytes_per_element = 4;
-            ch->user_pixel_stride = 4;
-            ch->user_line_stride = w * 4;
-            ch->encode_from_ptr = (const uint8_t *)x->data + (size_t)cinfo.start_y * (size_t)w * 4;
-        }
-        if (y == 0)
-            rv = exr_encoding_choose_default_routines(ctx, part, &enc);
-        if (rv == EXR_ERR_SUCCESS)
-            rv = exr_encoding_run(ctx, part, &enc);
-        if (rv != EXR_ERR_SUCCESS)
-            goto fail;
-    }
-    if (started)
-        exr_encoding_destroy(ctx, &enc);
-    started = 0;
     rv = exr_finish(&ctx);
     exr_writing = NULL;
     if (rv != EXR_ERR_SUCCESS)
@@ -256,8 +354,6 @@ int image_exr_write(int fd, const Image *img, const ImageWriteOptions *opt, char
     return 0;
 
 fail:
-    if (started)
-        exr_encoding_destroy(ctx, &enc);
     if (ctx != NULL)
         exr_finish(&ctx);
     exr_writing = NULL;
