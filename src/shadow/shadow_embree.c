@@ -572,7 +572,15 @@ void shadow_embree_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
         ctx->stats.shadow_blocked++;
 }
 
+void *shadow_embree_rtc_scene(const EmbreeScene *es) { return es ? es->scene : NULL; }
+
 #else /* !HAVE_EMBREE */
+
+void *shadow_embree_rtc_scene(const EmbreeScene *es)
+{
+    (void)es;
+    return NULL;
+}
 
 struct EmbreeScene {
     EmbreeSceneInfo info;

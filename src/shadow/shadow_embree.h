@@ -43,6 +43,12 @@ const char *shadow_embree_version(void);
 EmbreeScene *shadow_embree_build(const World *w, int threads, char *err, int errlen);
 void shadow_embree_free(EmbreeScene *es);
 const EmbreeSceneInfo *shadow_embree_info(const EmbreeScene *es);
+/* The Embree scene itself (an RTCScene), for queries of other kinds
+ * (bench/camera_rays times Embree's nearest-hit queries on it); NULL when
+ * not built with Embree. Its triangles carry only the shadow rules'
+ * filters (occlusion queries), and its user polygons (holes, concave
+ * outlines) answer occlusion queries only. */
+void *shadow_embree_rtc_scene(const EmbreeScene *es);
 
 /* The method's preparation: the Embree scene (out->embree). */
 int shadow_embree_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,
