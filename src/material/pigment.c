@@ -674,6 +674,15 @@ int material_textures_normals_at(const World *w, const Material *m, int polygon,
 
 RGB material_filter_at(const World *w, const Material *m, int polygon, Vec3 world_point, int *blocks)
 {
+    if (m->map < 0 && (polygon < 0 || w->polygons[polygon].vertex_materials < 0)) {
+        /* a plain texture (textures_at's first case): its one colour, with
+         * none of the textures' records made (the shadow ray's filtering
+         * through glass, at every surface it crosses) */
+        Colour c = material_colour_at(w, m, polygon, world_point);
+        *blocks = c.filter == 0.0 && c.transmit == 0.0;
+        RGB through = { c.r * c.filter + c.transmit, c.g * c.filter + c.transmit, c.b * c.filter + c.transmit };
+        return through;
+    }
     SurfaceTexture t[MAX_SURFACE_TEXTURES];
     int n = material_textures_at(w, m, polygon, world_point, t);
     const Colour *c = &t[0].colour;
