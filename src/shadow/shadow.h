@@ -374,6 +374,11 @@ typedef struct {
     RayFrame frame;
     double tmin;
     uint32_t own;
+    /* 1: the walk's candidates (world polygons, not an instance's) are
+     * known not to be edge-on to q's source, which the shadow ray's rule
+     * would ask of each met (the light buffer lists no such polygon):
+     * shadow_list_meet_item and _crossed skip asking again. 0 from begin. */
+    int sides_known;
 } ShadowListWalk;
 void shadow_list_begin(ShadowListWalk *lw, ShadowContext *ctx, const ShadowQuery *q);
 int shadow_list_meet(ShadowListWalk *lw, uint32_t polygon);

@@ -138,6 +138,7 @@ typedef struct {
     ShadowContext *ctx;
     const ShadowQuery *q;
     int blocker;          /* the opaque polygon that blocked, or -1 */
+    int side_known;       /* 1: the polygon met is known not to be edge-on to q's source */
 } ShadowWalk;
 
 static int meet_polygon(void *user, uint32_t pi, double t)
@@ -148,12 +149,13 @@ static int meet_polygon(void *user, uint32_t pi, double t)
     Polygon scratch;
     /* the walk's instance, when it is one's polygon: no search */
     const int hint = ctx->tracer->visiting;
-    const Polygon *p = world_polygon_plane(w, (int)pi, hint, &scratch);
     /* A polygon edge-on to the light (the light in its plane) casts no
      * shadow: the ray can only graze it, or meet it at the light itself.
      * The same rule as the shadow volumes'. (An instance's polygon: its
      * plane carried to world space, the same for every method.) */
-    if (light_side_of(p, sw->q->source, grid_tolerance(ctx->tracer->grid)) == 0)
+    if (!sw->side_known &&
+        light_side_of(world_polygon_plane(w, (int)pi, hint, &scratch), sw->q->source,
+                      grid_tolerance(ctx->tracer->grid)) == 0)
         return 0;
     const Material *m = &w->materials[world_polygon_material_hinted(w, (int)pi, hint)];
     if (m->opaque) {
@@ -181,7 +183,7 @@ int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     ctx->stats.shadow_rays++;
     double tmin = trace_min_distance(q->point);
     int exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
-    ShadowWalk sw = { ctx, q, -1 };
+    ShadowWalk sw = { ctx, q, -1, 0 };
     ctx->nfiltered = 0;
     if (trace_segment_hits(ctx->tracer, q->point, q->to_light, tmin, q->distance, exclude, HIDE_NO_SHADOW,
                            meet_polygon, &sw, &ctx->stats.shadow_polygon_tests)) {
@@ -201,12 +203,13 @@ void shadow_list_begin(ShadowListWalk *lw, ShadowContext *ctx, const ShadowQuery
     lw->frame = ray_frame(q->point, q->to_light);
     lw->tmin = trace_min_distance(q->point);
     lw->own = q->surface->kind == HIT_POLYGON ? (uint32_t)q->surface->index : UINT32_MAX;
+    lw->sides_known = 0;
 }
 
 /* The polygon met at t (no hit: t <= tmin): 1 when it blocks fully. */
-static int list_met(ShadowListWalk *lw, uint32_t polygon, double t)
+static int list_met(ShadowListWalk *lw, uint32_t polygon, double t, int side_known)
 {
-    ShadowWalk sw = { lw->ctx, lw->q, -1 };
+    ShadowWalk sw = { lw->ctx, lw->q, -1, side_known };
     if (t > lw->tmin && meet_polygon(&sw, polygon, t)) {
         lw->ctx->last_blocker = sw.blocker;
         return 1;
@@ -222,7 +225,7 @@ int shadow_list_meet(ShadowListWalk *lw, uint32_t polygon)
     const World *w = ctx->tracer->world;
     /* the hierarchy's leaf test, polygon by polygon (bvh_traverse.h) */
     ctx->stats.shadow_polygon_tests++;
-    return list_met(lw, polygon, intersect_polygon_in(w, &w->polygons[polygon], &lw->frame, lw->q->distance));
+    return list_met(lw, polygon, intersect_polygon_in(w, &w->polygons[polygon], &lw->frame, lw->q->distance), 0);
 }
 
 int shadow_list_meet_crossed(ShadowListWalk *lw, uint32_t polygon)
@@ -231,13 +234,13 @@ int shadow_list_meet_crossed(ShadowListWalk *lw, uint32_t polygon)
     ctx->stats.shadow_polygon_tests++;
     /* the test's own distance to the plane, and its range (intersect.c) */
     double t = intersect_plane_distance(&ctx->tracer->world->polygons[polygon], &lw->frame);
-    return list_met(lw, polygon, t > 0.0 && t < lw->q->distance ? t : -1.0);
+    return list_met(lw, polygon, t > 0.0 && t < lw->q->distance ? t : -1.0, lw->sides_known);
 }
 
 /* The visitor of an instance's walk for a list: list_met. */
 static int list_visit(void *user, uint32_t polygon, double t)
 {
-    return list_met(user, polygon, t);
+    return list_met(user, polygon, t, 0); /* an instance's polygon: its side asked */
 }
 
 int shadow_list_meet_item(ShadowListWalk *lw, const Bvh *b, uint32_t item)
@@ -255,7 +258,8 @@ int shadow_list_meet_item(ShadowListWalk *lw, const Bvh *b, uint32_t item)
         return 0;
     ShadowContext *ctx = lw->ctx;
     ctx->stats.shadow_polygon_tests++;
-    return list_met(lw, polygon, bvh_item_test(ctx->tracer->world, b, item, &lw->frame, lw->q->distance));
+    return list_met(lw, polygon, bvh_item_test(ctx->tracer->world, b, item, &lw->frame, lw->q->distance),
+                    lw->sides_known);
 }
 
 int shadow_list_end(ShadowListWalk *lw, RGB *light)
@@ -349,7 +353,7 @@ static void sort_filtered(ShadowContext *ctx)
 static double plane_leg_start(ShadowContext *ctx, const ShadowQuery *q, double tmin, double t)
 {
     int exclude = q->surface->kind == HIT_POLYGON ? q->surface->index : -1;
-    ShadowWalk sw = { ctx, q, -1 };
+    ShadowWalk sw = { ctx, q, -1, 0 };
     ctx->nfiltered = 0;
     uint64_t tests = 0;
     if (trace_segment_hits(ctx->tracer, q->point, q->to_light, tmin, t, exclude, HIDE_NO_SHADOW, meet_polygon, &sw,

@@ -170,6 +170,10 @@ static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const Shado
                 }
                 ctx->last_blocker = -1;
                 shadow_list_begin(&lw, ctx, q);
+                /* the cell lists no polygon edge-on to the light
+                 * (gather_from_hierarchy asks the shadow ray's rule, of
+                 * this light, which is q's source: buffer_for) */
+                lw.sides_known = 1;
             }
             tests++;
             blocked = crossed ? shadow_list_meet_crossed(&lw, lbs->bvh->items[cell->item[i]])
