@@ -17,16 +17,6 @@ static int patch_int(Parser *p, const char *what)
     return expr_checked_int(p, at.pos, expr_float(p), -MAX_PATCH_STEPS, MAX_PATCH_STEPS, what);
 }
 
-/* A 2-D vector, a float standing for <f, f> (POV-Ray's Parse_UV_Vect). */
-static void uv_vector(Parser *p, double out[2])
-{
-    double e[5] = { 0, 0, 0, 0, 0 };
-    int terms = 2;
-    expr_numeric(p, e, &terms);
-    out[0] = e[0];
-    out[1] = terms >= 2 ? e[1] : e[0];
-}
-
 SceneObject *gram_bicubic_patch(Parser *p, const Token *kw)
 {
     tok_begin_block(p, "bicubic_patch");
@@ -64,7 +54,7 @@ SceneObject *gram_bicubic_patch(Parser *p, const Token *kw)
             for (int i = 0; i < 4; i++) {
                 if (i)
                     expr_comma(p);
-                uv_vector(p, o->u.bicubic_patch.st[i]);
+                gram_uv_vector(p, o->u.bicubic_patch.st[i]);
             }
             done = 1;
             break;

@@ -12,6 +12,21 @@
 static const double PRISM_EPSILON = 1e-10; /* POV-Ray's EPSILON for closing outlines */
 #define MAX_PRISM_POINTS 50000000
 
+void gram_uv_vector(Parser *p, double out[2])
+{
+    Token first = *tok_peek(p);
+    double e[5] = { 0, 0, 0, 0, 0 };
+    int terms = 2;
+    /* sums and products only, as a vector's: `<a, b> <c, d>` is two of them */
+    expr_rel_factor(p, e, &terms);
+    if (terms > 2)
+        tok_fail(p, first.pos, "UV vector expected but vector or color expression found.");
+    if (!isfinite(e[0]) || !isfinite(e[1]))
+        tok_fail(p, first.pos, "a UV vector of %g, %g: not finite numbers", e[0], e[1]);
+    out[0] = e[0];
+    out[1] = terms >= 2 ? e[1] : e[0];
+}
+
 static int same_point(Vec3 a, Vec3 b) { return fabs(a.x - b.x) < PRISM_EPSILON && fabs(a.y - b.y) < PRISM_EPSILON; }
 
 SceneObject *gram_prism(Parser *p, const Token *kw)
@@ -54,10 +69,9 @@ SceneObject *gram_prism(Parser *p, const Token *kw)
     tok_tvec_init(&pts, sizeof(Vec3));
     for (int i = 0; i < n; i++) {
         expr_comma(p);
-        double e[5] = { 0, 0, 0, 0, 0 };
-        int terms = 2;
-        expr_numeric(p, e, &terms);
-        *(Vec3 *)tok_tvec_push(p, &pts) = v3(e[0], terms >= 2 ? e[1] : e[0], 0.0);
+        double uv[2];
+        gram_uv_vector(p, uv);
+        *(Vec3 *)tok_tvec_push(p, &pts) = v3(uv[0], uv[1], 0.0);
     }
     if (tok_is_kw(tok_peek(p), KW_open)) {
         (void)tok_next(p);

@@ -1,5 +1,6 @@
 // Linear-spline prisms: a linear sweep with a hole (two outlines, the
-// second left for the parser to close), an open one, and a conic sweep,
+// second left for the parser to close, no comma between them, as POV-Ray's
+// prism3a.pov writes its outlines), an open one, and a conic sweep,
 // transformed and casting shadows on each other (tests/planar-shapes.sh).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -8,7 +9,7 @@ light_source { <-5, 8, -4>, rgb 1 }
 light_source { <6, 4, -5>, rgb 0.3 }
 prism {
   linear_spline linear_sweep 0, 1.2, 10,
-  <-1, -1>, <1.5, -1>, <1.5, 0.5>, <0, 1.5>, <-1, 0.5>, <-1, -1>,
+  <-1, -1>, <1.5, -1>, <1.5, 0.5>, <0, 1.5>, <-1, 0.5>, <-1, -1>
   <-0.5, -0.5>, <0.7, -0.5>, <0.7, 0.3>, <-0.5, 0.3>
   translate <-1.8, 0, 0.5>
   pigment { rgb <0.8, 0.5, 0.3> }
