@@ -8,14 +8,15 @@
 #   png16  16-bit grey PNG (height = sample)
 #   pgm    8-bit grey binary PGM (height = sample * 257, in float)
 #   png8   8-bit RGB PNG: red the high byte, green the low byte
+#   pal    8-bit palette PNG of 256 greys (height = index * 256)
 # Exit status 0, or 2 on a usage error.
 use strict;
 use warnings;
 use Compress::Zlib;
 
 my ($kind, $out) = @ARGV;
-unless (defined $out && $kind =~ /^(png16|pgm|png8)$/) {
-    print STDERR "usage: make-heights.pl png16|pgm|png8 OUT\n";
+unless (defined $out && $kind =~ /^(png16|pgm|png8|pal)$/) {
+    print STDERR "usage: make-heights.pl png16|pgm|png8|pal OUT\n";
     exit 2;
 }
 my ($w, $h) = (33, 25);
@@ -42,17 +43,20 @@ if ($kind eq 'pgm') {
         print $fh pack('C*', map { int(height($_, $y) * 255 + 0.5) } 0 .. $w - 1);
     }
 } else {
-    my ($depth, $ctype) = $kind eq 'png16' ? (16, 0) : (8, 2);
+    my ($depth, $ctype) = $kind eq 'png16' ? (16, 0) : $kind eq 'pal' ? (8, 3) : (8, 2);
     my $raw = '';
     for my $y (0 .. $h - 1) {
         $raw .= "\0";
         for my $x (0 .. $w - 1) {
             my $v = int(height($x, $y) * 65535 + 0.5);
-            $raw .= $kind eq 'png16' ? pack('n', $v) : pack('C3', $v >> 8, $v & 255, 0);
+            $raw .= $kind eq 'png16' ? pack('n', $v)
+                  : $kind eq 'pal'   ? pack('C', int(height($x, $y) * 255 + 0.5))
+                  :                    pack('C3', $v >> 8, $v & 255, 0);
         }
     }
     print $fh "\x89PNG\r\n\x1a\n";
     print $fh chunk('IHDR', pack('NNCCCCC', $w, $h, $depth, $ctype, 0, 0, 0));
+    print $fh chunk('PLTE', pack('C*', map { ($_, $_, $_) } 0 .. 255)) if $kind eq 'pal';
     print $fh chunk('IDAT', compress($raw));
     print $fh chunk('IEND', '');
 }

@@ -190,7 +190,7 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_sturm: case KW_split_union: skip_optional_float(p); break;
         case KW_hierarchy: /* POV-Ray's bounding inside a height field, mesh or CSG: no effect on the image */
             if (o->kind != OBJ_HEIGHT_FIELD && o->kind != OBJ_MESH && o->kind != OBJ_UNION)
-                tok_fail(p, at.pos, "'hierarchy' is not allowed with this object (height fields, meshes and CSG only)");
+                tok_fail(p, at.pos, "Keyword 'hierarchy' cannot be used with this object (height fields, meshes and CSG take it).");
             (void)optional_bool(p);
             break;
         case KW_uv_mapping: uv = 1; break; /* every texture of the object, at the end */
