@@ -5,8 +5,8 @@
 # by its water level from an 8-bit PGM, one from an 8-bit colour PNG, one
 # from a palette PNG),
 # bicubic_patch (type 0 by flatness, type 1 by steps, uv-mapped) and
-# linear-spline prisms (a linear sweep with a hole, an open one, a conic
-# sweep), all in tests/planar-shapes/:
+# linear-spline prisms (a linear sweep with a hole, an open one, conic
+# sweeps, two through their apex), all in tests/planar-shapes/:
 #   - hstrace's image and shadow mask against POV-Ray's renders (+Q9, and
 #     +Q3/+Q4 for the mask), RMSE within the limits below, no interior mask
 #     disagreement (skipped without POV-Ray);
@@ -41,7 +41,7 @@ for kind in png16:png pgm:pgm png8:png pal:png; do
     perl "$srcdir/tests/make-heights.pl" "${kind%%:*}" "$work/hf-${kind%%:*}.${kind#*:}" ||
         bail "cannot make the height field picture ${kind%%:*}"
 done
-scenes="height-field height-field-smooth height-field-placed bicubic-patch prism"
+scenes="height-field height-field-smooth height-field-placed bicubic-patch prism prism-conic"
 
 # --- against POV-Ray ---------------------------------------------------------
 # At 240x180: the image (RMSE, pixels off by more than 0.02) and the shadow
@@ -58,6 +58,7 @@ height-field-smooth   1e-3   (2.31e-4)    6 (3)     6 (3)             1e-4 (1.31
 height-field-placed   1e-4   (1.59e-6)    0 (0)     2 (0)             1e-4 (1.59e-6)
 bicubic-patch         1e-4   (1.80e-6)    0 (0)     2 (0)             1e-4 (1.80e-6)
 prism                 1e-4   (2.31e-6)    0 (0)     2 (0)             1e-4 (2.31e-6)
+prism-conic           1e-4   (1.44e-6)    0 (0)     2 (0)             1e-4 (1.44e-6)
 '
 if [ -n "${POVRAY:-}" ] && povray=$(command -v "$POVRAY" 2>/dev/null); then
     for name in $scenes; do
