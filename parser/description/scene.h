@@ -115,6 +115,10 @@ typedef struct {
     /* The values as stored, in no colour space: not to be taken to the
      * working gamma (POV-Ray 3.7's PPM and PGM that nothing told a gamma) */
     int as_stored;
+    /* A grey picture, and the largest sample its file holds (255, 65535,
+     * a PGM's maxval): what a height field's heights are made from. */
+    int grey;
+    unsigned sample_max;
 } LoadedPicture;
 
 /* ParseOptions.load_image's gammas: what the file names, else its type's */
@@ -306,7 +310,15 @@ typedef enum {
     OBJ_BOX,
     OBJ_PLANE,
     OBJ_UNION,
+    /* The shapes POV-Ray 3.7 itself intersects as planar triangles and
+     * polygons (its own sampling and subdivision), flattened so. */
+    OBJ_HEIGHT_FIELD,
+    OBJ_BICUBIC_PATCH,
+    OBJ_PRISM,
 } ObjectKind;
+
+/* How a prism's outline is swept (POV-Ray's linear_sweep, conic_sweep). */
+typedef enum { PRISM_LINEAR_SWEEP, PRISM_CONIC_SWEEP } PrismSweep;
 
 typedef struct {
     int v[3];       /* vertex indices */
@@ -372,6 +384,35 @@ struct SceneObject {
             Vec3 normal; /* as written (not normalised) */
             double distance;
         } plane;
+        struct {            /* height_field, in POV-Ray's own units */
+            /* samples across x and z (at least 2 each); heights[z * nx + x]
+             * in 0..65535, z = 0 the picture's bottom row (POV-Ray's
+             * HField map), as image_height_at reads the samples */
+            int nx, nz;
+            const unsigned short *heights;
+            /* POV-Ray's bounding_corner1 y: 65536 * water_level (0 none);
+             * the surface below it is not there */
+            double water;
+            int smooth;
+        } height_field;
+        struct {            /* bicubic_patch */
+            int type;       /* 0 or 1: the same triangles (POV-Ray's own subdivision) */
+            int u_steps, v_steps;
+            double flatness;
+            Vec3 control[4][4]; /* [u][v], as written, in object space */
+            double st[4][2];    /* uv_vectors: the texture's uv at the patch's corners */
+        } bicubic_patch;
+        struct {            /* prism with linear_spline */
+            PrismSweep sweep;
+            double height1, height2; /* height1 <= height2 */
+            /* 2-D points (x, z in .x, .y) of closed outlines, each ending on
+             * its first point, as the polygon's points are kept */
+            int npoints;
+            const Vec3 *points;
+            int noutlines;
+            const int *outline_start; /* noutlines + 1 entries */
+            int open;                  /* no caps */
+        } prism;
         struct {
             int nchildren;
             SceneObject **children;

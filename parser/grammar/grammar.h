@@ -73,6 +73,9 @@ void gram_slope_map(Parser *p, SceneNormal *n);
  * '{', into pig; the picture, the parse's own (a colour-mapped one's
  * entries are the image_map's to change). */
 SceneImage *gram_image_source(Parser *p, Pigment *pig, const Token *at, const char *block, int gamma_correct);
+/* The file of a picture named in the scene, found as #include files are
+ * (the temporary arena), or NULL. */
+char *gram_find_image_file(Parser *p, const char *name);
 int gram_image_interpolation(Parser *p, const Token *at); /* after 'interpolate' */
 int gram_image_map_type(Parser *p, const Token *at);      /* after 'map_type': its value */
 
@@ -105,6 +108,18 @@ int gram_is_object_keyword(int kw);
 /* An object or light starting at t (already read); returns 1 and fills one
  * of *obj / *light, or 0 when t starts no object. */
 int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light);
+/* A new object of `kind` written at t, and the modifiers every object
+ * takes up to its closing '}' (`what` names it in messages). */
+SceneObject *gram_new_object(Parser *p, ObjectKind kind, const Token *t);
+void gram_object_mods(Parser *p, SceneObject *o, const char *what);
+
+/* The shapes POV-Ray intersects as planar pieces, after their keyword kw:
+ * parse_height_field.c, parse_bicubic_patch.c, parse_prism.c */
+SceneObject *gram_height_field(Parser *p, const Token *kw);
+SceneObject *gram_bicubic_patch(Parser *p, const Token *kw);
+SceneObject *gram_prism(Parser *p, const Token *kw);
+/* A 2-D vector (POV-Ray's Parse_UV_Vect: a float f stands for <f, f>). */
+void gram_uv_vector(Parser *p, double out[2]);
 
 /* parse_camera.c */
 void gram_camera(Parser *p, const Token *t, SceneCamera *cam);

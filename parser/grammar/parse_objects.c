@@ -18,10 +18,11 @@ int gram_is_object_keyword(int kw)
     switch (kw) {
     case KW_polygon: case KW_triangle: case KW_smooth_triangle: case KW_mesh: case KW_mesh2:
     case KW_box: case KW_plane: case KW_union: case KW_object:
+    case KW_height_field: case KW_bicubic_patch: case KW_prism:
     /* POV-Ray objects hstrace cannot render */
     case KW_sphere: case KW_cylinder: case KW_cone: case KW_torus: case KW_disc: case KW_blob:
-    case KW_lathe: case KW_sor: case KW_prism: case KW_superellipsoid: case KW_sphere_sweep:
-    case KW_height_field: case KW_bicubic_patch: case KW_text: case KW_julia_fractal:
+    case KW_lathe: case KW_sor: case KW_superellipsoid: case KW_sphere_sweep:
+    case KW_text: case KW_julia_fractal:
     case KW_isosurface: case KW_parametric: case KW_poly: case KW_polynomial: case KW_cubic:
     case KW_quartic: case KW_quadric: case KW_ovus: case KW_intersection: case KW_difference:
     case KW_merge: case KW_light_group:
@@ -130,6 +131,8 @@ static void object_photons(Parser *p, SceneObject *o)
     }
 }
 
+SceneObject *gram_new_object(Parser *p, ObjectKind kind, const Token *t) { return new_object(p, kind, t); }
+
 /* Modifiers up to the object's closing '}'. */
 static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
 {
@@ -185,6 +188,11 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_inverse: o->inverse = !o->inverse; break;
         case KW_double_illuminate: o->double_illuminate = 1; break;
         case KW_sturm: case KW_split_union: skip_optional_float(p); break;
+        case KW_hierarchy: /* POV-Ray's bounding inside a height field, mesh or CSG: no effect on the image */
+            if (o->kind != OBJ_HEIGHT_FIELD && o->kind != OBJ_MESH && o->kind != OBJ_UNION)
+                tok_fail(p, at.pos, "Keyword 'hierarchy' cannot be used with this object (height fields, meshes and CSG take it).");
+            (void)optional_bool(p);
+            break;
         case KW_uv_mapping: uv = 1; break; /* every texture of the object, at the end */
         case KW_cutaway_textures: break; /* no effect on solid colours */
         case KW_photons:
@@ -216,6 +224,8 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         }
     }
 }
+
+void gram_object_mods(Parser *p, SceneObject *o, const char *what) { parse_object_mods(p, o, what); }
 
 static Vec3 *vec3_array(Parser *p, const TempVec *v)
 {
@@ -911,6 +921,9 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_mesh2: *obj = parse_mesh2(p, &kw); break;
     case KW_box: *obj = parse_box(p, &kw); break;
     case KW_plane: *obj = parse_plane(p, &kw); break;
+    case KW_height_field: *obj = gram_height_field(p, &kw); break;
+    case KW_bicubic_patch: *obj = gram_bicubic_patch(p, &kw); break;
+    case KW_prism: *obj = gram_prism(p, &kw); break;
     case KW_union: *obj = parse_union(p, &kw); break;
     case KW_object: parse_object_statement(p, &kw, obj, light); break;
     case KW_light_source: *light = gram_light_source(p, &kw); break;

@@ -96,6 +96,8 @@ static char *find_image_file(Parser *p, const char *name)
     return NULL;
 }
 
+char *gram_find_image_file(Parser *p, const char *name) { return find_image_file(p, name); }
+
 /* A linear value into the scene's working space (assumed_gamma), as
  * POV-Ray transcodes an image's colours. */
 static float to_working(float x, double gamma)

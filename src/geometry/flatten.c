@@ -13,6 +13,7 @@
 #include "clock.h"
 #include "memory_budget.h"
 #include "parallel.h"
+#include "planar_shapes.h"
 #include "ptr_map.h"
 #include "world_estimate.h"
 
@@ -1020,6 +1021,60 @@ static int build_prototypes(Builder *b)
     return 0;
 }
 
+/* ---- the shapes POV-Ray intersects as planar pieces (planar_shapes.h) --- */
+
+typedef struct {
+    PieceSink sink;       /* first: the builders hand back &sink */
+    Builder *b;
+    int material;
+} PieceTarget;
+
+static int piece_triangle(PieceSink *s, const Vec3 v[3], const Vec3 *normals, const Vec3 *uv)
+{
+    PieceTarget *t = (PieceTarget *)s;
+    int before = t->b->w->npolygons;
+    if (add_triangle(t->b, v[0], v[1], v[2], normals, t->material))
+        return -1;
+    return uv && builds_uv(t->b, t->material) ? attach_uv(t->b, before, uv) : 0;
+}
+
+static int piece_polygon(PieceSink *s, const Vec3 *pts, int n, const int *starts, int noutlines)
+{
+    PieceTarget *t = (PieceTarget *)s;
+    return add_polygon(t->b, pts, n, starts, noutlines, t->material);
+}
+
+static int piece_cell_polygon(PieceSink *s, const Vec3 *pts, int n, const Vec3 cell[CELL_NORMAL_VECTORS])
+{
+    PieceTarget *t = (PieceTarget *)s;
+    World *w = t->b->w;
+    int before = w->npolygons;
+    const int starts[2] = { 0, n };
+    if (add_polygon(t->b, pts, n, starts, 1, t->material))
+        return -1;
+    if (w->npolygons == before)
+        return 0; /* degenerate: none */
+    if (GROW(t->b, vertex_normals, cap_normals, w->nvertex_normals + CELL_NORMAL_VECTORS))
+        return -1;
+    Polygon *p = &w->polygons[w->npolygons - 1];
+    p->smooth_normals = w->nvertex_normals;
+    p->cell_normals = 1;
+    for (int i = 0; i < CELL_NORMAL_VECTORS; i++)
+        w->vertex_normals[w->nvertex_normals++] = cell[i];
+    return 0;
+}
+
+static int flatten_planar_shape(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    PieceTarget t = { { NULL, piece_triangle, piece_polygon, piece_cell_polygon }, b, material };
+    switch (o->kind) {
+    case OBJ_HEIGHT_FIELD: return height_field_pieces(o, &in->transform, &t.sink);
+    case OBJ_BICUBIC_PATCH: return bicubic_patch_pieces(o, &in->transform, &t.sink);
+    case OBJ_PRISM: return prism_pieces(o, &in->transform, &t.sink);
+    default: return 0;
+    }
+}
+
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth)
 {
     if (depth > 1000)
@@ -1068,6 +1123,8 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
     case OBJ_BOX: return flatten_box(b, o, &in, material);
     case OBJ_PLANE: return flatten_plane(b, o, &in, material);
     case OBJ_UNION: break;
+    case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
+        return flatten_planar_shape(b, o, &in, material);
     }
     return 0;
 }

@@ -4,6 +4,7 @@
  * already in a polygon's plane use the projection that drops the normal's
  * dominant axis. */
 #include "intersect.h"
+#include "planar_shapes.h"
 
 #include <string.h>
 
@@ -333,6 +334,8 @@ Vec3 polygon_shading_normal(const World *w, const Polygon *p, Vec3 q)
 {
     if (p->smooth_normals < 0)
         return p->normal;
+    if (p->cell_normals)
+        return cell_normal_at(&w->vertex_normals[p->smooth_normals], q, p->normal);
     const Vec3 *n = &w->vertex_normals[p->smooth_normals];
     double b[3];
     if (!polygon_barycentric(w, p, q, b))

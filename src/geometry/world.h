@@ -75,7 +75,12 @@ typedef struct {
 typedef struct {
     Vec3 normal;          /* unit geometric normal */
     double d;             /* plane: dot(normal, p) == d */
-    int axis_u, axis_v;   /* the two axes kept when projecting to 2-D */
+    unsigned char axis_u, axis_v; /* the two axes kept when projecting to 2-D */
+    /* 1: smooth_normals indexes a height field cell's normals instead
+     * (CELL_NORMAL_VECTORS, planar_shapes.h), blended bilinearly across the
+     * cell as POV-Ray's smooth height fields do (a byte beside the axes,
+     * so that a polygon stays 120 bytes) */
+    unsigned char cell_normals;
     int first_point;      /* index in World.points */
     int npoints;          /* 3 for triangles; outline points incl. closing repeats otherwise */
     int first_outline;    /* index in World.outline_start; -1 for a triangle */

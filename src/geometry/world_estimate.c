@@ -3,6 +3,7 @@
 
 #include <stdlib.h>
 
+#include "planar_shapes.h"
 #include "ptr_map.h"
 
 /* The hierarchy's build (bvh.c) per polygon: its primitive, packed copy and
@@ -84,6 +85,17 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
         break;
     case OBJ_UNION:
         break;
+    case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM: {
+        double points = 0.0;
+        if (o->kind == OBJ_HEIGHT_FIELD)
+            height_field_count(o, &n, &points);
+        else if (o->kind == OBJ_BICUBIC_PATCH)
+            bicubic_patch_count(o, &n, &points);
+        else
+            prism_count(o, &n, &points);
+        b += n * (poly + 2.0 * sizeof(int) + sizeof(OutlineBox)) + points * vec;
+        break;
+    }
     }
     *bytes = b + n * HIERARCHY_BYTES_PER_POLYGON;
     *polygons = n;

@@ -284,6 +284,8 @@ int image_read_ex(const char *path, Image *img, double display_gamma, ImageReadE
         ex->premultiplied = !ex->keep_straight;
         ex->ncolours = 0;
         ex->index = NULL;
+        ex->grey = 0;
+        ex->sample_max = 255;
     }
     if (path == NULL || img == NULL) {
         image_set_error(err, errlen, "cannot read an image: no file name given");
@@ -325,7 +327,7 @@ int image_read_ex(const char *path, Image *img, double display_gamma, ImageReadE
         case IMAGE_FORMAT_BMP: rc = image_bmp_read(fp, img, display_gamma, ex, why, (int)sizeof why); break;
         case IMAGE_FORMAT_JPEG: rc = image_jpeg_read(fp, img, display_gamma, why, (int)sizeof why); break;
         case IMAGE_FORMAT_HDR: rc = image_hdr_read(fp, img, why, (int)sizeof why); break;
-        default: rc = image_ppm_read(fp, img, display_gamma, why, (int)sizeof why); break;
+        default: rc = image_ppm_read(fp, img, display_gamma, ex, why, (int)sizeof why); break;
         }
         fclose(fp);
     } else {
@@ -423,6 +425,8 @@ int image_read_for_scene(void *user, const char *path, double decoding_gamma, do
     out->premultiplied = premultiplied < 0 ? ex.premultiplied : premultiplied;
     out->ncolours = ex.ncolours;
     out->index = ex.index;
+    out->grey = ex.grey;
+    out->sample_max = ex.sample_max;
     for (int i = 0; i < ex.ncolours; i++)
         for (int c = 0; c < 4; c++)
             out->palette[i][c] = ex.palette[i][c];

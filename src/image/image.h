@@ -113,6 +113,12 @@ typedef struct {
     int ncolours;
     float palette[256][4];
     unsigned char *index;
+    /* Out: what a height field reads of the samples (POV-Ray 3.7's
+     * image_height_at): a grey picture (PNG grey, PGM, Targa grey) and
+     * the largest sample value its file can hold (255, 65535, a PGM's or
+     * PPM's maxval); other readers leave grey 0 and sample_max 255. */
+    int grey;
+    unsigned sample_max;
 } ImageReadExtras;
 
 /* The size a picture declares in its header, before anything is decoded

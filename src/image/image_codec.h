@@ -115,7 +115,7 @@ int image_exr_read_planes(int fd, const char *const *names, int n, float **plane
 int image_exr_read_file(int fd, ImageExrFile *f, int y0, int y1, char *err, int errlen);
 /* ex: NULL, or image_read_ex's extras (keep_straight; PNG and BMP: palettes). */
 int image_png_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen);
-int image_ppm_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);
+int image_ppm_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen);
 int image_tga_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen);
 int image_bmp_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen);
 int image_jpeg_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen);

@@ -501,6 +501,11 @@ int image_png_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *
     if ((unsigned long)w * h > (unsigned long)IMAGE_MAX_PIXELS)
         png_error(st->png, "image too large");
 
+    if (ex != NULL) { /* as stored, before the expansion below */
+        int stored_type = png_get_color_type(st->png, st->info);
+        ex->grey = stored_type == PNG_COLOR_TYPE_GRAY || stored_type == PNG_COLOR_TYPE_GRAY_ALPHA;
+        ex->sample_max = png_get_bit_depth(st->png, st->info) == 16 ? 65535u : 255u;
+    }
     if (ex != NULL && png_get_color_type(st->png, st->info) == PNG_COLOR_TYPE_PALETTE) {
         /* Kept indexed, as POV-Ray 3.7 keeps palette PNGs: one byte per
          * pixel, each the entry it shows, the entries' colours below. */

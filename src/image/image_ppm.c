@@ -83,7 +83,7 @@ static long read_number(FILE *fp)
     return v;
 }
 
-int image_ppm_read(FILE *fp, Image *img, double display_gamma, char *err, int errlen)
+int image_ppm_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *ex, char *err, int errlen)
 {
     ImageTransfer t;
     float *lut;
@@ -118,6 +118,10 @@ int image_ppm_read(FILE *fp, Image *img, double display_gamma, char *err, int er
         return -1;
     }
     wide = maxval > 255;
+    if (ex != NULL) {
+        ex->grey = channels == 1;
+        ex->sample_max = (unsigned)maxval;
+    }
     /* The pixels must be there before their memory is asked for: a header
      * of 30 bytes may claim 2^28 pixels (4 GiB). Binary samples take 1 or 2
      * bytes, text ones 2 at least (a digit and a blank). When the stream

@@ -171,6 +171,8 @@ int image_tga_read(FILE *fp, Image *img, double display_gamma, ImageReadExtras *
         image_set_error(err, errlen, "unsupported Targa pixel depth %d", depth);
         return -1;
     }
+    if (ex != NULL)
+        ex->grey = type == 3 || type == 11;
     if (w == 0 || ht == 0 || (long)w * ht > IMAGE_MAX_PIXELS) {
         image_set_error(err, errlen, "unsupported Targa size %dx%d", w, ht);
         return -1;

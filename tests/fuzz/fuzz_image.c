@@ -69,7 +69,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #elif defined(FUZZ_HDR)
     (void)image_hdr_read(fp, &img, err, (int)sizeof err);
 #else
-    (void)image_ppm_read(fp, &img, 0.0, err, (int)sizeof err);
+    (void)image_ppm_read(fp, &img, 0.0, NULL, err, (int)sizeof err);
 #endif
     image_free(&img); /* as image_read does, whatever the answer */
     free(ex.index);
