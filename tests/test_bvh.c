@@ -346,7 +346,7 @@ static void check_world(const char *name, const World *w, int avx2)
         for (int x = 0; x < 64; x++) {
             Vec3 org, dir;
             camera_ray(&w->camera, 64, 48, x, y, &org, &dir);
-            Hit none = { HIT_NONE, -1, 0.0, org, -1 };
+            Hit none = { HIT_NONE, -1, 0.0, org, -1, 0 };
             compare_ray(&grid, &tree, org, dir, &none, (x + y) % 3 == 0, &t, &la, &lb);
         }
     /* From points on polygons, in random directions and toward vertices
@@ -361,7 +361,7 @@ static void check_world(const char *name, const World *w, int avx2)
             if (v3_length(d) > 0.0)
                 dir = v3_normalize(d);
         }
-        Hit from = { HIT_POLYGON, pi, 0.0, org, -1 };
+        Hit from = { HIT_POLYGON, pi, 0.0, org, -1, 0 };
         compare_ray(&grid, &tree, org, dir, &from, i % 3 == 0, &t, &la, &lb);
     }
     /* Along the axes from inside the box: rays in cell and slab planes. */
@@ -372,7 +372,7 @@ static void check_world(const char *name, const World *w, int avx2)
             org = w->points[(int)(unit(&s) * w->npoints)];
         double sgn = i % 4 < 2 ? 1.0 : -1.0;
         Vec3 dir = i % 3 == 0 ? v3(sgn, 0, 0) : i % 3 == 1 ? v3(0, sgn, 0) : v3(0, 0, sgn);
-        Hit none = { HIT_NONE, -1, 0.0, org, -1 };
+        Hit none = { HIT_NONE, -1, 0.0, org, -1, 0 };
         compare_ray(&grid, &tree, org, dir, &none, 1, &t, &la, &lb);
     }
     tap_ok(t.brute_wrong == 0,
@@ -546,7 +546,7 @@ int main(void)
         tracer_init(&tree, &w, &g);
         tracer_use_bvh(&tree, &b);
         Vec3 org = v3(0.1, 0, -0.2), dir = v3_normalize(v3(0.3, 1, 0.2));
-        Hit from = { HIT_POLYGON, 0, 0.0, org, -1 }, hg, hb;
+        Hit from = { HIT_POLYGON, 0, 0.0, org, -1, 0 }, hg, hb;
         int fg = trace_nearest(&grid, org, dir, HUGE_VAL, &from, &hg);
         int fb = trace_nearest(&tree, org, dir, HUGE_VAL, &from, &hb);
         if (far)

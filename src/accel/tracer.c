@@ -384,6 +384,26 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
         }
     }
 
+    /* The shapes next, under the same bound: a shape nearer than every
+     * plane bounds the polygon query in turn. */
+    int shape = -1, shape_part = 0;
+    for (int i = 0; i < w->nshapes; i++) {
+        const Shape *s = &w->shapes[i];
+        if (tr->hide && material_hidden(&w->materials[s->material], tr->hide))
+            continue;
+        if (!shape_box_hit(s, org, dir, plane_t))
+            continue;
+        tr->stats.shape_tests++;
+        int part;
+        double t = shape_nearest(s, org, dir, plane_t, &part);
+        if (t > 0.0) {
+            plane_t = t;
+            plane = -1;
+            shape = i;
+            shape_part = part;
+        }
+    }
+
     double best = HUGE_VAL;
     int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
     if (tr->bvh && tr->avx2)
@@ -393,13 +413,14 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     else
         nearest_in_grid(tr, org, dir, tmin, plane_t, exclude, hit, &best);
     if (hit->kind == HIT_NONE) {
-        if (plane < 0) {
+        if (plane < 0 && shape < 0) {
             if (tr->segment_cells)
                 tr->segment_in_box = 0;
             return 0;
         }
-        hit->kind = HIT_PLANE;
-        hit->index = plane;
+        hit->kind = shape >= 0 ? HIT_SHAPE : HIT_PLANE;
+        hit->index = shape >= 0 ? shape : plane;
+        hit->part = shape_part;
         best = plane_t;
     } else {
         tr->stats.polygon_hits++;

@@ -82,6 +82,12 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
     case OBJ_PLANE:
         b += sizeof(InfinitePlane);
         break;
+    case OBJ_SPHERE:
+    case OBJ_DISC:
+    case OBJ_CONE:
+    case OBJ_TORUS:
+        b += sizeof(Shape);
+        break;
     case OBJ_UNION:
         break;
     }

@@ -173,6 +173,16 @@ RefAnswer shadow_reference(const World *w, const Hit *at, const Light *l, long d
         if (a == REF_TIE)
             r = REF_TIE;
     }
+    /* The shapes by their own test (shape.h), which is POV-Ray's
+     * arithmetic and so the definition rather than an approximation of
+     * it: a crossing of one blocks, as a polygon's does here. */
+    Vec3 dd = { (double)d.x, (double)d.y, (double)d.z };
+    for (int i = 0; i < w->nshapes; i++) {
+        const Shape *s = &w->shapes[i];
+        ShapeHit hits[SHAPE_MAX_HITS];
+        if (!w->materials[s->material].no_shadow && shape_intersect_all(s, at->point, dd, (double)tmax, hits) > 0)
+            return REF_BLOCKED;
+    }
     return r;
 }
 
