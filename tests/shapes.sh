@@ -21,7 +21,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="sphere-basic sphere-transformed sphere-inside sphere-far sphere-glass sphere-uv disc cylinder cone torus shapes-fade"
+scenes="sphere-basic sphere-transformed sphere-inside sphere-far sphere-glass sphere-uv disc cylinder cone torus shapes-fade sphere-eye-glass shapes-many"
 for s in $scenes; do
     cp "$srcdir/scenes/shapes/$s.pov" "$work/$s.pov" || bail "cannot copy scenes/shapes/$s.pov"
 done
@@ -41,6 +41,8 @@ cylinder             6e-5   (3.0e-5)     1 (0)     1 (0)
 cone                 3.2e-4 (1.6e-4)     6 (3)     2 (1)
 torus                1e-5   (8.1e-7)     1 (0)     1 (0)
 shapes-fade          1e-5   (3.0e-6)     1 (0)     1 (0)
+sphere-eye-glass     1e-5   (7.1e-7)     1 (0)     1 (0)
+shapes-many          1e-5   (1.2e-6)     1 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/shapes.sh $scenes
@@ -80,6 +82,40 @@ for s in $scenes; do
             test "${dis:-x}" = "${want:-y}"
     done
 done
+
+# Mistakes: status 2, the message at FILE:LINE:COLUMN, no image.
+while IFS='|' read -r scene message; do
+    printf '%s\n' "$scene" >"$work/bad.pov"
+    rm -f "$work/bad.png"
+    run "$work/bad.pov" --width 8 --height 6 -o "$work/bad.png"
+    check "$message: status 2, FILE:LINE:COLUMN, no image" \
+        test "$status $(grep -c "^$work/bad.pov:[0-9]*:[0-9]*: .*$message" "$work/err") $([ -e "$work/bad.png" ] && echo image || echo none)" = "2 1 none"
+done <<'BAD'
+sphere { <0, 1, 0> }|expected a numeric expression
+cylinder { <0, 1, 0>, <0, 1, 0>, 1 }|degenerate cylinder
+cone { 0, 1, 0, 0.5 }|degenerate cone
+disc { 0, 0, 1 }|degenerate disc normal
+torus { 1 0.2 open }|'open' is not supported
+BAD
+
+# Extreme values render (status 0) with no NaN or infinite pixel: radii
+# beyond any square, a shape too thin to be met, transforms near singular.
+cat >"$work/extreme.pov" <<'POV'
+camera { location <0, 1, -5> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+sphere { 0, 1e300 pigment { rgbf <1, 1, 1, 0.9> } }
+sphere { <1, 0, 0>, 1e-300 pigment { rgb 1 } }
+cylinder { <0, 0, 0>, <1e300, 0, 0>, 0.5 pigment { rgb 1 } }
+cone { <-1, 0, 0>, 1e-300, <-1, 1, 0>, 1e300 pigment { rgb 1 } }
+torus { 1e300, 1 pigment { rgb 1 } }
+torus { 1, 1e300 pigment { rgb 1 } }
+disc { 0, y, 1e300, 1e299 pigment { rgb 1 } }
+sphere { 0, 1 scale <1, 1e-300, 1> pigment { rgb 1 } }
+POV
+run "$work/extreme.pov" --width 32 --height 24 -o "$work/extreme.exr"
+check "extreme radii and transforms: renders" exited 0
+"$hstrace" compare "$work/extreme.exr" "$work/extreme.exr" --json >"$work/extreme.json" 2>&1
+check_status "extreme radii and transforms: no NaN or infinite pixels" "$(json_value nonfinite_pixels "$work/extreme.json")" 0
 
 # The same image on one thread as on two.
 for s in sphere-basic sphere-glass; do

@@ -132,6 +132,18 @@ static int brute_nearest(const World *w, Vec3 org, Vec3 dir, const Hit *from, Hi
             plane = i;
         }
     }
+    /* the shapes, in order: nearer than the plane, the first of tied ones */
+    int shape = -1, part = 0;
+    for (int i = 0; i < w->nshapes; i++) {
+        int pt;
+        double t = shape_nearest(&w->shapes[i], org, dir, plane_t, &pt);
+        if (t > 0.0) {
+            plane_t = t;
+            shape = i;
+            part = pt;
+            plane = -1;
+        }
+    }
     RayFrame f = ray_frame(org, dir);
     double best = plane_t;
     int poly = -1;
@@ -144,10 +156,11 @@ static int brute_nearest(const World *w, Vec3 org, Vec3 dir, const Hit *from, Hi
             poly = i;
         }
     }
-    if (poly < 0 && plane < 0)
+    if (poly < 0 && plane < 0 && shape < 0)
         return 0;
-    hit->kind = poly >= 0 ? HIT_POLYGON : HIT_PLANE;
-    hit->index = poly >= 0 ? poly : plane;
+    hit->kind = poly >= 0 ? HIT_POLYGON : shape >= 0 ? HIT_SHAPE : HIT_PLANE;
+    hit->index = poly >= 0 ? poly : shape >= 0 ? shape : plane;
+    hit->part = part;
     hit->t = best;
     return 1;
 }
@@ -426,7 +439,7 @@ int main(void)
         "scenes/hard/degenerate.pov", "scenes/hard/far-coordinates.pov", "scenes/hard/grazing.pov",
         "scenes/hard/inside-volume.pov", "scenes/hard/light-in-plane.pov", "scenes/hard/long-shadows.pov",
         "scenes/hard/mirrors.pov", "scenes/hard/shared-edges-perspective.pov", "scenes/hard/shared-edges.pov",
-        "scenes/hard/transparent.pov",
+        "scenes/hard/transparent.pov", "scenes/shapes/shapes-many.pov", "scenes/shapes/sphere-basic.pov",
     };
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++)
         check_scene_file(srcdir, scenes[i]);

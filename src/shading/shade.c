@@ -484,6 +484,15 @@ static void interior_push(InteriorList *l, const Material *m)
     l->ior[l->n++] = m->ior;
 }
 
+void shade_camera_interiors(const World *w, Vec3 org, InteriorList *inside)
+{
+    for (int i = 0; i < w->nshapes; i++) {
+        const Material *m = &w->materials[w->shapes[i].material];
+        if (shape_inside(&w->shapes[i], org) && interior_index(inside, m->interior_key) < 0)
+            interior_push(inside, m);
+    }
+}
+
 /* The ior ratio at this surface, and the interior list beyond it
  * (POV-Ray's ComputeRefraction bookkeeping; the atmosphere has ior 1). */
 static double refraction_ratio(const InteriorList *inside, const Material *m, InteriorList *beyond)

@@ -140,39 +140,70 @@ int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     return shadow_shapes_test(ctx, q, light);
 }
 
+/* One shape's part of shadow_shapes_test; 1 when the light is now fully
+ * blocked. */
+typedef struct {
+    ShadowContext *ctx;
+    const ShadowQuery *q;
+    RGB *light;
+} ShapeShadow;
+
+static int shadow_shape_test(void *user, int i, double *tmax)
+{
+    (void)tmax; /* every crossing up to the light counts */
+    ShapeShadow *ss = user;
+    ShadowContext *ctx = ss->ctx;
+    const ShadowQuery *q = ss->q;
+    const World *w = ctx->tracer->world;
+    const Shape *s = &w->shapes[i];
+    const Material *m = &w->materials[s->material];
+    /* The point's own shape is tested too: POV-Ray's shadow ray leaves
+     * no object out, and the shape's depth tolerance keeps it off the
+     * surface it starts on (a sphere's far side still shadows). */
+    if (m->no_shadow || !shape_box_hit(s, q->point, q->to_light, q->distance))
+        return 0;
+    ctx->stats.shadow_shape_tests++;
+    ShapeHit hits[SHAPE_MAX_HITS];
+    int n = shape_intersect_all(s, q->point, q->to_light, q->distance, hits);
+    /* a fading interior fades the light over the legs the shadow ray
+     * runs inside it: from the point (where it starts inside) or the
+     * shape's last surface, to the next (the legs as the shape alone
+     * bounds them: surfaces of other objects inside it do not split
+     * them) */
+    int inside = n > 0 && interior_fades_shadows(m) && segment_inside(q, m->interior_key);
+    double from = 0.0;
+    for (int k = 0; k < n; k++) {
+        if (pass_through(ctx, m, surface_of_shape(i), hits[k].part, NULL, q, hits[k].t, ss->light))
+            return 1;
+        if (inside) {
+            RGB f = interior_fade(m, hits[k].t - from);
+            ss->light->r *= f.r;
+            ss->light->g *= f.g;
+            ss->light->b *= f.b;
+        }
+        inside = !inside && interior_fades_shadows(m);
+        from = hits[k].t;
+    }
+    return 0;
+}
+
 int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->tracer->world;
+    if (w->nshapes == 0)
+        return 0;
+    ShapeShadow ss = { ctx, q, light };
+    const Bvh *bvh = ctx->tracer->bvh;
+    if (bvh && bvh->shapes) { /* the shapes whose boxes the segment meets */
+        double tmax = q->distance;
+        uint64_t nodes = 0;
+        return bvh_shapes_walk(bvh->shapes, q->point, q->to_light, &tmax, HIDE_NO_SHADOW, shadow_shape_test, &ss,
+                               &nodes);
+    }
     for (int i = 0; i < w->nshapes; i++) {
-        const Shape *s = &w->shapes[i];
-        const Material *m = &w->materials[s->material];
-        /* The point's own shape is tested too: POV-Ray's shadow ray leaves
-         * no object out, and the shape's depth tolerance keeps it off the
-         * surface it starts on (a sphere's far side still shadows). */
-        if (m->no_shadow || !shape_box_hit(s, q->point, q->to_light, q->distance))
-            continue;
-        ctx->stats.shadow_shape_tests++;
-        ShapeHit hits[SHAPE_MAX_HITS];
-        int n = shape_intersect_all(s, q->point, q->to_light, q->distance, hits);
-        /* a fading interior fades the light over the legs the shadow ray
-         * runs inside it: from the point (where it starts inside) or the
-         * shape's last surface, to the next (the legs as the shape alone
-         * bounds them: surfaces of other objects inside it do not split
-         * them) */
-        int inside = n > 0 && interior_fades_shadows(m) && segment_inside(q, m->interior_key);
-        double from = 0.0;
-        for (int k = 0; k < n; k++) {
-            if (pass_through(ctx, m, surface_of_shape(i), hits[k].part, NULL, q, hits[k].t, light))
-                return 1;
-            if (inside) {
-                RGB f = interior_fade(m, hits[k].t - from);
-                light->r *= f.r;
-                light->g *= f.g;
-                light->b *= f.b;
-            }
-            inside = !inside && interior_fades_shadows(m);
-            from = hits[k].t;
-        }
+        double tmax = q->distance;
+        if (shadow_shape_test(&ss, i, &tmax))
+            return 1;
     }
     return 0;
 }
