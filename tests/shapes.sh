@@ -21,7 +21,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="sphere-basic sphere-transformed sphere-inside sphere-far sphere-glass sphere-uv disc cylinder cone torus shapes-fade sphere-eye-glass shapes-many"
+scenes="sphere-basic sphere-transformed sphere-inside sphere-far sphere-glass sphere-uv disc cylinder cone torus shapes-fade sphere-eye-glass shapes-many shapes-flags"
 for s in $scenes; do
     cp "$srcdir/scenes/shapes/$s.pov" "$work/$s.pov" || bail "cannot copy scenes/shapes/$s.pov"
 done
@@ -43,6 +43,7 @@ torus                1e-5   (8.1e-7)     1 (0)     1 (0)
 shapes-fade          1e-5   (3.0e-6)     1 (0)     1 (0)
 sphere-eye-glass     1e-5   (7.1e-7)     1 (0)     1 (0)
 shapes-many          1e-5   (1.2e-6)     1 (0)     1 (0)
+shapes-flags         1e-5   (1.5e-6)     1 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/shapes.sh $scenes

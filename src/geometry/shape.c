@@ -1,6 +1,7 @@
-/* POV-Ray 3.7's analytic shapes (source/backend/shape/spheres.cpp for the
- * sphere): the same arithmetic in the same order where it decides what a
- * ray meets, so that hits, grazes and misses fall where POV-Ray's do. */
+/* POV-Ray 3.7's analytic shapes (source/backend/shape/ spheres.cpp,
+ * discs.cpp, cones.cpp, torus.cpp): the same arithmetic in the same order
+ * where it decides what a ray meets, so that hits, grazes and misses fall
+ * where POV-Ray's do. Written anew from reading them, not copied. */
 #include "shape.h"
 
 #include <math.h>
