@@ -261,13 +261,18 @@ static const char *avx2_name(const char *name)
     return buf;
 }
 
-/* The same hierarchy, bit for bit: nodes, leaf order, records, depth. */
+/* The same hierarchy, bit for bit: nodes, leaf order, records, depth; and
+ * the same of the shapes' own (Bvh.shapes). An empty one (a world of
+ * shapes alone has no polygons) has no arrays to compare. */
 static int same_bvh(const Bvh *a, const Bvh *b)
 {
-    return a->nnodes == b->nnodes && a->nitems == b->nitems && a->depth == b->depth &&
-           memcmp(a->nodes, b->nodes, sizeof *a->nodes * (size_t)a->nnodes) == 0 &&
-           memcmp(a->items, b->items, sizeof *a->items * (size_t)a->nitems) == 0 &&
-           memcmp(a->prims, b->prims, sizeof *a->prims * (size_t)a->nitems) == 0;
+    if (a->nnodes != b->nnodes || a->nitems != b->nitems || a->depth != b->depth || !a->shapes != !b->shapes)
+        return 0;
+    if (a->shapes && !same_bvh(a->shapes, b->shapes))
+        return 0;
+    return a->nnodes == 0 || (memcmp(a->nodes, b->nodes, sizeof *a->nodes * (size_t)a->nnodes) == 0 &&
+                              memcmp(a->items, b->items, sizeof *a->items * (size_t)a->nitems) == 0 &&
+                              memcmp(a->prims, b->prims, sizeof *a->prims * (size_t)a->nitems) == 0);
 }
 
 /* bvh_build (its SIMD passes, the sweep over the bins that hold items,
