@@ -359,6 +359,15 @@ int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
  * nearest-hit query's, POV-Ray's tolerances), filtering the light through
  * see-through ones; 1 when they block it fully. */
 int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+/* The distances along a shadow ray at which a shape's crossing counts:
+ * (tmin, tlimit), POV-Ray's window for its shadow rays (trace.cpp,
+ * TracePointLightShadowRay: beyond SMALL_TOLERANCE of the point, short of
+ * the light by SHADOW_TOLERANCE, both 1e-3), for a light `distance` away. */
+static inline void shadow_shape_window(double distance, double *tmin, double *tlimit)
+{
+    *tmin = 1.0e-3;
+    *tlimit = distance - 1.0e-3;
+}
 /* One plane's part: World.planes[i] (passed over where it is q's own
  * surface or casts no shadow); tmin: trace_min_distance(q->point). */
 int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tmin, RGB *light);

@@ -158,13 +158,18 @@ static int shadow_shape_test(void *user, int i, double *tmax)
     const Shape *s = &w->shapes[i];
     const Material *m = &w->materials[s->material];
     /* The point's own shape is tested too: POV-Ray's shadow ray leaves
-     * no object out, and the shape's depth tolerance keeps it off the
+     * no object out; its window (shadow_shape_window) keeps it off the
      * surface it starts on (a sphere's far side still shadows). */
-    if (m->no_shadow || !shape_box_hit(s, q->point, q->to_light, q->distance))
+    double tmin, tlimit;
+    shadow_shape_window(q->distance, &tmin, &tlimit);
+    if (m->no_shadow || !shape_box_hit(s, q->point, q->to_light, tlimit))
         return 0;
     ctx->stats.shadow_shape_tests++;
-    ShapeHit hits[SHAPE_MAX_HITS];
-    int n = shape_intersect_all(s, q->point, q->to_light, q->distance, hits);
+    ShapeHit all[SHAPE_MAX_HITS], hits[SHAPE_MAX_HITS];
+    int nall = shape_intersect_all(s, q->point, q->to_light, tlimit, all), n = 0;
+    for (int k = 0; k < nall; k++)
+        if (all[k].t > tmin)
+            hits[n++] = all[k];
     /* a fading interior fades the light over the legs the shadow ray
      * runs inside it: from the point (where it starts inside) or the
      * shape's last surface, to the next (the legs as the shape alone

@@ -3,6 +3,8 @@
 
 #include "shadow_reference.h"
 
+#include "shadow.h"
+
 typedef long double ld;
 
 typedef struct {
@@ -177,11 +179,15 @@ RefAnswer shadow_reference(const World *w, const Hit *at, const Light *l, long d
      * arithmetic and so the definition rather than an approximation of
      * it: a crossing of one blocks, as a polygon's does here. */
     Vec3 dd = { (double)d.x, (double)d.y, (double)d.z };
+    double smin, slimit;
+    shadow_shape_window((double)tmax, &smin, &slimit);
     for (int i = 0; i < w->nshapes; i++) {
         const Shape *s = &w->shapes[i];
         ShapeHit hits[SHAPE_MAX_HITS];
-        if (!w->materials[s->material].no_shadow && shape_intersect_all(s, at->point, dd, (double)tmax, hits) > 0)
-            return REF_BLOCKED;
+        int n = w->materials[s->material].no_shadow ? 0 : shape_intersect_all(s, at->point, dd, slimit, hits);
+        for (int k = 0; k < n; k++)
+            if (hits[k].t > smin)
+                return REF_BLOCKED;
     }
     return r;
 }
