@@ -43,7 +43,10 @@ torus                1e-5   (8.1e-7)     1 (0)     1 (0)
 shapes-fade          1e-5   (3.0e-6)     1 (0)     1 (0)
 sphere-eye-glass     1e-5   (7.1e-7)     1 (0)     1 (0)
 shapes-many          1e-5   (1.2e-6)     1 (0)     1 (0)
-shapes-flags         1e-5   (1.5e-6)     1 (0)     1 (0)
+# shapes-flags: 7 pixels differ by up to 0.0019 since the shadow ray
+# window (fefcaa3) leaves out crossings within 1e-3 of the point (1.5e-6
+# without it), where cylinder and cone came nearer to POV-Ray
+shapes-flags         2e-5   (9.6e-6)     1 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/shapes.sh $scenes
