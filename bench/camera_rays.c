@@ -164,7 +164,7 @@ int main(int argc, char **argv)
             for (int x = 0; x < width; x++) {
                 Vec3 org, dir;
                 camera_ray(&w.camera, width, height, x, y, &org, &dir);
-                Hit from = { HIT_NONE, -1, 0.0, org, -1 }, hit;
+                Hit from = { HIT_NONE, -1, 0.0, org, -1, 0 }, hit;
                 t.hide = HIDE_NO_IMAGE;
                 hits += (uint64_t)trace_nearest(&t, org, dir, HUGE_VAL, &from, &hit);
             }

@@ -37,10 +37,10 @@ run "$work/inc.pov" -o "$work/inc.png"
 check_status "missing include file: exit status 3" "$status" 3
 check "message names the include file" grep -q "no-such-file.inc" "$work/err"
 
-printf 'sphere { 0, 1 pigment { rgb 1 } }\n' >"$work/sphere.pov"
-run "$work/sphere.pov" -o "$work/sphere.png"
+printf 'ovus { 1, 0.5 pigment { rgb 1 } }\n' >"$work/ovus.pov"
+run "$work/ovus.pov" -o "$work/ovus.png"
 check_status "unsupported object: exit status 2" "$status" 2
-check "message says what is unsupported, where ($(head -1 "$work/err"))" grep -q "sphere.pov:1:1: .*sphere.*not supported" "$work/err"
+check "message says what is unsupported, where ($(head -1 "$work/err"))" grep -q "ovus.pov:1:1: .*ovus.*not supported" "$work/err"
 
 run "$work/missing.pov"
 check_status "missing scene file: exit status 3" "$status" 3

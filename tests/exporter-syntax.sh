@@ -962,8 +962,8 @@ while IFS='|' read -r scene message; do
 done <<'BAD'
 #declare T = texture { pigment { rgb 1 } } T|'T' cannot stand alone here
 Model|undeclared identifier 'Model'
-#declare S = sphere { 0, 1 } S|'sphere' is not supported by hstrace (declared at
-#declare S = sphere { 0, 1 } union { triangle { 0, x, y } S }|'sphere' is not supported by hstrace (declared at
+#declare S = ovus { 1, 0.5 } S|'ovus' is not supported by hstrace (declared at
+#declare S = ovus { 1, 0.5 } union { triangle { 0, x, y } S }|'ovus' is not supported by hstrace (declared at
 #declare T = triangle { 0, x, y } union { T object { T } }|expected an object modifier or '}' in 'object', found 'object'
 triangle { 0, x, y pigment { rgb 1 } finish { subsurface { translucency 0.5 scattering 1 } } }|expected translucency, anisotropy or '}' in 'subsurface', found 'scattering'
 triangle { 0, x, y pigment { rgb 1 } finish { diffuse 0.6 0.2 0.1 } }|expected a finish item or '}' in 'finish', found '0.1'

@@ -351,7 +351,7 @@ static void run_variant(const World *w, const Grid *g, const Bvh *bvh, const Sha
             continue;
         if (v->coherence)
             pixel_coherence_begin(&pc, k == 0, 1);
-        Hit none = { HIT_NONE, -1, 0, w->camera.location, -1 };
+        Hit none = { HIT_NONE, -1, 0, w->camera.location, -1, 0 };
         Vec3 dir = v3_normalize(v3_sub(probes[k].eye_target, w->camera.location));
         Hit h1;
         int got = trace_nearest(ctx.tracer, w->camera.location, dir, HUGE_VAL, &none, &h1);
@@ -439,7 +439,7 @@ static void explain(const World *w, const ShadowVolumes *sv, const char *what, c
     if (seg)
         fprintf(stderr, "  the segment starts on polygon %d at (%.17g, %.17g, %.17g)\n", hits[0].index, hits[0].point.x,
                 hits[0].point.y, hits[0].point.z);
-    Hit eye = { HIT_NONE, -1, 0, w->camera.location, -1 };
+    Hit eye = { HIT_NONE, -1, 0, w->camera.location, -1, 0 };
     fprintf(stderr, "  eye count %s %d, reference at the eye %d\n", sv->light[li].eye_known ? "known" : "unknown",
             sv->light[li].eye_opaque, shadow_reference_count(w, &eye, l, eps));
 }

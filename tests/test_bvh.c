@@ -132,6 +132,18 @@ static int brute_nearest(const World *w, Vec3 org, Vec3 dir, const Hit *from, Hi
             plane = i;
         }
     }
+    /* the shapes, in order: nearer than the plane, the first of tied ones */
+    int shape = -1, part = 0;
+    for (int i = 0; i < w->nshapes; i++) {
+        int pt;
+        double t = shape_nearest(&w->shapes[i], org, dir, plane_t, &pt);
+        if (t > 0.0) {
+            plane_t = t;
+            shape = i;
+            part = pt;
+            plane = -1;
+        }
+    }
     RayFrame f = ray_frame(org, dir);
     double best = plane_t;
     int poly = -1;
@@ -144,10 +156,11 @@ static int brute_nearest(const World *w, Vec3 org, Vec3 dir, const Hit *from, Hi
             poly = i;
         }
     }
-    if (poly < 0 && plane < 0)
+    if (poly < 0 && plane < 0 && shape < 0)
         return 0;
-    hit->kind = poly >= 0 ? HIT_POLYGON : HIT_PLANE;
-    hit->index = poly >= 0 ? poly : plane;
+    hit->kind = poly >= 0 ? HIT_POLYGON : shape >= 0 ? HIT_SHAPE : HIT_PLANE;
+    hit->index = poly >= 0 ? poly : shape >= 0 ? shape : plane;
+    hit->part = part;
     hit->t = best;
     return 1;
 }
@@ -248,13 +261,18 @@ static const char *avx2_name(const char *name)
     return buf;
 }
 
-/* The same hierarchy, bit for bit: nodes, leaf order, records, depth. */
+/* The same hierarchy, bit for bit: nodes, leaf order, records, depth; and
+ * the same of the shapes' own (Bvh.shapes). An empty one (a world of
+ * shapes alone has no polygons) has no arrays to compare. */
 static int same_bvh(const Bvh *a, const Bvh *b)
 {
-    return a->nnodes == b->nnodes && a->nitems == b->nitems && a->depth == b->depth &&
-           memcmp(a->nodes, b->nodes, sizeof *a->nodes * (size_t)a->nnodes) == 0 &&
-           memcmp(a->items, b->items, sizeof *a->items * (size_t)a->nitems) == 0 &&
-           memcmp(a->prims, b->prims, sizeof *a->prims * (size_t)a->nitems) == 0;
+    if (a->nnodes != b->nnodes || a->nitems != b->nitems || a->depth != b->depth || !a->shapes != !b->shapes)
+        return 0;
+    if (a->shapes && !same_bvh(a->shapes, b->shapes))
+        return 0;
+    return a->nnodes == 0 || (memcmp(a->nodes, b->nodes, sizeof *a->nodes * (size_t)a->nnodes) == 0 &&
+                              memcmp(a->items, b->items, sizeof *a->items * (size_t)a->nitems) == 0 &&
+                              memcmp(a->prims, b->prims, sizeof *a->prims * (size_t)a->nitems) == 0);
 }
 
 /* bvh_build (its SIMD passes, the sweep over the bins that hold items,
@@ -346,7 +364,7 @@ static void check_world(const char *name, const World *w, int avx2)
         for (int x = 0; x < 64; x++) {
             Vec3 org, dir;
             camera_ray(&w->camera, 64, 48, x, y, &org, &dir);
-            Hit none = { HIT_NONE, -1, 0.0, org, -1 };
+            Hit none = { HIT_NONE, -1, 0.0, org, -1, 0 };
             compare_ray(&grid, &tree, org, dir, &none, (x + y) % 3 == 0, &t, &la, &lb);
         }
     /* From points on polygons, in random directions and toward vertices
@@ -361,7 +379,7 @@ static void check_world(const char *name, const World *w, int avx2)
             if (v3_length(d) > 0.0)
                 dir = v3_normalize(d);
         }
-        Hit from = { HIT_POLYGON, pi, 0.0, org, -1 };
+        Hit from = { HIT_POLYGON, pi, 0.0, org, -1, 0 };
         compare_ray(&grid, &tree, org, dir, &from, i % 3 == 0, &t, &la, &lb);
     }
     /* Along the axes from inside the box: rays in cell and slab planes. */
@@ -372,7 +390,7 @@ static void check_world(const char *name, const World *w, int avx2)
             org = w->points[(int)(unit(&s) * w->npoints)];
         double sgn = i % 4 < 2 ? 1.0 : -1.0;
         Vec3 dir = i % 3 == 0 ? v3(sgn, 0, 0) : i % 3 == 1 ? v3(0, sgn, 0) : v3(0, 0, sgn);
-        Hit none = { HIT_NONE, -1, 0.0, org, -1 };
+        Hit none = { HIT_NONE, -1, 0.0, org, -1, 0 };
         compare_ray(&grid, &tree, org, dir, &none, 1, &t, &la, &lb);
     }
     tap_ok(t.brute_wrong == 0,
@@ -426,7 +444,7 @@ int main(void)
         "scenes/hard/degenerate.pov", "scenes/hard/far-coordinates.pov", "scenes/hard/grazing.pov",
         "scenes/hard/inside-volume.pov", "scenes/hard/light-in-plane.pov", "scenes/hard/long-shadows.pov",
         "scenes/hard/mirrors.pov", "scenes/hard/shared-edges-perspective.pov", "scenes/hard/shared-edges.pov",
-        "scenes/hard/transparent.pov",
+        "scenes/hard/transparent.pov", "scenes/shapes/shapes-many.pov", "scenes/shapes/sphere-basic.pov",
     };
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++)
         check_scene_file(srcdir, scenes[i]);
@@ -546,7 +564,7 @@ int main(void)
         tracer_init(&tree, &w, &g);
         tracer_use_bvh(&tree, &b);
         Vec3 org = v3(0.1, 0, -0.2), dir = v3_normalize(v3(0.3, 1, 0.2));
-        Hit from = { HIT_POLYGON, 0, 0.0, org, -1 }, hg, hb;
+        Hit from = { HIT_POLYGON, 0, 0.0, org, -1, 0 }, hg, hb;
         int fg = trace_nearest(&grid, org, dir, HUGE_VAL, &from, &hg);
         int fb = trace_nearest(&tree, org, dir, HUGE_VAL, &from, &hb);
         if (far)

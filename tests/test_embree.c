@@ -150,7 +150,7 @@ int main(void)
                 continue;
             }
         }
-        Hit surface = { HIT_POLYGON, own, 1.0, at, -1 };
+        Hit surface = { HIT_POLYGON, own, 1.0, at, -1, 0 };
         Segment seg = { w.camera.location, v3(0, -1, 0), &surface, NULL, NULL, NULL, 0 };
         for (int li = 0; li < w.nlights; li++) {
             const Light *l = &w.lights[li];

@@ -77,9 +77,9 @@ typedef struct {
     const Vec3 *points; /* triangle: its 3 points; else the world's points */
     const int *start;   /* outline k: points[start[k]] .. points[start[k + 1] - 1]; NULL: a triangle */
     int triangle;
-} Shape;
+} Outlines;
 
-static void shape_of(const World *w, const Polygon *p, Shape *s)
+static void shape_of(const World *w, const Polygon *p, Outlines *s)
 {
     s->triangle = p->first_outline < 0;
     s->noutlines = s->triangle ? 1 : p->noutlines;
@@ -87,8 +87,8 @@ static void shape_of(const World *w, const Polygon *p, Shape *s)
     s->start = s->triangle ? NULL : &w->outline_start[p->first_outline];
 }
 
-static int outline_n(const Shape *s, int k) { return s->start ? s->start[k + 1] - s->start[k] : 3; }
-static Vec3 outline_pt(const Shape *s, int k, int i)
+static int outline_n(const Outlines *s, int k) { return s->start ? s->start[k + 1] - s->start[k] : 3; }
+static Vec3 outline_pt(const Outlines *s, int k, int i)
 {
     return s->start ? s->points[s->start[k] + i % outline_n(s, k)] : s->points[i % 3];
 }
@@ -150,7 +150,7 @@ static int segment_meets_box(LVec a, LVec b, LVec lo, LVec hi)
     return 1;
 }
 
-static LVec newell_normal(const Shape *s)
+static LVec newell_normal(const Outlines *s)
 {
     LVec n = { 0, 0, 0 };
     for (int k = 0; k < s->noutlines; k++)
@@ -170,7 +170,7 @@ static int dominant_axis(LVec n)
 }
 
 /* Even-odd over every outline, in the plane of the two axes other than `drop`. */
-static int inside_even_odd(const Shape *s, int drop, ld qu, ld qv)
+static int inside_even_odd(const Outlines *s, int drop, ld qu, ld qv)
 {
     int iu = (drop + 1) % 3, iv = (drop + 2) % 3, inside = 0;
     for (int k = 0; k < s->noutlines; k++)
@@ -183,7 +183,7 @@ static int inside_even_odd(const Shape *s, int drop, ld qu, ld qv)
     return inside;
 }
 
-static int outlines_meet_box(const Shape *s, LVec lo, LVec hi)
+static int outlines_meet_box(const Outlines *s, LVec lo, LVec hi)
 {
     for (int k = 0; k < s->noutlines; k++)
         for (int i = 0; i < outline_n(s, k); i++)
@@ -236,7 +236,7 @@ static int outlines_meet_box(const Shape *s, LVec lo, LVec hi)
 /* The reference: does polygon p meet the cell box grown by `grow` per axis? */
 static int reference_overlap(const World *w, const Polygon *p, Vec3 lo, Vec3 hi, const ld grow[3])
 {
-    Shape s;
+    Outlines s;
     shape_of(w, p, &s);
     LVec l = { lo.x - grow[0], lo.y - grow[1], lo.z - grow[2] }, h = { hi.x + grow[0], hi.y + grow[1], hi.z + grow[2] };
     return s.triangle ? triangle_meets_box(s.points, l, h) : outlines_meet_box(&s, l, h);
@@ -379,7 +379,7 @@ static void sample_point(const Check *c, Vec3 q, Tally *t)
 
 static void sample_polygon(const Check *c, TestRng *rng, Tally *t)
 {
-    Shape s;
+    Outlines s;
     shape_of(c->w, &c->w->polygons[c->polygon], &s);
     Vec3 lo = outline_pt(&s, 0, 0), hi = lo;
     for (int k = 0; k < s.noutlines; k++)
@@ -445,7 +445,7 @@ static void check_grid(const World *w, const Grid *g, TestRng *rng, const char *
         for (size_t i = r.first[pi]; i < r.first[pi + 1]; i++)
             listed[r.pairs[i].cell] = 1;
         /* Every cell near the polygon's own box (from its points). */
-        Shape s;
+        Outlines s;
         shape_of(w, p, &s);
         Vec3 lo = outline_pt(&s, 0, 0), hi = lo;
         for (int k = 0; k < s.noutlines; k++)

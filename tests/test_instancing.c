@@ -271,7 +271,7 @@ static void one_scene(TestRng *rng, Totals *tot)
         if (!(v3_length(dir) > 0.0))
             continue;
         dir = v3_normalize(dir);
-        Hit none = { HIT_NONE, -1, 0.0, eye, -1 }, h1, hf;
+        Hit none = { HIT_NONE, -1, 0.0, eye, -1, 0 }, h1, hf;
         int got = trace_nearest(ray.ctx.tracer, eye, dir, HUGE_VAL, &none, &h1);
         int got_flat = trace_nearest(&flat, eye, dir, HUGE_VAL, &none, &hf);
         /* A ray aimed at a vertex or an edge meets it in one world and may

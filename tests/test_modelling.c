@@ -326,7 +326,7 @@ static void test_unsupported(void)
 {
     expect_error("#declare I = isosurface { function { x } }\n\nobject { I }", 3, 10,
                  "'isosurface' is not supported by hstrace (declared at t.pov:1)", "declared isosurface, used");
-    expect_error("sphere { 0, 1 }", 1, 1, "'sphere' is not supported by hstrace", "sphere");
+    expect_error("ovus { 1, 0.5 }", 1, 1, "'ovus' is not supported by hstrace", "ovus");
     expect_error("camera { fisheye }", 1, 10, "'fisheye' is not supported by hstrace", "fisheye camera");
     expect_error("camera { panoramic }", 1, 10, "'panoramic' is not supported by hstrace", "panoramic camera");
     expect_error("light_source { 0, 1 projected_through { box { 0, 1 } } }", 1, 21,

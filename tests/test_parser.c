@@ -193,7 +193,7 @@ static void test_directives(void)
     tap_ok(s && s->nobjects == 2 && near(s->objects[0]->u.box.corner2.x, 2), "#local at top level, #undef");
     scene_free(s);
 
-    s = parse("#macro Foo(a) sphere { a, 1 } #end\n#declare S = sphere { 0, 1 }\n"
+    s = parse("#macro Foo(a) ovus { a, 1 } #end\n#declare S = ovus { 1, 0.5 }\n"
               "#declare F = function { x * y }\n#declare A = array[3];\nbox { 0, 1 }\n");
     tap_ok(s && s->nobjects == 1, "unsupported declarations are parsed past");
     scene_free(s);
@@ -369,12 +369,12 @@ static void test_camera_lights(void)
                s->nobjects == 1 && s->objects[0]->kind == OBJ_UNION && s->objects[0]->u.csg.nchildren == 1,
            "light_source { L ... } and union { U ... } copy the declared light and union");
     scene_free(s);
-    expect_error("#declare S = sphere { 0, 1 }\nunion { S }\n", 2, 9, "'sphere' is not supported by hstrace (declared at t.pov:1)",
+    expect_error("#declare S = ovus { 1, 0.5 }\nunion { S }\n", 2, 9, "'ovus' is not supported by hstrace (declared at t.pov:1)",
                  "union { DeclaredSphere }: the error names the use and the declaration");
     /* but an unsupported float or vector after '{' is the object's own
      * first item: the unsupported object keyword is named first */
-    expect_error("#declare F = function { x }\n#declare V = <F(1, 2, 3), 0, 0>;\nsphere { V, 1 }\n", 3, 1,
-                 "'sphere' is not supported by hstrace", "sphere { UnsupportedVector, 1 }: the sphere is the error");
+    expect_error("#declare F = function { x }\n#declare V = <F(1, 2, 3), 0, 0>;\novus { V, 1 }\n", 3, 1,
+                 "'ovus' is not supported by hstrace", "ovus { UnsupportedVector, 1 }: the ovus is the error");
     s = parse("camera { orthographic location <0, 0, -10> look_at 0 }");
     tap_ok(s && s->camera.kind == CAMERA_ORTHOGRAPHIC && vnear(s->camera.right, 13.3, 0, 0) &&
                vnear(s->camera.up, 0, 10, 0),
@@ -477,8 +477,8 @@ static void test_macros(void)
     expect_error("#macro M(A) box { 0, A }\n", 1, 1, "#macro has no matching #end", "#macro without #end");
 
     /* unsupported things inside macros and arguments stay lazy */
-    s = parse("#macro Ball(R) sphere { 0, R } #end\n#declare B = Ball(1);\n#macro Id(X) X #end\n"
-              "#declare S = Id(sphere { 0, 1 });\nbox { 0, 1 }\n");
+    s = parse("#macro Ball(R) ovus { R, 0.5 } #end\n#declare B = Ball(1);\n#macro Id(X) X #end\n"
+              "#declare S = Id(ovus { 1, 0.5 });\nbox { 0, 1 }\n");
     tap_ok(s && s->nobjects == 1, "a macro declaring an unsupported object, and one as an argument, are parsed past");
     scene_free(s);
 
@@ -815,7 +815,7 @@ static void test_errors(void)
     expect_error("polygon foo", 1, 9, "expected '{' after 'polygon', found 'foo'", "missing brace");
     expect_error("box { 0, 1\n", 2, 1, "found the end of the file", "unclosed block");
     expect_error("box { 0, Nope }", 1, 10, "undeclared identifier 'Nope'", "unknown identifier");
-    expect_error("sphere { 0, 1 }", 1, 1, "'sphere' is not supported by hstrace", "unsupported object");
+    expect_error("ovus { 1, 0.5 }", 1, 1, "'ovus' is not supported by hstrace", "unsupported object");
     expect_error("light_source { 0, 1 looks_like { box { 0, 1 } } }", 1, 21, "'looks_like' is not supported",
                  "looks_like");
     {
@@ -950,11 +950,11 @@ static void test_errors(void)
     snprintf(main_file, sizeof main_file, "%s/main.pov", dir);
     snprintf(loop_a, sizeof loop_a, "%s/a.inc", dir);
     snprintf(loop_b, sizeof loop_b, "%s/b.inc", dir);
-    write_file(inc, "// shapes\n#declare Ball =\n  union { box { 0, 1 } sphere { 0, 1 } }\n#declare Plate = box { 0, 1 }\n");
+    write_file(inc, "// shapes\n#declare Ball =\n  union { box { 0, 1 } ovus { 1, 0.5 } }\n#declare Plate = box { 0, 1 }\n");
     write_file(main_file, "#include \"shapes_x.inc\"\nobject { Plate }\n  object { Ball }\n");
     Scene *s = parse_scene_file(main_file, &opts, &err);
     char want[400];
-    snprintf(want, sizeof want, "'sphere' is not supported by hstrace (declared at %s:3)", inc);
+    snprintf(want, sizeof want, "'ovus' is not supported by hstrace (declared at %s:3)", inc);
     tap_ok(!s && err.line == 3 && err.column == 12 && strcmp(err.message, want) == 0 && strstr(err.file, "main.pov"),
            "unsupported object from an include file: error at its use");
     if (s || strcmp(err.message, want) != 0)

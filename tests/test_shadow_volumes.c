@@ -247,7 +247,7 @@ static void check_cards(Scene *s, const CardProbe *probes, int nprobes, const ch
                 continue;
             }
             tracer_use_bvh(ctx.tracer, &bvh); /* as hstrace renders */
-            Hit eye = { HIT_NONE, -1, 0, w.camera.location, -1 }, h;
+            Hit eye = { HIT_NONE, -1, 0, w.camera.location, -1, 0 }, h;
             Vec3 dir = v3_normalize(v3_sub(pr->point, w.camera.location));
             if (!trace_nearest(ctx.tracer, w.camera.location, dir, HUGE_VAL, &eye, &h) || h.kind != HIT_POLYGON ||
                 h.index != 0 || v3_length(v3_sub(h.point, pr->point)) > 1e-9) {

@@ -315,6 +315,10 @@ typedef enum {
     OBJ_HEIGHT_FIELD,
     OBJ_BICUBIC_PATCH,
     OBJ_PRISM,
+    OBJ_SPHERE,          /* the analytic shapes: kept as they are, never made polygons */
+    OBJ_DISC,
+    OBJ_CONE,            /* also cylinder (equal radii) */
+    OBJ_TORUS,
 } ObjectKind;
 
 /* How a prism's outline is swept (POV-Ray's linear_sweep, conic_sweep). */
@@ -353,6 +357,13 @@ struct SceneObject {
      * object a photon target. */
     const ApproxNote *photons;
     unsigned no_shadow : 1, no_image : 1, no_reflection : 1, hollow : 1, inverse : 1, photon_target : 1;
+    /* A transform was written on it that POV-Ray's analytic shapes cannot
+     * fold into their own parameters: a matrix, a transform { } or a scale
+     * that is not uniform. A sphere so transformed (or inside a union so
+     * transformed) is POV-Ray's ellipsoid: intersected through its inverse
+     * transform rather than by a moved centre and radius. */
+    unsigned general_transform : 1;
+    unsigned sturm : 1;   /* `sturm`: POV-Ray's Sturm root solver for the polynomial shapes */
     int double_illuminate;
     /* Levels of unions from this object down (1: a union of other objects,
      * 0: not a union). The parser keeps it at MAX_NESTING (200) at most, so
@@ -380,6 +391,24 @@ struct SceneObject {
         struct {
             Vec3 corner1, corner2;
         } box;
+        struct {
+            Vec3 center;
+            double radius;
+        } sphere;
+        struct {
+            Vec3 center, normal; /* normal of unit length */
+            double radius, hole; /* hole: the inner radius, 0 for none */
+        } disc;
+        struct {
+            /* cone { base, base_radius, apex, apex_radius [open] };
+             * a cylinder's radii are equal */
+            Vec3 base, apex;
+            double base_radius, apex_radius;
+            int open;            /* no end caps */
+        } cone;
+        struct {
+            double major, minor;
+        } torus;
         struct {
             Vec3 normal; /* as written (not normalised) */
             double distance;

@@ -1,5 +1,5 @@
 /* Objects: polygon, triangle, smooth_triangle, mesh, mesh2, box, plane,
- * union and object{}, with their modifiers. Every object keeps its own
+ * sphere, disc, cylinder, cone, torus, union and object{}, with their modifiers. Every object keeps its own
  * transform, composed from the transforms written on it in order; a union's
  * children keep theirs (the engine applies child, then parent). */
 #include <math.h>
@@ -19,8 +19,9 @@ int gram_is_object_keyword(int kw)
     case KW_polygon: case KW_triangle: case KW_smooth_triangle: case KW_mesh: case KW_mesh2:
     case KW_box: case KW_plane: case KW_union: case KW_object:
     case KW_height_field: case KW_bicubic_patch: case KW_prism:
+    case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus:
     /* POV-Ray objects hstrace cannot render */
-    case KW_sphere: case KW_cylinder: case KW_cone: case KW_torus: case KW_disc: case KW_blob:
+    case KW_blob:
     case KW_lathe: case KW_sor: case KW_superellipsoid: case KW_sphere_sweep:
     case KW_text: case KW_julia_fractal:
     case KW_isosurface: case KW_parametric: case KW_poly: case KW_polynomial: case KW_cubic:
@@ -152,8 +153,13 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             return;
         }
         Token at = *t;
-        if (expr_transform_item(p, t, &o->transform))
+        if (expr_transform_item(p, t, &o->transform)) {
+            /* what POV-Ray's analytic shapes take into their own parameters
+             * (Translate, Rotate, a uniform Scale) and what they do not */
+            if (at.kw == KW_matrix || at.kw == KW_transform || !transform_is_similarity(&o->transform))
+                o->general_transform = 1;
             continue;
+        }
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_texture:
             apply_texture(p, o, gram_texture(p), &at);
@@ -187,7 +193,8 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_hollow: o->hollow = optional_bool(p) ? 1u : 0u; break;
         case KW_inverse: o->inverse = !o->inverse; break;
         case KW_double_illuminate: o->double_illuminate = 1; break;
-        case KW_sturm: case KW_split_union: skip_optional_float(p); break;
+        case KW_sturm: o->sturm = optional_bool(p) ? 1u : 0u; break;
+        case KW_split_union: skip_optional_float(p); break;
         case KW_hierarchy: /* POV-Ray's bounding inside a height field, mesh or CSG: no effect on the image */
             if (o->kind != OBJ_HEIGHT_FIELD && o->kind != OBJ_MESH && o->kind != OBJ_UNION)
                 tok_fail(p, at.pos, "Keyword 'hierarchy' cannot be used with this object (height fields, meshes and CSG take it).");
@@ -334,6 +341,82 @@ static SceneObject *parse_box(Parser *p, const Token *kw)
     expr_comma(p);
     o->u.box.corner2 = expr_vector(p);
     parse_object_mods(p, o, "box");
+    return o;
+}
+
+/* sphere { CENTER, RADIUS mods } (POV-Ray's Parse_Sphere). */
+static SceneObject *parse_sphere(Parser *p, const Token *kw)
+{
+    tok_begin_block(p, "sphere");
+    SceneObject *o = new_object(p, OBJ_SPHERE, kw);
+    o->u.sphere.center = expr_vector(p);
+    expr_comma(p);
+    o->u.sphere.radius = expr_float(p);
+    parse_object_mods(p, o, "sphere");
+    return o;
+}
+
+/* disc { CENTER, NORMAL, RADIUS [, HOLE_RADIUS] mods } (Parse_Disc). */
+static SceneObject *parse_disc(Parser *p, const Token *kw)
+{
+    tok_begin_block(p, "disc");
+    SceneObject *o = new_object(p, OBJ_DISC, kw);
+    o->u.disc.center = expr_vector(p);
+    expr_comma(p);
+    Token at = *tok_peek(p);
+    Vec3 n = expr_vector(p);
+    if (!(v3_length(n) > 0.0))
+        tok_fail(p, at.pos, "degenerate disc normal");
+    o->u.disc.normal = v3_normalize(n);
+    expr_comma(p);
+    o->u.disc.radius = expr_float(p);
+    expr_comma(p);
+    if (expr_starts_float(p, tok_peek(p)))
+        o->u.disc.hole = expr_float(p);
+    parse_object_mods(p, o, "disc");
+    return o;
+}
+
+/* cylinder { BASE, CAP, RADIUS [open] mods } and
+ * cone { BASE, BASE_RADIUS, CAP, CAP_RADIUS [open] mods } (Parse_Cylinder,
+ * Parse_Cone): one kind, a cylinder's radii equal. POV-Ray refuses a
+ * degenerate one (Compute_Cone_Data's error): so does hstrace. */
+static SceneObject *parse_cone(Parser *p, const Token *kw, int cylinder)
+{
+    const char *name = cylinder ? "cylinder" : "cone";
+    tok_begin_block(p, name);
+    SceneObject *o = new_object(p, OBJ_CONE, kw);
+    o->u.cone.base = expr_vector(p);
+    expr_comma(p);
+    if (!cylinder) {
+        o->u.cone.base_radius = expr_float(p);
+        expr_comma(p);
+    }
+    o->u.cone.apex = expr_vector(p);
+    expr_comma(p);
+    o->u.cone.apex_radius = expr_float(p);
+    if (cylinder)
+        o->u.cone.base_radius = o->u.cone.apex_radius;
+    if (!(v3_length(v3_sub(o->u.cone.apex, o->u.cone.base)) >= 1e-10))
+        tok_fail(p, kw->pos, "degenerate %s: its two ends are the same point", name);
+    Token *t = tok_peek(p);
+    if (t->type == TK_WORD && t->kw == KW_open) {
+        (void)tok_next(p);
+        o->u.cone.open = 1;
+    }
+    parse_object_mods(p, o, name);
+    return o;
+}
+
+/* torus { MAJOR, MINOR mods } (Parse_Torus). */
+static SceneObject *parse_torus(Parser *p, const Token *kw)
+{
+    tok_begin_block(p, "torus");
+    SceneObject *o = new_object(p, OBJ_TORUS, kw);
+    o->u.torus.major = expr_float(p);
+    expr_comma(p);
+    o->u.torus.minor = expr_float(p);
+    parse_object_mods(p, o, "torus");
     return o;
 }
 
@@ -924,6 +1007,11 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_height_field: *obj = gram_height_field(p, &kw); break;
     case KW_bicubic_patch: *obj = gram_bicubic_patch(p, &kw); break;
     case KW_prism: *obj = gram_prism(p, &kw); break;
+    case KW_sphere: *obj = parse_sphere(p, &kw); break;
+    case KW_disc: *obj = parse_disc(p, &kw); break;
+    case KW_cylinder: *obj = parse_cone(p, &kw, 1); break;
+    case KW_cone: *obj = parse_cone(p, &kw, 0); break;
+    case KW_torus: *obj = parse_torus(p, &kw); break;
     case KW_union: *obj = parse_union(p, &kw); break;
     case KW_object: parse_object_statement(p, &kw, obj, light); break;
     case KW_light_source: *light = gram_light_source(p, &kw); break;

@@ -1020,6 +1020,7 @@ typedef struct {
     BuildItem *items;
     int first, end;       /* items: polygons src_first + [0, npolygons), then the world's instances */
     int src_first, npolygons;
+    int shapes;           /* 1: the items are the world's shapes (Bvh.shapes) instead */
     double max_abs, margin;
     Box bounds, cbounds;
 } SetupJob;
@@ -1027,6 +1028,18 @@ typedef struct {
 /* Item i's box: a polygon's, or an instance's in world space. */
 static void item_box(const SetupJob *j, int i, Vec3 *lo, Vec3 *hi, uint32_t *item)
 {
+    if (j->shapes) {
+        /* a shape's box, held within +-1e30 (a huge or broken shape's may
+         * be infinite): the shapes report no crossing farther than
+         * POV-Ray's MAX_DISTANCE (1e7) from where a ray starts */
+        const Shape *s = &j->w->shapes[i];
+        *lo = v3(fmin(fmax(s->bbox_min.x, -1e30), 1e30), fmin(fmax(s->bbox_min.y, -1e30), 1e30),
+                 fmin(fmax(s->bbox_min.z, -1e30), 1e30));
+        *hi = v3(fmax(fmin(s->bbox_max.x, 1e30), -1e30), fmax(fmin(s->bbox_max.y, 1e30), -1e30),
+                 fmax(fmin(s->bbox_max.z, 1e30), -1e30));
+        *item = (uint32_t)i;
+        return;
+    }
     if (i < j->npolygons) {
         const Polygon *p = &j->w->polygons[j->src_first + i];
         *lo = p->bbox_min;
@@ -1089,7 +1102,14 @@ typedef struct {
     PackedPolygon *packed;
     int first, end;
     int prototype;        /* a prototype's polygons: materials are its instances', hidden by them */
+    int shapes;           /* the items are shapes (World.shapes) */
 } PrimJob;
+
+static uint32_t hide_bits(const Material *m)
+{
+    return (m->no_image ? HIDE_NO_IMAGE : 0u) | (m->no_reflection ? HIDE_NO_REFLECTION : 0u) |
+           (m->no_shadow ? HIDE_NO_SHADOW : 0u);
+}
 
 static void *make_prims(void *arg)
 {
@@ -1097,6 +1117,11 @@ static void *make_prims(void *arg)
     const World *w = j->w;
     for (int k = j->first; k < j->end; k++) {
         BvhPrim *pr = &j->prims[k];
+        if (j->shapes) {
+            pr->hide = hide_bits(&w->materials[w->shapes[j->order[k]].material]);
+            pr->packed = 0u;
+            continue;
+        }
         if (j->order[k] & BVH_INSTANCE) { /* an instance: its own walk hides what it hides */
             pr->hide = 0u;
             pr->packed = 0u;
@@ -1106,9 +1131,7 @@ static void *make_prims(void *arg)
         if (j->prototype) {
             pr->hide = 0u;
         } else {
-            const Material *m = &w->materials[p->material];
-            pr->hide = (m->no_image ? HIDE_NO_IMAGE : 0u) | (m->no_reflection ? HIDE_NO_REFLECTION : 0u) |
-                       (m->no_shadow ? HIDE_NO_SHADOW : 0u);
+            pr->hide = hide_bits(&w->materials[p->material]);
         }
         pr->packed = j->packed ? (uint32_t)polygon_pack(w, p, &j->packed[k]) : 0u;
     }
@@ -1119,13 +1142,14 @@ static void *make_prims(void *arg)
 #define SETUP_PER_THREAD_MIN 50000
 
 /* The hierarchy over polygons [src_first, src_first + npolygons) of w and,
- * with `instances`, the world's instances (the top level); rays start
- * within origins_max_abs of the origin, in the space of the polygons. */
-static int build_bvh_over(Bvh *b, const World *w, int src_first, int npolygons, int instances, double origins_max_abs,
-                          int threads, int plain)
+ * with `instances`, the world's instances (the top level), or with
+ * `shapes` over the world's shapes alone (Bvh.shapes); rays start within
+ * origins_max_abs of the origin, in the space of the polygons. */
+static int build_bvh_over(Bvh *b, const World *w, int src_first, int npolygons, int instances, int shapes,
+                          double origins_max_abs, int threads, int plain)
 {
     memset(b, 0, sizeof *b);
-    int n = npolygons + (instances ? w->ninstances : 0);
+    int n = shapes ? w->nshapes : npolygons + (instances ? w->ninstances : 0);
     Builder bd;
     memset(&bd, 0, sizeof bd);
     threads = threads > 1 ? threads : 1;
@@ -1147,7 +1171,8 @@ static int build_bvh_over(Bvh *b, const World *w, int src_first, int npolygons, 
     int nj = parallel_jobs(n, SETUP_PER_THREAD_MIN, threads);
     double max_abs = 0.0;
     for (int k = 0; k < nj; k++) {
-        jobs[k] = (SetupJob){ .w = w, .items = bd.items, .src_first = src_first, .npolygons = npolygons };
+        jobs[k] = (SetupJob){ .w = w, .items = bd.items, .src_first = src_first, .npolygons = npolygons,
+                              .shapes = shapes };
         jobs[k].first = (int)((long long)n * k / nj);
         jobs[k].end = (int)((long long)n * (k + 1) / nj);
     }
@@ -1232,8 +1257,9 @@ static int build_bvh_over(Bvh *b, const World *w, int src_first, int npolygons, 
         return -1;
     }
     BvhPrim *prims = big_malloc(sizeof *prims * (size_t)(n > 0 ? n : 1));
-    PackedPolygon *packed = n <= BVH_PACK_MAX ? big_malloc(sizeof *packed * (size_t)(n > 0 ? n : 1)) : NULL;
-    if (!prims || (n <= BVH_PACK_MAX && !packed)) {
+    const int pack = n <= BVH_PACK_MAX && !shapes;
+    PackedPolygon *packed = pack ? big_malloc(sizeof *packed * (size_t)(n > 0 ? n : 1)) : NULL;
+    if (!prims || (pack && !packed)) {
         free(prims);
         free(packed);
         free(order);
@@ -1246,7 +1272,7 @@ static int build_bvh_over(Bvh *b, const World *w, int src_first, int npolygons, 
     nj = parallel_jobs(n, SETUP_PER_THREAD_MIN, threads);
     for (int k = 0; k < nj; k++)
         pj[k] = (PrimJob){ w, order, prims, packed, (int)((long long)n * k / nj), (int)((long long)n * (k + 1) / nj),
-                           !instances };
+                           !instances, shapes };
     parallel_run(nj, make_prims, pj, sizeof pj[0]);
     b->prims = prims;
     b->packed = packed;
@@ -1293,8 +1319,15 @@ static double prototype_origins_max_abs(const World *w, int k)
 
 static int build_bvh(Bvh *b, const World *w, int threads, int plain)
 {
-    if (build_bvh_over(b, w, 0, w->npolygons, 1, world_origins_max_abs(w), threads, plain))
+    if (build_bvh_over(b, w, 0, w->npolygons, 1, 0, world_origins_max_abs(w), threads, plain))
         return -1;
+    if (w->nshapes > 0) {
+        b->shapes = calloc(1, sizeof *b->shapes);
+        if (!b->shapes || build_bvh_over(b->shapes, w, 0, 0, 0, 1, world_origins_max_abs(w), threads, plain)) {
+            bvh_free(b);
+            return -1;
+        }
+    }
     if (w->nprototypes == 0)
         return 0;
     b->protos = calloc((size_t)w->nprototypes, sizeof *b->protos);
@@ -1305,7 +1338,7 @@ static int build_bvh(Bvh *b, const World *w, int threads, int plain)
     b->nprotos = w->nprototypes;
     for (int k = 0; k < w->nprototypes; k++) {
         const Prototype *pr = &w->prototypes[k];
-        if (build_bvh_over(&b->protos[k], w, pr->first_polygon, pr->npolygons, 0, prototype_origins_max_abs(w, k),
+        if (build_bvh_over(&b->protos[k], w, pr->first_polygon, pr->npolygons, 0, 0, prototype_origins_max_abs(w, k),
                            threads, plain)) {
             bvh_free(b);
             return -1;
@@ -1320,6 +1353,9 @@ int bvh_build_plain(Bvh *b, const World *w, int threads) { return build_bvh(b, w
 
 void bvh_free(Bvh *b)
 {
+    if (b->shapes)
+        bvh_free(b->shapes);
+    free(b->shapes);
     for (int k = 0; k < b->nprotos; k++)
         bvh_free(&b->protos[k]);
     free(b->protos);
@@ -1376,4 +1412,42 @@ unsigned bvh_node_hits_plain(const BvhNode *n, const BvhRay *r, double t0, doubl
             mask |= 1u << k;
     }
     return mask;
+}
+
+int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit, void *user,
+                    uint64_t *nodes)
+{
+    if (!b || b->nnodes == 0)
+        return 0;
+    BvhRay br;
+    bvh_ray_scalar(&br, org, dir);
+    uint32_t stack[BVH_STACK];
+    double enter_at[BVH_STACK];
+    int sp = 0;
+    stack[sp] = 0;
+    enter_at[sp++] = 0.0;
+    while (sp > 0) {
+        sp--;
+        uint32_t c = stack[sp];
+        /* entered beyond what the visits left of the ray: passed over */
+        if (enter_at[sp] > *tmax * BVH_GROW)
+            continue;
+        if (!bvh_is_leaf(c)) {
+            const BvhNode *n = &b->nodes[c];
+            double enter[BVH_WIDTH];
+            ++*nodes;
+            unsigned mask = bvh_node_hits_plain(n, &br, 0.0, *tmax, enter);
+            for (int k = BVH_WIDTH - 1; k >= 0; k--)
+                if ((mask & (1u << k)) && n->child[k] != BVH_EMPTY) {
+                    stack[sp] = n->child[k];
+                    enter_at[sp++] = enter[k];
+                }
+            continue;
+        }
+        uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
+        for (uint32_t k = first; k < end; k++)
+            if (!(b->prims[k].hide & hide) && visit(user, (int)b->items[k], tmax))
+                return 1;
+    }
+    return 0;
 }

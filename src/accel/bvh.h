@@ -88,7 +88,22 @@ struct Bvh {
      * leaf holds more (a degenerate split) its box is tested before its
      * walk. */
     float *instance_box;
+    /* The top level's: a hierarchy of its own over the world's shapes
+     * (World.shapes; its items are their indices, its prims their
+     * materials' HIDE_* bits), or NULL: none. The shapes are apart from
+     * the polygons because every shadow method hands them to the shadow
+     * ray's own test (shadow.h), while its own structures hold polygons. */
+    Bvh *shapes;
 };
+
+/* Calls visit(user, shape) for every shape of hierarchy b (Bvh.shapes)
+ * whose box the ray org + t dir meets for some t in [0, tmax]
+ * (conservatively), its material not hiding it by `hide` (HIDE_*), until
+ * visit returns 1 (then 1); *nodes counts the boxes tested. visit may
+ * lower *tmax (a nearest-hit query: farther boxes are then passed over). */
+typedef int (*BvhShapeVisitor)(void *user, int shape, double *tmax);
+int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit, void *user,
+                    uint64_t *nodes);
 
 /* The exact test of the polygon leaf item k holds (intersect.h): on its
  * packed copy where there is one, else the polygon's own test; the same

@@ -359,6 +359,36 @@ static void record_cells(Tracer *tr, Vec3 org, Vec3 dir, double plane_t, const H
                          inside_box(tr->record_min, tr->record_max, org);
 }
 
+/* The nearest shape so far along a ray (trace_nearest): `best` starts at
+ * the nearest plane's distance, which a shape must beat (the plane wins
+ * ties, as with polygons); between shapes at one distance, the first in
+ * the world's order, whatever order a walk meets them in. */
+typedef struct {
+    Tracer *tr;
+    Vec3 org, dir;
+    double best;
+    int shape, part;
+} NearestShape;
+
+static int nearer_shape(void *user, int i, double *tmax)
+{
+    NearestShape *ns = user;
+    const Shape *s = &ns->tr->world->shapes[i];
+    double limit = ns->shape >= 0 && i < ns->shape ? nextafter(ns->best, HUGE_VAL) : ns->best;
+    if (!shape_box_hit(s, ns->org, ns->dir, limit))
+        return 0;
+    ns->tr->stats.shape_tests++;
+    int part;
+    double t = shape_nearest(s, ns->org, ns->dir, limit, &part);
+    if (t > 0.0 && (t < ns->best || i < ns->shape)) {
+        ns->best = t;
+        ns->shape = i;
+        ns->part = part;
+        *tmax = t;
+    }
+    return 0;
+}
+
 int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit)
 {
     const World *w = tr->world;
@@ -384,6 +414,27 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
         }
     }
 
+    /* The shapes next, under the same bound: a shape nearer than every
+     * plane bounds the polygon query in turn. */
+    NearestShape ns = { tr, org, dir, plane_t, -1, 0 };
+    if (w->nshapes > 0) {
+        if (tr->bvh && tr->bvh->shapes) {
+            double limit = plane_t;
+            bvh_shapes_walk(tr->bvh->shapes, org, dir, &limit, tr->hide, nearer_shape, &ns, &tr->stats.nodes_visited);
+        } else {
+            for (int i = 0; i < w->nshapes; i++) {
+                double limit = ns.best;
+                if (!(tr->hide && material_hidden(&w->materials[w->shapes[i].material], tr->hide)))
+                    nearer_shape(&ns, i, &limit);
+            }
+        }
+        if (ns.shape >= 0) {
+            plane_t = ns.best;
+            plane = -1;
+        }
+    }
+    const int shape = ns.shape, shape_part = ns.part;
+
     double best = HUGE_VAL;
     int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
     if (tr->bvh && tr->avx2)
@@ -393,13 +444,14 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     else
         nearest_in_grid(tr, org, dir, tmin, plane_t, exclude, hit, &best);
     if (hit->kind == HIT_NONE) {
-        if (plane < 0) {
+        if (plane < 0 && shape < 0) {
             if (tr->segment_cells)
                 tr->segment_in_box = 0;
             return 0;
         }
-        hit->kind = HIT_PLANE;
-        hit->index = plane;
+        hit->kind = shape >= 0 ? HIT_SHAPE : HIT_PLANE;
+        hit->index = shape >= 0 ? shape : plane;
+        hit->part = shape_part;
         best = plane_t;
     } else {
         tr->stats.polygon_hits++;

@@ -11,16 +11,18 @@
 #include "instance.h"
 #include "world.h"
 
-/* What a surface hit is: a grid polygon or an infinite plane. */
-typedef enum { HIT_NONE, HIT_POLYGON, HIT_PLANE } HitKind;
+/* What a surface hit is: a grid polygon, an infinite plane or an analytic
+ * shape (World.shapes). */
+typedef enum { HIT_NONE, HIT_POLYGON, HIT_PLANE, HIT_SHAPE } HitKind;
 
 typedef struct {
     HitKind kind;
-    int index;          /* polygon id (instance.h: a world polygon's index, or an instance's polygon) or plane index */
+    int index;          /* polygon id (instance.h: a world polygon's index, or an instance's polygon), plane or shape index */
     double t;
     Vec3 point;
     int instance;       /* the instance of an instance's polygon as the query found it (a hint:
                          * world_polygon_hinted checks it; last, so that {kind, index, t, point} sets none) */
+    int part;           /* a shape's: which part of it (shape.h's SHAPE_SIDE ...) */
 } Hit;
 
 /* (HIDE_NO_IMAGE, HIDE_NO_REFLECTION and HIDE_NO_SHADOW: bvh.h) */
@@ -111,8 +113,10 @@ static inline double trace_min_distance(Vec3 org)
 }
 
 /* Nearest hit along org + t*dir, t in (min distance, tmax); `from` is the
- * surface the segment starts on (excluded, as the paper's bucket rule says),
- * kind HIT_NONE for the camera. */
+ * surface the segment starts on (excluded, as the paper's bucket rule says,
+ * when it is a polygon or plane; a shape is not: as in POV-Ray its own
+ * depth tolerance keeps the ray off its start, and a ray can meet the
+ * far side of the sphere it leaves), kind HIT_NONE for the camera. */
 int trace_nearest(Tracer *t, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit);
 
 /* Every polygon a segment meets, for the shadow ray: visit(user, polygon, t)
@@ -141,7 +145,15 @@ int trace_point_touches_other(Tracer *t, const Hit *hit, double tol);
 static inline int hit_material(const World *w, const Hit *h)
 {
     return h->kind == HIT_POLYGON ? world_polygon_material_hinted(w, h->index, h->instance)
+         : h->kind == HIT_SHAPE   ? w->shapes[h->index].material
                                   : w->planes[h->index].material;
+}
+
+/* The surface a hit lies on as the material code names it (pigment.h's
+ * surface ids): a polygon's id, -1 for a plane, a shape's id. */
+static inline int hit_surface(const Hit *h)
+{
+    return h->kind == HIT_POLYGON ? h->index : h->kind == HIT_SHAPE ? surface_of_shape(h->index) : -1;
 }
 
 #endif

@@ -149,3 +149,18 @@ Vec3 transform_normal(const Transform *t, Vec3 n)
               n.x * v[1][0] + n.y * v[1][1] + n.z * v[1][2],
               n.x * v[2][0] + n.y * v[2][1] + n.z * v[2][2]);
 }
+
+static double row_dot(const Transform *t, int i, int j)
+{
+    return t->m[i][0] * t->m[j][0] + t->m[i][1] * t->m[j][1] + t->m[i][2] * t->m[j][2];
+}
+
+int transform_is_similarity(const Transform *t)
+{
+    double l0 = row_dot(t, 0, 0), l1 = row_dot(t, 1, 1), l2 = row_dot(t, 2, 2);
+    double tol = 1e-12 * (l0 + l1 + l2);
+    return fabs(l0 - l1) <= tol && fabs(l0 - l2) <= tol && fabs(row_dot(t, 0, 1)) <= tol &&
+           fabs(row_dot(t, 0, 2)) <= tol && fabs(row_dot(t, 1, 2)) <= tol;
+}
+
+double transform_similarity_scale(const Transform *t) { return sqrt(row_dot(t, 0, 0)); }

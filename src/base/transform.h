@@ -21,6 +21,12 @@ int transform_matrix(Transform *t, const double v[12]);
 /* t = t followed by u (u applied after t). */
 void transform_compose(Transform *t, const Transform *u);
 int transform_is_identity(const Transform *t);
+/* 1 when t's linear part is a rotation (or mirror) times one scale factor:
+ * rows orthogonal and of one length, to rounding. Such a transform keeps a
+ * sphere a sphere. */
+int transform_is_similarity(const Transform *t);
+/* The scale factor of a similarity: the length of its linear part's rows. */
+double transform_similarity_scale(const Transform *t);
 
 Vec3 transform_point(const Transform *t, Vec3 p);
 Vec3 transform_direction(const Transform *t, Vec3 d);

@@ -317,6 +317,7 @@ static int prepare_shadows(Frame *f, const Options *o, int distributed)
     r->nproto_polygons = f->world.nproto_polygons;
     r->ninstanced_polygons = f->world.nids - f->world.npolygons;
     r->nplanes = f->world.nplanes;
+    r->nshapes = f->world.nshapes;
     r->nlights = f->world.nlights;
     return EXIT_OK;
 }

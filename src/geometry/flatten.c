@@ -34,7 +34,7 @@ typedef struct {
 
 typedef struct {
     World *w;
-    int cap_polygons, cap_points, cap_outlines, cap_outline_boxes, cap_normals, cap_planes, cap_materials, cap_uvs;
+    int cap_polygons, cap_points, cap_outlines, cap_outline_boxes, cap_normals, cap_planes, cap_shapes, cap_materials, cap_uvs;
     int cap_vertex_materials;
     int cap_maps, cap_map_entries;
     /* The texture_maps built so far, by their entries (a hash set of the
@@ -90,6 +90,10 @@ typedef struct {
     const SceneTexture *texture;
     const Interior *interior;
     int no_shadow, no_image, no_reflection, double_illuminate, hollow;
+    /* inverse: POV-Ray's Invert, passed down a union to its children;
+     * general_transform: some transform on the way down is one a shape
+     * cannot fold into its parameters (SceneObject.general_transform) */
+    int inverse, general_transform;
     const void *top_object; /* the top-level object: owner of the default interior */
     Transform texture_space; /* the texture's space to world (SceneObject.texture_bind) */
 } Inherited;
@@ -837,6 +841,138 @@ static int flatten_plane(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+/* A sphere as POV-Ray keeps it: while every transform on the way to world
+ * is a translation, rotation or uniform scale, its centre and radius are
+ * moved (Sphere::Translate, Rotate, Scale); after any other, it is an
+ * ellipsoid: the sphere as written, reached through its transform. */
+static int flatten_sphere(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    World *w = b->w;
+    if (GROW(b, shapes, cap_shapes, w->nshapes))
+        return -1;
+    Shape *s = &w->shapes[w->nshapes++];
+    memset(s, 0, sizeof *s);
+    s->kind = SHAPE_SPHERE;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->to_world = in->transform;
+    s->transformed = in->general_transform || !transform_is_similarity(&in->transform);
+    s->u.sphere.own_center = o->u.sphere.center;
+    if (s->transformed) {
+        s->u.sphere.center = o->u.sphere.center;
+        s->u.sphere.radius = o->u.sphere.radius;
+    } else {
+        s->u.sphere.center = transform_point(&in->transform, o->u.sphere.center);
+        s->u.sphere.radius = o->u.sphere.radius * transform_similarity_scale(&in->transform);
+    }
+    shape_compute_bounds(s);
+    w->bounds_min = v3_min(w->bounds_min, s->bbox_min);
+    w->bounds_max = v3_max(w->bounds_max, s->bbox_max);
+    return 0;
+}
+
+/* A new shape of the world, placed by `frame` (its own space to the
+ * object's), then by the object's transforms. */
+static Shape *add_shape(Builder *b, ShapeKind kind, const Inherited *in, const Transform *frame, int material)
+{
+    World *w = b->w;
+    if (GROW(b, shapes, cap_shapes, w->nshapes))
+        return NULL;
+    Shape *s = &w->shapes[w->nshapes++];
+    memset(s, 0, sizeof *s);
+    s->kind = kind;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->transformed = 1;
+    s->to_world = *frame;
+    transform_compose(&s->to_world, &in->transform);
+    return s;
+}
+
+static void shape_placed(World *w, Shape *s)
+{
+    shape_compute_bounds(s);
+    w->bounds_min = v3_min(w->bounds_min, s->bbox_min);
+    w->bounds_max = v3_max(w->bounds_max, s->bbox_max);
+}
+
+/* A disc: the unit disc of its own frame (Disc::Compute_Disc), its
+ * normal carried through every transform (Disc::Transform). */
+static int flatten_disc(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    shape_coordinate_frame(&frame, o->u.disc.center, o->u.disc.normal, 1.0, 1.0);
+    Shape *s = add_shape(b, SHAPE_DISC, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.disc.outer2 = o->u.disc.radius * o->u.disc.radius;
+    s->u.disc.inner2 = o->u.disc.hole * o->u.disc.hole;
+    s->u.disc.normal = v3_normalize(transform_normal(&in->transform, o->u.disc.normal));
+    shape_placed(b->w, s);
+    return 0;
+}
+
+/* A cone or cylinder in POV-Ray's canonical space (Compute_Cone_Data,
+ * Compute_Cylinder_Data): the wider end at z = 1; ends of radii within
+ * EPSILON, or a cone too slender to tell from one, make a cylinder. */
+static int flatten_cone(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    const double epsilon = 1e-10; /* POV-Ray's EPSILON */
+    Vec3 base = o->u.cone.base, apex = o->u.cone.apex;
+    double base_r = o->u.cone.base_radius, apex_r = o->u.cone.apex_radius;
+    Vec3 axis = v3_sub(apex, base);
+    double len = v3_length(axis);
+    axis = v3_scale(axis, 1.0 / len); /* the parser refused a degenerate one */
+    Transform frame;
+    int cylinder = fabs(apex_r - base_r) < epsilon;
+    double dist = 0.0;
+    if (!cylinder) {
+        if (apex_r < base_r) {
+            Vec3 v = base;
+            base = apex;
+            apex = v;
+            double r = base_r;
+            base_r = apex_r;
+            apex_r = r;
+            axis = v3_neg(axis);
+        }
+        double tip = base_r * len / (apex_r - base_r); /* from the base to the cone's tip */
+        double total = tip + len;
+        if ((apex_r - base_r) * len / total < epsilon) {
+            cylinder = 1;
+        } else {
+            dist = tip / total;
+            shape_coordinate_frame(&frame, v3_sub(base, v3_scale(axis, tip)), axis, apex_r, total);
+        }
+    }
+    if (cylinder)
+        shape_coordinate_frame(&frame, base, axis, apex_r, len);
+    Shape *s = add_shape(b, SHAPE_CONE, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.cone.cylinder = cylinder;
+    s->u.cone.closed = !o->u.cone.open;
+    s->u.cone.dist = dist;
+    shape_placed(b->w, s);
+    return 0;
+}
+
+/* A torus about its own y axis, carried by every transform (POV-Ray's
+ * Torus keeps its radii and a transform). */
+static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_TORUS, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.torus.major = o->u.torus.major;
+    s->u.torus.minor = o->u.torus.minor;
+    s->u.torus.sturm = o->sturm;
+    shape_placed(b->w, s);
+    return 0;
+}
+
 /* ---- instancing: a mesh placed two or more times, kept once ------------- */
 
 /* The fewest faces a shared mesh is instanced with: below, its polygons
@@ -1100,6 +1236,8 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
     in.no_reflection |= o->no_reflection;
     in.double_illuminate |= o->double_illuminate;
     in.hollow |= o->hollow;
+    in.inverse ^= o->inverse;
+    in.general_transform |= o->general_transform;
 
     /* The clock read every 1024 objects: a few microseconds in ten thousands. */
     if (b->deadline > 0.0 && (++b->objects & 1023) == 0 && clock_wall() > b->deadline) {
@@ -1122,6 +1260,10 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
     case OBJ_MESH: return b->instancing ? instance_mesh(b, o, &in, material) : flatten_mesh(b, o, &in, material);
     case OBJ_BOX: return flatten_box(b, o, &in, material);
     case OBJ_PLANE: return flatten_plane(b, o, &in, material);
+    case OBJ_SPHERE: return flatten_sphere(b, o, &in, material);
+    case OBJ_DISC: return flatten_disc(b, o, &in, material);
+    case OBJ_CONE: return flatten_cone(b, o, &in, material);
+    case OBJ_TORUS: return flatten_torus(b, o, &in, material);
     case OBJ_UNION: break;
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
         return flatten_planar_shape(b, o, &in, material);
@@ -1324,6 +1466,7 @@ void world_free(World *w)
         free(w->sky->pigments);
     free(w->sky);
     free(w->planes);
+    free(w->shapes);
     free(w->materials);
     free(w->maps);
     free(w->map_entries);

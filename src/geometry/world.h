@@ -6,6 +6,7 @@
 #define HST_WORLD_H
 
 #include "scene.h"
+#include "shape.h"
 #include "vecmath.h"
 
 typedef struct {
@@ -150,6 +151,12 @@ typedef struct {
     Vec3 bbox_min, bbox_max; /* of its polygons, in world space */
 } Instance;
 
+/* The material code names the surface a point lies on by one int (the
+ * surface id): a polygon's id (instance.h), -1 for an infinite plane, and
+ * shape k as surface_of_shape(k), below -1. */
+static inline int surface_of_shape(int shape) { return -2 - shape; }
+static inline int surface_shape(int surface) { return -2 - surface; }
+
 /* Whether a polygon's outlines have boxes (World.outline_box): when it has
  * holes, or one outline of 5 points or more; a box costs three of the
  * crossing count's projections, more than a quad's whole count saves. */
@@ -175,6 +182,11 @@ typedef struct {
     int *vertex_materials; /* per face with a texture per vertex, its 3 materials (plain textures) */
     int nplanes;
     InfinitePlane *planes;
+    /* The analytic shapes (shape.h): spheres ..., each as POV-Ray keeps
+     * it, never made polygons. A hit on one is a HIT_SHAPE; materials and
+     * flags as a polygon's. */
+    int nshapes;
+    Shape *shapes;
     int nmaterials;
     Material *materials;
     int nmaps;
@@ -209,7 +221,7 @@ typedef struct {
     double adc_bailout;
     int noise_generator;  /* of patterns that name none (scene_noise_generator) */
     int number_of_waves;  /* global_settings: the sources of waves and ripples normals */
-    Vec3 bounds_min, bounds_max; /* of all polygons; empty when min > max */
+    Vec3 bounds_min, bounds_max; /* of all polygons and shapes; empty when min > max */
     int ndegenerate;      /* polygons dropped at build: no area, up to rounding */
     /* Instances (instance.h); none unless the build was asked to make
      * them (WorldLimits.instance_meshes). npolygons counts the world-space

@@ -83,6 +83,12 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
     case OBJ_PLANE:
         b += sizeof(InfinitePlane);
         break;
+    case OBJ_SPHERE:
+    case OBJ_DISC:
+    case OBJ_CONE:
+    case OBJ_TORUS:
+        b += sizeof(Shape) + HIERARCHY_BYTES_PER_POLYGON; /* an item of the shapes' own hierarchy */
+        break;
     case OBJ_UNION:
         break;
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM: {

@@ -500,6 +500,8 @@ static void first_three_weights(const World *w, const Polygon *p, Vec3 q, double
 
 Vec3 surface_uv(const World *w, int polygon, Vec3 world_point)
 {
+    if (polygon < -1)
+        return shape_uv(&w->shapes[surface_shape(polygon)], world_point);
     if (polygon >= 0 && w->polygons[polygon].uv >= 0) {
         const Polygon *p = &w->polygons[polygon];
         const Vec3 *uv = &w->uvs[p->uv];

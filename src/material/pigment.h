@@ -41,9 +41,10 @@ int material_map_number(const Pigment *pig, Vec3 p, int count);
 /* The colour at a point in pattern space (solid pigments: their colour). */
 Colour pigment_at(const Pigment *pig, Vec3 p);
 
-/* The uv coordinates (u, v, 0) of a world-space point on a polygon (its
- * mesh uv vectors or box mapping), or, for a polygon without them (-1) and
- * for planes, POV-Ray's default: the point's world x and y. */
+/* The uv coordinates (u, v, 0) of a world-space point on a surface (a
+ * surface id, world.h): a polygon's mesh uv vectors or box mapping, a
+ * shape's own mapping (shape_uv), or, for a polygon without them and for
+ * planes (-1), POV-Ray's default: the point's world x and y. */
 Vec3 surface_uv(const World *w, int polygon, Vec3 world_point);
 
 /* A material's colour at a world-space point on polygon `polygon` (-1: an

@@ -176,8 +176,8 @@ void stats_print(FILE *f, const StatsReport *r)
     double total = r->parse_seconds + r->preprocess_seconds + s->shadow.shadow_seconds + others;
     fprintf(f, "hstrace statistics for %s (%dx%d, %d thread%s, shadows: %s)\n", r->scene, r->width, r->height,
             r->threads, r->threads == 1 ? "" : "s", r->shadow_method);
-    fprintf(f, "  scene       %d polygons (%d degenerate dropped), %d infinite planes, %d lights\n", r->npolygons,
-            r->ndegenerate, r->nplanes, r->nlights);
+    fprintf(f, "  scene       %d polygons (%d degenerate dropped), %d infinite planes, %d curved objects, %d lights\n",
+            r->npolygons, r->ndegenerate, r->nplanes, r->nshapes, r->nlights);
     if (r->ninstances > 0)
         fprintf(f, "  instances   %d placements of %d meshes: %d polygons kept once place %d more\n", r->ninstances,
                 r->nprototypes, r->nproto_polygons, r->ninstanced_polygons);
@@ -340,8 +340,8 @@ int stats_write_json(const char *path, const StatsReport *r, char *err, int errl
         fprintf(f, "null");
     fprintf(f, ",\n  \"shadow_method\": \"%s\",\n  \"width\": %d,\n  \"height\": %d,\n  \"threads\": %d,\n",
             r->shadow_method, r->width, r->height, r->threads);
-    fprintf(f, "  \"polygons\": %d,\n  \"degenerate_dropped\": %d,\n  \"planes\": %d,\n  \"lights\": %d,\n", r->npolygons,
-            r->ndegenerate, r->nplanes, r->nlights);
+    fprintf(f, "  \"polygons\": %d,\n  \"degenerate_dropped\": %d,\n  \"planes\": %d,\n  \"shapes\": %d,\n  \"lights\": %d,\n",
+            r->npolygons, r->ndegenerate, r->nplanes, r->nshapes, r->nlights);
     fprintf(f,
             "  \"instances\": %d,\n  \"prototypes\": %d,\n  \"prototype_polygons\": %d,\n  \"instanced_polygons\": %d,\n",
             r->ninstances, r->nprototypes, r->nproto_polygons, r->ninstanced_polygons);

@@ -32,7 +32,7 @@ typedef struct {
     int grid[3];
     uint64_t grid_registrations;
     int grid_registered;              /* the polygons registered in its cells (grid_register) */
-    int npolygons, nplanes, nlights;
+    int npolygons, nplanes, nshapes, nlights;
     int ndegenerate;             /* polygons dropped at build: no area up to rounding */
     /* Instancing (instance.h): placements kept as instances, the meshes
      * they place (prototypes) and those meshes' polygons, kept once, and

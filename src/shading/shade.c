@@ -484,6 +484,15 @@ static void interior_push(InteriorList *l, const Material *m)
     l->ior[l->n++] = m->ior;
 }
 
+void shade_camera_interiors(const World *w, Vec3 org, InteriorList *inside)
+{
+    for (int i = 0; i < w->nshapes; i++) {
+        const Material *m = &w->materials[w->shapes[i].material];
+        if (shape_inside(&w->shapes[i], org) && interior_index(inside, m->interior_key) < 0)
+            interior_push(inside, m);
+    }
+}
+
 /* The ior ratio at this surface, and the interior list beyond it
  * (POV-Ray's ComputeRefraction bookkeeping; the atmosphere has ior 1). */
 static double refraction_ratio(const InteriorList *inside, const Material *m, InteriorList *beyond)
@@ -793,6 +802,14 @@ static void lit_texture(LitTexture *t, const SurfaceTexture *s)
  * a mesh face's with a texture per vertex: with the three, pigment.h). Apart
  * (never inlined), so that plain textures' hits, which recurse through
  * shade_hit as deep as the ray tree, keep a small stack frame. */
+/* The surface id (world.h) the material code looks up uv coordinates by. */
+static int uv_surface(const World *w, const Hit *hit)
+{
+    return hit->kind == HIT_POLYGON ? world_uv_polygon(w, hit->index)
+         : hit->kind == HIT_SHAPE   ? surface_of_shape(hit->index)
+                                    : -1;
+}
+
 __attribute__((noinline)) static void shade_map_hit(ShadeContext *ctx, const Ray *ray, const Hit *hit,
                                                     const Segment *seg, const Material *m, Vec3 raw, Vec3 normal,
                                                     double weight, int level, Radiance *out)
@@ -800,7 +817,7 @@ __attribute__((noinline)) static void shade_map_hit(ShadeContext *ctx, const Ray
     const World *w = ctx->tracer.world;
     SurfaceTexture found[MAX_SURFACE_TEXTURES];
     LitTexture lit[MAX_SURFACE_TEXTURES];
-    int n = material_textures_normals_at(w, m, hit->kind == HIT_POLYGON ? world_uv_polygon(w, hit->index) : -1, hit->point, normal,
+    int n = material_textures_normals_at(w, m, uv_surface(w, hit), hit->point, normal,
                                          ctx->quality.normal, found);
     for (int i = 0; i < n; i++)
         lit_texture(&lit[i], &found[i]);
@@ -814,6 +831,7 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
     const Hit hit = *hitp;
     const Material *m = &w->materials[hit_material(w, &hit)];
     Vec3 raw = hit.kind == HIT_POLYGON ? world_polygon_shading_normal(w, hit.index, hit.instance, hit.point)
+             : hit.kind == HIT_SHAPE   ? shape_normal(&w->shapes[hit.index], hit.point, hit.part)
                                        : w->planes[hit.index].normal;
     if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
@@ -826,7 +844,7 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
         return;
     }
     const SurfaceTexture own =
-        material_plain_texture_at(w, m, hit.kind == HIT_POLYGON ? world_uv_polygon(w, hit.index) : -1, hit.point, raw, ctx->quality.normal);
+        material_plain_texture_at(w, m, uv_surface(w, &hit), hit.point, raw, ctx->quality.normal);
     if (ctx->aov && ctx->depth == 1)
         aov_record_hit(ctx->aov, hit.t, hit.point, own.normal);
     LitTexture lit;

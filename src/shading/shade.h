@@ -78,6 +78,12 @@ typedef struct {
     unsigned not_image : 1, reflection : 1;
 } Ray;
 
+/* The interiors a camera ray starts inside: those of the shapes whose
+ * inside holds its origin, in the world's order (POV-Ray's
+ * InitRayContainerState, which asks every object's Inside; hstrace asks
+ * its shapes': planes, boxes and meshes are not asked). */
+void shade_camera_interiors(const World *w, Vec3 org, InteriorList *inside);
+
 /* Colour seen along a ray: rgb plus transmittance (for the alpha channel). */
 typedef struct {
     double r, g, b, transmit;

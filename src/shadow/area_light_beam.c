@@ -173,6 +173,10 @@ int area_beam_gather(const AreaBeam *b, const World *w, const Bvh *bvh, int excl
 
 int area_beam_planes_clear(const AreaBeam *b, const World *w, int exclude)
 {
+    /* the samples' planes test holds the shapes' too (shadow_planes_test),
+     * which the beam does not look at: each sample's ray tests them */
+    if (w->nshapes > 0)
+        return 0;
     for (int i = 0; i < w->nplanes; i++) {
         const InfinitePlane *pl = &w->planes[i];
         if (i == exclude)

@@ -60,7 +60,8 @@ int area_beam_gather(const AreaBeam *b, const World *w, const Bvh *bvh, int excl
                      uint64_t *nodes);
 
 /* No infinite plane (no_shadow ones and `exclude`, the point's own, or
- * -1, left out) can come between the point and any sample. */
+ * -1, left out) can come between the point and any sample, and the world
+ * has no shapes (which only each sample's own ray tests). */
 int area_beam_planes_clear(const AreaBeam *b, const World *w, int exclude);
 
 /* How polygon pi (a candidate) meets the beam where it crosses the

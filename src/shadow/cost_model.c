@@ -199,7 +199,7 @@ static double time_gathering(const World *w, const Grid *g, const ShadowVolumes 
         Vec3 org, dir;
         camera_ray(&w->camera, width, height, (i % 8 * 2 + 1) * width / 16, (i / 8 * 2 + 1) * height / 16, &org,
                    &dir);
-        Hit from = { HIT_NONE, -1, 0.0, org, -1 }, hit;
+        Hit from = { HIT_NONE, -1, 0.0, org, -1, 0 }, hit;
         if (!trace_nearest(ctx.tracer, org, dir, HUGE_VAL, &from, &hit))
             continue;
         memcpy(&cells[(size_t)nseg * (size_t)cap], ctx.tracer->segment_cells,
@@ -268,7 +268,7 @@ static int calibrate(CostModel *m, const World *w, const Grid *g, const Bvh *bvh
         int px = (int)((i % SAMPLE_GRID + rng_unit(&rng)) * width / SAMPLE_GRID);
         int py = (int)((i / SAMPLE_GRID + rng_unit(&rng)) * height / SAMPLE_GRID);
         camera_ray(&w->camera, width, height, px, py, &org, &dir);
-        Hit from = { HIT_NONE, -1, 0.0, org, -1 }, hit;
+        Hit from = { HIT_NONE, -1, 0.0, org, -1, 0 }, hit;
         if (!trace_nearest(&tc, org, dir, HUGE_VAL, &from, &hit) || hit.kind != HIT_POLYGON)
             continue;
         const Light *l = &w->lights[lights[rng_next(&rng) % (uint64_t)nlights]];

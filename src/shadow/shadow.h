@@ -346,8 +346,28 @@ ShadowRecord shadow_record(const ShadowContext *ctx, const ShadowQuery *q, const
  * infinite planes first, then polygons. */
 void shadow_conventional_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light_through);
 /* Its two halves, so that methods sharing the plane part stay exact:
- * both multiply into *light and return 1 when it is fully blocked. */
+ * both multiply into *light and return 1 when it is fully blocked. The
+ * first is every surface that is not a polygon: the infinite planes, then
+ * the analytic shapes (shadow_shapes_test). Every method decides it by the
+ * shadow ray's own tests, and only the polygons by its own means; so each
+ * is exact on shapes as it is on polygons, and a method's polygon state
+ * (hst's depths, the cache's blocker, the light buffer's cells) is the
+ * polygons' alone, whatever shapes lie about. */
 int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+/* The shapes' part: every crossing of a shape (World.shapes) between the
+ * point and the light, met by the shapes' own intersection (shape.h: the
+ * nearest-hit query's, POV-Ray's tolerances), filtering the light through
+ * see-through ones; 1 when they block it fully. */
+int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+/* The distances along a shadow ray at which a shape's crossing counts:
+ * (tmin, tlimit), POV-Ray's window for its shadow rays (trace.cpp,
+ * TracePointLightShadowRay: beyond SMALL_TOLERANCE of the point, short of
+ * the light by SHADOW_TOLERANCE, both 1e-3), for a light `distance` away. */
+static inline void shadow_shape_window(double distance, double *tmin, double *tlimit)
+{
+    *tmin = 1.0e-3;
+    *tlimit = distance - 1.0e-3;
+}
 /* One plane's part: World.planes[i] (passed over where it is q's own
  * surface or casts no shadow); tmin: trace_min_distance(q->point). */
 int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tmin, RGB *light);

@@ -17,6 +17,12 @@
 #define FOLD_INSERTION_MAX 16 /* see-through hits sorted by insertion up to this many */
 #define POV_SMALL_TOLERANCE 1.0e-3 /* POV-Ray's SMALL_TOLERANCE (and SHADOW_TOLERANCE) */
 
+/* The surface id the material code looks uv coordinates up by. */
+static int uv_surface_of(const World *w, int surface, const InfinitePlane *plane)
+{
+    return plane ? -1 : surface < -1 ? surface : world_uv_polygon(w, surface);
+}
+
 /* What a see-through surface with POV-Ray's fake caustics lets through
  * (ComputeShadowTexture): each texture's rgb * filter + transmit times
  * 1 + |cos|^caustics, cos between the texture's normal and the shadow
@@ -25,17 +31,19 @@
  * interpolated one) turned against the ray, then perturbed by the
  * texture's normal pattern where the render perturbs normals, as POV-Ray
  * does (ComputeShadowColour, Perturb_Normal). */
-static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int polygon, const InfinitePlane *plane,
-                              const ShadowQuery *q, Vec3 at, int *blocks)
+static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int polygon, int part,
+                              const InfinitePlane *plane, const ShadowQuery *q, Vec3 at, int *blocks)
 {
     const World *w = ctx->tracer->world;
-    /* polygon: its id (instance.h; an instance's normal carried out) */
-    Vec3 n = plane ? plane->normal : world_polygon_shading_normal(w, polygon, -1, at);
+    /* polygon: a surface id (world.h): a polygon's id (instance.h; an
+     * instance's normal carried out) or a shape's */
+    Vec3 n = plane         ? plane->normal
+           : polygon < -1  ? shape_normal(&w->shapes[surface_shape(polygon)], at, part)
+                           : world_polygon_shading_normal(w, polygon, -1, at);
     if (v3_dot(n, q->to_light) > 0.0)
         n = v3_neg(n);
     SurfaceTexture tx[MAX_SURFACE_TEXTURES];
-    int nt = material_textures_normals_at(w, m, plane ? -1 : world_uv_polygon(w, polygon), at, n, ctx->perturb_normals,
-                                          tx);
+    int nt = material_textures_normals_at(w, m, uv_surface_of(w, polygon, plane), at, n, ctx->perturb_normals, tx);
     RGB through = { 0, 0, 0 };
     *blocks = 1;
     for (int i = 0; i < nt; i++) {
@@ -49,20 +57,21 @@ static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int p
     return through;
 }
 
-/* Folds one blocker (a polygon, by its id (instance.h), or an infinite
- * plane), hit at distance t, into the light that gets through; returns 1
- * when the light is now fully blocked. */
-static int pass_through(const ShadowContext *ctx, const Material *m, int polygon, const InfinitePlane *plane,
-                        const ShadowQuery *q, double t, RGB *light)
+/* Folds one blocker (a polygon by its id (instance.h), a shape by its
+ * surface id (world.h) and the part of it hit, or an infinite plane), hit
+ * at distance t, into the light that gets through; returns 1 when the
+ * light is now fully blocked. */
+static int pass_through(const ShadowContext *ctx, const Material *m, int polygon, int part,
+                        const InfinitePlane *plane, const ShadowQuery *q, double t, RGB *light)
 {
     int blocks = 1;
     RGB through = { 0, 0, 0 };
     Vec3 at = v3_add(q->point, v3_scale(q->to_light, t));
     if (!m->opaque)
-        through = m->caustics != 0.0 ? caustics_filter_at(ctx, m, polygon, plane, q, at, &blocks)
+        through = m->caustics != 0.0 ? caustics_filter_at(ctx, m, polygon, part, plane, q, at, &blocks)
                                      : material_filter_at(ctx->tracer->world, m,
-                                                          plane ? -1 : world_uv_polygon(ctx->tracer->world, polygon),
-                                                          at, &blocks);
+                                                          uv_surface_of(ctx->tracer->world, polygon, plane), at,
+                                                          &blocks);
     if (blocks) {
         light->r = light->g = light->b = 0.0;
         return 1;
@@ -106,7 +115,7 @@ int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tm
     double t = intersect_plane(pl, q->point, q->to_light);
     if (!(t > tmin && t < q->distance))
         return 0;
-    if (pass_through(ctx, m, -1, pl, q, t, light))
+    if (pass_through(ctx, m, -1, 0, pl, q, t, light))
         return 1;
     /* A plane is crossed once: the shadow ray fades at it where it starts
      * inside its interior (under water, seen through its surface), over
@@ -128,6 +137,79 @@ int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     for (int i = 0; i < ctx->tracer->world->nplanes; i++)
         if (shadow_plane_test(ctx, q, i, tmin, light))
             return 1;
+    return shadow_shapes_test(ctx, q, light);
+}
+
+/* One shape's part of shadow_shapes_test; 1 when the light is now fully
+ * blocked. */
+typedef struct {
+    ShadowContext *ctx;
+    const ShadowQuery *q;
+    RGB *light;
+} ShapeShadow;
+
+static int shadow_shape_test(void *user, int i, double *tmax)
+{
+    (void)tmax; /* every crossing up to the light counts */
+    ShapeShadow *ss = user;
+    ShadowContext *ctx = ss->ctx;
+    const ShadowQuery *q = ss->q;
+    const World *w = ctx->tracer->world;
+    const Shape *s = &w->shapes[i];
+    const Material *m = &w->materials[s->material];
+    /* The point's own shape is tested too: POV-Ray's shadow ray leaves
+     * no object out; its window (shadow_shape_window) keeps it off the
+     * surface it starts on (a sphere's far side still shadows). */
+    double tmin, tlimit;
+    shadow_shape_window(q->distance, &tmin, &tlimit);
+    if (m->no_shadow || !shape_box_hit(s, q->point, q->to_light, tlimit))
+        return 0;
+    ctx->stats.shadow_shape_tests++;
+    ShapeHit all[SHAPE_MAX_HITS], hits[SHAPE_MAX_HITS];
+    int nall = shape_intersect_all(s, q->point, q->to_light, tlimit, all), n = 0;
+    for (int k = 0; k < nall; k++)
+        if (all[k].t > tmin)
+            hits[n++] = all[k];
+    /* a fading interior fades the light over the legs the shadow ray
+     * runs inside it: from the point (where it starts inside) or the
+     * shape's last surface, to the next (the legs as the shape alone
+     * bounds them: surfaces of other objects inside it do not split
+     * them) */
+    int inside = n > 0 && interior_fades_shadows(m) && segment_inside(q, m->interior_key);
+    double from = 0.0;
+    for (int k = 0; k < n; k++) {
+        if (pass_through(ctx, m, surface_of_shape(i), hits[k].part, NULL, q, hits[k].t, ss->light))
+            return 1;
+        if (inside) {
+            RGB f = interior_fade(m, hits[k].t - from);
+            ss->light->r *= f.r;
+            ss->light->g *= f.g;
+            ss->light->b *= f.b;
+        }
+        inside = !inside && interior_fades_shadows(m);
+        from = hits[k].t;
+    }
+    return 0;
+}
+
+int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+{
+    const World *w = ctx->tracer->world;
+    if (w->nshapes == 0)
+        return 0;
+    ShapeShadow ss = { ctx, q, light };
+    const Bvh *bvh = ctx->tracer->bvh;
+    if (bvh && bvh->shapes) { /* the shapes whose boxes the segment meets */
+        double tmax = q->distance;
+        uint64_t nodes = 0;
+        return bvh_shapes_walk(bvh->shapes, q->point, q->to_light, &tmax, HIDE_NO_SHADOW, shadow_shape_test, &ss,
+                               &nodes);
+    }
+    for (int i = 0; i < w->nshapes; i++) {
+        double tmax = q->distance;
+        if (shadow_shape_test(&ss, i, &tmax))
+            return 1;
+    }
     return 0;
 }
 
@@ -386,7 +468,7 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
         last = ctx->filtered[i].t;
         uint32_t pi = ctx->filtered[i].polygon;
         const Material *m = &w->materials[world_polygon_material(w, (int)pi)];
-        if (pass_through(ctx, m, (int)pi, NULL, q, ctx->filtered[i].t, light)) {
+        if (pass_through(ctx, m, (int)pi, 0, NULL, q, ctx->filtered[i].t, light)) {
             /* a patterned see-through polygon blocks only where it is opaque:
              * not one for the cache, which takes a hit anywhere as blocked */
             ctx->last_blocker = -1;

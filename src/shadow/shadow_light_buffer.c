@@ -103,7 +103,7 @@ static int light_buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, c
         if (shadow_plane_test(ctx, q, i, tmin, light))
             return 1;
     }
-    return 0;
+    return shadow_shapes_test(ctx, q, light); /* the shapes by the shadow ray's own test */
 }
 
 /* q's decision by buffer lb (NULL: the cache's test), planes aside. */

@@ -3,6 +3,8 @@
 
 #include "shadow_reference.h"
 
+#include "shadow.h"
+
 typedef long double ld;
 
 typedef struct {
@@ -172,6 +174,20 @@ RefAnswer shadow_reference(const World *w, const Hit *at, const Light *l, long d
             return REF_BLOCKED;
         if (a == REF_TIE)
             r = REF_TIE;
+    }
+    /* The shapes by their own test (shape.h), which is POV-Ray's
+     * arithmetic and so the definition rather than an approximation of
+     * it: a crossing of one blocks, as a polygon's does here. */
+    Vec3 dd = { (double)d.x, (double)d.y, (double)d.z };
+    double smin, slimit;
+    shadow_shape_window((double)tmax, &smin, &slimit);
+    for (int i = 0; i < w->nshapes; i++) {
+        const Shape *s = &w->shapes[i];
+        ShapeHit hits[SHAPE_MAX_HITS];
+        int n = w->materials[s->material].no_shadow ? 0 : shape_intersect_all(s, at->point, dd, slimit, hits);
+        for (int k = 0; k < n; k++)
+            if (hits[k].t > smin)
+                return REF_BLOCKED;
     }
     return r;
 }

@@ -73,7 +73,7 @@ static int asks(const World *w, const VolumePlan *plan, int i, int li, ShadowQue
         distance *= v3_dot(l->direction, to_light);
         to_light = l->direction;
     }
-    int material = h->kind == HIT_PLANE ? w->planes[h->index].material : w->polygons[h->index].material;
+    int material = hit_material(w, h);
     if (!w->materials[material].double_illuminate && v3_dot(plan->normal[i], to_light) < POV_EPSILON)
         return 0;
     q->point = h->point;
@@ -108,10 +108,12 @@ static int pilot_points(VolumePlan *plan, const World *w, const Grid *g, const B
         int py = (int)(((i / grid) + 0.5) * height / grid);
         Vec3 org, dir;
         camera_ray(&w->camera, width, height, px, py, &org, &dir);
-        Hit from = { HIT_NONE, -1, 0.0, org, -1 }, hit;
+        Hit from = { HIT_NONE, -1, 0.0, org, -1, 0 }, hit;
         if (!trace_nearest(&t, org, dir, HUGE_VAL, &from, &hit))
             continue;
-        Vec3 nrm = hit.kind == HIT_PLANE ? w->planes[hit.index].normal : w->polygons[hit.index].normal;
+        Vec3 nrm = hit.kind == HIT_PLANE   ? w->planes[hit.index].normal
+                 : hit.kind == HIT_SHAPE   ? shape_normal(&w->shapes[hit.index], hit.point, hit.part)
+                                           : w->polygons[hit.index].normal;
         if (v3_dot(nrm, dir) > 0.0)
             nrm = v3_neg(nrm);
         int k = plan->npoints++;
@@ -135,7 +137,7 @@ static int time_pilot(VolumePlan *plan, const World *w, const Grid *g, const Bvh
         return -1;
     }
     tracer_use_bvh(ctx.tracer, bvh);
-    Hit eye = { HIT_NONE, -1, 0.0, { 0, 0, 0 }, -1 };
+    Hit eye = { HIT_NONE, -1, 0.0, { 0, 0, 0 }, -1, 0 };
     Segment seg = { { 0, 0, 0 }, { 0, 0, 0 }, &eye, NULL, NULL, NULL, 0 };
     volatile double sink = 0.0;
     for (int li = 0; li < w->nlights; li++) {
@@ -186,7 +188,7 @@ static int time_pilot(VolumePlan *plan, const World *w, const Grid *g, const Bvh
                 Tracer *t = pass ? &recording : &plain;
                 double t0 = clock_thread_cpu();
                 for (int i = 0; i < plan->npoints; i++) {
-                    Hit from = { HIT_NONE, -1, 0.0, plan->org[i], -1 }, hit;
+                    Hit from = { HIT_NONE, -1, 0.0, plan->org[i], -1, 0 }, hit;
                     sink += trace_nearest(t, plan->org[i], plan->dir[i], HUGE_VAL, &from, &hit);
                 }
                 double dt = (clock_thread_cpu() - t0) / plan->npoints;
@@ -257,7 +259,7 @@ static int measure_hst(VolumePlan *plan, const World *w, const Grid *g, const Bv
     Hit *hits = malloc(sizeof *hits * np);
     int status = cells && ncells && in_box && hits ? 0 : -1;
     for (int i = 0; status == 0 && i < plan->npoints; i++) {
-        Hit from = { HIT_NONE, -1, 0.0, plan->org[i], -1 };
+        Hit from = { HIT_NONE, -1, 0.0, plan->org[i], -1, 0 };
         hits[i] = plan->hit[i];
         ncells[i] = 0;
         in_box[i] = 0;
@@ -268,7 +270,7 @@ static int measure_hst(VolumePlan *plan, const World *w, const Grid *g, const Bv
             in_box[i] = (int8_t)ctx.tracer->segment_in_box;
         }
     }
-    Hit eye = { HIT_NONE, -1, 0.0, { 0, 0, 0 }, -1 };
+    Hit eye = { HIT_NONE, -1, 0.0, { 0, 0, 0 }, -1, 0 };
     volatile double sink = 0.0;
     for (int li = 0; status == 0 && li < w->nlights; li++) {
         LightPlan *lp = &plan->light[li];

@@ -1,0 +1,590 @@
+/* POV-Ray 3.7's analytic shapes (source/backend/shape/ spheres.cpp,
+ * discs.cpp, cones.cpp, torus.cpp): the same arithmetic in the same order
+ * where it decides what a ray meets, so that hits, grazes and misses fall
+ * where POV-Ray's do. Written anew from reading them, not copied. */
+#include "shape.h"
+
+#include <math.h>
+
+#include "polynomial.h"
+
+#define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
+#define POV_MAX_DISTANCE 1.0e7   /* POV-Ray's MAX_DISTANCE: farther crossings are not reported */
+#define SPHERE_DEPTH_TOLERANCE 1.0e-6 /* spheres.cpp's DEPTH_TOLERANCE */
+
+/* ---- sphere ------------------------------------------------------------- */
+
+/* POV-Ray's Sphere::Intersect for a unit direction: the two crossings of
+ * the line, or 0 when it misses, grazes (half chord squared within EPSILON)
+ * or starts outside moving away. */
+static int sphere_roots(Vec3 org, Vec3 unit_dir, Vec3 center, double radius2, double *t1, double *t2)
+{
+    Vec3 oc = v3_sub(center, org);
+    double oc2 = v3_dot(oc, oc);
+    double closest = v3_dot(oc, unit_dir);
+    if (oc2 >= radius2 && closest < POV_EPSILON)
+        return 0;
+    double half_chord2 = radius2 - oc2 + closest * closest;
+    if (!(half_chord2 > POV_EPSILON))
+        return 0;
+    double half_chord = sqrt(half_chord2);
+    *t1 = closest - half_chord;
+    *t2 = closest + half_chord;
+    return 1;
+}
+
+static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+{
+    Vec3 o = org, d = dir;
+    if (s->transformed) {
+        o = inverse_transform_point(&s->to_world, org);
+        d = inverse_transform_direction(&s->to_world, dir);
+    }
+    /* POV-Ray's rays have unit directions (an ellipsoid's is made unit in
+     * its own space): the tolerances apply to distances along such a ray,
+     * which are then divided back to t along dir. */
+    double len = v3_length(d);
+    if (!(len > 0.0))
+        return 0;
+    Vec3 u = len == 1.0 ? d : v3_scale(d, 1.0 / len);
+    double r = s->u.sphere.radius, t1, t2;
+    if (!sphere_roots(o, u, s->u.sphere.center, r * r, &t1, &t2))
+        return 0;
+    int n = 0;
+    /* the first crossing enters the solid, the second leaves it (an
+     * inverse sphere's solid is the outside) */
+    const double depth[2] = { t1, t2 };
+    for (int k = 0; k < 2; k++) {
+        if (!(depth[k] > SPHERE_DEPTH_TOLERANCE && depth[k] < POV_MAX_DISTANCE))
+            continue;
+        double t = len == 1.0 ? depth[k] : depth[k] / len;
+        if (!(t < tmax))
+            continue;
+        hits[n].t = t;
+        hits[n].entering = (k == 0) != (s->inverse != 0);
+        hits[n].part = SHAPE_SIDE;
+        n++;
+    }
+    return n;
+}
+
+static int sphere_inside(const Shape *s, Vec3 p)
+{
+    Vec3 q = s->transformed ? inverse_transform_point(&s->to_world, p) : p;
+    Vec3 oc = v3_sub(s->u.sphere.center, q);
+    double oc2 = v3_dot(oc, oc), r2 = s->u.sphere.radius * s->u.sphere.radius;
+    return s->inverse ? oc2 > r2 : oc2 < r2;
+}
+
+static Vec3 sphere_normal(const Shape *s, Vec3 p)
+{
+    if (s->transformed) {
+        Vec3 q = inverse_transform_point(&s->to_world, p);
+        return v3_normalize(transform_normal(&s->to_world, v3_sub(q, s->u.sphere.center)));
+    }
+    /* POV-Ray divides by the radius rather than normalising */
+    return v3_scale(v3_sub(p, s->u.sphere.center), 1.0 / s->u.sphere.radius);
+}
+
+/* Sphere::UVCoord: longitude from +x toward +z, latitude from the x-z
+ * plane, of the point in the sphere's own space (POV-Ray carries the point
+ * and the centre back through UV_Trans, every transform of the object), so
+ * that the mapping turns with the sphere. */
+static Vec3 sphere_uv(const Shape *s, Vec3 p)
+{
+    Vec3 q = inverse_transform_point(&s->to_world, p);
+    double x = q.x - s->u.sphere.own_center.x, y = q.y - s->u.sphere.own_center.y, z = q.z - s->u.sphere.own_center.z;
+    double len = sqrt(x * x + y * y + z * z);
+    if (len == 0.0)
+        return v3(0.0, 0.0, 0.0); /* POV-Ray leaves its result unset: ours is 0 */
+    x /= len;
+    y /= len;
+    z /= len;
+    double phi = 0.5 + asin(y) / M_PI;
+    double theta;
+    double xz = x * x + z * z;
+    if (xz > POV_EPSILON) {
+        xz = sqrt(xz);
+        if (z == 0.0) {
+            theta = x > 0 ? 0.0 : M_PI;
+        } else {
+            theta = acos(x / xz);
+            if (z < 0.0)
+                theta = 2.0 * M_PI - theta;
+        }
+        theta /= 2.0 * M_PI;
+    } else {
+        theta = 0.0; /* a pole: any longitude */
+    }
+    return v3(theta, phi, 0.0);
+}
+
+static void sphere_local_bounds(const Shape *s, Vec3 *lo, Vec3 *hi)
+{
+    double r = fabs(s->u.sphere.radius);
+    Vec3 c = s->u.sphere.center;
+    *lo = v3(c.x - r, c.y - r, c.z - r);
+    *hi = v3(c.x + r, c.y + r, c.z + r);
+}
+
+/* ---- disc ------------------------------------------------------------------ */
+
+#define DISC_DEPTH_TOLERANCE 1.0e-6 /* discs.cpp's DEPTH_TOLERANCE, on world distances */
+
+/* Disc::Intersect: the crossing of its plane (z = 0 of its own space)
+ * between the two radii. */
+static int disc_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+{
+    Vec3 p = inverse_transform_point(&s->to_world, org);
+    Vec3 d = inverse_transform_direction(&s->to_world, dir);
+    double len = v3_length(d);
+    if (!(len > 0.0))
+        return 0;
+    d = v3_scale(d, 1.0 / len);
+    if (!(fabs(d.z) > POV_EPSILON))
+        return 0;
+    double t = -p.z / d.z;
+    if (!(t >= 0.0))
+        return 0;
+    double u = p.x + t * d.x, v = p.y + t * d.y;
+    double r2 = u * u + v * v;
+    if (!(r2 >= s->u.disc.inner2 && r2 <= s->u.disc.outer2))
+        return 0;
+    double depth = t / len;
+    if (!(depth > DISC_DEPTH_TOLERANCE && depth < POV_MAX_DISTANCE && depth < tmax))
+        return 0;
+    /* its solid is the half-space below it (z < 0: Disc::Inside) */
+    hits[0].t = depth;
+    hits[0].entering = (d.z < 0.0) != (s->inverse != 0);
+    hits[0].part = SHAPE_SIDE;
+    return 1;
+}
+
+static int disc_inside(const Shape *s, Vec3 p)
+{
+    Vec3 q = inverse_transform_point(&s->to_world, p);
+    return (q.z < 0.0) != (s->inverse != 0);
+}
+
+/* ---- cone and cylinder ------------------------------------------------------- */
+
+#define CONE_TOLERANCE 1.0e-9 /* cones.cpp's Cone_Tolerance, on distances in its own space */
+
+/* One crossing of a cone's part at local distance t (the ray's own space,
+ * unit direction), kept where POV-Ray keeps it; `outward` the part's
+ * local normal there, which says whether the ray enters. */
+static int cone_keep(const Shape *s, ShapeHit *h, double t, double len, double tmax, int part, Vec3 d, Vec3 outward)
+{
+    if (!(t > CONE_TOLERANCE && t < POV_MAX_DISTANCE))
+        return 0;
+    double depth = t / len;
+    if (!(depth < tmax))
+        return 0;
+    h->t = depth;
+    h->part = part;
+    h->entering = (v3_dot(d, outward) < 0.0) != (s->inverse != 0);
+    return 1;
+}
+
+/* Cone::Intersect: the side's two roots, then the caps, in its own space. */
+static int cone_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+{
+    Vec3 p = inverse_transform_point(&s->to_world, org);
+    Vec3 d = inverse_transform_direction(&s->to_world, dir);
+    double len = v3_length(d);
+    if (!(len > 0.0))
+        return 0;
+    d = v3_scale(d, 1.0 / len);
+    const double dist = s->u.cone.dist;
+    int n = 0;
+    if (s->u.cone.cylinder) {
+        double a = d.x * d.x + d.y * d.y;
+        if (a > POV_EPSILON) {
+            double b = p.x * d.x + p.y * d.y;
+            double c = p.x * p.x + p.y * p.y - 1.0;
+            double disc = b * b - a * c;
+            if (disc >= 0.0) {
+                disc = sqrt(disc);
+                const double roots[2] = { (-b + disc) / a, (-b - disc) / a };
+                for (int k = 0; k < 2; k++) {
+                    double z = p.z + roots[k] * d.z;
+                    Vec3 at = v3_add(p, v3_scale(d, roots[k]));
+                    if (z >= 0.0 && z <= 1.0)
+                        n += cone_keep(s, &hits[n], roots[k], len, tmax, SHAPE_SIDE, d, v3(at.x, at.y, 0.0));
+                }
+            }
+        }
+    } else {
+        double a = d.x * d.x + d.y * d.y - d.z * d.z;
+        double b = d.x * p.x + d.y * p.y - d.z * p.z;
+        double c = p.x * p.x + p.y * p.y - p.z * p.z;
+        if (fabs(a) < POV_EPSILON) {
+            if (fabs(b) > POV_EPSILON) { /* the ray parallel to the side: one crossing */
+                double t = -0.5 * c / b;
+                double z = p.z + t * d.z;
+                Vec3 at = v3_add(p, v3_scale(d, t));
+                if (z >= dist && z <= 1.0)
+                    n += cone_keep(s, &hits[n], t, len, tmax, SHAPE_SIDE, d, v3(at.x, at.y, -at.z));
+            }
+        } else {
+            double disc = b * b - a * c;
+            if (disc >= 0.0) {
+                disc = sqrt(disc);
+                const double roots[2] = { (-b - disc) / a, (-b + disc) / a };
+                for (int k = 0; k < 2; k++) {
+                    double z = p.z + roots[k] * d.z;
+                    Vec3 at = v3_add(p, v3_scale(d, roots[k]));
+                    if (z >= dist && z <= 1.0)
+                        n += cone_keep(s, &hits[n], roots[k], len, tmax, SHAPE_SIDE, d, v3(at.x, at.y, -at.z));
+                }
+            }
+        }
+    }
+    if (s->u.cone.closed && fabs(d.z) > POV_EPSILON) {
+        double t = (1.0 - p.z) / d.z;
+        double a = p.x + t * d.x, b = p.y + t * d.y;
+        if (a * a + b * b <= 1.0)
+            n += cone_keep(s, &hits[n], t, len, tmax, SHAPE_CAP, d, v3(0.0, 0.0, 1.0));
+        t = (dist - p.z) / d.z;
+        a = p.x + t * d.x;
+        b = p.y + t * d.y;
+        if (a * a + b * b <= (s->u.cone.cylinder ? 1.0 : dist * dist))
+            n += cone_keep(s, &hits[n], t, len, tmax, SHAPE_BASE, d, v3(0.0, 0.0, -1.0));
+    }
+    /* nearest first (POV-Ray takes the nearest of its stack) */
+    for (int i = 1; i < n; i++)
+        for (int j = i; j > 0 && hits[j].t < hits[j - 1].t; j--) {
+            ShapeHit x = hits[j];
+            hits[j] = hits[j - 1];
+            hits[j - 1] = x;
+        }
+    return n;
+}
+
+/* Cone::Inside, with its EPSILON margin (inward for a closed one). */
+static int cone_inside(const Shape *s, Vec3 p)
+{
+    Vec3 q = inverse_transform_point(&s->to_world, p);
+    double offset = s->u.cone.closed ? -POV_EPSILON : POV_EPSILON;
+    double w2 = q.x * q.x + q.y * q.y;
+    int out;
+    if (s->u.cone.cylinder)
+        out = w2 > 1.0 + offset || q.z < 0.0 - offset || q.z > 1.0 + offset;
+    else
+        out = w2 > q.z * q.z + offset || q.z < s->u.cone.dist - offset || q.z > 1.0 + offset;
+    return out == (s->inverse != 0);
+}
+
+static Vec3 cone_normal(const Shape *s, Vec3 p, int part)
+{
+    Vec3 n;
+    if (part == SHAPE_CAP) {
+        n = v3(0.0, 0.0, 1.0);
+    } else if (part == SHAPE_BASE) {
+        n = v3(0.0, 0.0, -1.0);
+    } else {
+        n = inverse_transform_point(&s->to_world, p);
+        n.z = s->u.cone.cylinder ? 0.0 : -n.z;
+    }
+    return v3_normalize(transform_normal(&s->to_world, n));
+}
+
+void shape_coordinate_frame(Transform *t, Vec3 origin, Vec3 up, double radius, double length)
+{
+    /* scaled by (radius, radius, length), turned about the axis
+     * (-up.y, up.x, 0) by acos(up.z) so that z becomes up, then moved to
+     * origin: the frame of POV-Ray's Compute_Coordinate_Transform */
+    transform_identity(t);
+    transform_scale(t, v3(radius, radius, length));
+    Vec3 k;
+    double angle;
+    if (fabs(up.z) > 1.0 - POV_EPSILON) {
+        k = v3(1.0, 0.0, 0.0);
+        angle = up.z < 0.0 ? M_PI : 0.0;
+    } else {
+        k = v3_normalize(v3(-up.y, up.x, 0.0));
+        angle = acos(up.z);
+    }
+    double c = cos(angle), sn = sin(angle), omc = 1.0 - c;
+    double m[12] = {
+        k.x * k.x * omc + c,        k.x * k.y * omc + k.z * sn, k.x * k.z * omc - k.y * sn,
+        k.x * k.y * omc - k.z * sn, k.y * k.y * omc + c,        k.y * k.z * omc + k.x * sn,
+        k.x * k.z * omc + k.y * sn, k.y * k.z * omc - k.x * sn, k.z * k.z * omc + c,
+        origin.x,                   origin.y,                   origin.z,
+    };
+    Transform turn;
+    transform_identity(&turn);
+    (void)transform_matrix(&turn, m); /* a rotation: never singular */
+    transform_compose(t, &turn);
+}
+
+/* ---- torus ------------------------------------------------------------------ */
+
+#define TORUS_DEPTH_TOLERANCE 1.0e-4 /* torus.cpp's DEPTH_TOLERANCE, on world distances */
+#define TORUS_ROOT_TOLERANCE 1.0e-4  /* its ROOT_TOLERANCE: a root this near 0 is dropped */
+
+/* One of Test_Thick_Cylinder's tests: does the ray cross the cylinder
+ * x^2 + z^2 = r2 between the heights at a distance beyond EPSILON? */
+static int crosses_cylinder(Vec3 p, Vec3 d, double a, double b, double r2, double h1, double h2)
+{
+    double c = p.x * p.x + p.z * p.z - r2;
+    double disc = b * b - a * c;
+    if (!(disc >= 0.0))
+        return 0;
+    disc = sqrt(disc);
+    const double k[2] = { (-b + disc) / a, (-b - disc) / a };
+    for (int i = 0; i < 2; i++) {
+        if (k[i] > POV_EPSILON && k[i] < POV_MAX_DISTANCE) {
+            double h = p.y + k[i] * d.y;
+            if (h >= h1 && h <= h2)
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* Torus::Test_Thick_Cylinder: POV-Ray tests a ray against the torus only
+ * where it crosses the thick cylinder around it (between heights h1, h2
+ * and the squared radii r1, r2). */
+static int crosses_thick_cylinder(Vec3 p, Vec3 d, double h1, double h2, double r1, double r2)
+{
+    if (fabs(d.y) < POV_EPSILON) {
+        if (p.y < h1 || p.y > h2)
+            return 0;
+    } else {
+        const double heights[2] = { h2, h1 };
+        for (int i = 0; i < 2; i++) {
+            double k = (heights[i] - p.y) / d.y;
+            double u = p.x + k * d.x, v = p.z + k * d.z;
+            if (k > POV_EPSILON && k < POV_MAX_DISTANCE) {
+                double r = u * u + v * v;
+                if (r >= r1 && r <= r2)
+                    return 1;
+            }
+        }
+    }
+    double a = d.x * d.x + d.z * d.z;
+    if (!(a > POV_EPSILON))
+        return 0;
+    double b = p.x * d.x + p.z * d.z;
+    return crosses_cylinder(p, d, a, b, r2, h1, h2) || crosses_cylinder(p, d, a, b, r1, h1, h2);
+}
+
+static Vec3 torus_local_normal(const Shape *s, Vec3 q)
+{
+    double dist = sqrt(q.x * q.x + q.z * q.z);
+    Vec3 m = dist > POV_EPSILON ? v3(s->u.torus.major * q.x / dist, 0.0, s->u.torus.major * q.z / dist) : v3(0, 0, 0);
+    return v3_sub(q, m);
+}
+
+/* Torus::Intersect: the quartic in the distance along the ray in the
+ * torus's own space, its origin first moved to just outside the bounding
+ * sphere for precision, as POV-Ray moves it. */
+static int torus_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+{
+    Vec3 p = inverse_transform_point(&s->to_world, org);
+    Vec3 d = inverse_transform_direction(&s->to_world, dir);
+    double len = v3_length(d);
+    if (!(len > 0.0))
+        return 0;
+    d = v3_scale(d, 1.0 / len);
+    const double R = s->u.torus.major, r = s->u.torus.minor;
+    double inner = R < r ? 0.0 : (R - r) * (R - r);
+    if (!crosses_thick_cylinder(p, d, -r, r, inner, (R + r) * (R + r)))
+        return 0;
+    double bound = R + r + r, closer = 0.0;
+    double dist2 = v3_dot(p, p);
+    if (dist2 > bound * bound) {
+        closer = sqrt(dist2) - bound;
+        p = v3_add(p, v3_scale(d, closer));
+    }
+    double R2 = R * R, r2 = r * r;
+    double py2 = p.y * p.y, dy2 = d.y * d.y, pdy2 = p.y * d.y;
+    double k1 = p.x * p.x + p.z * p.z + py2 - R2 - r2;
+    double k2 = p.x * d.x + p.z * d.z + pdy2;
+    double c[5] = { 1.0, 4.0 * k2, 2.0 * (k1 + 2.0 * (k2 * k2 + R2 * dy2)), 4.0 * (k2 * k1 + 2.0 * R2 * pdy2),
+                    k1 * k1 + 4.0 * R2 * (py2 - r2) };
+    /* Solve_Polynomial's root elimination: with the constant this small
+     * against the linear coefficient, 0 is taken for a root and the cubic
+     * left over solved (rays leaving the surface) */
+    int degree = (c[3] != 0.0 && fabs(c[4] / c[3]) < TORUS_ROOT_TOLERANCE) ? 3 : 4;
+    double roots[POLYNOMIAL_MAX_DEGREE];
+    /* the roots POV-Ray's Sturm solver brackets: 0 to MAX_DISTANCE */
+    int nr = polynomial_roots(c, degree, 0.0, POV_MAX_DISTANCE, roots);
+    int n = 0;
+    for (int k = 0; k < nr; k++) {
+        double depth = (roots[k] + closer) / len;
+        if (!(depth > TORUS_DEPTH_TOLERANCE && depth < POV_MAX_DISTANCE && depth < tmax))
+            continue;
+        Vec3 at = v3_add(p, v3_scale(d, roots[k]));
+        hits[n].t = depth;
+        hits[n].part = SHAPE_SIDE;
+        hits[n].entering = (v3_dot(d, torus_local_normal(s, at)) < 0.0) != (s->inverse != 0);
+        n++;
+    }
+    return n;
+}
+
+static int torus_inside(const Shape *s, Vec3 p)
+{
+    Vec3 q = inverse_transform_point(&s->to_world, p);
+    double rr = sqrt(q.x * q.x + q.z * q.z) - s->u.torus.major;
+    int in = q.y * q.y + rr * rr <= s->u.torus.minor * s->u.torus.minor;
+    return in != (s->inverse != 0);
+}
+
+static Vec3 torus_normal(const Shape *s, Vec3 p)
+{
+    Vec3 q = inverse_transform_point(&s->to_world, p);
+    return v3_normalize(transform_normal(&s->to_world, torus_local_normal(s, q)));
+}
+
+/* Torus::CalcUV: u around the y axis, v around the tube. */
+static Vec3 torus_uv(const Shape *s, Vec3 p)
+{
+    Vec3 q = inverse_transform_point(&s->to_world, p);
+    double u = 1.0 - (atan2(q.z, q.x) + M_PI) / (2.0 * M_PI);
+    double x = sqrt(q.x * q.x + q.z * q.z) - s->u.torus.major;
+    double v = (atan2(q.y, x) + M_PI) / (2.0 * M_PI);
+    return v3(u, v, 0.0);
+}
+
+/* ---- every shape ----------------------------------------------------------- */
+
+void shape_compute_bounds(Shape *s)
+{
+    Vec3 lo, hi;
+    switch (s->kind) {
+    case SHAPE_SPHERE:
+        sphere_local_bounds(s, &lo, &hi);
+        break;
+    case SHAPE_DISC: {
+        double r = sqrt(s->u.disc.outer2);
+        lo = v3(-r, -r, -1e-3); /* POV-Ray's SMALL_TOLERANCE of thickness */
+        hi = v3(r, r, 1e-3);
+        break;
+    }
+    case SHAPE_CONE:
+        lo = v3(-1.0, -1.0, s->u.cone.dist);
+        hi = v3(1.0, 1.0, 1.0);
+        break;
+    case SHAPE_TORUS: {
+        double r1 = s->u.torus.minor, r2 = s->u.torus.major + s->u.torus.minor;
+        lo = v3(-r2, -r1, -r2);
+        hi = v3(r2, r1, r2);
+        break;
+    }
+    }
+    if (!s->transformed) {
+        s->bbox_min = lo;
+        s->bbox_max = hi;
+        return;
+    }
+    /* the box's eight corners carried to world space */
+    Vec3 wlo = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL), whi = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+    for (int k = 0; k < 8; k++) {
+        Vec3 c = v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+        Vec3 w = transform_point(&s->to_world, c);
+        wlo = v3_min(wlo, w);
+        whi = v3_max(whi, w);
+    }
+    s->bbox_min = wlo;
+    s->bbox_max = whi;
+}
+
+int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+{
+    /* POV-Ray's rays have unit directions and its tolerances are distances
+     * along them: the test runs on the unit direction, and its distances
+     * are divided back to t along dir */
+    double len = v3_length(dir);
+    if (!(len > 0.0))
+        return 0;
+    Vec3 u = len == 1.0 ? dir : v3_scale(dir, 1.0 / len);
+    double ulimit = len == 1.0 ? tmax : tmax * len;
+    int n = 0;
+    switch (s->kind) {
+    case SHAPE_SPHERE: n = sphere_all(s, org, u, ulimit, hits); break;
+    case SHAPE_DISC: n = disc_all(s, org, u, ulimit, hits); break;
+    case SHAPE_CONE: n = cone_all(s, org, u, ulimit, hits); break;
+    case SHAPE_TORUS: n = torus_all(s, org, u, ulimit, hits); break;
+    }
+    if (len != 1.0)
+        for (int k = 0; k < n; k++)
+            hits[k].t /= len;
+    return n;
+}
+
+double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, int *part)
+{
+    ShapeHit hits[SHAPE_MAX_HITS];
+    if (shape_intersect_all(s, org, dir, tmax, hits) == 0)
+        return -1.0;
+    *part = hits[0].part;
+    return hits[0].t;
+}
+
+int shape_inside(const Shape *s, Vec3 p)
+{
+    switch (s->kind) {
+    case SHAPE_SPHERE: return sphere_inside(s, p);
+    case SHAPE_DISC: return disc_inside(s, p);
+    case SHAPE_CONE: return cone_inside(s, p);
+    case SHAPE_TORUS: return torus_inside(s, p);
+    }
+    return 0;
+}
+
+Vec3 shape_normal(const Shape *s, Vec3 p, int part)
+{
+    switch (s->kind) {
+    case SHAPE_SPHERE: return sphere_normal(s, p);
+    case SHAPE_DISC: return s->u.disc.normal;
+    case SHAPE_CONE: return cone_normal(s, p, part);
+    case SHAPE_TORUS: return torus_normal(s, p);
+    }
+    return v3(0.0, 1.0, 0.0);
+}
+
+Vec3 shape_uv(const Shape *s, Vec3 p)
+{
+    switch (s->kind) {
+    case SHAPE_SPHERE: return sphere_uv(s, p);
+    case SHAPE_TORUS: return torus_uv(s, p);
+    case SHAPE_DISC:
+    case SHAPE_CONE: break; /* no mapping of their own in POV-Ray 3.7 */
+    }
+    return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
+}
+int shape_box_hit(const Shape *s, Vec3 org, Vec3 dir, double tmax)
+{
+    /* slabs grown by a relative margin far above the rounding of the
+     * box's corners and of the slab distances */
+    const double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };
+    const double lo[3] = { s->bbox_min.x, s->bbox_min.y, s->bbox_min.z };
+    const double hi[3] = { s->bbox_max.x, s->bbox_max.y, s->bbox_max.z };
+    double near = 0.0, far = tmax;
+    for (int a = 0; a < 3; a++) {
+        double margin = 1e-9 * (1.0 + fabs(lo[a]) + fabs(hi[a]) + fabs(o[a]));
+        double l = lo[a] - margin, h = hi[a] + margin;
+        if (d[a] == 0.0) {
+            if (o[a] < l || o[a] > h)
+                return 0;
+            continue;
+        }
+        double t0 = (l - o[a]) / d[a], t1 = (h - o[a]) / d[a];
+        if (t0 > t1) {
+            double x = t0;
+            t0 = t1;
+            t1 = x;
+        }
+        t1 *= 1.0 + 1e-9;
+        if (t0 > near)
+            near = t0;
+        if (t1 < far)
+            far = t1;
+        if (near > far)
+            return 0;
+    }
+    return 1;
+}

@@ -1,0 +1,114 @@
+/* Analytic shapes: POV-Ray's curved primitives kept as what they are (a
+ * sphere stays a centre and a radius, never triangles), with POV-Ray 3.7's
+ * own intersection arithmetic, tolerances, normals, inside tests, uv
+ * coordinates and bounds, so that a ray meets a shape where POV-Ray's does.
+ *
+ * Every query answers along a ray org + t dir (dir need not be unit: t is
+ * in units of dir, as the polygon tests'). The ray leaving a shape's own
+ * surface is not told which shape it left: as in POV-Ray, each shape's
+ * depth tolerance alone keeps a ray from meeting the surface it starts on. */
+#ifndef HST_SHAPE_H
+#define HST_SHAPE_H
+
+#include "transform.h"
+#include "vecmath.h"
+
+typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS } ShapeKind;
+
+/* Which part of a shape a crossing is on, where the normal depends on it:
+ * a cone's or cylinder's side, its cap (the wide end, +z in its own space)
+ * or its base (POV-Ray's SIDE_HIT, CAP_HIT, BASE_HIT). */
+enum { SHAPE_SIDE = 0, SHAPE_CAP = 1, SHAPE_BASE = 2 };
+
+/* The most surfaces one ray can cross on one shape (a torus: four). */
+#define SHAPE_MAX_HITS 4
+
+/* One crossing of a shape's surface: where, and whether the ray enters
+ * the solid there (for CSG and the interiors a ray is inside). */
+typedef struct {
+    double t;
+    int entering;
+    int part;             /* SHAPE_SIDE, SHAPE_CAP, SHAPE_BASE */
+} ShapeHit;
+
+typedef struct {
+    ShapeKind kind;
+    int material;         /* World.materials */
+    int inverse;          /* POV-Ray's inverse: inside and outside swapped */
+    /* 0: the parameters are in world space (POV-Ray keeps a sphere's centre
+     * and radius through translations, rotations and uniform scales);
+     * 1: they are in the shape's own space, reached through to_world's
+     * inverse (POV-Ray's Trans: its ellipsoid, and every shape whose
+     * parameters cannot absorb a transform). */
+    int transformed;
+    /* The shape's own space to world: every transform written on it and
+     * its unions, whether or not its parameters absorbed them (POV-Ray's
+     * UV_Trans, which places uv coordinates, collects them all). */
+    Transform to_world;
+    union {
+        struct {
+            Vec3 center;          /* in world space, or in its own where transformed */
+            double radius;
+            Vec3 own_center;      /* as written: in its own space */
+        } sphere;
+        /* A disc is the unit disc of the z = 0 plane of its own space
+         * (POV-Ray's Compute_Coordinate_Transform places it), between the
+         * squared radii. */
+        struct {
+            double inner2, outer2;
+            Vec3 normal;          /* world space, unit */
+        } disc;
+        /* A cone is x^2 + y^2 = z^2 for dist <= z <= 1 in its own space, a
+         * cylinder x^2 + y^2 = 1 for 0 <= z <= 1 (POV-Ray's canonical
+         * cone), capped unless open. */
+        struct {
+            int cylinder, closed;
+            double dist;
+        } cone;
+        /* A torus about the y axis of its own space: the circle of radius
+         * minor swept around the circle of radius major. sturm: the scene
+         * asked for POV-Ray's Sturm solver (hstrace's one solver isolates
+         * every root as that one does). */
+        struct {
+            double major, minor;
+            int sturm;
+        } torus;
+    } u;
+    Vec3 bbox_min, bbox_max; /* world space */
+} Shape;
+
+/* Fills s's bounds from its parameters and transform (POV-Ray's
+ * Compute_BBox, carried through the transform as Recompute_BBox does). */
+void shape_compute_bounds(Shape *s);
+
+/* Every crossing of s by the ray at t in (0, tmax) that POV-Ray's
+ * All_Intersections would report (its depth tolerance and MAX_DISTANCE
+ * applied), nearest first; returns how many. */
+int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS]);
+
+/* The nearest of them (and the part it is on), or -1 when there is none
+ * before tmax. */
+double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, int *part);
+
+/* Is the world point inside the solid (POV-Ray's Inside, inverse
+ * included)? */
+int shape_inside(const Shape *s, Vec3 p);
+
+/* The outward surface normal at world point p on part `part` of s
+ * (POV-Ray's Normal; not turned toward any ray), of unit length up to
+ * POV-Ray's own rounding. */
+Vec3 shape_normal(const Shape *s, Vec3 p, int part);
+
+/* POV-Ray's UVCoord at world point p on s, as (u, v, 0). */
+Vec3 shape_uv(const Shape *s, Vec3 p);
+
+/* t = the frame POV-Ray's Compute_Coordinate_Transform makes: its own
+ * space scaled by (radius, radius, length), z turned to the unit vector
+ * up, moved to origin. Discs, cones and cylinders are placed by it. */
+void shape_coordinate_frame(Transform *t, Vec3 origin, Vec3 up, double radius, double length);
+
+/* Does the ray come near s's bounds for some t in [0, tmax]? A
+ * conservative rejection before the exact test. */
+int shape_box_hit(const Shape *s, Vec3 org, Vec3 dir, double tmax);
+
+#endif
