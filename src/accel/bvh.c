@@ -1419,8 +1419,7 @@ int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hid
 {
     if (!b || b->nnodes == 0)
         return 0;
-    BvhRay br;
-    bvh_ray_scalar(&br, org, dir);
+    BvhRay br = bvh_ray(org, dir);
     uint32_t stack[BVH_STACK];
     double enter_at[BVH_STACK];
     int sp = 0;
@@ -1436,7 +1435,7 @@ int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hid
             const BvhNode *n = &b->nodes[c];
             double enter[BVH_WIDTH];
             ++*nodes;
-            unsigned mask = bvh_node_hits_plain(n, &br, 0.0, *tmax, enter);
+            unsigned mask = bvh_node_hits(n, &br, 0.0, *tmax, enter);
             for (int k = BVH_WIDTH - 1; k >= 0; k--)
                 if ((mask & (1u << k)) && n->child[k] != BVH_EMPTY) {
                     stack[sp] = n->child[k];

@@ -71,7 +71,7 @@ static void trace_sample(void *user, double x, double y, AaColour *out)
     memset(&ray, 0, sizeof ray);
     ray.from.kind = HIT_NONE;
     camera_ray_at(&u->job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
-    shade_camera_interiors(u->job->world, ray.org, &ray.inside);
+    shade_camera_interiors(u->ctx, u->job->world, ray.org, &ray.inside);
     Radiance c;
     shade_trace(u->ctx, &ray, 1.0, 0, &c);
     u->loop->camera_rays++;
@@ -146,7 +146,7 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
             memset(&ray, 0, sizeof ray);
             ray.from.kind = HIT_NONE;
             camera_ray(&job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
-            shade_camera_interiors(job->world, ray.org, &ray.inside);
+            shade_camera_interiors(ctx, job->world, ray.org, &ray.inside);
             Radiance c;
             if (ctx->aov)
                 aov_pixel_begin(ctx->aov, shadow_tests(ctx), rays_traced(ctx, loop));

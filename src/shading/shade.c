@@ -484,13 +484,24 @@ static void interior_push(InteriorList *l, const Material *m)
     l->ior[l->n++] = m->ior;
 }
 
-void shade_camera_interiors(const World *w, Vec3 org, InteriorList *inside)
+void shade_camera_interiors(ShadeContext *ctx, const World *w, Vec3 org, InteriorList *inside)
 {
+    if (w->nshapes == 0)
+        return;
+    /* the same origin as the last camera ray's: the same interiors */
+    if (ctx->camera_inside_known && ctx->camera_inside_at.x == org.x && ctx->camera_inside_at.y == org.y &&
+        ctx->camera_inside_at.z == org.z) {
+        *inside = ctx->camera_inside;
+        return;
+    }
     for (int i = 0; i < w->nshapes; i++) {
         const Material *m = &w->materials[w->shapes[i].material];
         if (shape_inside(&w->shapes[i], org) && interior_index(inside, m->interior_key) < 0)
             interior_push(inside, m);
     }
+    ctx->camera_inside = *inside;
+    ctx->camera_inside_at = org;
+    ctx->camera_inside_known = 1;
 }
 
 /* The ior ratio at this surface, and the interior list beyond it

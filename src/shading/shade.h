@@ -30,6 +30,17 @@ typedef struct {
 
 void shade_counters_add(ShadeCounters *total, const ShadeCounters *part);
 
+#define MAX_INTERIOR_NESTING 16
+
+/* The interiors a ray is inside, innermost last (for ior ratios; fog only
+ * where all of them are hollow). */
+typedef struct {
+    int n;
+    const void *key[MAX_INTERIOR_NESTING];
+    double ior[MAX_INTERIOR_NESTING];
+    unsigned char hollow[MAX_INTERIOR_NESTING];
+} InteriorList;
+
 /* A render thread's shading: its tracer (the ray queries and their
  * mailbox, which its shadow testing asks too), its shadow testing, what
  * the +Q level asks for, and the current pixel's analysis record. */
@@ -52,20 +63,16 @@ typedef struct {
      * went past it (then every ray returns black at once). */
     uint64_t max_tree_rays, tree_rays_left;
     int tree_overflow;
+    /* The interiors the last camera ray started in, and where it started
+     * (shade_camera_interiors): every camera ray of a perspective camera
+     * starts at its location. */
+    int camera_inside_known;
+    Vec3 camera_inside_at;
+    InteriorList camera_inside;
 } ShadeContext;
 
 #define SHADE_CLOCK_RAYS 1024
 
-#define MAX_INTERIOR_NESTING 16
-
-/* The interiors a ray is inside, innermost last (for ior ratios; fog only
- * where all of them are hollow). */
-typedef struct {
-    int n;
-    const void *key[MAX_INTERIOR_NESTING];
-    double ior[MAX_INTERIOR_NESTING];
-    unsigned char hollow[MAX_INTERIOR_NESTING];
-} InteriorList;
 
 typedef struct {
     Vec3 org, dir;      /* dir is unit length */
@@ -82,7 +89,7 @@ typedef struct {
  * inside holds its origin, in the world's order (POV-Ray's
  * InitRayContainerState, which asks every object's Inside; hstrace asks
  * its shapes': planes, boxes and meshes are not asked). */
-void shade_camera_interiors(const World *w, Vec3 org, InteriorList *inside);
+void shade_camera_interiors(ShadeContext *ctx, const World *w, Vec3 org, InteriorList *inside);
 
 /* Colour seen along a ray: rgb plus transmittance (for the alpha channel). */
 typedef struct {
