@@ -330,11 +330,41 @@ static void png_write_body(png_structp png, png_infop info, const Image *img, co
     png_write_chunk(png, (png_const_bytep) "IEND", NULL, 0);
 }
 
+/* What the libpng part of a write needs, behind one pointer, so that the
+ * function calling setjmp keeps no local that changes after it. */
+typedef struct {
+    FILE *fp;
+    const Image *img;
+    const ImageRowEncoder *enc;
+    int depth;
+    const PngBand *band;
+    int nbands;
+    PngErr pe;
+} PngFile;
+
+/* The file: libpng's header chunks, the bands, the end. Returns 0, or -1
+ * with libpng's message (or "out of memory") in f->pe. */
+static int png_write_file(PngFile *f)
+{
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &f->pe, on_png_error, on_png_warning);
+    png_infop info = png ? png_create_info_struct(png) : NULL;
+    if (info == NULL) {
+        png_destroy_write_struct(&png, NULL);
+        image_set_error(f->pe.err, f->pe.errlen, "out of memory");
+        return -1;
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return -1;
+    }
+    png_init_io(png, f->fp);
+    png_write_body(png, info, f->img, f->enc, f->depth, f->band, f->nbands);
+    png_destroy_write_struct(&png, &info);
+    return 0;
+}
+
 int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, char *err, int errlen)
 {
-    PngErr pe = { err, errlen };
-    png_structp png;
-    png_infop info;
     ImageRowEncoder enc;
     const int depth = opt->png_16bit ? 16 : 8;
     const int alpha = opt->write_alpha != 0;
@@ -346,29 +376,17 @@ int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, ch
         return -1;
     }
     PngBand *band = calloc((size_t)(nbands > 0 ? nbands : 1), sizeof *band);
-    if (!band || compress_image(img, opt, depth, alpha, band, nbands, err, errlen) != 0) {
-        if (!band)
-            image_set_error(err, errlen, "out of memory");
-        for (int b = 0; band && b < nbands; b++)
-            free(band[b].z);
-        free(band);
-        image_row_encoder_free(&enc);
-        return -1;
-    }
-    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &pe, on_png_error, on_png_warning);
-    info = png ? png_create_info_struct(png) : NULL;
-    int status = 0;
-    if (info == NULL) {
+    int status;
+    if (!band) {
         image_set_error(err, errlen, "out of memory");
         status = -1;
-    } else if (setjmp(png_jmpbuf(png))) {
+    } else if (compress_image(img, opt, depth, alpha, band, nbands, err, errlen) != 0) {
         status = -1;
     } else {
-        png_init_io(png, fp);
-        png_write_body(png, info, img, &enc, depth, band, nbands);
+        PngFile f = { fp, img, &enc, depth, band, nbands, { err, errlen } };
+        status = png_write_file(&f);
     }
-    png_destroy_write_struct(&png, info ? &info : NULL);
-    for (int b = 0; b < nbands; b++)
+    for (int b = 0; band && b < nbands; b++)
         free(band[b].z);
     free(band);
     image_row_encoder_free(&enc);
