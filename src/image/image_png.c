@@ -271,7 +271,7 @@ static int compress_image(const Image *img, const ImageWriteOptions *opt, int de
  * chunks, the bands as IDAT chunks (the zlib header before the first, the
  * Adler-32 after the last), the end. */
 static void png_write_body(png_structp png, png_infop info, const Image *img, const ImageRowEncoder *enc, int depth,
-                           const PngBand *band, int nbands)
+                           const PngBand *band, int nbands, unsigned char *chunk)
 {
     const int alpha = enc->with_alpha;
     png_color_8 sbit;
@@ -307,9 +307,6 @@ static void png_write_body(png_structp png, png_infop info, const Image *img, co
     for (int b = 0; b < nbands; b++) {
         int first = b == 0, last = b == nbands - 1;
         size_t len = band[b].zlen + (first ? 2 : 0) + (last ? 4 : 0);
-        unsigned char *chunk = malloc(len);
-        if (!chunk)
-            png_error(png, "out of memory");
         unsigned char *o = chunk;
         if (first) {
             *o++ = 0x78;
@@ -325,7 +322,6 @@ static void png_write_body(png_structp png, png_infop info, const Image *img, co
             *o++ = (unsigned char)adler;
         }
         png_write_chunk(png, (png_const_bytep) "IDAT", chunk, len);
-        free(chunk);
     }
     png_write_chunk(png, (png_const_bytep) "IEND", NULL, 0);
 }
@@ -339,6 +335,7 @@ typedef struct {
     int depth;
     const PngBand *band;
     int nbands;
+    unsigned char *chunk; /* room for the largest IDAT chunk (a band, the zlib header and trailer) */
     PngErr pe;
 } PngFile;
 
@@ -358,7 +355,7 @@ static int png_write_file(PngFile *f)
         return -1;
     }
     png_init_io(png, f->fp);
-    png_write_body(png, info, f->img, f->enc, f->depth, f->band, f->nbands);
+    png_write_body(png, info, f->img, f->enc, f->depth, f->band, f->nbands, f->chunk);
     png_destroy_write_struct(&png, &info);
     return 0;
 }
@@ -383,8 +380,19 @@ int image_png_write(FILE *fp, const Image *img, const ImageWriteOptions *opt, ch
     } else if (compress_image(img, opt, depth, alpha, band, nbands, err, errlen) != 0) {
         status = -1;
     } else {
-        PngFile f = { fp, img, &enc, depth, band, nbands, { err, errlen } };
-        status = png_write_file(&f);
+        /* the chunks' room made here, so that libpng's longjmp on a failed
+         * write leaks nothing */
+        size_t most = 0;
+        for (int b = 0; b < nbands; b++)
+            most = band[b].zlen > most ? band[b].zlen : most;
+        PngFile f = { fp, img, &enc, depth, band, nbands, malloc(most + 6), { err, errlen } };
+        if (!f.chunk) {
+            image_set_error(err, errlen, "out of memory");
+            status = -1;
+        } else {
+            status = png_write_file(&f);
+        }
+        free(f.chunk);
     }
     for (int b = 0; band && b < nbands; b++)
         free(band[b].z);
