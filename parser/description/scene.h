@@ -310,7 +310,20 @@ typedef enum {
     OBJ_DISC,
     OBJ_CONE,            /* also cylinder (equal radii) */
     OBJ_TORUS,
+    /* CSG over solids (the analytic shapes and other CSG): children in
+     * u.csg as a union's; a difference's children after the first are
+     * taken away from it (POV-Ray: inverted, then intersected). */
+    OBJ_INTERSECTION,
+    OBJ_DIFFERENCE,
+    OBJ_MERGE,
 } ObjectKind;
+
+/* Whether objects of this kind hold children (u.csg): a union or a CSG
+ * operation. */
+static inline int scene_object_has_children(ObjectKind k)
+{
+    return k == OBJ_UNION || k == OBJ_INTERSECTION || k == OBJ_DIFFERENCE || k == OBJ_MERGE;
+}
 
 typedef struct {
     int v[3];       /* vertex indices */

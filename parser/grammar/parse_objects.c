@@ -1,5 +1,5 @@
 /* Objects: polygon, triangle, smooth_triangle, mesh, mesh2, box, plane,
- * sphere, disc, cylinder, cone, torus, union and object{}, with their modifiers. Every object keeps its own
+ * sphere, disc, cylinder, cone, torus, union, intersection, difference, merge and object{}, with their modifiers. Every object keeps its own
  * transform, composed from the transforms written on it in order; a union's
  * children keep theirs (the engine applies child, then parent). */
 #include <math.h>
@@ -780,10 +780,51 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
 
 /* ---- union and object{} ------------------------------------------------- */
 
-static SceneObject *parse_union(Parser *p, const Token *kw)
+/* Whether o is a solid hstrace can take as a part of a CSG operation:
+ * an analytic shape, or a union or CSG operation of such (POV-Ray takes
+ * any object, those without an inside (triangles, polygons, meshes
+ * without inside_vector) being outside everywhere). */
+static const SceneObject *first_non_solid(const SceneObject *o)
 {
-    tok_begin_block(p, "union");
-    SceneObject *o = new_object(p, OBJ_UNION, kw);
+    switch (o->kind) {
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: return NULL;
+    case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
+        /* the parser bounds the depth (SceneObject.depth) */
+        for (int i = 0; i < o->u.csg.nchildren; i++) {
+            const SceneObject *c = first_non_solid(o->u.csg.children[i]);
+            if (c)
+                return c;
+        }
+        return NULL;
+    default: return o;
+    }
+}
+
+static const char *object_kind_name(ObjectKind k)
+{
+    switch (k) {
+    case OBJ_POLYGON: return "polygon";
+    case OBJ_TRIANGLE: return "triangle";
+    case OBJ_MESH: return "mesh";
+    case OBJ_BOX: return "box";
+    case OBJ_PLANE: return "plane";
+    case OBJ_UNION: return "union";
+    case OBJ_SPHERE: return "sphere";
+    case OBJ_DISC: return "disc";
+    case OBJ_CONE: return "cone";
+    case OBJ_TORUS: return "torus";
+    case OBJ_INTERSECTION: return "intersection";
+    case OBJ_DIFFERENCE: return "difference";
+    case OBJ_MERGE: return "merge";
+    }
+    return "object";
+}
+
+/* union, intersection, difference and merge: `name` { OBJECTS MODIFIERS }. */
+static SceneObject *parse_children(Parser *p, const Token *kw, ObjectKind kind, const char *name)
+{
+    tok_begin_block(p, name);
+    SceneObject *o = new_object(p, kind, kw);
     TempVec children, lights, slots;
     tok_tvec_init(&children, sizeof(SceneObject *));
     tok_tvec_init(&lights, sizeof(SceneLight));
@@ -815,7 +856,20 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
         if (o->u.csg.children[i]->depth + 1 > o->depth)
             o->depth = o->u.csg.children[i]->depth + 1;
     if (o->depth > MAX_NESTING)
-        tok_fail(p, kw->pos, "nested too deeply (unions inside unions more than %d levels)", MAX_NESTING);
+        tok_fail(p, kw->pos, "nested too deeply (%s inside %s more than %d levels)",
+                 kind == OBJ_UNION ? "unions" : "CSG objects", kind == OBJ_UNION ? "unions" : "one another",
+                 MAX_NESTING);
+    if (kind != OBJ_UNION) {
+        const SceneObject *odd = first_non_solid(o);
+        if (odd) {
+            char what[96];
+            snprintf(what, sizeof what, "'%s' as a part of '%s'", object_kind_name(odd->kind), name);
+            tok_unsupported_at(p, odd->pos, what);
+        }
+        /* POV-Ray renders it, with a warning (Parse_CSG) */
+        if (children.n < 2)
+            tok_warning(p, kw->pos, "should have at least 2 objects in csg");
+    }
     if (lights.n) {
         SceneLight *l = tok_scene_alloc(p, sizeof(SceneLight) * (size_t)lights.n);
         int *slot = tok_scene_alloc(p, sizeof(int) * (size_t)lights.n);
@@ -825,7 +879,7 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
         o->u.csg.lights = l;
         o->u.csg.light_slot = slot;
     }
-    parse_object_mods(p, o, "union");
+    parse_object_mods(p, o, name);
     return o;
 }
 
@@ -865,7 +919,7 @@ static SceneObject *copy_declared_object(Parser *p, const SceneObject *declared)
  * Order as POV-Ray's Post_Process: depth first, as written. */
 void gram_instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth)
 {
-    if (o->kind != OBJ_UNION || depth > MAX_NESTING)
+    if (!scene_object_has_children(o->kind) || depth > MAX_NESTING)
         return;
     Transform world = o->transform;
     transform_compose(&world, outer);
@@ -934,7 +988,8 @@ static int object_id_follows(Parser *p, int kw)
     if (!s)
         return 0;
     ValueKind k = s->value.kind;
-    return k == VAL_OBJECT || k == VAL_LIGHT || (k == VAL_UNSUPPORTED && kw == KW_union);
+    return k == VAL_OBJECT || k == VAL_LIGHT ||
+           (k == VAL_UNSUPPORTED && (kw == KW_union || kw == KW_intersection || kw == KW_difference || kw == KW_merge));
 }
 
 /* A declared object or light named on its own, as LDCad ends its model
@@ -999,7 +1054,10 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_cylinder: *obj = parse_cone(p, &kw, 1); break;
     case KW_cone: *obj = parse_cone(p, &kw, 0); break;
     case KW_torus: *obj = parse_torus(p, &kw); break;
-    case KW_union: *obj = parse_union(p, &kw); break;
+    case KW_union: *obj = parse_children(p, &kw, OBJ_UNION, "union"); break;
+    case KW_intersection: *obj = parse_children(p, &kw, OBJ_INTERSECTION, "intersection"); break;
+    case KW_difference: *obj = parse_children(p, &kw, OBJ_DIFFERENCE, "difference"); break;
+    case KW_merge: *obj = parse_children(p, &kw, OBJ_MERGE, "merge"); break;
     case KW_object: parse_object_statement(p, &kw, obj, light); break;
     case KW_light_source: *light = gram_light_source(p, &kw); break;
     default: tok_unsupported(p, &kw);

@@ -60,6 +60,11 @@ typedef struct {
     const SceneObject **proto_mesh;
     int cap_prototypes, cap_instances, cap_instance_materials;
     int slots;            /* making prototypes: polygons' materials are slots, which read no uv */
+    /* The parts of CSG objects, made while csg_depth > 0: they follow the
+     * world's shapes once all are made (World.nparts). */
+    Shape *parts;
+    int nparts, cap_parts, csg_depth;
+    char message[200];    /* what failed, where it is not memory */
 } Builder;
 
 /* Grows *array (of `size`-byte items) so that index `need` fits. */
@@ -840,6 +845,32 @@ static int flatten_plane(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+/* A new shape: one of the world's, or inside a CSG object one of the
+ * parts. */
+static Shape *new_shape(Builder *b, ShapeKind kind)
+{
+    World *w = b->w;
+    Shape *s;
+    if (b->csg_depth > 0) {
+        if (grow((void **)&b->parts, &b->cap_parts, b->nparts, sizeof *b->parts)) {
+            b->failed = 1;
+            return NULL;
+        }
+        s = &b->parts[b->nparts++];
+    } else {
+        if (GROW(b, shapes, cap_shapes, w->nshapes))
+            return NULL;
+        s = &w->shapes[w->nshapes++];
+    }
+    memset(s, 0, sizeof *s);
+    s->kind = kind;
+    s->is_part = b->csg_depth > 0;
+    s->subtree = 1;
+    /* the most surfaces of it a line crosses */
+    s->max_hits = kind == SHAPE_SPHERE ? 2 : kind == SHAPE_DISC ? 1 : 4;
+    return s;
+}
+
 /* A sphere as POV-Ray keeps it: while every transform on the way to world
  * is a translation, rotation or uniform scale, its centre and radius are
  * moved (Sphere::Translate, Rotate, Scale); after any other, it is an
@@ -847,11 +878,9 @@ static int flatten_plane(Builder *b, const SceneObject *o, const Inherited *in, 
 static int flatten_sphere(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
     World *w = b->w;
-    if (GROW(b, shapes, cap_shapes, w->nshapes))
+    Shape *s = new_shape(b, SHAPE_SPHERE);
+    if (!s)
         return -1;
-    Shape *s = &w->shapes[w->nshapes++];
-    memset(s, 0, sizeof *s);
-    s->kind = SHAPE_SPHERE;
     s->material = material;
     s->inverse = in->inverse;
     s->to_world = in->transform;
@@ -874,12 +903,9 @@ static int flatten_sphere(Builder *b, const SceneObject *o, const Inherited *in,
  * object's), then by the object's transforms. */
 static Shape *add_shape(Builder *b, ShapeKind kind, const Inherited *in, const Transform *frame, int material)
 {
-    World *w = b->w;
-    if (GROW(b, shapes, cap_shapes, w->nshapes))
+    Shape *s = new_shape(b, kind);
+    if (!s)
         return NULL;
-    Shape *s = &w->shapes[w->nshapes++];
-    memset(s, 0, sizeof *s);
-    s->kind = kind;
     s->material = material;
     s->inverse = in->inverse;
     s->transformed = 1;
@@ -972,6 +998,61 @@ static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
+
+/* A CSG object (csg.h) and, after it, its parts; a part is any shape or
+ * CSG object (the parser refuses other kinds), made with what it inherits
+ * from the CSG object as a union's children are. POV-Ray's rewriting is
+ * done here: a difference's later parts inverted, an inverted CSG object
+ * the other operation over its inverted parts (in->inverse, passed down). */
+static int flatten_csg(Builder *b, const SceneObject *o, const Inherited *in, const Scene *scene, int depth,
+                       int material)
+{
+    CsgOp op = o->kind == OBJ_MERGE ? CSG_MERGE : o->kind == OBJ_UNION ? CSG_UNION : CSG_INTERSECTION;
+    if (in->inverse) /* POV-Ray's CSGUnion::Invert, CSGIntersection::Invert */
+        op = op == CSG_INTERSECTION ? CSG_MERGE : CSG_INTERSECTION;
+    const int top = b->csg_depth == 0;
+    Shape *s = new_shape(b, SHAPE_CSG);
+    if (!s)
+        return -1;
+    const int index = top ? b->w->nshapes - 1 : b->nparts - 1;
+    const int first = b->nparts;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->u.csg.op = op;
+    s->u.csg.nparts = o->u.csg.nchildren;
+    s->u.csg.first_part = first;
+    b->csg_depth++;
+    for (int i = 0; i < o->u.csg.nchildren; i++) {
+        Inherited part = *in;
+        if (o->kind == OBJ_DIFFERENCE && i > 0)
+            part.inverse ^= 1; /* taken away: inverted, then intersected */
+        if (flatten_object(b, o->u.csg.children[i], &part, scene, depth + 1)) {
+            b->csg_depth--;
+            return -1;
+        }
+    }
+    b->csg_depth--;
+    s = top ? &b->w->shapes[index] : &b->parts[index];
+    if (!top)
+        s->subtree = b->nparts - index;
+    /* its parts, where they are while building (set again once final) */
+    s->u.csg.parts = b->parts + first;
+    int max_hits = 0;
+    const Shape *c = s->u.csg.parts;
+    for (int k = 0; k < s->u.csg.nparts; k++, c += c->subtree)
+        max_hits += c->max_hits;
+    if (max_hits > SHAPE_MAX_HITS) {
+        snprintf(b->message, sizeof b->message,
+                 "this CSG object's parts have up to %d surfaces along a line; hstrace takes %d at most", max_hits,
+                 SHAPE_MAX_HITS);
+        return -1;
+    }
+    s->max_hits = max_hits;
+    shape_placed(b->w, s);
+    return 0;
+}
+
 /* ---- instancing: a mesh placed two or more times, kept once ------------- */
 
 /* The fewest faces a shared mesh is instanced with: below, its polygons
@@ -985,7 +1066,7 @@ static int count_mesh_uses(Builder *b, const SceneObject *o, int depth)
 {
     if (depth > 1000)
         return 0;
-    if (o->kind == OBJ_UNION) {
+    if (scene_object_has_children(o->kind)) {
         for (int i = 0; i < o->u.csg.nchildren; i++)
             if (count_mesh_uses(b, o->u.csg.children[i], depth + 1))
                 return -1;
@@ -1189,7 +1270,7 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
         b->timed_out = 1;
         return -1;
     }
-    if (o->kind == OBJ_UNION) {
+    if (o->kind == OBJ_UNION && b->csg_depth == 0) { /* a union inside CSG is one of its solids */
         for (int i = 0; i < o->u.csg.nchildren; i++)
             if (flatten_object(b, o->u.csg.children[i], &in, scene, depth + 1))
                 return -1;
@@ -1209,7 +1290,10 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
     case OBJ_DISC: return flatten_disc(b, o, &in, material);
     case OBJ_CONE: return flatten_cone(b, o, &in, material);
     case OBJ_TORUS: return flatten_torus(b, o, &in, material);
-    case OBJ_UNION: break;
+    case OBJ_UNION:
+    case OBJ_INTERSECTION:
+    case OBJ_DIFFERENCE:
+    case OBJ_MERGE: return flatten_csg(b, o, &in, scene, depth, material);
     }
     return 0;
 }
@@ -1235,8 +1319,27 @@ static void build_lights(World *w, const Scene *scene)
     }
 }
 
+/* The CSG objects' parts after the world's shapes (World.nparts), and
+ * each CSG object told where its parts are now. */
+static int place_parts(Builder *b)
+{
+    World *w = b->w;
+    Shape *all = big_realloc(w->shapes, sizeof *all * ((size_t)w->nshapes + (size_t)b->nparts));
+    if (!all)
+        return -1;
+    memcpy(all + w->nshapes, b->parts, sizeof *all * (size_t)b->nparts);
+    w->shapes = all;
+    w->nparts = b->nparts;
+    b->cap_shapes = w->nshapes + b->nparts;
+    for (int i = 0; i < w->nshapes + w->nparts; i++)
+        if (all[i].kind == SHAPE_CSG)
+            all[i].u.csg.parts = all + w->nshapes + all[i].u.csg.first_part;
+    return 0;
+}
+
 static void builder_free(Builder *b)
 {
+    free(b->parts);
     ptr_map_free(&b->maps_built);
     ptr_map_free(&b->mesh_uses);
     ptr_map_free(&b->mesh_proto);
@@ -1320,14 +1423,22 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
                          "building the world from the scene took more than the %g s of --max-parse-seconds (the "
                          "parse and the build together), in this object",
                          limits->max_seconds);
+            else if (b.message[0])
+                snprintf(err->message, sizeof err->message, "%s", b.message);
             else
                 snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
-            err->over_budget = b.timed_out;
+            err->over_budget = b.timed_out || b.message[0];
             err->pos = scene->objects[i]->pos;
             builder_free(&b);
             world_free(w);
             return -1;
         }
+    }
+    if (b.nparts > 0 && place_parts(&b)) {
+        snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
+        builder_free(&b);
+        world_free(w);
+        return -1;
     }
     for (int i = 0; i < w->npolygons; i++)
         w->nsee_through += !w->materials[w->polygons[i].material].opaque;

@@ -5,7 +5,9 @@
 #include "shape.h"
 
 #include <math.h>
+#include <stddef.h>
 
+#include "csg.h"
 #include "polynomial.h"
 
 #define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
@@ -455,6 +457,9 @@ void shape_compute_bounds(Shape *s)
 {
     Vec3 lo, hi;
     switch (s->kind) {
+    case SHAPE_CSG:
+        csg_compute_bounds(s);
+        return;
     case SHAPE_SPHERE:
         sphere_local_bounds(s, &lo, &hi);
         break;
@@ -492,7 +497,7 @@ void shape_compute_bounds(Shape *s)
     s->bbox_max = whi;
 }
 
-int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     /* POV-Ray's rays have unit directions and its tolerances are distances
      * along them: the test runs on the unit direction, and its distances
@@ -508,19 +513,23 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     case SHAPE_DISC: n = disc_all(s, org, u, ulimit, hits); break;
     case SHAPE_CONE: n = cone_all(s, org, u, ulimit, hits); break;
     case SHAPE_TORUS: n = torus_all(s, org, u, ulimit, hits); break;
+    case SHAPE_CSG: n = csg_intersect_all(s, org, u, ulimit, hits); break;
     }
+    if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
+        for (int k = 0; k < n; k++)
+            hits[k].leaf = NULL;
     if (len != 1.0)
         for (int k = 0; k < n; k++)
             hits[k].t /= len;
     return n;
 }
 
-double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, int *part)
+double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hit)
 {
     ShapeHit hits[SHAPE_MAX_HITS];
     if (shape_intersect_all(s, org, dir, tmax, hits) == 0)
         return -1.0;
-    *part = hits[0].part;
+    *hit = hits[0];
     return hits[0].t;
 }
 
@@ -531,6 +540,7 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_DISC: return disc_inside(s, p);
     case SHAPE_CONE: return cone_inside(s, p);
     case SHAPE_TORUS: return torus_inside(s, p);
+    case SHAPE_CSG: return csg_inside(s, p);
     }
     return 0;
 }
@@ -542,6 +552,7 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_DISC: return s->u.disc.normal;
     case SHAPE_CONE: return cone_normal(s, p, part);
     case SHAPE_TORUS: return torus_normal(s, p);
+    case SHAPE_CSG: break; /* its crossings are on its primitives (ShapeHit.leaf) */
     }
     return v3(0.0, 1.0, 0.0);
 }
@@ -553,6 +564,7 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_TORUS: return torus_uv(s, p);
     case SHAPE_DISC:
     case SHAPE_CONE: break; /* no mapping of their own in POV-Ray 3.7 */
+    case SHAPE_CSG: break;  /* its crossings are on its primitives */
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }

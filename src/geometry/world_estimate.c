@@ -89,6 +89,9 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
         b += sizeof(Shape) + HIERARCHY_BYTES_PER_POLYGON; /* an item of the shapes' own hierarchy */
         break;
     case OBJ_UNION:
+    case OBJ_INTERSECTION:
+    case OBJ_DIFFERENCE:
+    case OBJ_MERGE:
         break;
     }
     *bytes = b + n * HIERARCHY_BYTES_PER_POLYGON;
@@ -104,7 +107,7 @@ int world_estimate_object(WorldEstimate *e, const SceneObject *o, double *bytes,
         return 0;
     }
     double b = 0.0, n = 0.0;
-    if (o->kind == OBJ_UNION) {
+    if (scene_object_has_children(o->kind)) {
         /* the parser keeps unions 200 levels deep at most (SceneObject.depth) */
         for (int i = 0; i < o->u.csg.nchildren; i++) {
             double cb, cn;
@@ -119,5 +122,5 @@ int world_estimate_object(WorldEstimate *e, const SceneObject *o, double *bytes,
     *bytes = b;
     *polygons = n;
     /* a union is what copies share; an object of another kind costs no more to count again */
-    return o->kind == OBJ_UNION ? remember(e, o, b, n) : 0;
+    return scene_object_has_children(o->kind) ? remember(e, o, b, n) : 0;
 }
