@@ -11,7 +11,7 @@ static int crossing_counts(const Shape *s, const Shape *crossed, Vec3 p)
 {
     if (s->u.csg.op == CSG_UNION)
         return 1;
-    const int want_inside = s->u.csg.op == CSG_INTERSECTION;
+    const int want_inside = s->u.csg.op != CSG_MERGE;
     const Shape *c = s->u.csg.parts;
     for (int k = 0; k < s->u.csg.nparts; k++, c += c->subtree)
         if (c != crossed && shape_inside(c, p) != want_inside)
@@ -23,7 +23,9 @@ int csg_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit 
 {
     int n = 0;
     const Shape *c = s->u.csg.parts;
-    for (int k = 0; k < s->u.csg.nparts; k++, c += c->subtree) {
+    /* a clipped object: its own crossings alone */
+    const int crossed = s->u.csg.op == CSG_CLIP ? 1 : s->u.csg.nparts;
+    for (int k = 0; k < crossed; k++, c += c->subtree) {
         if (!shape_box_hit(c, org, dir, tmax))
             continue;
         /* the part's crossings go where the kept ones end, and are kept
@@ -53,7 +55,7 @@ int csg_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit 
 
 int csg_inside(const Shape *s, Vec3 p)
 {
-    const int all = s->u.csg.op == CSG_INTERSECTION;
+    const int all = s->u.csg.op == CSG_INTERSECTION || s->u.csg.op == CSG_CLIP;
     const Shape *c = s->u.csg.parts;
     for (int k = 0; k < s->u.csg.nparts; k++, c += c->subtree) {
         int in = shape_inside(c, p);
@@ -69,11 +71,14 @@ void csg_compute_bounds(Shape *s)
 {
     Vec3 lo = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL), hi = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
     const Shape *c = s->u.csg.parts;
-    for (int k = 0; k < s->u.csg.nparts; k++, c += c->subtree) {
+    /* every crossing is on a part: within the box around them (around
+     * the first alone for a clipped object, whose crossings are its) */
+    const int crossed = s->u.csg.op == CSG_CLIP ? 1 : s->u.csg.nparts;
+    for (int k = 0; k < crossed && k < s->u.csg.nparts; k++, c += c->subtree) {
         lo = v3_min(lo, c->bbox_min);
         hi = v3_max(hi, c->bbox_max);
     }
-    if (s->u.csg.op == CSG_INTERSECTION) {
+    if (s->u.csg.op == CSG_INTERSECTION || s->u.csg.op == CSG_CLIP) {
         /* every crossing kept is inside each part that is not inverted,
          * so within its box */
         Vec3 olo = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL), ohi = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);

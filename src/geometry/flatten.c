@@ -1000,6 +1000,49 @@ static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, 
 
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
+/* A CSG object's node: one of the world's shapes, or of the parts inside
+ * another; its parts are made next (csg_depth raised). */
+static Shape *begin_csg(Builder *b, CsgOp op, const Inherited *in, int material, int nparts, int *index)
+{
+    const int top = b->csg_depth == 0;
+    Shape *s = new_shape(b, SHAPE_CSG);
+    if (!s)
+        return NULL;
+    *index = top ? b->w->nshapes - 1 : b->nparts - 1;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->u.csg.op = op;
+    s->u.csg.nparts = nparts;
+    s->u.csg.first_part = b->nparts;
+    return s;
+}
+
+/* The CSG object at `index` once its parts are made: how far its parts
+ * reach, how many crossings it can have, its box. */
+static int finish_csg(Builder *b, int top, int index, int first)
+{
+    Shape *s = top ? &b->w->shapes[index] : &b->parts[index];
+    if (!top)
+        s->subtree = b->nparts - index;
+    /* its parts, where they are while building (set again once final) */
+    s->u.csg.parts = b->parts + first;
+    int max_hits = 0;
+    const Shape *c = s->u.csg.parts;
+    /* a clipped object's crossings are its first part's alone */
+    const int crossed = s->u.csg.op == CSG_CLIP ? 1 : s->u.csg.nparts;
+    for (int k = 0; k < crossed; k++, c += c->subtree)
+        max_hits += c->max_hits;
+    if (max_hits > SHAPE_MAX_HITS) {
+        snprintf(b->message, sizeof b->message,
+                 "this CSG object's parts have up to %d surfaces along a line; hstrace takes %d at most", max_hits,
+                 SHAPE_MAX_HITS);
+        return -1;
+    }
+    s->max_hits = max_hits;
+    shape_placed(b->w, s);
+    return 0;
+}
+
 /* A CSG object (csg.h) and, after it, its parts; a part is any shape or
  * CSG object (the parser refuses other kinds), made with what it inherits
  * from the CSG object as a union's children are. POV-Ray's rewriting is
@@ -1012,16 +1055,10 @@ static int flatten_csg(Builder *b, const SceneObject *o, const Inherited *in, co
     if (in->inverse) /* POV-Ray's CSGUnion::Invert, CSGIntersection::Invert */
         op = op == CSG_INTERSECTION ? CSG_MERGE : CSG_INTERSECTION;
     const int top = b->csg_depth == 0;
-    Shape *s = new_shape(b, SHAPE_CSG);
-    if (!s)
+    int index;
+    if (!begin_csg(b, op, in, material, o->u.csg.nchildren, &index))
         return -1;
-    const int index = top ? b->w->nshapes - 1 : b->nparts - 1;
-    const int first = b->nparts;
-    s->material = material;
-    s->inverse = in->inverse;
-    s->u.csg.op = op;
-    s->u.csg.nparts = o->u.csg.nchildren;
-    s->u.csg.first_part = first;
+    const int first = b->nparts; /* its parts follow it */
     b->csg_depth++;
     for (int i = 0; i < o->u.csg.nchildren; i++) {
         Inherited part = *in;
@@ -1033,24 +1070,35 @@ static int flatten_csg(Builder *b, const SceneObject *o, const Inherited *in, co
         }
     }
     b->csg_depth--;
-    s = top ? &b->w->shapes[index] : &b->parts[index];
-    if (!top)
-        s->subtree = b->nparts - index;
-    /* its parts, where they are while building (set again once final) */
-    s->u.csg.parts = b->parts + first;
-    int max_hits = 0;
-    const Shape *c = s->u.csg.parts;
-    for (int k = 0; k < s->u.csg.nparts; k++, c += c->subtree)
-        max_hits += c->max_hits;
-    if (max_hits > SHAPE_MAX_HITS) {
-        snprintf(b->message, sizeof b->message,
-                 "this CSG object's parts have up to %d surfaces along a line; hstrace takes %d at most", max_hits,
-                 SHAPE_MAX_HITS);
+    return finish_csg(b, top, index, first);
+}
+
+static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in, const Scene *scene, int depth);
+
+/* An object clipped_by solids (SceneObject.clips): a CSG_CLIP node, the
+ * object its first part, the clipping solids the others. A clip is not
+ * inverted with the object (POV-Ray's Invert leaves Clip alone) and takes
+ * nothing else of it but its place. */
+static int flatten_clipped(Builder *b, const SceneObject *o, const Inherited *in, const Scene *scene, int depth)
+{
+    const SceneTexture *tex = in->texture ? in->texture : &scene->default_texture;
+    int material = add_material(b, in, tex, &in->texture_space, o->pos);
+    if (material < 0)
         return -1;
+    const int top = b->csg_depth == 0;
+    int index;
+    if (!begin_csg(b, CSG_CLIP, in, material, 1 + o->nclips, &index))
+        return -1;
+    const int first = b->nparts; /* its parts follow it */
+    b->csg_depth++;
+    int failed = flatten_kind(b, o, in, scene, depth);
+    for (int i = 0; !failed && i < o->nclips; i++) {
+        Inherited clip = *in;
+        clip.inverse = 0;
+        failed = flatten_object(b, o->clips[i], &clip, scene, depth + 1);
     }
-    s->max_hits = max_hits;
-    shape_placed(b->w, s);
-    return 0;
+    b->csg_depth--;
+    return failed ? -1 : finish_csg(b, top, index, first);
 }
 
 /* ---- instancing: a mesh placed two or more times, kept once ------------- */
@@ -1270,6 +1318,15 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
         b->timed_out = 1;
         return -1;
     }
+    if (o->nclips > 0)
+        return flatten_clipped(b, o, &in, scene, depth);
+    return flatten_kind(b, o, &in, scene, depth);
+}
+
+/* What o (with what it inherits, `in`) makes, by its kind. */
+static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, const Scene *scene, int depth)
+{
+    const Inherited in = *in_;
     if (o->kind == OBJ_UNION && b->csg_depth == 0) { /* a union inside CSG is one of its solids */
         for (int i = 0; i < o->u.csg.nchildren; i++)
             if (flatten_object(b, o->u.csg.children[i], &in, scene, depth + 1))

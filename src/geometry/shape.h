@@ -18,8 +18,10 @@ typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG } Sh
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
  * difference is an intersection whose later parts are inverted, and an
  * inverted CSG object the other operation over inverted parts. UNION is
- * a union inside a CSG object (a top-level union is flattened). */
-typedef enum { CSG_UNION, CSG_INTERSECTION, CSG_MERGE } CsgOp;
+ * a union inside a CSG object or clipped (a top-level union is
+ * flattened); CLIP an object clipped_by others: its first part, the
+ * others its clipping solids. */
+typedef enum { CSG_UNION, CSG_INTERSECTION, CSG_MERGE, CSG_CLIP } CsgOp;
 
 /* Which part of a shape a crossing is on, where the normal depends on it:
  * a cone's or cylinder's side, its cap (the wide end, +z in its own space)

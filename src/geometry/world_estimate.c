@@ -119,6 +119,14 @@ int world_estimate_object(WorldEstimate *e, const SceneObject *o, double *bytes,
     } else {
         leaf(o, &b, &n);
     }
+    if (o->kind != OBJ_UNION && scene_object_has_children(o->kind))
+        b += sizeof(Shape) + sizeof(Material) + HIERARCHY_BYTES_PER_POLYGON; /* the CSG object's own node */
+    for (int i = 0; i < o->nclips; i++) { /* clipped_by: its solids, and a node over them */
+        double cb, cn;
+        if (world_estimate_object(e, o->clips[i], &cb, &cn))
+            return -1;
+        b += cb + sizeof(Shape) + sizeof(Material);
+    }
     *bytes = b;
     *polygons = n;
     /* a union is what copies share; an object of another kind costs no more to count again */
