@@ -22,7 +22,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="csg-lens csg-bored csg-inverse csg-nested csg-transformed csg-textures csg-eye-inside csg-filter csg-merge csg-clip"
+scenes="csg-lens csg-bored csg-inverse csg-nested csg-transformed csg-textures csg-eye-inside csg-filter csg-merge csg-clip csg-box"
 for s in $scenes; do
     cp "$srcdir/scenes/csg/$s.pov" "$work/$s.pov" || bail "cannot copy scenes/csg/$s.pov"
 done
@@ -47,6 +47,7 @@ csg-filter           4e-4   (2.1e-4)     4 (2)     1 (0)
 # one where it passes the rim where the spheres of the glass merge meet
 csg-merge            4e-4   (1.9e-4)     6 (3)     1 (0)
 csg-clip             1e-5   (1.1e-6)     1 (0)     1 (0)
+csg-box              1e-5   (3.0e-6)     1 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/csg.sh $scenes
@@ -85,13 +86,13 @@ while IFS='|' read -r scene message; do
     check "$message: status 2, FILE:LINE:COLUMN, no image" \
         test "$status $(grep -c "^$work/bad.pov:[0-9]*:[0-9]*: .*$message" "$work/err") $([ -e "$work/bad.png" ] && echo image || echo none)" = "2 1 none"
 done <<'BAD'
-intersection { sphere { 0, 1 } box { 0, 1 } }|'box' as a part of 'intersection' is not supported
+intersection { sphere { 0, 1 } polygon { 4, 0, x, x + y, y } }|'polygon' as a part of 'intersection' is not supported
 difference { sphere { 0, 1 } union { sphere { 0, 1 } triangle { 0, x, y } } }|'triangle' as a part of 'difference' is not supported
 intersection { sphere { 0, 1 } sphere { 0, 2 }|expected
 intersection { #for (I, 1, 17) torus { 1, 0.1 rotate I * x } #end }|hstrace takes 64 at most
 sphere { 0, 1 clipped_by { } }|expected an object in 'clipped_by'
-sphere { 0, 1 clipped_by { box { 0, 1 } } }|'box' in 'clipped_by' is not supported
-box { 0, 1 clipped_by { sphere { 0, 1 } } }|'clipped_by' on a 'box' is not supported
+sphere { 0, 1 clipped_by { triangle { 0, x, y } } }|'triangle' in 'clipped_by' is not supported
+mesh { triangle { 0, x, y } clipped_by { sphere { 0, 1 } } }|'clipped_by' on a 'mesh' is not supported
 sphere { 0, 1 clipped_by { sphere { 0, 2 pigment { rgb 1 } } } }|a texture on an object in 'clipped_by'
 #declare S = sphere { 0, 1 } #for (I, 1, 300) #declare S = sphere { 0, 1 clipped_by { object { S } } } #end object { S }|nested too deeply
 BAD

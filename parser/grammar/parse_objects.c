@@ -43,13 +43,13 @@ static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
 }
 
 /* Whether o is a solid hstrace can take as a part of a CSG operation:
- * an analytic shape, or a union or CSG operation of such (POV-Ray takes
+ * an analytic shape, a box or plane, or a union or CSG operation of such (POV-Ray takes
  * any object, those without an inside (triangles, polygons, meshes
  * without inside_vector) being outside everywhere). */
 static const SceneObject *first_non_solid(const SceneObject *o)
 {
     switch (o->kind) {
-    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: return NULL;
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: return NULL;
     case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
         /* the parser bounds the depth (SceneObject.depth) */
         for (int i = 0; i < o->u.csg.nchildren; i++) {

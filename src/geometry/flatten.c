@@ -1000,6 +1000,69 @@ static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, 
 
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
+/* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
+ * (Parse_Box), moved and scaled with it while no transform on the way
+ * turns or shears it, else reached through its transform. */
+static int flatten_box_part(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Shape *s = new_shape(b, SHAPE_BOX);
+    if (!s)
+        return -1;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->max_hits = 2;
+    s->to_world = in->transform;
+    Vec3 lo = v3_min(o->u.box.corner1, o->u.box.corner2), hi = v3_max(o->u.box.corner1, o->u.box.corner2);
+    const double (*m)[4] = in->transform.m;
+    int axis_aligned = m[0][1] == 0.0 && m[0][2] == 0.0 && m[1][0] == 0.0 && m[1][2] == 0.0 && m[2][0] == 0.0 &&
+                       m[2][1] == 0.0;
+    s->transformed = !axis_aligned;
+    if (axis_aligned) {
+        Vec3 a = transform_point(&in->transform, lo), c = transform_point(&in->transform, hi);
+        lo = v3_min(a, c);
+        hi = v3_max(a, c);
+    }
+    s->u.box.lo = lo;
+    s->u.box.hi = hi;
+    shape_placed(b->w, s);
+    return 0;
+}
+
+/* A plane as a part of a CSG object: its solid the half-space below it
+ * (Plane::Inside), the normal and distance carried through translations,
+ * rotations and scales as POV-Ray's Plane keeps them, a matrix or
+ * transform { } kept as its transform; inverse negates both. */
+static int flatten_plane_part(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Vec3 n = o->u.plane.normal;
+    double len = v3_length(n);
+    if (!(len > 0.0))
+        return 0;
+    Shape *s = new_shape(b, SHAPE_PLANE);
+    if (!s)
+        return -1;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->max_hits = 1;
+    s->to_world = in->transform;
+    n = v3_scale(n, 1.0 / len);
+    double distance = -o->u.plane.distance;
+    s->transformed = in->general_transform;
+    if (!s->transformed) {
+        Vec3 on = transform_point(&in->transform, v3_scale(n, -distance));
+        n = v3_normalize(transform_normal(&in->transform, n));
+        distance = -v3_dot(on, n);
+    }
+    if (in->inverse) {
+        n = v3_neg(n);
+        distance = -distance;
+    }
+    s->u.plane.normal = n;
+    s->u.plane.distance = distance;
+    shape_placed(b->w, s);
+    return 0;
+}
+
 /* A CSG object's node: one of the world's shapes, or of the parts inside
  * another; its parts are made next (csg_depth raised). */
 static Shape *begin_csg(Builder *b, CsgOp op, const Inherited *in, int material, int nparts, int *index)
@@ -1341,8 +1404,10 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_POLYGON: return flatten_polygon(b, o, &in, material);
     case OBJ_TRIANGLE: return flatten_triangle(b, o, &in, material);
     case OBJ_MESH: return b->instancing ? instance_mesh(b, o, &in, material) : flatten_mesh(b, o, &in, material);
-    case OBJ_BOX: return flatten_box(b, o, &in, material);
-    case OBJ_PLANE: return flatten_plane(b, o, &in, material);
+    /* inside a CSG object a box and a plane are solids, else surfaces */
+    case OBJ_BOX: return b->csg_depth > 0 ? flatten_box_part(b, o, &in, material) : flatten_box(b, o, &in, material);
+    case OBJ_PLANE:
+        return b->csg_depth > 0 ? flatten_plane_part(b, o, &in, material) : flatten_plane(b, o, &in, material);
     case OBJ_SPHERE: return flatten_sphere(b, o, &in, material);
     case OBJ_DISC: return flatten_disc(b, o, &in, material);
     case OBJ_CONE: return flatten_cone(b, o, &in, material);

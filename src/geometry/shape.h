@@ -13,7 +13,10 @@
 #include "transform.h"
 #include "vecmath.h"
 
-typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG } ShapeKind;
+/* SHAPE_BOX and SHAPE_PLANE are POV-Ray's box and plane as parts of CSG
+ * objects (csg.h), where their inside matters; elsewhere a box is six
+ * polygons and a plane an InfinitePlane (world.h). */
+typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE } ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
  * difference is an intersection whose later parts are inverted, and an
@@ -27,6 +30,10 @@ typedef enum { CSG_UNION, CSG_INTERSECTION, CSG_MERGE, CSG_CLIP } CsgOp;
  * a cone's or cylinder's side, its cap (the wide end, +z in its own space)
  * or its base (POV-Ray's SIDE_HIT, CAP_HIT, BASE_HIT). */
 enum { SHAPE_SIDE = 0, SHAPE_CAP = 1, SHAPE_BASE = 2 };
+
+/* A box's sides as a crossing's part (POV-Ray's SIDE_X_0 ... SIDE_Z_1;
+ * 0: none decided, POV-Ray's own initial value). */
+enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_SIDE_Z1 };
 
 /* The most surfaces one ray can cross on one shape: four on a torus, the
  * sum of its parts' on a CSG object, which the world's build keeps within
@@ -96,6 +103,20 @@ struct Shape {
             double major, minor;
             int sturm;
         } torus;
+        /* A box between its corners lo <= hi, in world space or in its own
+         * where transformed (POV-Ray's bounds, moved and scaled with the
+         * box until a rotation or matrix gives it a transform). */
+        struct {
+            Vec3 lo, hi;
+        } box;
+        /* A plane's solid: dot(p, normal) + distance < EPSILON (POV-Ray's
+         * Normal_Vector and Distance, the negated d of plane { N, d };
+         * inverse negates both, as Plane::Invert), in world space or its
+         * own where transformed. */
+        struct {
+            Vec3 normal;
+            double distance;
+        } plane;
         /* A CSG object: nparts parts, the first at `parts` (the next at
          * parts + parts->subtree ...), set once World.shapes is final. */
         struct {
