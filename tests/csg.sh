@@ -22,7 +22,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="csg-lens csg-bored csg-inverse csg-nested csg-transformed csg-textures csg-eye-inside csg-filter csg-merge csg-clip csg-box"
+scenes="csg-lens csg-bored csg-inverse csg-nested csg-transformed csg-textures csg-eye-inside csg-filter csg-merge csg-clip csg-box csg-area csg-unbounded"
 for s in $scenes; do
     cp "$srcdir/scenes/csg/$s.pov" "$work/$s.pov" || bail "cannot copy scenes/csg/$s.pov"
 done
@@ -48,6 +48,8 @@ csg-filter           4e-4   (2.1e-4)     4 (2)     1 (0)
 csg-merge            4e-4   (1.9e-4)     6 (3)     1 (0)
 csg-clip             1e-5   (1.1e-6)     1 (0)     1 (0)
 csg-box              1e-5   (3.0e-6)     1 (0)     1 (0)
+csg-area             1e-5   (4.6e-6)     1 (0)     1 (0)
+csg-unbounded        1e-5   (9.9e-7)     1 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/csg.sh $scenes

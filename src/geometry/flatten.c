@@ -845,6 +845,8 @@ static int flatten_plane(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+static void shape_placed(Builder *b, Shape *s);
+
 /* A new shape: one of the world's, or inside a CSG object one of the
  * parts. */
 static Shape *new_shape(Builder *b, ShapeKind kind)
@@ -877,7 +879,6 @@ static Shape *new_shape(Builder *b, ShapeKind kind)
  * ellipsoid: the sphere as written, reached through its transform. */
 static int flatten_sphere(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
-    World *w = b->w;
     Shape *s = new_shape(b, SHAPE_SPHERE);
     if (!s)
         return -1;
@@ -893,9 +894,7 @@ static int flatten_sphere(Builder *b, const SceneObject *o, const Inherited *in,
         s->u.sphere.center = transform_point(&in->transform, o->u.sphere.center);
         s->u.sphere.radius = o->u.sphere.radius * transform_similarity_scale(&in->transform);
     }
-    shape_compute_bounds(s);
-    w->bounds_min = v3_min(w->bounds_min, s->bbox_min);
-    w->bounds_max = v3_max(w->bounds_max, s->bbox_max);
+    shape_placed(b, s);
     return 0;
 }
 
@@ -914,11 +913,17 @@ static Shape *add_shape(Builder *b, ShapeKind kind, const Inherited *in, const T
     return s;
 }
 
-static void shape_placed(World *w, Shape *s)
+static void shape_placed(Builder *b, Shape *s)
 {
     shape_compute_bounds(s);
-    w->bounds_min = v3_min(w->bounds_min, s->bbox_min);
-    w->bounds_max = v3_max(w->bounds_max, s->bbox_max);
+    /* The world's box holds the hierarchy's shapes: a part lies within its
+     * CSG object's box, and a CSG object of half-spaces without bounds is
+     * left out as an infinite plane is. */
+    if (b->csg_depth > 0 || !(isfinite(s->bbox_min.x) && isfinite(s->bbox_min.y) && isfinite(s->bbox_min.z) &&
+                              isfinite(s->bbox_max.x) && isfinite(s->bbox_max.y) && isfinite(s->bbox_max.z)))
+        return;
+    b->w->bounds_min = v3_min(b->w->bounds_min, s->bbox_min);
+    b->w->bounds_max = v3_max(b->w->bounds_max, s->bbox_max);
 }
 
 /* A disc: the unit disc of its own frame (Disc::Compute_Disc), its
@@ -933,7 +938,7 @@ static int flatten_disc(Builder *b, const SceneObject *o, const Inherited *in, i
     s->u.disc.outer2 = o->u.disc.radius * o->u.disc.radius;
     s->u.disc.inner2 = o->u.disc.hole * o->u.disc.hole;
     s->u.disc.normal = v3_normalize(transform_normal(&in->transform, o->u.disc.normal));
-    shape_placed(b->w, s);
+    shape_placed(b, s);
     return 0;
 }
 
@@ -978,7 +983,7 @@ static int flatten_cone(Builder *b, const SceneObject *o, const Inherited *in, i
     s->u.cone.cylinder = cylinder;
     s->u.cone.closed = !o->u.cone.open;
     s->u.cone.dist = dist;
-    shape_placed(b->w, s);
+    shape_placed(b, s);
     return 0;
 }
 
@@ -994,7 +999,7 @@ static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, 
     s->u.torus.major = o->u.torus.major;
     s->u.torus.minor = o->u.torus.minor;
     s->u.torus.sturm = o->sturm;
-    shape_placed(b->w, s);
+    shape_placed(b, s);
     return 0;
 }
 
@@ -1024,7 +1029,7 @@ static int flatten_box_part(Builder *b, const SceneObject *o, const Inherited *i
     }
     s->u.box.lo = lo;
     s->u.box.hi = hi;
-    shape_placed(b->w, s);
+    shape_placed(b, s);
     return 0;
 }
 
@@ -1059,7 +1064,7 @@ static int flatten_plane_part(Builder *b, const SceneObject *o, const Inherited 
     }
     s->u.plane.normal = n;
     s->u.plane.distance = distance;
-    shape_placed(b->w, s);
+    shape_placed(b, s);
     return 0;
 }
 
@@ -1102,7 +1107,7 @@ static int finish_csg(Builder *b, int top, int index, int first)
         return -1;
     }
     s->max_hits = max_hits;
-    shape_placed(b->w, s);
+    shape_placed(b, s);
     return 0;
 }
 
