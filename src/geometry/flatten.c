@@ -1,7 +1,10 @@
 /* Flattening: the scene description's object tree becomes world-space
  * polygons. Unions pass their transform, texture, interior and flags down;
  * boxes become six quads; mesh faces become triangles; planes stay infinite
- * and are kept apart (they cannot go into a finite grid). */
+ * and are kept apart (they cannot go into a finite grid). The curved
+ * objects become shapes (shape.h), and a CSG object or clipped object a
+ * shape whose parts follow the world's shapes (csg.h): inside it a box or
+ * a plane is a solid shape, not polygons. */
 #include "world.h"
 
 #include <stdint.h>
