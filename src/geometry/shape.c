@@ -35,7 +35,7 @@ static int sphere_roots(Vec3 org, Vec3 unit_dir, Vec3 center, double radius2, do
     return 1;
 }
 
-static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 o = org, d = dir;
     if (s->transformed) {
@@ -135,7 +135,7 @@ static void sphere_local_bounds(const Shape *s, Vec3 *lo, Vec3 *hi)
 
 /* Disc::Intersect: the crossing of its plane (z = 0 of its own space)
  * between the two radii. */
-static int disc_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int disc_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 p = inverse_transform_point(&s->to_world, org);
     Vec3 d = inverse_transform_direction(&s->to_world, dir);
@@ -189,7 +189,7 @@ static int cone_keep(const Shape *s, ShapeHit *h, double t, double len, double t
 }
 
 /* Cone::Intersect: the side's two roots, then the caps, in its own space. */
-static int cone_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int cone_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 p = inverse_transform_point(&s->to_world, org);
     Vec3 d = inverse_transform_direction(&s->to_world, dir);
@@ -382,7 +382,7 @@ static Vec3 torus_local_normal(const Shape *s, Vec3 q)
 /* Torus::Intersect: the quartic in the distance along the ray in the
  * torus's own space, its origin first moved to just outside the bounding
  * sphere for precision, as POV-Ray moves it. */
-static int torus_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int torus_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 p = inverse_transform_point(&s->to_world, org);
     Vec3 d = inverse_transform_direction(&s->to_world, dir);
@@ -526,7 +526,7 @@ static int box_slab(BoxSpan *sp, int axis, double p, double d, double lo, double
 
 /* Box::All_Intersections: the slabs in the box's space (the ray's
  * direction carried there, not made unit: distances stay the world's). */
-static int box_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int box_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 p = org, d = dir;
     if (s->transformed) {
@@ -577,7 +577,7 @@ static Vec3 box_normal(const Shape *s, int part)
 #define PLANE_DEPTH_TOLERANCE 1.0e-6 /* planes.cpp's DEPTH_TOLERANCE */
 
 /* Plane::Intersect, in its own space where it has a transform. */
-static int plane_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int plane_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 p = org, d = dir;
     if (s->transformed) {

@@ -38,7 +38,7 @@ enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_
 /* The most surfaces one ray can cross on one shape: four on a torus, the
  * sum of its parts' on a CSG object, which the world's build keeps within
  * this (Shape.max_hits). */
-#define SHAPE_MAX_HITS 64
+#define SHAPE_MAX_HITS 256
 
 typedef struct Shape Shape;
 
