@@ -135,12 +135,12 @@ static int brute_nearest(const World *w, Vec3 org, Vec3 dir, const Hit *from, Hi
     /* the shapes, in order: nearer than the plane, the first of tied ones */
     int shape = -1, part = 0;
     for (int i = 0; i < w->nshapes; i++) {
-        int pt;
-        double t = shape_nearest(&w->shapes[i], org, dir, plane_t, &pt);
+        ShapeHit h;
+        double t = shape_nearest(&w->shapes[i], org, dir, plane_t, &h);
         if (t > 0.0) {
             plane_t = t;
-            shape = i;
-            part = pt;
+            shape = h.leaf ? (int)(h.leaf - w->shapes) : i;
+            part = h.part;
             plane = -1;
         }
     }

@@ -926,7 +926,8 @@ static void test_errors(void)
         scene_free(s);
     }
     expect_error("box { 0, 1 } }", 1, 14, "expected an object", "stray brace");
-    expect_error("box { 0, 1 clipped_by { box { 0, 1 } } }", 1, 12, "'clipped_by' is not supported", "clipped_by");
+    expect_error("triangle { 0, x, y clipped_by { sphere { 0, 1 } } }", 1, 20,
+                 "'clipped_by' on a 'triangle' is not supported", "clipped_by on a triangle");
     /* without ParseOptions.load_image (a parse with no image layer) */
     expect_error("box { 0, 1 texture { pigment { image_map { png \"a.png\" } } } }", 1, 32,
                  "'image_map' is not supported", "image_map without an image reader");

@@ -50,7 +50,7 @@ static void release_mesh_lists(Arena *a, SceneObject *o)
         o->u.mesh.vertices = o->u.mesh.normals = o->u.mesh.uvs = NULL;
         o->u.mesh.faces = NULL;
         o->u.mesh.nvertices = o->u.mesh.nnormals = o->u.mesh.nuvs = o->u.mesh.nfaces = 0;
-    } else if (o->kind == OBJ_UNION) {
+    } else if (scene_object_has_children(o->kind)) {
         for (int i = 0; i < o->u.csg.nchildren; i++)
             release_mesh_lists(a, o->u.csg.children[i]);
     }

@@ -319,10 +319,22 @@ typedef enum {
     OBJ_DISC,
     OBJ_CONE,            /* also cylinder (equal radii) */
     OBJ_TORUS,
+    /* CSG over solids (the analytic shapes and other CSG): children in
+     * u.csg as a union's; a difference's children after the first are
+     * taken away from it (POV-Ray: inverted, then intersected). */
+    OBJ_INTERSECTION,
+    OBJ_DIFFERENCE,
+    OBJ_MERGE,
 } ObjectKind;
 
 /* How a prism's outline is swept (POV-Ray's linear_sweep, conic_sweep). */
 typedef enum { PRISM_LINEAR_SWEEP, PRISM_CONIC_SWEEP } PrismSweep;
+/* Whether objects of this kind hold children (u.csg): a union or a CSG
+ * operation. */
+static inline int scene_object_has_children(ObjectKind k)
+{
+    return k == OBJ_UNION || k == OBJ_INTERSECTION || k == OBJ_DIFFERENCE || k == OBJ_MERGE;
+}
 
 typedef struct {
     int v[3];       /* vertex indices */
@@ -365,6 +377,18 @@ struct SceneObject {
     unsigned general_transform : 1;
     unsigned sturm : 1;   /* `sturm`: POV-Ray's Sturm root solver for the polynomial shapes */
     int double_illuminate;
+    /* clipped_by: the object's surfaces are kept only inside every one of
+     * these solids (POV-Ray's Clip, also in its inside test). Each is
+     * placed relative to the object's transform: its world transform is
+     * its own, then the object's, then the parents' (the parser has
+     * taken out what the object was transformed by before clipped_by, as
+     * POV-Ray moves a clip only by transforms written after it). */
+    int nclips;
+    SceneObject **clips;
+    /* bounded_by's objects: no effect on the image (POV-Ray's bounding
+     * hint), kept for `clipped_by { bounded_by }`; placed as clips are */
+    int nbounds;
+    SceneObject **bounds;
     /* Levels of unions from this object down (1: a union of other objects,
      * 0: not a union). The parser keeps it at MAX_NESTING (200) at most, so
      * whatever walks the tree recurses that deep at most. */

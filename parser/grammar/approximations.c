@@ -121,7 +121,7 @@ static void tally_object(Tally *t, const SceneObject *o, int depth)
     tally_texture(t, o->texture);
     if (o->interior)
         tally_notes(t, o->interior->approx);
-    if (o->kind == OBJ_UNION)
+    if (scene_object_has_children(o->kind))
         for (int i = 0; i < o->u.csg.nchildren; i++)
             tally_object(t, o->u.csg.children[i], depth + 1);
     if (o->kind == OBJ_MESH)
@@ -134,7 +134,7 @@ static int photon_target(const SceneObject *o, int depth)
 {
     if (o->photon_target)
         return 1;
-    if (o->kind == OBJ_UNION && depth < 1000)
+    if (scene_object_has_children(o->kind) && depth < 1000)
         for (int i = 0; i < o->u.csg.nchildren; i++)
             if (photon_target(o->u.csg.children[i], depth + 1))
                 return 1;

@@ -1,5 +1,5 @@
 /* Objects: polygon, triangle, smooth_triangle, mesh, mesh2, box, plane,
- * sphere, disc, cylinder, cone, torus, union and object{}, with their modifiers. Every object keeps its own
+ * sphere, disc, cylinder, cone, torus, union, intersection, difference, merge and object{}, with their modifiers. Every object keeps its own
  * transform, composed from the transforms written on it in order; a union's
  * children keep theirs (the engine applies child, then parent). */
 #include <math.h>
@@ -20,13 +20,13 @@ int gram_is_object_keyword(int kw)
     case KW_box: case KW_plane: case KW_union: case KW_object:
     case KW_height_field: case KW_bicubic_patch: case KW_prism:
     case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus:
+    case KW_intersection: case KW_difference: case KW_merge:
     /* POV-Ray objects hstrace cannot render */
     case KW_blob:
     case KW_lathe: case KW_sor: case KW_superellipsoid: case KW_sphere_sweep:
     case KW_text: case KW_julia_fractal:
     case KW_isosurface: case KW_parametric: case KW_poly: case KW_polynomial: case KW_cubic:
-    case KW_quartic: case KW_quadric: case KW_ovus: case KW_intersection: case KW_difference:
-    case KW_merge: case KW_light_group:
+    case KW_quartic: case KW_quadric: case KW_ovus: case KW_light_group:
         return 1;
     default:
         return 0;
@@ -41,6 +41,49 @@ static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
     transform_identity(&o->transform);
     transform_identity(&o->texture_bind);
     return o;
+}
+
+/* Whether o is a solid hstrace can take as a part of a CSG operation:
+ * an analytic shape, a box or plane, or a union or CSG operation of such (POV-Ray takes
+ * any object, those without an inside (triangles, polygons, meshes
+ * without inside_vector) being outside everywhere). */
+static const SceneObject *first_non_solid(const SceneObject *o)
+{
+    switch (o->kind) {
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: return NULL;
+    case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
+        /* the parser bounds the depth (SceneObject.depth) */
+        for (int i = 0; i < o->u.csg.nchildren; i++) {
+            const SceneObject *c = first_non_solid(o->u.csg.children[i]);
+            if (c)
+                return c;
+        }
+        return NULL;
+    default: return o;
+    }
+}
+
+static const char *object_kind_name(ObjectKind k)
+{
+    switch (k) {
+    case OBJ_POLYGON: return "polygon";
+    case OBJ_TRIANGLE: return "triangle";
+    case OBJ_MESH: return "mesh";
+    case OBJ_BOX: return "box";
+    case OBJ_PLANE: return "plane";
+    case OBJ_UNION: return "union";
+    case OBJ_SPHERE: return "sphere";
+    case OBJ_DISC: return "disc";
+    case OBJ_CONE: return "cone";
+    case OBJ_TORUS: return "torus";
+    case OBJ_INTERSECTION: return "intersection";
+    case OBJ_DIFFERENCE: return "difference";
+    case OBJ_MERGE: return "merge";
+    case OBJ_HEIGHT_FIELD: return "height_field";
+    case OBJ_BICUBIC_PATCH: return "bicubic_patch";
+    case OBJ_PRISM: return "prism";
+    }
+    return "object";
 }
 
 /* The object's own texture, copied so a shared (declared) one stays intact. */
@@ -133,6 +176,134 @@ static void object_photons(Parser *p, SceneObject *o)
 }
 
 SceneObject *gram_new_object(Parser *p, ObjectKind kind, const Token *t) { return new_object(p, kind, t); }
+/* The objects of clipped_by { } or bounded_by { } (POV-Ray's
+ * Parse_Bound_Clip): one or more, then transforms for them all, then '}';
+ * each placed relative to o's transform so far (SceneObject.clips) and
+ * appended to *list. Clips must be solids. */
+static void parse_bound_clip(Parser *p, SceneObject *o, const Token *kw, int clip, int *n, SceneObject ***list)
+{
+    const char *what = clip ? "clipped_by" : "bounded_by";
+    TempVec objects;
+    tok_tvec_init(&objects, sizeof(SceneObject *));
+    Token t;
+    for (;;) {
+        t = *tok_next(p);
+        SceneObject *c = NULL;
+        SceneLight *light = NULL;
+        if (!gram_object(p, &t, &c, &light)) {
+            tok_unget(p);
+            break;
+        }
+        if (light)
+            tok_fail(p, t.pos, "a light_source in '%s'", what);
+        if (clip && c->texture)
+            tok_fail(p, c->pos, "a texture on an object in 'clipped_by' (POV-Ray: illegal texture in clip)");
+        *(SceneObject **)tok_tvec_push(p, &objects) = c;
+    }
+    if (objects.n == 0) {
+        char msg[64];
+        snprintf(msg, sizeof msg, "an object in '%s'", what);
+        tok_fail_expected(p, tok_next(p), msg);
+    }
+    Transform moved;
+    transform_identity(&moved);
+    for (;;) {
+        Token *m = tok_next(p);
+        if (tok_is_punct(m, '}'))
+            break;
+        if (!expr_transform_item(p, m, &moved)) {
+            char msg[96];
+            snprintf(msg, sizeof msg, "an object, a transform or '}' in '%s'", what);
+            tok_fail_expected(p, m, msg);
+        }
+    }
+    /* back out of o's transforms so far: those after this follow it */
+    Transform undo;
+    memcpy(undo.m, o->transform.inv, sizeof undo.m);
+    memcpy(undo.inv, o->transform.m, sizeof undo.inv);
+    SceneObject **all = tok_scene_alloc(p, sizeof *all * (size_t)(*n + objects.n));
+    for (int i = 0; i < *n; i++)
+        all[i] = (*list)[i];
+    for (int i = 0; i < objects.n; i++) {
+        SceneObject *c = ((SceneObject **)objects.data)[i];
+        transform_compose(&c->transform, &moved);
+        transform_compose(&c->transform, &undo);
+        if (!transform_is_similarity(&c->transform))
+            c->general_transform = 1;
+        if (clip) {
+            const SceneObject *odd = first_non_solid(c);
+            if (odd) {
+                char msg[96];
+                snprintf(msg, sizeof msg, "'%s' in 'clipped_by'", object_kind_name(odd->kind));
+                tok_unsupported_at(p, odd->pos, msg);
+            }
+        }
+        all[*n + i] = c;
+    }
+    *n += objects.n;
+    *list = all;
+    (void)kw;
+}
+
+/* Whether bounded_by's first token t starts an object hstrace reads (kept
+ * for clipped_by { bounded_by }); others' bodies are passed over, a bound
+ * having no effect on the image. */
+static int bound_readable(Parser *p, const Token *t)
+{
+    if (t->type != TK_WORD)
+        return 0;
+    switch (t->kw) {
+    case KW_box: case KW_plane: case KW_union: case KW_object: case KW_sphere: case KW_disc: case KW_cylinder:
+    case KW_cone: case KW_torus: case KW_intersection: case KW_difference: case KW_merge:
+        return 1;
+    default:
+        break;
+    }
+    if (t->kw >= 0)
+        return 0;
+    Symbol *sym = tok_symbol_find(p, t->text, t->len);
+    return sym && sym->value.kind == VAL_OBJECT;
+}
+
+/* clipped_by { OBJECTS } or clipped_by { bounded_by }; bounded_by {
+ * OBJECTS } or bounded_by { clipped_by } (POV-Ray's Parse_Object_Mods). */
+static void object_bound_clip(Parser *p, SceneObject *o, const Token *kw, int clip)
+{
+    tok_begin_block(p, clip ? "clipped_by" : "bounded_by");
+    Token *t = tok_next(p);
+    if (t->type == TK_WORD && t->kw == (clip ? KW_bounded_by : KW_clipped_by)) {
+        tok_expect_punct(p, '}', clip ? "'}' after 'bounded_by' in 'clipped_by'" : "'}' after 'clipped_by' in 'bounded_by'");
+        if (clip) {
+            o->nclips = o->nbounds;
+            o->clips = o->bounds;
+        } else {
+            o->nbounds = o->nclips;
+            o->bounds = o->clips;
+        }
+    } else if (!clip && !bound_readable(p, t)) {
+        /* a hint hstrace need not read: passed over, as it always was */
+        tok_skip_block_body(p);
+    } else {
+        tok_unget(p);
+        if (clip)
+            parse_bound_clip(p, o, kw, 1, &o->nclips, &o->clips);
+        else
+            parse_bound_clip(p, o, kw, 0, &o->nbounds, &o->bounds);
+    }
+    for (int i = 0; clip && i < o->nclips; i++) /* the copies of a declaration nest no deeper than unions */
+        if (o->clips[i]->depth + 1 > o->depth)
+            o->depth = o->clips[i]->depth + 1;
+    if (o->depth > MAX_NESTING)
+        tok_fail(p, kw->pos, "nested too deeply (clipped_by inside clipped_by more than %d levels)", MAX_NESTING);
+    if (clip && o->nclips > 0) {
+        const SceneObject *odd = first_non_solid(o);
+        if (odd) {
+            char msg[96];
+            snprintf(msg, sizeof msg, "'clipped_by' on a '%s'", object_kind_name(odd->kind));
+            tok_unsupported_at(p, kw->pos, msg);
+        }
+    }
+}
 
 /* Modifiers up to the object's closing '}'. */
 static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
@@ -211,9 +382,9 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             tok_skip_block_body(p);
             break;
         case KW_bounded_by: /* a hint for POV-Ray's bounding: no effect on the image */
-            tok_begin_block(p, "bounded_by");
-            tok_skip_block_body(p);
+            object_bound_clip(p, o, &at, 0);
             break;
+        case KW_clipped_by: object_bound_clip(p, o, &at, 1); break;
         default:
             if (expr_starts_colour(p, t)) { /* a "quick colour": preview only */
                 Colour ignored;
@@ -790,10 +961,11 @@ static SceneObject *parse_mesh2(Parser *p, const Token *kw)
 
 /* ---- union and object{} ------------------------------------------------- */
 
-static SceneObject *parse_union(Parser *p, const Token *kw)
+/* union, intersection, difference and merge: `name` { OBJECTS MODIFIERS }. */
+static SceneObject *parse_children(Parser *p, const Token *kw, ObjectKind kind, const char *name)
 {
-    tok_begin_block(p, "union");
-    SceneObject *o = new_object(p, OBJ_UNION, kw);
+    tok_begin_block(p, name);
+    SceneObject *o = new_object(p, kind, kw);
     TempVec children, lights, slots;
     tok_tvec_init(&children, sizeof(SceneObject *));
     tok_tvec_init(&lights, sizeof(SceneLight));
@@ -825,7 +997,20 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
         if (o->u.csg.children[i]->depth + 1 > o->depth)
             o->depth = o->u.csg.children[i]->depth + 1;
     if (o->depth > MAX_NESTING)
-        tok_fail(p, kw->pos, "nested too deeply (unions inside unions more than %d levels)", MAX_NESTING);
+        tok_fail(p, kw->pos, "nested too deeply (%s inside %s more than %d levels)",
+                 kind == OBJ_UNION ? "unions" : "CSG objects", kind == OBJ_UNION ? "unions" : "one another",
+                 MAX_NESTING);
+    if (kind != OBJ_UNION) {
+        const SceneObject *odd = first_non_solid(o);
+        if (odd) {
+            char what[96];
+            snprintf(what, sizeof what, "'%s' as a part of '%s'", object_kind_name(odd->kind), name);
+            tok_unsupported_at(p, odd->pos, what);
+        }
+        /* POV-Ray renders it, with a warning (Parse_CSG) */
+        if (children.n < 2)
+            tok_warning(p, kw->pos, "should have at least 2 objects in csg");
+    }
     if (lights.n) {
         SceneLight *l = tok_scene_alloc(p, sizeof(SceneLight) * (size_t)lights.n);
         int *slot = tok_scene_alloc(p, sizeof(int) * (size_t)lights.n);
@@ -835,7 +1020,7 @@ static SceneObject *parse_union(Parser *p, const Token *kw)
         o->u.csg.lights = l;
         o->u.csg.light_slot = slot;
     }
-    parse_object_mods(p, o, "union");
+    parse_object_mods(p, o, name);
     return o;
 }
 
@@ -875,7 +1060,7 @@ static SceneObject *copy_declared_object(Parser *p, const SceneObject *declared)
  * Order as POV-Ray's Post_Process: depth first, as written. */
 void gram_instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth)
 {
-    if (o->kind != OBJ_UNION || depth > MAX_NESTING)
+    if (!scene_object_has_children(o->kind) || depth > MAX_NESTING)
         return;
     Transform world = o->transform;
     transform_compose(&world, outer);
@@ -944,7 +1129,8 @@ static int object_id_follows(Parser *p, int kw)
     if (!s)
         return 0;
     ValueKind k = s->value.kind;
-    return k == VAL_OBJECT || k == VAL_LIGHT || (k == VAL_UNSUPPORTED && kw == KW_union);
+    return k == VAL_OBJECT || k == VAL_LIGHT ||
+           (k == VAL_UNSUPPORTED && (kw == KW_union || kw == KW_intersection || kw == KW_difference || kw == KW_merge));
 }
 
 /* A declared object or light named on its own, as LDCad ends its model
@@ -1012,7 +1198,10 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_cylinder: *obj = parse_cone(p, &kw, 1); break;
     case KW_cone: *obj = parse_cone(p, &kw, 0); break;
     case KW_torus: *obj = parse_torus(p, &kw); break;
-    case KW_union: *obj = parse_union(p, &kw); break;
+    case KW_union: *obj = parse_children(p, &kw, OBJ_UNION, "union"); break;
+    case KW_intersection: *obj = parse_children(p, &kw, OBJ_INTERSECTION, "intersection"); break;
+    case KW_difference: *obj = parse_children(p, &kw, OBJ_DIFFERENCE, "difference"); break;
+    case KW_merge: *obj = parse_children(p, &kw, OBJ_MERGE, "merge"); break;
     case KW_object: parse_object_statement(p, &kw, obj, light); break;
     case KW_light_source: *light = gram_light_source(p, &kw); break;
     default: tok_unsupported(p, &kw);

@@ -212,6 +212,17 @@ void tok_unsupported(Parser *p, const Token *t)
     tok_fail(p, t->pos, "%s is not supported by hstrace", buf);
 }
 
+void tok_unsupported_at(Parser *p, SourcePos pos, const char *what)
+{
+    if (p->declaring) {
+        Token by;
+        memset(&by, 0, sizeof by);
+        by.pos = pos;
+        poison(p, tok_temp_strndup(p, what, strlen(what)), pos, &by, 0);
+    }
+    tok_fail(p, pos, "%s is not supported by hstrace", what);
+}
+
 void tok_use_unsupported(Parser *p, const Token *t, const Value *v)
 {
     if (p->declaring)

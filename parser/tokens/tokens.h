@@ -366,6 +366,9 @@ _Noreturn void tok_fail_io(Parser *p, SourcePos pos, const char *fmt, ...) HST_P
 _Noreturn void tok_fail_expected(Parser *p, const Token *found, const char *what);
 /* An unsupported keyword at `t`: an error, or VAL_UNSUPPORTED in a #declare. */
 _Noreturn void tok_unsupported(Parser *p, const Token *t);
+/* The same for what no one token names (`what`, e.g. "'box' as a part of
+ * 'merge'"), at pos. */
+_Noreturn void tok_unsupported_at(Parser *p, SourcePos pos, const char *what);
 /* A feature at `t` that hstrace approximates (an ApproxKind): a note added
  * to *notes; with --strict an error (in a #declare: a poisoned value). */
 void tok_approximate(Parser *p, const Token *t, ApproxKind kind, const ApproxNote **notes);

@@ -368,6 +368,7 @@ typedef struct {
     Vec3 org, dir;
     double best;
     int shape, part;
+    int surface;          /* the primitive met: `shape`, or a part of it (a CSG object's) */
 } NearestShape;
 
 static int nearer_shape(void *user, int i, double *tmax)
@@ -378,12 +379,13 @@ static int nearer_shape(void *user, int i, double *tmax)
     if (!shape_box_hit(s, ns->org, ns->dir, limit))
         return 0;
     ns->tr->stats.shape_tests++;
-    int part;
-    double t = shape_nearest(s, ns->org, ns->dir, limit, &part);
+    ShapeHit h;
+    double t = shape_nearest(s, ns->org, ns->dir, limit, &h);
     if (t > 0.0 && (t < ns->best || i < ns->shape)) {
         ns->best = t;
         ns->shape = i;
-        ns->part = part;
+        ns->part = h.part;
+        ns->surface = h.leaf ? (int)(h.leaf - ns->tr->world->shapes) : i;
         *tmax = t;
     }
     return 0;
@@ -416,7 +418,7 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
 
     /* The shapes next, under the same bound: a shape nearer than every
      * plane bounds the polygon query in turn. */
-    NearestShape ns = { tr, org, dir, plane_t, -1, 0 };
+    NearestShape ns = { tr, org, dir, plane_t, -1, 0, -1 };
     if (w->nshapes > 0) {
         if (tr->bvh && tr->bvh->shapes) {
             double limit = plane_t;
@@ -433,7 +435,7 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
             plane = -1;
         }
     }
-    const int shape = ns.shape, shape_part = ns.part;
+    const int shape = ns.shape, shape_part = ns.part, shape_surface = ns.surface;
 
     double best = HUGE_VAL;
     int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
@@ -450,7 +452,7 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
             return 0;
         }
         hit->kind = shape >= 0 ? HIT_SHAPE : HIT_PLANE;
-        hit->index = shape >= 0 ? shape : plane;
+        hit->index = shape >= 0 ? shape_surface : plane;
         hit->part = shape_part;
         best = plane_t;
     } else {

@@ -1,7 +1,10 @@
 /* Flattening: the scene description's object tree becomes world-space
  * polygons. Unions pass their transform, texture, interior and flags down;
  * boxes become six quads; mesh faces become triangles; planes stay infinite
- * and are kept apart (they cannot go into a finite grid). */
+ * and are kept apart (they cannot go into a finite grid). The curved
+ * objects become shapes (shape.h), and a CSG object or clipped object a
+ * shape whose parts follow the world's shapes (csg.h): inside it a box or
+ * a plane is a solid shape, not polygons. */
 #include "world.h"
 
 #include <stdint.h>
@@ -61,6 +64,11 @@ typedef struct {
     const SceneObject **proto_mesh;
     int cap_prototypes, cap_instances, cap_instance_materials;
     int slots;            /* making prototypes: polygons' materials are slots, which read no uv */
+    /* The parts of CSG objects, made while csg_depth > 0: they follow the
+     * world's shapes once all are made (World.nparts). */
+    Shape *parts;
+    int nparts, cap_parts, csg_depth;
+    char message[200];    /* what failed, where it is not memory */
 } Builder;
 
 /* Grows *array (of `size`-byte items) so that index `need` fits. */
@@ -841,18 +849,43 @@ static int flatten_plane(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+static void shape_placed(Builder *b, Shape *s);
+
+/* A new shape: one of the world's, or inside a CSG object one of the
+ * parts. */
+static Shape *new_shape(Builder *b, ShapeKind kind)
+{
+    World *w = b->w;
+    Shape *s;
+    if (b->csg_depth > 0) {
+        if (grow((void **)&b->parts, &b->cap_parts, b->nparts, sizeof *b->parts)) {
+            b->failed = 1;
+            return NULL;
+        }
+        s = &b->parts[b->nparts++];
+    } else {
+        if (GROW(b, shapes, cap_shapes, w->nshapes))
+            return NULL;
+        s = &w->shapes[w->nshapes++];
+    }
+    memset(s, 0, sizeof *s);
+    s->kind = kind;
+    s->is_part = b->csg_depth > 0;
+    s->subtree = 1;
+    /* the most surfaces of it a line crosses */
+    s->max_hits = kind == SHAPE_SPHERE ? 2 : kind == SHAPE_DISC ? 1 : 4;
+    return s;
+}
+
 /* A sphere as POV-Ray keeps it: while every transform on the way to world
  * is a translation, rotation or uniform scale, its centre and radius are
  * moved (Sphere::Translate, Rotate, Scale); after any other, it is an
  * ellipsoid: the sphere as written, reached through its transform. */
 static int flatten_sphere(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
-    World *w = b->w;
-    if (GROW(b, shapes, cap_shapes, w->nshapes))
+    Shape *s = new_shape(b, SHAPE_SPHERE);
+    if (!s)
         return -1;
-    Shape *s = &w->shapes[w->nshapes++];
-    memset(s, 0, sizeof *s);
-    s->kind = SHAPE_SPHERE;
     s->material = material;
     s->inverse = in->inverse;
     s->to_world = in->transform;
@@ -865,9 +898,7 @@ static int flatten_sphere(Builder *b, const SceneObject *o, const Inherited *in,
         s->u.sphere.center = transform_point(&in->transform, o->u.sphere.center);
         s->u.sphere.radius = o->u.sphere.radius * transform_similarity_scale(&in->transform);
     }
-    shape_compute_bounds(s);
-    w->bounds_min = v3_min(w->bounds_min, s->bbox_min);
-    w->bounds_max = v3_max(w->bounds_max, s->bbox_max);
+    shape_placed(b, s);
     return 0;
 }
 
@@ -875,12 +906,9 @@ static int flatten_sphere(Builder *b, const SceneObject *o, const Inherited *in,
  * object's), then by the object's transforms. */
 static Shape *add_shape(Builder *b, ShapeKind kind, const Inherited *in, const Transform *frame, int material)
 {
-    World *w = b->w;
-    if (GROW(b, shapes, cap_shapes, w->nshapes))
+    Shape *s = new_shape(b, kind);
+    if (!s)
         return NULL;
-    Shape *s = &w->shapes[w->nshapes++];
-    memset(s, 0, sizeof *s);
-    s->kind = kind;
     s->material = material;
     s->inverse = in->inverse;
     s->transformed = 1;
@@ -889,11 +917,17 @@ static Shape *add_shape(Builder *b, ShapeKind kind, const Inherited *in, const T
     return s;
 }
 
-static void shape_placed(World *w, Shape *s)
+static void shape_placed(Builder *b, Shape *s)
 {
     shape_compute_bounds(s);
-    w->bounds_min = v3_min(w->bounds_min, s->bbox_min);
-    w->bounds_max = v3_max(w->bounds_max, s->bbox_max);
+    /* The world's box holds the hierarchy's shapes: a part lies within its
+     * CSG object's box, and a CSG object of half-spaces without bounds is
+     * left out as an infinite plane is. */
+    if (b->csg_depth > 0 || !(isfinite(s->bbox_min.x) && isfinite(s->bbox_min.y) && isfinite(s->bbox_min.z) &&
+                              isfinite(s->bbox_max.x) && isfinite(s->bbox_max.y) && isfinite(s->bbox_max.z)))
+        return;
+    b->w->bounds_min = v3_min(b->w->bounds_min, s->bbox_min);
+    b->w->bounds_max = v3_max(b->w->bounds_max, s->bbox_max);
 }
 
 /* A disc: the unit disc of its own frame (Disc::Compute_Disc), its
@@ -908,7 +942,7 @@ static int flatten_disc(Builder *b, const SceneObject *o, const Inherited *in, i
     s->u.disc.outer2 = o->u.disc.radius * o->u.disc.radius;
     s->u.disc.inner2 = o->u.disc.hole * o->u.disc.hole;
     s->u.disc.normal = v3_normalize(transform_normal(&in->transform, o->u.disc.normal));
-    shape_placed(b->w, s);
+    shape_placed(b, s);
     return 0;
 }
 
@@ -953,7 +987,7 @@ static int flatten_cone(Builder *b, const SceneObject *o, const Inherited *in, i
     s->u.cone.cylinder = cylinder;
     s->u.cone.closed = !o->u.cone.open;
     s->u.cone.dist = dist;
-    shape_placed(b->w, s);
+    shape_placed(b, s);
     return 0;
 }
 
@@ -969,8 +1003,174 @@ static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, 
     s->u.torus.major = o->u.torus.major;
     s->u.torus.minor = o->u.torus.minor;
     s->u.torus.sturm = o->sturm;
-    shape_placed(b->w, s);
+    shape_placed(b, s);
     return 0;
+}
+
+static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
+
+/* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
+ * (Parse_Box), moved and scaled with it while no transform on the way
+ * turns or shears it, else reached through its transform. */
+static int flatten_box_part(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Shape *s = new_shape(b, SHAPE_BOX);
+    if (!s)
+        return -1;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->max_hits = 2;
+    s->to_world = in->transform;
+    Vec3 lo = v3_min(o->u.box.corner1, o->u.box.corner2), hi = v3_max(o->u.box.corner1, o->u.box.corner2);
+    const double (*m)[4] = in->transform.m;
+    int axis_aligned = m[0][1] == 0.0 && m[0][2] == 0.0 && m[1][0] == 0.0 && m[1][2] == 0.0 && m[2][0] == 0.0 &&
+                       m[2][1] == 0.0;
+    s->transformed = !axis_aligned;
+    if (axis_aligned) {
+        Vec3 a = transform_point(&in->transform, lo), c = transform_point(&in->transform, hi);
+        lo = v3_min(a, c);
+        hi = v3_max(a, c);
+    }
+    s->u.box.lo = lo;
+    s->u.box.hi = hi;
+    shape_placed(b, s);
+    return 0;
+}
+
+/* A plane as a part of a CSG object: its solid the half-space below it
+ * (Plane::Inside), the normal and distance carried through translations,
+ * rotations and scales as POV-Ray's Plane keeps them, a matrix or
+ * transform { } kept as its transform; inverse negates both. */
+static int flatten_plane_part(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Vec3 n = o->u.plane.normal;
+    double len = v3_length(n);
+    if (!(len > 0.0))
+        return 0;
+    Shape *s = new_shape(b, SHAPE_PLANE);
+    if (!s)
+        return -1;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->max_hits = 1;
+    s->to_world = in->transform;
+    n = v3_scale(n, 1.0 / len);
+    double distance = -o->u.plane.distance;
+    s->transformed = in->general_transform;
+    if (!s->transformed) {
+        Vec3 on = transform_point(&in->transform, v3_scale(n, -distance));
+        n = v3_normalize(transform_normal(&in->transform, n));
+        distance = -v3_dot(on, n);
+    }
+    if (in->inverse) {
+        n = v3_neg(n);
+        distance = -distance;
+    }
+    s->u.plane.normal = n;
+    s->u.plane.distance = distance;
+    shape_placed(b, s);
+    return 0;
+}
+
+/* A CSG object's node: one of the world's shapes, or of the parts inside
+ * another; its parts are made next (csg_depth raised). */
+static Shape *begin_csg(Builder *b, CsgOp op, const Inherited *in, int material, int nparts, int *index)
+{
+    const int top = b->csg_depth == 0;
+    Shape *s = new_shape(b, SHAPE_CSG);
+    if (!s)
+        return NULL;
+    *index = top ? b->w->nshapes - 1 : b->nparts - 1;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->u.csg.op = op;
+    s->u.csg.nparts = nparts;
+    s->u.csg.first_part = b->nparts;
+    return s;
+}
+
+/* The CSG object at `index` once its parts are made: how far its parts
+ * reach, how many crossings it can have, its box. */
+static int finish_csg(Builder *b, int top, int index, int first)
+{
+    Shape *s = top ? &b->w->shapes[index] : &b->parts[index];
+    if (!top)
+        s->subtree = b->nparts - index;
+    /* its parts, where they are while building (set again once final) */
+    s->u.csg.parts = b->parts + first;
+    int max_hits = 0;
+    const Shape *c = s->u.csg.parts;
+    /* a clipped object's crossings are its first part's alone */
+    const int crossed = s->u.csg.op == CSG_CLIP ? 1 : s->u.csg.nparts;
+    for (int k = 0; k < crossed; k++, c += c->subtree)
+        max_hits += c->max_hits;
+    if (max_hits > SHAPE_MAX_HITS) {
+        snprintf(b->message, sizeof b->message,
+                 "this CSG object's parts have up to %d surfaces along a line; hstrace takes %d at most", max_hits,
+                 SHAPE_MAX_HITS);
+        return -1;
+    }
+    s->max_hits = max_hits;
+    shape_placed(b, s);
+    return 0;
+}
+
+/* A CSG object (csg.h) and, after it, its parts; a part is any shape or
+ * CSG object (the parser refuses other kinds), made with what it inherits
+ * from the CSG object as a union's children are. POV-Ray's rewriting is
+ * done here: a difference's later parts inverted, an inverted CSG object
+ * the other operation over its inverted parts (in->inverse, passed down). */
+static int flatten_csg(Builder *b, const SceneObject *o, const Inherited *in, const Scene *scene, int depth,
+                       int material)
+{
+    CsgOp op = o->kind == OBJ_MERGE ? CSG_MERGE : o->kind == OBJ_UNION ? CSG_UNION : CSG_INTERSECTION;
+    if (in->inverse) /* POV-Ray's CSGUnion::Invert, CSGIntersection::Invert */
+        op = op == CSG_INTERSECTION ? CSG_MERGE : CSG_INTERSECTION;
+    const int top = b->csg_depth == 0;
+    int index;
+    if (!begin_csg(b, op, in, material, o->u.csg.nchildren, &index))
+        return -1;
+    const int first = b->nparts; /* its parts follow it */
+    b->csg_depth++;
+    for (int i = 0; i < o->u.csg.nchildren; i++) {
+        Inherited part = *in;
+        if (o->kind == OBJ_DIFFERENCE && i > 0)
+            part.inverse ^= 1; /* taken away: inverted, then intersected */
+        if (flatten_object(b, o->u.csg.children[i], &part, scene, depth + 1)) {
+            b->csg_depth--;
+            return -1;
+        }
+    }
+    b->csg_depth--;
+    return finish_csg(b, top, index, first);
+}
+
+static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in, const Scene *scene, int depth);
+
+/* An object clipped_by solids (SceneObject.clips): a CSG_CLIP node, the
+ * object its first part, the clipping solids the others. A clip is not
+ * inverted with the object (POV-Ray's Invert leaves Clip alone) and takes
+ * nothing else of it but its place. */
+static int flatten_clipped(Builder *b, const SceneObject *o, const Inherited *in, const Scene *scene, int depth)
+{
+    const SceneTexture *tex = in->texture ? in->texture : &scene->default_texture;
+    int material = add_material(b, in, tex, &in->texture_space, o->pos);
+    if (material < 0)
+        return -1;
+    const int top = b->csg_depth == 0;
+    int index;
+    if (!begin_csg(b, CSG_CLIP, in, material, 1 + o->nclips, &index))
+        return -1;
+    const int first = b->nparts; /* its parts follow it */
+    b->csg_depth++;
+    int failed = flatten_kind(b, o, in, scene, depth);
+    for (int i = 0; !failed && i < o->nclips; i++) {
+        Inherited clip = *in;
+        clip.inverse = 0;
+        failed = flatten_object(b, o->clips[i], &clip, scene, depth + 1);
+    }
+    b->csg_depth--;
+    return failed ? -1 : finish_csg(b, top, index, first);
 }
 
 /* ---- instancing: a mesh placed two or more times, kept once ------------- */
@@ -986,7 +1186,7 @@ static int count_mesh_uses(Builder *b, const SceneObject *o, int depth)
 {
     if (depth > 1000)
         return 0;
-    if (o->kind == OBJ_UNION) {
+    if (scene_object_has_children(o->kind)) {
         for (int i = 0; i < o->u.csg.nchildren; i++)
             if (count_mesh_uses(b, o->u.csg.children[i], depth + 1))
                 return -1;
@@ -1244,7 +1444,16 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
         b->timed_out = 1;
         return -1;
     }
-    if (o->kind == OBJ_UNION) {
+    if (o->nclips > 0)
+        return flatten_clipped(b, o, &in, scene, depth);
+    return flatten_kind(b, o, &in, scene, depth);
+}
+
+/* What o (with what it inherits, `in`) makes, by its kind. */
+static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, const Scene *scene, int depth)
+{
+    const Inherited in = *in_;
+    if (o->kind == OBJ_UNION && b->csg_depth == 0) { /* a union inside CSG is one of its solids */
         for (int i = 0; i < o->u.csg.nchildren; i++)
             if (flatten_object(b, o->u.csg.children[i], &in, scene, depth + 1))
                 return -1;
@@ -1258,15 +1467,20 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
     case OBJ_POLYGON: return flatten_polygon(b, o, &in, material);
     case OBJ_TRIANGLE: return flatten_triangle(b, o, &in, material);
     case OBJ_MESH: return b->instancing ? instance_mesh(b, o, &in, material) : flatten_mesh(b, o, &in, material);
-    case OBJ_BOX: return flatten_box(b, o, &in, material);
-    case OBJ_PLANE: return flatten_plane(b, o, &in, material);
+    /* inside a CSG object a box and a plane are solids, else surfaces */
+    case OBJ_BOX: return b->csg_depth > 0 ? flatten_box_part(b, o, &in, material) : flatten_box(b, o, &in, material);
+    case OBJ_PLANE:
+        return b->csg_depth > 0 ? flatten_plane_part(b, o, &in, material) : flatten_plane(b, o, &in, material);
     case OBJ_SPHERE: return flatten_sphere(b, o, &in, material);
     case OBJ_DISC: return flatten_disc(b, o, &in, material);
     case OBJ_CONE: return flatten_cone(b, o, &in, material);
     case OBJ_TORUS: return flatten_torus(b, o, &in, material);
-    case OBJ_UNION: break;
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
         return flatten_planar_shape(b, o, &in, material);
+    case OBJ_UNION:
+    case OBJ_INTERSECTION:
+    case OBJ_DIFFERENCE:
+    case OBJ_MERGE: return flatten_csg(b, o, &in, scene, depth, material);
     }
     return 0;
 }
@@ -1292,8 +1506,27 @@ static void build_lights(World *w, const Scene *scene)
     }
 }
 
+/* The CSG objects' parts after the world's shapes (World.nparts), and
+ * each CSG object told where its parts are now. */
+static int place_parts(Builder *b)
+{
+    World *w = b->w;
+    Shape *all = big_realloc(w->shapes, sizeof *all * ((size_t)w->nshapes + (size_t)b->nparts));
+    if (!all)
+        return -1;
+    memcpy(all + w->nshapes, b->parts, sizeof *all * (size_t)b->nparts);
+    w->shapes = all;
+    w->nparts = b->nparts;
+    b->cap_shapes = w->nshapes + b->nparts;
+    for (int i = 0; i < w->nshapes + w->nparts; i++)
+        if (all[i].kind == SHAPE_CSG)
+            all[i].u.csg.parts = all + w->nshapes + all[i].u.csg.first_part;
+    return 0;
+}
+
 static void builder_free(Builder *b)
 {
+    free(b->parts);
     ptr_map_free(&b->maps_built);
     ptr_map_free(&b->mesh_uses);
     ptr_map_free(&b->mesh_proto);
@@ -1377,14 +1610,22 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
                          "building the world from the scene took more than the %g s of --max-parse-seconds (the "
                          "parse and the build together), in this object",
                          limits->max_seconds);
+            else if (b.message[0])
+                snprintf(err->message, sizeof err->message, "%s", b.message);
             else
                 snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
-            err->over_budget = b.timed_out;
+            err->over_budget = b.timed_out || b.message[0];
             err->pos = scene->objects[i]->pos;
             builder_free(&b);
             world_free(w);
             return -1;
         }
+    }
+    if (b.nparts > 0 && place_parts(&b)) {
+        snprintf(err->message, sizeof err->message, "out of memory while flattening the scene");
+        builder_free(&b);
+        world_free(w);
+        return -1;
     }
     for (int i = 0; i < w->npolygons; i++)
         w->nsee_through += !w->materials[w->polygons[i].material].opaque;

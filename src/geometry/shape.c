@@ -5,7 +5,9 @@
 #include "shape.h"
 
 #include <math.h>
+#include <stddef.h>
 
+#include "csg.h"
 #include "polynomial.h"
 
 #define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
@@ -33,7 +35,7 @@ static int sphere_roots(Vec3 org, Vec3 unit_dir, Vec3 center, double radius2, do
     return 1;
 }
 
-static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 o = org, d = dir;
     if (s->transformed) {
@@ -133,7 +135,7 @@ static void sphere_local_bounds(const Shape *s, Vec3 *lo, Vec3 *hi)
 
 /* Disc::Intersect: the crossing of its plane (z = 0 of its own space)
  * between the two radii. */
-static int disc_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int disc_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 p = inverse_transform_point(&s->to_world, org);
     Vec3 d = inverse_transform_direction(&s->to_world, dir);
@@ -187,7 +189,7 @@ static int cone_keep(const Shape *s, ShapeHit *h, double t, double len, double t
 }
 
 /* Cone::Intersect: the side's two roots, then the caps, in its own space. */
-static int cone_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int cone_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 p = inverse_transform_point(&s->to_world, org);
     Vec3 d = inverse_transform_direction(&s->to_world, dir);
@@ -380,7 +382,7 @@ static Vec3 torus_local_normal(const Shape *s, Vec3 q)
 /* Torus::Intersect: the quartic in the distance along the ray in the
  * torus's own space, its origin first moved to just outside the bounding
  * sphere for precision, as POV-Ray moves it. */
-static int torus_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+static int torus_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 p = inverse_transform_point(&s->to_world, org);
     Vec3 d = inverse_transform_direction(&s->to_world, dir);
@@ -449,12 +451,181 @@ static Vec3 torus_uv(const Shape *s, Vec3 p)
     return v3(u, v, 0.0);
 }
 
+/* ---- box (a CSG part) --------------------------------------------------- */
+
+#define BOX_DEPTH_TOLERANCE 1.0e-6 /* boxes.cpp's DEPTH_TOLERANCE */
+#define BOX_CLOSE_TOLERANCE 1.0e-6 /* its CLOSE_TOLERANCE: slab distances this close are one */
+
+/* The slab of axis a: entering and leaving distances along d (unit in
+ * world space), in Box::Intersect's order and with its tie rule: where a
+ * later axis's distance is within CLOSE_TOLERANCE of the current one, the
+ * side is that axis's only when the ray runs more along it. `prefer`
+ * says whether this axis beats the side already chosen. Returns 0 when
+ * the ray misses. */
+typedef struct {
+    double tmin, tmax;
+    int smin, smax;
+} BoxSpan;
+
+static double box_axis_weight(Vec3 d, int side)
+{
+    /* |D| along the axis of a side already chosen (Box::Intersect's
+     * switch over smin/smax: X or Y; a Z side or none is never replaced) */
+    switch (side) {
+    case BOX_SIDE_X0: case BOX_SIDE_X1: return fabs(d.x);
+    case BOX_SIDE_Y0: case BOX_SIDE_Y1: return fabs(d.y);
+    default: return HUGE_VAL;
+    }
+}
+
+static int box_slab(BoxSpan *sp, int axis, double p, double d, double lo, double hi, Vec3 dir)
+{
+    const int side_lo = BOX_SIDE_X0 + 2 * axis, side_hi = side_lo + 1;
+    if (!(d < -POV_EPSILON || d > POV_EPSILON))
+        return !(p < lo || p > hi);
+    /* the far side first, then the near one */
+    const double far_c = d < 0.0 ? lo : hi, near_c = d < 0.0 ? hi : lo;
+    const int far_s = d < 0.0 ? side_lo : side_hi, near_s = d < 0.0 ? side_hi : side_lo;
+    const double ad = fabs(d);
+    double t = (far_c - p) / d;
+    if (t < sp->tmin)
+        return 0;
+    if (axis == 0) {
+        if (t <= sp->tmax) {
+            sp->smax = far_s;
+            sp->tmax = t;
+        }
+    } else if (t <= sp->tmax - BOX_CLOSE_TOLERANCE) {
+        sp->smax = far_s;
+        sp->tmax = t;
+    } else if (t <= sp->tmax + BOX_CLOSE_TOLERANCE) {
+        double other = axis == 1 ? fabs(dir.x) : box_axis_weight(dir, sp->smax);
+        if (ad > other)
+            sp->smax = far_s;
+    }
+    t = (near_c - p) / d;
+    if (axis == 0) {
+        if (t >= sp->tmin) {
+            if (t > sp->tmax)
+                return 0;
+            sp->smin = near_s;
+            sp->tmin = t;
+        }
+    } else if (t >= sp->tmin + BOX_CLOSE_TOLERANCE) {
+        if (t > sp->tmax)
+            return 0;
+        sp->smin = near_s;
+        sp->tmin = t;
+    } else if (t >= sp->tmin - BOX_CLOSE_TOLERANCE) {
+        double other = axis == 1 ? fabs(dir.x) : box_axis_weight(dir, sp->smin);
+        if (ad > other)
+            sp->smin = near_s;
+    }
+    return 1;
+}
+
+/* Box::All_Intersections: the slabs in the box's space (the ray's
+ * direction carried there, not made unit: distances stay the world's). */
+static int box_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
+{
+    Vec3 p = org, d = dir;
+    if (s->transformed) {
+        p = inverse_transform_point(&s->to_world, org);
+        d = inverse_transform_direction(&s->to_world, dir);
+    }
+    BoxSpan sp = { 0.0, 2.0e10, 0, 0 }; /* POV-Ray's BOUND_HUGE */
+    const Vec3 lo = s->u.box.lo, hi = s->u.box.hi;
+    if (!box_slab(&sp, 0, p.x, d.x, lo.x, hi.x, d) || !box_slab(&sp, 1, p.y, d.y, lo.y, hi.y, d) ||
+        !box_slab(&sp, 2, p.z, d.z, lo.z, hi.z, d))
+        return 0;
+    if (sp.tmax < BOX_DEPTH_TOLERANCE)
+        return 0;
+    int n = 0;
+    if (sp.tmin > BOX_DEPTH_TOLERANCE && sp.tmin < tmax) {
+        hits[n].t = sp.tmin;
+        hits[n].part = sp.smin;
+        hits[n].entering = !s->inverse;
+        n++;
+    }
+    if (sp.tmax < tmax) {
+        hits[n].t = sp.tmax;
+        hits[n].part = sp.smax;
+        hits[n].entering = s->inverse != 0;
+        n++;
+    }
+    return n;
+}
+
+static int box_inside(const Shape *s, Vec3 p)
+{
+    Vec3 q = s->transformed ? inverse_transform_point(&s->to_world, p) : p;
+    const Vec3 lo = s->u.box.lo, hi = s->u.box.hi;
+    int out = q.x < lo.x || q.x > hi.x || q.y < lo.y || q.y > hi.y || q.z < lo.z || q.z > hi.z;
+    return out == (s->inverse != 0);
+}
+
+static Vec3 box_normal(const Shape *s, int part)
+{
+    static const Vec3 sides[7] = { { 0, 1, 0 }, { -1, 0, 0 }, { 1, 0, 0 }, { 0, -1, 0 },
+                                   { 0, 1, 0 },  { 0, 0, -1 }, { 0, 0, 1 } };
+    Vec3 n = sides[part >= 1 && part <= 6 ? part : 0];
+    return s->transformed ? v3_normalize(transform_normal(&s->to_world, n)) : n;
+}
+
+/* ---- plane (a CSG part) ------------------------------------------------- */
+
+#define PLANE_DEPTH_TOLERANCE 1.0e-6 /* planes.cpp's DEPTH_TOLERANCE */
+
+/* Plane::Intersect, in its own space where it has a transform. */
+static int plane_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
+{
+    Vec3 p = org, d = dir;
+    if (s->transformed) {
+        p = inverse_transform_point(&s->to_world, org);
+        d = inverse_transform_direction(&s->to_world, dir);
+    }
+    const Vec3 n = s->u.plane.normal;
+    double nd = v3_dot(n, d);
+    if (fabs(nd) < POV_EPSILON)
+        return 0;
+    double depth = -(v3_dot(n, p) + s->u.plane.distance) / nd;
+    if (!(depth >= PLANE_DEPTH_TOLERANCE && depth <= POV_MAX_DISTANCE && depth < tmax))
+        return 0;
+    hits[0].t = depth;
+    hits[0].part = SHAPE_SIDE;
+    hits[0].entering = nd < 0.0; /* the solid is where dot(p, normal) is less (inverse: normal negated) */
+    return 1;
+}
+
+static int plane_inside(const Shape *s, Vec3 p)
+{
+    Vec3 q = s->transformed ? inverse_transform_point(&s->to_world, p) : p;
+    return v3_dot(q, s->u.plane.normal) + s->u.plane.distance < POV_EPSILON;
+}
+
+static Vec3 plane_normal(const Shape *s)
+{
+    Vec3 n = s->u.plane.normal;
+    return s->transformed ? v3_normalize(transform_normal(&s->to_world, n)) : n;
+}
+
 /* ---- every shape ----------------------------------------------------------- */
 
 void shape_compute_bounds(Shape *s)
 {
     Vec3 lo, hi;
     switch (s->kind) {
+    case SHAPE_CSG:
+        csg_compute_bounds(s);
+        return;
+    case SHAPE_BOX:
+        lo = s->u.box.lo;
+        hi = s->u.box.hi;
+        break;
+    case SHAPE_PLANE: /* unbounded (POV-Ray bounds only an axis-aligned one, which no CSG overlap here uses) */
+        s->bbox_min = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+        s->bbox_max = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
+        return;
     case SHAPE_SPHERE:
         sphere_local_bounds(s, &lo, &hi);
         break;
@@ -492,7 +663,7 @@ void shape_compute_bounds(Shape *s)
     s->bbox_max = whi;
 }
 
-int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS])
+int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     /* POV-Ray's rays have unit directions and its tolerances are distances
      * along them: the test runs on the unit direction, and its distances
@@ -508,19 +679,25 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     case SHAPE_DISC: n = disc_all(s, org, u, ulimit, hits); break;
     case SHAPE_CONE: n = cone_all(s, org, u, ulimit, hits); break;
     case SHAPE_TORUS: n = torus_all(s, org, u, ulimit, hits); break;
+    case SHAPE_CSG: n = csg_intersect_all(s, org, u, ulimit, hits); break;
+    case SHAPE_BOX: n = box_all(s, org, u, ulimit, hits); break;
+    case SHAPE_PLANE: n = plane_all(s, org, u, ulimit, hits); break;
     }
+    if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
+        for (int k = 0; k < n; k++)
+            hits[k].leaf = NULL;
     if (len != 1.0)
         for (int k = 0; k < n; k++)
             hits[k].t /= len;
     return n;
 }
 
-double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, int *part)
+double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hit)
 {
     ShapeHit hits[SHAPE_MAX_HITS];
     if (shape_intersect_all(s, org, dir, tmax, hits) == 0)
         return -1.0;
-    *part = hits[0].part;
+    *hit = hits[0];
     return hits[0].t;
 }
 
@@ -531,6 +708,9 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_DISC: return disc_inside(s, p);
     case SHAPE_CONE: return cone_inside(s, p);
     case SHAPE_TORUS: return torus_inside(s, p);
+    case SHAPE_CSG: return csg_inside(s, p);
+    case SHAPE_BOX: return box_inside(s, p);
+    case SHAPE_PLANE: return plane_inside(s, p);
     }
     return 0;
 }
@@ -542,6 +722,9 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_DISC: return s->u.disc.normal;
     case SHAPE_CONE: return cone_normal(s, p, part);
     case SHAPE_TORUS: return torus_normal(s, p);
+    case SHAPE_CSG: break; /* its crossings are on its primitives (ShapeHit.leaf) */
+    case SHAPE_BOX: return box_normal(s, part);
+    case SHAPE_PLANE: return plane_normal(s);
     }
     return v3(0.0, 1.0, 0.0);
 }
@@ -553,6 +736,9 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_TORUS: return torus_uv(s, p);
     case SHAPE_DISC:
     case SHAPE_CONE: break; /* no mapping of their own in POV-Ray 3.7 */
+    case SHAPE_CSG: break;  /* its crossings are on its primitives */
+    case SHAPE_BOX:         /* hstrace keeps no uv of a box that is a CSG part (man page) */
+    case SHAPE_PLANE: break;
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }

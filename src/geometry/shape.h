@@ -13,15 +13,34 @@
 #include "transform.h"
 #include "vecmath.h"
 
-typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS } ShapeKind;
+/* SHAPE_BOX and SHAPE_PLANE are POV-Ray's box and plane as parts of CSG
+ * objects (csg.h), where their inside matters; elsewhere a box is six
+ * polygons and a plane an InfinitePlane (world.h). */
+typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE } ShapeKind;
+
+/* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
+ * difference is an intersection whose later parts are inverted, and an
+ * inverted CSG object the other operation over inverted parts. UNION is
+ * a union inside a CSG object or clipped (a top-level union is
+ * flattened); CLIP an object clipped_by others: its first part, the
+ * others its clipping solids. */
+typedef enum { CSG_UNION, CSG_INTERSECTION, CSG_MERGE, CSG_CLIP } CsgOp;
 
 /* Which part of a shape a crossing is on, where the normal depends on it:
  * a cone's or cylinder's side, its cap (the wide end, +z in its own space)
  * or its base (POV-Ray's SIDE_HIT, CAP_HIT, BASE_HIT). */
 enum { SHAPE_SIDE = 0, SHAPE_CAP = 1, SHAPE_BASE = 2 };
 
-/* The most surfaces one ray can cross on one shape (a torus: four). */
-#define SHAPE_MAX_HITS 4
+/* A box's sides as a crossing's part (POV-Ray's SIDE_X_0 ... SIDE_Z_1;
+ * 0: none decided, POV-Ray's own initial value). */
+enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_SIDE_Z1 };
+
+/* The most surfaces one ray can cross on one shape: four on a torus, the
+ * sum of its parts' on a CSG object, which the world's build keeps within
+ * this (Shape.max_hits). */
+#define SHAPE_MAX_HITS 256
+
+typedef struct Shape Shape;
 
 /* One crossing of a shape's surface: where, and whether the ray enters
  * the solid there (for CSG and the interiors a ray is inside). */
@@ -29,11 +48,22 @@ typedef struct {
     double t;
     int entering;
     int part;             /* SHAPE_SIDE, SHAPE_CAP, SHAPE_BASE */
+    /* The primitive crossed: the shape itself (NULL), or a CSG object's
+     * part, whose material, normal and uv the crossing has. */
+    const Shape *leaf;
 } ShapeHit;
 
-typedef struct {
+struct Shape {
     ShapeKind kind;
     int material;         /* World.materials */
+    /* 1: a part of a CSG object, reached through it alone (World.shapes
+     * past nshapes), never an item of the hierarchy */
+    int is_part;
+    /* How many shapes this one and its parts take in World.shapes: 1 for
+     * a primitive; a CSG object's parts follow it, each with its own
+     * parts after it, so that the next sibling is `subtree` further. */
+    int subtree;
+    int max_hits;         /* the most crossings one ray can have with it */
     int inverse;          /* POV-Ray's inverse: inside and outside swapped */
     /* 0: the parameters are in world space (POV-Ray keeps a sphere's centre
      * and radius through translations, rotations and uniform scales);
@@ -73,9 +103,31 @@ typedef struct {
             double major, minor;
             int sturm;
         } torus;
+        /* A box between its corners lo <= hi, in world space or in its own
+         * where transformed (POV-Ray's bounds, moved and scaled with the
+         * box until a rotation or matrix gives it a transform). */
+        struct {
+            Vec3 lo, hi;
+        } box;
+        /* A plane's solid: dot(p, normal) + distance < EPSILON (POV-Ray's
+         * Normal_Vector and Distance, the negated d of plane { N, d };
+         * inverse negates both, as Plane::Invert), in world space or its
+         * own where transformed. */
+        struct {
+            Vec3 normal;
+            double distance;
+        } plane;
+        /* A CSG object: nparts parts, the first at `parts` (the next at
+         * parts + parts->subtree ...), set once World.shapes is final. */
+        struct {
+            CsgOp op;
+            int nparts;
+            int first_part;   /* while building: the first part's index among the parts */
+            const Shape *parts;
+        } csg;
     } u;
     Vec3 bbox_min, bbox_max; /* world space */
-} Shape;
+};
 
 /* Fills s's bounds from its parameters and transform (POV-Ray's
  * Compute_BBox, carried through the transform as Recompute_BBox does). */
@@ -83,12 +135,13 @@ void shape_compute_bounds(Shape *s);
 
 /* Every crossing of s by the ray at t in (0, tmax) that POV-Ray's
  * All_Intersections would report (its depth tolerance and MAX_DISTANCE
- * applied), nearest first; returns how many. */
-int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit hits[SHAPE_MAX_HITS]);
+ * applied), nearest first, into hits (room for s->max_hits, at most
+ * SHAPE_MAX_HITS); returns how many. */
+int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits);
 
-/* The nearest of them (and the part it is on), or -1 when there is none
- * before tmax. */
-double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, int *part);
+/* The nearest of them (its part, and the primitive it is on, in *hit), or
+ * -1 when there is none before tmax. */
+double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hit);
 
 /* Is the world point inside the solid (POV-Ray's Inside, inverse
  * included)? */

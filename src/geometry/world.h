@@ -186,7 +186,11 @@ typedef struct {
      * it, never made polygons. A hit on one is a HIT_SHAPE; materials and
      * flags as a polygon's. */
     int nshapes;
+    /* nshapes shapes, the hierarchy's items, then nparts more: the parts
+     * of the CSG objects among them (Shape.is_part), which a hit names
+     * as it names any shape (ShapeHit.leaf) */
     Shape *shapes;
+    int nparts;
     int nmaterials;
     Material *materials;
     int nmaps;

@@ -90,6 +90,9 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
         b += sizeof(Shape) + HIERARCHY_BYTES_PER_POLYGON; /* an item of the shapes' own hierarchy */
         break;
     case OBJ_UNION:
+    case OBJ_INTERSECTION:
+    case OBJ_DIFFERENCE:
+    case OBJ_MERGE:
         break;
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM: {
         double points = 0.0;
@@ -116,7 +119,7 @@ int world_estimate_object(WorldEstimate *e, const SceneObject *o, double *bytes,
         return 0;
     }
     double b = 0.0, n = 0.0;
-    if (o->kind == OBJ_UNION) {
+    if (scene_object_has_children(o->kind)) {
         /* the parser keeps unions 200 levels deep at most (SceneObject.depth) */
         for (int i = 0; i < o->u.csg.nchildren; i++) {
             double cb, cn;
@@ -128,8 +131,16 @@ int world_estimate_object(WorldEstimate *e, const SceneObject *o, double *bytes,
     } else {
         leaf(o, &b, &n);
     }
+    if (o->kind != OBJ_UNION && scene_object_has_children(o->kind))
+        b += sizeof(Shape) + sizeof(Material) + HIERARCHY_BYTES_PER_POLYGON; /* the CSG object's own node */
+    for (int i = 0; i < o->nclips; i++) { /* clipped_by: its solids, and a node over them */
+        double cb, cn;
+        if (world_estimate_object(e, o->clips[i], &cb, &cn))
+            return -1;
+        b += cb + sizeof(Shape) + sizeof(Material);
+    }
     *bytes = b;
     *polygons = n;
     /* a union is what copies share; an object of another kind costs no more to count again */
-    return o->kind == OBJ_UNION ? remember(e, o, b, n) : 0;
+    return scene_object_has_children(o->kind) ? remember(e, o, b, n) : 0;
 }

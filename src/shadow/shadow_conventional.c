@@ -178,7 +178,10 @@ static int shadow_shape_test(void *user, int i, double *tmax)
     int inside = n > 0 && interior_fades_shadows(m) && segment_inside(q, m->interior_key);
     double from = 0.0;
     for (int k = 0; k < n; k++) {
-        if (pass_through(ctx, m, surface_of_shape(i), hits[k].part, NULL, q, hits[k].t, ss->light))
+        /* a CSG object's crossing is on one of its parts, with its texture */
+        const int leaf = hits[k].leaf ? (int)(hits[k].leaf - w->shapes) : i;
+        if (pass_through(ctx, &w->materials[w->shapes[leaf].material], surface_of_shape(leaf), hits[k].part, NULL,
+                         q, hits[k].t, ss->light))
             return 1;
         if (inside) {
             RGB f = interior_fade(m, hits[k].t - from);
