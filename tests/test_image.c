@@ -352,6 +352,28 @@ static void test_exr(void)
     image_free(&src);
 }
 
+/* Whether image src written by opt on 1 thread (to `one`) and on 3 (to
+ * `three`) makes the same file, byte for byte; 0 also when either write
+ * fails (its message in err). */
+static int written_alike(const Image *src, ImageWriteOptions opt, const char *one, const char *three, char *err,
+                         int errlen)
+{
+    long n1 = -1, n3 = -2;
+    unsigned char *a = NULL, *b = NULL;
+    opt.threads = 1;
+    if (image_write(one, src, &opt, err, errlen) == 0) {
+        opt.threads = 3;
+        if (image_write(three, src, &opt, err, errlen) == 0) {
+            a = slurp(one, &n1);
+            b = slurp(three, &n3);
+        }
+    }
+    int alike = a && b && n1 == n3 && memcmp(a, b, (size_t)n1) == 0;
+    free(a);
+    free(b);
+    return alike;
+}
+
 /* An EXR is the same file whatever number of threads encodes its chunks
  * (each compressed on its own, all written in order): written on 1 and on
  * 3 threads, for every compression and both sample types, the two files
@@ -373,18 +395,8 @@ static void test_exr_threads(void)
             ImageWriteOptions opt = { 0 };
             opt.exr_compression = comps[k];
             opt.exr_float = fl;
-            opt.threads = 1;
-            long n1 = -1, n3 = -2;
-            unsigned char *a = NULL, *b = NULL;
             tried++;
-            if (image_write(one, &src, &opt, err, sizeof err) == 0 && (opt.threads = 3) &&
-                image_write(three, &src, &opt, err, sizeof err) == 0) {
-                a = slurp(one, &n1);
-                b = slurp(three, &n3);
-            }
-            differ += !a || !b || n1 != n3 || memcmp(a, b, (size_t)n1) != 0;
-            free(a);
-            free(b);
+            differ += !written_alike(&src, opt, one, three, err, (int)sizeof err);
             int bad = -1;
             if (image_read(three, &back, 0, err, sizeof err) == 0) {
                 bad = 0;
@@ -680,18 +692,8 @@ static void test_png_threads(void)
             ImageWriteOptions opt = { 0 };
             opt.png_16bit = bits16;
             opt.write_alpha = alpha;
-            opt.threads = 1;
-            long n1 = -1, n3 = -2;
-            unsigned char *a = NULL, *b = NULL;
             tried++;
-            if (image_write(one, &src, &opt, err, sizeof err) == 0 && (opt.threads = 3) &&
-                image_write(three, &src, &opt, err, sizeof err) == 0) {
-                a = slurp(one, &n1);
-                b = slurp(three, &n3);
-            }
-            differ += !a || !b || n1 != n3 || memcmp(a, b, (size_t)n1) != 0;
-            free(a);
-            free(b);
+            differ += !written_alike(&src, opt, one, three, err, (int)sizeof err);
             int bad = -1;
             if (image_read(three, &back, 0.0, err, sizeof err) == 0) {
                 bad = png_ppm_mismatches(&src, &back, 0.0, bits16 ? 65535 : 255, alpha, 1.0f);
