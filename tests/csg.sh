@@ -60,39 +60,11 @@ csg-unbounded        1e-5   (9.9e-7)     1 (0)     1 (0)
 povray_scenes_check "$limits" tests/csg.sh $scenes
 
 # Every exact method decides as the shadow ray does, on every scene.
-methods="conventional cache light-buffer hst hst-always volume"
-if "$hstrace" --version 2>/dev/null | grep -q "Embree [0-9]"; then
-    methods="$methods embree"
-else
-    skip "embree --verify-shadows on the CSG scenes" "hstrace built without Embree (Debian package libembree-dev)"
-fi
-for s in $scenes; do
-    for m in $methods; do
-        case $m in
-        hst-always) opts="--shadows hst --volumes always" ;;
-        *) opts="--shadows $m" ;;
-        esac
-        # shellcheck disable=SC2086 # the method's options
-        "$hstrace" "$work/$s.pov" --width 120 --height 90 --threads 2 $opts --verify-shadows \
-            --stats-json "$work/v.json" -o "$work/v.exr" >/dev/null 2>"$work/err"
-        status=$?
-        check "$s, $m: renders with --verify-shadows" exited 0 || continue
-        dis=$(sed -n 's/.*"disagreements": \([0-9]*\).*/\1/p' "$work/v.json" | head -1)
-        checked=$(sed -n 's/.*"verified": \([0-9]*\).*/\1/p' "$work/v.json" | head -1)
-        check "$s, $m: ${dis:-(none)} disagreements with the shadow ray in ${checked:-(no count of)} decisions" \
-            test "${dis:-x}" = 0
-        [ "${checked:-0}" -gt 0 ] || not_ok "$s, $m: some decisions verified"
-    done
-done
+# shellcheck disable=SC2086 # the scene names, one word each
+verify_methods_check $scenes
 
 # Mistakes: status 2, the message at FILE:LINE:COLUMN, no image.
-while IFS='|' read -r scene message; do
-    printf '%s\n' "$scene" >"$work/bad.pov"
-    rm -f "$work/bad.png"
-    run "$work/bad.pov" --width 8 --height 6 -o "$work/bad.png"
-    check "$message: status 2, FILE:LINE:COLUMN, no image" \
-        test "$status $(grep -c "^$work/bad.pov:[0-9]*:[0-9]*: .*$message" "$work/err") $([ -e "$work/bad.png" ] && echo image || echo none)" = "2 1 none"
-done <<'BAD'
+bad_scenes_check <<'BAD'
 intersection { sphere { 0, 1 } polygon { 4, 0, x, x + y, y } }|'polygon' as a part of 'intersection' is not supported
 difference { sphere { 0, 1 } union { sphere { 0, 1 } triangle { 0, x, y } } }|'triangle' as a part of 'difference' is not supported
 intersection { sphere { 0, 1 } sphere { 0, 2 }|expected

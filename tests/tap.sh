@@ -212,6 +212,58 @@ povray_scenes_check() {
             "${tap_b}4.exr" "$5" "$6"
     done
 }
+# verify_methods_check NAME...: each $work/NAME.pov rendered at 120x90 on 2
+# threads with --verify-shadows by every exact shadow method (and embree
+# where hstrace has it), each held to 0 disagreements with the shadow ray,
+# or to the number the caller's verify_expected NAME METHOD OPTIONS prints
+# where it defines one (a known inexactness, measured its own way); and
+# some decisions verified, but on the scenes named in $verify_unlit.
+verify_methods_check() {
+    tap_methods="conventional cache light-buffer hst hst-always volume"
+    if "$hstrace" --version 2>/dev/null | grep -q "Embree [0-9]"; then
+        tap_methods="$tap_methods embree"
+    else
+        skip "embree --verify-shadows on $*" "hstrace built without Embree (Debian package libembree-dev)"
+    fi
+    for tap_name in "$@"; do
+        for tap_m in $tap_methods; do
+            case $tap_m in
+            hst-always) tap_opts="--shadows hst --volumes always" ;;
+            *) tap_opts="--shadows $tap_m" ;;
+            esac
+            # shellcheck disable=SC2086 # the method's options
+            "$hstrace" "$work/$tap_name.pov" --width 120 --height 90 --threads 2 $tap_opts --verify-shadows \
+                --stats-json "$work/v.json" -o "$work/v.exr" >/dev/null 2>"$work/err"
+            status=$?
+            check "$tap_name, $tap_m: renders with --verify-shadows" exited 0 || continue
+            tap_dis=$(sed -n 's/.*"disagreements": \([0-9]*\).*/\1/p' "$work/v.json" | head -1)
+            tap_checked=$(sed -n 's/.*"verified": \([0-9]*\).*/\1/p' "$work/v.json" | head -1)
+            tap_want=0
+            if command -v verify_expected >/dev/null 2>&1; then
+                tap_want=$(verify_expected "$tap_name" "$tap_m" "$tap_opts")
+                tap_want=${tap_want:-0}
+            fi
+            check "$tap_name, $tap_m: ${tap_dis:-(none)} disagreements with the shadow ray (expected $tap_want) in ${tap_checked:-(no count of)} decisions" \
+                test "${tap_dis:-x}" = "$tap_want"
+            case " ${verify_unlit:-} " in
+            *" $tap_name "*) ;;
+            *) [ "${tap_checked:-0}" -gt 0 ] || not_ok "$tap_name, $tap_m: some decisions verified" ;;
+            esac
+        done
+    done
+}
+# bad_scenes_check: each line SCENE|MESSAGE of its input written to
+# $work/bad.pov and rendered (the caller's run): status 2, MESSAGE at the
+# scene's FILE:LINE:COLUMN, and no image.
+bad_scenes_check() {
+    while IFS='|' read -r tap_scene tap_message; do
+        printf '%s\n' "$tap_scene" >"$work/bad.pov"
+        rm -f "$work/bad.png"
+        run "$work/bad.pov" --width 8 --height 6 -o "$work/bad.png"
+        check "$tap_message: status 2, FILE:LINE:COLUMN, no image" \
+            test "$status $(grep -c "^$work/bad.pov:[0-9]*:[0-9]*: .*$tap_message" "$work/err") $([ -e "$work/bad.png" ] && echo image || echo none)" = "2 1 none"
+    done
+}
 # no_interior STATUS INTERIOR: compare exited 0 and counted 0 interior pixels
 no_interior() {
     if [ "$1" = 0 ] && [ "$2" = 0 ]; then return 0; fi
