@@ -371,11 +371,6 @@ static inline void shadow_shape_window(double distance, double *tmin, double *tl
 /* One plane's part: World.planes[i] (passed over where it is q's own
  * surface or casts no shadow); tmin: trace_min_distance(q->point). */
 int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tmin, RGB *light);
-/* A decision of the planes' part, then (unless a plane blocks) a method's
- * polygon part, which counts its own scheme: the cache's and the light
- * buffer's tests. */
-void shadow_planes_then(ShadowContext *ctx, const ShadowQuery *q, RGB *light,
-                        int (*polygons)(ShadowContext *ctx, const ShadowQuery *q, RGB *light));
 int shadow_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
 /* The polygon part against a list of candidates instead of the hierarchy:
  * the same answer as shadow_polygons_test when the list holds every

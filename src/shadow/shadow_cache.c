@@ -127,9 +127,9 @@ int shadow_cache_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *li
     return cache_polygons_test(ctx, q, light);
 }
 
-/* shadow_planes_then's decision with the cache's polygon part, written out
- * so that the part is inlined (this is every decision of hst on a big mesh,
- * where the calls' own cost counted against the cache). */
+/* The planes' part, then, unless a plane blocks, the cache's polygon part,
+ * inlined (this is every decision of hst on a big mesh, where a call
+ * through a pointer counted against the cache). */
 void shadow_cache_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     light->r = light->g = light->b = 1.0;

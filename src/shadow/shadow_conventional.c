@@ -494,19 +494,6 @@ int shadow_fold_filtered(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     return 0;
 }
 
-void shadow_planes_then(ShadowContext *ctx, const ShadowQuery *q, RGB *light,
-                        int (*polygons)(ShadowContext *ctx, const ShadowQuery *q, RGB *light))
-{
-    light->r = light->g = light->b = 1.0;
-    ctx->last_scheme = SCHEME_CONVENTIONAL;
-    if (shadow_planes_test(ctx, q, light)) {
-        ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
-        ctx->stats.shadow_blocked++;
-        return;
-    }
-    polygons(ctx, q, light);
-}
-
 void shadow_conventional_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     light->r = light->g = light->b = 1.0;

@@ -200,8 +200,9 @@ int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, 
     return buffer_polygons_test(ctx, buffer_for(ctx, q), q, light);
 }
 
-/* shadow_planes_then's decision, the planes by their sides where the
- * light has a buffer. */
+/* The planes' part (by their sides where the light has a buffer), then,
+ * unless a plane blocks, the buffer's polygon part, which counts its own
+ * scheme. */
 static void light_buffer_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     LightBuffer *lb = buffer_for(ctx, q);
