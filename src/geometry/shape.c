@@ -35,13 +35,18 @@ static int sphere_roots(Vec3 org, Vec3 unit_dir, Vec3 center, double radius2, do
     return 1;
 }
 
+/* The ray in s's own space where its parameters are kept there
+ * (Shape.transformed), else as it is; the direction is not made unit. */
+static void own_ray(const Shape *s, Vec3 org, Vec3 dir, Vec3 *o, Vec3 *d)
+{
+    *o = s->transformed ? inverse_transform_point(&s->to_world, org) : org;
+    *d = s->transformed ? inverse_transform_direction(&s->to_world, dir) : dir;
+}
+
 static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
-    Vec3 o = org, d = dir;
-    if (s->transformed) {
-        o = inverse_transform_point(&s->to_world, org);
-        d = inverse_transform_direction(&s->to_world, dir);
-    }
+    Vec3 o, d;
+    own_ray(s, org, dir, &o, &d);
     /* POV-Ray's rays have unit directions (an ellipsoid's is made unit in
      * its own space): the tolerances apply to distances along such a ray,
      * which are then divided back to t along dir. */
@@ -528,11 +533,8 @@ static int box_slab(BoxSpan *sp, int axis, double p, double d, double lo, double
  * direction carried there, not made unit: distances stay the world's). */
 static int box_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
-    Vec3 p = org, d = dir;
-    if (s->transformed) {
-        p = inverse_transform_point(&s->to_world, org);
-        d = inverse_transform_direction(&s->to_world, dir);
-    }
+    Vec3 p, d;
+    own_ray(s, org, dir, &p, &d);
     BoxSpan sp = { 0.0, 2.0e10, 0, 0 }; /* POV-Ray's BOUND_HUGE */
     const Vec3 lo = s->u.box.lo, hi = s->u.box.hi;
     if (!box_slab(&sp, 0, p.x, d.x, lo.x, hi.x, d) || !box_slab(&sp, 1, p.y, d.y, lo.y, hi.y, d) ||
@@ -579,11 +581,8 @@ static Vec3 box_normal(const Shape *s, int part)
 /* Plane::Intersect, in its own space where it has a transform. */
 static int plane_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
-    Vec3 p = org, d = dir;
-    if (s->transformed) {
-        p = inverse_transform_point(&s->to_world, org);
-        d = inverse_transform_direction(&s->to_world, dir);
-    }
+    Vec3 p, d;
+    own_ray(s, org, dir, &p, &d);
     const Vec3 n = s->u.plane.normal;
     double nd = v3_dot(n, d);
     if (fabs(nd) < POV_EPSILON)
