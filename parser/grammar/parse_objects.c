@@ -413,9 +413,31 @@ static Vec3 *vec3_array(Parser *p, const TempVec *v)
     return out;
 }
 
-static int near_point(Vec3 a, Vec3 b)
+int gram_outlines(Parser *p, TempVec *pts, double epsilon, int dims, TempVec *starts)
 {
-    return fabs(a.x - b.x) < POLY_EPSILON && fabs(a.y - b.y) < POLY_EPSILON && fabs(a.z - b.z) < POLY_EPSILON;
+    tok_tvec_init(starts, sizeof(int));
+    *(int *)tok_tvec_push(p, starts) = 0;
+    Vec3 *v = pts->data;
+    const int n = pts->n;
+    Vec3 first = v[0];
+    int closed = 0;
+    for (int i = 1; i < n; i++) {
+        closed = 0;
+        if (fabs(first.x - v[i].x) < epsilon && fabs(first.y - v[i].y) < epsilon &&
+            (dims < 3 || fabs(first.z - v[i].z) < epsilon)) {
+            v[i] = first;
+            i++;
+            if (i < n) {
+                first = v[i];
+                *(int *)tok_tvec_push(p, starts) = i;
+            }
+            closed = 1;
+        }
+    }
+    if (!closed)
+        *(Vec3 *)tok_tvec_push(p, pts) = first;
+    *(int *)tok_tvec_push(p, starts) = pts->n;
+    return closed;
 }
 
 /* An element count read from the file, sanity-checked against garbage. */
@@ -446,31 +468,10 @@ static SceneObject *parse_polygon(Parser *p, const Token *kw)
         expr_comma(p);
         *(Vec3 *)tok_tvec_push(p, &pts) = expr_vector(p);
     }
-    /* POV-Ray's outline rule (Parse_Polygon): an outline closes when a point
-     * repeats its first point; the next point starts a new outline. */
+    /* POV-Ray's outline rule (Parse_Polygon); an outline left open is
+     * closed without POV-Ray's "Polygon not closed" warning, as before */
     TempVec starts;
-    tok_tvec_init(&starts, sizeof(int));
-    *(int *)tok_tvec_push(p, &starts) = 0;
-    Vec3 *v = pts.data;
-    Vec3 first = v[0];
-    int closed = 0;
-    for (int i = 1; i < n; i++) {
-        closed = 0;
-        if (near_point(first, v[i])) {
-            v[i] = first;
-            i++;
-            if (i < n) {
-                first = v[i];
-                *(int *)tok_tvec_push(p, &starts) = i;
-            }
-            closed = 1;
-        }
-    }
-    if (!closed) { /* POV-Ray warns "Polygon not closed. Closing it." */
-        *(Vec3 *)tok_tvec_push(p, &pts) = first;
-        v = pts.data;
-    }
-    *(int *)tok_tvec_push(p, &starts) = pts.n;
+    (void)gram_outlines(p, &pts, POLY_EPSILON, 3, &starts);
     o->u.polygon.npoints = pts.n;
     o->u.polygon.points = vec3_array(p, &pts);
     o->u.polygon.noutlines = starts.n - 1;

@@ -27,8 +27,6 @@ void gram_uv_vector(Parser *p, double out[2])
     out[1] = terms >= 2 ? e[1] : e[0];
 }
 
-static int same_point(Vec3 a, Vec3 b) { return fabs(a.x - b.x) < PRISM_EPSILON && fabs(a.y - b.y) < PRISM_EPSILON; }
-
 SceneObject *gram_prism(Parser *p, const Token *kw)
 {
     tok_begin_block(p, "prism");
@@ -77,32 +75,11 @@ SceneObject *gram_prism(Parser *p, const Token *kw)
         (void)tok_next(p);
         o->u.prism.open = 1;
     }
-    /* POV-Ray's outline rule: an outline closes on a point equal to its
-     * first; the next point starts another. One left open is closed (with
-     * POV-Ray's warning "Linear prism not closed. Closing it."). */
+    /* POV-Ray's outline rule, in the plane of the outline (x and z, kept
+     * as x and y here) */
     TempVec starts;
-    tok_tvec_init(&starts, sizeof(int));
-    *(int *)tok_tvec_push(p, &starts) = 0;
-    Vec3 *v = pts.data;
-    Vec3 first = v[0];
-    int closed = 0;
-    for (int i = 1; i < n; i++) {
-        closed = 0;
-        if (same_point(first, v[i])) {
-            v[i] = first;
-            i++;
-            if (i < n) {
-                first = v[i];
-                *(int *)tok_tvec_push(p, &starts) = i;
-            }
-            closed = 1;
-        }
-    }
-    if (!closed) {
+    if (!gram_outlines(p, &pts, PRISM_EPSILON, 2, &starts))
         tok_warning(p, kw->pos, "Linear prism not closed. Closing it.");
-        *(Vec3 *)tok_tvec_push(p, &pts) = first;
-    }
-    *(int *)tok_tvec_push(p, &starts) = pts.n;
     Vec3 *kept = tok_scene_alloc(p, sizeof(Vec3) * (size_t)pts.n);
     memcpy(kept, pts.data, sizeof(Vec3) * (size_t)pts.n);
     int *outline_start = tok_scene_alloc(p, sizeof(int) * (size_t)starts.n);
