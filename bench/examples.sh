@@ -14,7 +14,9 @@
 #
 # usage: bench/examples.sh [BUILDDIR]   (default: the current folder)
 # Environment: HST_POVRAY_EXAMPLES (default /usr/share/doc/povray/examples),
-# POVRAY (default povray).
+# POVRAY (default povray), HST_EXAMPLES_ONLY (an extended regular expression:
+# survey only the scenes whose path matches it, for work on a few of them),
+# HST_EXAMPLES_OUT (where the table goes; default bench/examples.md).
 # Exit status: 0 done, 3 hstrace not built or the examples not installed.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
@@ -29,7 +31,7 @@ command -v "$povray" >/dev/null 2>&1 || povray=""
 work=$(mktemp -d "${TMPDIR:-/tmp}/hstsurvey.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 cp -R "$examples" "$work/examples"
-out="$here/examples.md"
+out=${HST_EXAMPLES_OUT:-$here/examples.md}
 width=160 height=120
 rendered="$work/rendered" failed="$work/failed"
 : >"$rendered"
@@ -44,7 +46,8 @@ error_line() {
 # "a|b|c" lines as Markdown table rows
 table_rows() { awk -F'|' '{ printf "|"; for (i = 1; i <= NF; i++) printf " %s |", $i; print "" }'; }
 
-(cd "$work/examples" && find . -name '*.pov' | sed 's|^\./||' | sort) >"$work/scenes"
+(cd "$work/examples" && find . -name '*.pov' | sed 's|^\./||' | sort |
+    grep -E -- "${HST_EXAMPLES_ONLY:-.}") >"$work/scenes"
 while read -r scene; do
     dir="$work/examples/$(dirname "$scene")"
     base=$(basename "$scene" .pov)
