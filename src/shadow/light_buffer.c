@@ -933,7 +933,8 @@ const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot
         CandidateList l = { 0 };
         ObjectList objects = { 0 };
         Pyramid pyr = pyramid_of(&top);
-        if (gather_from_hierarchy(lbs, lb, &pyr, spot->face, &l) == 0 && gather_objects(lbs, lb, &pyr, spot->face, &objects) == 0)
+        if (gather_from_hierarchy(lbs, lb, &pyr, spot->face, &l) == 0 &&
+            gather_objects(lbs, lb, &pyr, spot->face, &objects) == 0)
             c = make_cell(lbs, lb, &top, &l, &objects, NULL);
         candidates_free(&l);
         free(objects.c);

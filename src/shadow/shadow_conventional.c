@@ -237,7 +237,7 @@ int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
         double tmax = q->distance;
         uint64_t nodes = 0;
         return bvh_shapes_walk(bvh->shapes, q->point, q->to_light, &tmax, HIDE_NO_SHADOW, shadow_shape_test, &ss,
-                               &nodes);
+                               &nodes, ctx->tracer->avx2);
     }
     for (int i = 0; i < w->nshapes; i++) {
         double tmax = q->distance;
