@@ -16,7 +16,7 @@
 /* SHAPE_BOX and SHAPE_PLANE are POV-Ray's box and plane as parts of CSG
  * objects (csg.h), where their inside matters; elsewhere a box is six
  * polygons and a plane an InfinitePlane (world.h). */
-typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE } ShapeKind;
+typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE, SHAPE_GLYPH } ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
  * difference is an intersection whose later parts are inverted, and an
@@ -117,6 +117,11 @@ struct Shape {
             Vec3 normal;
             double distance;
         } plane;
+        /* A glyph of a text object (text.h), in its own space. */
+        struct {
+            const struct SceneGlyph *glyph;
+            double depth;
+        } glyph;
         /* A CSG object: nparts parts, the first at `parts` (the next at
          * parts + parts->subtree ...), set once World.shapes is final. */
         struct {
