@@ -35,10 +35,12 @@ enum { SHAPE_SIDE = 0, SHAPE_CAP = 1, SHAPE_BASE = 2 };
  * 0: none decided, POV-Ray's own initial value). */
 enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_SIDE_Z1 };
 
-/* The most surfaces one ray can cross on one shape: four on a torus, the
- * sum of its parts' on a CSG object, which the world's build keeps within
- * this (Shape.max_hits). */
-#define SHAPE_MAX_HITS 256
+/* The most surfaces one ray can cross on one shape: four on a torus, one
+ * per line and two per curve of a glyph's outline (text.h), the sum of its
+ * parts' on a CSG object, which the world's build keeps within this
+ * (Shape.max_hits): room for a text of some 60 letters as a CSG part (a
+ * buffer of 96 KiB on the stack where one is kept). */
+#define SHAPE_MAX_HITS 4096
 
 typedef struct Shape Shape;
 
