@@ -394,6 +394,12 @@ struct SceneObject {
      * transform rather than by a moved centre and radius. */
     unsigned general_transform : 1;
     unsigned sturm : 1;   /* `sturm`: POV-Ray's Sturm root solver for the polynomial shapes */
+    /* POV-Ray's bounding box of the object as min_extent and max_extent
+     * read it (its BBox: single-precision corner and lengths, carried
+     * through each transform written on it by Recompute_BBox), where
+     * hstrace keeps it: text objects (has_extent). */
+    unsigned has_extent : 1;
+    float extent_lower[3], extent_lengths[3];
     int double_illuminate;
     /* clipped_by: the object's surfaces are kept only inside every one of
      * these solids (POV-Ray's Clip, also in its inside test). Each is

@@ -127,6 +127,12 @@ SceneObject *gram_height_field(Parser *p, const Token *kw);
 SceneObject *gram_bicubic_patch(Parser *p, const Token *kw);
 SceneObject *gram_prism(Parser *p, const Token *kw);
 SceneObject *gram_text(Parser *p, const Token *kw); /* parse_text.c */
+/* object_extent.c: POV-Ray's BBox of an object (SceneObject.has_extent):
+ * set from a minimum and maximum, read back as them, carried through one
+ * transform written on the object (nothing where it has none). */
+void gram_extent_from_min_max(SceneObject *o, const double min[3], const double max[3]);
+void gram_extent_min_max(const SceneObject *o, double min[3], double max[3]);
+void gram_extent_transform(SceneObject *o, const Transform *t);
 /* A 2-D vector (POV-Ray's Parse_UV_Vect: a float f stands for <f, f>). */
 void gram_uv_vector(Parser *p, double out[2]);
 

@@ -327,7 +327,9 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             return;
         }
         Token at = *t;
-        if (expr_transform_item(p, t, &o->transform)) {
+        Transform step;
+        if (expr_transform_step(p, t, &o->transform, &step)) {
+            gram_extent_transform(o, &step); /* POV-Ray's Recompute_BBox, step by step */
             /* what POV-Ray's analytic shapes take into their own parameters
              * (Translate, Rotate, a uniform Scale) and what they do not */
             if (at.kw == KW_matrix || at.kw == KW_transform || !transform_is_similarity(&o->transform))

@@ -19,7 +19,7 @@ static int is_unsupported_value_keyword(int kw)
     case KW_function: case KW_spline: case KW_pattern: case KW_media: case KW_density:
     case KW_fog: case KW_rainbow:
     case KW_density_map: case KW_photons: case KW_radiosity: case KW_interior_texture:
-    case KW_trace: case KW_min_extent: case KW_max_extent: case KW_vturbulence: case KW_file_exists:
+    case KW_trace: case KW_vturbulence: case KW_file_exists:
     case KW_datetime: case KW_now:
         return 1;
     default:

@@ -111,6 +111,24 @@ static const SceneGlyph *scene_glyph(Parser *p, const TtfGlyph *g, int units_per
     return sg;
 }
 
+/* TrueType::Compute_BBox of glyph object g, placed by its transform: the
+ * header's bounds from z = -TTF_Tolerance to depth + TTF_Tolerance, in
+ * single precision, carried through the transform. */
+static void glyph_extent(SceneObject *g, const SceneGlyph *sg, double depth, double funit)
+{
+    const double tol = 1.0e-6;
+    const double xmin = sg->xmin * funit, ymin = sg->ymin * funit, xmax = sg->xmax * funit, ymax = sg->ymax * funit;
+    const double zmin = -tol, zmax = depth + tol;
+    g->extent_lower[0] = (float)xmin;
+    g->extent_lower[1] = (float)ymin;
+    g->extent_lower[2] = (float)zmin;
+    g->extent_lengths[0] = (float)(xmax - xmin);
+    g->extent_lengths[1] = (float)(ymax - ymin);
+    g->extent_lengths[2] = (float)(zmax - zmin);
+    g->has_extent = 1;
+    gram_extent_transform(g, &g->transform);
+}
+
 typedef struct {
     unsigned ch, index, metrics;
     int xmin;
@@ -129,6 +147,8 @@ static void lay_out(Parser *p, SceneObject *text, TtfFont *font, const unsigned 
     tok_tvec_init(&known, sizeof(KnownGlyph));
     Vec3 total = v3(0.0, 0.0, 0.0);
     unsigned last_index = 0;
+    /* CSG::Compute_BBox of the union: around its glyphs' boxes */
+    double box_min[3] = { 2.0e10, 2.0e10, 2.0e10 }, box_max[3] = { -2.0e10, -2.0e10, -2.0e10 };
     char err[256];
     for (int i = 0; i < n; i++) {
         /* ProcessCharacter: the glyph already read for this character, or
@@ -178,10 +198,23 @@ static void lay_out(Parser *p, SceneObject *text, TtfFont *font, const unsigned 
         g->u.glyph.glyph = kg->glyph;
         g->u.glyph.depth = depth;
         transform_translate(&g->transform, place);
+        glyph_extent(g, kg->glyph, depth, funit);
+        double lo[3], hi[3];
+        gram_extent_min_max(g, lo, hi);
+        for (int k = 0; k < 3; k++) {
+            box_min[k] = fmin(box_min[k], lo[k]);
+            box_max[k] = fmax(box_max[k], hi[k]);
+        }
         *(SceneObject **)tok_tvec_push(p, children) = g;
         last_index = index;
     }
     ttf_close(font);
+    if (box_min[0] > box_max[0] || box_min[1] > box_max[1] || box_min[2] > box_max[2])
+        return; /* no glyph: POV-Ray keeps its huge box, which hstrace does not report */
+    for (int k = 0; k < 3; k++)
+        if (box_max[k] - box_min[k] > 1.0e6) /* CRITICAL_LENGTH: the box of everything */
+            box_min[0] = box_min[1] = box_min[2] = -1.0e10, box_max[0] = box_max[1] = box_max[2] = 1.0e10;
+    gram_extent_from_min_max(text, box_min, box_max);
 }
 
 SceneObject *gram_text(Parser *p, const Token *kw)
@@ -230,7 +263,11 @@ SceneObject *gram_text(Parser *p, const Token *kw)
     o->depth = 1;
     /* Parse_TrueType: "this tiny rotation should fix cracks in text that
      * lies along an axis", before any modifier */
-    transform_rotate(&o->transform, v3(0.001, 0.001, 0.001));
+    Transform tiny;
+    transform_identity(&tiny);
+    transform_rotate(&tiny, v3(0.001, 0.001, 0.001));
+    transform_compose(&o->transform, &tiny);
+    gram_extent_transform(o, &tiny);
     gram_object_mods(p, o, "text");
     return o;
 }
