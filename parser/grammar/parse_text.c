@@ -217,6 +217,26 @@ static void lay_out(Parser *p, SceneObject *text, TtfFont *font, const unsigned 
     gram_extent_from_min_max(text, box_min, box_max);
 }
 
+/* String_To_UCS2 reads \uXXXX as the character XXXX; hstrace's lexer
+ * has read the string already, without that escape: refused where a
+ * written string holds one. */
+static void refuse_unicode_escape(Parser *p, const Token *string_at)
+{
+    if (string_at->type != TK_STRING)
+        return;
+    for (int i = 0; i + 1 < string_at->len; i++) {
+        if (string_at->text[i] != '\\')
+            continue;
+        if (string_at->text[i + 1] == 'u') {
+            Token what = *string_at;
+            what.text = "the escape \\u in a text string";
+            what.len = (int)strlen(what.text);
+            tok_unsupported(p, &what);
+        }
+        i++; /* the escaped character */
+    }
+}
+
 SceneObject *gram_text(Parser *p, const Token *kw)
 {
     tok_begin_block(p, "text");
@@ -236,6 +256,7 @@ SceneObject *gram_text(Parser *p, const Token *kw)
     expr_comma(p);
     Token string_at = *tok_peek(p);
     const char *string = expr_string(p);
+    refuse_unicode_escape(p, &string_at);
     expr_comma(p);
     double depth = expr_float(p);
     expr_comma(p);
