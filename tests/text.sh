@@ -44,7 +44,7 @@ if grep -q "built without FreeType" "$work/err"; then
 fi
 check "a text object renders" test "$status" = 0
 
-scenes="text-front text-grazing text-transformed text-thickness text-csg text-utf8 text-ascii text-extent text-clip"
+scenes="text-front text-grazing text-transformed text-thickness text-csg text-utf8 text-ascii text-extent text-clip text-version"
 for s in $scenes; do
     cp "$srcdir/tests/text/$s.pov" "$work/$s.pov" || bail "cannot copy tests/text/$s.pov"
 done
@@ -61,6 +61,7 @@ text-utf8            1e-5   (2.7e-6)     1 (0)     1 (0)
 text-ascii           1e-5   (2.6e-6)     1 (0)     1 (0)
 text-extent          1e-5   (1.2e-6)     1 (0)     1 (0)
 text-clip            1e-5   (2.1e-6)     1 (0)     1 (0)
+text-version         1e-5   (2.6e-6)     1 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/text.sh $scenes

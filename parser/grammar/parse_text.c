@@ -135,9 +135,9 @@ typedef struct {
     const SceneGlyph *glyph;
 } KnownGlyph;
 
-/* ProcessNewTTF: the glyph objects of the string, placed. The font is
- * closed on every way out (tok_fail does not return: the font is read to
- * the end here before any failure is reported). */
+/* ProcessNewTTF: the glyph objects of the string, placed, and the text's
+ * bounding box. The font is closed here, before a glyph that cannot be
+ * read is reported (tok_fail does not return). */
 static void lay_out(Parser *p, SceneObject *text, TtfFont *font, const unsigned *chars, int n, double depth,
                     Vec3 offset, const Token *at, TempVec *children)
 {
