@@ -133,6 +133,9 @@ SceneObject *gram_text(Parser *p, const Token *kw); /* parse_text.c */
 void gram_extent_from_min_max(SceneObject *o, const double min[3], const double max[3]);
 void gram_extent_min_max(const SceneObject *o, double min[3], double max[3]);
 void gram_extent_transform(SceneObject *o, const Transform *t);
+/* A union's or CSG object's box from its parts' (CSG::Compute_BBox), where
+ * every part it takes has one. */
+void gram_csg_extent(SceneObject *o);
 /* A 2-D vector (POV-Ray's Parse_UV_Vect: a float f stands for <f, f>). */
 void gram_uv_vector(Parser *p, double out[2]);
 

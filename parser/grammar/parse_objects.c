@@ -1026,6 +1026,7 @@ static SceneObject *parse_children(Parser *p, const Token *kw, ObjectKind kind, 
         o->u.csg.lights = l;
         o->u.csg.light_slot = slot;
     }
+    gram_csg_extent(o); /* min_extent's box, before the modifiers move it */
     parse_object_mods(p, o, name);
     return o;
 }
