@@ -67,7 +67,12 @@ animations/raddem/raddem.pov|
 animations/fractalzoom/fractalzoom.pov|
 camera/mesh_camera/baking_repair_seams.pov|
 incdemo/strings.pov|
-textures/pigments/blkhole.pov|"
+textures/pigments/blkhole.pov|
+objects/ttf1.pov|
+advanced/float5.pov|
+animations/vect1/vect1.pov|
+language/arrays/array1.pov|
+objectmods/no_image.pov|"
 
 # The limits per scene, 160x120, each LIMIT (MEASURED): the value measured
 # on 2026-11-23 (POV-Ray 3.7.0.10, one thread; the same in two runs; the
@@ -106,6 +111,12 @@ animations/fractalzoom/fractalzoom.pov           0.91     (0.723)       23977 (1
 camera/mesh_camera/baking_repair_seams.pov       1e-5     (0)           1 (0)           1 (0)
 incdemo/strings.pov                              1e-5     (0)           1 (0)           1 (0)
 textures/pigments/blkhole.pov                    0.54     (0.43)        24000 (19200)   1 (0)
+# text (measured 2026-12-07, once text was modelled)
+objects/ttf1.pov                                 1e-5     (9.04e-7)     1 (0)           1 (0)
+advanced/float5.pov                              1e-5     (0)           1 (0)           1 (0)
+animations/vect1/vect1.pov                       1e-5     (3.52e-6)     1 (0)           1 (0)
+language/arrays/array1.pov                       1e-5     (3.52e-6)     1 (0)           1 (0)
+objectmods/no_image.pov                          1e-5     (2.49e-6)     1 (0)           1 (0)
 '
 
 while IFS='|' read -r scene todo; do

@@ -319,6 +319,9 @@ typedef enum {
     OBJ_DISC,
     OBJ_CONE,            /* also cylinder (equal radii) */
     OBJ_TORUS,
+    /* One glyph of a text object (a text is a union of them): its outline
+     * swept from z = 0 to z = depth (u.glyph). */
+    OBJ_GLYPH,
     /* CSG over solids (the analytic shapes and other CSG): children in
      * u.csg as a union's; a difference's children after the first are
      * taken away from it (POV-Ray: inverted, then intersected). */
@@ -346,6 +349,21 @@ typedef struct {
      * `texture` the first's; -1: the face has one texture. */
     int texture2, texture3;
 } MeshFace;
+
+/* A TrueType glyph's outline as POV-Ray 3.7's text object keeps it
+ * (truetype.cpp's GlyphStruct): contour k is the points start[k] ..
+ * start[k + 1] - 1 in font units divided by the units per em, its last
+ * point a copy of its first; a point off the curve is a quadratic Bezier's
+ * control point (two in a row have an on-curve point midway). The header's
+ * bounds, in font units, make its box. */
+typedef struct SceneGlyph {
+    int ncontours;
+    const int *start;
+    const double *x, *y;
+    const unsigned char *on_curve;
+    int xmin, ymin, xmax, ymax;
+    int units_per_em;
+} SceneGlyph;
 
 typedef struct SceneObject SceneObject;
 
@@ -376,6 +394,12 @@ struct SceneObject {
      * transform rather than by a moved centre and radius. */
     unsigned general_transform : 1;
     unsigned sturm : 1;   /* `sturm`: POV-Ray's Sturm root solver for the polynomial shapes */
+    /* POV-Ray's bounding box of the object as min_extent and max_extent
+     * read it (its BBox: single-precision corner and lengths, carried
+     * through each transform written on it by Recompute_BBox), where
+     * hstrace keeps it: text objects (has_extent). */
+    unsigned has_extent : 1;
+    float extent_lower[3], extent_lengths[3];
     int double_illuminate;
     /* clipped_by: the object's surfaces are kept only inside every one of
      * these solids (POV-Ray's Clip, also in its inside test). Each is
@@ -433,6 +457,10 @@ struct SceneObject {
         struct {
             double major, minor;
         } torus;
+        struct {
+            const SceneGlyph *glyph;
+            double depth;        /* the text's thickness: the sweep along z */
+        } glyph;
         struct {
             Vec3 normal; /* as written (not normalised) */
             double distance;

@@ -21,6 +21,7 @@ typedef struct GramState {
     int default_changed;        /* #default was used */
     /* POV-Ray's gammaMode while parsing (image_gamma.c) */
     enum { GAMMA_MODE_NONE, GAMMA_MODE_37_IMPLIED, GAMMA_MODE_36, GAMMA_MODE_37 } gamma_mode;
+    int charset; /* global_settings' charset so far (truetype_font.h's TTF_CHARSET_...) */
 } GramState;
 
 /* A value as POV-Ray stores it in a float (SNGL): map values, frequency,
@@ -125,6 +126,16 @@ void gram_object_mods(Parser *p, SceneObject *o, const char *what);
 SceneObject *gram_height_field(Parser *p, const Token *kw);
 SceneObject *gram_bicubic_patch(Parser *p, const Token *kw);
 SceneObject *gram_prism(Parser *p, const Token *kw);
+SceneObject *gram_text(Parser *p, const Token *kw); /* parse_text.c */
+/* object_extent.c: POV-Ray's BBox of an object (SceneObject.has_extent):
+ * set from a minimum and maximum, read back as them, carried through one
+ * transform written on the object (nothing where it has none). */
+void gram_extent_from_min_max(SceneObject *o, const double min[3], const double max[3]);
+void gram_extent_min_max(const SceneObject *o, double min[3], double max[3]);
+void gram_extent_transform(SceneObject *o, const Transform *t);
+/* A union's or CSG object's box from its parts' (CSG::Compute_BBox), where
+ * every part it takes has one. */
+void gram_csg_extent(SceneObject *o);
 /* A 2-D vector (POV-Ray's Parse_UV_Vect: a float f stands for <f, f>). */
 void gram_uv_vector(Parser *p, double out[2]);
 

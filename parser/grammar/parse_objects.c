@@ -19,12 +19,13 @@ int gram_is_object_keyword(int kw)
     case KW_polygon: case KW_triangle: case KW_smooth_triangle: case KW_mesh: case KW_mesh2:
     case KW_box: case KW_plane: case KW_union: case KW_object:
     case KW_height_field: case KW_bicubic_patch: case KW_prism:
+    case KW_text:
     case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus:
     case KW_intersection: case KW_difference: case KW_merge:
     /* POV-Ray objects hstrace cannot render */
     case KW_blob:
     case KW_lathe: case KW_sor: case KW_superellipsoid: case KW_sphere_sweep:
-    case KW_text: case KW_julia_fractal:
+    case KW_julia_fractal:
     case KW_isosurface: case KW_parametric: case KW_poly: case KW_polynomial: case KW_cubic:
     case KW_quartic: case KW_quadric: case KW_ovus: case KW_light_group:
         return 1;
@@ -50,7 +51,8 @@ static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
 static const SceneObject *first_non_solid(const SceneObject *o)
 {
     switch (o->kind) {
-    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: return NULL;
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: case OBJ_GLYPH:
+        return NULL;
     case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
         /* the parser bounds the depth (SceneObject.depth) */
         for (int i = 0; i < o->u.csg.nchildren; i++) {
@@ -82,6 +84,7 @@ static const char *object_kind_name(ObjectKind k)
     case OBJ_HEIGHT_FIELD: return "height_field";
     case OBJ_BICUBIC_PATCH: return "bicubic_patch";
     case OBJ_PRISM: return "prism";
+    case OBJ_GLYPH: return "text";
     }
     return "object";
 }
@@ -324,7 +327,9 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             return;
         }
         Token at = *t;
-        if (expr_transform_item(p, t, &o->transform)) {
+        Transform step;
+        if (expr_transform_step(p, t, &o->transform, &step)) {
+            gram_extent_transform(o, &step); /* POV-Ray's Recompute_BBox, step by step */
             /* what POV-Ray's analytic shapes take into their own parameters
              * (Translate, Rotate, a uniform Scale) and what they do not */
             if (at.kw == KW_matrix || at.kw == KW_transform || !transform_is_similarity(&o->transform))
@@ -1021,6 +1026,7 @@ static SceneObject *parse_children(Parser *p, const Token *kw, ObjectKind kind, 
         o->u.csg.lights = l;
         o->u.csg.light_slot = slot;
     }
+    gram_csg_extent(o); /* min_extent's box, before the modifiers move it */
     parse_object_mods(p, o, name);
     return o;
 }
@@ -1194,6 +1200,7 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_height_field: *obj = gram_height_field(p, &kw); break;
     case KW_bicubic_patch: *obj = gram_bicubic_patch(p, &kw); break;
     case KW_prism: *obj = gram_prism(p, &kw); break;
+    case KW_text: *obj = gram_text(p, &kw); break;
     case KW_sphere: *obj = parse_sphere(p, &kw); break;
     case KW_disc: *obj = parse_disc(p, &kw); break;
     case KW_cylinder: *obj = parse_cone(p, &kw, 1); break;

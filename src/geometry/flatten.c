@@ -18,6 +18,7 @@
 #include "parallel.h"
 #include "planar_shapes.h"
 #include "ptr_map.h"
+#include "text.h"
 #include "world_estimate.h"
 
 /* add_material's memo: 2^6 materials made lately, by a hash of what made
@@ -1007,6 +1008,28 @@ static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+/* A glyph of a text object (text.h), placed by its transforms (POV-Ray's
+ * TrueType keeps its outline and a transform). */
+static int flatten_glyph(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_GLYPH, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.glyph.glyph = o->u.glyph.glyph;
+    s->u.glyph.depth = o->u.glyph.depth;
+    s->max_hits = glyph_max_hits(o->u.glyph.glyph);
+    if (s->max_hits > SHAPE_MAX_HITS) {
+        snprintf(b->message, sizeof b->message,
+                 "a glyph of this text has up to %d surfaces along a line; hstrace takes %d at most", s->max_hits,
+                 SHAPE_MAX_HITS);
+        return -1;
+    }
+    shape_placed(b, s);
+    return 0;
+}
+
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
 /* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
@@ -1475,6 +1498,7 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_DISC: return flatten_disc(b, o, &in, material);
     case OBJ_CONE: return flatten_cone(b, o, &in, material);
     case OBJ_TORUS: return flatten_torus(b, o, &in, material);
+    case OBJ_GLYPH: return flatten_glyph(b, o, &in, material);
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
         return flatten_planar_shape(b, o, &in, material);
     case OBJ_UNION:

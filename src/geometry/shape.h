@@ -16,7 +16,7 @@
 /* SHAPE_BOX and SHAPE_PLANE are POV-Ray's box and plane as parts of CSG
  * objects (csg.h), where their inside matters; elsewhere a box is six
  * polygons and a plane an InfinitePlane (world.h). */
-typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE } ShapeKind;
+typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE, SHAPE_GLYPH } ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
  * difference is an intersection whose later parts are inverted, and an
@@ -35,10 +35,12 @@ enum { SHAPE_SIDE = 0, SHAPE_CAP = 1, SHAPE_BASE = 2 };
  * 0: none decided, POV-Ray's own initial value). */
 enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_SIDE_Z1 };
 
-/* The most surfaces one ray can cross on one shape: four on a torus, the
- * sum of its parts' on a CSG object, which the world's build keeps within
- * this (Shape.max_hits). */
-#define SHAPE_MAX_HITS 256
+/* The most surfaces one ray can cross on one shape: four on a torus, one
+ * per line and two per curve of a glyph's outline (text.h), the sum of its
+ * parts' on a CSG object, which the world's build keeps within this
+ * (Shape.max_hits): room for a text of some 60 letters as a CSG part (a
+ * buffer of 96 KiB on the stack where one is kept). */
+#define SHAPE_MAX_HITS 4096
 
 typedef struct Shape Shape;
 
@@ -117,6 +119,11 @@ struct Shape {
             Vec3 normal;
             double distance;
         } plane;
+        /* A glyph of a text object (text.h), in its own space. */
+        struct {
+            const struct SceneGlyph *glyph;
+            double depth;
+        } glyph;
         /* A CSG object: nparts parts, the first at `parts` (the next at
          * parts + parts->subtree ...), set once World.shapes is final. */
         struct {
