@@ -530,9 +530,19 @@ typedef struct SceneLight {
     const ApproxNote *photons; /* photons { }: counted as the objects' are */
 } SceneLight;
 
+/* POV-Ray 3.7's camera types (its CreateCameraRay). */
 typedef enum {
     CAMERA_PERSPECTIVE,
     CAMERA_ORTHOGRAPHIC,
+    CAMERA_FISHEYE,
+    CAMERA_ULTRA_WIDE_ANGLE,
+    CAMERA_OMNIMAX,
+    CAMERA_PANORAMIC,
+    CAMERA_CYLINDER_1, /* `cylinder 1` to `cylinder 4`, in that order */
+    CAMERA_CYLINDER_2,
+    CAMERA_CYLINDER_3,
+    CAMERA_CYLINDER_4,
+    CAMERA_SPHERICAL,
 } CameraKind;
 
 /* The camera after POV-Ray's parse rules (defaults, angle, look_at, sky and
@@ -541,6 +551,8 @@ typedef struct {
     CameraKind kind;
     SourcePos pos;
     Vec3 location, direction, up, right;
+    double angle;                  /* degrees; the field of view of the types after orthographic (90 by default) */
+    double h_angle, v_angle;       /* spherical: horizontal and vertical fields of view (360, 180) */
     const ApproxNote *approx; /* focal blur, camera normal */
 } SceneCamera;
 

@@ -1650,6 +1650,9 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
     w->camera.direction = scene->camera.direction;
     w->camera.up = scene->camera.up;
     w->camera.right = scene->camera.right;
+    w->camera.angle = scene->camera.angle;
+    w->camera.h_angle = scene->camera.h_angle;
+    w->camera.v_angle = scene->camera.v_angle;
     w->background_colour = rgb_of(&scene->background);
     w->background_filter = scene->background.filter;
     w->background_transmit = scene->background.transmit;

@@ -118,6 +118,7 @@ typedef struct {
 typedef struct {
     CameraKind kind;
     Vec3 location, direction, up, right;
+    double angle, h_angle, v_angle; /* as in SceneCamera */
 } Camera;
 
 /* The box of one outline's points: the least and largest coordinates. */
