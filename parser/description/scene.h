@@ -528,6 +528,10 @@ typedef struct SceneLight {
     AreaLight area;
     const ApproxNote *approx; /* media_attenuation */
     const ApproxNote *photons; /* photons { }: counted as the objects' are */
+    /* looks_like { OBJECT }: the object that shows where the light is, moved
+     * with it and casting no shadow (POV-Ray's LightSource children[0]); the
+     * parser adds it to the scene's objects with the light. NULL: none. */
+    SceneObject *looks_like;
 } SceneLight;
 
 /* POV-Ray 3.7's camera types (its CreateCameraRay). */

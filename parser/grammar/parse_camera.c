@@ -213,12 +213,49 @@ void gram_camera(Parser *p, const Token *kw, SceneCamera *cam)
     *cam = c;
 }
 
-void gram_transform_light(SceneLight *l, const Transform *tr)
+void gram_transform_light(Parser *p, SceneLight *l, const Transform *tr)
 {
     l->location = transform_point(tr, l->location);
     l->point_at = transform_point(tr, l->point_at);
     l->area.axis1 = transform_direction(tr, l->area.axis1);
     l->area.axis2 = transform_direction(tr, l->area.axis2);
+    if (l->looks_like) {
+        SceneObject *o = tok_scene_alloc(p, sizeof *o);
+        *o = *l->looks_like;
+        gram_transform_object(o, tr);
+        /* POV-Ray moves the child with Translate_Object when the light is
+         * translated, else with Transform_Object, which makes a sphere its
+         * ellipsoid whatever the transform */
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                if (tr->m[i][j] != (i == j ? 1.0 : 0.0))
+                    o->general_transform = 1;
+        l->looks_like = o;
+    }
+}
+
+/* looks_like { OBJECT MODIFIERS }, after the keyword, as POV-Ray's
+ * Parse_Light_Source reads it: the object as written, then moved to where
+ * the light is at this point, then the modifiers written after it in the
+ * block; it casts no shadow. */
+static void light_looks_like(Parser *p, SceneLight *l, const Token *kw)
+{
+    if (l->looks_like)
+        tok_fail(p, kw->pos, "only one looks_like allowed per light_source (POV-Ray: \"Only one looks_like allowed "
+                             "per light_source.\")");
+    tok_begin_block(p, "looks_like");
+    Token t = *tok_next(p);
+    SceneObject *o = NULL;
+    SceneLight *inner = NULL;
+    if (!gram_object(p, &t, &o, &inner) || !o)
+        tok_fail_expected(p, &t, "an object in 'looks_like'");
+    Transform to_light;
+    transform_identity(&to_light);
+    transform_translate(&to_light, l->location);
+    gram_transform_object(o, &to_light);
+    gram_object_mods(p, o, "looks_like");
+    o->no_shadow = 1;
+    l->looks_like = o;
 }
 
 SceneLight *gram_light_source(Parser *p, const Token *kw)
@@ -243,11 +280,12 @@ SceneLight *gram_light_source(Parser *p, const Token *kw)
         Transform tr;
         transform_identity(&tr);
         if (expr_transform_item(p, t, &tr)) {
-            gram_transform_light(l, &tr);
+            gram_transform_light(p, l, &tr);
             continue;
         }
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_shadowless: l->shadowless = 1; break;
+        case KW_looks_like: light_looks_like(p, l, t); break;
         case KW_parallel: l->kind = LIGHT_PARALLEL; break;
         case KW_spotlight: /* POV-Ray's defaults, reset each time the keyword is written */
             l->beam = BEAM_SPOT;
@@ -346,7 +384,7 @@ SceneLight *gram_light_source(Parser *p, const Token *kw)
             break;
         default:
             if (t->type == TK_WORD && t->kw >= 0)
-                tok_unsupported(p, t); /* looks_like, projected_through, fill_light, ... */
+                tok_unsupported(p, t); /* projected_through, fill_light, ... */
             tok_fail_expected(p, t, "a light_source item or '}' in 'light_source'");
         }
     }

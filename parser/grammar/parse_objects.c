@@ -405,6 +405,13 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
 
 void gram_object_mods(Parser *p, SceneObject *o, const char *what) { parse_object_mods(p, o, what); }
 
+void gram_transform_object(SceneObject *o, const Transform *tr)
+{
+    transform_compose(&o->transform, tr);
+    if (!transform_is_similarity(&o->transform))
+        o->general_transform = 1;
+}
+
 static Vec3 *vec3_array(Parser *p, const TempVec *v)
 {
     Vec3 *out = tok_scene_alloc(p, sizeof(Vec3) * (size_t)(v->n > 0 ? v->n : 1));
@@ -1036,7 +1043,7 @@ static void parse_light_object_mods(Parser *p, SceneLight *l)
         transform_identity(&tr);
         if (!expr_transform_item(p, m, &tr))
             tok_fail_expected(p, m, "a transform or '}' after a light_source in 'object'");
-        gram_transform_light(l, &tr);
+        gram_transform_light(p, l, &tr);
     }
 }
 
@@ -1056,6 +1063,8 @@ static SceneObject *copy_declared_object(Parser *p, const SceneObject *declared)
     return o;
 }
 
+SceneObject *gram_copy_object(Parser *p, const SceneObject *o) { return copy_declared_object(p, o); }
+
 /* Appends the light_sources of union `o` and of the unions inside it to the
  * scene's lights, in world space: `outer` is the transform of o's parents.
  * Order as POV-Ray's Post_Process: depth first, as written. */
@@ -1070,7 +1079,13 @@ void gram_instantiate_union_lights(Parser *p, const SceneObject *o, const Transf
         for (; next_light < o->u.csg.nlights && o->u.csg.light_slot[next_light] == c; next_light++) {
             SceneLight *l = tok_tvec_push(p, &p->gram->lights);
             *l = o->u.csg.lights[next_light];
-            gram_transform_light(l, &world);
+            gram_transform_light(p, l, &world);
+            if (l->looks_like) {
+                SceneObject *shown = copy_declared_object(p, l->looks_like); /* a light's own */
+                if (!shown->texture && p->gram->default_changed)
+                    shown->texture = gram_default_texture(p);
+                *(SceneObject **)tok_tvec_push(p, &p->gram->objects) = shown;
+            }
         }
         if (c < o->u.csg.nchildren)
             gram_instantiate_union_lights(p, o->u.csg.children[c], &world, depth + 1);
