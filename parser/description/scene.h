@@ -319,6 +319,7 @@ typedef enum {
     OBJ_DISC,
     OBJ_CONE,            /* also cylinder (equal radii) */
     OBJ_TORUS,
+    OBJ_BLOB,            /* u.blob: POV-Ray's blob, a field's level surface */
     /* CSG over solids (the analytic shapes and other CSG): children in
      * u.csg as a union's; a difference's children after the first are
      * taken away from it (POV-Ray: inverted, then intersected). */
@@ -348,6 +349,23 @@ typedef struct {
 } MeshFace;
 
 typedef struct SceneObject SceneObject;
+
+/* A blob's component as POV-Ray's Parse_Blob leaves it (its Blob_Element
+ * before Make_Blob): a sphere keeps its centre and radius through
+ * translations, rotations and uniform scales, and becomes an ellipsoid
+ * (own_space: then `center` and `radius2` are in its own space, reached
+ * through `placed`) at any other transform; a cylinder is always placed:
+ * from base to apex of radius sqrt(radius2), then `placed`. */
+typedef enum { BLOB_COMPONENT_SPHERE, BLOB_COMPONENT_CYLINDER } BlobComponentKind;
+typedef struct {
+    BlobComponentKind kind;
+    double strength;
+    double radius2;
+    Vec3 center;       /* sphere */
+    Vec3 base, apex;   /* cylinder */
+    int own_space;     /* sphere: an ellipsoid, placed by `placed` */
+    Transform placed;  /* the component's transforms after its own frame */
+} SceneBlobComponent;
 
 struct SceneObject {
     ObjectKind kind;
@@ -433,6 +451,11 @@ struct SceneObject {
         struct {
             double major, minor;
         } torus;
+        struct {
+            double threshold;
+            int ncomponents;                       /* as written, at least 1 */
+            const SceneBlobComponent *components;
+        } blob;
         struct {
             Vec3 normal; /* as written (not normalised) */
             double distance;

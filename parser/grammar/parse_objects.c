@@ -19,10 +19,9 @@ int gram_is_object_keyword(int kw)
     case KW_polygon: case KW_triangle: case KW_smooth_triangle: case KW_mesh: case KW_mesh2:
     case KW_box: case KW_plane: case KW_union: case KW_object:
     case KW_height_field: case KW_bicubic_patch: case KW_prism:
-    case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus:
+    case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus: case KW_blob:
     case KW_intersection: case KW_difference: case KW_merge:
     /* POV-Ray objects hstrace cannot render */
-    case KW_blob:
     case KW_lathe: case KW_sor: case KW_superellipsoid: case KW_sphere_sweep:
     case KW_text: case KW_julia_fractal:
     case KW_isosurface: case KW_parametric: case KW_poly: case KW_polynomial: case KW_cubic:
@@ -50,7 +49,8 @@ static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
 static const SceneObject *first_non_solid(const SceneObject *o)
 {
     switch (o->kind) {
-    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: return NULL;
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BLOB: case OBJ_BOX: case OBJ_PLANE:
+        return NULL;
     case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
         /* the parser bounds the depth (SceneObject.depth) */
         for (int i = 0; i < o->u.csg.nchildren; i++) {
@@ -76,6 +76,7 @@ static const char *object_kind_name(ObjectKind k)
     case OBJ_DISC: return "disc";
     case OBJ_CONE: return "cone";
     case OBJ_TORUS: return "torus";
+    case OBJ_BLOB: return "blob";
     case OBJ_INTERSECTION: return "intersection";
     case OBJ_DIFFERENCE: return "difference";
     case OBJ_MERGE: return "merge";
@@ -367,8 +368,8 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_sturm: o->sturm = optional_bool(p) ? 1u : 0u; break;
         case KW_split_union: skip_optional_float(p); break;
         case KW_hierarchy: /* POV-Ray's bounding inside a height field, mesh or CSG: no effect on the image */
-            if (o->kind != OBJ_HEIGHT_FIELD && o->kind != OBJ_MESH && o->kind != OBJ_UNION)
-                tok_fail(p, at.pos, "Keyword 'hierarchy' cannot be used with this object (height fields, meshes and CSG take it).");
+            if (o->kind != OBJ_HEIGHT_FIELD && o->kind != OBJ_MESH && o->kind != OBJ_UNION && o->kind != OBJ_BLOB)
+                tok_fail(p, at.pos, "Keyword 'hierarchy' cannot be used with this object (height fields, meshes, blobs and CSG take it).");
             (void)optional_bool(p);
             break;
         case KW_uv_mapping: uv = 1; break; /* every texture of the object, at the end */
@@ -1214,6 +1215,7 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_cylinder: *obj = parse_cone(p, &kw, 1); break;
     case KW_cone: *obj = parse_cone(p, &kw, 0); break;
     case KW_torus: *obj = parse_torus(p, &kw); break;
+    case KW_blob: *obj = gram_blob(p, &kw); break;
     case KW_union: *obj = parse_children(p, &kw, OBJ_UNION, "union"); break;
     case KW_intersection: *obj = parse_children(p, &kw, OBJ_INTERSECTION, "intersection"); break;
     case KW_difference: *obj = parse_children(p, &kw, OBJ_DIFFERENCE, "difference"); break;

@@ -192,6 +192,9 @@ typedef struct {
      * as it names any shape (ShapeHit.leaf) */
     Shape *shapes;
     int nparts;
+    /* The blobs' components (blob.h), one allocation per blob shape */
+    int nblobs;
+    struct Blob **blobs;
     int nmaterials;
     Material *materials;
     int nmaps;
