@@ -53,6 +53,11 @@ static void component_mods(Parser *p, SceneBlobComponent *c)
     }
 }
 
+/* In a declaration that something unsupported already spoils (a value of
+ * inside(), say), checks of the values are moot: the declaration is
+ * refused for that. */
+static int moot(const Parser *p) { return p->declaring && p->deferred_what; }
+
 /* RADIUS, [strength] STRENGTH: the radius squared, as POV-Ray keeps it. */
 static void radius_strength(Parser *p, SceneBlobComponent *c)
 {
@@ -108,7 +113,7 @@ SceneObject *gram_blob(Parser *p, const Token *kw)
             c.apex = expr_vector(p);
             expr_comma(p);
             radius_strength(p, &c);
-            if (v3_length(v3_sub(c.apex, c.base)) < BLOB_EPSILON)
+            if (v3_length(v3_sub(c.apex, c.base)) < BLOB_EPSILON && !moot(p))
                 tok_fail(p, t.pos, "degenerate cylindrical component in blob (POV-Ray: \"Degenerate cylindrical "
                                    "component in blob.\")");
             component_mods(p, &c);
@@ -118,7 +123,7 @@ SceneObject *gram_blob(Parser *p, const Token *kw)
             tok_fail(p, t.pos, "more than POV-Ray's maximum of %d components in a blob", MAX_BLOB_COMPONENTS);
         *(SceneBlobComponent *)tok_tvec_push(p, &comps) = c;
     }
-    if (comps.n < 1)
+    if (comps.n < 1 && !moot(p))
         tok_fail(p, kw->pos, "need at least one component in a blob (POV-Ray: \"Need at least one component in a "
                              "blob.\")");
     SceneBlobComponent *list = tok_scene_alloc(p, sizeof *list * (size_t)comps.n);
