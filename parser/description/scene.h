@@ -322,6 +322,7 @@ typedef enum {
     /* One glyph of a text object (a text is a union of them): its outline
      * swept from z = 0 to z = depth (u.glyph). */
     OBJ_GLYPH,
+    OBJ_BLOB,            /* u.blob: POV-Ray's blob, a field's level surface */
     /* CSG over solids (the analytic shapes and other CSG): children in
      * u.csg as a union's; a difference's children after the first are
      * taken away from it (POV-Ray: inverted, then intersected). */
@@ -366,6 +367,23 @@ typedef struct SceneGlyph {
 } SceneGlyph;
 
 typedef struct SceneObject SceneObject;
+
+/* A blob's component as POV-Ray's Parse_Blob leaves it (its Blob_Element
+ * before Make_Blob): a sphere keeps its centre and radius through
+ * translations, rotations and uniform scales, and becomes an ellipsoid
+ * (own_space: then `center` and `radius2` are in its own space, reached
+ * through `placed`) at any other transform; a cylinder is always placed:
+ * from base to apex of radius sqrt(radius2), then `placed`. */
+typedef enum { BLOB_COMPONENT_SPHERE, BLOB_COMPONENT_CYLINDER } BlobComponentKind;
+typedef struct {
+    BlobComponentKind kind;
+    double strength;
+    double radius2;
+    Vec3 center;       /* sphere */
+    Vec3 base, apex;   /* cylinder */
+    int own_space;     /* sphere: an ellipsoid, placed by `placed` */
+    Transform placed;  /* the component's transforms after its own frame */
+} SceneBlobComponent;
 
 struct SceneObject {
     ObjectKind kind;
@@ -462,6 +480,11 @@ struct SceneObject {
             double depth;        /* the text's thickness: the sweep along z */
         } glyph;
         struct {
+            double threshold;
+            int ncomponents;                       /* as written, at least 1 */
+            const SceneBlobComponent *components;
+        } blob;
+        struct {
             Vec3 normal; /* as written (not normalised) */
             double distance;
         } plane;
@@ -556,11 +579,25 @@ typedef struct SceneLight {
     AreaLight area;
     const ApproxNote *approx; /* media_attenuation */
     const ApproxNote *photons; /* photons { }: counted as the objects' are */
+    /* looks_like { OBJECT }: the object that shows where the light is, moved
+     * with it and casting no shadow (POV-Ray's LightSource children[0]); the
+     * parser adds it to the scene's objects with the light. NULL: none. */
+    SceneObject *looks_like;
 } SceneLight;
 
+/* POV-Ray 3.7's camera types (its CreateCameraRay). */
 typedef enum {
     CAMERA_PERSPECTIVE,
     CAMERA_ORTHOGRAPHIC,
+    CAMERA_FISHEYE,
+    CAMERA_ULTRA_WIDE_ANGLE,
+    CAMERA_OMNIMAX,
+    CAMERA_PANORAMIC,
+    CAMERA_CYLINDER_1, /* `cylinder 1` to `cylinder 4`, in that order */
+    CAMERA_CYLINDER_2,
+    CAMERA_CYLINDER_3,
+    CAMERA_CYLINDER_4,
+    CAMERA_SPHERICAL,
 } CameraKind;
 
 /* The camera after POV-Ray's parse rules (defaults, angle, look_at, sky and
@@ -569,6 +606,8 @@ typedef struct {
     CameraKind kind;
     SourcePos pos;
     Vec3 location, direction, up, right;
+    double angle;                  /* degrees; the field of view of the types after orthographic (90 by default) */
+    double h_angle, v_angle;       /* spherical: horizontal and vertical fields of view (360, 180) */
     const ApproxNote *approx; /* focal blur, camera normal */
 } SceneCamera;
 

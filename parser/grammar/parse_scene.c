@@ -514,6 +514,8 @@ static void add_object(Parser *p, SceneObject *o, SceneLight *l)
 {
     if (l) {
         *(SceneLight *)tok_tvec_push(p, &p->gram->lights) = *l;
+        if (l->looks_like) /* an object of the scene, where the light is */
+            add_object(p, gram_copy_object(p, l->looks_like), NULL);
         return;
     }
     if (!o->texture && p->gram->default_changed)

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "big_memory.h"
+#include "blob.h"
 #include "clock.h"
 #include "memory_budget.h"
 #include "parallel.h"
@@ -1030,6 +1031,38 @@ static int flatten_glyph(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+/* A blob, in its own space, carried by every transform (Blob::Transform
+ * makes it a transformed one at the first). */
+static int flatten_blob(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    World *w = b->w;
+    struct Blob **list = realloc(w->blobs, sizeof *list * (size_t)(w->nblobs + 1));
+    if (!list) {
+        b->failed = 1;
+        return -1;
+    }
+    w->blobs = list;
+    struct Blob *blob = blob_make(o->u.blob.components, o->u.blob.ncomponents, o->u.blob.threshold);
+    if (!blob) {
+        b->failed = 1;
+        return -1;
+    }
+    w->blobs[w->nblobs++] = blob;
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_BLOB, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.blob.blob = blob;
+    s->u.blob.sturm = o->sturm;
+    /* up to four crossings in each interval between two of its
+     * components' boundaries */
+    long most = 8L * blob->nelements;
+    s->max_hits = most < SHAPE_MAX_HITS ? (int)most : SHAPE_MAX_HITS;
+    shape_placed(b, s);
+    return 0;
+}
+
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
 /* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
@@ -1499,6 +1532,7 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_CONE: return flatten_cone(b, o, &in, material);
     case OBJ_TORUS: return flatten_torus(b, o, &in, material);
     case OBJ_GLYPH: return flatten_glyph(b, o, &in, material);
+    case OBJ_BLOB: return flatten_blob(b, o, &in, material);
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
         return flatten_planar_shape(b, o, &in, material);
     case OBJ_UNION:
@@ -1674,6 +1708,9 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
     w->camera.direction = scene->camera.direction;
     w->camera.up = scene->camera.up;
     w->camera.right = scene->camera.right;
+    w->camera.angle = scene->camera.angle;
+    w->camera.h_angle = scene->camera.h_angle;
+    w->camera.v_angle = scene->camera.v_angle;
     w->background_colour = rgb_of(&scene->background);
     w->background_filter = scene->background.filter;
     w->background_transmit = scene->background.transmit;
@@ -1732,6 +1769,9 @@ void world_free(World *w)
     free(w->sky);
     free(w->planes);
     free(w->shapes);
+    for (int i = 0; i < w->nblobs; i++)
+        blob_free(w->blobs[i]);
+    free(w->blobs);
     free(w->materials);
     free(w->maps);
     free(w->map_entries);

@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "blob.h"
 #include "csg.h"
 #include "polynomial.h"
 #include "text.h"
@@ -642,6 +643,9 @@ void shape_compute_bounds(Shape *s)
     case SHAPE_GLYPH:
         glyph_local_bounds(s, &lo, &hi);
         break;
+    case SHAPE_BLOB:
+        blob_bounds(s, &s->bbox_min, &s->bbox_max);
+        return;
     case SHAPE_TORUS: {
         double r1 = s->u.torus.minor, r2 = s->u.torus.major + s->u.torus.minor;
         lo = v3(-r2, -r1, -r2);
@@ -686,6 +690,7 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     case SHAPE_BOX: n = box_all(s, org, u, ulimit, hits); break;
     case SHAPE_PLANE: n = plane_all(s, org, u, ulimit, hits); break;
     case SHAPE_GLYPH: n = glyph_intersect_all(s, org, u, ulimit, hits); break;
+    case SHAPE_BLOB: n = blob_intersect_all(s, org, u, ulimit, hits); break;
     }
     if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
         for (int k = 0; k < n; k++)
@@ -716,6 +721,7 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_BOX: return box_inside(s, p);
     case SHAPE_PLANE: return plane_inside(s, p);
     case SHAPE_GLYPH: return glyph_inside(s, p);
+    case SHAPE_BLOB: return blob_inside(s, p);
     }
     return 0;
 }
@@ -731,6 +737,7 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_BOX: return box_normal(s, part);
     case SHAPE_PLANE: return plane_normal(s);
     case SHAPE_GLYPH: return glyph_normal(s, p, part);
+    case SHAPE_BLOB: return blob_normal(s, p);
     }
     return v3(0.0, 1.0, 0.0);
 }
@@ -746,6 +753,7 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_BOX:         /* hstrace keeps no uv of a box that is a CSG part (man page) */
     case SHAPE_PLANE: break;
     case SHAPE_GLYPH: break; /* POV-Ray 3.7's TrueType has no mapping of its own */
+    case SHAPE_BLOB: break; /* POV-Ray's blob has no uv mapping */
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }

@@ -16,7 +16,7 @@
 /* SHAPE_BOX and SHAPE_PLANE are POV-Ray's box and plane as parts of CSG
  * objects (csg.h), where their inside matters; elsewhere a box is six
  * polygons and a plane an InfinitePlane (world.h). */
-typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE, SHAPE_GLYPH } ShapeKind;
+typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE, SHAPE_GLYPH, SHAPE_BLOB } ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
  * difference is an intersection whose later parts are inverted, and an
@@ -43,6 +43,7 @@ enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_
 #define SHAPE_MAX_HITS 4096
 
 typedef struct Shape Shape;
+struct Blob;
 
 /* One crossing of a shape's surface: where, and whether the ray enters
  * the solid there (for CSG and the interiors a ray is inside). */
@@ -105,6 +106,12 @@ struct Shape {
             double major, minor;
             int sturm;
         } torus;
+        /* A blob (blob.h), in its own space; its components are the
+         * world's (World.blobs). sturm: POV-Ray's Sturm solver always. */
+        struct {
+            const struct Blob *blob;
+            int sturm;
+        } blob;
         /* A box between its corners lo <= hi, in world space or in its own
          * where transformed (POV-Ray's bounds, moved and scaled with the
          * box until a rotation or matrix gives it a transform). */

@@ -88,6 +88,7 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
     case OBJ_CONE:
     case OBJ_TORUS:
     case OBJ_GLYPH:
+    case OBJ_BLOB:
         b += sizeof(Shape) + HIERARCHY_BYTES_PER_POLYGON; /* an item of the shapes' own hierarchy */
         break;
     case OBJ_UNION:
