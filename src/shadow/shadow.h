@@ -315,6 +315,9 @@ extern const ShadowMethod shadow_every_lit_method;
  * opaque blocker tried first (exact); also what a method hands its
  * decisions to where what it prepared would not pay (hst without volumes). */
 extern const ShadowMethod shadow_cache_method;
+/* The shadow ray alone (shadow_conventional.c): the exact reference, and
+ * hst's decider where not even the cache pays. */
+extern const ShadowMethod shadow_conventional_method;
 /* The light buffer (shadow_light_buffer.c), and its decision for hst:
  * the infinite planes and the curved objects first (shadow_planes_test's
  * answer, the objects by the light's cell), then, unless they block

@@ -533,3 +533,10 @@ void shadow_conventional_test(ShadowContext *ctx, const ShadowQuery *q, RGB *lig
     if (shadow_planes_test(ctx, q, light) || shadow_polygons_test(ctx, q, light))
         ctx->stats.shadow_blocked++;
 }
+
+const ShadowMethod shadow_conventional_method = {
+    .name = "conventional",
+    .summary = "a shadow ray per light through the grid (exact reference)",
+    .test = shadow_conventional_test,
+    .instances = 1,
+};

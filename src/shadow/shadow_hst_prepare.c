@@ -132,6 +132,24 @@ static int light_buffers_pay(const ShadowSetup *s)
     return point_lights > 0 && polygons <= HST_LIGHT_BUFFER_POLYGONS_PER_PIXEL * (double)s->width * (double)s->height;
 }
 
+/* Whether hst tries the lights' last blockers first (the cache method)
+ * rather than the shadow ray alone: where a blocker is likely to block the
+ * next points too, which polygons much smaller than a pixel are not (the
+ * neighbouring pixels' shadow rays pass other ones). Measured (callgrind,
+ * 640x480, 1 thread, the cache method against the shadow ray): make-mesh
+ * 10^5 triangles x 4 lights (0.33 polygons a pixel) 0.987x, its 63,064
+ * hits repaying the tries; 10^6 x 8 (3.3 a pixel) 1.026x in shadow
+ * testing, 1,553 hits in 1,526,077 decisions. So below one polygon a
+ * pixel. */
+#define HST_CACHE_POLYGONS_PER_PIXEL 1.0
+
+static int cache_pays(const ShadowSetup *s)
+{
+    const World *w = s->world;
+    double polygons = w->nids > w->npolygons ? w->nids : w->npolygons;
+    return polygons < HST_CACHE_POLYGONS_PER_PIXEL * (double)s->width * (double)s->height;
+}
+
 int shadow_hst_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err, int errlen)
 {
     /* A world with instances (shadow_method_takes_instances) gets no
@@ -151,6 +169,8 @@ int shadow_hst_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPre
      * opaque blocker tried first, shadow_cache.c), without hst's
      * per-decision wrapper: the same decisions and images. */
     if (!out->volumes && !world_has_beams(s->world))
-        out->decider = out->light_buffers ? &shadow_light_buffer_method : &shadow_cache_method;
+        out->decider = out->light_buffers ? &shadow_light_buffer_method
+                       : cache_pays(s)    ? &shadow_cache_method
+                                          : &shadow_conventional_method;
     return 0;
 }

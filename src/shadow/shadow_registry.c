@@ -36,12 +36,6 @@ static const ShadowMethod hst_row = {
     .skip = shadow_hst_skip,
     .area_beam = 1,
 };
-static const ShadowMethod conventional_row = {
-    .name = "conventional",
-    .summary = "a shadow ray per light through the grid (exact reference)",
-    .test = shadow_conventional_test,
-    .instances = 1,
-};
 static const ShadowMethod volume_row = {
     .name = "volume",
     .summary = "shadow volumes: a depth count carried along every segment",
@@ -74,7 +68,7 @@ static const ShadowMethod none_row = {
  * functions) and one row here (the cache's and the test-only method's rows
  * stand in their files: hst hands its decisions to the cache's). */
 static const ShadowMethod *const methods[] = {
-    &hst_row, &conventional_row, &shadow_cache_method, &volume_row, &embree_row, &shadow_light_buffer_method, &none_row,
+    &hst_row, &shadow_conventional_method, &shadow_cache_method, &volume_row, &embree_row, &shadow_light_buffer_method, &none_row,
     &shadow_every_lit_method,
 };
 
