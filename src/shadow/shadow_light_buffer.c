@@ -193,6 +193,14 @@ static int buffer_polygons_test(ShadowContext *ctx, const BufferPlace *at, const
      * rounded up */
     const double limit_d = q->distance * (1.0 + 1e-9) + lbs->margin;
     const float limit = (float)(limit_d * (1.0 + 0x1p-22)); /* float's rounding is below 2^-24 */
+    if (cell->n == 0 || !(cell->block[0].near[0] < limit)) {
+        /* no candidate nearer the light than the point: lit at once, as
+         * the walk below would find */
+        ctx->last_scheme = SCHEME_BUFFER_LIT;
+        ctx->stats.shadow_schemes[SCHEME_BUFFER_LIT]++;
+        ctx->light_cache[q->light].lit_last = 1;
+        return 0;
+    }
     const LbPoint point = lb_point(q->point, q->distance);
     const float u = (float)spot.u, v = (float)spot.v;
     /* an instance's own polygon is left out by its instance's walk */
