@@ -63,6 +63,17 @@ int camera_ray_at(const Camera *cam, int width, int height, double x, double y, 
     double x0 = px / width - 0.5;
     double y0 = ((height - 1) - py) / height - 0.5;
     Vec3 right = cam->right, up = cam->up, direction = cam->direction;
+    /* the two common types first: they need no more of the frame */
+    if (cam->kind == CAMERA_PERSPECTIVE) {
+        *org = cam->location;
+        *dir = v3_normalize(v3_add(direction, v3_add(v3_scale(right, x0), v3_scale(up, y0))));
+        return 1;
+    }
+    if (cam->kind == CAMERA_ORTHOGRAPHIC) {
+        *org = v3_add(cam->location, v3_add(v3_scale(right, x0), v3_scale(up, y0)));
+        *dir = v3_normalize(direction);
+        return 1;
+    }
     const double right_len = v3_length(right), up_len = v3_length(up);
     /* SetupCamera: the aspect ratio each type uses, and which types work
      * with the unit vectors of the camera's frame */
@@ -84,12 +95,8 @@ int camera_ray_at(const Camera *cam, int width, int height, double x, double y, 
 
     switch (cam->kind) {
     case CAMERA_PERSPECTIVE:
-        *dir = v3_normalize(v3_add(direction, v3_add(v3_scale(right, x0), v3_scale(up, y0))));
-        return 1;
     case CAMERA_ORTHOGRAPHIC:
-        *org = v3_add(cam->location, v3_add(v3_scale(right, x0), v3_scale(up, y0)));
-        *dir = v3_normalize(direction);
-        return 1;
+        break; /* (above) */
     case CAMERA_FISHEYE:
     case CAMERA_OMNIMAX: {
         x0 = 2.0 * px / width - 1.0;

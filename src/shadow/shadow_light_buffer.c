@@ -135,6 +135,8 @@ static int buffer_objects_test(ShadowContext *ctx, const BufferPlace *at, const 
 {
     const LbCell *cell = at->cell;
     const LightBuffers *lbs = ctx->light_buffers;
+    if (lbs->world->nshapes == 0)
+        return 0;
     if (!cell || !lbs->bvh->shapes || v3_max_abs(q->point) > lbs->object_reach)
         return shadow_shapes_test(ctx, q, light);
     /* the near bounds are floats rounded down: the limit is rounded up */
@@ -285,11 +287,16 @@ static int buffer_surfaces_test(ShadowContext *ctx, LightBuffer *lb, const Shado
     return buffer_objects_test(ctx, at, q, light);
 }
 
-int shadow_light_buffer_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *light, int *surfaces_blocked)
+static inline int buffer_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *light, int *surfaces_blocked)
 {
     BufferPlace at;
     *surfaces_blocked = buffer_surfaces_test(ctx, buffer_for(ctx, q), q, light, &at);
     return *surfaces_blocked || buffer_polygons_test(ctx, &at, q, light);
+}
+
+int shadow_light_buffer_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *light, int *surfaces_blocked)
+{
+    return buffer_decide(ctx, q, light, surfaces_blocked);
 }
 
 /* The planes' and objects' part, then, unless they block, the buffer's
@@ -299,7 +306,7 @@ static void light_buffer_test(ShadowContext *ctx, const ShadowQuery *q, RGB *lig
     light->r = light->g = light->b = 1.0;
     ctx->last_scheme = SCHEME_CONVENTIONAL;
     int surfaces_blocked;
-    if (shadow_light_buffer_decide(ctx, q, light, &surfaces_blocked) && surfaces_blocked) {
+    if (buffer_decide(ctx, q, light, &surfaces_blocked) && surfaces_blocked) {
         ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
         ctx->stats.shadow_blocked++;
     }
