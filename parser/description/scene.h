@@ -301,7 +301,15 @@ typedef struct SceneTexture {
      * the picture's palette entry (or red times 255) there names, unblended
      * (imageutil.cpp's material_map); the entries' values are 0, 1, ... */
     int material_map;
+    /* A layered texture (`texture { A } texture { B }`: B lies on A): the
+     * next layer down, a plain texture itself, or NULL. This texture is the
+     * top layer; POV-Ray lights each layer with its own pigment, normal and
+     * finish and lets the layers above filter it (ComputeLightedTexture). */
+    const struct SceneTexture *below;
 } SceneTexture;
+
+/* Layers hstrace shades in one layered texture (a bit of a word each). */
+#define MAX_TEXTURE_LAYERS 32
 
 typedef enum {
     OBJ_POLYGON,

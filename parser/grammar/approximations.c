@@ -109,6 +109,7 @@ static void tally_texture(Tally *t, const SceneTexture *tex)
     tally_normal(t, tex->normal, 0);
     tally_pigment(t, &tex->pigment);
     tally_notes(t, tex->finish.approx);
+    tally_texture(t, tex->below); /* a layered texture's lower layers */
 }
 
 static void tally_object(Tally *t, const SceneObject *o, int depth)

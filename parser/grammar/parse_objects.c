@@ -128,7 +128,17 @@ static int optional_bool(Parser *p)
 
 static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const Token *at)
 {
-    /* A second texture is a layer on top of the first (gram_layer_textures). */
+    /* A second texture is a layer on top of the first (gram_layer_textures).
+     * The object's transforms since the first was given moved it (POV-Ray
+     * transforms an object's textures as it goes); from here on they move
+     * both, from the one binding. */
+    if (o->texture && memcmp(&o->texture_bind, &o->transform, sizeof o->transform) != 0) {
+        Transform since;
+        memcpy(since.m, o->texture_bind.inv, sizeof since.m);
+        memcpy(since.inv, o->texture_bind.m, sizeof since.inv);
+        transform_compose(&since, &o->transform);
+        o->texture = gram_layers_moved(p, o->texture, &since);
+    }
     o->texture = o->texture ? gram_layer_textures(p, tex, o->texture, at) : tex;
     o->texture_bind = o->transform; /* transforms after the texture move it, those before do not */
 }
@@ -150,6 +160,7 @@ const SceneTexture *gram_texture_uv_mapped(Parser *p, const SceneTexture *tex)
     *copy = *tex;
     copy->pigment.uv_mapping = 1;
     copy->normal = gram_normal_uv_mapped(p, tex->normal);
+    copy->below = gram_texture_uv_mapped(p, tex->below); /* every layer */
     return copy;
 }
 
@@ -630,11 +641,12 @@ static int add_mesh_texture(Parser *p, MeshBuilder *mb, const SceneTexture *t)
  * triangle's texture_list), as vertex-coloured exports write them: POV-Ray
  * blends the three textures' shaded colours by the point's place in the
  * face (Mesh::Determine_Textures), and so does hstrace where the three are
- * plain textures (flatten.c, pigment.h); a texture_map among them leaves
+ * plain textures (flatten.c, pigment.h); a texture_map or a layered
+ * texture among them leaves
  * the face with the first vertex's texture, an approximation noted once
  * per mesh, at the first such face (`at`). Called for faces whose three
  * textures differ. */
-static int is_map(const SceneTexture *t) { return t && t->nmap > 0; }
+static int is_map(const SceneTexture *t) { return t && (t->nmap > 0 || t->below); }
 
 static void vertex_textures(Parser *p, SceneObject *o, const Token *at, const SceneTexture *const tex[3], int *noted)
 {

@@ -185,7 +185,8 @@ static int build_map(Builder *b, const SceneTexture *tex)
  * texture's space plays no part), so that equal ones make equal materials. */
 static int plain_texture(const SceneTexture *tex)
 {
-    return tex->pigment.kind == PIGMENT_SOLID && !(tex->normal && tex->normal->kind != NORMAL_NONE) && tex->nmap == 0;
+    return tex->pigment.kind == PIGMENT_SOLID && !(tex->normal && tex->normal->kind != NORMAL_NONE) && tex->nmap == 0 &&
+           !tex->below;
 }
 
 static int same_pos(SourcePos a, SourcePos b)
@@ -214,6 +215,10 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
             same_pos(pos, memo->pos))
             return memo->index;
     }
+    /* a layered texture's lower layers first: materials of their own */
+    int below = tex->below ? add_material(b, in, tex->below, texture_space, pos) : -1;
+    if (tex->below && below < 0)
+        return -1;
     if (GROW(b, materials, cap_materials, w->nmaterials))
         return -1;
     int map = -1;
@@ -222,6 +227,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     Material *m = &w->materials[w->nmaterials];
     memset(m, 0, sizeof *m);
     m->map = map;
+    m->below = below;
     m->pigment = tex->pigment.colour;
     if (tex->pigment.kind != PIGMENT_SOLID) {
         m->pattern = tex->pigment;
@@ -248,6 +254,8 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
      * Post_Process moves it there). */
     m->caustics = tex->nmap == 0 && tex->finish.caustics >= 0.0 ? tex->finish.caustics : it->caustics;
     m->opaque = map >= 0 ? w->maps[map].opaque : pigment_is_opaque(&tex->pigment);
+    if (below >= 0) /* a layer that lets nothing through stops the shadow ray (ComputeShadowTexture) */
+        m->opaque |= w->materials[below].opaque;
     m->no_shadow = in->no_shadow;
     m->no_image = in->no_image;
     m->no_reflection = in->no_reflection;
@@ -438,6 +446,8 @@ static int uses_uv(const World *w, int material)
     const Material *m = &w->materials[material];
     if (m->map >= 0 && w->maps[m->map].uses_uv)
         return 1;
+    if (m->below >= 0 && uses_uv(w, m->below))
+        return 1;
     return (m->pattern.kind != PIGMENT_SOLID && m->pattern.uv_mapping) || (m->normal && m->normal->kind == NORMAL_UV);
 }
 
@@ -478,7 +488,7 @@ static int attach_vertex_materials(Builder *b, int npolygons_before, const int m
     if (w->npolygons == npolygons_before)
         return 0; /* degenerate: no face */
     for (int i = 0; i < 3; i++)
-        if (w->materials[m[i]].map >= 0)
+        if (w->materials[m[i]].map >= 0 || w->materials[m[i]].below >= 0)
             return 0;
     if (GROW(b, vertex_materials, cap_vertex_materials, w->nvertex_materials + 3))
         return -1;

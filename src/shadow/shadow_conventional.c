@@ -42,6 +42,22 @@ static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int p
                            : world_polygon_shading_normal(w, polygon, -1, at);
     if (v3_dot(n, q->to_light) > 0.0)
         n = v3_neg(n);
+    if (m->below >= 0 && (polygon < 0 || w->polygons[polygon].vertex_materials < 0)) {
+        /* a layered texture: each layer's filter and caustics, multiplied */
+        SurfaceTexture layer[MAX_TEXTURE_LAYERS];
+        int nl = material_layers_at(w, m, uv_surface_of(w, polygon, plane), at, n, ctx->perturb_normals, layer);
+        RGB through = { 1, 1, 1 };
+        *blocks = 0;
+        for (int i = 0; i < nl; i++) {
+            const Colour *c = &layer[i].colour;
+            double k = 1.0 + pow(fabs(v3_dot(layer[i].normal, q->to_light)), m->caustics);
+            through.r *= k * (c->r * c->filter + c->transmit);
+            through.g *= k * (c->g * c->filter + c->transmit);
+            through.b *= k * (c->b * c->filter + c->transmit);
+            *blocks |= c->filter == 0.0 && c->transmit == 0.0;
+        }
+        return through;
+    }
     SurfaceTexture tx[MAX_SURFACE_TEXTURES];
     int nt = material_textures_normals_at(w, m, uv_surface_of(w, polygon, plane), at, n, ctx->perturb_normals, tx);
     RGB through = { 0, 0, 0 };
