@@ -1,9 +1,11 @@
 #!/bin/sh
 # Layered textures (`texture { A } texture { B }`, B on A, as woods.inc and
-# stones.inc write them), in TAP: the scenes of tests/layered-textures/
-# (see-through upper layers over patterned ones, a finish and a normal per
-# layer, shadows through filtering and transmitting layers, a POV-Ray 3.6
-# scene with an object moved between its layers), each rendered by hstrace
+# stones.inc write them) and interior_texture, in TAP: the scenes of
+# tests/layered-textures/ (see-through upper layers over patterned ones, a
+# finish and a normal per layer, shadows through filtering and transmitting
+# layers, a POV-Ray 3.6 scene with an object moved between its layers;
+# interior textures on shapes and boxes, a mirrored one, seen through gaps
+# in the outer texture and filtering shadows), each rendered by hstrace
 # and by POV-Ray 3.7 (+Q9 for the image, +Q3 and +Q4 for the shadow mask)
 # and compared by `hstrace compare` against the limits measured for each;
 # then every exact shadow method on each scene with --verify-shadows: not
@@ -11,7 +13,8 @@
 # thread as on 2; a layered texture renders under --strict (it is shaded as
 # POV-Ray shades it, not approximated), while a layered texture_map entry,
 # still blended into one pigment, is refused by --strict; a texture_map as
-# a layer is refused at its FILE:LINE:COLUMN.
+# a layer, an interior texture on a surface whose inside hstrace cannot
+# tell, and one without an outer texture are refused at FILE:LINE:COLUMN.
 #
 # Environment: top_srcdir, top_builddir (default .), POVRAY (path or name of
 # povray; may be empty: the comparisons with POV-Ray are skipped).
@@ -27,7 +30,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="layers-transparent layers-finishes layers-normals layers-shadow layers-legacy"
+scenes="layers-transparent layers-finishes layers-normals layers-shadow layers-legacy interior-texture"
 for s in $scenes; do
     cp "$srcdir/tests/layered-textures/$s.pov" "$work/$s.pov" || bail "cannot copy tests/layered-textures/$s.pov"
 done
@@ -37,10 +40,13 @@ done
 limits='
 # scene              RMSE   (measured)   off (m.)  mask pixels (m.)
 layers-transparent   1e-4   (1.4e-6)     0 (0)     1 (0)
-layers-finishes      1e-4   (8.1e-5)     0 (0)     1 (0)
+layers-finishes      1e-4   (2.1e-5)     0 (0)     1 (0)
 layers-normals       1e-4   (2.3e-5)     0 (0)     1 (0)
 layers-shadow        1e-4   (3.0e-6)     0 (0)     1 (0)
 layers-legacy        1e-4   (1.9e-6)     0 (0)     1 (0)
+# interior-texture: one pixel on the silhouette of the see-through sphere,
+# as many without its interior texture
+interior-texture     7e-4   (3.6e-4)     2 (1)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/layered-textures.sh $scenes
@@ -76,5 +82,7 @@ check "a layered texture_map entry: refused by --strict" exited 2
 bad_scenes_check <<'BAD'
 sphere { 0, 1 texture { pigment { rgbt 0.5 } } texture { checker texture { pigment { rgb 1 } } texture { } } }|'texture_map in layered textures' is not supported
 sphere { 0, 1 texture { pigment { rgbt 0.5 } } texture { pigment { rgbt } } }|expected
+mesh { triangle { 0, x, y } texture { pigment { rgb 1 } } interior_texture { pigment { rgb 1 } } }|'interior_texture' on a 'mesh' is not supported
+sphere { 0, 1 interior_texture { pigment { rgb 1 } } }|Interior texture requires an exterior texture
 BAD
 tap_end

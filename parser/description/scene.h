@@ -383,6 +383,10 @@ struct SceneObject {
     Transform transform;
     /* NULL: inherit from the enclosing union, else the scene's default. */
     const SceneTexture *texture;
+    /* POV-Ray's interior_texture: shown where a ray meets the surface from
+     * inside (its outward normal turned away from the ray); NULL: the
+     * enclosing union's, or none. Bound with `texture` (texture_bind). */
+    const SceneTexture *interior_texture;
     const Interior *interior; /* NULL: default interior (ior 1) */
     /* The object's transform when its texture was given: as in POV-Ray,
      * transforms written before the texture do not move its pattern, those

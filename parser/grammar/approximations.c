@@ -120,6 +120,7 @@ static void tally_object(Tally *t, const SceneObject *o, int depth)
     if (t->photons)
         tally_notes(t, o->photons);
     tally_texture(t, o->texture);
+    tally_texture(t, o->interior_texture);
     if (o->interior)
         tally_notes(t, o->interior->approx);
     if (scene_object_has_children(o->kind))

@@ -126,21 +126,68 @@ static int optional_bool(Parser *p)
     return 1;
 }
 
-static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const Token *at)
+/* The object's textures (and interior texture) so far moved by the
+ * transforms given since they were bound (POV-Ray transforms an object's
+ * textures as it goes), and bound again here: a texture given now is moved
+ * by the transforms after it alone, and so from here on are they all. */
+static void rebind_textures(Parser *p, SceneObject *o)
 {
-    /* A second texture is a layer on top of the first (gram_layer_textures).
-     * The object's transforms since the first was given moved it (POV-Ray
-     * transforms an object's textures as it goes); from here on they move
-     * both, from the one binding. */
-    if (o->texture && memcmp(&o->texture_bind, &o->transform, sizeof o->transform) != 0) {
+    if ((o->texture || o->interior_texture) && memcmp(&o->texture_bind, &o->transform, sizeof o->transform) != 0) {
         Transform since;
         memcpy(since.m, o->texture_bind.inv, sizeof since.m);
         memcpy(since.inv, o->texture_bind.m, sizeof since.inv);
         transform_compose(&since, &o->transform);
-        o->texture = gram_layers_moved(p, o->texture, &since);
+        if (o->texture)
+            o->texture = gram_layers_moved(p, o->texture, &since);
+        if (o->interior_texture)
+            o->interior_texture = gram_layers_moved(p, o->interior_texture, &since);
     }
-    o->texture = o->texture ? gram_layer_textures(p, tex, o->texture, at) : tex;
     o->texture_bind = o->transform; /* transforms after the texture move it, those before do not */
+}
+
+static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const Token *at)
+{
+    /* A second texture is a layer on top of the first (gram_layer_textures). */
+    rebind_textures(p, o);
+    o->texture = o->texture ? gram_layer_textures(p, tex, o->texture, at) : tex;
+}
+
+/* The first object under o (o included) whose surface hstrace cannot
+ * tell inside from outside as POV-Ray does, or NULL: the analytic shapes
+ * and planes (their outward normals), boxes (their faces' winding), and
+ * CSG and unions of them. The others (meshes, triangles, polygons, the
+ * shapes made of triangles) would need POV-Ray's normal of each. */
+static const SceneObject *no_inside_known(const SceneObject *o, int depth)
+{
+    switch (o->kind) {
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE:
+        return NULL;
+    case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
+        for (int i = 0; i < o->u.csg.nchildren && depth < MAX_NESTING; i++) {
+            const SceneObject *odd = no_inside_known(o->u.csg.children[i], depth + 1);
+            if (odd)
+                return odd;
+        }
+        return NULL;
+    default:
+        return o;
+    }
+}
+
+/* interior_texture { }: POV-Ray's Interior_Texture, the texture shown
+ * where a ray meets the object's surface from inside; a second one is a
+ * layer on the first. */
+static void apply_interior_texture(Parser *p, SceneObject *o, const Token *at)
+{
+    const SceneObject *odd = no_inside_known(o, 0);
+    if (odd) {
+        char msg[96];
+        snprintf(msg, sizeof msg, "'interior_texture' on a '%s'", object_kind_name(odd->kind));
+        tok_unsupported_at(p, at->pos, msg);
+    }
+    SceneTexture *tex = gram_texture(p);
+    rebind_textures(p, o);
+    o->interior_texture = o->interior_texture ? gram_layer_textures(p, tex, o->interior_texture, at) : tex;
 }
 
 /* An object's material: on its texture and interior so far. */
@@ -326,8 +373,11 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
     for (;;) {
         Token *t = tok_next(p);
         if (tok_is_punct(t, '}')) {
+            if (o->interior_texture && !o->texture) /* POV-Ray's Parse_Object_Mods' rule */
+                tok_fail(p, t->pos, "Interior texture requires an exterior texture.");
             if (uv) {
                 o->texture = gram_texture_uv_mapped(p, o->texture);
+                o->interior_texture = gram_texture_uv_mapped(p, o->interior_texture);
                 if (o->kind == OBJ_MESH) {
                     const SceneTexture **list = tok_scene_alloc(p, sizeof *list * (size_t)(o->u.mesh.ntextures + 1));
                     for (int i = 0; i < o->u.mesh.ntextures; i++)
@@ -351,6 +401,7 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_texture:
             apply_texture(p, o, gram_texture(p), &at);
             break;
+        case KW_interior_texture: apply_interior_texture(p, o, &at); break;
         case KW_pigment:
             gram_pigment(p, &own_texture(p, o, &at)->pigment);
             o->texture_bind = o->transform;

@@ -58,6 +58,15 @@ typedef struct {
      * a plain texture with the same interior and flags), or -1. This
      * material is the top layer (material_layers_at, pigment.h). */
     int below;
+    /* An interior_texture: the material shown where a ray meets the surface
+     * from inside (the surface's outward normal turned away from the ray:
+     * POV-Ray's normaldirection > 0), or -1. */
+    int inside;
+    /* With an interior texture: POV-Ray's normal of the surface is hstrace's
+     * turned (an inverted shape's INVERTED_FLAG, a top-level inverted plane,
+     * a box's faces wound inward), so that a ray meets it from inside where
+     * (ray . hstrace's normal > 0) != inside_turned. */
+    int inside_turned;
     double ior;
     /* Identity of the interior: POV-Ray gives each top-level object one,
      * shared by its children unless they name their own. Rays keep a list of

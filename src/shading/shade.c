@@ -966,8 +966,13 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
     Vec3 raw = hit.kind == HIT_POLYGON ? world_polygon_shading_normal(w, hit.index, hit.instance, hit.point)
              : hit.kind == HIT_SHAPE   ? shape_normal(&w->shapes[hit.index], hit.point, hit.part)
                                        : w->planes[hit.index].normal;
-    if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
+    const double facing = v3_dot(raw, ray->dir);
+    if (facing > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
+    /* met from inside (POV-Ray's normal turned away from the ray): its
+     * interior_texture (ComputeTextureColour) */
+    if (m->inside >= 0 && (facing > 0.0) != (m->inside_turned != 0))
+        m = &w->materials[m->inside];
     /* (an instance's polygon has no materials per vertex: flatten.c instances no such mesh) */
     if (m->map >= 0 ||
         (hit.kind == HIT_POLYGON && hit.index < w->npolygons && w->polygons[hit.index].vertex_materials >= 0)) {

@@ -31,15 +31,22 @@ static int uv_surface_of(const World *w, int surface, const InfinitePlane *plane
  * interpolated one) turned against the ray, then perturbed by the
  * texture's normal pattern where the render perturbs normals, as POV-Ray
  * does (ComputeShadowColour, Perturb_Normal). */
+/* The surface's normal at a blocker's point `at`, as the shading takes it
+ * (before it is turned against the ray). polygon: a surface id (world.h):
+ * a polygon's id (instance.h; an instance's normal carried out) or a
+ * shape's. */
+static Vec3 blocker_normal(const World *w, int polygon, int part, const InfinitePlane *plane, Vec3 at)
+{
+    return plane         ? plane->normal
+         : polygon < -1  ? shape_normal(&w->shapes[surface_shape(polygon)], at, part)
+                         : world_polygon_shading_normal(w, polygon, -1, at);
+}
+
 static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int polygon, int part,
                               const InfinitePlane *plane, const ShadowQuery *q, Vec3 at, int *blocks)
 {
     const World *w = ctx->tracer->world;
-    /* polygon: a surface id (world.h): a polygon's id (instance.h; an
-     * instance's normal carried out) or a shape's */
-    Vec3 n = plane         ? plane->normal
-           : polygon < -1  ? shape_normal(&w->shapes[surface_shape(polygon)], at, part)
-                           : world_polygon_shading_normal(w, polygon, -1, at);
+    Vec3 n = blocker_normal(w, polygon, part, plane, at);
     if (v3_dot(n, q->to_light) > 0.0)
         n = v3_neg(n);
     if (m->below >= 0 && (polygon < 0 || w->polygons[polygon].vertex_materials < 0)) {
@@ -83,6 +90,13 @@ static int pass_through(const ShadowContext *ctx, const Material *m, int polygon
     int blocks = 1;
     RGB through = { 0, 0, 0 };
     Vec3 at = v3_add(q->point, v3_scale(q->to_light, t));
+    /* met from inside (the shadow ray runs toward the light; POV-Ray's
+     * normal turned away from it, Material.inside_turned): the interior
+     * texture's filter (ComputeShadowColour) */
+    if (m->inside >= 0 &&
+        (v3_dot(blocker_normal(ctx->tracer->world, polygon, part, plane, at), q->to_light) > 0.0) !=
+            (m->inside_turned != 0))
+        m = &ctx->tracer->world->materials[m->inside];
     if (!m->opaque)
         through = m->caustics != 0.0 ? caustics_filter_at(ctx, m, polygon, part, plane, q, at, &blocks)
                                      : material_filter_at(ctx->tracer->world, m,
