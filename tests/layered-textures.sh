@@ -30,7 +30,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="layers-transparent layers-finishes layers-normals layers-shadow layers-legacy interior-texture"
+scenes="layers-transparent layers-finishes layers-normals layers-shadow layers-legacy interior-texture interior-texture-placed"
 for s in $scenes; do
     cp "$srcdir/tests/layered-textures/$s.pov" "$work/$s.pov" || bail "cannot copy tests/layered-textures/$s.pov"
 done
@@ -47,6 +47,11 @@ layers-legacy        1e-4   (1.9e-6)     0 (0)     1 (0)
 # interior-texture: one pixel on the silhouette of the see-through sphere,
 # as many without its interior texture
 interior-texture     7e-4   (3.6e-4)     2 (1)     1 (0)
+# interior-texture-placed: six single pixels, two where a ray meets the
+# union box edge (as many without its interior texture) and four where a
+# shadow ray from inside the box leaves it by an edge, lit in one render
+# and not in the other (none with an interior texture that takes no light)
+interior-texture-placed 3.6e-3 (1.8e-3)  12 (6)    1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/layered-textures.sh $scenes

@@ -89,6 +89,8 @@ static const char *object_kind_name(ObjectKind k)
     return "object";
 }
 
+static void rebind_own_texture(Parser *p, SceneObject *o);
+
 /* The object's own texture, copied so a shared (declared) one stays intact. */
 static SceneTexture *own_texture(Parser *p, SceneObject *o, const Token *t)
 {
@@ -107,7 +109,7 @@ static SceneTexture *own_texture(Parser *p, SceneObject *o, const Token *t)
     } else {
         tex = gram_default_texture(p);
         tex->pos = t->pos;
-        o->texture_bind = o->transform; /* a new texture: later transforms move it */
+        rebind_own_texture(p, o); /* a new texture: later transforms move it */
     }
     o->texture = tex;
     return tex;
@@ -130,20 +132,28 @@ static int optional_bool(Parser *p)
  * transforms given since they were bound (POV-Ray transforms an object's
  * textures as it goes), and bound again here: a texture given now is moved
  * by the transforms after it alone, and so from here on are they all. */
-static void rebind_textures(Parser *p, SceneObject *o)
+static void rebind(Parser *p, SceneObject *o, int texture_too)
 {
-    if ((o->texture || o->interior_texture) && memcmp(&o->texture_bind, &o->transform, sizeof o->transform) != 0) {
+    int move_texture = texture_too && o->texture;
+    if ((move_texture || o->interior_texture) && memcmp(&o->texture_bind, &o->transform, sizeof o->transform) != 0) {
         Transform since;
         memcpy(since.m, o->texture_bind.inv, sizeof since.m);
         memcpy(since.inv, o->texture_bind.m, sizeof since.inv);
         transform_compose(&since, &o->transform);
-        if (o->texture)
+        if (move_texture)
             o->texture = gram_layers_moved(p, o->texture, &since);
         if (o->interior_texture)
             o->interior_texture = gram_layers_moved(p, o->interior_texture, &since);
     }
     o->texture_bind = o->transform; /* transforms after the texture move it, those before do not */
 }
+
+static void rebind_textures(Parser *p, SceneObject *o) { rebind(p, o, 1); }
+
+/* A pigment, normal or material given on the object binds its texture
+ * anew, as hstrace has always bound it (the texture's earlier parts with
+ * it); the interior texture keeps the transforms given since its own. */
+static void rebind_own_texture(Parser *p, SceneObject *o) { rebind(p, o, 0); }
 
 static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const Token *at)
 {
@@ -196,7 +206,7 @@ static void object_material(Parser *p, SceneObject *o, const Token *at)
     const SceneTexture *before = o->texture;
     gram_material(p, &o->texture, &o->interior, at);
     if (o->texture != before)
-        o->texture_bind = o->transform; /* as apply_texture: later transforms move it */
+        rebind_own_texture(p, o); /* as apply_texture: later transforms move it */
 }
 
 const SceneTexture *gram_texture_uv_mapped(Parser *p, const SceneTexture *tex)
@@ -404,7 +414,7 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_interior_texture: apply_interior_texture(p, o, &at); break;
         case KW_pigment:
             gram_pigment(p, &own_texture(p, o, &at)->pigment);
-            o->texture_bind = o->transform;
+            rebind_own_texture(p, o);
             break;
         case KW_finish:
             gram_finish(p, &own_texture(p, o, &at)->finish);
@@ -413,7 +423,7 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             /* as a pigment: it gives the object a texture of its own */
             SceneTexture *tex = own_texture(p, o, &at);
             tex->normal = gram_normal(p, tex->normal, &at, 1);
-            o->texture_bind = o->transform;
+            rebind_own_texture(p, o);
             break;
         }
         case KW_interior: {
