@@ -218,17 +218,16 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
             return memo->index;
     }
     /* a layered texture's lower layers first: materials of their own; and
-     * the interior texture's (with no interior texture of its own) */
-    int below = tex->below ? add_material(b, in, tex->below, texture_space, pos) : -1;
+     * the interior texture's (these with no interior texture of their own) */
+    Inherited plain = *in;
+    plain.interior_texture = NULL;
+    int below = tex->below ? add_material(b, &plain, tex->below, texture_space, pos) : -1;
     if (tex->below && below < 0)
         return -1;
     int inside = -1;
-    if (in->interior_texture) {
-        Inherited plain = *in;
-        plain.interior_texture = NULL;
-        if ((inside = add_material(b, &plain, in->interior_texture, &in->interior_texture_space, pos)) < 0)
-            return -1;
-    }
+    if (in->interior_texture &&
+        (inside = add_material(b, &plain, in->interior_texture, &in->interior_texture_space, pos)) < 0)
+        return -1;
     if (GROW(b, materials, cap_materials, w->nmaterials))
         return -1;
     int map = -1;
