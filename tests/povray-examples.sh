@@ -89,7 +89,12 @@ objects/blob.pov|
 objects/blob1a.pov|
 objects/blob1b.pov|
 objects/blob1c.pov|
-lights/glassthing.pov|"
+lights/glassthing.pov|
+incdemo/woods/wood_1.pov|
+incdemo/woods/wood_11.pov|
+objects/wtorus.pov|
+interior/ballbox1.pov|
+advanced/woodbox.pov|"
 
 # The limits per scene, 160x120, each LIMIT (MEASURED): the value measured
 # on 2026-11-23 (POV-Ray 3.7.0.10, one thread; the same in two runs; the
@@ -156,6 +161,14 @@ objects/blob1b.pov                               1e-5     (1.02e-6)     1 (0)   
 objects/blob1c.pov                               1e-5     (0)           1 (0)           1 (0)
 # glassthing: the photons of its glass blob (approximated: not mapped)
 lights/glassthing.pov                            0.084    (0.0675)      6784 (5427)     1 (0)
+# layered textures, measured 2026-12-07 once each layer was shaded; woodbox
+# keeps six single pixels off in its lower left (as many at +Q7, without
+# reflections)
+incdemo/woods/wood_1.pov                         1e-5     (7.30e-7)     1 (0)           1 (0)
+incdemo/woods/wood_11.pov                        1e-5     (7.66e-7)     1 (0)           1 (0)
+objects/wtorus.pov                               1e-5     (1.27e-7)     1 (0)           1 (0)
+interior/ballbox1.pov                            1e-5     (1.08e-6)     1 (0)           1 (0)
+advanced/woodbox.pov                             0.008    (0.00398)     12 (6)          4 (2)
 '
 
 while IFS='|' read -r scene todo; do

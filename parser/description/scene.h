@@ -301,7 +301,15 @@ typedef struct SceneTexture {
      * the picture's palette entry (or red times 255) there names, unblended
      * (imageutil.cpp's material_map); the entries' values are 0, 1, ... */
     int material_map;
+    /* A layered texture (`texture { A } texture { B }`: B lies on A): the
+     * next layer down, a plain texture itself, or NULL. This texture is the
+     * top layer; POV-Ray lights each layer with its own pigment, normal and
+     * finish and lets the layers above filter it (ComputeLightedTexture). */
+    const struct SceneTexture *below;
 } SceneTexture;
+
+/* Layers hstrace shades in one layered texture (a bit of a word each). */
+#define MAX_TEXTURE_LAYERS 32
 
 typedef enum {
     OBJ_POLYGON,
@@ -393,6 +401,10 @@ struct SceneObject {
     Transform transform;
     /* NULL: inherit from the enclosing union, else the scene's default. */
     const SceneTexture *texture;
+    /* POV-Ray's interior_texture: shown where a ray meets the surface from
+     * inside (its outward normal turned away from the ray); NULL: the
+     * enclosing union's, or none. Bound with `texture` (texture_bind). */
+    const SceneTexture *interior_texture;
     const Interior *interior; /* NULL: default interior (ior 1) */
     /* The object's transform when its texture was given: as in POV-Ray,
      * transforms written before the texture do not move its pattern, those

@@ -109,6 +109,7 @@ static void tally_texture(Tally *t, const SceneTexture *tex)
     tally_normal(t, tex->normal, 0);
     tally_pigment(t, &tex->pigment);
     tally_notes(t, tex->finish.approx);
+    tally_texture(t, tex->below); /* a layered texture's lower layers */
 }
 
 static void tally_object(Tally *t, const SceneObject *o, int depth)
@@ -119,6 +120,7 @@ static void tally_object(Tally *t, const SceneObject *o, int depth)
     if (t->photons)
         tally_notes(t, o->photons);
     tally_texture(t, o->texture);
+    tally_texture(t, o->interior_texture);
     if (o->interior)
         tally_notes(t, o->interior->approx);
     if (scene_object_has_children(o->kind))

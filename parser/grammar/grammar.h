@@ -105,6 +105,8 @@ const SceneNormal *gram_normal_uv_mapped(Parser *p, const SceneNormal *n);
 const SceneTexture *gram_texture_uv_mapped(Parser *p, const SceneTexture *tex);
 /* A layer `top` over `below` (both copied): one texture, see parse_texture.c. */
 SceneTexture *gram_layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at);
+const SceneTexture *gram_layers_moved(Parser *p, const SceneTexture *tex, const Transform *moved);
+const SceneTexture *gram_layers_blended(Parser *p, const SceneTexture *tex, const Token *at);
 /* sky_sphere { pigment {...} ... transforms } after 'sky_sphere'. */
 void gram_sky_sphere(Parser *p, SkySphere *sky);
 

@@ -89,6 +89,8 @@ static const char *object_kind_name(ObjectKind k)
     return "object";
 }
 
+static void rebind_own_texture(Parser *p, SceneObject *o);
+
 /* The object's own texture, copied so a shared (declared) one stays intact. */
 static SceneTexture *own_texture(Parser *p, SceneObject *o, const Token *t)
 {
@@ -107,7 +109,7 @@ static SceneTexture *own_texture(Parser *p, SceneObject *o, const Token *t)
     } else {
         tex = gram_default_texture(p);
         tex->pos = t->pos;
-        o->texture_bind = o->transform; /* a new texture: later transforms move it */
+        rebind_own_texture(p, o); /* a new texture: later transforms move it */
     }
     o->texture = tex;
     return tex;
@@ -126,11 +128,76 @@ static int optional_bool(Parser *p)
     return 1;
 }
 
+/* The object's textures (and interior texture) so far moved by the
+ * transforms given since they were bound (POV-Ray transforms an object's
+ * textures as it goes), and bound again here: a texture given now is moved
+ * by the transforms after it alone, and so from here on are they all. */
+static void rebind(Parser *p, SceneObject *o, int texture_too)
+{
+    int move_texture = texture_too && o->texture;
+    if ((move_texture || o->interior_texture) && memcmp(&o->texture_bind, &o->transform, sizeof o->transform) != 0) {
+        Transform since;
+        memcpy(since.m, o->texture_bind.inv, sizeof since.m);
+        memcpy(since.inv, o->texture_bind.m, sizeof since.inv);
+        transform_compose(&since, &o->transform);
+        if (move_texture)
+            o->texture = gram_layers_moved(p, o->texture, &since);
+        if (o->interior_texture)
+            o->interior_texture = gram_layers_moved(p, o->interior_texture, &since);
+    }
+    o->texture_bind = o->transform; /* transforms after the texture move it, those before do not */
+}
+
+static void rebind_textures(Parser *p, SceneObject *o) { rebind(p, o, 1); }
+
+/* A pigment, normal or material given on the object binds its texture
+ * anew, as hstrace has always bound it (the texture's earlier parts with
+ * it); the interior texture keeps the transforms given since its own. */
+static void rebind_own_texture(Parser *p, SceneObject *o) { rebind(p, o, 0); }
+
 static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const Token *at)
 {
     /* A second texture is a layer on top of the first (gram_layer_textures). */
+    rebind_textures(p, o);
     o->texture = o->texture ? gram_layer_textures(p, tex, o->texture, at) : tex;
-    o->texture_bind = o->transform; /* transforms after the texture move it, those before do not */
+}
+
+/* The first object under o (o included) whose surface hstrace cannot
+ * tell inside from outside as POV-Ray does, or NULL: the analytic shapes
+ * and planes (their outward normals), boxes (their faces' winding), and
+ * CSG and unions of them. The others (meshes, triangles, polygons, the
+ * shapes made of triangles) would need POV-Ray's normal of each. */
+static const SceneObject *no_inside_known(const SceneObject *o, int depth)
+{
+    switch (o->kind) {
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE:
+        return NULL;
+    case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
+        for (int i = 0; i < o->u.csg.nchildren && depth < MAX_NESTING; i++) {
+            const SceneObject *odd = no_inside_known(o->u.csg.children[i], depth + 1);
+            if (odd)
+                return odd;
+        }
+        return NULL;
+    default:
+        return o;
+    }
+}
+
+/* interior_texture { }: POV-Ray's Interior_Texture, the texture shown
+ * where a ray meets the object's surface from inside; a second one is a
+ * layer on the first. */
+static void apply_interior_texture(Parser *p, SceneObject *o, const Token *at)
+{
+    const SceneObject *odd = no_inside_known(o, 0);
+    if (odd) {
+        char msg[96];
+        snprintf(msg, sizeof msg, "'interior_texture' on a '%s'", object_kind_name(odd->kind));
+        tok_unsupported_at(p, at->pos, msg);
+    }
+    SceneTexture *tex = gram_texture(p);
+    rebind_textures(p, o);
+    o->interior_texture = o->interior_texture ? gram_layer_textures(p, tex, o->interior_texture, at) : tex;
 }
 
 /* An object's material: on its texture and interior so far. */
@@ -139,7 +206,7 @@ static void object_material(Parser *p, SceneObject *o, const Token *at)
     const SceneTexture *before = o->texture;
     gram_material(p, &o->texture, &o->interior, at);
     if (o->texture != before)
-        o->texture_bind = o->transform; /* as apply_texture: later transforms move it */
+        rebind_own_texture(p, o); /* as apply_texture: later transforms move it */
 }
 
 const SceneTexture *gram_texture_uv_mapped(Parser *p, const SceneTexture *tex)
@@ -150,6 +217,7 @@ const SceneTexture *gram_texture_uv_mapped(Parser *p, const SceneTexture *tex)
     *copy = *tex;
     copy->pigment.uv_mapping = 1;
     copy->normal = gram_normal_uv_mapped(p, tex->normal);
+    copy->below = gram_texture_uv_mapped(p, tex->below); /* every layer */
     return copy;
 }
 
@@ -315,8 +383,11 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
     for (;;) {
         Token *t = tok_next(p);
         if (tok_is_punct(t, '}')) {
+            if (o->interior_texture && !o->texture) /* POV-Ray's Parse_Object_Mods' rule */
+                tok_fail(p, t->pos, "Interior texture requires an exterior texture.");
             if (uv) {
                 o->texture = gram_texture_uv_mapped(p, o->texture);
+                o->interior_texture = gram_texture_uv_mapped(p, o->interior_texture);
                 if (o->kind == OBJ_MESH) {
                     const SceneTexture **list = tok_scene_alloc(p, sizeof *list * (size_t)(o->u.mesh.ntextures + 1));
                     for (int i = 0; i < o->u.mesh.ntextures; i++)
@@ -340,9 +411,10 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_texture:
             apply_texture(p, o, gram_texture(p), &at);
             break;
+        case KW_interior_texture: apply_interior_texture(p, o, &at); break;
         case KW_pigment:
             gram_pigment(p, &own_texture(p, o, &at)->pigment);
-            o->texture_bind = o->transform;
+            rebind_own_texture(p, o);
             break;
         case KW_finish:
             gram_finish(p, &own_texture(p, o, &at)->finish);
@@ -351,7 +423,7 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             /* as a pigment: it gives the object a texture of its own */
             SceneTexture *tex = own_texture(p, o, &at);
             tex->normal = gram_normal(p, tex->normal, &at, 1);
-            o->texture_bind = o->transform;
+            rebind_own_texture(p, o);
             break;
         }
         case KW_interior: {
@@ -637,11 +709,12 @@ static int add_mesh_texture(Parser *p, MeshBuilder *mb, const SceneTexture *t)
  * triangle's texture_list), as vertex-coloured exports write them: POV-Ray
  * blends the three textures' shaded colours by the point's place in the
  * face (Mesh::Determine_Textures), and so does hstrace where the three are
- * plain textures (flatten.c, pigment.h); a texture_map among them leaves
+ * plain textures (flatten.c, pigment.h); a texture_map or a layered
+ * texture among them leaves
  * the face with the first vertex's texture, an approximation noted once
  * per mesh, at the first such face (`at`). Called for faces whose three
  * textures differ. */
-static int is_map(const SceneTexture *t) { return t && t->nmap > 0; }
+static int is_map(const SceneTexture *t) { return t && (t->nmap > 0 || t->below); }
 
 static void vertex_textures(Parser *p, SceneObject *o, const Token *at, const SceneTexture *const tex[3], int *noted)
 {

@@ -1137,6 +1137,7 @@ void gram_material(Parser *p, const SceneTexture **tex, const Interior **in, con
                 if (!copy->pigment.uv_mapping)
                     transform_compose(&copy->pigment.transform, &moved);
                 copy->normal = gram_normal_transformed(p, copy->normal, &moved);
+                copy->below = gram_layers_moved(p, copy->below, &moved);
                 *tex = copy;
             }
             continue;
@@ -1191,6 +1192,7 @@ static void set_texture_map(Parser *p, SceneTexture *tex, const TextureMapEntry 
     int depth = 0;
     for (int i = 0; i < n; i++) {
         m[i] = entries[i];
+        m[i].texture = gram_layers_blended(p, m[i].texture, at);
         const SceneTexture *e = m[i].texture;
         if (e->map_depth > depth)
             depth = e->map_depth;
@@ -1490,6 +1492,7 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
             if (!tex->pigment.uv_mapping)
                 transform_compose(&tex->pigment.transform, &moved);
             tex->normal = gram_normal_transformed(p, tex->normal, &moved);
+            tex->below = gram_layers_moved(p, tex->below, &moved);
             first = only_ids = 0;
             continue;
         }
@@ -1530,32 +1533,94 @@ SceneTexture *gram_texture(Parser *p)
 /* POV-Ray's greyscale weights (base/types.h). */
 static double greyscale(double r, double g, double b) { return 0.297 * r + 0.589 * g + 0.114 * b; }
 
-/* `texture { B } texture { T }`: T lies on B. An opaque top layer hides
- * everything under it (POV-Ray stops at the first layer that lets no light
- * through), so that is exact. Otherwise the layers are blended as POV-Ray's
- * ComputeLightedTexture weighs them for ambient and diffuse light -- each
- * layer's colour times its opacity times what the layers above let through
- * -- into one colour, with the top layer's finish: an approximation (the
- * lower layers' finishes and filter colours are lost), and patterns in
- * the layers stand by their representative colour. */
+static int layer_count(const SceneTexture *t)
+{
+    int n = 0;
+    for (; t; t = t->below)
+        n++;
+    return n;
+}
+
+/* The layers of `upper` (copied), then those of `lower` under them. A
+ * layer that lets no light through anywhere ends the stack: POV-Ray's
+ * ComputeLightedTexture stops at it, and its ComputeShadowTexture lets no
+ * light through it, whatever lies below. */
+static SceneTexture *stack_layers(Parser *p, const SceneTexture *upper, const SceneTexture *lower)
+{
+    SceneTexture *top = NULL, **link = &top;
+    for (const SceneTexture *l = upper; l; l = l->below) {
+        SceneTexture *c = tok_scene_alloc(p, sizeof *c);
+        *c = *l;
+        c->below = NULL;
+        *link = c;
+        if (pigment_is_opaque(&c->pigment))
+            return top;
+        link = (SceneTexture **)&c->below;
+    }
+    *link = (SceneTexture *)lower;
+    return top;
+}
+
+/* `texture { B } texture { T }`: T lies on B, each layer kept whole (its
+ * pigment, normal and finish), shaded as POV-Ray's ComputeLightedTexture
+ * shades a layered texture and filtering shadow rays as its
+ * ComputeShadowTexture (shade.c, pigment.c). A layer that is a texture_map
+ * is not followed. */
 SceneTexture *gram_layer_textures(Parser *p, const SceneTexture *top, const SceneTexture *below, const Token *at)
 {
     if (top->nmap > 0 || below->nmap > 0)
         texture_unsupported(p, at, "texture_map in layered textures");
+    if (layer_count(top) + layer_count(below) > MAX_TEXTURE_LAYERS) {
+        char what[64];
+        snprintf(what, sizeof what, "more than %d texture layers", MAX_TEXTURE_LAYERS);
+        texture_unsupported(p, at, what);
+    }
+    return stack_layers(p, top, below);
+}
+
+/* The layers of `tex` moved by `moved`, as POV-Ray's Transform_Textures
+ * moves every layer (a uv-mapped pigment keeps its place). */
+const SceneTexture *gram_layers_moved(Parser *p, const SceneTexture *tex, const Transform *moved)
+{
+    if (!tex)
+        return NULL;
+    SceneTexture *c = tok_scene_alloc(p, sizeof *c);
+    *c = *tex;
+    if (!c->pigment.uv_mapping)
+        transform_compose(&c->pigment.transform, moved);
+    c->normal = gram_normal_transformed(p, c->normal, moved);
+    c->below = gram_layers_moved(p, tex->below, moved);
+    return c;
+}
+
+/* A layered texture where hstrace shades only plain ones (an entry of a
+ * texture_map, a mesh face's texture per vertex): its layers blended into
+ * one pigment as ComputeLightedTexture weighs them for ambient and diffuse
+ * light -- each layer's colour times its opacity times what the layers
+ * above let through -- with the top layer's finish and normal. An
+ * approximation (the lower layers' finishes, normals and filter colours
+ * are lost, and patterns stand by their representative colour), noted at
+ * `at`. */
+const SceneTexture *gram_layers_blended(Parser *p, const SceneTexture *tex, const Token *at)
+{
+    if (!tex->below)
+        return tex;
     SceneTexture *r = tok_scene_alloc(p, sizeof *r);
-    *r = *top;
-    if (pigment_is_opaque(&top->pigment))
-        return r;
-    const SceneTexture *layers[2] = { top, below };
+    *r = *tex;
+    r->below = NULL;
     double lit[3] = { 0, 0, 0 }, fil[3] = { 1, 1, 1 };
-    for (int i = 0; i < 2; i++) {
-        const Colour *c = &layers[i]->pigment.colour;
+    for (const SceneTexture *l = tex; l; l = l->below) {
+        const Colour *c = &l->pigment.colour;
         if (fmin(1.0, fabs(greyscale(fil[0], fil[1], fil[2]))) <= 1.0 / 255.0)
             break; /* POV-Ray's adc_bailout default: the rest cannot show */
         double rgb[3] = { c->r, c->g, c->b }, opacity = 1.0 - c->filter - c->transmit;
         for (int k = 0; k < 3; k++) {
             lit[k] += rgb[k] * opacity * fil[k];
             fil[k] *= rgb[k] * c->filter + c->transmit;
+        }
+        if (l != tex) { /* the lower layers' notes, on the blend */
+            join_notes(p, &r->approx, l->approx);
+            join_notes(p, &r->pigment.approx, l->pigment.approx);
         }
     }
     double t = fmin(1.0, fmax(0.0, greyscale(fil[0], fil[1], fil[2])));
@@ -1568,19 +1633,6 @@ SceneTexture *gram_layer_textures(Parser *p, const SceneTexture *top, const Scen
     pig->colour.b = t < 1.0 ? lit[2] / (1.0 - t) : 0.0;
     pig->colour.filter = 0.0;
     pig->colour.transmit = t;
-    /* the notes of both layers, then the blend's own */
-    for (const ApproxNote *n = below->approx; n; n = n->next) {
-        ApproxNote *c = tok_scene_alloc(p, sizeof *c);
-        *c = *n;
-        c->next = r->approx;
-        r->approx = c;
-    }
-    for (const ApproxNote *n = below->pigment.approx; n; n = n->next) {
-        ApproxNote *c = tok_scene_alloc(p, sizeof *c);
-        *c = *n;
-        c->next = pig->approx;
-        pig->approx = c;
-    }
     tok_approximate(p, at, APPROX_LAYERS, &r->approx);
     return r;
 }

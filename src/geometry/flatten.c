@@ -98,6 +98,7 @@ static int grow(void **array, int *cap, int need, size_t size)
 typedef struct {
     Transform transform;
     const SceneTexture *texture;
+    const SceneTexture *interior_texture; /* SceneObject.interior_texture, or NULL */
     const Interior *interior;
     int no_shadow, no_image, no_reflection, double_illuminate, hollow;
     /* inverse: POV-Ray's Invert, passed down a union to its children;
@@ -106,6 +107,7 @@ typedef struct {
     int inverse, general_transform;
     const void *top_object; /* the top-level object: owner of the default interior */
     Transform texture_space; /* the texture's space to world (SceneObject.texture_bind) */
+    Transform interior_texture_space; /* the same for interior_texture (its object's binding) */
 } Inherited;
 
 static RGB rgb_of(const Colour *c) { RGB r = { c->r, c->g, c->b }; return r; }
@@ -186,7 +188,8 @@ static int build_map(Builder *b, const SceneTexture *tex)
  * texture's space plays no part), so that equal ones make equal materials. */
 static int plain_texture(const SceneTexture *tex)
 {
-    return tex->pigment.kind == PIGMENT_SOLID && !(tex->normal && tex->normal->kind != NORMAL_NONE) && tex->nmap == 0;
+    return tex->pigment.kind == PIGMENT_SOLID && !(tex->normal && tex->normal->kind != NORMAL_NONE) && tex->nmap == 0 &&
+           !tex->below;
 }
 
 static int same_pos(SourcePos a, SourcePos b)
@@ -202,7 +205,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     const int flags[5] = { in->no_shadow, in->no_image, in->no_reflection, in->double_illuminate, in->hollow };
     /* An object made lately made the same material: share it. */
     MaterialMemo *memo = NULL;
-    if (plain_texture(tex)) {
+    if (plain_texture(tex) && !in->interior_texture) {
         /* Fibonacci hashing of the parts (Knuth): the top bits mix all of them */
         const uint64_t k = 0x9E3779B97F4A7C15u;
         uint64_t h = (uint64_t)(uintptr_t)tex;
@@ -215,6 +218,17 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
             same_pos(pos, memo->pos))
             return memo->index;
     }
+    /* a layered texture's lower layers first: materials of their own; and
+     * the interior texture's (these with no interior texture of their own) */
+    Inherited plain = *in;
+    plain.interior_texture = NULL;
+    int below = tex->below ? add_material(b, &plain, tex->below, texture_space, pos) : -1;
+    if (tex->below && below < 0)
+        return -1;
+    int inside = -1;
+    if (in->interior_texture &&
+        (inside = add_material(b, &plain, in->interior_texture, &in->interior_texture_space, pos)) < 0)
+        return -1;
     if (GROW(b, materials, cap_materials, w->nmaterials))
         return -1;
     int map = -1;
@@ -223,6 +237,8 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     Material *m = &w->materials[w->nmaterials];
     memset(m, 0, sizeof *m);
     m->map = map;
+    m->below = below;
+    m->inside = inside;
     m->pigment = tex->pigment.colour;
     if (tex->pigment.kind != PIGMENT_SOLID) {
         m->pattern = tex->pigment;
@@ -249,6 +265,10 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
      * Post_Process moves it there). */
     m->caustics = tex->nmap == 0 && tex->finish.caustics >= 0.0 ? tex->finish.caustics : it->caustics;
     m->opaque = map >= 0 ? w->maps[map].opaque : pigment_is_opaque(&tex->pigment);
+    if (below >= 0) /* a layer that lets nothing through stops the shadow ray (ComputeShadowTexture) */
+        m->opaque |= w->materials[below].opaque;
+    if (inside >= 0) /* blocks from both sides (POV-Ray's OPAQUE_FLAG: both textures opaque) */
+        m->opaque &= w->materials[inside].opaque;
     m->no_shadow = in->no_shadow;
     m->no_image = in->no_image;
     m->no_reflection = in->no_reflection;
@@ -439,6 +459,10 @@ static int uses_uv(const World *w, int material)
     const Material *m = &w->materials[material];
     if (m->map >= 0 && w->maps[m->map].uses_uv)
         return 1;
+    if (m->below >= 0 && uses_uv(w, m->below))
+        return 1;
+    if (m->inside >= 0 && uses_uv(w, m->inside))
+        return 1;
     return (m->pattern.kind != PIGMENT_SOLID && m->pattern.uv_mapping) || (m->normal && m->normal->kind == NORMAL_UV);
 }
 
@@ -479,7 +503,7 @@ static int attach_vertex_materials(Builder *b, int npolygons_before, const int m
     if (w->npolygons == npolygons_before)
         return 0; /* degenerate: no face */
     for (int i = 0; i < 3; i++)
-        if (w->materials[m[i]].map >= 0)
+        if (w->materials[m[i]].map >= 0 || w->materials[m[i]].below >= 0 || w->materials[m[i]].inside >= 0)
             return 0;
     if (GROW(b, vertex_materials, cap_vertex_materials, w->nvertex_materials + 3))
         return -1;
@@ -1485,6 +1509,12 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
         in.texture_space = bind_inverse;
         transform_compose(&in.texture_space, &in.transform);
     }
+    if (o->interior_texture) { /* a union's passes to its children that have none (POV-Ray's Post_Process) */
+        in.interior_texture = o->interior_texture;
+        memcpy(in.interior_texture_space.m, o->texture_bind.inv, sizeof in.interior_texture_space.m);
+        memcpy(in.interior_texture_space.inv, o->texture_bind.m, sizeof in.interior_texture_space.inv);
+        transform_compose(&in.interior_texture_space, &in.transform);
+    }
     if (o->interior)
         in.interior = o->interior;
     in.no_shadow |= o->no_shadow;
@@ -1505,6 +1535,27 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
     return flatten_kind(b, o, &in, scene, depth);
 }
 
+/* Material.inside_turned for object o (with what it inherits, `in`):
+ * whether POV-Ray's normal of its surface is hstrace's turned. The
+ * analytic shapes' normals are outward in both, and POV-Ray turns an
+ * inverted one's (INVERTED_FLAG, ComputeTextureColour); a plane inside
+ * CSG is inverted by turning its normal, in both, but hstrace keeps a
+ * top-level plane's as written; a box's faces (flatten_box) are wound
+ * with their normals inward, outward under a mirroring transform. */
+static int inside_turned(const SceneObject *o, const Inherited *in, int in_csg)
+{
+    if (o->kind == OBJ_PLANE && in_csg)
+        return 0;
+    if (o->kind == OBJ_BOX && !in_csg) {
+        const double(*m)[4] = in->transform.m;
+        double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        return (det > 0.0) != (in->inverse != 0);
+    }
+    return in->inverse != 0;
+}
+
 /* What o (with what it inherits, `in`) makes, by its kind. */
 static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, const Scene *scene, int depth)
 {
@@ -1519,6 +1570,8 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     int material = add_material(b, &in, tex, &in.texture_space, o->pos);
     if (material < 0)
         return -1;
+    if (b->w->materials[material].inside >= 0) /* its own material (none is shared with an interior texture) */
+        b->w->materials[material].inside_turned = inside_turned(o, &in, b->csg_depth > 0);
     switch (o->kind) {
     case OBJ_POLYGON: return flatten_polygon(b, o, &in, material);
     case OBJ_TRIANGLE: return flatten_triangle(b, o, &in, material);

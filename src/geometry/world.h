@@ -54,6 +54,19 @@ typedef struct {
      * pattern is `pattern`, to world by `pattern_to_world`; `pigment` and
      * `finish` are unused (its textures have their own, material_textures_at). */
     int map;
+    /* A layered texture: the material of the next layer down (World.materials,
+     * a plain texture with the same interior and flags), or -1. This
+     * material is the top layer (material_layers_at, pigment.h). */
+    int below;
+    /* An interior_texture: the material shown where a ray meets the surface
+     * from inside (the surface's outward normal turned away from the ray:
+     * POV-Ray's normaldirection > 0), or -1. */
+    int inside;
+    /* With an interior texture: POV-Ray's normal of the surface is hstrace's
+     * turned (an inverted shape's INVERTED_FLAG, a top-level inverted plane,
+     * a box's faces wound inward), so that a ray meets it from inside where
+     * (ray . hstrace's normal > 0) != inside_turned. */
+    int inside_turned;
     double ior;
     /* Identity of the interior: POV-Ray gives each top-level object one,
      * shared by its children unless they name their own. Rays keep a list of
@@ -65,7 +78,7 @@ typedef struct {
      * surface of it is multiplied by 1 + |cos|^caustics, cos between the
      * surface's normal and the shadow ray (ComputeShadowTexture). */
     double caustics;
-    int opaque;           /* filter == transmit == 0 everywhere: blocks light fully */
+    int opaque;           /* filter == transmit == 0 everywhere (in some layer): blocks light fully */
     int no_shadow, no_image, no_reflection, double_illuminate;
     int hollow;           /* fog goes on inside it (POV-Ray's hollow) */
     SourcePos pos;        /* the object, for messages */

@@ -674,8 +674,38 @@ int material_textures_normals_at(const World *w, const Material *m, int polygon,
     return textures_at(w, m, polygon, world_point, &ask, out);
 }
 
+int material_layers_at(const World *w, const Material *m, int polygon, Vec3 world_point, Vec3 normal, int perturb,
+                       SurfaceTexture out[MAX_TEXTURE_LAYERS])
+{
+    int n = 0;
+    for (;;) {
+        out[n++] = material_plain_texture_at(w, m, polygon, world_point, normal, perturb);
+        if (m->below < 0 || n == MAX_TEXTURE_LAYERS) /* the parser keeps stacks within the limit */
+            return n;
+        m = &w->materials[m->below];
+    }
+}
+
+/* A layered texture's filter (ComputeShadowTexture): what each layer lets
+ * through, multiplied. */
+static RGB layers_filter_at(const World *w, const Material *m, int polygon, Vec3 world_point, int *blocks)
+{
+    RGB through = { 1, 1, 1 };
+    *blocks = 0;
+    for (; m; m = m->below >= 0 ? &w->materials[m->below] : NULL) {
+        Colour c = material_colour_at(w, m, polygon, world_point);
+        *blocks |= c.filter == 0.0 && c.transmit == 0.0;
+        through.r *= c.r * c.filter + c.transmit;
+        through.g *= c.g * c.filter + c.transmit;
+        through.b *= c.b * c.filter + c.transmit;
+    }
+    return through;
+}
+
 RGB material_filter_at(const World *w, const Material *m, int polygon, Vec3 world_point, int *blocks)
 {
+    if (m->below >= 0 && (polygon < 0 || w->polygons[polygon].vertex_materials < 0))
+        return layers_filter_at(w, m, polygon, world_point, blocks);
     if (m->map < 0 && (polygon < 0 || w->polygons[polygon].vertex_materials < 0)) {
         /* a plain texture (textures_at's first case): its one colour, with
          * none of the textures' records made (the shadow ray's filtering

@@ -88,11 +88,19 @@ SurfaceTexture material_plain_texture_at(const World *w, const Material *m, int 
 int material_textures_normals_at(const World *w, const Material *m, int polygon, Vec3 world_point, Vec3 normal,
                                  int perturb, SurfaceTexture out[MAX_SURFACE_TEXTURES]);
 
+/* A layered texture's layers (m->below >= 0; also a plain one: one layer)
+ * at a point, top first, each as material_plain_texture_at gives it (its
+ * colour, finish and shading normal, weight 1). Returns how many, 1 to
+ * MAX_TEXTURE_LAYERS. */
+int material_layers_at(const World *w, const Material *m, int polygon, Vec3 world_point, Vec3 normal, int perturb,
+                       SurfaceTexture out[MAX_TEXTURE_LAYERS]);
+
 /* What a see-through material lets through at a point, per channel, for
- * shadow rays: rgb * filter + transmit of its pigment, or of each texture
- * of a texture_map blended by their weights (POV-Ray's ComputeShadowTexture
- * through ComputeOneTextureColour). *blocks: no texture there has filter
- * or transmit (no light gets through). */
+ * shadow rays: rgb * filter + transmit of its pigment (of a layered
+ * texture: the product over its layers), or of each texture of a
+ * texture_map blended by their weights (POV-Ray's ComputeShadowTexture
+ * through ComputeOneTextureColour). *blocks: no light gets through (no
+ * texture there has filter or transmit, or a layer has neither). */
 RGB material_filter_at(const World *w, const Material *m, int polygon, Vec3 world_point, int *blocks);
 
 /* What a sky sphere and the background show in direction `dir` (unit),

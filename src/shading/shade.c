@@ -1,7 +1,9 @@
 /* Shading, following POV-Ray 3.7's Trace::ComputeLightedTexture for plain
- * one-layer textures, and its ComputeOneTextureColour for texture_maps (each
- * texture around the map's value shaded in full, the colours blended), so
- * that images compare pixel for pixel. Where POV-Ray
+ * textures (one layer, or layers each lit with its own pigment, normal and
+ * finish and seen through the layers above), and its
+ * ComputeOneTextureColour for texture_maps (each texture around the map's
+ * value shaded in full, the colours blended), so that images compare pixel
+ * for pixel. Where POV-Ray
  * has a tolerance (EPSILON) we use the same value, and say so. */
 #include "shade.h"
 
@@ -239,6 +241,7 @@ typedef struct {
 
 /* direct_light keeps the textures that take a light as bits of one word */
 _Static_assert(MAX_SURFACE_TEXTURES <= 32, "a texture per bit of an unsigned");
+_Static_assert(MAX_TEXTURE_LAYERS <= 32, "a layer per bit of an unsigned");
 
 static int has_highlights_or_diffuse(const Finish *f)
 {
@@ -835,6 +838,125 @@ __attribute__((noinline)) static void shade_map_hit(ShadeContext *ctx, const Ray
     shade_textures(ctx, ray, hit, seg, m, raw, normal, lit, n, weight, level, out);
 }
 
+/* The reflected rays of a layered texture's layers: each layer's own, with
+ * its normal, reflectivity and weight, not filtered by the layers above
+ * (POV-Ray adds them as they are); after total internal reflection those of
+ * the layers whose normal is the top layer's are left out, as POV-Ray
+ * leaves them. */
+static void layers_reflection(ShadeContext *ctx, const Ray *ray, const Hit *hit, const LightState *state, Vec3 raw,
+                              const LitTexture *lit, int n, int tir, int level, Radiance *out)
+{
+    const Vec3 top = lit[0].normal;
+    for (int i = 0; i < n; i++) {
+        const LitTexture *t = &lit[i];
+        if (tir && fabs(top.x - t->normal.x) <= POV_EPSILON && fabs(top.y - t->normal.y) <= POV_EPSILON &&
+            fabs(top.z - t->normal.z) <= POV_EPSILON)
+            continue;
+        if (t->reflec.r == 0.0 && t->reflec.g == 0.0 && t->reflec.b == 0.0)
+            continue;
+        Radiance rfl;
+        trace_reflection(ctx, ray, hit, state, t->normal, raw, t->reflect_weight, level, &rfl);
+        double e = t->finish->reflection_exponent;
+        if (e != 1.0 && e > 0.0) {
+            out->r += t->reflec.r * pow(rfl.r, e);
+            out->g += t->reflec.g * pow(rfl.g, e);
+            out->b += t->reflec.b * pow(rfl.b, e);
+        } else {
+            out->r += t->reflec.r * rfl.r;
+            out->g += t->reflec.g * rfl.g;
+            out->b += t->reflec.b * rfl.b;
+        }
+    }
+}
+
+/* A layered texture's hit (POV-Ray's ComputeLightedTexture over a list of
+ * layers): from the top down, each layer's reflectivity and own light with
+ * the weight that the layers above leave it, until what they let through
+ * (fil: the product of their rgb * filter + transmit, and of 1 -
+ * reflectivity where they conserve energy) falls to adc_bailout; the lights
+ * once for the layers reached, each layer's light filtered by the layers
+ * above it; then the ray through them all, filtered by all (refracted by the
+ * top layer's normal), and each layer's reflection. Apart (never inlined),
+ * as shade_map_hit. */
+__attribute__((noinline)) static void shade_layers_hit(ShadeContext *ctx, const Ray *ray, const Hit *hit,
+                                                       const Segment *seg, const Material *m, Vec3 raw,
+                                                       double weight, int level, Radiance *out)
+{
+    const World *w = ctx->tracer.world;
+    const LightState *state = (const LightState *)seg->state;
+    SurfaceTexture layer[MAX_TEXTURE_LAYERS];
+    LitTexture lit[MAX_TEXTURE_LAYERS];
+    RGB seen[MAX_TEXTURE_LAYERS]; /* what the layers above let through to layer i */
+    int nl = material_layers_at(w, m, uv_surface(w, hit), hit->point, raw, ctx->quality.normal, layer);
+    if (ctx->aov && ctx->depth == 1)
+        aov_record_hit(ctx->aov, hit->t, hit->point, layer[0].normal);
+    RGB fil = { 1, 1, 1 };
+    double trans = 1.0;
+    int n = 0, lighted = 0;
+    for (; n < nl && trans > w->adc_bailout; n++) {
+        LitTexture *t = &lit[n];
+        lit_texture(t, &layer[n]);
+        seen[n] = fil;
+        if (!ctx->quality.full_ambient) {
+            texture_own_light(ctx, ray, m, weight * trans, t);
+            lighted |= has_highlights_or_diffuse(t->finish);
+        }
+        const Colour *c = &t->colour;
+        fil.r *= c->r * c->filter + c->transmit;
+        fil.g *= c->g * c->filter + c->transmit;
+        fil.b *= c->b * c->filter + c->transmit;
+        if (t->finish->conserve_energy && !ctx->quality.full_ambient) {
+            fil.r *= fmin(1.0, 1.0 - t->reflec.r);
+            fil.g *= fmin(1.0, 1.0 - t->reflec.g);
+            fil.b *= fmin(1.0, 1.0 - t->reflec.b);
+        }
+        trans = fmin(1.0, fabs(greyscale(fil.r, fil.g, fil.b)));
+        /* --aov's light loss weighs a layer by a single figure */
+        t->weight = greyscale(seen[n].r, seen[n].g, seen[n].b);
+    }
+    if (ctx->quality.full_ambient) {
+        /* POV-Ray keeps the pigment colour of the last layer it reached */
+        skip_all_lights(ctx, hit, seg);
+        out->r = lit[n - 1].pigment.r;
+        out->g = lit[n - 1].pigment.g;
+        out->b = lit[n - 1].pigment.b;
+        out->transmit = 0.0;
+        return;
+    }
+    if (lighted)
+        direct_light(ctx, m, hit, seg, ray->dir, raw, lit, n);
+    else
+        skip_all_lights(ctx, hit, seg);
+    out->r = out->g = out->b = out->transmit = 0.0;
+    for (int i = 0; i < n; i++) {
+        out->r += lit[i].acc.r * seen[i].r;
+        out->g += lit[i].acc.g * seen[i].g;
+        out->b += lit[i].acc.b * seen[i].b;
+    }
+
+    int tir = 0;
+    if (trans > w->adc_bailout && ctx->quality.refraction) {
+        double w1 = fmax(fabs(fil.r), fmax(fabs(fil.g), fabs(fil.b)));
+        Radiance rfr = { 0, 0, 0, 0 };
+        tir = trace_refraction(ctx, ray, hit, state, m, lit[0].normal, raw, weight * w1, level, &rfr);
+        RGB attc = { 1.0, 1.0, 1.0 };
+        if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON)
+            attc = interior_fade(m, hit->t);
+        if (tir) {
+            out->r += attc.r * rfr.r;
+            out->g += attc.g * rfr.g;
+            out->b += attc.b * rfr.b;
+        } else {
+            out->r += attc.r * rfr.r * fil.r;
+            out->g += attc.g * rfr.g * fil.g;
+            out->b += attc.b * rfr.b * fil.b;
+            out->transmit = greyscale(attc.r, attc.g, attc.b) * rfr.transmit * trans;
+        }
+    }
+    if (ctx->quality.reflection)
+        layers_reflection(ctx, ray, hit, state, raw, lit, n, tir, level, out);
+}
+
 static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const Segment *seg, double weight,
                       int level, Radiance *out)
 {
@@ -844,14 +966,23 @@ static void shade_hit(ShadeContext *ctx, const Ray *ray, const Hit *hitp, const 
     Vec3 raw = hit.kind == HIT_POLYGON ? world_polygon_shading_normal(w, hit.index, hit.instance, hit.point)
              : hit.kind == HIT_SHAPE   ? shape_normal(&w->shapes[hit.index], hit.point, hit.part)
                                        : w->planes[hit.index].normal;
-    if (v3_dot(raw, ray->dir) > 0.0) /* surfaces are two-sided */
+    const double facing = v3_dot(raw, ray->dir);
+    if (facing > 0.0) /* surfaces are two-sided */
         raw = v3_neg(raw);
+    /* met from inside (POV-Ray's normal turned away from the ray): its
+     * interior_texture (ComputeTextureColour) */
+    if (m->inside >= 0 && (facing > 0.0) != (m->inside_turned != 0))
+        m = &w->materials[m->inside];
     /* (an instance's polygon has no materials per vertex: flatten.c instances no such mesh) */
     if (m->map >= 0 ||
         (hit.kind == HIT_POLYGON && hit.index < w->npolygons && w->polygons[hit.index].vertex_materials >= 0)) {
         if (ctx->aov && ctx->depth == 1)
             aov_record_hit(ctx->aov, hit.t, hit.point, raw); /* a map's textures have normals each */
         shade_map_hit(ctx, ray, &hit, seg, m, raw, raw, weight, level, out);
+        return;
+    }
+    if (m->below >= 0) {
+        shade_layers_hit(ctx, ray, &hit, seg, m, raw, weight, level, out);
         return;
     }
     const SurfaceTexture own =

@@ -31,17 +31,40 @@ static int uv_surface_of(const World *w, int surface, const InfinitePlane *plane
  * interpolated one) turned against the ray, then perturbed by the
  * texture's normal pattern where the render perturbs normals, as POV-Ray
  * does (ComputeShadowColour, Perturb_Normal). */
+/* The surface's normal at a blocker's point `at`, as the shading takes it
+ * (before it is turned against the ray). polygon: a surface id (world.h):
+ * a polygon's id (instance.h; an instance's normal carried out) or a
+ * shape's. */
+static Vec3 blocker_normal(const World *w, int polygon, int part, const InfinitePlane *plane, Vec3 at)
+{
+    return plane         ? plane->normal
+         : polygon < -1  ? shape_normal(&w->shapes[surface_shape(polygon)], at, part)
+                         : world_polygon_shading_normal(w, polygon, -1, at);
+}
+
 static RGB caustics_filter_at(const ShadowContext *ctx, const Material *m, int polygon, int part,
                               const InfinitePlane *plane, const ShadowQuery *q, Vec3 at, int *blocks)
 {
     const World *w = ctx->tracer->world;
-    /* polygon: a surface id (world.h): a polygon's id (instance.h; an
-     * instance's normal carried out) or a shape's */
-    Vec3 n = plane         ? plane->normal
-           : polygon < -1  ? shape_normal(&w->shapes[surface_shape(polygon)], at, part)
-                           : world_polygon_shading_normal(w, polygon, -1, at);
+    Vec3 n = blocker_normal(w, polygon, part, plane, at);
     if (v3_dot(n, q->to_light) > 0.0)
         n = v3_neg(n);
+    if (m->below >= 0 && (polygon < 0 || w->polygons[polygon].vertex_materials < 0)) {
+        /* a layered texture: each layer's filter and caustics, multiplied */
+        SurfaceTexture layer[MAX_TEXTURE_LAYERS];
+        int nl = material_layers_at(w, m, uv_surface_of(w, polygon, plane), at, n, ctx->perturb_normals, layer);
+        RGB through = { 1, 1, 1 };
+        *blocks = 0;
+        for (int i = 0; i < nl; i++) {
+            const Colour *c = &layer[i].colour;
+            double k = 1.0 + pow(fabs(v3_dot(layer[i].normal, q->to_light)), m->caustics);
+            through.r *= k * (c->r * c->filter + c->transmit);
+            through.g *= k * (c->g * c->filter + c->transmit);
+            through.b *= k * (c->b * c->filter + c->transmit);
+            *blocks |= c->filter == 0.0 && c->transmit == 0.0;
+        }
+        return through;
+    }
     SurfaceTexture tx[MAX_SURFACE_TEXTURES];
     int nt = material_textures_normals_at(w, m, uv_surface_of(w, polygon, plane), at, n, ctx->perturb_normals, tx);
     RGB through = { 0, 0, 0 };
@@ -67,6 +90,13 @@ static int pass_through(const ShadowContext *ctx, const Material *m, int polygon
     int blocks = 1;
     RGB through = { 0, 0, 0 };
     Vec3 at = v3_add(q->point, v3_scale(q->to_light, t));
+    /* met from inside (the shadow ray runs toward the light; POV-Ray's
+     * normal turned away from it, Material.inside_turned): the interior
+     * texture's filter (ComputeShadowColour) */
+    if (m->inside >= 0 &&
+        (v3_dot(blocker_normal(ctx->tracer->world, polygon, part, plane, at), q->to_light) > 0.0) !=
+            (m->inside_turned != 0))
+        m = &ctx->tracer->world->materials[m->inside];
     if (!m->opaque)
         through = m->caustics != 0.0 ? caustics_filter_at(ctx, m, polygon, part, plane, q, at, &blocks)
                                      : material_filter_at(ctx->tracer->world, m,
