@@ -154,24 +154,43 @@ static void test_texture_binding(void)
 
 static void test_layers(void)
 {
-    /* Worked by hand from ComputeLightedTexture: top rgbt <0,0,1,0.5> has
-     * opacity 0.5, lets 0.5 through; bottom rgb <1,0,0> opaque: lit colour
-     * 0.5*<0,0,1> + 0.5*<1,0,0>, nothing through. */
+    /* POV-Ray's layered textures: the last texture written lies on top,
+     * each layer kept with its own pigment (ComputeLightedTexture lights
+     * them one by one; tests/layered-textures.sh holds the images to
+     * POV-Ray's), nothing blended and nothing reported as approximated. */
     Scene *s = parse("triangle { 0, x, y texture { pigment { rgb <1,0,0> } } texture { pigment { rgbt <0,0,1,0.5> } } }\n"
                      "triangle { 0, x, y texture { pigment { rgbt <0,0,1,0.5> } } texture { pigment { rgb <0,1,0> } } }\n"
                      "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbf <1,0,0,1> } }\n"
                      "triangle { 0, x, y texture { T } }\n");
     tap_ok(s && s->nobjects == 3, "layered textures parse (objects and #declare)");
     if (s && s->nobjects == 3) {
-        tap_ok(colour_is(s->objects[0]->texture->pigment.colour, 0.5, 0, 0.5, 0, 0),
-               "see-through layer over an opaque one: blended colour, opaque");
-        tap_ok(colour_is(s->objects[1]->texture->pigment.colour, 0, 1, 0, 0, 0), "an opaque top layer hides the rest");
-        /* a red filter over white: the white seen through it, red; opaque */
-        tap_ok(colour_is(s->objects[2]->texture->pigment.colour, 1, 0, 0, 0, 0),
-               "a filtering top layer colours the layer under it");
-        tap_ok(s->napproximations == 1 && s->approximations[0].kind == APPROX_LAYERS &&
-                   s->approximations[0].count == 2,
-               "blended layers are reported as an approximation (2 places), the hidden one is not");
+        const SceneTexture *a = s->objects[0]->texture, *b = s->objects[1]->texture, *c = s->objects[2]->texture;
+        tap_ok(colour_is(a->pigment.colour, 0, 0, 1, 0, 0.5) && a->below &&
+                   colour_is(a->below->pigment.colour, 1, 0, 0, 0, 0) && !a->below->below,
+               "see-through layer over an opaque one: two layers, the last written on top");
+        tap_ok(colour_is(b->pigment.colour, 0, 1, 0, 0, 0) && !b->below,
+               "an opaque top layer of one colour: the layers under it, which POV-Ray never reaches, dropped");
+        tap_ok(colour_is(c->pigment.colour, 1, 0, 0, 1, 0) && c->below && colour_is(c->below->pigment.colour, 1, 1, 1, 0, 0),
+               "a declared layered texture keeps its layers");
+        tap_ok(s->napproximations == 0, "layered textures are not reported as approximated (%d notes)",
+               s->napproximations);
+        World w;
+        WorldError we;
+        int built = world_build(&w, s, &we) == 0;
+        int layered = 0, top = -1;
+        for (int i = 0; built && i < w.nmaterials; i++)
+            if (w.materials[i].below >= 0) {
+                layered++;
+                if (w.materials[i].pigment.filter == 1.0)
+                    top = i;
+            }
+        tap_ok(built && layered == 2, "the two layered textures' materials have the ones below them (%d)", layered);
+        if (built) {
+            /* a filtering red layer over an opaque white one lets no light
+             * through: the product of the layers' filters (ComputeShadowTexture) */
+            tap_ok(top >= 0 && w.materials[top].opaque, "a filter over an opaque layer is opaque to shadows");
+            world_free(&w);
+        }
     }
     scene_free(s);
 }
