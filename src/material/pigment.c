@@ -14,6 +14,7 @@
 #include "intersect.h"
 #include "noise.h"
 #include "normal.h"
+#include "patterns.h"
 
 
 /* POV-Ray's FLOOR macro: floor() written so that -0 and exact negative
@@ -218,7 +219,7 @@ static double wave(const Pigment *pig, double v)
 
 double pattern_value(const Pigment *pig, Vec3 p)
 {
-    return pattern_value_warped(pig, warp_point(pig, p), NOISE_RANGE_CORRECTED);
+    return pattern_value_warped(pig, warp_point(pig, p), NOISE_RANGE_CORRECTED, DEFAULT_NUMBER_OF_WAVES);
 }
 
 Vec3 pattern_warp(const Pigment *pig, Vec3 p)
@@ -226,9 +227,34 @@ Vec3 pattern_warp(const Pigment *pig, Vec3 p)
     return warp_point(pig, p);
 }
 
-double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator)
+static Colour image_map_at(const Pigment *pig, Vec3 p);
+
+/* POV-Ray's Colour::greyscale, in its single-precision colour. */
+static double colour_grey(Colour c)
+{
+    return (double)(float)(0.297 * (double)(float)c.r + 0.589 * (double)(float)c.g + 0.114 * (double)(float)c.b);
+}
+
+/* pigment_pattern: the grey of another pigment's colour at the point (its
+ * own transforms and warps from there, as Compute_Pigment takes it). */
+static double pigment_pattern_value(const Pigment *inner, Vec3 p, int generator, int nwaves)
+{
+    if (!inner)
+        return 0.0;
+    Vec3 q = inverse_transform_point(&inner->transform, p);
+    switch (inner->kind) {
+    case PIGMENT_SOLID: return colour_grey(inner->colour);
+    case PIGMENT_IMAGE_MAP: return colour_grey(image_map_at(inner, q));
+    default: break;
+    }
+    double v = pattern_value_warped(inner, warp_point(inner, q), generator, nwaves);
+    return colour_grey(colour_map_at(inner->map, inner->nmap, v));
+}
+
+double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator, int default_waves)
 {
     int generator = pig->noise_generator ? pig->noise_generator : default_generator;
+    int nwaves = pig->nwaves ? pig->nwaves : default_waves;
     double v;
     switch (pig->kind) {
     case PIGMENT_CHECKER: v = checker_value(p); break;
@@ -241,6 +267,25 @@ double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator)
     case PIGMENT_MARBLE: v = marble_value(pig, p, generator); break;
     case PIGMENT_WOOD: v = wood_value(pig, p); break;
     case PIGMENT_SPIRAL1: case PIGMENT_SPIRAL2: v = spiral_value(pig, p, generator); break;
+    case PIGMENT_DENTS: v = noise_value(p, generator); v = v * v * v; break;
+    case PIGMENT_BRICK: v = brick_value(pig, p); break;
+    case PIGMENT_LEOPARD: v = leopard_value(p); break;
+    case PIGMENT_ONION: v = onion_value(p); break;
+    case PIGMENT_RADIAL: v = radial_value(p); break;
+    case PIGMENT_QUILTED: v = quilted_value(pig, p); break;
+    case PIGMENT_RIPPLES: v = ripples_value(pig, p, nwaves); break;
+    case PIGMENT_WAVES: v = waves_value(pig, p, nwaves); break;
+    case PIGMENT_PLANAR: v = planar_value(p); break;
+    case PIGMENT_SPHERICAL: v = spherical_value(p); break;
+    case PIGMENT_CYLINDRICAL: v = cylindrical_value(p); break;
+    case PIGMENT_BOXED: v = boxed_value(p); break;
+    case PIGMENT_SQUARE: v = square_value(p); break;
+    case PIGMENT_TRIANGULAR: v = triangular_value(p); break;
+    case PIGMENT_CUBIC: v = cubic_value(p); break;
+    case PIGMENT_CELLS: v = cells_value(p); break;
+    case PIGMENT_CRACKLE: v = crackle_value(pig, p, generator); break;
+    case PIGMENT_FRACTAL: v = fractal_value(pig, p); break;
+    case PIGMENT_PIGMENT_PATTERN: v = pigment_pattern_value(pig->inner, p, generator, nwaves); break;
     default: return 0.0;
     }
     if (pig->frequency != 0.0)
@@ -584,7 +629,7 @@ static int map_textures(const World *w, int map, const Pigment *pattern, Vec3 p,
     if (tm->material_map) /* one entry, by the picture there (ComputeOneTextureColour's BITMAP_PATTERN) */
         return entry_textures(w, &e[material_map_number(pattern, tp, tm->count)], tp, polygon, world_point, weight,
                               chain, ask, out, n);
-    double v = pattern_value_warped(pattern, tp, NOISE_RANGE_CORRECTED);
+    double v = pattern_value_warped(pattern, tp, NOISE_RANGE_CORRECTED, DEFAULT_NUMBER_OF_WAVES);
     int last = tm->count - 1, cur = 0, prev = 0;
     if (v >= e[last].value) {
         cur = prev = last;
