@@ -208,7 +208,7 @@ static void test_approximations(void)
     s = parse("#include \"colors.inc\"\n#include \"textures.inc\"\n#include \"stones.inc\"\n#include \"skies.inc\"\nbox { 0, 1 }\n");
     tap_ok(s && s->napproximations == 0, "textures.inc, stones.inc, skies.inc: nothing reported when unused");
     scene_free(s);
-    s = parse("#declare P = pigment { crackle color_map { [0 rgb 0] [1 rgb <1,0,0>] } }\n"
+    s = parse("#declare P = pigment { tiling 3 color_map { [0 rgb 0] [1 rgb <1,0,0>] } }\n"
               "box { 0, 1 pigment { P } }\nbox { 0, 1 pigment { P } }\n"
               "box { 0, 1 normal { facets 0.5 } }\n"
               "light_source { 0, 1 photons { refraction on } }\n"
@@ -226,7 +226,7 @@ static void test_approximations(void)
         }
         tap_ok(s->napproximations == 4, "four kinds reported (%d)", s->napproximations);
         tap_ok(pattern >= 0 && s->approximations[pattern].count == 1 && s->approximations[pattern].first.line == 1 &&
-                   s->approximations[pattern].first.column == 24 && strcmp(s->approximations[pattern].what, "'crackle'") == 0,
+                   s->approximations[pattern].first.column == 24 && strcmp(s->approximations[pattern].what, "'tiling'") == 0,
                "a declared pattern used twice: one place, at its declaration 1:24");
         tap_ok(normal >= 0 && s->approximations[normal].first.line == 4, "object normal (facets) at line 4");
         tap_ok(photons >= 0 && rad >= 0 && s->approximations[photons].count == 3 &&
@@ -265,8 +265,8 @@ static void test_approximations(void)
 
 static void test_strict(void)
 {
-    expect_error_with(&strict_opts, "box { 0, 1 pigment { crackle } }", 1, 22,
-                      "'crackle' is only approximated by hstrace (pattern shown as one colour", "--strict: pattern");
+    expect_error_with(&strict_opts, "box { 0, 1 pigment { tiling 3 } }", 1, 22,
+                      "'tiling' is only approximated by hstrace (pattern shown as one colour", "--strict: pattern");
     expect_error_with(&strict_opts, "box { 0, 1 pigment { bozo warp { repeat x } } }", 1, 27,
                       "'warp' is only approximated by hstrace", "--strict: a warp other than turbulence");
     Scene *ok = parse_with("box { 0, 1 pigment { bozo turbulence 0.5 warp { turbulence 1 } } }\n"
