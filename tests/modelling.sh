@@ -245,10 +245,10 @@ check "a light's media_attenuation with fog is reported as approximated, a trans
     err_is "$work/fogatt.pov:3:24: warning: a fog's up vector can't be translated
 $work/fogatt.pov:3:1: warning: 'fog' approximated: fog between lights and surfaces (media_attenuation) ignored (1 place; --strict refuses it)"
 
-printf '#version 3.7;\nplane { y, 0 pigment { gradient x pigment_map { [0 rgb 1] [1 bozo] } } }\n' >"$work/pigmap.pov"
+printf '#version 3.7;\nplane { y, 0 pigment { gradient x pigment_map { [0 rgb 1] [1 uv_mapping bozo] } } }\n' >"$work/pigmap.pov"
 run "$work/pigmap.pov" --width 8 --height 6 -o "$work/pm.png"
-check "a pigment_map entry with a pattern of its own: renders" exited 0
-check "a pigment_map entry with a pattern of its own is reported as approximated" \
+check "a pigment_map entry seen at the surface's (u, v): renders" exited 0
+check "a pigment_map entry seen at the surface's (u, v) is reported as approximated" \
     err_is "$work/pigmap.pov:2:35: warning: 'pigment_map' approximated: pattern shown as one colour, its colour map at 0.5 (1 place; --strict refuses it)"
 
 # --strict and the approximation report.

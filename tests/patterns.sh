@@ -2,7 +2,8 @@
 # POV-Ray 3.7's patterns beyond the noise ones (brick, leopard, onion,
 # radial, quilted, dents, ripples, waves, planar, spherical, cylindrical,
 # boxed, square, triangular, cubic, cells, crackle, mandel, julia, magnet,
-# pigment_pattern), in TAP, against the installed POV-Ray.
+# pigment_pattern), and pigment_map and blend lists whose entries have
+# patterns of their own, in TAP, against the installed POV-Ray.
 #
 # 1. Each pattern as a pigment, on a plane seen straight on by an
 #    orthographic camera, lit by its ambient alone: each pixel is the
@@ -91,6 +92,10 @@ julia <0.353, 0.288>, 50 color_map { [0 rgb 0] [0.3 rgb <1, 0.5, 0>] [1 rgb 1] }
 magnet 1 mandel 40 color_map { [0 rgb 0] [1 rgb 1] } scale 1.5 translate <1, 0, 0>||0
 magnet 2 julia <1.2, 0.3>, 40 exterior 7, 5 color_map { [0 rgb 0] [1 rgb 1] } scale 1.5||0
 pigment_pattern { checker rgb 0.1, rgb 0.9 scale 0.5 } color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } turbulence 0.3||0
+gradient x pigment_map { [0 checker rgb 0, rgb 1 scale 0.2] [0.5 rgb <1, 0, 0>] [1 leopard scale 0.05] } scale 2 translate -x||0
+bozo pigment_map { [0.3 crackle scale 0.2] [0.7 radial frequency 6 rotate 90*x color_map { [0 rgb <0, 1, 0>] [1 rgb 1] }] } scale 0.5 noise_generator 1||0
+checker pigment { brick rgb 1, rgb <0.5, 0, 0> scale 0.05 } pigment { onion scale 0.1 } scale 0.8||0
+brick pigment { gradient y color_map { [0 rgb 0] [1 rgb <0, 0, 1>] } } pigment { ripples scale 0.2 } scale 0.3||0
 PIGMENTS
 
 # --- 2. each pattern as a normal -----------------------------------------------

@@ -80,11 +80,13 @@ static void test_pattern_values(void)
     tap_ok(near(pattern_value(&grad, v3(0, 0.25, 0)), 0.25) && near(pattern_value(&grad, v3(0, 1.75, 0)), 0.75) &&
                near(pattern_value(&grad, v3(0, -0.25, 0)), 0.75),
            "gradient: fractional part, negative values wrap");
-    ColourMapEntry map[3] = { { 0.0, { 0, 0, 0, 0, 0 } }, { 0.5, { 1, 0, 0, 0, 0 } }, { 0.5, { 0, 0, 1, 0, 0 } } };
+    ColourMapEntry map[3] = { { 0.0, { 0, 0, 0, 0, 0 }, NULL }, { 0.5, { 1, 0, 0, 0, 0 }, NULL },
+                              { 0.5, { 0, 0, 1, 0, 0 }, NULL } };
     tap_ok(colour_is(colour_map_at(map, 3, 0.25), 0.5, 0, 0, 0, 0) && colour_is(colour_map_at(map, 3, 0.5), 0, 0, 1, 0, 0) &&
                colour_is(colour_map_at(map, 3, 0.75), 0, 0, 1, 0, 0) && colour_is(colour_map_at(map, 3, -1), 0, 0, 0, 0, 0),
            "colour map: interpolation; at or past the last value the last entry, as Search_Blend_Map; clamped ends");
-    ColourMapEntry step[3] = { { 0.5, { 1, 0, 0, 0, 0 } }, { 0.5, { 0, 0, 1, 0, 0 } }, { 1.0, { 0, 1, 0, 0, 0 } } };
+    ColourMapEntry step[3] = { { 0.5, { 1, 0, 0, 0, 0 }, NULL }, { 0.5, { 0, 0, 1, 0, 0 }, NULL },
+                               { 1.0, { 0, 1, 0, 0, 0 }, NULL } };
     tap_ok(colour_is(colour_map_at(step, 3, 0.5), 1, 0, 0, 0, 0),
            "colour map: a sharp step before the last value takes its first entry at the step");
 }

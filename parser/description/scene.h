@@ -163,10 +163,16 @@ typedef struct {
     double omega, lambda; /* defaults 0.5 and 2 */
 } PatternTurbulence;
 
-/* One [value colour] entry of a colour_map, sorted by value as written. */
+struct Pigment;
+
+/* One [value colour] entry of a colour_map, sorted by value as written; of
+ * a pigment_map, or of checker's (brick's ...) list of pigments, the
+ * entry's pigment where it has a pattern of its own (NULL: the colour
+ * alone; else `colour` is its representative colour). */
 typedef struct {
     double value;
     Colour colour;
+    const struct Pigment *pigment;
 } ColourMapEntry;
 
 /* POV-Ray's wave types, which reshape a pattern's value before the map. */
@@ -224,6 +230,10 @@ typedef struct Pigment {
     int interior_type, exterior_type;
     double interior_factor, exterior_factor;
     const struct Pigment *inner; /* pigment_pattern: the pigment whose grey is the value */
+    int map_pigments;     /* some entry of the map has a pigment of its own */
+    /* the scene's noise generator (0: not yet resolved, 2 then), for the
+     * pigments of its map's entries and pigment_pattern's, which name none */
+    int scene_generator;
     const ApproxNote *approx;
 } Pigment;
 

@@ -6,7 +6,8 @@
  * is written. Pigments hstrace evaluates: solid colours, POV-Ray 3.7's
  * patterns (gram_pattern_support; their values are src/material's) with
  * turbulence and uv_mapping, and image_map (its file read through
- * ParseOptions.load_image); aoi, average, facets, function, object,
+ * ParseOptions.load_image); pigment_map and blend lists whose entries
+ * have patterns of their own. aoi, average, facets, function, object,
  * pavement, tiling and slope are approximated by one colour. */
 #include <math.h>
 #include <stdio.h>
@@ -352,15 +353,35 @@ static const Colour *default_list_colours(int kw)
 static void set_map(Parser *p, Pigment *pig, const ColourMapEntry *entries, int n)
 {
     ColourMapEntry *m = tok_scene_alloc(p, sizeof *m * (size_t)(n ? n : 1));
-    for (int i = 0; i < n; i++)
+    pig->map_pigments = 0;
+    for (int i = 0; i < n; i++) {
         m[i] = entries[i];
+        pig->map_pigments |= m[i].pigment != NULL;
+    }
     pig->map = m;
     pig->nmap = n;
 }
 
+/* A blend list's or pigment_map's entry pigment as the entry keeps it:
+ * NULL for a plain colour; a copy for one with a pattern of its own, but
+ * NULL (its representative colour standing for it, noted at `at`) for one
+ * seen at the surface's (u, v), which a pigment's point does not give. */
+static const Pigment *entry_pigment(Parser *p, const Pigment *entry, const Token *at, const ApproxNote **notes)
+{
+    if (entry->kind == PIGMENT_SOLID)
+        return NULL;
+    if (entry->uv_mapping) {
+        tok_approximate(p, at, APPROX_PATTERN, notes);
+        return NULL;
+    }
+    Pigment *copy = tok_scene_alloc(p, sizeof *copy);
+    *copy = *entry;
+    return copy;
+}
+
 static void set_grey_map(Parser *p, Pigment *pig)
 {
-    ColourMapEntry e[2] = { { 0.0, { 0, 0, 0, 0, 0 } }, { 1.0, { 1, 1, 1, 0, 0 } } };
+    ColourMapEntry e[2] = { { 0.0, { 0, 0, 0, 0, 0 }, NULL }, { 1.0, { 1, 1, 1, 0, 0 }, NULL } };
     set_map(p, pig, e, 2);
 }
 
@@ -369,24 +390,25 @@ static void set_grey_map(Parser *p, Pigment *pig)
 static void set_default_map(Parser *p, Pigment *pig, int kw)
 {
     static const ColourMapEntry bozo[6] = {
-        { 0.4, { 1, 1, 1, 0, 0 } }, { 0.4, { 0, 1, 0, 0, 0 } }, { 0.6, { 0, 1, 0, 0, 0 } },
-        { 0.6, { 0, 0, 1, 0, 0 } }, { 0.8, { 0, 0, 1, 0, 0 } }, { 0.8, { 1, 0, 0, 0, 0 } },
+        { 0.4, { 1, 1, 1, 0, 0 }, NULL }, { 0.4, { 0, 1, 0, 0, 0 }, NULL }, { 0.6, { 0, 1, 0, 0, 0 }, NULL },
+        { 0.6, { 0, 0, 1, 0, 0 }, NULL }, { 0.8, { 0, 0, 1, 0, 0 }, NULL }, { 0.8, { 1, 0, 0, 0, 0 }, NULL },
     };
-    static const ColourMapEntry wood[2] = { { 0.6, { 0.666, 0.312, 0.2, 0, 0 } },
-                                            { 0.6, { 0.4, 0.1333, 0.066, 0, 0 } } };
+    static const ColourMapEntry wood[2] = { { 0.6, { 0.666, 0.312, 0.2, 0, 0 }, NULL },
+                                            { 0.6, { 0.4, 0.1333, 0.066, 0, 0 }, NULL } };
     static const ColourMapEntry agate[6] = {
-        { 0.0, { 1.0, 1.0, 1.0, 0, 0 } }, { 0.5, { 0.95, 0.75, 0.5, 0, 0 } }, { 0.5, { 0.9, 0.7, 0.5, 0, 0 } },
-        { 0.6, { 0.9, 0.7, 0.4, 0, 0 } }, { 0.6, { 1.0, 0.7, 0.4, 0, 0 } }, { 1.0, { 0.6, 0.3, 0.0, 0, 0 } },
+        { 0.0, { 1.0, 1.0, 1.0, 0, 0 }, NULL }, { 0.5, { 0.95, 0.75, 0.5, 0, 0 }, NULL },
+        { 0.5, { 0.9, 0.7, 0.5, 0, 0 }, NULL }, { 0.6, { 0.9, 0.7, 0.4, 0, 0 }, NULL },
+        { 0.6, { 1.0, 0.7, 0.4, 0, 0 }, NULL }, { 1.0, { 0.6, 0.3, 0.0, 0, 0 }, NULL },
     };
-    static const ColourMapEntry marble[3] = { { 0.0, { 0.9, 0.8, 0.8, 0, 0 } },
-                                              { 0.9, { 0.9, 0.08, 0.08, 0, 0 } },
-                                              { 0.9, { 0.0, 0.0, 0.0, 0, 0 } } };
+    static const ColourMapEntry marble[3] = { { 0.0, { 0.9, 0.8, 0.8, 0, 0 }, NULL },
+                                              { 0.9, { 0.9, 0.08, 0.08, 0, 0 }, NULL },
+                                              { 0.9, { 0.0, 0.0, 0.0, 0, 0 }, NULL } };
     static const ColourMapEntry mandel[5] = {
-        { 0.001, { 0, 0, 0, 0, 0 } }, { 0.001, { 0, 1, 1, 0, 0 } }, { 0.012, { 1, 1, 0, 0, 0 } },
-        { 0.015, { 1, 0, 1, 0, 0 } }, { 0.1, { 0, 1, 1, 0, 0 } },
+        { 0.001, { 0, 0, 0, 0, 0 }, NULL }, { 0.001, { 0, 1, 1, 0, 0 }, NULL }, { 0.012, { 1, 1, 0, 0, 0 }, NULL },
+        { 0.015, { 1, 0, 1, 0, 0 }, NULL }, { 0.1, { 0, 1, 1, 0, 0 }, NULL },
     };
-    static const ColourMapEntry radial[4] = { { 0.0, { 0, 1, 1, 0, 0 } }, { 0.333, { 1, 1, 0, 0, 0 } },
-                                              { 0.666, { 1, 0, 1, 0, 0 } }, { 1.0, { 0, 1, 1, 0, 0 } } };
+    static const ColourMapEntry radial[4] = { { 0.0, { 0, 1, 1, 0, 0 }, NULL }, { 0.333, { 1, 1, 0, 0, 0 }, NULL },
+                                              { 0.666, { 1, 0, 1, 0, 0 }, NULL }, { 1.0, { 0, 1, 1, 0, 0 }, NULL } };
     switch (kw) {
     case KW_mandel: set_map(p, pig, mandel, 5); break; /* mandel's alone: not julia's or magnet's */
     case KW_radial: set_map(p, pig, radial, 4); break;
@@ -463,9 +485,7 @@ void gram_warp(Parser *p, Pigment *pig, const Token *at)
 
 /* The colours after checker, hexagon, brick, square, triangular or cubic
  * (kw; POV-Ray's Parse_Blend_List): up to `count` colours, or `pigment {}`
- * items, commas optional; the missing ones are POV-Ray's defaults. A
- * pigment item that is itself a pattern is approximated by its
- * representative colour. */
+ * items, commas optional; the missing ones are POV-Ray's defaults. */
 static void parse_colour_list(Parser *p, Pigment *pig, int kw, int count)
 {
     ColourMapEntry e[6];
@@ -480,8 +500,7 @@ static void parse_colour_list(Parser *p, Pigment *pig, int kw, int count)
             Pigment item = p->scene->default_texture.pigment;
             item.approx = NULL;
             gram_pigment(p, &item);
-            if (item.kind != PIGMENT_SOLID)
-                tok_approximate(p, &at, APPROX_PATTERN, &pig->approx);
+            e[i].pigment = entry_pigment(p, &item, &at, &pig->approx);
             for (const ApproxNote *n = item.approx; n; n = n->next) { /* the item's notes join the list's */
                 ApproxNote *c = tok_scene_alloc(p, sizeof *c);
                 *c = *n;
@@ -493,6 +512,7 @@ static void parse_colour_list(Parser *p, Pigment *pig, int kw, int count)
             if (!expr_starts_expression(p, t))
                 break;
             expr_colour(p, &e[i].colour, 1);
+            e[i].pigment = NULL;
         }
         e[i].value = i;
         i++;
@@ -501,6 +521,7 @@ static void parse_colour_list(Parser *p, Pigment *pig, int kw, int count)
     for (; i < count; i++) {
         e[i].value = i;
         e[i].colour = default_list_colours(kw)[i];
+        e[i].pigment = NULL;
     }
     set_map(p, pig, e, count);
 }
@@ -649,9 +670,8 @@ static void start_fractal(Parser *p, Pigment *pig, int kw);
 static int own_modifier(Parser *p, Pigment *pig, int kw);
 
 /* pigment_map { [value pigment] ... }: each entry's pigment is read in
- * full, and the map blends the entries' colours. That is POV-Ray's result
- * wherever the entries are plain colours; an entry with a pattern of its
- * own is shown as its representative colour, reported as an approximation. */
+ * full, and the map blends the entries' colours at the point (an entry
+ * seen at the surface's (u, v) by its representative colour, noted). */
 void gram_pigment_map(Parser *p, Pigment *pig, const Token *at)
 {
     tok_begin_block(p, "pigment_map");
@@ -663,19 +683,18 @@ void gram_pigment_map(Parser *p, Pigment *pig, const Token *at)
     }
     TempVec entries;
     tok_tvec_init(&entries, sizeof(ColourMapEntry));
-    int patterned = 0;
     double v;
     while (gram_blend_map_entry(p, "pigment_map", &entries, 1, &v)) {
         Pigment entry = p->scene->default_texture.pigment;
         entry.approx = NULL;
         if (expr_starts_colour(p, tok_peek(p))) {
             expr_colour(p, &entry.colour, 1);
+            entry.kind = PIGMENT_SOLID;
             tok_expect_punct(p, ']', "a pigment_map entry");
         } else {
             pigment_items(p, &entry, ']');
         }
-        if (entry.kind != PIGMENT_SOLID)
-            patterned = 1;
+        const Pigment *own = entry_pigment(p, &entry, at, &pig->approx);
         for (const ApproxNote *n = entry.approx; n; n = n->next) {
             ApproxNote *c = tok_scene_alloc(p, sizeof *c);
             *c = *n;
@@ -685,12 +704,11 @@ void gram_pigment_map(Parser *p, Pigment *pig, const Token *at)
         ColourMapEntry *e = tok_tvec_push(p, &entries);
         e->value = v;
         e->colour = entry.colour;
+        e->pigment = own;
     }
     if (entries.n < 1)
         tok_fail(p, p->tok.pos, "Must have at least one entry in pigment_map.");
     set_map(p, pig, entries.data, entries.n);
-    if (patterned)
-        tok_approximate(p, at, APPROX_PATTERN, &pig->approx);
 }
 
 void gram_pigment(Parser *p, Pigment *pig)

@@ -109,12 +109,14 @@ typedef struct {
 static RGB rgb_of(const Colour *c) { RGB r = { c->r, c->g, c->b }; return r; }
 
 /* texture_space: the texture's own space to world. */
-/* A pattern that names no noise_generator takes the scene's, and ripples
- * and waves the scene's number_of_waves. */
+/* A pattern that names no noise_generator takes the scene's (and keeps it
+ * for the pigments in its map), and ripples and waves the scene's
+ * number_of_waves. */
 static void resolve_pattern_settings(Pigment *pig, const World *w)
 {
     if (pig->noise_generator == 0)
         pig->noise_generator = w->noise_generator;
+    pig->scene_generator = w->noise_generator;
     if (pig->nwaves == 0) /* the parser holds it to 1 .. MAX_NUMBER_OF_WAVES */
         pig->nwaves = w->number_of_waves;
 }

@@ -115,7 +115,8 @@ double crackle_value(const Pigment *pig, Vec3 p, int generator)
     pthread_once(&cubes_once, make_crackle_cubes);
     const double metric = pig->crackle_metric, offset = pig->crackle_offset;
     /* floor, not FLOOR: no mirror image about zero */
-    const int fx = (int)floor(p.x - POV_EPSILON), fy = (int)floor(p.y - POV_EPSILON), fz = (int)floor(p.z - POV_EPSILON);
+    const int fx = (int)floor(p.x - POV_EPSILON), fy = (int)floor(p.y - POV_EPSILON),
+              fz = (int)floor(p.z - POV_EPSILON);
     Vec3 points[81];
     for (int i = 0; i < 81; i++)
         points[i] = point_in_cube(fx + crackle_cubes[i][0], fy + crackle_cubes[i][1], fz + crackle_cubes[i][2]);

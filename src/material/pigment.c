@@ -235,20 +235,58 @@ static double colour_grey(Colour c)
     return (double)(float)(0.297 * (double)(float)c.r + 0.589 * (double)(float)c.g + 0.114 * (double)(float)c.b);
 }
 
-/* pigment_pattern: the grey of another pigment's colour at the point (its
- * own transforms and warps from there, as Compute_Pigment takes it). */
-static double pigment_pattern_value(const Pigment *inner, Vec3 p, int generator, int nwaves)
+static Colour pigment_colour(const Pigment *pig, Vec3 p, int generator, int nwaves);
+
+/* A map's colour at `value` (Search_Blend_Map): the entries around it
+ * blended linearly, as colour_map_at does; an entry with a pigment of its
+ * own gives that pigment's colour at the pattern's warped point
+ * (Compute_Pigment's pigment_map). */
+static Colour blend_map_at(const Pigment *pig, double value, Vec3 warped, int generator, int nwaves)
 {
-    if (!inner)
-        return 0.0;
-    Vec3 q = inverse_transform_point(&inner->transform, p);
-    switch (inner->kind) {
-    case PIGMENT_SOLID: return colour_grey(inner->colour);
-    case PIGMENT_IMAGE_MAP: return colour_grey(image_map_at(inner, q));
+    const ColourMapEntry *map = pig->map;
+    const int n = pig->nmap;
+    int cur = 0, prev;
+    if (value >= map[n - 1].value) {
+        cur = n - 1;
+    } else {
+        while (value > map[cur].value)
+            cur++;
+    }
+    prev = cur == 0 || value == map[cur].value || value >= map[n - 1].value ? cur : cur - 1;
+    Colour c = map[cur].pigment ? pigment_colour(map[cur].pigment, warped, generator, nwaves) : map[cur].colour;
+    if (prev == cur)
+        return c;
+    Colour t = map[prev].pigment ? pigment_colour(map[prev].pigment, warped, generator, nwaves) : map[prev].colour;
+    double f = (value - map[prev].value) / (map[cur].value - map[prev].value);
+    Colour r = {
+        t.r + f * (c.r - t.r), t.g + f * (c.g - t.g), t.b + f * (c.b - t.b),
+        t.filter + f * (c.filter - t.filter), t.transmit + f * (c.transmit - t.transmit),
+    };
+    return r;
+}
+
+/* The colour of a pigment at point p of the space it is written in (its
+ * own transforms and warps from there, as Compute_Pigment takes it), with
+ * the noise generator and wave sources of its scene where it names none. */
+static Colour pigment_colour(const Pigment *pig, Vec3 p, int generator, int nwaves)
+{
+    Vec3 q = inverse_transform_point(&pig->transform, p);
+    switch (pig->kind) {
+    case PIGMENT_SOLID: return pig->colour;
+    case PIGMENT_IMAGE_MAP: return image_map_at(pig, q);
     default: break;
     }
-    double v = pattern_value_warped(inner, warp_point(inner, q), generator, nwaves);
-    return colour_grey(colour_map_at(inner->map, inner->nmap, v));
+    Vec3 warped = warp_point(pig, q);
+    double v = pattern_value_warped(pig, warped, generator, nwaves);
+    if (!pig->map_pigments)
+        return colour_map_at(pig->map, pig->nmap, v);
+    return blend_map_at(pig, v, warped, generator, nwaves);
+}
+
+/* pigment_pattern: the grey of another pigment's colour at the point. */
+static double pigment_pattern_value(const Pigment *inner, Vec3 p, int generator, int nwaves)
+{
+    return inner ? colour_grey(pigment_colour(inner, p, generator, nwaves)) : 0.0;
 }
 
 double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator, int default_waves)
@@ -285,7 +323,10 @@ double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator, i
     case PIGMENT_CELLS: v = cells_value(p); break;
     case PIGMENT_CRACKLE: v = crackle_value(pig, p, generator); break;
     case PIGMENT_FRACTAL: v = fractal_value(pig, p); break;
-    case PIGMENT_PIGMENT_PATTERN: v = pigment_pattern_value(pig->inner, p, generator, nwaves); break;
+    case PIGMENT_PIGMENT_PATTERN:
+        v = pigment_pattern_value(pig->inner, p, pig->scene_generator ? pig->scene_generator : default_generator,
+                                  nwaves);
+        break;
     default: return 0.0;
     }
     if (pig->frequency != 0.0)
@@ -520,7 +561,13 @@ Colour pigment_at(const Pigment *pig, Vec3 p)
         return image_map_at(pig, p);
     if (pig->kind == PIGMENT_SOLID)
         return pig->colour;
-    return colour_map_at(pig->map, pig->nmap, pattern_value(pig, p));
+    if (!pig->map_pigments)
+        return colour_map_at(pig->map, pig->nmap, pattern_value(pig, p));
+    Vec3 warped = warp_point(pig, p);
+    const int generator = pig->scene_generator ? pig->scene_generator : NOISE_RANGE_CORRECTED;
+    const int nwaves = pig->nwaves ? pig->nwaves : DEFAULT_NUMBER_OF_WAVES;
+    double v = pattern_value_warped(pig, warped, generator, nwaves);
+    return blend_map_at(pig, v, warped, generator, nwaves);
 }
 
 /* Barycentric weights of q (in the polygon's plane) with respect to the
