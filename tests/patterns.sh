@@ -88,6 +88,7 @@ crackle metric 1 offset 0.1 form <1, 0, 0> color_map { [0 rgb 0] [1 rgb 1] } sca
 crackle solid color_map { [0 rgb 0] [1 rgb 1] } scale 0.3 turbulence 0.2||0
 mandel 60 scale 1.2||0
 mandel 40 exponent 3 interior 1, 1 exterior 6, 0.2 color_map { [0 rgb 0] [1 rgb 1] } scale 1.2||0
+mandel 30 exponent 4 scale 1.2||0
 julia <0.353, 0.288>, 50 color_map { [0 rgb 0] [0.3 rgb <1, 0.5, 0>] [1 rgb 1] } scale 1.2||0
 magnet 1 mandel 40 color_map { [0 rgb 0] [1 rgb 1] } scale 1.5 translate <1, 0, 0>||0
 magnet 2 julia <1.2, 0.3>, 40 exterior 7, 5 color_map { [0 rgb 0] [1 rgb 1] } scale 1.5||0

@@ -973,6 +973,7 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
 {
     int approximated = 0; /* the pattern is not evaluated: colour map at 0.5 */
     int uv_here = 0;      /* this block said uv_mapping: what follows is seen at (u, v, 0) */
+    int mandel_map = 0;   /* the map is mandel's default, given at its keyword */
     for (;;) {
         Token *t = tok_next(p);
         if (tok_is_punct(t, close))
@@ -1015,8 +1016,11 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             gram_start_pattern(p, pig, kw);
             if (gram_pattern_list_count(kw))
                 parse_colour_list(p, pig, kw, gram_pattern_list_count(kw));
-            if (pig->nmap == 0)
+            mandel_map = 0;
+            if (pig->nmap == 0) {
                 set_default_map(p, pig, kw);
+                mandel_map = kw == KW_mandel;
+            }
             continue;
         case PAT_APPROXIMATED:
             tok_approximate(p, &at, APPROX_PATTERN, &pig->approx);
@@ -1043,9 +1047,11 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         case KW_color_map:
         case KW_colour_map:
             gram_colour_map(p, pig);
+            mandel_map = 0;
             continue;
         case KW_pigment_map:
             gram_pigment_map(p, pig, &at);
+            mandel_map = 0;
             continue;
         case KW_texture_map: case KW_material_map:
             tok_fail(p, at.pos, "%s can only be used in a texture, not in a pigment", tok_keyword_name(kw));
@@ -1073,6 +1079,10 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             tok_unsupported(p, t);
         tok_fail_expected(p, t, "a colour, a pattern, a transform or '}' in 'pigment'");
     }
+    /* POV-Ray picks the default map after the pigment (Post_Pigment), by
+     * the final kind: mandel of exponent 3 or more takes the grey one */
+    if (mandel_map && pig->kind == PIGMENT_FRACTAL && pig->exponent != 2)
+        set_grey_map(p, pig);
     if (pig->kind != PIGMENT_SOLID || approximated)
         set_representative(pig);
     if (approximated) {
