@@ -2,8 +2,8 @@
 # POV-Ray 3.7's patterns beyond the noise ones (brick, leopard, onion,
 # radial, quilted, dents, ripples, waves, planar, spherical, cylindrical,
 # boxed, square, triangular, cubic, cells, crackle, mandel, julia, magnet,
-# pigment_pattern), and pigment_map and blend lists whose entries have
-# patterns of their own, in TAP, against the installed POV-Ray.
+# pigment_pattern), and pigment_map, average and blend lists whose entries
+# have patterns of their own, in TAP, against the installed POV-Ray.
 #
 # 1. Each pattern as a pigment, on a plane seen straight on by an
 #    orthographic camera, lit by its ambient alone: each pixel is the
@@ -97,6 +97,7 @@ gradient x pigment_map { [0 checker rgb 0, rgb 1 scale 0.2] [0.5 rgb <1, 0, 0>] 
 bozo pigment_map { [0.3 crackle scale 0.2] [0.7 radial frequency 6 rotate 90*x color_map { [0 rgb <0, 1, 0>] [1 rgb 1] }] } scale 0.5 noise_generator 1||0
 checker pigment { brick rgb 1, rgb <0.5, 0, 0> scale 0.05 } pigment { onion scale 0.1 } scale 0.8||0
 brick pigment { gradient y color_map { [0 rgb 0] [1 rgb <0, 0, 1>] } } pigment { ripples scale 0.2 } scale 0.3||0
+average pigment_map { [1 checker rgb 0, rgb 1 scale 0.3] [2 leopard scale 0.05] [0.5 rgb <1, 0, 0>] } turbulence 0.2||0
 PIGMENTS
 
 # --- 2. each pattern as a normal -----------------------------------------------
@@ -188,5 +189,6 @@ plane { z, 0 normal { julia <0.3, 0.2>, 20 interior -1, 1 } }|2:53|Invalid fract
 plane { z, 0 normal { leopard control0 1 } }|2:31|Cannot use control0 with this pattern
 plane { z, 0 normal { brick slope_map { [0 <0, 1>] } } }|2:29|Cannot use slope_map with this normal type
 plane { z, 0 pigment { pigment_pattern { bozo scale } } }|2:53|expected a numeric expression, found .}.
+plane { z, 0 pigment { average scale 2 } }|2:24|an average pigment needs a pigment_map
 BAD
 tap_end

@@ -98,6 +98,7 @@ typedef enum {
     PIGMENT_CRACKLE,  /* distances to random points, one per unit cube */
     PIGMENT_FRACTAL,  /* mandel, julia, magnet (fractal_kind) */
     PIGMENT_PIGMENT_PATTERN, /* another pigment's grey (inner) */
+    PIGMENT_AVERAGE,  /* the mean of its map's pigments, weighed by their values */
 } PigmentKind;
 
 /* The fractals of mandel, julia and magnet (POV-Ray's MANDEL_PATTERN ...

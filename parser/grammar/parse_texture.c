@@ -6,9 +6,10 @@
  * is written. Pigments hstrace evaluates: solid colours, POV-Ray 3.7's
  * patterns (gram_pattern_support; their values are src/material's) with
  * turbulence and uv_mapping, and image_map (its file read through
- * ParseOptions.load_image); pigment_map and blend lists whose entries
- * have patterns of their own. aoi, average, facets, function, object,
- * pavement, tiling and slope are approximated by one colour. */
+ * ParseOptions.load_image); pigment_map, average and blend lists whose
+ * entries have patterns of their own. aoi, facets, function, object,
+ * pavement, tiling and slope (and average as a texture's pattern) are
+ * approximated by one colour. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -67,7 +68,8 @@ PatternSupport gram_pattern_support(int kw)
     case KW_square: case KW_triangular: case KW_cubic: case KW_cells: case KW_crackle:
     case KW_mandel: case KW_julia: case KW_magnet: case KW_pigment_pattern:
         return PAT_EVALUATED;
-    /* POV-Ray 3.7's other patterns: one colour stands for them */
+    /* POV-Ray 3.7's other patterns: one colour stands for them (average
+     * pigments are pigment_items' own, average normals parse_normal.c's) */
     case KW_aoi: case KW_average: case KW_facets: case KW_function: case KW_object:
     case KW_pavement: case KW_tiling: case KW_slope:
         return PAT_APPROXIMATED;
@@ -974,6 +976,7 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
     int approximated = 0; /* the pattern is not evaluated: colour map at 0.5 */
     int uv_here = 0;      /* this block said uv_mapping: what follows is seen at (u, v, 0) */
     int mandel_map = 0;   /* the map is mandel's default, given at its keyword */
+    Token average_at;     /* where `average` was, when it was */
     for (;;) {
         Token *t = tok_next(p);
         if (tok_is_punct(t, close))
@@ -1008,6 +1011,14 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         if (kw == KW_quick_color || kw == KW_quick_colour) {
             Colour ignored;
             expr_colour(p, &ignored, 1);
+            continue;
+        }
+        if (kw == KW_average) { /* in a pigment: the mean of its pigment_map's pigments */
+            approximated = 0;
+            mandel_map = 0;
+            average_at = at;
+            gram_start_pattern(p, pig, kw);
+            pig->kind = PIGMENT_AVERAGE;
             continue;
         }
         switch (gram_pattern_support(kw)) {
@@ -1079,6 +1090,8 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             tok_unsupported(p, t);
         tok_fail_expected(p, t, "a colour, a pattern, a transform or '}' in 'pigment'");
     }
+    if (pig->kind == PIGMENT_AVERAGE && pig->nmap == 0)
+        tok_fail(p, average_at.pos, "an average pigment needs a pigment_map");
     /* POV-Ray picks the default map after the pigment (Post_Pigment), by
      * the final kind: mandel of exponent 3 or more takes the grey one */
     if (mandel_map && pig->kind == PIGMENT_FRACTAL && pig->exponent != 2)

@@ -265,6 +265,27 @@ static Colour blend_map_at(const Pigment *pig, double value, Vec3 warped, int ge
     return r;
 }
 
+/* average: the entries' colours at the warped point weighed by their
+ * values, summed and divided in single precision as Do_Average_Pigments
+ * does in POV-Ray's float colours. */
+static Colour average_colour(const Pigment *pig, Vec3 warped, int generator, int nwaves)
+{
+    float sum[5] = { 0, 0, 0, 0, 0 }, total = 0.0f;
+    for (int i = 0; i < pig->nmap; i++) {
+        const ColourMapEntry *e = &pig->map[i];
+        Colour c = e->pigment ? pigment_colour(e->pigment, warped, generator, nwaves) : e->colour;
+        const float w = (float)e->value;
+        sum[0] += (float)c.r * w;
+        sum[1] += (float)c.g * w;
+        sum[2] += (float)c.b * w;
+        sum[3] += (float)c.filter * w;
+        sum[4] += (float)c.transmit * w;
+        total += w;
+    }
+    Colour r = { sum[0] / total, sum[1] / total, sum[2] / total, sum[3] / total, sum[4] / total };
+    return r;
+}
+
 /* The colour of a pigment at point p of the space it is written in (its
  * own transforms and warps from there, as Compute_Pigment takes it), with
  * the noise generator and wave sources of its scene where it names none. */
@@ -277,6 +298,8 @@ static Colour pigment_colour(const Pigment *pig, Vec3 p, int generator, int nwav
     default: break;
     }
     Vec3 warped = warp_point(pig, q);
+    if (pig->kind == PIGMENT_AVERAGE)
+        return average_colour(pig, warped, generator, nwaves);
     double v = pattern_value_warped(pig, warped, generator, nwaves);
     if (!pig->map_pigments)
         return colour_map_at(pig->map, pig->nmap, v);
@@ -561,11 +584,13 @@ Colour pigment_at(const Pigment *pig, Vec3 p)
         return image_map_at(pig, p);
     if (pig->kind == PIGMENT_SOLID)
         return pig->colour;
-    if (!pig->map_pigments)
+    if (!pig->map_pigments && pig->kind != PIGMENT_AVERAGE)
         return colour_map_at(pig->map, pig->nmap, pattern_value(pig, p));
     Vec3 warped = warp_point(pig, p);
     const int generator = pig->scene_generator ? pig->scene_generator : NOISE_RANGE_CORRECTED;
     const int nwaves = pig->nwaves ? pig->nwaves : DEFAULT_NUMBER_OF_WAVES;
+    if (pig->kind == PIGMENT_AVERAGE)
+        return average_colour(pig, warped, generator, nwaves);
     double v = pattern_value_warped(pig, warped, generator, nwaves);
     return blend_map_at(pig, v, warped, generator, nwaves);
 }
