@@ -209,8 +209,10 @@ static int normal_pattern(Parser *p, SceneNormal *n, const Token *at)
     case PAT_EVALUATED:
         n->kind = NORMAL_PATTERN;
         gram_start_pattern(p, pat, kw); /* bumps and wrinkles are the normals' own, above */
-        if (gram_pattern_list_count(kw))
+        if (gram_pattern_list_count(kw)) {
+            n->accuracy = gram_single(0.02); /* POV-Ray resets it for these */
             parse_normal_list(p, n, gram_pattern_list_count(kw));
+        }
         for (const ApproxNote *a = pat->approx; a; a = a->next) { /* pigment_pattern's pigment's notes */
             ApproxNote *c = tok_scene_alloc(p, sizeof *c);
             *c = *a;

@@ -1,7 +1,9 @@
 /* Pigment patterns, written from POV-Ray 3.7's definitions (checker_pattern,
  * hexagon_pattern, gradient_pattern, the noise patterns, spiral1/2_pattern,
- * Warp_EPoint's turbulence, Evaluate_TPat's frequency/phase/wave,
- * Search_Blend_Map, the uv coordinates of UVCoord, image_map's lookup and
+ * Warp_EPoint's turbulence, Evaluate_TPat's dispatch to every pattern
+ * (the others' values are patterns.h's) and its frequency/phase/wave,
+ * Search_Blend_Map with pigment_map's and average's pigments
+ * (Compute_Pigment), the uv coordinates of UVCoord, image_map's lookup and
  * interpolation, the textures of a texture_map as ComputeOneTextureColour
  * picks and weighs them): the same small offsets
  * and the same order of operations, so that pattern borders fall where
@@ -16,13 +18,6 @@
 #include "normal.h"
 #include "patterns.h"
 
-
-/* POV-Ray's FLOOR macro: floor() written so that -0 and exact negative
- * integers land as POV-Ray's do. */
-static double pov_floor(double x)
-{
-    return x >= 0.0 ? floor(x) : (0.0 - floor(0.0 - x) - 1.0);
-}
 
 static double checker_value(Vec3 p)
 {
@@ -45,7 +40,7 @@ static double hexagon_value(Vec3 p)
     zs -= floor(zs / 6.0) * 6.0;
     /* Far from the origin (|x| beyond ~1e15) the reduction above leaves
      * [0, 6); POV-Ray's switch then matches no block and answers 0. */
-    int xm = int_as_povray(pov_floor(xs)) % 6, zm = int_as_povray(pov_floor(zs)) % 6;
+    int xm = int_as_povray(pattern_floor(xs)) % 6, zm = int_as_povray(pattern_floor(zs)) % 6;
     if (xm < 0 || zm < 0)
         return 0.0;
     static const int straight_05[6] = { 0, 1, 1, 2, 2, 0 }; /* columns 0 and 5 by zm */

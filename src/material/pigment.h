@@ -1,8 +1,8 @@
-/* Pigments: POV-Ray 3.7's checker, hexagon, gradient, noise (bozo, granite,
- * wrinkles, agate, marble, wood) and spiral patterns with turbulence and
- * colour maps, evaluated at a point (pattern.cpp, warps.cpp and pigment.cpp
- * there); and the textures a texture_map shows at a point (trace.cpp's
- * ComputeOneTextureColour). */
+/* Pigments: POV-Ray 3.7's patterns (checker, hexagon, gradient, noise,
+ * spirals here; the others in patterns.h) with turbulence, colour maps,
+ * pigment maps and average, evaluated at a point (pattern.cpp, warps.cpp
+ * and pigment.cpp there); and the textures a texture_map shows at a point
+ * (trace.cpp's ComputeOneTextureColour). */
 #ifndef HST_PIGMENT_H
 #define HST_PIGMENT_H
 
