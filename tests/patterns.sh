@@ -175,6 +175,22 @@ check "a scene of brick, crackle, mandel, ripples, leopard, quilted: renders, 0 
 run scene.pov +W160 +H120 --threads 1 -o scene-1.png
 check "... 1 thread gives the same image as 2" "$hstrace" compare "$work/scene-2.png" "$work/scene-1.png" --max-error 0
 
+# Values at the edges: a brick of no size, points far beyond the range of
+# int, fractal factors that POV-Ray divides by: an image, no crash.
+cat >"$work/edges.pov" <<'EOF'
+#version 3.7;
+camera { orthographic location <0, 0, -3> look_at 0 right 4*x up 4*y }
+light_source { <0, 0, -5> rgb 1 }
+#declare Quarter = polygon { 4, <0, 0>, <2, 0>, <2, 2>, <0, 2> }
+object { Quarter pigment { brick rgb 1, rgb 0 brick_size <0, 1, 0> } normal { brick 1 brick_size <1, 0, 1> } }
+object { Quarter pigment { cells scale 1e-300 } normal { crackle 1 scale 1e-300 } translate -2*x }
+object { Quarter pigment { square scale 1e-30 rotate 90*x } normal { triangular 1 scale 1e-300 } translate -2*y }
+object { Quarter pigment { mandel 20 exterior 7, -3 } normal { julia <0, 0>, 10 1 exterior 8, 1e300 } translate <-2, -2, 0> }
+EOF
+run edges.pov +W32 +H24 -o edges.png
+check "edge values (brick_size 0, points beyond int, fractal factors of 0 and 1e300): renders" \
+    test "$status $([ -s "$work/edges.png" ] && echo image)" = "0 image"
+
 # --- 4. mistakes -----------------------------------------------------------------
 while IFS='|' read -r body where message; do
     printf 'camera { location <0,0,-3> look_at 0 }\n%s\n' "$body" >"$work/bad.pov"

@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "convert.h"
 #include "noise.h"
 #include "patterns.h"
 
@@ -64,7 +65,8 @@ static unsigned hash3d(int a, int b, int c)
 double cells_value(Vec3 p)
 {
     /* floor, not truncation: no doubled cells about the axes */
-    unsigned h = hash3d((int)floor(p.x + POV_EPSILON), (int)floor(p.y + POV_EPSILON), (int)floor(p.z + POV_EPSILON));
+    unsigned h = hash3d(int_as_povray(floor(p.x + POV_EPSILON)), int_as_povray(floor(p.y + POV_EPSILON)),
+                        int_as_povray(floor(p.z + POV_EPSILON)));
     return fmin(pattern_rand(h), 1.0);
 }
 
@@ -115,8 +117,8 @@ double crackle_value(const Pigment *pig, Vec3 p, int generator)
     pthread_once(&cubes_once, make_crackle_cubes);
     const double metric = pig->crackle_metric, offset = pig->crackle_offset;
     /* floor, not FLOOR: no mirror image about zero */
-    const int fx = (int)floor(p.x - POV_EPSILON), fy = (int)floor(p.y - POV_EPSILON),
-              fz = (int)floor(p.z - POV_EPSILON);
+    const int fx = int_as_povray(floor(p.x - POV_EPSILON)), fy = int_as_povray(floor(p.y - POV_EPSILON)),
+              fz = int_as_povray(floor(p.z - POV_EPSILON));
     Vec3 points[81];
     for (int i = 0; i < 81; i++)
         points[i] = point_in_cube(fx + crackle_cubes[i][0], fy + crackle_cubes[i][1], fz + crackle_cubes[i][2]);

@@ -20,12 +20,12 @@ static double exterior(const Pigment *pig, int iters, double a, double b)
     case 4: return a * a * f;
     case 5: return b * b * f;
     case 6: return sqrt(a * a + b * b) * f;
-    case 7: { /* 0 to (n - 1) / n */
-        unsigned n = (unsigned)f;
-        return n ? (double)((unsigned)iters % n) / f : 0.0; /* POV-Ray divides by zero there */
+    case 7: { /* 0 to (n - 1) / n; a factor below 1 (POV-Ray divides by zero) gives 0 */
+        unsigned n = f >= 1.0 && f < 4294967296.0 ? (unsigned)f : 0u;
+        return n ? (double)((unsigned)iters % n) / f : 0.0;
     }
     case 8: { /* 0 to 1 */
-        unsigned n = (unsigned)(1.0 + f);
+        unsigned n = f >= 0.0 && f < 4294967295.0 ? (unsigned)(1.0 + f) : 0u;
         return n ? (double)((unsigned)iters % n) / f : 0.0;
     }
     default: return 0.0;

@@ -4,6 +4,7 @@
  * borders fall where POV-Ray puts them. */
 #include <math.h>
 
+#include "convert.h"
 #include "patterns.h"
 
 #define SQRT3 1.7320508075688772935274463415059   /* POV-Ray's constants */
@@ -13,7 +14,7 @@
  * truncated toward zero, then lifted into [0, 1). */
 static double brick_fraction(double v)
 {
-    double f = v - (double)(int)v;
+    double f = v - (double)int_as_povray(v);
     return f < 0.0 ? f + 1.0 : f;
 }
 
@@ -44,7 +45,7 @@ double brick_value(const Pigment *pig, Vec3 p)
 
 double square_value(Vec3 p)
 {
-    int x = (int)floor(p.x), z = (int)floor(p.z);
+    int x = int_as_povray(floor(p.x)), z = int_as_povray(floor(p.z));
     if (x & 1)
         return (z & 1) ? 2.0 : 3.0;
     return (z & 1) ? 1.0 : 0.0;
@@ -56,7 +57,7 @@ double triangular_value(Vec3 p)
 {
     double xs = p.x - 3.0 * floor(p.x / 3.0);
     double zs = p.z - SQRT3 * floor(p.z / SQRT3);
-    int a = (int)floor(xs);
+    int a = int_as_povray(floor(xs));
     xs -= a;
     int mirrored = zs < SQRT3_2 ? 0 : 1;
     if (mirrored)
