@@ -92,10 +92,7 @@ textures/pigments/blkhole.pov|"
 # on 2026-11-23 (POV-Ray 3.7.0.10, one thread; the same in two runs; the
 # four scenes with normals, Sea_blue_sky, normal, normmap and quilt2, again
 # on 2026-12-02, once normals were modelled; caustic2 on 2026-12-07, once
-# fake caustics were; normmap, slopemap, fractals3, fractalzoom and the
-# scenes from brick to s_cloud2 on 2026-12-07, once their patterns were
-# evaluated)
-# and the
+# fake caustics were) and the
 # limit: the image's RMSE and its pixels off by more than 0.02, the shadow
 # mask's disagreeing pixels (none may disagree in the interior). Where the
 # images agree but for noise (RMSE below 0.01), the limit is about the
@@ -117,6 +114,8 @@ templates/Basic_Scenes/DarkBlueSky_Axes.pov      1e-5     (2.03e-6)     1 (0)   
 templates/Basic_Scenes/Orthographic_scene.pov    1e-5     (0)           1 (0)           1 (0)
 templates/Basic_Scenes/Sea_blue_sky.pov          1e-5     (0)           1 (0)           1 (0)
 textures/normals/normal.pov                      0.047    (0.0371)      278 (222)       1 (0)
+# normmap, slopemap, fractals3, fractalzoom and brick ... s_cloud2 measured on 2026-12-07, once their patterns
+# were evaluated
 textures/normals/normmap.pov                     1e-5     (0)           1 (0)           1 (0)
 textures/normals/slopemap.pov                    1e-5     (0)           1 (0)           1 (0)
 textures/patterns/fractals3.pov                  1e-5     (0)           1 (0)           1 (0)
