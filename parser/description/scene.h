@@ -189,11 +189,9 @@ typedef struct Pigment {
      * (POV-Ray's default black to white when none is given). */
     int nmap;
     const ColourMapEntry *map;
-    Vec3 gradient;        /* normalised, as POV-Ray stores it */
     double frequency, phase; /* POV-Ray's defaults 1 and 0; checker and hexagon set 0 */
     WaveKind wave;
     double wave_exponent;    /* poly_wave */
-    int arms;                /* spiral1, spiral2 */
     double agate_turb;       /* agate_turb, default 1 */
     int noise_generator;     /* 1..3, or 0: the scene's (GlobalSettings) */
     int nturbulence;         /* warps, in POV-Ray's order (shared, never changed) */
@@ -213,24 +211,38 @@ typedef struct Pigment {
     /* waves and ripples: how many sources (global_settings'
      * number_of_waves); 0: not yet given the scene's, 10 then */
     int nwaves;
-    /* brick: its size (default <8, 3, 4.5>) and mortar, minus POV-Ray's
-     * 2 EPSILON, in single precision as there */
-    Vec3 brick_size;
-    double mortar;
-    double control0, control1; /* quilted (single precision), default 1 and 1 */
-    /* crackle: form (default <-1, 1, 0>), metric (2), offset (0), solid */
-    Vec3 crackle_form;
-    double crackle_metric, crackle_offset;
-    int crackle_solid;
-    /* mandel, julia, magnet: the kind, julia's complex constant,
-     * max_iteration, exponent, and the interior and exterior types and
-     * factors (defaults 0, 1 and 1, 1) */
-    FractalKind fractal;
-    double fractal_u, fractal_v;
-    int iterations, exponent;
-    int interior_type, exterior_type;
-    double interior_factor, exterior_factor;
-    const struct Pigment *inner; /* pigment_pattern: the pigment whose grey is the value */
+    /* The parameters of one kind of pattern, valid while `kind` is that
+     * kind (they share their memory, as POV-Ray's TPATTERN.Vals). */
+    union {
+        Vec3 gradient; /* gradient: normalised, as POV-Ray stores it */
+        int arms;      /* spiral1, spiral2 */
+        /* brick: its size (default <8, 3, 4.5>) and mortar, minus POV-Ray's
+         * 2 EPSILON, in single precision as there */
+        struct {
+            Vec3 brick_size;
+            double mortar;
+        };
+        struct {
+            double control0, control1; /* quilted (single precision), default 1 and 1 */
+        };
+        /* crackle: form (default <-1, 1, 0>), metric (2), offset (0), solid */
+        struct {
+            Vec3 crackle_form;
+            double crackle_metric, crackle_offset;
+            int crackle_solid;
+        };
+        /* mandel, julia, magnet: the kind, julia's complex constant,
+         * max_iteration, exponent, and the interior and exterior types and
+         * factors (defaults 0, 1 and 1, 1) */
+        struct {
+            FractalKind fractal;
+            int iterations, exponent;
+            int interior_type, exterior_type;
+            double fractal_u, fractal_v;
+            double interior_factor, exterior_factor;
+        };
+        const struct Pigment *inner; /* pigment_pattern: the pigment whose grey is the value */
+    };
     int map_pigments;     /* some entry of the map has a pigment of its own */
     /* the scene's noise generator (0: not yet resolved, 2 then), for the
      * pigments of its map's entries and pigment_pattern's, which name none */
