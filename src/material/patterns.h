@@ -10,7 +10,9 @@
  *   pattern_waves.c    ripples and waves, and their wave sources
  *   pattern_cells.c    cells and crackle: random points per unit cube
  *   pattern_fractal.c  mandel, julia, magnet
- */
+ *
+ * dents (noise cubed) and pigment_pattern (another pigment's grey) are
+ * pigment.c's, beside the noise and the pigments they use. */
 #ifndef HST_PATTERNS_H
 #define HST_PATTERNS_H
 
