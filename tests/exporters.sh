@@ -78,7 +78,7 @@ done <<'BAD'
 #declare T = texture { pigment { color rgb 1 } } triangle { <0,0,0>, <1,0,0>, <0,1,0> material { T } }|'T' cannot be used in a material
 #declare M = material { texture { pigment { color rgb 1 } } } triangle { <0,0,0>, <1,0,0>, <0,1,0> material { texture { pigment { color rgb 0.5 } } M } }|expected a material identifier (only first)
 triangle { <0,0,0>, <1,0,0>, <0,1,0> material { interior_texture { pigment { color rgb 0.5 } } } }|'interior_texture' is not supported
-#declare T = texture { pigment { color rgb 1 } } triangle { <0,0,0>, <1,0,0>, <0,1,0> texture { onion texture_map { [0 T] [1 T] } } }|'texture_map (a texture patterned by onion)' is not supported
+#declare T = texture { pigment { color rgb 1 } } triangle { <0,0,0>, <1,0,0>, <0,1,0> texture { tiling 3 texture_map { [0 T] [1 T] } } }|'texture_map (a texture patterned by tiling)' is not supported
 BAD
 # --- includes from the current folder, where POV-Ray looks first ------------------
 mkdir -p "$work/scenes"

@@ -245,38 +245,38 @@ check "a light's media_attenuation with fog is reported as approximated, a trans
     err_is "$work/fogatt.pov:3:24: warning: a fog's up vector can't be translated
 $work/fogatt.pov:3:1: warning: 'fog' approximated: fog between lights and surfaces (media_attenuation) ignored (1 place; --strict refuses it)"
 
-printf '#version 3.7;\nplane { y, 0 pigment { gradient x pigment_map { [0 rgb 1] [1 bozo] } } }\n' >"$work/pigmap.pov"
+printf '#version 3.7;\nplane { y, 0 pigment { gradient x pigment_map { [0 rgb 1] [1 uv_mapping bozo] } } }\n' >"$work/pigmap.pov"
 run "$work/pigmap.pov" --width 8 --height 6 -o "$work/pm.png"
-check "a pigment_map entry with a pattern of its own: renders" exited 0
-check "a pigment_map entry with a pattern of its own is reported as approximated" \
+check "a pigment_map entry seen at the surface's (u, v): renders" exited 0
+check "a pigment_map entry seen at the surface's (u, v) is reported as approximated" \
     err_is "$work/pigmap.pov:2:35: warning: 'pigment_map' approximated: pattern shown as one colour, its colour map at 0.5 (1 place; --strict refuses it)"
 
 # --strict and the approximation report.
 cat >"$work/approx.pov" <<'POV'
 #version 3.7;
-#declare Bumpy = texture { pigment { rgb 1 } normal { crackle 0.5 scale 0.1 } }
+#declare Bumpy = texture { pigment { rgb 1 } normal { facets 0.5 scale 0.1 } }
 camera { location <0, 1, -4> look_at 0 }
 light_source { <2, 4, -3> rgb 1 photons { reflection on } }
-plane { y, -1 pigment { crackle color_map { [0 rgb 0] [1 rgb 1] } } }
+plane { y, -1 pigment { tiling 3 color_map { [0 rgb 0] [1 rgb 1] } } }
 triangle { <-1,-1,0>, <1,-1,0>, <0,1,0> texture { Bumpy } photons { target } }
 global_settings { photons { count 100 } }
 POV
 run "$work/approx.pov" --width 40 --height 30 -o "$work/a.png" --stats --stats-json "$work/a.json"
 check "approximated features render by default" exited 0
 check "a warning names the approximated pattern at FILE:LINE:COLUMN" \
-    grep -q "approx.pov:5:25: warning: 'crackle' approximated: pattern shown as one colour" "$work/err"
+    grep -q "approx.pov:5:25: warning: 'tiling' approximated: pattern shown as one colour" "$work/err"
 check "--stats lists the photons approximation with its position" \
     grep -q "photon mapping ignored: 3 places, first 'photons' at .*approx.pov:6:59" "$work/err"
 check "--stats-json lists the normal approximation with its position" \
-    grep -q '"kind": "normal", "count": 1, "first": ".*approx.pov:2:55", "what": "'"'"'crackle'"'"'"' "$work/a.json"
+    grep -q '"kind": "normal", "count": 1, "first": ".*approx.pov:2:55", "what": "'"'"'facets'"'"'"' "$work/a.json"
 run "$work/approx.pov" --width 40 --height 30 -o "$work/s.png" --strict
 check "--strict: the first approximation is an error at FILE:LINE:COLUMN, status 2" \
-    exited 2 "approx.pov:5:25: 'crackle' is only approximated by hstrace"
+    exited 2 "approx.pov:5:25: 'tiling' is only approximated by hstrace"
 check "--strict: no image" [ ! -e "$work/s.png" ]
 # photons only once the scene is read: they count where global_settings
 # turns photon mapping on and an object is a target, both of which may come
 # after the block.
-sed '5d; 2s/normal { crackle 0.5 scale 0.1 }//' "$work/approx.pov" >"$work/photons.pov"
+sed '5d; 2s/normal { facets 0.5 scale 0.1 }//' "$work/approx.pov" >"$work/photons.pov"
 run "$work/photons.pov" --width 40 --height 30 -o "$work/p.png" --strict
 check "--strict: photons where they change POV-Ray's image are an error at the first, status 2" \
     exited 2 "photons.pov:5:59: 'photons' is only approximated by hstrace (photon mapping ignored: global_settings turns it on and an object is a target); --strict makes it an error"

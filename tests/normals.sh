@@ -219,11 +219,11 @@ else
 fi
 
 # A pattern hstrace does not evaluate in a normal: the flat normal, noted.
-printf 'camera { location <0,0,-3> look_at 0 }\nlight_source { <1,2,-3> rgb 1 }\nplane { z, 0 normal { crackle 0.5 } }\n' \
-    >"$work/crackle.pov"
-run crackle.pov +W16 +H12 -o crackle.png
-check "normal { crackle }: renders, with a warning that the normal is left unperturbed" \
-    exited 0 "crackle.pov:3:23: warning: 'crackle' approximated: normal pattern not evaluated"
+printf 'camera { location <0,0,-3> look_at 0 }\nlight_source { <1,2,-3> rgb 1 }\nplane { z, 0 normal { facets 0.5 } }\n' \
+    >"$work/facets.pov"
+run facets.pov +W16 +H12 -o facets.png
+check "normal { facets }: renders, with a warning that the normal is left unperturbed" \
+    exited 0 "facets.pov:3:23: warning: 'facets' approximated: normal pattern not evaluated"
 
 # --- 3. mistakes ---------------------------------------------------------------
 echo junk >"$work/junk.png"

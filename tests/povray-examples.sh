@@ -63,6 +63,25 @@ textures/patterns/fractals3.pov|
 textures/patterns/quilt2.pov|
 textures/patterns/slopemt_dat_36.pov|
 textures/patterns/slopemt_dat_37.pov|
+textures/patterns/brick.pov|
+textures/patterns/leopard.pov|
+textures/patterns/onion.pov|
+textures/patterns/radial.pov|
+textures/patterns/quilted.pov|
+textures/patterns/ripples.pov|
+textures/patterns/waves.pov|
+textures/patterns/dents.pov|
+textures/patterns/crackle1.pov|
+textures/patterns/mandel.pov|
+textures/patterns/fractals1.pov|
+textures/patterns/fractals2.pov|
+textures/patterns/pigment_pattern.pov|
+objects/csg/cliptst2.pov|
+advanced/whiltile.pov|
+textures/pigments/crack1.pov|
+textures/pigments/pigmap.pov|
+textures/pigments/txtrmap.pov|
+textures/pigments/skies/s_cloud2.pov|
 animations/raddem/raddem.pov|
 animations/fractalzoom/fractalzoom.pov|
 camera/mesh_camera/baking_repair_seams.pov|
@@ -124,14 +143,37 @@ templates/Basic_Scenes/DarkBlueSky_Axes.pov      1e-5     (2.03e-6)     1 (0)   
 templates/Basic_Scenes/Orthographic_scene.pov    1e-5     (0)           1 (0)           1 (0)
 templates/Basic_Scenes/Sea_blue_sky.pov          1e-5     (0)           1 (0)           1 (0)
 textures/normals/normal.pov                      0.047    (0.0371)      278 (222)       1 (0)
-textures/normals/normmap.pov                     0.09     (0.0721)      4750 (3800)     1 (0)
-textures/normals/slopemap.pov                    0.074    (0.0588)      7184 (5747)     1 (0)
-textures/patterns/fractals3.pov                  0.67     (0.536)       23959 (19167)   1 (0)
+# normmap, slopemap, fractals3, fractalzoom and brick ... s_cloud2 measured on 2026-12-07, once their patterns
+# were evaluated
+textures/normals/normmap.pov                     1e-5     (0)           1 (0)           1 (0)
+textures/normals/slopemap.pov                    1e-5     (0)           1 (0)           1 (0)
+textures/patterns/fractals3.pov                  1e-5     (0)           1 (0)           1 (0)
 textures/patterns/quilt2.pov                     0.0066   (0.00328)     8 (4)           1 (0)
 textures/patterns/slopemt_dat_36.pov             0.034    (0.0269)      2210 (1768)     1 (0)
 textures/patterns/slopemt_dat_37.pov             0.028    (0.0223)      1745 (1396)     1 (0)
+textures/patterns/brick.pov                      1e-5     (5.09e-7)     1 (0)           1 (0)
+textures/patterns/leopard.pov                    1e-5     (8.81e-7)     1 (0)           1 (0)
+textures/patterns/onion.pov                      1e-5     (1.76e-6)     1 (0)           1 (0)
+textures/patterns/radial.pov                     1e-5     (1.76e-6)     1 (0)           1 (0)
+textures/patterns/quilted.pov                    1e-5     (3.55e-6)     1 (0)           1 (0)
+textures/patterns/ripples.pov                    1e-5     (0)           1 (0)           1 (0)
+textures/patterns/waves.pov                      1e-5     (2.2e-7)      1 (0)           1 (0)
+textures/patterns/dents.pov                      1e-5     (0)           1 (0)           1 (0)
+textures/patterns/crackle1.pov                   1e-5     (0)           1 (0)           1 (0)
+textures/patterns/mandel.pov                     1e-5     (0)           1 (0)           1 (0)
+# fractals1: the floor has a magnet normal sampled 0.0005 apart, seen in reflections: the last bits of
+# a hit point move a pixel across the fractal, on 15 scattered pixels and one shadow edge
+textures/patterns/fractals1.pov                  0.0029   (0.00144)     30 (15)         2 (1)
+textures/patterns/fractals2.pov                  1e-5     (1.03e-6)     1 (0)           1 (0)
+textures/patterns/pigment_pattern.pov            1e-5     (4.42e-6)     1 (0)           1 (0)
+objects/csg/cliptst2.pov                         1e-5     (5.4e-7)      1 (0)           1 (0)
+advanced/whiltile.pov                            1e-5     (1.07e-6)     1 (0)           1 (0)
+textures/pigments/crack1.pov                     1e-5     (0)           1 (0)           1 (0)
+textures/pigments/pigmap.pov                     1e-5     (2.52e-6)     1 (0)           1 (0)
+textures/pigments/txtrmap.pov                    1e-5     (1.03e-6)     1 (0)           1 (0)
+textures/pigments/skies/s_cloud2.pov             1e-5     (3.07e-6)     1 (0)           1 (0)
 animations/raddem/raddem.pov                     0.13     (0.103)       24000 (19200)   1 (0)
-animations/fractalzoom/fractalzoom.pov           0.91     (0.723)       23977 (19181)   1 (0)
+animations/fractalzoom/fractalzoom.pov           1e-5     (0)           1 (0)           1 (0)
 camera/mesh_camera/baking_repair_seams.pov       1e-5     (0)           1 (0)           1 (0)
 incdemo/strings.pov                              1e-5     (0)           1 (0)           1 (0)
 textures/pigments/blkhole.pov                    0.54     (0.43)        24000 (19200)   1 (0)

@@ -80,11 +80,13 @@ static void test_pattern_values(void)
     tap_ok(near(pattern_value(&grad, v3(0, 0.25, 0)), 0.25) && near(pattern_value(&grad, v3(0, 1.75, 0)), 0.75) &&
                near(pattern_value(&grad, v3(0, -0.25, 0)), 0.75),
            "gradient: fractional part, negative values wrap");
-    ColourMapEntry map[3] = { { 0.0, { 0, 0, 0, 0, 0 } }, { 0.5, { 1, 0, 0, 0, 0 } }, { 0.5, { 0, 0, 1, 0, 0 } } };
+    ColourMapEntry map[3] = { { 0.0, { 0, 0, 0, 0, 0 }, NULL }, { 0.5, { 1, 0, 0, 0, 0 }, NULL },
+                              { 0.5, { 0, 0, 1, 0, 0 }, NULL } };
     tap_ok(colour_is(colour_map_at(map, 3, 0.25), 0.5, 0, 0, 0, 0) && colour_is(colour_map_at(map, 3, 0.5), 0, 0, 1, 0, 0) &&
                colour_is(colour_map_at(map, 3, 0.75), 0, 0, 1, 0, 0) && colour_is(colour_map_at(map, 3, -1), 0, 0, 0, 0, 0),
            "colour map: interpolation; at or past the last value the last entry, as Search_Blend_Map; clamped ends");
-    ColourMapEntry step[3] = { { 0.5, { 1, 0, 0, 0, 0 } }, { 0.5, { 0, 0, 1, 0, 0 } }, { 1.0, { 0, 1, 0, 0, 0 } } };
+    ColourMapEntry step[3] = { { 0.5, { 1, 0, 0, 0, 0 }, NULL }, { 0.5, { 0, 0, 1, 0, 0 }, NULL },
+                               { 1.0, { 0, 1, 0, 0, 0 }, NULL } };
     tap_ok(colour_is(colour_map_at(step, 3, 0.5), 1, 0, 0, 0, 0),
            "colour map: a sharp step before the last value takes its first entry at the step");
 }
@@ -227,7 +229,7 @@ static void test_approximations(void)
     s = parse("#include \"colors.inc\"\n#include \"textures.inc\"\n#include \"stones.inc\"\n#include \"skies.inc\"\nbox { 0, 1 }\n");
     tap_ok(s && s->napproximations == 0, "textures.inc, stones.inc, skies.inc: nothing reported when unused");
     scene_free(s);
-    s = parse("#declare P = pigment { crackle color_map { [0 rgb 0] [1 rgb <1,0,0>] } }\n"
+    s = parse("#declare P = pigment { tiling 3 color_map { [0 rgb 0] [1 rgb <1,0,0>] } }\n"
               "box { 0, 1 pigment { P } }\nbox { 0, 1 pigment { P } }\n"
               "box { 0, 1 normal { facets 0.5 } }\n"
               "light_source { 0, 1 photons { refraction on } }\n"
@@ -245,7 +247,7 @@ static void test_approximations(void)
         }
         tap_ok(s->napproximations == 4, "four kinds reported (%d)", s->napproximations);
         tap_ok(pattern >= 0 && s->approximations[pattern].count == 1 && s->approximations[pattern].first.line == 1 &&
-                   s->approximations[pattern].first.column == 24 && strcmp(s->approximations[pattern].what, "'crackle'") == 0,
+                   s->approximations[pattern].first.column == 24 && strcmp(s->approximations[pattern].what, "'tiling'") == 0,
                "a declared pattern used twice: one place, at its declaration 1:24");
         tap_ok(normal >= 0 && s->approximations[normal].first.line == 4, "object normal (facets) at line 4");
         tap_ok(photons >= 0 && rad >= 0 && s->approximations[photons].count == 3 &&
@@ -284,8 +286,8 @@ static void test_approximations(void)
 
 static void test_strict(void)
 {
-    expect_error_with(&strict_opts, "box { 0, 1 pigment { crackle } }", 1, 22,
-                      "'crackle' is only approximated by hstrace (pattern shown as one colour", "--strict: pattern");
+    expect_error_with(&strict_opts, "box { 0, 1 pigment { tiling 3 } }", 1, 22,
+                      "'tiling' is only approximated by hstrace (pattern shown as one colour", "--strict: pattern");
     expect_error_with(&strict_opts, "box { 0, 1 pigment { bozo warp { repeat x } } }", 1, 27,
                       "'warp' is only approximated by hstrace", "--strict: a warp other than turbulence");
     Scene *ok = parse_with("box { 0, 1 pigment { bozo turbulence 0.5 warp { turbulence 1 } } }\n"

@@ -129,6 +129,9 @@ int pigment_is_opaque(const Pigment *pig)
     if (pig->kind == PIGMENT_SOLID)
         return pig->colour.filter == 0.0 && pig->colour.transmit == 0.0;
     for (int i = 0; i < pig->nmap; i++)
+        if (pig->map[i].pigment && !pigment_is_opaque(pig->map[i].pigment))
+            return 0;
+    for (int i = 0; i < pig->nmap; i++)
         if (pig->map[i].colour.filter != 0.0 || pig->map[i].colour.transmit != 0.0)
             return 0;
     return 1;

@@ -79,7 +79,34 @@ typedef enum {
     PIGMENT_SPIRAL1,  /* arms around the z axis, triangle wave */
     PIGMENT_SPIRAL2,  /* two sets of arms crossing */
     PIGMENT_IMAGE_MAP, /* a picture laid on the unit square of x and y (map_type 0) */
+    PIGMENT_BRICK,    /* mortar 0, brick 1 (brick_size, mortar) */
+    PIGMENT_LEOPARD,  /* the square of the mean of sin x, sin y, sin z */
+    PIGMENT_ONION,    /* the distance from the origin, modulo 1 */
+    PIGMENT_RADIAL,   /* the angle about y, 0 to 1 */
+    PIGMENT_QUILTED,  /* unit cubes, rounded by control0 and control1 */
+    PIGMENT_DENTS,    /* noise cubed */
+    PIGMENT_RIPPLES,  /* number_of_waves sources, one frequency */
+    PIGMENT_WAVES,    /* number_of_waves sources, each its own frequency */
+    PIGMENT_PLANAR,   /* |y| */
+    PIGMENT_SPHERICAL,   /* the distance from the origin */
+    PIGMENT_CYLINDRICAL, /* the distance from the y axis */
+    PIGMENT_BOXED,    /* the largest of |x|, |y|, |z| */
+    PIGMENT_SQUARE,   /* four colours, squares in x-z */
+    PIGMENT_TRIANGULAR, /* six colours, triangles in x-z */
+    PIGMENT_CUBIC,    /* six colours, the six pyramids of the axes */
+    PIGMENT_CELLS,    /* a random value per unit cube */
+    PIGMENT_CRACKLE,  /* distances to random points, one per unit cube */
+    PIGMENT_FRACTAL,  /* mandel, julia, magnet (fractal_kind) */
+    PIGMENT_PIGMENT_PATTERN, /* another pigment's grey (inner) */
+    PIGMENT_AVERAGE,  /* the mean of its map's pigments, weighed by their values */
 } PigmentKind;
+
+/* The fractals of mandel, julia and magnet (POV-Ray's MANDEL_PATTERN ...
+ * MAGNET2J_PATTERN): mandel and julia of exponent 2, 3, 4 or more, magnet
+ * types 1 and 2 of each. */
+typedef enum {
+    FRACTAL_MANDEL, FRACTAL_JULIA, FRACTAL_MAGNET1M, FRACTAL_MAGNET1J, FRACTAL_MAGNET2M, FRACTAL_MAGNET2J,
+} FractalKind;
 
 /* An image_map's picture as POV-Ray holds it: straight (not premultiplied)
  * RGBA, in the scene's working space, row 0 the picture's top. */
@@ -137,16 +164,22 @@ typedef struct {
     double omega, lambda; /* defaults 0.5 and 2 */
 } PatternTurbulence;
 
-/* One [value colour] entry of a colour_map, sorted by value as written. */
+struct Pigment;
+
+/* One [value colour] entry of a colour_map, sorted by value as written; of
+ * a pigment_map, or of checker's (brick's ...) list of pigments, the
+ * entry's pigment where it has a pattern of its own (NULL: the colour
+ * alone; else `colour` is its representative colour). */
 typedef struct {
     double value;
     Colour colour;
+    const struct Pigment *pigment;
 } ColourMapEntry;
 
 /* POV-Ray's wave types, which reshape a pattern's value before the map. */
 typedef enum { WAVE_RAMP, WAVE_SINE, WAVE_TRIANGLE, WAVE_SCALLOP, WAVE_CUBIC, WAVE_POLY } WaveKind;
 
-typedef struct {
+typedef struct Pigment {
     PigmentKind kind;
     /* Solid: the colour (also that of a pattern hstrace only approximates:
      * its colour map at 0.5). Evaluated patterns: their map at 0.5, a
@@ -156,11 +189,9 @@ typedef struct {
      * (POV-Ray's default black to white when none is given). */
     int nmap;
     const ColourMapEntry *map;
-    Vec3 gradient;        /* normalised, as POV-Ray stores it */
     double frequency, phase; /* POV-Ray's defaults 1 and 0; checker and hexagon set 0 */
     WaveKind wave;
     double wave_exponent;    /* poly_wave */
-    int arms;                /* spiral1, spiral2 */
     double agate_turb;       /* agate_turb, default 1 */
     int noise_generator;     /* 1..3, or 0: the scene's (GlobalSettings) */
     int nturbulence;         /* warps, in POV-Ray's order (shared, never changed) */
@@ -177,6 +208,45 @@ typedef struct {
     int image_map_type;   /* POV-Ray's map_type: 0 planar, 1 spherical, 2 cylindrical, 5 torus */
     int image_use_index;  /* bump_map's use_index: a colour-mapped picture's entries are its heights */
     double image_filter_all, image_transmit_all;
+    /* waves and ripples: how many sources (global_settings'
+     * number_of_waves); 0: not yet given the scene's, 10 then */
+    int nwaves;
+    /* The parameters of one kind of pattern, valid while `kind` is that
+     * kind (they share their memory, as POV-Ray's TPATTERN.Vals). */
+    union {
+        Vec3 gradient; /* gradient: normalised, as POV-Ray stores it */
+        int arms;      /* spiral1, spiral2 */
+        /* brick: its size (default <8, 3, 4.5>) and mortar, minus POV-Ray's
+         * 2 EPSILON, in single precision as there */
+        struct {
+            Vec3 brick_size;
+            double mortar;
+        };
+        struct {
+            double control0, control1; /* quilted (single precision), default 1 and 1 */
+        };
+        /* crackle: form (default <-1, 1, 0>), metric (2), offset (0), solid */
+        struct {
+            Vec3 crackle_form;
+            double crackle_metric, crackle_offset;
+            int crackle_solid;
+        };
+        /* mandel, julia, magnet: the kind, julia's complex constant,
+         * max_iteration, exponent, and the interior and exterior types and
+         * factors (defaults 0, 1 and 1, 1) */
+        struct {
+            FractalKind fractal;
+            int iterations, exponent;
+            int interior_type, exterior_type;
+            double fractal_u, fractal_v;
+            double interior_factor, exterior_factor;
+        };
+        const struct Pigment *inner; /* pigment_pattern: the pigment whose grey is the value */
+    };
+    int map_pigments;     /* some entry of the map has a pigment of its own */
+    /* the scene's noise generator (0: not yet resolved, 2 then), for the
+     * pigments of its map's entries and pigment_pattern's, which name none */
+    int scene_generator;
     const ApproxNote *approx;
 } Pigment;
 
@@ -192,7 +262,7 @@ typedef enum {
     NORMAL_WRINKLES, /* 10 octaves of |vector noise| */
     NORMAL_WAVES,    /* number_of_waves sources, each its own frequency */
     NORMAL_RIPPLES,  /* number_of_waves sources, one frequency */
-    NORMAL_QUILTED,  /* unit cubes, rounded by control0 and control1 */
+    NORMAL_QUILTED,  /* unit cubes, rounded by pattern.control0 and control1 */
     NORMAL_AVERAGE,  /* the entries' perturbations, weighed */
     NORMAL_BUMP_MAP, /* the slope of a picture's brightness (pattern.image) */
     NORMAL_UV,       /* uv_mapping: `uv_entry` at the surface's (u, v, 0) */
@@ -222,7 +292,6 @@ typedef struct SceneNormal {
     double amount;        /* bump_size (or the value after the pattern), default 0.5 */
     double accuracy;      /* the sample spacing of slopes, default 0.02 */
     int no_bump_scale;    /* POV-Ray's DONT_SCALE_BUMPS_FLAG */
-    double control0, control1; /* quilted, default 1 and 1 */
     int nslope;           /* slope_map, sorted by value as written */
     const SlopeMapEntry *slope;
     int nmap;             /* normal_map, average's entries, or a checker's / hexagon's normals */
@@ -629,6 +698,7 @@ typedef struct {
 /* hstrace's bound on number_of_waves (POV-Ray has none): every shading
  * point of waves and ripples visits every source. */
 #define MAX_NUMBER_OF_WAVES 10000
+#define DEFAULT_NUMBER_OF_WAVES 10 /* POV-Ray's */
 
 typedef struct {
     double assumed_gamma;   /* 0 when not given */

@@ -53,6 +53,10 @@ const Value *gram_block_identifier(Parser *p, const Token *t, ValueKind kind, co
 /* How hstrace treats a pattern keyword in a pigment. */
 typedef enum { PAT_NONE, PAT_EVALUATED, PAT_APPROXIMATED, PAT_UNSUPPORTED } PatternSupport;
 PatternSupport gram_pattern_support(int kw);
+/* How many colours, normals or textures a pattern takes in a list
+ * (checker 2, hexagon 3, brick 2, square 4, triangular and cubic 6), 0 for
+ * patterns that take a map instead. */
+int gram_pattern_list_count(int kw);
 /* An evaluated pattern at its keyword kw (read): its kind and arguments,
  * frequency, phase and wave at POV-Ray's defaults. */
 void gram_start_pattern(Parser *p, Pigment *pig, int kw);

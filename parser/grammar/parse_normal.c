@@ -8,8 +8,8 @@
  * (bumps, dents, wrinkles, waves, ripples, quilted), bump_map, average
  * and uv_mapping are read with what they take; of the others, those
  * hstrace evaluates for pigments displace the normal by their slope (the
- * engine's src/material/normal.c), and the rest are approximated: the
- * normal is left as it is, with a note. */
+ * engine's src/material/normal.c), and the rest (facets, function, slope,
+ * ...) are approximated: the normal is left as it is, with a note. */
 #include <stdio.h>
 #include <string.h>
 
@@ -36,7 +36,6 @@ static SceneNormal fresh_normal(Parser *p)
     transform_identity(&n.pattern.transform);
     n.amount = 0.5;
     n.accuracy = gram_single(0.02);
-    n.control0 = n.control1 = 1.0;
     return n;
 }
 
@@ -61,7 +60,15 @@ static const SceneNormal *entry_normal(Parser *p, int close, const Token *at)
     return n;
 }
 
-/* After checker or hexagon: up to `count` `normal { }` items, commas
+/* Whether a pattern takes a list, not a map (checker, hexagon, brick,
+ * square, triangular, cubic): no slope_map or normal_map for them. */
+static int list_pattern(PigmentKind k)
+{
+    return k == PIGMENT_CHECKER || k == PIGMENT_HEXAGON || k == PIGMENT_BRICK || k == PIGMENT_SQUARE ||
+           k == PIGMENT_TRIANGULAR || k == PIGMENT_CUBIC;
+}
+
+/* After a pattern that takes a list: up to `count` `normal { }` items, commas
  * optional (Parse_Blend_List). None: the pattern's own slope. Missing
  * ones: the default texture's normal (none: the normal unchanged). */
 static void parse_normal_list(Parser *p, SceneNormal *n, int count)
@@ -187,10 +194,9 @@ static int normal_pattern(Parser *p, SceneNormal *n, const Token *at)
     n->map = NULL;
     if (special != NORMAL_NONE) {
         n->kind = special;
-        if (special == NORMAL_QUILTED) {
-            n->control0 = n->control1 = 1.0;
-            pat->frequency = 0.0;
-        }
+        if (special == NORMAL_DENTS || special == NORMAL_WAVES || special == NORMAL_RIPPLES ||
+            special == NORMAL_QUILTED || special == NORMAL_BUMPS || special == NORMAL_WRINKLES)
+            gram_start_pattern(p, pat, kw); /* its value, for a normal_map, and quilted's controls */
         if (special == NORMAL_BUMP_MAP) {
             pat->frequency = 0.0;
             parse_bump_map(p, n, at);
@@ -203,10 +209,19 @@ static int normal_pattern(Parser *p, SceneNormal *n, const Token *at)
     case PAT_EVALUATED:
         n->kind = NORMAL_PATTERN;
         gram_start_pattern(p, pat, kw); /* bumps and wrinkles are the normals' own, above */
-        if (kw == KW_checker || kw == KW_hexagon)
-            parse_normal_list(p, n, kw == KW_checker ? 2 : 3);
+        if (gram_pattern_list_count(kw)) {
+            n->accuracy = gram_single(0.02); /* POV-Ray resets it for these */
+            parse_normal_list(p, n, gram_pattern_list_count(kw));
+        }
+        for (const ApproxNote *a = pat->approx; a; a = a->next) { /* pigment_pattern's pigment's notes */
+            ApproxNote *c = tok_scene_alloc(p, sizeof *c);
+            *c = *a;
+            c->next = n->approx;
+            n->approx = c;
+        }
+        pat->approx = NULL;
         return 1;
-    case PAT_APPROXIMATED: /* brick, crackle, facets, leopard, onion, radial ...: not evaluated */
+    case PAT_APPROXIMATED: /* facets, function, slope ...: not evaluated */
         tok_approximate(p, at, APPROX_NORMAL, &n->approx);
         n->kind = NORMAL_NONE;
         gram_skip_arguments(p);
@@ -266,26 +281,18 @@ static void normal_items(Parser *p, SceneNormal *n, int close, const Token *kw, 
         case KW_accuracy: n->accuracy = gram_single(expr_float(p)); continue;
         case KW_no_bump_scale: n->no_bump_scale = 1; continue;
         case KW_slope_map:
-            if (n->kind == NORMAL_AVERAGE || n->pattern.kind == PIGMENT_CHECKER ||
-                n->pattern.kind == PIGMENT_HEXAGON || n->kind == NORMAL_BUMP_MAP)
+            if (n->kind == NORMAL_AVERAGE || (n->kind == NORMAL_PATTERN && list_pattern(n->pattern.kind)) ||
+                n->kind == NORMAL_BUMP_MAP)
                 tok_fail(p, here.pos, "Cannot use slope_map with this normal type.");
             gram_slope_map(p, n);
             continue;
         case KW_normal_map:
-            if ((n->kind == NORMAL_PATTERN &&
-                 (n->pattern.kind == PIGMENT_CHECKER || n->pattern.kind == PIGMENT_HEXAGON)) ||
-                n->kind == NORMAL_BUMP_MAP)
+            if ((n->kind == NORMAL_PATTERN && list_pattern(n->pattern.kind)) || n->kind == NORMAL_BUMP_MAP)
                 tok_fail(p, here.pos, "Cannot use normal_map with this normal type.");
             gram_normal_map(p, n, n->kind == NORMAL_AVERAGE);
             continue;
-        case KW_control0: case KW_control1:
-            if (n->kind != NORMAL_QUILTED)
-                tok_fail(p, here.pos, "Cannot use %s with this pattern.", tok_keyword_name(k));
-            if (k == KW_control0)
-                n->control0 = expr_float(p);
-            else
-                n->control1 = expr_float(p);
-            continue;
+        case KW_control0: case KW_control1: /* quilted's are gram_pattern_modifier_item's */
+            tok_fail(p, here.pos, "Cannot use %s with this pattern.", tok_keyword_name(k));
         default:
             break;
         }

@@ -599,7 +599,7 @@ static void init_scene(Scene *s)
     s->background.transmit = 1.0;
     s->globals.max_trace_level = 5;
     s->globals.adc_bailout = 1.0 / 255.0;
-    s->globals.number_of_waves = 10;
+    s->globals.number_of_waves = DEFAULT_NUMBER_OF_WAVES;
     s->globals.ambient_light = (Colour){ 1, 1, 1, 0, 0 };
     s->default_texture.pigment.kind = PIGMENT_SOLID;
     transform_identity(&s->default_texture.pigment.transform);

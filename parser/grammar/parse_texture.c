@@ -3,10 +3,13 @@
  *
  * Each block starts from its identifier when one comes first, otherwise
  * from the default (POV-Ray copies the default texture), then applies what
- * is written. Pigments hstrace evaluates: solid colours, checker, hexagon,
- * gradient, the noise patterns (bozo ... wood) and the spirals, with
+ * is written. Pigments hstrace evaluates: solid colours, POV-Ray 3.7's
+ * patterns (gram_pattern_support; their values are src/material's) with
  * turbulence and uv_mapping, and image_map (its file read through
- * ParseOptions.load_image); other patterns are approximated by one colour. */
+ * ParseOptions.load_image); pigment_map, average and blend lists whose
+ * entries have patterns of their own. aoi, facets, function, object,
+ * pavement, tiling and slope (and average as a texture's pattern) are
+ * approximated by one colour. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -59,20 +62,32 @@ PatternSupport gram_pattern_support(int kw)
     case KW_checker: case KW_hexagon: case KW_gradient:
     case KW_bozo: case KW_spotted: case KW_bumps: case KW_granite: case KW_wrinkles:
     case KW_agate: case KW_marble: case KW_wood: case KW_spiral1: case KW_spiral2:
+    case KW_brick: case KW_leopard: case KW_onion: case KW_radial: case KW_quilted:
+    case KW_dents: case KW_ripples: case KW_waves:
+    case KW_planar: case KW_spherical: case KW_cylindrical: case KW_boxed:
+    case KW_square: case KW_triangular: case KW_cubic: case KW_cells: case KW_crackle:
+    case KW_mandel: case KW_julia: case KW_magnet: case KW_pigment_pattern:
         return PAT_EVALUATED;
-    /* POV-Ray 3.7's other patterns: one colour stands for them */
-    case KW_aoi: case KW_average: case KW_boxed: case KW_brick:
-    case KW_cells: case KW_crackle: case KW_cubic: case KW_cylindrical: case KW_dents: case KW_facets:
-    case KW_function: case KW_julia: case KW_leopard: case KW_magnet: case KW_mandel:
-    case KW_object: case KW_onion: case KW_pavement: case KW_pigment_pattern: case KW_planar:
-    case KW_quilted: case KW_radial: case KW_ripples: case KW_spherical:
-    case KW_square: case KW_tiling: case KW_triangular: case KW_waves:
-    case KW_slope:
+    /* POV-Ray 3.7's other patterns: one colour stands for them (average
+     * pigments are pigment_items' own, average normals parse_normal.c's) */
+    case KW_aoi: case KW_average: case KW_facets: case KW_function: case KW_object:
+    case KW_pavement: case KW_tiling: case KW_slope:
         return PAT_APPROXIMATED;
     case KW_image_map: case KW_image_pattern: case KW_density_file:
         return PAT_UNSUPPORTED; /* they need an image or a density file */
     default:
         return PAT_NONE;
+    }
+}
+
+int gram_pattern_list_count(int kw)
+{
+    switch (kw) {
+    case KW_checker: case KW_brick: return 2;
+    case KW_hexagon: return 3;
+    case KW_square: return 4;
+    case KW_triangular: case KW_cubic: return 6;
+    default: return 0;
     }
 }
 
@@ -320,22 +335,55 @@ static void parse_image_map(Parser *p, Pigment *pig, const Token *at)
     }
 }
 
-/* POV-Ray's default colours for checker (blue, green) and hexagon (blue,
- * green, red), and the black-to-white map of patterns given no colour_map. */
-static const Colour default_list_colours[3] = { { 0, 0, 1, 0, 0 }, { 0, 1, 0, 0, 0 }, { 1, 0, 0, 0, 0 } };
+/* The default colours of the patterns that take a list (POV-Ray's
+ * Check_Default_Map, Hex_Default_Map, Brick_Default_Map and the
+ * Cubic_Entries that square, triangular and cubic share), and the
+ * black-to-white map of patterns given no colour_map. */
+static const Colour *default_list_colours(int kw)
+{
+    static const Colour hexagon[3] = { { 0, 0, 1, 0, 0 }, { 0, 1, 0, 0, 0 }, { 1, 0, 0, 0, 0 } };
+    static const Colour brick[2] = { { 0.5, 0.5, 0.5, 0, 0 }, { 0.6, 0.15, 0.15, 0, 0 } };
+    static const Colour cubic[6] = { { 1, 0, 0, 0, 0 }, { 0, 1, 0, 0, 0 }, { 0, 0, 1, 0, 0 },
+                                     { 1, 1, 0, 0, 0 }, { 0, 1, 1, 0, 0 }, { 1, 0, 1, 0, 0 } };
+    switch (kw) {
+    case KW_brick: return brick;
+    case KW_square: case KW_triangular: case KW_cubic: return cubic;
+    default: return hexagon;
+    }
+}
 
 static void set_map(Parser *p, Pigment *pig, const ColourMapEntry *entries, int n)
 {
     ColourMapEntry *m = tok_scene_alloc(p, sizeof *m * (size_t)(n ? n : 1));
-    for (int i = 0; i < n; i++)
+    pig->map_pigments = 0;
+    for (int i = 0; i < n; i++) {
         m[i] = entries[i];
+        pig->map_pigments |= m[i].pigment != NULL;
+    }
     pig->map = m;
     pig->nmap = n;
 }
 
+/* A blend list's or pigment_map's entry pigment as the entry keeps it:
+ * NULL for a plain colour; a copy for one with a pattern of its own, but
+ * NULL (its representative colour standing for it, noted at `at`) for one
+ * seen at the surface's (u, v), which a pigment's point does not give. */
+static const Pigment *entry_pigment(Parser *p, const Pigment *entry, const Token *at, const ApproxNote **notes)
+{
+    if (entry->kind == PIGMENT_SOLID)
+        return NULL;
+    if (entry->uv_mapping) {
+        tok_approximate(p, at, APPROX_PATTERN, notes);
+        return NULL;
+    }
+    Pigment *copy = tok_scene_alloc(p, sizeof *copy);
+    *copy = *entry;
+    return copy;
+}
+
 static void set_grey_map(Parser *p, Pigment *pig)
 {
-    ColourMapEntry e[2] = { { 0.0, { 0, 0, 0, 0, 0 } }, { 1.0, { 1, 1, 1, 0, 0 } } };
+    ColourMapEntry e[2] = { { 0.0, { 0, 0, 0, 0, 0 }, NULL }, { 1.0, { 1, 1, 1, 0, 0 }, NULL } };
     set_map(p, pig, e, 2);
 }
 
@@ -344,19 +392,28 @@ static void set_grey_map(Parser *p, Pigment *pig)
 static void set_default_map(Parser *p, Pigment *pig, int kw)
 {
     static const ColourMapEntry bozo[6] = {
-        { 0.4, { 1, 1, 1, 0, 0 } }, { 0.4, { 0, 1, 0, 0, 0 } }, { 0.6, { 0, 1, 0, 0, 0 } },
-        { 0.6, { 0, 0, 1, 0, 0 } }, { 0.8, { 0, 0, 1, 0, 0 } }, { 0.8, { 1, 0, 0, 0, 0 } },
+        { 0.4, { 1, 1, 1, 0, 0 }, NULL }, { 0.4, { 0, 1, 0, 0, 0 }, NULL }, { 0.6, { 0, 1, 0, 0, 0 }, NULL },
+        { 0.6, { 0, 0, 1, 0, 0 }, NULL }, { 0.8, { 0, 0, 1, 0, 0 }, NULL }, { 0.8, { 1, 0, 0, 0, 0 }, NULL },
     };
-    static const ColourMapEntry wood[2] = { { 0.6, { 0.666, 0.312, 0.2, 0, 0 } },
-                                            { 0.6, { 0.4, 0.1333, 0.066, 0, 0 } } };
+    static const ColourMapEntry wood[2] = { { 0.6, { 0.666, 0.312, 0.2, 0, 0 }, NULL },
+                                            { 0.6, { 0.4, 0.1333, 0.066, 0, 0 }, NULL } };
     static const ColourMapEntry agate[6] = {
-        { 0.0, { 1.0, 1.0, 1.0, 0, 0 } }, { 0.5, { 0.95, 0.75, 0.5, 0, 0 } }, { 0.5, { 0.9, 0.7, 0.5, 0, 0 } },
-        { 0.6, { 0.9, 0.7, 0.4, 0, 0 } }, { 0.6, { 1.0, 0.7, 0.4, 0, 0 } }, { 1.0, { 0.6, 0.3, 0.0, 0, 0 } },
+        { 0.0, { 1.0, 1.0, 1.0, 0, 0 }, NULL }, { 0.5, { 0.95, 0.75, 0.5, 0, 0 }, NULL },
+        { 0.5, { 0.9, 0.7, 0.5, 0, 0 }, NULL }, { 0.6, { 0.9, 0.7, 0.4, 0, 0 }, NULL },
+        { 0.6, { 1.0, 0.7, 0.4, 0, 0 }, NULL }, { 1.0, { 0.6, 0.3, 0.0, 0, 0 }, NULL },
     };
-    static const ColourMapEntry marble[3] = { { 0.0, { 0.9, 0.8, 0.8, 0, 0 } },
-                                              { 0.9, { 0.9, 0.08, 0.08, 0, 0 } },
-                                              { 0.9, { 0.0, 0.0, 0.0, 0, 0 } } };
+    static const ColourMapEntry marble[3] = { { 0.0, { 0.9, 0.8, 0.8, 0, 0 }, NULL },
+                                              { 0.9, { 0.9, 0.08, 0.08, 0, 0 }, NULL },
+                                              { 0.9, { 0.0, 0.0, 0.0, 0, 0 }, NULL } };
+    static const ColourMapEntry mandel[5] = {
+        { 0.001, { 0, 0, 0, 0, 0 }, NULL }, { 0.001, { 0, 1, 1, 0, 0 }, NULL }, { 0.012, { 1, 1, 0, 0, 0 }, NULL },
+        { 0.015, { 1, 0, 1, 0, 0 }, NULL }, { 0.1, { 0, 1, 1, 0, 0 }, NULL },
+    };
+    static const ColourMapEntry radial[4] = { { 0.0, { 0, 1, 1, 0, 0 }, NULL }, { 0.333, { 1, 1, 0, 0, 0 }, NULL },
+                                              { 0.666, { 1, 0, 1, 0, 0 }, NULL }, { 1.0, { 0, 1, 1, 0, 0 }, NULL } };
     switch (kw) {
+    case KW_mandel: set_map(p, pig, mandel, 5); break; /* mandel's alone: not julia's or magnet's */
+    case KW_radial: set_map(p, pig, radial, 4); break;
     case KW_bozo: set_map(p, pig, bozo, 6); break;
     case KW_wood: set_map(p, pig, wood, 2); break;
     case KW_agate: set_map(p, pig, agate, 6); break;
@@ -428,13 +485,12 @@ void gram_warp(Parser *p, Pigment *pig, const Token *at)
     pig->nturbulence++;
 }
 
-/* The colours after checker / hexagon (POV-Ray's Parse_Blend_List): up to
- * `count` colours, or `pigment {}` items, commas optional; the missing ones
- * are POV-Ray's defaults. A pigment item that is itself a pattern is
- * approximated by its representative colour. */
-static void parse_colour_list(Parser *p, Pigment *pig, int count)
+/* The colours after checker, hexagon, brick, square, triangular or cubic
+ * (kw; POV-Ray's Parse_Blend_List): up to `count` colours, or `pigment {}`
+ * items, commas optional; the missing ones are POV-Ray's defaults. */
+static void parse_colour_list(Parser *p, Pigment *pig, int kw, int count)
 {
-    ColourMapEntry e[3];
+    ColourMapEntry e[6];
     int i = 0;
     int pigments = tok_is_kw(tok_peek(p), KW_pigment);
     while (i < count) {
@@ -446,8 +502,7 @@ static void parse_colour_list(Parser *p, Pigment *pig, int count)
             Pigment item = p->scene->default_texture.pigment;
             item.approx = NULL;
             gram_pigment(p, &item);
-            if (item.kind != PIGMENT_SOLID)
-                tok_approximate(p, &at, APPROX_PATTERN, &pig->approx);
+            e[i].pigment = entry_pigment(p, &item, &at, &pig->approx);
             for (const ApproxNote *n = item.approx; n; n = n->next) { /* the item's notes join the list's */
                 ApproxNote *c = tok_scene_alloc(p, sizeof *c);
                 *c = *n;
@@ -459,6 +514,7 @@ static void parse_colour_list(Parser *p, Pigment *pig, int count)
             if (!expr_starts_expression(p, t))
                 break;
             expr_colour(p, &e[i].colour, 1);
+            e[i].pigment = NULL;
         }
         e[i].value = i;
         i++;
@@ -466,7 +522,8 @@ static void parse_colour_list(Parser *p, Pigment *pig, int count)
     }
     for (; i < count; i++) {
         e[i].value = i;
-        e[i].colour = default_list_colours[i];
+        e[i].colour = default_list_colours(kw)[i];
+        e[i].pigment = NULL;
     }
     set_map(p, pig, e, count);
 }
@@ -611,11 +668,12 @@ static void set_representative(Pigment *pig)
 }
 
 static void pigment_items(Parser *p, Pigment *pig, int close);
+static void start_fractal(Parser *p, Pigment *pig, int kw);
+static int own_modifier(Parser *p, Pigment *pig, int kw);
 
 /* pigment_map { [value pigment] ... }: each entry's pigment is read in
- * full, and the map blends the entries' colours. That is POV-Ray's result
- * wherever the entries are plain colours; an entry with a pattern of its
- * own is shown as its representative colour, reported as an approximation. */
+ * full, and the map blends the entries' colours at the point (an entry
+ * seen at the surface's (u, v) by its representative colour, noted). */
 void gram_pigment_map(Parser *p, Pigment *pig, const Token *at)
 {
     tok_begin_block(p, "pigment_map");
@@ -627,19 +685,18 @@ void gram_pigment_map(Parser *p, Pigment *pig, const Token *at)
     }
     TempVec entries;
     tok_tvec_init(&entries, sizeof(ColourMapEntry));
-    int patterned = 0;
     double v;
     while (gram_blend_map_entry(p, "pigment_map", &entries, 1, &v)) {
         Pigment entry = p->scene->default_texture.pigment;
         entry.approx = NULL;
         if (expr_starts_colour(p, tok_peek(p))) {
             expr_colour(p, &entry.colour, 1);
+            entry.kind = PIGMENT_SOLID;
             tok_expect_punct(p, ']', "a pigment_map entry");
         } else {
             pigment_items(p, &entry, ']');
         }
-        if (entry.kind != PIGMENT_SOLID)
-            patterned = 1;
+        const Pigment *own = entry_pigment(p, &entry, at, &pig->approx);
         for (const ApproxNote *n = entry.approx; n; n = n->next) {
             ApproxNote *c = tok_scene_alloc(p, sizeof *c);
             *c = *n;
@@ -649,12 +706,11 @@ void gram_pigment_map(Parser *p, Pigment *pig, const Token *at)
         ColourMapEntry *e = tok_tvec_push(p, &entries);
         e->value = v;
         e->colour = entry.colour;
+        e->pigment = own;
     }
     if (entries.n < 1)
         tok_fail(p, p->tok.pos, "Must have at least one entry in pigment_map.");
     set_map(p, pig, entries.data, entries.n);
-    if (patterned)
-        tok_approximate(p, at, APPROX_PATTERN, &pig->approx);
 }
 
 void gram_pigment(Parser *p, Pigment *pig)
@@ -702,6 +758,168 @@ void gram_start_pattern(Parser *p, Pigment *pig, int kw)
         pig->arms = (short)int_as_povray(expr_float(p)); /* POV-Ray keeps (short)(int)v */
         pig->wave = WAVE_TRIANGLE;
         break;
+    case KW_brick:
+        if (pig->kind != PIGMENT_BRICK) { /* `brick` again keeps its size and mortar */
+            pig->brick_size = v3(8.0, 3.0, 4.5);
+            pig->mortar = gram_single(0.5 - POV_EPSILON * 2.0);
+        }
+        pig->kind = PIGMENT_BRICK;
+        pig->frequency = 0.0;
+        break;
+    case KW_square: case KW_triangular: case KW_cubic:
+        pig->kind = kw == KW_square ? PIGMENT_SQUARE : kw == KW_triangular ? PIGMENT_TRIANGULAR : PIGMENT_CUBIC;
+        pig->frequency = 0.0; /* the value is the tile's index */
+        break;
+    case KW_quilted:
+        pig->kind = PIGMENT_QUILTED;
+        pig->control0 = pig->control1 = 1.0;
+        pig->frequency = 0.0;
+        break;
+    case KW_leopard: pig->kind = PIGMENT_LEOPARD; break;
+    case KW_onion: pig->kind = PIGMENT_ONION; break;
+    case KW_radial: pig->kind = PIGMENT_RADIAL; break;
+    case KW_dents: pig->kind = PIGMENT_DENTS; break;
+    case KW_ripples: pig->kind = PIGMENT_RIPPLES; break;
+    case KW_waves: pig->kind = PIGMENT_WAVES; break;
+    case KW_planar: pig->kind = PIGMENT_PLANAR; break;
+    case KW_spherical: pig->kind = PIGMENT_SPHERICAL; break;
+    case KW_cylindrical: pig->kind = PIGMENT_CYLINDRICAL; break;
+    case KW_boxed: pig->kind = PIGMENT_BOXED; break;
+    case KW_cells: pig->kind = PIGMENT_CELLS; break;
+    case KW_crackle:
+        pig->kind = PIGMENT_CRACKLE;
+        pig->crackle_solid = 0;
+        pig->crackle_form = v3(-1.0, 1.0, 0.0);
+        pig->crackle_metric = 2.0;
+        pig->crackle_offset = 0.0;
+        break;
+    case KW_mandel: case KW_julia: case KW_magnet:
+        start_fractal(p, pig, kw);
+        break;
+    case KW_pigment_pattern: {
+        /* a pigment of its own (POV-Ray's Create_Pigment: black), read in full */
+        Pigment *inner = tok_scene_alloc(p, sizeof *inner);
+        memset(inner, 0, sizeof *inner);
+        inner->kind = PIGMENT_SOLID;
+        inner->frequency = 1.0;
+        transform_identity(&inner->transform);
+        tok_begin_block(p, "pigment_pattern");
+        pigment_items(p, inner, '}');
+        join_notes(p, &pig->approx, inner->approx);
+        pig->inner = inner;
+        pig->kind = PIGMENT_PIGMENT_PATTERN;
+        break;
+    }
+    }
+}
+
+/* mandel ITERATIONS, julia <c>, ITERATIONS, magnet 1|2 mandel ITERATIONS,
+ * magnet 1|2 julia <c>, ITERATIONS (POV-Ray's Parse_Pattern), with the
+ * default exterior (type 1, factor 1) and interior (type 0, factor 1). */
+static void start_fractal(Parser *p, Pigment *pig, int kw)
+{
+    pig->kind = PIGMENT_FRACTAL;
+    pig->exponent = 2;
+    pig->interior_type = 0;
+    pig->exterior_type = 1;
+    pig->interior_factor = pig->exterior_factor = 1.0;
+    int julia = kw == KW_julia, magnet = 0;
+    if (kw == KW_magnet) {
+        Token at = *tok_peek(p);
+        int type = int_as_povray(expr_float(p));
+        Token *which = tok_next(p);
+        if (!tok_is_kw(which, KW_mandel) && !tok_is_kw(which, KW_julia))
+            tok_fail(p, which->pos, "Invalid magnet pattern found. Valid types are 'mandel' and 'julia'.");
+        julia = tok_is_kw(which, KW_julia);
+        if (type != 1 && type != 2)
+            tok_fail(p, at.pos, "Invalid magnet-%s pattern type found. Valid types are 1 and 2.",
+                     julia ? "julia" : "mandel");
+        magnet = type;
+        pig->exponent = 0;
+    }
+    if (julia) {
+        double c[2];
+        gram_uv_vector(p, c);
+        pig->fractal_u = c[0];
+        pig->fractal_v = c[1];
+        expr_comma(p);
+    }
+    pig->iterations = int_as_povray(expr_float(p));
+    if (magnet == 1)
+        pig->fractal = julia ? FRACTAL_MAGNET1J : FRACTAL_MAGNET1M;
+    else if (magnet == 2)
+        pig->fractal = julia ? FRACTAL_MAGNET2J : FRACTAL_MAGNET2M;
+    else
+        pig->fractal = julia ? FRACTAL_JULIA : FRACTAL_MANDEL;
+}
+
+/* The modifiers of one kind of pattern (brick_size, mortar, control0,
+ * control1, metric, form, offset, solid, exponent, interior, exterior),
+ * when pig is of that kind. Returns 1 when `kw` was one, read. */
+static int own_modifier(Parser *p, Pigment *pig, int kw)
+{
+    switch (pig->kind) {
+    case PIGMENT_BRICK:
+        if (kw == KW_brick_size) {
+            pig->brick_size = expr_vector(p);
+            return 1;
+        }
+        if (kw == KW_mortar) {
+            pig->mortar = gram_single(expr_float(p) - POV_EPSILON * 2.0);
+            return 1;
+        }
+        return 0;
+    case PIGMENT_QUILTED:
+        if (kw == KW_control0 || kw == KW_control1) {
+            double v = gram_single(expr_float(p));
+            if (kw == KW_control0)
+                pig->control0 = v;
+            else
+                pig->control1 = v;
+            return 1;
+        }
+        return 0;
+    case PIGMENT_CRACKLE:
+        switch (kw) {
+        case KW_metric: pig->crackle_metric = expr_vector(p).x; return 1; /* a vector of old: x alone counts */
+        case KW_form: pig->crackle_form = expr_vector(p); return 1;
+        case KW_offset: pig->crackle_offset = expr_float(p); return 1;
+        case KW_solid: pig->crackle_solid = 1; return 1;
+        default: return 0;
+        }
+    case PIGMENT_FRACTAL:
+        if (kw == KW_interior || kw == KW_exterior) {
+            Token at = *tok_peek(p);
+            int type = int_as_povray(expr_float(p));
+            int top = kw == KW_interior ? 6 : 8;
+            if (type < 0 || type > top)
+                tok_fail(p, at.pos, "Invalid fractal pattern %s type. Valid types are 0 to %d.",
+                         kw == KW_interior ? "interior" : "exterior", top);
+            expr_comma(p);
+            double factor = expr_float(p);
+            if (kw == KW_interior) {
+                pig->interior_type = type;
+                pig->interior_factor = factor;
+            } else {
+                pig->exterior_type = type;
+                pig->exterior_factor = factor;
+            }
+            return 1;
+        }
+        if (kw == KW_exponent && (pig->fractal == FRACTAL_MANDEL || pig->fractal == FRACTAL_JULIA)) {
+            Token at = *tok_peek(p);
+            int e = int_as_povray(expr_float(p));
+            if (e < 2 || e > 33) {
+                tok_warning(p, at.pos, "Invalid fractal pattern exponent found. Supported exponents are 2 to 33. "
+                                       "Using default exponent 2.");
+                e = 2;
+            }
+            pig->exponent = e;
+            return 1;
+        }
+        return 0;
+    default:
+        return 0;
     }
 }
 
@@ -712,6 +930,8 @@ void gram_start_pattern(Parser *p, Pigment *pig, int kw)
 int gram_pattern_modifier_item(Parser *p, Pigment *pig, const Token *t)
 {
     Token here = *t; /* t may not outlive the next token read */
+    if (here.type == TK_WORD && here.kw >= 0 && own_modifier(p, pig, here.kw))
+        return 1;
     switch (here.type == TK_WORD ? here.kw : -1) {
     /* POV-Ray keeps these in single precision (SNGL): so do the values */
     case KW_frequency: pig->frequency = gram_single(expr_float(p)); return 1;
@@ -755,6 +975,8 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
 {
     int approximated = 0; /* the pattern is not evaluated: colour map at 0.5 */
     int uv_here = 0;      /* this block said uv_mapping: what follows is seen at (u, v, 0) */
+    int mandel_map = 0;   /* the map is mandel's default, given at its keyword */
+    Token average_at;     /* where `average` was, when it was */
     for (;;) {
         Token *t = tok_next(p);
         if (tok_is_punct(t, close))
@@ -791,24 +1013,32 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             expr_colour(p, &ignored, 1);
             continue;
         }
+        if (kw == KW_average) { /* in a pigment: the mean of its pigment_map's pigments */
+            approximated = 0;
+            mandel_map = 0;
+            average_at = at;
+            gram_start_pattern(p, pig, kw);
+            pig->kind = PIGMENT_AVERAGE;
+            continue;
+        }
         switch (gram_pattern_support(kw)) {
         case PAT_EVALUATED:
             approximated = 0;
             gram_start_pattern(p, pig, kw);
-            if (kw == KW_checker || kw == KW_hexagon)
-                parse_colour_list(p, pig, kw == KW_checker ? 2 : 3);
-            if (pig->nmap == 0)
+            if (gram_pattern_list_count(kw))
+                parse_colour_list(p, pig, kw, gram_pattern_list_count(kw));
+            mandel_map = 0;
+            if (pig->nmap == 0) {
                 set_default_map(p, pig, kw);
+                mandel_map = kw == KW_mandel;
+            }
             continue;
         case PAT_APPROXIMATED:
             tok_approximate(p, &at, APPROX_PATTERN, &pig->approx);
             approximated = 1;
             pig->kind = PIGMENT_SOLID;
             pig->nmap = 0;
-            if (kw == KW_brick)
-                parse_colour_list(p, pig, 2); /* brick's colours, then its modifiers */
-            else
-                gram_skip_arguments(p); /* `spiral2 8`, `function { ... }`, ... */
+            gram_skip_arguments(p); /* `function { ... }`, `tiling 3`, ... */
             if (pig->nmap == 0)
                 set_grey_map(p, pig);
             continue;
@@ -828,9 +1058,11 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         case KW_color_map:
         case KW_colour_map:
             gram_colour_map(p, pig);
+            mandel_map = 0;
             continue;
         case KW_pigment_map:
             gram_pigment_map(p, pig, &at);
+            mandel_map = 0;
             continue;
         case KW_texture_map: case KW_material_map:
             tok_fail(p, at.pos, "%s can only be used in a texture, not in a pigment", tok_keyword_name(kw));
@@ -858,6 +1090,12 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             tok_unsupported(p, t);
         tok_fail_expected(p, t, "a colour, a pattern, a transform or '}' in 'pigment'");
     }
+    if (pig->kind == PIGMENT_AVERAGE && pig->nmap == 0)
+        tok_fail(p, average_at.pos, "an average pigment needs a pigment_map");
+    /* POV-Ray picks the default map after the pigment (Post_Pigment), by
+     * the final kind: mandel of exponent 3 or more takes the grey one */
+    if (mandel_map && pig->kind == PIGMENT_FRACTAL && pig->exponent != 2)
+        set_grey_map(p, pig);
     if (pig->kind != PIGMENT_SOLID || approximated)
         set_representative(pig);
     if (approximated) {
@@ -1240,12 +1478,13 @@ void gram_texture_map(Parser *p, SceneTexture *tex, const Token *at)
     set_texture_map(p, tex, entries.data, entries.n, at);
 }
 
-/* checker and hexagon in a texture: up to `count` `texture { }` items,
- * commas optional, the missing ones the default texture (POV-Ray's
- * Parse_Blend_List for textures); entry i has the value i. */
+/* checker, hexagon, brick, square, triangular and cubic in a texture: up
+ * to `count` `texture { }` items, commas optional, the missing ones the
+ * default texture (POV-Ray's Parse_Blend_List for textures); entry i has
+ * the value i. */
 static void parse_texture_list(Parser *p, SceneTexture *tex, int count, const Token *at)
 {
-    TextureMapEntry e[3];
+    TextureMapEntry e[6];
     int i = 0;
     tok_nesting_enter(p, at);
     for (; i < count && tok_is_kw(tok_peek(p), KW_texture); i++) {
@@ -1281,9 +1520,9 @@ static void parse_patterned_texture(Parser *p, SceneTexture *tex, const Token *a
     transform_identity(&pig->transform);
     tex->normal = NULL; /* its entries have the normals */
     gram_start_pattern(p, pig, kw);
-    int listed = kw == KW_checker || kw == KW_hexagon;
+    int listed = gram_pattern_list_count(kw) > 0;
     if (listed)
-        parse_texture_list(p, tex, kw == KW_checker ? 2 : 3, at);
+        parse_texture_list(p, tex, gram_pattern_list_count(kw), at);
     for (;;) {
         Token *t = tok_next(p);
         if (tok_is_punct(t, close))

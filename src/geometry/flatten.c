@@ -113,11 +113,16 @@ typedef struct {
 static RGB rgb_of(const Colour *c) { RGB r = { c->r, c->g, c->b }; return r; }
 
 /* texture_space: the texture's own space to world. */
-/* A pattern that names no noise_generator takes the scene's. */
-static void resolve_noise_generator(Pigment *pig, int scene_generator)
+/* A pattern that names no noise_generator takes the scene's (and keeps it
+ * for the pigments in its map), and ripples and waves the scene's
+ * number_of_waves. */
+static void resolve_pattern_settings(Pigment *pig, const World *w)
 {
     if (pig->noise_generator == 0)
-        pig->noise_generator = scene_generator;
+        pig->noise_generator = w->noise_generator;
+    pig->scene_generator = w->noise_generator;
+    if (pig->nwaves == 0) /* the parser holds it to 1 .. MAX_NUMBER_OF_WAVES */
+        pig->nwaves = w->number_of_waves;
 }
 
 
@@ -172,7 +177,7 @@ static int build_map(Builder *b, const SceneTexture *tex)
         me->value = tex->map[i].value;
         me->map = sub[i];
         me->pattern = e->pigment;
-        resolve_noise_generator(&me->pattern, w->noise_generator);
+        resolve_pattern_settings(&me->pattern, w);
         me->finish = engine_finish(&e->finish);
         me->normal = e->normal && e->normal->kind != NORMAL_NONE ? e->normal : NULL;
     }
@@ -242,7 +247,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->pigment = tex->pigment.colour;
     if (tex->pigment.kind != PIGMENT_SOLID) {
         m->pattern = tex->pigment;
-        resolve_noise_generator(&m->pattern, w->noise_generator);
+        resolve_pattern_settings(&m->pattern, w);
         m->pattern_to_world = tex->pigment.transform;
         if (!tex->pigment.uv_mapping) /* uv space is the surface's own: nothing moves it */
             transform_compose(&m->pattern_to_world, texture_space);
@@ -1788,7 +1793,7 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
         *w->sky = scene->sky;
         for (int i = 0; i < scene->sky.npigments; i++) {
             pigments[i] = scene->sky.pigments[i];
-            resolve_noise_generator(&pigments[i], w->noise_generator);
+            resolve_pattern_settings(&pigments[i], w);
         }
         w->sky->pigments = pigments;
     }

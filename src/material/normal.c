@@ -12,12 +12,11 @@
  * keeps in single precision (bump_size, accuracy, map values) are kept so
  * here too, so that the normals are POV-Ray's to the last bits. */
 #include <math.h>
-#include <pthread.h>
-#include <stdint.h>
 #include <stdlib.h>
 
 #include "noise.h"
 #include "normal.h"
+#include "patterns.h"
 #include "pigment.h"
 #include "transform.h"
 
@@ -28,26 +27,6 @@ static const Vec3 pyramid[4] = {
     { -0.471404521, -0.333333333, -0.816496581 },
     { 0.0, 1.0, 0.0 },
 };
-
-/* The wave sources of POV-Ray's Initialize_Waves: source i is the vector
- * noise at (i, 0, 0), normalised; frequencies come from a linear
- * congruential sequence in 32-bit arithmetic (POV-Ray's int, wrapping).
- * Neither depends on how many there are, so one table of the most a scene
- * may ask for is made, once, on first use (pthread_once), and only read
- * after: any thread may use it at any time. */
-static Vec3 wave_sources[MAX_NUMBER_OF_WAVES];
-static double wave_frequencies[MAX_NUMBER_OF_WAVES];
-static pthread_once_t waves_once = PTHREAD_ONCE_INIT;
-
-static void make_waves(void)
-{
-    int32_t next = -560851967;
-    for (int i = 0; i < MAX_NUMBER_OF_WAVES; i++) {
-        wave_sources[i] = v3_normalize(noise_vector(v3((double)i, 0.0, 0.0)));
-        next = (int32_t)(uint32_t)((int64_t)next * 1812433253LL + 12345LL);
-        wave_frequencies[i] = (double)((int)(next >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
-    }
-}
 
 NormalSetting normal_setting_of(const World *w)
 {
@@ -67,13 +46,6 @@ static double cycloidal(double v)
     return 0.0 - sin((0.0 - (v + floor(0.0 - v))) * 50000.0 / 50000.0 * (2.0 * M_PI));
 }
 
-/* POV-Ray's quilt_cubic. */
-static double quilt_cubic(double t, double p1, double p2)
-{
-    double it = 1.0 - t, itsqrd = it * it, tsqrd = t * t, tcubed = t * tsqrd;
-    return (tcubed + 3.0 * t * itsqrd * p1 + 3.0 * tsqrd * it * p2) * 1.154700538;
-}
-
 /* normal += s * v, as VAddScaledEq. */
 static Vec3 add_scaled(Vec3 normal, double s, Vec3 v)
 {
@@ -85,16 +57,15 @@ static Vec3 add_scaled(Vec3 normal, double s, Vec3 v)
 static Vec3 waves(const NormalSetting *s, const SceneNormal *n, Vec3 p, Vec3 normal, int own_frequencies)
 {
     const double amount = (double)(float)n->amount, freq = n->pattern.frequency, phase = n->pattern.phase;
-    pthread_once(&waves_once, make_waves);
     for (int i = 0; i < s->nwaves; i++) {
-        Vec3 d = v3_sub(p, wave_sources[i]);
+        Vec3 d = v3_sub(p, wave_source(i));
         double length = v3_length(d);
         if (length == 0.0)
             length = 1.0;
         double scalar;
         if (own_frequencies) {
-            double index = length * freq * wave_frequencies[i] + phase;
-            scalar = cycloidal(index) * amount / wave_frequencies[i];
+            double index = length * freq * wave_frequency(i) + phase;
+            scalar = cycloidal(index) * amount / wave_frequency(i);
         } else {
             double index = length * freq + phase;
             scalar = cycloidal(index) * amount;
@@ -119,9 +90,9 @@ static Vec3 wrinkles(const SceneNormal *n, Vec3 p, Vec3 normal)
 
 static Vec3 quilted(const SceneNormal *n, Vec3 p, Vec3 normal)
 {
-    Vec3 v = v3(p.x - floor(p.x) - 0.5, p.y - floor(p.y) - 0.5, p.z - floor(p.z) - 0.5);
+    Vec3 v = v3(p.x - pattern_floor(p.x) - 0.5, p.y - pattern_floor(p.y) - 0.5, p.z - pattern_floor(p.z) - 0.5);
     double t = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-    t = quilt_cubic(t, n->control0, n->control1);
+    t = quilt_cubic(t, n->pattern.control0, n->pattern.control1);
     v = v3(v.x * t, v.y * t, v.z * t);
     return add_scaled(normal, n->amount, v);
 }
@@ -264,7 +235,7 @@ static Vec3 normal_map(const NormalSetting *s, const SceneNormal *n, const Trans
                        Vec3 p, Vec3 uv, Vec3 normal)
 {
     Vec3 tp = warp_point(n, trp, p);
-    double value = pattern_value_warped(&n->pattern, tp, s->noise_generator);
+    double value = pattern_value_warped(&n->pattern, tp, s->noise_generator, s->nwaves);
     int prev, cur;
     search_map(&n->map[0].value, sizeof n->map[0], n->nmap, value, &prev, &cur);
     normal = warp_normal(n, trn, normal);
@@ -347,7 +318,7 @@ static Vec3 perturb(const NormalSetting *s, const SceneNormal *n, const Transfor
         const double delta = (double)(float)n->accuracy;
         for (int i = 0; i < 4; i++) {
             Vec3 q = v3_madd(tp, pyramid[i], delta);
-            double v = slope_map(n, pattern_value_warped(&n->pattern, q, s->noise_generator));
+            double v = slope_map(n, pattern_value_warped(&n->pattern, q, s->noise_generator, s->nwaves));
             normal = add_scaled(normal, v * amount, pyramid[i]);
         }
     }

@@ -1,7 +1,9 @@
 /* Pigment patterns, written from POV-Ray 3.7's definitions (checker_pattern,
  * hexagon_pattern, gradient_pattern, the noise patterns, spiral1/2_pattern,
- * Warp_EPoint's turbulence, Evaluate_TPat's frequency/phase/wave,
- * Search_Blend_Map, the uv coordinates of UVCoord, image_map's lookup and
+ * Warp_EPoint's turbulence, Evaluate_TPat's dispatch to every pattern
+ * (the others' values are patterns.h's) and its frequency/phase/wave,
+ * Search_Blend_Map with pigment_map's and average's pigments
+ * (Compute_Pigment), the uv coordinates of UVCoord, image_map's lookup and
  * interpolation, the textures of a texture_map as ComputeOneTextureColour
  * picks and weighs them): the same small offsets
  * and the same order of operations, so that pattern borders fall where
@@ -14,14 +16,8 @@
 #include "intersect.h"
 #include "noise.h"
 #include "normal.h"
+#include "patterns.h"
 
-
-/* POV-Ray's FLOOR macro: floor() written so that -0 and exact negative
- * integers land as POV-Ray's do. */
-static double pov_floor(double x)
-{
-    return x >= 0.0 ? floor(x) : (0.0 - floor(0.0 - x) - 1.0);
-}
 
 static double checker_value(Vec3 p)
 {
@@ -44,7 +40,7 @@ static double hexagon_value(Vec3 p)
     zs -= floor(zs / 6.0) * 6.0;
     /* Far from the origin (|x| beyond ~1e15) the reduction above leaves
      * [0, 6); POV-Ray's switch then matches no block and answers 0. */
-    int xm = int_as_povray(pov_floor(xs)) % 6, zm = int_as_povray(pov_floor(zs)) % 6;
+    int xm = int_as_povray(pattern_floor(xs)) % 6, zm = int_as_povray(pattern_floor(zs)) % 6;
     if (xm < 0 || zm < 0)
         return 0.0;
     static const int straight_05[6] = { 0, 1, 1, 2, 2, 0 }; /* columns 0 and 5 by zm */
@@ -218,7 +214,7 @@ static double wave(const Pigment *pig, double v)
 
 double pattern_value(const Pigment *pig, Vec3 p)
 {
-    return pattern_value_warped(pig, warp_point(pig, p), NOISE_RANGE_CORRECTED);
+    return pattern_value_warped(pig, warp_point(pig, p), NOISE_RANGE_CORRECTED, DEFAULT_NUMBER_OF_WAVES);
 }
 
 Vec3 pattern_warp(const Pigment *pig, Vec3 p)
@@ -226,9 +222,95 @@ Vec3 pattern_warp(const Pigment *pig, Vec3 p)
     return warp_point(pig, p);
 }
 
-double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator)
+static Colour image_map_at(const Pigment *pig, Vec3 p);
+
+/* POV-Ray's Colour::greyscale, in its single-precision colour. */
+static double colour_grey(Colour c)
+{
+    return (double)(float)(0.297 * (double)(float)c.r + 0.589 * (double)(float)c.g + 0.114 * (double)(float)c.b);
+}
+
+static Colour pigment_colour(const Pigment *pig, Vec3 p, int generator, int nwaves);
+
+/* A map's colour at `value` (Search_Blend_Map): the entries around it
+ * blended linearly, as colour_map_at does; an entry with a pigment of its
+ * own gives that pigment's colour at the pattern's warped point
+ * (Compute_Pigment's pigment_map). */
+static Colour blend_map_at(const Pigment *pig, double value, Vec3 warped, int generator, int nwaves)
+{
+    const ColourMapEntry *map = pig->map;
+    const int n = pig->nmap;
+    int cur = 0, prev;
+    if (value >= map[n - 1].value) {
+        cur = n - 1;
+    } else {
+        while (value > map[cur].value)
+            cur++;
+    }
+    prev = cur == 0 || value == map[cur].value || value >= map[n - 1].value ? cur : cur - 1;
+    Colour c = map[cur].pigment ? pigment_colour(map[cur].pigment, warped, generator, nwaves) : map[cur].colour;
+    if (prev == cur)
+        return c;
+    Colour t = map[prev].pigment ? pigment_colour(map[prev].pigment, warped, generator, nwaves) : map[prev].colour;
+    double f = (value - map[prev].value) / (map[cur].value - map[prev].value);
+    Colour r = {
+        t.r + f * (c.r - t.r), t.g + f * (c.g - t.g), t.b + f * (c.b - t.b),
+        t.filter + f * (c.filter - t.filter), t.transmit + f * (c.transmit - t.transmit),
+    };
+    return r;
+}
+
+/* average: the entries' colours at the warped point weighed by their
+ * values, summed and divided in single precision as Do_Average_Pigments
+ * does in POV-Ray's float colours. */
+static Colour average_colour(const Pigment *pig, Vec3 warped, int generator, int nwaves)
+{
+    float sum[5] = { 0, 0, 0, 0, 0 }, total = 0.0f;
+    for (int i = 0; i < pig->nmap; i++) {
+        const ColourMapEntry *e = &pig->map[i];
+        Colour c = e->pigment ? pigment_colour(e->pigment, warped, generator, nwaves) : e->colour;
+        const float w = (float)e->value;
+        sum[0] += (float)c.r * w;
+        sum[1] += (float)c.g * w;
+        sum[2] += (float)c.b * w;
+        sum[3] += (float)c.filter * w;
+        sum[4] += (float)c.transmit * w;
+        total += w;
+    }
+    Colour r = { sum[0] / total, sum[1] / total, sum[2] / total, sum[3] / total, sum[4] / total };
+    return r;
+}
+
+/* The colour of a pigment at point p of the space it is written in (its
+ * own transforms and warps from there, as Compute_Pigment takes it), with
+ * the noise generator and wave sources of its scene where it names none. */
+static Colour pigment_colour(const Pigment *pig, Vec3 p, int generator, int nwaves)
+{
+    Vec3 q = inverse_transform_point(&pig->transform, p);
+    switch (pig->kind) {
+    case PIGMENT_SOLID: return pig->colour;
+    case PIGMENT_IMAGE_MAP: return image_map_at(pig, q);
+    default: break;
+    }
+    Vec3 warped = warp_point(pig, q);
+    if (pig->kind == PIGMENT_AVERAGE)
+        return average_colour(pig, warped, generator, nwaves);
+    double v = pattern_value_warped(pig, warped, generator, nwaves);
+    if (!pig->map_pigments)
+        return colour_map_at(pig->map, pig->nmap, v);
+    return blend_map_at(pig, v, warped, generator, nwaves);
+}
+
+/* pigment_pattern: the grey of another pigment's colour at the point. */
+static double pigment_pattern_value(const Pigment *inner, Vec3 p, int generator, int nwaves)
+{
+    return inner ? colour_grey(pigment_colour(inner, p, generator, nwaves)) : 0.0;
+}
+
+double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator, int default_waves)
 {
     int generator = pig->noise_generator ? pig->noise_generator : default_generator;
+    int nwaves = pig->nwaves ? pig->nwaves : default_waves;
     double v;
     switch (pig->kind) {
     case PIGMENT_CHECKER: v = checker_value(p); break;
@@ -241,6 +323,28 @@ double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator)
     case PIGMENT_MARBLE: v = marble_value(pig, p, generator); break;
     case PIGMENT_WOOD: v = wood_value(pig, p); break;
     case PIGMENT_SPIRAL1: case PIGMENT_SPIRAL2: v = spiral_value(pig, p, generator); break;
+    case PIGMENT_DENTS: v = noise_value(p, generator); v = v * v * v; break;
+    case PIGMENT_BRICK: v = brick_value(pig, p); break;
+    case PIGMENT_LEOPARD: v = leopard_value(p); break;
+    case PIGMENT_ONION: v = onion_value(p); break;
+    case PIGMENT_RADIAL: v = radial_value(p); break;
+    case PIGMENT_QUILTED: v = quilted_value(pig, p); break;
+    case PIGMENT_RIPPLES: v = ripples_value(pig, p, nwaves); break;
+    case PIGMENT_WAVES: v = waves_value(pig, p, nwaves); break;
+    case PIGMENT_PLANAR: v = planar_value(p); break;
+    case PIGMENT_SPHERICAL: v = spherical_value(p); break;
+    case PIGMENT_CYLINDRICAL: v = cylindrical_value(p); break;
+    case PIGMENT_BOXED: v = boxed_value(p); break;
+    case PIGMENT_SQUARE: v = square_value(p); break;
+    case PIGMENT_TRIANGULAR: v = triangular_value(p); break;
+    case PIGMENT_CUBIC: v = cubic_value(p); break;
+    case PIGMENT_CELLS: v = cells_value(p); break;
+    case PIGMENT_CRACKLE: v = crackle_value(pig, p, generator); break;
+    case PIGMENT_FRACTAL: v = fractal_value(pig, p); break;
+    case PIGMENT_PIGMENT_PATTERN:
+        v = pigment_pattern_value(pig->inner, p, pig->scene_generator ? pig->scene_generator : default_generator,
+                                  nwaves);
+        break;
     default: return 0.0;
     }
     if (pig->frequency != 0.0)
@@ -475,7 +579,15 @@ Colour pigment_at(const Pigment *pig, Vec3 p)
         return image_map_at(pig, p);
     if (pig->kind == PIGMENT_SOLID)
         return pig->colour;
-    return colour_map_at(pig->map, pig->nmap, pattern_value(pig, p));
+    if (!pig->map_pigments && pig->kind != PIGMENT_AVERAGE)
+        return colour_map_at(pig->map, pig->nmap, pattern_value(pig, p));
+    Vec3 warped = warp_point(pig, p);
+    const int generator = pig->scene_generator ? pig->scene_generator : NOISE_RANGE_CORRECTED;
+    const int nwaves = pig->nwaves ? pig->nwaves : DEFAULT_NUMBER_OF_WAVES;
+    if (pig->kind == PIGMENT_AVERAGE)
+        return average_colour(pig, warped, generator, nwaves);
+    double v = pattern_value_warped(pig, warped, generator, nwaves);
+    return blend_map_at(pig, v, warped, generator, nwaves);
 }
 
 /* Barycentric weights of q (in the polygon's plane) with respect to the
@@ -584,7 +696,7 @@ static int map_textures(const World *w, int map, const Pigment *pattern, Vec3 p,
     if (tm->material_map) /* one entry, by the picture there (ComputeOneTextureColour's BITMAP_PATTERN) */
         return entry_textures(w, &e[material_map_number(pattern, tp, tm->count)], tp, polygon, world_point, weight,
                               chain, ask, out, n);
-    double v = pattern_value_warped(pattern, tp, NOISE_RANGE_CORRECTED);
+    double v = pattern_value_warped(pattern, tp, NOISE_RANGE_CORRECTED, DEFAULT_NUMBER_OF_WAVES);
     int last = tm->count - 1, cur = 0, prev = 0;
     if (v >= e[last].value) {
         cur = prev = last;

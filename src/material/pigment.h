@@ -1,8 +1,8 @@
-/* Pigments: POV-Ray 3.7's checker, hexagon, gradient, noise (bozo, granite,
- * wrinkles, agate, marble, wood) and spiral patterns with turbulence and
- * colour maps, evaluated at a point (pattern.cpp, warps.cpp and pigment.cpp
- * there); and the textures a texture_map shows at a point (trace.cpp's
- * ComputeOneTextureColour). */
+/* Pigments: POV-Ray 3.7's patterns (checker, hexagon, gradient, noise,
+ * spirals here; the others in patterns.h) with turbulence, colour maps,
+ * pigment maps and average, evaluated at a point (pattern.cpp, warps.cpp
+ * and pigment.cpp there); and the textures a texture_map shows at a point
+ * (trace.cpp's ComputeOneTextureColour). */
 #ifndef HST_PIGMENT_H
 #define HST_PIGMENT_H
 
@@ -18,9 +18,10 @@ double pattern_value(const Pigment *pig, Vec3 p);
 /* pattern_value in two steps, as POV-Ray's normals take it: the point
  * displaced by the pattern's turbulence (Warp_EPoint after the transform),
  * then the value at a point so displaced (Evaluate_TPat), with the noise
- * generator `default_generator` where the pattern names none. */
+ * generator `default_generator` and `default_waves` wave sources (ripples,
+ * waves) where the pattern has none of its own. */
 Vec3 pattern_warp(const Pigment *pig, Vec3 p);
-double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator);
+double pattern_value_warped(const Pigment *pig, Vec3 p, int default_generator, int default_waves);
 
 /* An image_map's or bump_map's picture (map_type 0): where point p of
  * pattern space falls on it, in pixels from its top left (POV-Ray's
