@@ -319,6 +319,10 @@ typedef enum {
     OBJ_DISC,
     OBJ_CONE,            /* also cylinder (equal radii) */
     OBJ_TORUS,
+    /* POV-Ray's algebraic surfaces: quadric, and poly (also cubic and
+     * quartic), solids whose polynomial is negative inside */
+    OBJ_QUADRIC,
+    OBJ_POLY,
     /* CSG over solids (the analytic shapes and other CSG): children in
      * u.csg as a union's; a difference's children after the first are
      * taken away from it (POV-Ray: inverted, then intersected). */
@@ -433,6 +437,21 @@ struct SceneObject {
         struct {
             double major, minor;
         } torus;
+        struct {
+            /* quadric { <A,E,H>, <B,C,F>, <D,G,I>, J }: A x^2 + E y^2 +
+             * H z^2 + B xy + C xz + F yz + D x + G y + I z + J, the
+             * vectors as POV-Ray names them (Square_Terms, Mixed_Terms,
+             * Terms, Constant) */
+            Vec3 square, mixed, terms;
+            double constant;
+        } quadric;
+        struct {
+            /* poly { order, <coefficients> }: (order+1)(order+2)(order+3)/6
+             * of them, in POV-Ray's order of the terms (x^order first,
+             * the constant last) */
+            int order;
+            const double *coeffs;
+        } poly;
         struct {
             Vec3 normal; /* as written (not normalised) */
             double distance;

@@ -125,6 +125,9 @@ void gram_object_mods(Parser *p, SceneObject *o, const char *what);
 SceneObject *gram_height_field(Parser *p, const Token *kw);
 SceneObject *gram_bicubic_patch(Parser *p, const Token *kw);
 SceneObject *gram_prism(Parser *p, const Token *kw);
+SceneObject *gram_quadric(Parser *p, const Token *kw);
+/* poly (order 0: read from the file), cubic (3), quartic (4) */
+SceneObject *gram_poly(Parser *p, const Token *kw, int order);
 /* A 2-D vector (POV-Ray's Parse_UV_Vect: a float f stands for <f, f>). */
 void gram_uv_vector(Parser *p, double out[2]);
 

@@ -1,5 +1,5 @@
 /* Objects: polygon, triangle, smooth_triangle, mesh, mesh2, box, plane,
- * sphere, disc, cylinder, cone, torus, union, intersection, difference, merge and object{}, with their modifiers. Every object keeps its own
+ * sphere, disc, cylinder, cone, torus, quadric, poly, cubic, quartic, union, intersection, difference, merge and object{}, with their modifiers. Every object keeps its own
  * transform, composed from the transforms written on it in order; a union's
  * children keep theirs (the engine applies child, then parent). */
 #include <math.h>
@@ -20,13 +20,13 @@ int gram_is_object_keyword(int kw)
     case KW_box: case KW_plane: case KW_union: case KW_object:
     case KW_height_field: case KW_bicubic_patch: case KW_prism:
     case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus:
-    case KW_intersection: case KW_difference: case KW_merge:
+    case KW_intersection: case KW_difference: case KW_merge: case KW_quadric: case KW_poly: case KW_cubic:
+    case KW_quartic:
     /* POV-Ray objects hstrace cannot render */
     case KW_blob:
     case KW_lathe: case KW_sor: case KW_superellipsoid: case KW_sphere_sweep:
     case KW_text: case KW_julia_fractal:
-    case KW_isosurface: case KW_parametric: case KW_poly: case KW_polynomial: case KW_cubic:
-    case KW_quartic: case KW_quadric: case KW_ovus: case KW_light_group:
+    case KW_isosurface: case KW_parametric: case KW_polynomial: case KW_ovus: case KW_light_group:
         return 1;
     default:
         return 0;
@@ -50,7 +50,9 @@ static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
 static const SceneObject *first_non_solid(const SceneObject *o)
 {
     switch (o->kind) {
-    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: return NULL;
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: case OBJ_QUADRIC:
+    case OBJ_POLY:
+        return NULL;
     case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
         /* the parser bounds the depth (SceneObject.depth) */
         for (int i = 0; i < o->u.csg.nchildren; i++) {
@@ -76,6 +78,8 @@ static const char *object_kind_name(ObjectKind k)
     case OBJ_DISC: return "disc";
     case OBJ_CONE: return "cone";
     case OBJ_TORUS: return "torus";
+    case OBJ_QUADRIC: return "quadric";
+    case OBJ_POLY: return "poly";
     case OBJ_INTERSECTION: return "intersection";
     case OBJ_DIFFERENCE: return "difference";
     case OBJ_MERGE: return "merge";
@@ -254,7 +258,8 @@ static int bound_readable(Parser *p, const Token *t)
         return 0;
     switch (t->kw) {
     case KW_box: case KW_plane: case KW_union: case KW_object: case KW_sphere: case KW_disc: case KW_cylinder:
-    case KW_cone: case KW_torus: case KW_intersection: case KW_difference: case KW_merge:
+    case KW_cone: case KW_torus: case KW_intersection: case KW_difference: case KW_merge: case KW_quadric:
+    case KW_poly: case KW_cubic: case KW_quartic:
         return 1;
     default:
         break;
@@ -1199,6 +1204,10 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_cylinder: *obj = parse_cone(p, &kw, 1); break;
     case KW_cone: *obj = parse_cone(p, &kw, 0); break;
     case KW_torus: *obj = parse_torus(p, &kw); break;
+    case KW_quadric: *obj = gram_quadric(p, &kw); break;
+    case KW_poly: *obj = gram_poly(p, &kw, 0); break;
+    case KW_cubic: *obj = gram_poly(p, &kw, 3); break;
+    case KW_quartic: *obj = gram_poly(p, &kw, 4); break;
     case KW_union: *obj = parse_children(p, &kw, OBJ_UNION, "union"); break;
     case KW_intersection: *obj = parse_children(p, &kw, OBJ_INTERSECTION, "intersection"); break;
     case KW_difference: *obj = parse_children(p, &kw, OBJ_DIFFERENCE, "difference"); break;

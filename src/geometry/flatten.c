@@ -18,6 +18,7 @@
 #include "parallel.h"
 #include "planar_shapes.h"
 #include "ptr_map.h"
+#include "quadric.h"
 #include "world_estimate.h"
 
 /* add_material's memo: 2^6 materials made lately, by a hash of what made
@@ -1007,6 +1008,39 @@ static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+/* A quadric: its coefficients carried to world space by every transform
+ * (quadric.h). */
+static int flatten_quadric(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Shape *s = new_shape(b, SHAPE_QUADRIC);
+    if (!s)
+        return -1;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->max_hits = 2;
+    quadric_place(s, o->u.quadric.square, o->u.quadric.mixed, o->u.quadric.terms, o->u.quadric.constant,
+                  &in->transform, in->inverse);
+    shape_placed(b, s);
+    return 0;
+}
+
+/* A poly, cubic or quartic in its own space, reached through every
+ * transform (Poly keeps a Trans). */
+static int flatten_poly(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_POLY, in, &frame, material);
+    if (!s)
+        return -1;
+    s->max_hits = o->u.poly.order;
+    s->u.poly.order = o->u.poly.order;
+    s->u.poly.coeffs = o->u.poly.coeffs;
+    s->u.poly.sturm = o->sturm;
+    shape_placed(b, s);
+    return 0;
+}
+
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
 /* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
@@ -1101,7 +1135,7 @@ static int finish_csg(Builder *b, int top, int index, int first)
     int max_hits = 0;
     const Shape *c = s->u.csg.parts;
     /* a clipped object's crossings are its first part's alone */
-    const int crossed = s->u.csg.op == CSG_CLIP ? 1 : s->u.csg.nparts;
+    const int crossed = s->u.csg.op == CSG_CLIP || s->u.csg.op == CSG_BOUND ? 1 : s->u.csg.nparts;
     for (int k = 0; k < crossed; k++, c += c->subtree)
         max_hits += c->max_hits;
     if (max_hits > SHAPE_MAX_HITS) {
@@ -1168,6 +1202,47 @@ static int flatten_clipped(Builder *b, const SceneObject *o, const Inherited *in
         Inherited clip = *in;
         clip.inverse = 0;
         failed = flatten_object(b, o->clips[i], &clip, scene, depth + 1);
+    }
+    b->csg_depth--;
+    return failed ? -1 : finish_csg(b, top, index, first);
+}
+
+/* Does POV-Ray keep o's bounded_by for its tests? It removes the bound of
+ * an object cheap to intersect (Post_Process); of the objects hstrace
+ * reads it keeps a poly's, and a quadric's where Compute_BBox found no
+ * bounds of its own (quadric.h). */
+static int bound_kept(const SceneObject *o)
+{
+    if (o->nbounds == 0)
+        return 0;
+    if (o->kind == OBJ_POLY)
+        return 1;
+    if (o->kind == OBJ_QUADRIC)
+        return !quadric_automatic_bounds(o->u.quadric.square, o->u.quadric.mixed, o->u.quadric.terms,
+                                         o->u.quadric.constant);
+    return 0;
+}
+
+/* An object bounded_by solids POV-Ray keeps (csg.h's CSG_BOUND): the
+ * object, clipped if it is, as the first part, its bounding solids
+ * (placed as clips are, never inverted with it) after. */
+static int flatten_bounded(Builder *b, const SceneObject *o, const Inherited *in, const Scene *scene, int depth)
+{
+    const SceneTexture *tex = in->texture ? in->texture : &scene->default_texture;
+    int material = add_material(b, in, tex, &in->texture_space, o->pos);
+    if (material < 0)
+        return -1;
+    const int top = b->csg_depth == 0;
+    int index;
+    if (!begin_csg(b, CSG_BOUND, in, material, 1 + o->nbounds, &index))
+        return -1;
+    const int first = b->nparts;
+    b->csg_depth++;
+    int failed = o->nclips > 0 ? flatten_clipped(b, o, in, scene, depth) : flatten_kind(b, o, in, scene, depth);
+    for (int i = 0; !failed && i < o->nbounds; i++) {
+        Inherited bound = *in;
+        bound.inverse = 0;
+        failed = flatten_object(b, o->bounds[i], &bound, scene, depth + 1);
     }
     b->csg_depth--;
     return failed ? -1 : finish_csg(b, top, index, first);
@@ -1444,6 +1519,8 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
         b->timed_out = 1;
         return -1;
     }
+    if (bound_kept(o))
+        return flatten_bounded(b, o, &in, scene, depth);
     if (o->nclips > 0)
         return flatten_clipped(b, o, &in, scene, depth);
     return flatten_kind(b, o, &in, scene, depth);
@@ -1475,6 +1552,8 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_DISC: return flatten_disc(b, o, &in, material);
     case OBJ_CONE: return flatten_cone(b, o, &in, material);
     case OBJ_TORUS: return flatten_torus(b, o, &in, material);
+    case OBJ_QUADRIC: return flatten_quadric(b, o, &in, material);
+    case OBJ_POLY: return flatten_poly(b, o, &in, material);
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
         return flatten_planar_shape(b, o, &in, material);
     case OBJ_UNION:

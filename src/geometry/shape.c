@@ -9,6 +9,8 @@
 
 #include "csg.h"
 #include "polynomial.h"
+#include "poly.h"
+#include "quadric.h"
 
 #define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
 #define POV_MAX_DISTANCE 1.0e7   /* POV-Ray's MAX_DISTANCE: farther crossings are not reported */
@@ -617,6 +619,12 @@ void shape_compute_bounds(Shape *s)
     case SHAPE_CSG:
         csg_compute_bounds(s);
         return;
+    case SHAPE_QUADRIC: /* its bounds are set with its coefficients (quadric_place) */
+        return;
+    case SHAPE_POLY: /* unbounded, as Poly::Compute_BBox makes it */
+        s->bbox_min = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+        s->bbox_max = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
+        return;
     case SHAPE_BOX:
         lo = s->u.box.lo;
         hi = s->u.box.hi;
@@ -681,6 +689,8 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     case SHAPE_CSG: n = csg_intersect_all(s, org, u, ulimit, hits); break;
     case SHAPE_BOX: n = box_all(s, org, u, ulimit, hits); break;
     case SHAPE_PLANE: n = plane_all(s, org, u, ulimit, hits); break;
+    case SHAPE_QUADRIC: n = quadric_all(s, org, u, ulimit, hits); break;
+    case SHAPE_POLY: n = poly_all(s, org, u, ulimit, hits); break;
     }
     if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
         for (int k = 0; k < n; k++)
@@ -710,6 +720,8 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_CSG: return csg_inside(s, p);
     case SHAPE_BOX: return box_inside(s, p);
     case SHAPE_PLANE: return plane_inside(s, p);
+    case SHAPE_QUADRIC: return quadric_inside(s, p);
+    case SHAPE_POLY: return poly_inside(s, p);
     }
     return 0;
 }
@@ -724,6 +736,8 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_CSG: break; /* its crossings are on its primitives (ShapeHit.leaf) */
     case SHAPE_BOX: return box_normal(s, part);
     case SHAPE_PLANE: return plane_normal(s);
+    case SHAPE_QUADRIC: return quadric_normal(s, p);
+    case SHAPE_POLY: return poly_normal(s, p);
     }
     return v3(0.0, 1.0, 0.0);
 }
@@ -738,6 +752,8 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_CSG: break;  /* its crossings are on its primitives */
     case SHAPE_BOX:         /* hstrace keeps no uv of a box that is a CSG part (man page) */
     case SHAPE_PLANE: break;
+    case SHAPE_QUADRIC: /* no mapping of their own in POV-Ray 3.7 */
+    case SHAPE_POLY: break;
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }

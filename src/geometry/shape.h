@@ -16,15 +16,21 @@
 /* SHAPE_BOX and SHAPE_PLANE are POV-Ray's box and plane as parts of CSG
  * objects (csg.h), where their inside matters; elsewhere a box is six
  * polygons and a plane an InfinitePlane (world.h). */
-typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE } ShapeKind;
+typedef enum {
+    SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE,
+    SHAPE_QUADRIC, /* quadric.h */
+    SHAPE_POLY,    /* poly.h: poly, cubic, quartic */
+} ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
  * difference is an intersection whose later parts are inverted, and an
  * inverted CSG object the other operation over inverted parts. UNION is
  * a union inside a CSG object or clipped (a top-level union is
  * flattened); CLIP an object clipped_by others: its first part, the
- * others its clipping solids. */
-typedef enum { CSG_UNION, CSG_INTERSECTION, CSG_MERGE, CSG_CLIP } CsgOp;
+ * others its clipping solids; BOUND an object bounded_by others where
+ * POV-Ray keeps the bound (a poly, a quadric without bounds of its own):
+ * its first part, the others its bounding solids (csg.h). */
+typedef enum { CSG_UNION, CSG_INTERSECTION, CSG_MERGE, CSG_CLIP, CSG_BOUND } CsgOp;
 
 /* Which part of a shape a crossing is on, where the normal depends on it:
  * a cone's or cylinder's side, its cap (the wide end, +z in its own space)
@@ -117,6 +123,19 @@ struct Shape {
             Vec3 normal;
             double distance;
         } plane;
+        /* A quadric's coefficients in world space, inverse applied, and
+         * its bounds (quadric.h) */
+        struct {
+            Vec3 square, mixed, terms;
+            double constant;
+        } quadric;
+        /* A poly's coefficients in POV-Ray's order of terms (poly.h), in
+         * its own space; sturm: POV-Ray's Sturm solver asked for */
+        struct {
+            int order;
+            const double *coeffs;
+            int sturm;
+        } poly;
         /* A CSG object: nparts parts, the first at `parts` (the next at
          * parts + parts->subtree ...), set once World.shapes is final. */
         struct {

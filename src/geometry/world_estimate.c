@@ -87,6 +87,8 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
     case OBJ_DISC:
     case OBJ_CONE:
     case OBJ_TORUS:
+    case OBJ_QUADRIC:
+    case OBJ_POLY:
         b += sizeof(Shape) + HIERARCHY_BYTES_PER_POLYGON; /* an item of the shapes' own hierarchy */
         break;
     case OBJ_UNION:
