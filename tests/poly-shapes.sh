@@ -1,8 +1,9 @@
 #!/bin/sh
-# POV-Ray's algebraic shapes, in TAP: quadric, and poly, cubic and quartic
+# POV-Ray's algebraic shapes, in TAP: quadric, poly, cubic and quartic
 # with POV-Ray 3.7's own polynomial solver (its closed-form quartic, and
 # its Sturm sequences for sturm, degrees above 4 and difficult quartics),
-# in the scenes of tests/poly-shapes/:
+# and superellipsoid with its own root finder, in the scenes of
+# tests/poly-shapes/:
 #   - hstrace's image and shadow mask against POV-Ray's renders (+Q9, and
 #     +Q3/+Q4 for the mask), within the limits measured below, no interior
 #     mask disagreement (skipped without POV-Ray): transformed, unevenly
@@ -28,7 +29,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="quadric poly poly-eye-inside poly-graze"
+scenes="quadric poly poly-eye-inside poly-graze superellipsoid superellipsoid-eye-inside"
 for s in $scenes; do
     cp "$srcdir/tests/poly-shapes/$s.pov" "$work/$s.pov" || bail "cannot copy tests/poly-shapes/$s.pov"
 done
@@ -39,6 +40,12 @@ quadric              1e-5   (3.6e-6)     1 (0)     1 (0)
 poly                 1e-5   (2.6e-6)     1 (0)     1 (0)
 poly-eye-inside      1e-5   (1.7e-6)     1 (0)     1 (0)
 poly-graze           1e-5   (6.1e-7)     1 (0)     1 (0)
+superellipsoid       1e-5   (3.6e-6)     1 (0)     1 (0)
+# superellipsoid-eye-inside: 20 pixels along two curves differ by up to
+# 0.036 where rays that left the enclosing see-through superellipsoid go
+# on (at +Q3 and +Q4, before transmitted rays, the images agree to 3.6e-6
+# and 1.8e-6); not yet understood, measured here so that it cannot grow
+superellipsoid-eye-inside 8e-4 (6.25e-4)  25 (20)   1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/poly-shapes.sh $scenes
@@ -58,6 +65,8 @@ poly { 36, <1> }|Order of poly is out of range
 cubic { <1, 2, 3> }|expected a numeric expression, found '>'
 quartic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0> }|after the 35 coefficients of a quartic of order 4
 quartic { 1 }|'<' before the 35 coefficients of 'quartic'
+superellipsoid { <0, 1> }|both must be positive
+superellipsoid { <1, 2, 3> }|UV vector expected
 BAD
 
 # Extreme coefficients render (status 0) with no NaN or infinite pixel.

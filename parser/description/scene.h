@@ -323,6 +323,7 @@ typedef enum {
      * quartic), solids whose polynomial is negative inside */
     OBJ_QUADRIC,
     OBJ_POLY,
+    OBJ_SUPERELLIPSOID,  /* superellipsoid { <e, n> } */
     /* CSG over solids (the analytic shapes and other CSG): children in
      * u.csg as a union's; a difference's children after the first are
      * taken away from it (POV-Ray: inverted, then intersected). */
@@ -452,6 +453,9 @@ struct SceneObject {
             int order;
             const double *coeffs;
         } poly;
+        struct {
+            double e, n; /* superellipsoid { <e, n> }: both positive */
+        } superellipsoid;
         struct {
             Vec3 normal; /* as written (not normalised) */
             double distance;

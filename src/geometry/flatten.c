@@ -1041,6 +1041,21 @@ static int flatten_poly(Builder *b, const SceneObject *o, const Inherited *in, i
     return 0;
 }
 
+/* A superellipsoid in its own space, reached through every transform. */
+static int flatten_superellipsoid(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_SUPERELLIPSOID, in, &frame, material);
+    if (!s)
+        return -1;
+    s->max_hits = 2 + 9; /* a crossing per piece of the ray at most (its box's two ends, nine planes) */
+    s->u.superellipsoid.ex = 2.0 / o->u.superellipsoid.e;
+    s->u.superellipsoid.ez = 2.0 / o->u.superellipsoid.n;
+    shape_placed(b, s);
+    return 0;
+}
+
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
 /* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
@@ -1554,6 +1569,7 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_TORUS: return flatten_torus(b, o, &in, material);
     case OBJ_QUADRIC: return flatten_quadric(b, o, &in, material);
     case OBJ_POLY: return flatten_poly(b, o, &in, material);
+    case OBJ_SUPERELLIPSOID: return flatten_superellipsoid(b, o, &in, material);
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
         return flatten_planar_shape(b, o, &in, material);
     case OBJ_UNION:

@@ -11,6 +11,7 @@
 #include "polynomial.h"
 #include "poly.h"
 #include "quadric.h"
+#include "superellipsoid.h"
 
 #define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
 #define POV_MAX_DISTANCE 1.0e7   /* POV-Ray's MAX_DISTANCE: farther crossings are not reported */
@@ -646,6 +647,10 @@ void shape_compute_bounds(Shape *s)
         lo = v3(-1.0, -1.0, s->u.cone.dist);
         hi = v3(1.0, 1.0, 1.0);
         break;
+    case SHAPE_SUPERELLIPSOID: /* Superellipsoid::Compute_BBox */
+        lo = v3(-1.0001, -1.0001, -1.0001);
+        hi = v3(1.0001, 1.0001, 1.0001);
+        break;
     case SHAPE_TORUS: {
         double r1 = s->u.torus.minor, r2 = s->u.torus.major + s->u.torus.minor;
         lo = v3(-r2, -r1, -r2);
@@ -691,6 +696,7 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     case SHAPE_PLANE: n = plane_all(s, org, u, ulimit, hits); break;
     case SHAPE_QUADRIC: n = quadric_all(s, org, u, ulimit, hits); break;
     case SHAPE_POLY: n = poly_all(s, org, u, ulimit, hits); break;
+    case SHAPE_SUPERELLIPSOID: n = superellipsoid_all(s, org, u, ulimit, hits); break;
     }
     if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
         for (int k = 0; k < n; k++)
@@ -722,6 +728,7 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_PLANE: return plane_inside(s, p);
     case SHAPE_QUADRIC: return quadric_inside(s, p);
     case SHAPE_POLY: return poly_inside(s, p);
+    case SHAPE_SUPERELLIPSOID: return superellipsoid_inside(s, p);
     }
     return 0;
 }
@@ -738,6 +745,7 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_PLANE: return plane_normal(s);
     case SHAPE_QUADRIC: return quadric_normal(s, p);
     case SHAPE_POLY: return poly_normal(s, p);
+    case SHAPE_SUPERELLIPSOID: return superellipsoid_normal(s, p);
     }
     return v3(0.0, 1.0, 0.0);
 }
@@ -753,7 +761,8 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_BOX:         /* hstrace keeps no uv of a box that is a CSG part (man page) */
     case SHAPE_PLANE: break;
     case SHAPE_QUADRIC: /* no mapping of their own in POV-Ray 3.7 */
-    case SHAPE_POLY: break;
+    case SHAPE_POLY:
+    case SHAPE_SUPERELLIPSOID: break;
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }

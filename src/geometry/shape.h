@@ -20,6 +20,7 @@ typedef enum {
     SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE,
     SHAPE_QUADRIC, /* quadric.h */
     SHAPE_POLY,    /* poly.h: poly, cubic, quartic */
+    SHAPE_SUPERELLIPSOID, /* superellipsoid.h */
 } ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
@@ -136,6 +137,11 @@ struct Shape {
             const double *coeffs;
             int sturm;
         } poly;
+        /* A superellipsoid in its own space: POV-Ray's Power x and z,
+         * 2/e and 2/n of superellipsoid { <e, n> } */
+        struct {
+            double ex, ez;
+        } superellipsoid;
         /* A CSG object: nparts parts, the first at `parts` (the next at
          * parts + parts->subtree ...), set once World.shapes is final. */
         struct {
