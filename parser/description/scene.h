@@ -324,6 +324,7 @@ typedef enum {
     OBJ_QUADRIC,
     OBJ_POLY,
     OBJ_SUPERELLIPSOID,  /* superellipsoid { <e, n> } */
+    OBJ_LATHE,           /* lathe: a spline turned about the y axis */
     /* CSG over solids (the analytic shapes and other CSG): children in
      * u.csg as a union's; a difference's children after the first are
      * taken away from it (POV-Ray: inverted, then intersected). */
@@ -331,6 +332,16 @@ typedef enum {
     OBJ_DIFFERENCE,
     OBJ_MERGE,
 } ObjectKind;
+
+/* One segment of a lathe's spline as POV-Ray's Compute_Lathe makes it:
+ * x(w) = ((a[0] w + b[0]) w + c[0]) w + d[0] (the radius), y(w) likewise
+ * with index 1 (the height), for w in [0, 1]. */
+typedef struct SplineSegment {
+    double a[2], b[2], c[2], d[2];
+} SplineSegment;
+
+/* A lathe's spline (POV-Ray's LINEAR_SPLINE ... BEZIER_SPLINE). */
+typedef enum { SPLINE_LINEAR, SPLINE_QUADRATIC, SPLINE_CUBIC, SPLINE_BEZIER } SplineKind;
 
 /* How a prism's outline is swept (POV-Ray's linear_sweep, conic_sweep). */
 typedef enum { PRISM_LINEAR_SWEEP, PRISM_CONIC_SWEEP } PrismSweep;
@@ -456,6 +467,11 @@ struct SceneObject {
         struct {
             double e, n; /* superellipsoid { <e, n> }: both positive */
         } superellipsoid;
+        struct {            /* lathe { [spline] N, <r, h>... [sturm] } */
+            SplineKind spline;
+            int nsegments;
+            const SplineSegment *segments;
+        } lathe;
         struct {
             Vec3 normal; /* as written (not normalised) */
             double distance;

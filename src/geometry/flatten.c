@@ -18,6 +18,7 @@
 #include "parallel.h"
 #include "planar_shapes.h"
 #include "ptr_map.h"
+#include "lathe.h"
 #include "quadric.h"
 #include "world_estimate.h"
 
@@ -1056,6 +1057,27 @@ static int flatten_superellipsoid(Builder *b, const SceneObject *o, const Inheri
     return 0;
 }
 
+/* A lathe in its own space, reached through every transform; its
+ * bounding cylinder from its segments (lathe.h). */
+static int flatten_lathe(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_LATHE, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.lathe.spline = (int)o->u.lathe.spline;
+    s->u.lathe.nsegments = o->u.lathe.nsegments;
+    s->u.lathe.segments = o->u.lathe.segments;
+    s->u.lathe.sturm = o->sturm;
+    /* a root of the segment's polynomial per crossing: its degree */
+    const int roots = o->u.lathe.spline == SPLINE_LINEAR ? 2 : o->u.lathe.spline == SPLINE_QUADRATIC ? 4 : 6;
+    s->max_hits = o->u.lathe.nsegments > SHAPE_MAX_HITS / roots ? SHAPE_MAX_HITS : roots * o->u.lathe.nsegments;
+    lathe_place(s);
+    shape_placed(b, s);
+    return 0;
+}
+
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
 /* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
@@ -1570,6 +1592,7 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_QUADRIC: return flatten_quadric(b, o, &in, material);
     case OBJ_POLY: return flatten_poly(b, o, &in, material);
     case OBJ_SUPERELLIPSOID: return flatten_superellipsoid(b, o, &in, material);
+    case OBJ_LATHE: return flatten_lathe(b, o, &in, material);
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
         return flatten_planar_shape(b, o, &in, material);
     case OBJ_UNION:

@@ -10,6 +10,7 @@
 #include "csg.h"
 #include "polynomial.h"
 #include "poly.h"
+#include "lathe.h"
 #include "quadric.h"
 #include "superellipsoid.h"
 
@@ -647,6 +648,10 @@ void shape_compute_bounds(Shape *s)
         lo = v3(-1.0, -1.0, s->u.cone.dist);
         hi = v3(1.0, 1.0, 1.0);
         break;
+    case SHAPE_LATHE: /* Lathe::Compute_BBox */
+        lo = v3(-s->u.lathe.radius2, s->u.lathe.height1, -s->u.lathe.radius2);
+        hi = v3(s->u.lathe.radius2, s->u.lathe.height2, s->u.lathe.radius2);
+        break;
     case SHAPE_SUPERELLIPSOID: /* Superellipsoid::Compute_BBox */
         lo = v3(-1.0001, -1.0001, -1.0001);
         hi = v3(1.0001, 1.0001, 1.0001);
@@ -697,6 +702,7 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     case SHAPE_QUADRIC: n = quadric_all(s, org, u, ulimit, hits); break;
     case SHAPE_POLY: n = poly_all(s, org, u, ulimit, hits); break;
     case SHAPE_SUPERELLIPSOID: n = superellipsoid_all(s, org, u, ulimit, hits); break;
+    case SHAPE_LATHE: n = lathe_all(s, org, u, ulimit, hits); break;
     }
     if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
         for (int k = 0; k < n; k++)
@@ -729,6 +735,7 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_QUADRIC: return quadric_inside(s, p);
     case SHAPE_POLY: return poly_inside(s, p);
     case SHAPE_SUPERELLIPSOID: return superellipsoid_inside(s, p);
+    case SHAPE_LATHE: return lathe_inside(s, p);
     }
     return 0;
 }
@@ -746,12 +753,15 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_QUADRIC: return quadric_normal(s, p);
     case SHAPE_POLY: return poly_normal(s, p);
     case SHAPE_SUPERELLIPSOID: return superellipsoid_normal(s, p);
+    case SHAPE_LATHE: return lathe_normal(s, p, part);
     }
     return v3(0.0, 1.0, 0.0);
 }
 
 Vec3 shape_uv(const Shape *s, Vec3 p)
 {
+    if (s->kind == SHAPE_LATHE)
+        return lathe_uv(s, p);
     switch (s->kind) {
     case SHAPE_SPHERE: return sphere_uv(s, p);
     case SHAPE_TORUS: return torus_uv(s, p);
@@ -763,6 +773,7 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_QUADRIC: /* no mapping of their own in POV-Ray 3.7 */
     case SHAPE_POLY:
     case SHAPE_SUPERELLIPSOID: break;
+    case SHAPE_LATHE: break; /* above */
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }

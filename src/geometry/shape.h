@@ -21,6 +21,7 @@ typedef enum {
     SHAPE_QUADRIC, /* quadric.h */
     SHAPE_POLY,    /* poly.h: poly, cubic, quartic */
     SHAPE_SUPERELLIPSOID, /* superellipsoid.h */
+    SHAPE_LATHE,   /* lathe.h */
 } ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
@@ -48,6 +49,7 @@ enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_
 #define SHAPE_MAX_HITS 256
 
 typedef struct Shape Shape;
+struct SplineSegment; /* scene.h: a lathe's segment */
 
 /* One crossing of a shape's surface: where, and whether the ray enters
  * the solid there (for CSG and the interiors a ray is inside). */
@@ -142,6 +144,15 @@ struct Shape {
         struct {
             double ex, ez;
         } superellipsoid;
+        /* A lathe in its own space: its spline's segments (the scene's),
+         * their kind (SplineKind) and its overall bounding cylinder */
+        struct {
+            int spline;
+            int nsegments;
+            const struct SplineSegment *segments;
+            double radius1, radius2, height1, height2;
+            int sturm;
+        } lathe;
         /* A CSG object: nparts parts, the first at `parts` (the next at
          * parts + parts->subtree ...), set once World.shapes is final. */
         struct {

@@ -90,6 +90,7 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
     case OBJ_QUADRIC:
     case OBJ_POLY:
     case OBJ_SUPERELLIPSOID:
+    case OBJ_LATHE:
         b += sizeof(Shape) + HIERARCHY_BYTES_PER_POLYGON; /* an item of the shapes' own hierarchy */
         break;
     case OBJ_UNION:
