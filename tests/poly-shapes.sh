@@ -2,8 +2,8 @@
 # POV-Ray's algebraic shapes, in TAP: quadric, poly, cubic and quartic
 # with POV-Ray 3.7's own polynomial solver (its closed-form quartic, and
 # its Sturm sequences for sturm, degrees above 4 and difficult quartics),
-# superellipsoid with its own root finder, and lathe (its four splines
-# with the same solver), in the scenes of
+# superellipsoid with its own root finder, lathe (its four splines) and
+# sor with the same solver, in the scenes of
 # tests/poly-shapes/:
 #   - hstrace's image and shadow mask against POV-Ray's renders (+Q9, and
 #     +Q3/+Q4 for the mask), within the limits measured below, no interior
@@ -30,7 +30,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="quadric poly poly-eye-inside poly-graze superellipsoid superellipsoid-eye-inside lathe"
+scenes="quadric poly poly-eye-inside poly-graze superellipsoid superellipsoid-eye-inside lathe sor"
 for s in $scenes; do
     cp "$srcdir/tests/poly-shapes/$s.pov" "$work/$s.pov" || bail "cannot copy tests/poly-shapes/$s.pov"
 done
@@ -48,6 +48,7 @@ superellipsoid       1e-5   (3.6e-6)     1 (0)     1 (0)
 # and 1.8e-6); not yet understood, measured here so that it cannot grow
 superellipsoid-eye-inside 8e-4 (6.25e-4)  25 (20)   1 (0)
 lathe                1e-5   (4.5e-7)     1 (0)     1 (0)
+sor                  1e-5   (6.8e-7)     1 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/poly-shapes.sh $scenes
@@ -72,6 +73,8 @@ superellipsoid { <1, 2, 3> }|UV vector expected
 lathe { quadratic_spline 2, <0, 0>, <1, 1> }|at least three points
 lathe { bezier_spline 5, <0, 0>, <1, 1>, <1, 2>, <0, 3>, <0, 4> }|four points per segment
 lathe { 3, <0, 0>, <-1, 1>, <0, 2> }|Incorrect point in lathe
+sor { 3, <0, 0>, <1, 1>, <1, 2> }|at least four points
+sor { 5, <0, 0>, <1, 1>, <1, 0.5>, <1, 2>, <0, 3> }|Incorrect point in surface of revolution
 BAD
 
 # Extreme coefficients render (status 0) with no NaN or infinite pixel.

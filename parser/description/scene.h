@@ -325,6 +325,7 @@ typedef enum {
     OBJ_POLY,
     OBJ_SUPERELLIPSOID,  /* superellipsoid { <e, n> } */
     OBJ_LATHE,           /* lathe: a spline turned about the y axis */
+    OBJ_SOR,             /* sor: a surface of revolution, radius^2 cubic in the height */
     /* CSG over solids (the analytic shapes and other CSG): children in
      * u.csg as a union's; a difference's children after the first are
      * taken away from it (POV-Ray: inverted, then intersected). */
@@ -339,6 +340,14 @@ typedef enum {
 typedef struct SplineSegment {
     double a[2], b[2], c[2], d[2];
 } SplineSegment;
+
+/* One segment of a sor as POV-Ray's Compute_Sor makes it: the squared
+ * radius a y^3 + b y^2 + c y + d between the heights y1 < y2, where its
+ * radius goes from x1 to x2. */
+typedef struct SorSegment {
+    double a, b, c, d;
+    double y1, y2, x1, x2;
+} SorSegment;
 
 /* A lathe's spline (POV-Ray's LINEAR_SPLINE ... BEZIER_SPLINE). */
 typedef enum { SPLINE_LINEAR, SPLINE_QUADRATIC, SPLINE_CUBIC, SPLINE_BEZIER } SplineKind;
@@ -472,6 +481,11 @@ struct SceneObject {
             int nsegments;
             const SplineSegment *segments;
         } lathe;
+        struct {            /* sor { N, <r, h>... [open] } */
+            int nsegments;  /* N - 3 */
+            const SorSegment *segments;
+            int open;       /* no base and cap discs */
+        } sor;
         struct {
             Vec3 normal; /* as written (not normalised) */
             double distance;

@@ -130,6 +130,7 @@ SceneObject *gram_quadric(Parser *p, const Token *kw);
 SceneObject *gram_poly(Parser *p, const Token *kw, int order);
 SceneObject *gram_superellipsoid(Parser *p, const Token *kw);
 SceneObject *gram_lathe(Parser *p, const Token *kw);
+SceneObject *gram_sor(Parser *p, const Token *kw);
 /* A 2-D vector (POV-Ray's Parse_UV_Vect: a float f stands for <f, f>). */
 void gram_uv_vector(Parser *p, double out[2]);
 

@@ -1,6 +1,6 @@
 /* Objects: polygon, triangle, smooth_triangle, mesh, mesh2, box, plane,
  * sphere, disc, cylinder, cone, torus, quadric, poly, cubic, quartic,
- * superellipsoid, lathe, union, intersection, difference, merge and object{}, with their modifiers. Every object keeps its own
+ * superellipsoid, lathe, sor, union, intersection, difference, merge and object{}, with their modifiers. Every object keeps its own
  * transform, composed from the transforms written on it in order; a union's
  * children keep theirs (the engine applies child, then parent). */
 #include <math.h>
@@ -22,10 +22,10 @@ int gram_is_object_keyword(int kw)
     case KW_height_field: case KW_bicubic_patch: case KW_prism:
     case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus:
     case KW_intersection: case KW_difference: case KW_merge: case KW_quadric: case KW_poly: case KW_cubic:
-    case KW_quartic: case KW_superellipsoid: case KW_lathe:
+    case KW_quartic: case KW_superellipsoid: case KW_lathe: case KW_sor:
     /* POV-Ray objects hstrace cannot render */
     case KW_blob:
-    case KW_sor: case KW_sphere_sweep:
+    case KW_sphere_sweep:
     case KW_text: case KW_julia_fractal:
     case KW_isosurface: case KW_parametric: case KW_polynomial: case KW_ovus: case KW_light_group:
         return 1;
@@ -52,7 +52,7 @@ static const SceneObject *first_non_solid(const SceneObject *o)
 {
     switch (o->kind) {
     case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: case OBJ_QUADRIC:
-    case OBJ_POLY: case OBJ_SUPERELLIPSOID: case OBJ_LATHE:
+    case OBJ_POLY: case OBJ_SUPERELLIPSOID: case OBJ_LATHE: case OBJ_SOR:
         return NULL;
     case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
         /* the parser bounds the depth (SceneObject.depth) */
@@ -83,6 +83,7 @@ static const char *object_kind_name(ObjectKind k)
     case OBJ_POLY: return "poly";
     case OBJ_SUPERELLIPSOID: return "superellipsoid";
     case OBJ_LATHE: return "lathe";
+    case OBJ_SOR: return "sor";
     case OBJ_INTERSECTION: return "intersection";
     case OBJ_DIFFERENCE: return "difference";
     case OBJ_MERGE: return "merge";
@@ -262,7 +263,7 @@ static int bound_readable(Parser *p, const Token *t)
     switch (t->kw) {
     case KW_box: case KW_plane: case KW_union: case KW_object: case KW_sphere: case KW_disc: case KW_cylinder:
     case KW_cone: case KW_torus: case KW_intersection: case KW_difference: case KW_merge: case KW_quadric:
-    case KW_poly: case KW_cubic: case KW_quartic: case KW_superellipsoid: case KW_lathe:
+    case KW_poly: case KW_cubic: case KW_quartic: case KW_superellipsoid: case KW_lathe: case KW_sor:
         return 1;
     default:
         break;
@@ -1213,6 +1214,7 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_quartic: *obj = gram_poly(p, &kw, 4); break;
     case KW_superellipsoid: *obj = gram_superellipsoid(p, &kw); break;
     case KW_lathe: *obj = gram_lathe(p, &kw); break;
+    case KW_sor: *obj = gram_sor(p, &kw); break;
     case KW_union: *obj = parse_children(p, &kw, OBJ_UNION, "union"); break;
     case KW_intersection: *obj = parse_children(p, &kw, OBJ_INTERSECTION, "intersection"); break;
     case KW_difference: *obj = parse_children(p, &kw, OBJ_DIFFERENCE, "difference"); break;

@@ -20,6 +20,7 @@
 #include "ptr_map.h"
 #include "lathe.h"
 #include "quadric.h"
+#include "sor.h"
 #include "world_estimate.h"
 
 /* add_material's memo: 2^6 materials made lately, by a hash of what made
@@ -1078,6 +1079,25 @@ static int flatten_lathe(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+/* A sor in its own space, reached through every transform (sor.h). */
+static int flatten_sor(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_SOR, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.sor.nsegments = o->u.sor.nsegments;
+    s->u.sor.segments = o->u.sor.segments;
+    s->u.sor.open = o->u.sor.open;
+    s->u.sor.sturm = o->sturm;
+    /* three crossings per segment's cubic, and the two discs */
+    s->max_hits = o->u.sor.nsegments > (SHAPE_MAX_HITS - 2) / 3 ? SHAPE_MAX_HITS : 3 * o->u.sor.nsegments + 2;
+    sor_place(s);
+    shape_placed(b, s);
+    return 0;
+}
+
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
 /* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
@@ -1593,6 +1613,7 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_POLY: return flatten_poly(b, o, &in, material);
     case OBJ_SUPERELLIPSOID: return flatten_superellipsoid(b, o, &in, material);
     case OBJ_LATHE: return flatten_lathe(b, o, &in, material);
+    case OBJ_SOR: return flatten_sor(b, o, &in, material);
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
         return flatten_planar_shape(b, o, &in, material);
     case OBJ_UNION:

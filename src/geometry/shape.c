@@ -12,6 +12,7 @@
 #include "poly.h"
 #include "lathe.h"
 #include "quadric.h"
+#include "sor.h"
 #include "superellipsoid.h"
 
 #define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
@@ -652,6 +653,10 @@ void shape_compute_bounds(Shape *s)
         lo = v3(-s->u.lathe.radius2, s->u.lathe.height1, -s->u.lathe.radius2);
         hi = v3(s->u.lathe.radius2, s->u.lathe.height2, s->u.lathe.radius2);
         break;
+    case SHAPE_SOR: /* Sor::Compute_BBox */
+        lo = v3(-s->u.sor.radius2, s->u.sor.height1, -s->u.sor.radius2);
+        hi = v3(s->u.sor.radius2, s->u.sor.height2, s->u.sor.radius2);
+        break;
     case SHAPE_SUPERELLIPSOID: /* Superellipsoid::Compute_BBox */
         lo = v3(-1.0001, -1.0001, -1.0001);
         hi = v3(1.0001, 1.0001, 1.0001);
@@ -703,6 +708,7 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     case SHAPE_POLY: n = poly_all(s, org, u, ulimit, hits); break;
     case SHAPE_SUPERELLIPSOID: n = superellipsoid_all(s, org, u, ulimit, hits); break;
     case SHAPE_LATHE: n = lathe_all(s, org, u, ulimit, hits); break;
+    case SHAPE_SOR: n = sor_all(s, org, u, ulimit, hits); break;
     }
     if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
         for (int k = 0; k < n; k++)
@@ -736,6 +742,7 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_POLY: return poly_inside(s, p);
     case SHAPE_SUPERELLIPSOID: return superellipsoid_inside(s, p);
     case SHAPE_LATHE: return lathe_inside(s, p);
+    case SHAPE_SOR: return sor_inside(s, p);
     }
     return 0;
 }
@@ -754,6 +761,7 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_POLY: return poly_normal(s, p);
     case SHAPE_SUPERELLIPSOID: return superellipsoid_normal(s, p);
     case SHAPE_LATHE: return lathe_normal(s, p, part);
+    case SHAPE_SOR: return sor_normal(s, p, part);
     }
     return v3(0.0, 1.0, 0.0);
 }
@@ -762,6 +770,8 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
 {
     if (s->kind == SHAPE_LATHE)
         return lathe_uv(s, p);
+    if (s->kind == SHAPE_SOR)
+        return sor_uv(s, p);
     switch (s->kind) {
     case SHAPE_SPHERE: return sphere_uv(s, p);
     case SHAPE_TORUS: return torus_uv(s, p);
@@ -773,7 +783,8 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_QUADRIC: /* no mapping of their own in POV-Ray 3.7 */
     case SHAPE_POLY:
     case SHAPE_SUPERELLIPSOID: break;
-    case SHAPE_LATHE: break; /* above */
+    case SHAPE_LATHE: /* above */
+    case SHAPE_SOR: break;
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }

@@ -22,6 +22,7 @@ typedef enum {
     SHAPE_POLY,    /* poly.h: poly, cubic, quartic */
     SHAPE_SUPERELLIPSOID, /* superellipsoid.h */
     SHAPE_LATHE,   /* lathe.h */
+    SHAPE_SOR,     /* sor.h */
 } ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
@@ -50,6 +51,7 @@ enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_
 
 typedef struct Shape Shape;
 struct SplineSegment; /* scene.h: a lathe's segment */
+struct SorSegment;    /* scene.h: a sor's segment */
 
 /* One crossing of a shape's surface: where, and whether the ray enters
  * the solid there (for CSG and the interiors a ray is inside). */
@@ -153,6 +155,14 @@ struct Shape {
             double radius1, radius2, height1, height2;
             int sturm;
         } lathe;
+        /* A sor in its own space: its segments (the scene's), its
+         * bounding cylinder, its discs' squared radii */
+        struct {
+            int nsegments;
+            const struct SorSegment *segments;
+            double radius1, radius2, height1, height2, base2, cap2;
+            int open, sturm;
+        } sor;
         /* A CSG object: nparts parts, the first at `parts` (the next at
          * parts + parts->subtree ...), set once World.shapes is final. */
         struct {

@@ -91,6 +91,7 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
     case OBJ_POLY:
     case OBJ_SUPERELLIPSOID:
     case OBJ_LATHE:
+    case OBJ_SOR:
         b += sizeof(Shape) + HIERARCHY_BYTES_PER_POLYGON; /* an item of the shapes' own hierarchy */
         break;
     case OBJ_UNION:
