@@ -75,6 +75,7 @@ lathe { bezier_spline 5, <0, 0>, <1, 1>, <1, 2>, <0, 3>, <0, 4> }|four points pe
 lathe { 3, <0, 0>, <-1, 1>, <0, 2> }|Incorrect point in lathe
 sor { 3, <0, 0>, <1, 1>, <1, 2> }|at least four points
 sor { 5, <0, 0>, <1, 1>, <1, 0.5>, <1, 2>, <0, 3> }|Incorrect point in surface of revolution
+poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> bounded_by { triangle { 0, x, y } } }|'triangle' in 'bounded_by' of a 'poly' is not supported
 BAD
 
 # Extreme coefficients render (status 0) with no NaN or infinite pixel.

@@ -289,8 +289,9 @@ static void object_bound_clip(Parser *p, SceneObject *o, const Token *kw, int cl
             o->nbounds = o->nclips;
             o->bounds = o->clips;
         }
-    } else if (!clip && !bound_readable(p, t)) {
-        /* a hint hstrace need not read: passed over, as it always was */
+    } else if (!clip && !bound_readable(p, t) && o->kind != OBJ_POLY && o->kind != OBJ_QUADRIC) {
+        /* a hint hstrace need not read: passed over, as it always was (a
+         * poly's and a quadric's bound is read: POV-Ray tests it) */
         tok_skip_block_body(p);
     } else {
         tok_unget(p);
@@ -304,6 +305,17 @@ static void object_bound_clip(Parser *p, SceneObject *o, const Token *kw, int cl
             o->depth = o->clips[i]->depth + 1;
     if (o->depth > MAX_NESTING)
         tok_fail(p, kw->pos, "nested too deeply (clipped_by inside clipped_by more than %d levels)", MAX_NESTING);
+    /* POV-Ray keeps a poly's and a quadric's bound and tests it first
+     * (src/geometry/flatten.c's bound_kept): hstrace tests solids alone */
+    for (int i = 0; !clip && (o->kind == OBJ_POLY || o->kind == OBJ_QUADRIC) && i < o->nbounds; i++) {
+        const SceneObject *odd = first_non_solid(o->bounds[i]);
+        if (odd) {
+            char msg[96];
+            snprintf(msg, sizeof msg, "'%s' in 'bounded_by' of a '%s'", object_kind_name(odd->kind),
+                     object_kind_name(o->kind));
+            tok_unsupported_at(p, odd->pos, msg);
+        }
+    }
     if (clip && o->nclips > 0) {
         const SceneObject *odd = first_non_solid(o);
         if (odd) {
