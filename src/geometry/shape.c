@@ -685,7 +685,63 @@ void shape_compute_bounds(Shape *s)
     s->bbox_max = whi;
 }
 
-int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
+/* The crossings of a primitive by one test of the ray along unit u. */
+static int one_test(const Shape *s, Vec3 org, Vec3 u, double ulimit, ShapeHit *hits)
+{
+    switch (s->kind) {
+    case SHAPE_SPHERE: return sphere_all(s, org, u, ulimit, hits);
+    case SHAPE_DISC: return disc_all(s, org, u, ulimit, hits);
+    case SHAPE_CONE: return cone_all(s, org, u, ulimit, hits);
+    case SHAPE_TORUS: return torus_all(s, org, u, ulimit, hits);
+    case SHAPE_CSG: return csg_intersect_all(s, org, u, ulimit, hits);
+    case SHAPE_BOX: return box_all(s, org, u, ulimit, hits);
+    case SHAPE_PLANE: return plane_all(s, org, u, ulimit, hits);
+    case SHAPE_QUADRIC: return quadric_all(s, org, u, ulimit, hits);
+    case SHAPE_POLY: return poly_all(s, org, u, ulimit, hits);
+    case SHAPE_SUPERELLIPSOID: return superellipsoid_all(s, org, u, ulimit, hits);
+    case SHAPE_LATHE: return lathe_all(s, org, u, ulimit, hits);
+    case SHAPE_SOR: return sor_all(s, org, u, ulimit, hits);
+    }
+    return 0;
+}
+
+/* The shapes whose crossings POV-Ray finds numerically from the ray's
+ * origin (its polynomial solver, the superellipsoid's sampling), so that
+ * where they are found depends on where the ray starts. */
+static int found_from_origin(ShapeKind k)
+{
+    return k == SHAPE_POLY || k == SHAPE_SUPERELLIPSOID || k == SHAPE_LATHE || k == SHAPE_SOR;
+}
+
+/* Such a shape's crossings as POV-Ray meets them along a ray that goes on
+ * through it (a shadow ray through a see-through object, TracePointLight-
+ * ShadowRay): its nearest crossing, then the nearest of the ray cast again
+ * from there (POV-Ray's IPoint, the origin moved by that distance), and
+ * so on. A CSG part's are all of one test, as POV-Ray's CSG asks them. */
+static int crossings_cast_again(const Shape *s, Vec3 org, Vec3 u, double ulimit, ShapeHit *hits)
+{
+    ShapeHit one[SHAPE_MAX_HITS];
+    int n = 0;
+    double done = 0.0;
+    Vec3 o = org;
+    while (n < s->max_hits) {
+        if (one_test(s, o, u, HUGE_VAL, one) == 0)
+            break;
+        double t = one[0].t;
+        if (!(done + t < ulimit))
+            break;
+        hits[n] = one[0];
+        hits[n].t = done + t;
+        n++;
+        done += t;
+        o = v3_add(o, v3_scale(u, t));
+    }
+    return n;
+}
+
+/* shape_intersect_all; nearest_only: the nearest crossing is all the
+ * caller needs (no casting again past it). */
+static int crossings(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits, int nearest_only)
 {
     /* POV-Ray's rays have unit directions and its tolerances are distances
      * along them: the test runs on the unit direction, and its distances
@@ -695,21 +751,8 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
         return 0;
     Vec3 u = len == 1.0 ? dir : v3_scale(dir, 1.0 / len);
     double ulimit = len == 1.0 ? tmax : tmax * len;
-    int n = 0;
-    switch (s->kind) {
-    case SHAPE_SPHERE: n = sphere_all(s, org, u, ulimit, hits); break;
-    case SHAPE_DISC: n = disc_all(s, org, u, ulimit, hits); break;
-    case SHAPE_CONE: n = cone_all(s, org, u, ulimit, hits); break;
-    case SHAPE_TORUS: n = torus_all(s, org, u, ulimit, hits); break;
-    case SHAPE_CSG: n = csg_intersect_all(s, org, u, ulimit, hits); break;
-    case SHAPE_BOX: n = box_all(s, org, u, ulimit, hits); break;
-    case SHAPE_PLANE: n = plane_all(s, org, u, ulimit, hits); break;
-    case SHAPE_QUADRIC: n = quadric_all(s, org, u, ulimit, hits); break;
-    case SHAPE_POLY: n = poly_all(s, org, u, ulimit, hits); break;
-    case SHAPE_SUPERELLIPSOID: n = superellipsoid_all(s, org, u, ulimit, hits); break;
-    case SHAPE_LATHE: n = lathe_all(s, org, u, ulimit, hits); break;
-    case SHAPE_SOR: n = sor_all(s, org, u, ulimit, hits); break;
-    }
+    int n = found_from_origin(s->kind) && !s->is_part && !nearest_only ? crossings_cast_again(s, org, u, ulimit, hits)
+                                                                       : one_test(s, org, u, ulimit, hits);
     if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
         for (int k = 0; k < n; k++)
             hits[k].leaf = NULL;
@@ -719,10 +762,15 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     return n;
 }
 
+int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
+{
+    return crossings(s, org, dir, tmax, hits, 0);
+}
+
 double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hit)
 {
     ShapeHit hits[SHAPE_MAX_HITS];
-    if (shape_intersect_all(s, org, dir, tmax, hits) == 0)
+    if (crossings(s, org, dir, tmax, hits, 1) == 0)
         return -1.0;
     *hit = hits[0];
     return hits[0].t;
