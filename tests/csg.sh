@@ -68,7 +68,7 @@ bad_scenes_check <<'BAD'
 intersection { sphere { 0, 1 } polygon { 4, 0, x, x + y, y } }|'polygon' as a part of 'intersection' is not supported
 difference { sphere { 0, 1 } union { sphere { 0, 1 } triangle { 0, x, y } } }|'triangle' as a part of 'difference' is not supported
 intersection { sphere { 0, 1 } sphere { 0, 2 }|expected
-intersection { #for (I, 1, 65) torus { 1, 0.1 rotate I * x } #end }|hstrace takes 256 at most
+intersection { #for (I, 1, 1025) torus { 1, 0.1 rotate I * x } #end }|hstrace takes 4096 at most
 sphere { 0, 1 clipped_by { } }|expected an object in 'clipped_by'
 sphere { 0, 1 clipped_by { triangle { 0, x, y } } }|'triangle' in 'clipped_by' is not supported
 mesh { triangle { 0, x, y } clipped_by { sphere { 0, 1 } } }|'clipped_by' on a 'mesh' is not supported

@@ -68,6 +68,28 @@ animations/fractalzoom/fractalzoom.pov|
 camera/mesh_camera/baking_repair_seams.pov|
 incdemo/strings.pov|
 textures/pigments/blkhole.pov|
+objects/ttf1.pov|
+advanced/float5.pov|
+animations/vect1/vect1.pov|
+language/arrays/array1.pov|
+objectmods/no_image.pov|
+camera/cylinder1.pov|
+camera/cylinder2.pov|
+camera/cylinder3.pov|
+camera/cylinder4.pov|
+camera/fisheye.pov|
+camera/omnimax.pov|
+camera/panoramic.pov|
+camera/spherical.pov|
+camera/ultra_wide_angle.pov|
+lights/spotlite.pov|
+templates/Basic_Scenes/Night_moon_partly_cloudy.pov|
+bsp/Tango.pov|
+objects/blob.pov|
+objects/blob1a.pov|
+objects/blob1b.pov|
+objects/blob1c.pov|
+lights/glassthing.pov|
 incdemo/shapes_old.pov|
 objects/quartic/teardrop.pov|
 objects/quartic/quarcyl.pov|
@@ -79,7 +101,9 @@ objects/lathe2.pov|"
 # on 2026-11-23 (POV-Ray 3.7.0.10, one thread; the same in two runs; the
 # four scenes with normals, Sea_blue_sky, normal, normmap and quilt2, again
 # on 2026-12-02, once normals were modelled; caustic2 on 2026-12-07, once
-# fake caustics were; the quadrics, quartics, superellipsoids and lathe on
+# fake caustics were; the camera types, spotlite and Night_moon (looks_like)
+# and Tango, the blob samples and glassthing on 2026-12-07, once they
+# rendered; the quadrics, quartics, superellipsoids and lathe on
 # 2026-12-07, once those shapes were) and the
 # limit: the image's RMSE and its pixels off by more than 0.02, the shadow
 # mask's disagreeing pixels (none may disagree in the interior). Where the
@@ -87,7 +111,7 @@ objects/lathe2.pov|"
 # larger of twice the measured value and 1e-5 (RMSE), twice and 1 (pixels):
 # the rule of tests/regress.sh. Where an approximation hstrace reports
 # dominates (printed as a comment beside the scene's results: normals,
-# patterns shown as one colour, radiosity; caustic2's camera inside an
+# patterns shown as one colour, radiosity, photons; caustic2's camera inside an
 # object, which hstrace does not detect), the limit is 1.25
 # times the measured value: twice would let through a fault as large as
 # the approximation itself.
@@ -113,6 +137,33 @@ animations/fractalzoom/fractalzoom.pov           0.91     (0.723)       23977 (1
 camera/mesh_camera/baking_repair_seams.pov       1e-5     (0)           1 (0)           1 (0)
 incdemo/strings.pov                              1e-5     (0)           1 (0)           1 (0)
 textures/pigments/blkhole.pov                    0.54     (0.43)        24000 (19200)   1 (0)
+# text (measured 2026-12-07, once text was modelled)
+objects/ttf1.pov                                 1e-5     (9.04e-7)     1 (0)           1 (0)
+advanced/float5.pov                              1e-5     (0)           1 (0)           1 (0)
+animations/vect1/vect1.pov                       1e-5     (3.52e-6)     1 (0)           1 (0)
+language/arrays/array1.pov                       1e-5     (3.52e-6)     1 (0)           1 (0)
+objectmods/no_image.pov                          1e-5     (2.49e-6)     1 (0)           1 (0)
+camera/cylinder1.pov                             1e-5     (1.02e-6)     1 (0)           1 (0)
+camera/cylinder2.pov                             1e-5     (2.88e-6)     1 (0)           1 (0)
+camera/cylinder3.pov                             1e-5     (2.27e-6)     1 (0)           1 (0)
+camera/cylinder4.pov                             1e-5     (5.09e-7)     1 (0)           1 (0)
+camera/fisheye.pov                               1e-5     (0)           1 (0)           1 (0)
+camera/omnimax.pov                               1e-5     (0)           1 (0)           1 (0)
+camera/panoramic.pov                             1e-5     (2.10e-6)     1 (0)           1 (0)
+camera/spherical.pov                             1e-5     (2.03e-6)     1 (0)           1 (0)
+camera/ultra_wide_angle.pov                      1e-5     (2.10e-6)     1 (0)           1 (0)
+lights/spotlite.pov                              1e-5     (5.35e-7)     1 (0)           1 (0)
+templates/Basic_Scenes/Night_moon_partly_cloudy.pov 1e-5     (0)           1 (0)           1 (0)
+# Tango: the jitter of its area light (the same in both renderers run to run,
+# not the same samples); without jitter the image is the same to the bit
+bsp/Tango.pov                                    0.018    (0.00855)     1790 (895)      1 (0)
+objects/blob.pov                                 1e-5     (1.27e-7)     1 (0)           1 (0)
+objects/blob1a.pov                               1e-5     (1.02e-6)     1 (0)           1 (0)
+objects/blob1b.pov                               1e-5     (1.02e-6)     1 (0)           1 (0)
+objects/blob1c.pov                               1e-5     (0)           1 (0)           1 (0)
+# glassthing: the photons of its glass blob (approximated: not mapped)
+lights/glassthing.pov                            0.084    (0.0675)      6784 (5427)     1 (0)
+# quadric, quartic, superellipsoid, lathe (measured 2026-12-07, once modelled)
 incdemo/shapes_old.pov                           1e-5     (1.94e-6)     1 (0)           1 (0)
 objects/quartic/teardrop.pov                     1e-5     (0)           1 (0)           1 (0)
 objects/quartic/quarcyl.pov                      1e-5     (0)           1 (0)           1 (0)

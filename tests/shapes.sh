@@ -21,7 +21,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="sphere-basic sphere-transformed sphere-inside sphere-far sphere-glass sphere-uv disc cylinder cone torus shapes-fade sphere-eye-glass shapes-many shapes-flags"
+scenes="sphere-basic sphere-transformed sphere-inside sphere-far sphere-glass sphere-uv disc cylinder cone torus shapes-fade sphere-eye-glass shapes-many shapes-flags shapes-glass-rows"
 for s in $scenes; do
     cp "$srcdir/scenes/shapes/$s.pov" "$work/$s.pov" || bail "cannot copy scenes/shapes/$s.pov"
 done
@@ -47,6 +47,7 @@ shapes-many          1e-5   (1.2e-6)     1 (0)     1 (0)
 # window (fefcaa3) leaves out crossings within 1e-3 of the point (1.5e-6
 # without it), where cylinder and cone came nearer to POV-Ray
 shapes-flags         2e-5   (9.6e-6)     1 (0)     1 (0)
+shapes-glass-rows    1e-5   (1.5e-6)     1 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/shapes.sh $scenes

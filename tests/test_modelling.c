@@ -327,12 +327,9 @@ static void test_unsupported(void)
     expect_error("#declare I = isosurface { function { x } }\n\nobject { I }", 3, 10,
                  "'isosurface' is not supported by hstrace (declared at t.pov:1)", "declared isosurface, used");
     expect_error("ovus { 1, 0.5 }", 1, 1, "'ovus' is not supported by hstrace", "ovus");
-    expect_error("camera { fisheye }", 1, 10, "'fisheye' is not supported by hstrace", "fisheye camera");
-    expect_error("camera { panoramic }", 1, 10, "'panoramic' is not supported by hstrace", "panoramic camera");
+    expect_error("camera { mesh_camera { 1 0 } }", 1, 10, "'mesh_camera' is not supported by hstrace", "mesh camera");
     expect_error("light_source { 0, 1 projected_through { box { 0, 1 } } }", 1, 21,
                  "'projected_through' is not supported by hstrace", "projected_through");
-    expect_error("light_source { 0, 1 looks_like { box { 0, 1 } } }", 1, 21, "'looks_like' is not supported by hstrace",
-                 "looks_like");
     expect_error("box { 0, 1 interior { media { } } }", 1, 23, "'media' is not supported by hstrace", "media");
     expect_error("rainbow { angle 42 width 5 distance 100 }", 1, 1, "'rainbow' is not supported by hstrace", "rainbow");
     expect_error("box { 0, 1 pigment { image_map { png \"x.png\" } } }", 1, 22, "'image_map' is not supported",

@@ -816,8 +816,8 @@ static void test_errors(void)
     expect_error("box { 0, 1\n", 2, 1, "found the end of the file", "unclosed block");
     expect_error("box { 0, Nope }", 1, 10, "undeclared identifier 'Nope'", "unknown identifier");
     expect_error("ovus { 1, 0.5 }", 1, 1, "'ovus' is not supported by hstrace", "unsupported object");
-    expect_error("light_source { 0, 1 looks_like { box { 0, 1 } } }", 1, 21, "'looks_like' is not supported",
-                 "looks_like");
+    expect_error("light_source { 0, 1 projected_through { box { 0, 1 } } }", 1, 21,
+                 "'projected_through' is not supported", "projected_through");
     {
         /* POV-Ray ignores area_light's modifiers on a point light (orient
          * and area_illumination with a warning; advanced/diffract.pov writes

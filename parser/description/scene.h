@@ -326,6 +326,10 @@ typedef enum {
     OBJ_SUPERELLIPSOID,  /* superellipsoid { <e, n> } */
     OBJ_LATHE,           /* lathe: a spline turned about the y axis */
     OBJ_SOR,             /* sor: a surface of revolution, radius^2 cubic in the height */
+    /* One glyph of a text object (a text is a union of them): its outline
+     * swept from z = 0 to z = depth (u.glyph). */
+    OBJ_GLYPH,
+    OBJ_BLOB,            /* u.blob: POV-Ray's blob, a field's level surface */
     /* CSG over solids (the analytic shapes and other CSG): children in
      * u.csg as a union's; a difference's children after the first are
      * taken away from it (POV-Ray: inverted, then intersected). */
@@ -372,7 +376,39 @@ typedef struct {
     int texture2, texture3;
 } MeshFace;
 
+/* A TrueType glyph's outline as POV-Ray 3.7's text object keeps it
+ * (truetype.cpp's GlyphStruct): contour k is the points start[k] ..
+ * start[k + 1] - 1 in font units divided by the units per em, its last
+ * point a copy of its first; a point off the curve is a quadratic Bezier's
+ * control point (two in a row have an on-curve point midway). The header's
+ * bounds, in font units, make its box. */
+typedef struct SceneGlyph {
+    int ncontours;
+    const int *start;
+    const double *x, *y;
+    const unsigned char *on_curve;
+    int xmin, ymin, xmax, ymax;
+    int units_per_em;
+} SceneGlyph;
+
 typedef struct SceneObject SceneObject;
+
+/* A blob's component as POV-Ray's Parse_Blob leaves it (its Blob_Element
+ * before Make_Blob): a sphere keeps its centre and radius through
+ * translations, rotations and uniform scales, and becomes an ellipsoid
+ * (own_space: then `center` and `radius2` are in its own space, reached
+ * through `placed`) at any other transform; a cylinder is always placed:
+ * from base to apex of radius sqrt(radius2), then `placed`. */
+typedef enum { BLOB_COMPONENT_SPHERE, BLOB_COMPONENT_CYLINDER } BlobComponentKind;
+typedef struct {
+    BlobComponentKind kind;
+    double strength;
+    double radius2;
+    Vec3 center;       /* sphere */
+    Vec3 base, apex;   /* cylinder */
+    int own_space;     /* sphere: an ellipsoid, placed by `placed` */
+    Transform placed;  /* the component's transforms after its own frame */
+} SceneBlobComponent;
 
 struct SceneObject {
     ObjectKind kind;
@@ -401,6 +437,12 @@ struct SceneObject {
      * transform rather than by a moved centre and radius. */
     unsigned general_transform : 1;
     unsigned sturm : 1;   /* `sturm`: POV-Ray's Sturm root solver for the polynomial shapes */
+    /* POV-Ray's bounding box of the object as min_extent and max_extent
+     * read it (its BBox: single-precision corner and lengths, carried
+     * through each transform written on it by Recompute_BBox), where
+     * hstrace keeps it: text objects (has_extent). */
+    unsigned has_extent : 1;
+    float extent_lower[3], extent_lengths[3];
     int double_illuminate;
     /* clipped_by: the object's surfaces are kept only inside every one of
      * these solids (POV-Ray's Clip, also in its inside test). Each is
@@ -486,6 +528,15 @@ struct SceneObject {
             const SorSegment *segments;
             int open;       /* no base and cap discs */
         } sor;
+        struct {
+            const SceneGlyph *glyph;
+            double depth;        /* the text's thickness: the sweep along z */
+        } glyph;
+        struct {
+            double threshold;
+            int ncomponents;                       /* as written, at least 1 */
+            const SceneBlobComponent *components;
+        } blob;
         struct {
             Vec3 normal; /* as written (not normalised) */
             double distance;
@@ -581,11 +632,25 @@ typedef struct SceneLight {
     AreaLight area;
     const ApproxNote *approx; /* media_attenuation */
     const ApproxNote *photons; /* photons { }: counted as the objects' are */
+    /* looks_like { OBJECT }: the object that shows where the light is, moved
+     * with it and casting no shadow (POV-Ray's LightSource children[0]); the
+     * parser adds it to the scene's objects with the light. NULL: none. */
+    SceneObject *looks_like;
 } SceneLight;
 
+/* POV-Ray 3.7's camera types (its CreateCameraRay). */
 typedef enum {
     CAMERA_PERSPECTIVE,
     CAMERA_ORTHOGRAPHIC,
+    CAMERA_FISHEYE,
+    CAMERA_ULTRA_WIDE_ANGLE,
+    CAMERA_OMNIMAX,
+    CAMERA_PANORAMIC,
+    CAMERA_CYLINDER_1, /* `cylinder 1` to `cylinder 4`, in that order */
+    CAMERA_CYLINDER_2,
+    CAMERA_CYLINDER_3,
+    CAMERA_CYLINDER_4,
+    CAMERA_SPHERICAL,
 } CameraKind;
 
 /* The camera after POV-Ray's parse rules (defaults, angle, look_at, sky and
@@ -594,6 +659,8 @@ typedef struct {
     CameraKind kind;
     SourcePos pos;
     Vec3 location, direction, up, right;
+    double angle;                  /* degrees; the field of view of the types after orthographic (90 by default) */
+    double h_angle, v_angle;       /* spherical: horizontal and vertical fields of view (360, 180) */
     const ApproxNote *approx; /* focal blur, camera normal */
 } SceneCamera;
 

@@ -355,7 +355,7 @@ static int is_vector_keyword(int kw)
 {
     switch (kw) {
     case KW_x: case KW_y: case KW_z: case KW_t: case KW_u: case KW_v:
-    case KW_vcross: case KW_vnormalize: case KW_vrotate: case KW_vaxis_rotate:
+    case KW_vcross: case KW_vnormalize: case KW_vrotate: case KW_vaxis_rotate: case KW_min_extent: case KW_max_extent:
         return 1;
     default:
         return 0;
@@ -732,12 +732,45 @@ vector:
 static int is_unsupported_function(int kw)
 {
     switch (kw) {
-    case KW_trace: case KW_inside: case KW_min_extent: case KW_max_extent: case KW_vturbulence:
+    case KW_trace: case KW_inside: case KW_vturbulence:
     case KW_function:
         return 1;
     default:
         return 0;
     }
+}
+
+/* min_extent(OBJECT) and max_extent(OBJECT) (after the keyword at t):
+ * the corners of POV-Ray's bounding box of a declared object where hstrace
+ * keeps it as POV-Ray does (SceneObject.has_extent: text), the far one
+ * summed in single precision as POV-Ray sums it; of any other object, not
+ * supported (deferred in a declaration, as the other functions). */
+static void extent_factor(Parser *p, const Token *t, double e[5], int *terms)
+{
+    Token open = *tok_next(p);
+    if (!tok_is_punct(&open, '('))
+        tok_fail_expected(p, &open, "'(' after the function's name");
+    Token id = *tok_next(p);
+    Symbol *s = id.type == TK_WORD && id.kw < 0 ? tok_symbol_of(p, &id) : NULL;
+    const SceneObject *o = s && s->value.kind == VAL_OBJECT ? s->value.object : NULL;
+    if (!o || !o->has_extent) {
+        tok_unget(p);
+        tok_skip_balanced_group(p, &open);
+        char what[80];
+        snprintf(what, sizeof what, "'%s' of an object other than text", tok_keyword_name(t->kw));
+        const char *kept = tok_temp_strndup(p, what, strlen(what));
+        if (!tok_defer_unsupported(p, kept, t->pos))
+            tok_unsupported_at(p, t->pos, kept);
+        fill(e, *terms, 0.0);
+        return;
+    }
+    tok_expect_punct(p, ')', "the object");
+    fill(e, 5, 0.0);
+    for (int i = 0; i < 3; i++)
+        e[i] = t->kw == KW_min_extent ? (double)o->extent_lower[i]
+                                      : (double)(float)(o->extent_lower[i] + o->extent_lengths[i]);
+    if (*terms < 3)
+        *terms = 3;
 }
 
 static void parse_num_factor(Parser *p, double e[5], int *terms)
@@ -767,6 +800,8 @@ static void parse_num_factor(Parser *p, double e[5], int *terms)
         expr_colour(p, &c, 1);
         e[0] = c.r; e[1] = c.g; e[2] = c.b; e[3] = c.filter; e[4] = c.transmit;
         *terms = 5;
+    } else if (t.type == TK_WORD && (t.kw == KW_min_extent || t.kw == KW_max_extent)) {
+        extent_factor(p, &t, e, terms);
     } else if (t.type == TK_WORD && is_unsupported_function(t.kw)) {
         char what[64];
         snprintf(what, sizeof what, "'%s'", tok_keyword_name(t.kw));
@@ -1063,6 +1098,12 @@ static void compose_checked(Parser *p, Transform *tr, const Transform *u, Source
 
 int expr_transform_item(Parser *p, const Token *t, Transform *tr)
 {
+    Transform step;
+    return expr_transform_step(p, t, tr, &step);
+}
+
+int expr_transform_step(Parser *p, const Token *t, Transform *tr, Transform *step)
+{
     if (t->type != TK_WORD)
         return 0;
     Token at = *t;
@@ -1098,6 +1139,7 @@ int expr_transform_item(Parser *p, const Token *t, Transform *tr)
         return 0;
     }
     compose_checked(p, tr, &u, at.pos);
+    *step = u;
     return 1;
 }
 

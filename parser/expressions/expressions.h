@@ -34,6 +34,9 @@ void expr_comma(Parser *p); /* an optional ',' */
 /* translate/rotate/scale/matrix/transform at t (already read): composes
  * into tr and returns 1, or returns 0 when t is no transform. */
 int expr_transform_item(Parser *p, const Token *t, Transform *tr);
+/* The same, the transform read also in *step (text's bounding box follows
+ * each one, min_extent) */
+int expr_transform_step(Parser *p, const Token *t, Transform *tr, Transform *step);
 void expr_transform_block(Parser *p, Transform *tr); /* after 'transform' */
 
 #endif

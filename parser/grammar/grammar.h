@@ -21,6 +21,7 @@ typedef struct GramState {
     int default_changed;        /* #default was used */
     /* POV-Ray's gammaMode while parsing (image_gamma.c) */
     enum { GAMMA_MODE_NONE, GAMMA_MODE_37_IMPLIED, GAMMA_MODE_36, GAMMA_MODE_37 } gamma_mode;
+    int charset; /* global_settings' charset so far (truetype_font.h's TTF_CHARSET_...) */
 } GramState;
 
 /* A value as POV-Ray stores it in a float (SNGL): map values, frequency,
@@ -131,6 +132,17 @@ SceneObject *gram_poly(Parser *p, const Token *kw, int order);
 SceneObject *gram_superellipsoid(Parser *p, const Token *kw);
 SceneObject *gram_lathe(Parser *p, const Token *kw);
 SceneObject *gram_sor(Parser *p, const Token *kw);
+SceneObject *gram_text(Parser *p, const Token *kw); /* parse_text.c */
+/* object_extent.c: POV-Ray's BBox of an object (SceneObject.has_extent):
+ * set from a minimum and maximum, read back as them, carried through one
+ * transform written on the object (nothing where it has none). */
+void gram_extent_from_min_max(SceneObject *o, const double min[3], const double max[3]);
+void gram_extent_min_max(const SceneObject *o, double min[3], double max[3]);
+void gram_extent_transform(SceneObject *o, const Transform *t);
+/* A union's or CSG object's box from its parts' (CSG::Compute_BBox), where
+ * every part it takes has one. */
+void gram_csg_extent(SceneObject *o);
+SceneObject *gram_blob(Parser *p, const Token *kw);
 /* A 2-D vector (POV-Ray's Parse_UV_Vect: a float f stands for <f, f>). */
 void gram_uv_vector(Parser *p, double out[2]);
 
@@ -138,7 +150,14 @@ void gram_uv_vector(Parser *p, double out[2]);
 void gram_camera(Parser *p, const Token *t, SceneCamera *cam);
 void gram_default_camera(SceneCamera *cam);
 SceneLight *gram_light_source(Parser *p, const Token *t);
-void gram_transform_light(SceneLight *l, const Transform *tr);
+/* A light's transform, which moves its looks_like object too (a copy: a
+ * declared light's object is shared). */
+void gram_transform_light(Parser *p, SceneLight *l, const Transform *tr);
+/* A copy of object o's top (and interior) that may be changed: o is shared. */
+SceneObject *gram_copy_object(Parser *p, const SceneObject *o);
+/* Appends transform `tr` to what places object `o` (as a transform written
+ * after its other modifiers). */
+void gram_transform_object(SceneObject *o, const Transform *tr);
 /* A top-level union: its light_sources (and its inner unions') go to the
  * scene's lights with the transforms above them applied. */
 void gram_instantiate_union_lights(Parser *p, const SceneObject *o, const Transform *outer, int depth);

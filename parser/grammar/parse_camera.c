@@ -17,6 +17,25 @@ void gram_default_camera(SceneCamera *cam)
     cam->direction = v3(0, 0, 1);
     cam->up = v3(0, 1, 0);
     cam->right = v3(1.33, 0, 0);
+    cam->angle = 90.0; /* POV-Ray's Camera::Init */
+    cam->h_angle = 360.0;
+    cam->v_angle = 180.0;
+}
+
+/* The camera type a keyword names, -1 for none (cylinder's number follows). */
+static int camera_kind_of(int kw)
+{
+    switch (kw) {
+    case KW_perspective: return CAMERA_PERSPECTIVE;
+    case KW_orthographic: return CAMERA_ORTHOGRAPHIC;
+    case KW_fisheye: return CAMERA_FISHEYE;
+    case KW_ultra_wide_angle: return CAMERA_ULTRA_WIDE_ANGLE;
+    case KW_omnimax: return CAMERA_OMNIMAX;
+    case KW_panoramic: return CAMERA_PANORAMIC;
+    case KW_cylinder: return CAMERA_CYLINDER_1;
+    case KW_spherical: return CAMERA_SPHERICAL;
+    default: return -1;
+    }
 }
 
 static void transform_camera(SceneCamera *cam, const Transform *tr)
@@ -67,17 +86,27 @@ void gram_camera(Parser *p, const Token *kw, SceneCamera *cam)
     double angle = 0.0;
     Token angle_tok = *kw;
 
-    t = tok_next(p);
-    if (tok_is_kw(t, KW_perspective))
-        c.kind = CAMERA_PERSPECTIVE;
-    else if (tok_is_kw(t, KW_orthographic))
-        c.kind = CAMERA_ORTHOGRAPHIC;
-    else if (t->type == TK_WORD && (t->kw == KW_fisheye || t->kw == KW_ultra_wide_angle || t->kw == KW_omnimax ||
-                                    t->kw == KW_panoramic || t->kw == KW_spherical || t->kw == KW_cylinder ||
-                                    t->kw == KW_mesh_camera))
-        tok_unsupported(p, t);
-    else
-        tok_unget(p);
+    /* The type, first; POV-Ray takes the last of several in a row. */
+    for (;;) {
+        t = tok_next(p);
+        int kind = t->type == TK_WORD ? camera_kind_of(t->kw) : -1;
+        if (kind < 0) {
+            if (tok_is_kw(t, KW_mesh_camera))
+                tok_unsupported(p, t);
+            tok_unget(p);
+            break;
+        }
+        if (t->kw == KW_cylinder) {
+            SourcePos at = tok_peek(p)->pos;
+            double n = expr_float(p);
+            /* POV-Ray truncates the number to an integer */
+            if (!(n > 0.0 && n < 5.0) || (int)n < 1)
+                tok_fail(p, at, "invalid cylinder camera type, valid are types 1 to 4 (POV-Ray: \"Invalid cylinder "
+                                "camera type, valid are types 1 to 4.\")");
+            kind = CAMERA_CYLINDER_1 + ((int)n - 1);
+        }
+        c.kind = (CameraKind)kind;
+    }
 
     for (;;) {
         t = tok_next(p);
@@ -94,6 +123,18 @@ void gram_camera(Parser *p, const Token *kw, SceneCamera *cam)
         case KW_sky: sky = expr_vector(p); break;
         case KW_angle:
             angle_tok = *t;
+            if (c.kind == CAMERA_SPHERICAL) {
+                /* POV-Ray's Parse_Camera: the horizontal angle, then
+                 * optionally the vertical one (half the horizontal) */
+                c.h_angle = expr_float(p);
+                if (c.h_angle < 0.0)
+                    tok_fail(p, t->pos, "negative horizontal angle not allowed");
+                expr_comma(p);
+                c.v_angle = expr_starts_float(p, tok_peek(p)) ? expr_float(p) : c.h_angle * 0.5;
+                if (c.v_angle < 0.0)
+                    tok_fail(p, t->pos, "negative vertical angle not allowed");
+                break;
+            }
             if (c.kind == CAMERA_ORTHOGRAPHIC && !expr_starts_float(p, tok_peek(p)))
                 angle = 0.0;
             else
@@ -103,7 +144,7 @@ void gram_camera(Parser *p, const Token *kw, SceneCamera *cam)
             had_angle = 1;
             break;
         case KW_perspective: case KW_orthographic: case KW_fisheye: case KW_ultra_wide_angle:
-        case KW_omnimax: case KW_panoramic: case KW_spherical: case KW_cylinder:
+        case KW_omnimax: case KW_panoramic: case KW_spherical: case KW_cylinder: case KW_mesh_camera:
             tok_fail(p, t->pos, "the camera type must come first in 'camera'");
         case KW_aperture: case KW_blur_samples: case KW_focal_point: case KW_confidence: case KW_variance:
             /* focal blur: a pinhole camera stands for it */
@@ -131,7 +172,9 @@ void gram_camera(Parser *p, const Token *kw, SceneCamera *cam)
         }
     }
 
-    if (had_angle) {
+    if (had_angle)
+        c.angle = angle;
+    if (had_angle && (c.kind == CAMERA_PERSPECTIVE || c.kind == CAMERA_ORTHOGRAPHIC)) {
         if (angle >= 180.0)
             tok_fail(p, angle_tok.pos, "viewing angle has to be smaller than 180 degrees");
         if (angle > 0.0) {
@@ -170,12 +213,49 @@ void gram_camera(Parser *p, const Token *kw, SceneCamera *cam)
     *cam = c;
 }
 
-void gram_transform_light(SceneLight *l, const Transform *tr)
+void gram_transform_light(Parser *p, SceneLight *l, const Transform *tr)
 {
     l->location = transform_point(tr, l->location);
     l->point_at = transform_point(tr, l->point_at);
     l->area.axis1 = transform_direction(tr, l->area.axis1);
     l->area.axis2 = transform_direction(tr, l->area.axis2);
+    if (l->looks_like) {
+        SceneObject *o = tok_scene_alloc(p, sizeof *o);
+        *o = *l->looks_like;
+        gram_transform_object(o, tr);
+        /* POV-Ray moves the child with Translate_Object when the light is
+         * translated, else with Transform_Object, which makes a sphere its
+         * ellipsoid whatever the transform */
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                if (tr->m[i][j] != (i == j ? 1.0 : 0.0))
+                    o->general_transform = 1;
+        l->looks_like = o;
+    }
+}
+
+/* looks_like { OBJECT MODIFIERS }, after the keyword, as POV-Ray's
+ * Parse_Light_Source reads it: the object as written, then moved to where
+ * the light is at this point, then the modifiers written after it in the
+ * block; it casts no shadow. */
+static void light_looks_like(Parser *p, SceneLight *l, const Token *kw)
+{
+    if (l->looks_like)
+        tok_fail(p, kw->pos, "only one looks_like allowed per light_source (POV-Ray: \"Only one looks_like allowed "
+                             "per light_source.\")");
+    tok_begin_block(p, "looks_like");
+    Token t = *tok_next(p);
+    SceneObject *o = NULL;
+    SceneLight *inner = NULL;
+    if (!gram_object(p, &t, &o, &inner) || !o)
+        tok_fail_expected(p, &t, "an object in 'looks_like'");
+    Transform to_light;
+    transform_identity(&to_light);
+    transform_translate(&to_light, l->location);
+    gram_transform_object(o, &to_light);
+    gram_object_mods(p, o, "looks_like");
+    o->no_shadow = 1;
+    l->looks_like = o;
 }
 
 SceneLight *gram_light_source(Parser *p, const Token *kw)
@@ -200,11 +280,12 @@ SceneLight *gram_light_source(Parser *p, const Token *kw)
         Transform tr;
         transform_identity(&tr);
         if (expr_transform_item(p, t, &tr)) {
-            gram_transform_light(l, &tr);
+            gram_transform_light(p, l, &tr);
             continue;
         }
         switch (t->type == TK_WORD ? t->kw : -1) {
         case KW_shadowless: l->shadowless = 1; break;
+        case KW_looks_like: light_looks_like(p, l, t); break;
         case KW_parallel: l->kind = LIGHT_PARALLEL; break;
         case KW_spotlight: /* POV-Ray's defaults, reset each time the keyword is written */
             l->beam = BEAM_SPOT;
@@ -303,7 +384,7 @@ SceneLight *gram_light_source(Parser *p, const Token *kw)
             break;
         default:
             if (t->type == TK_WORD && t->kw >= 0)
-                tok_unsupported(p, t); /* looks_like, projected_through, fill_light, ... */
+                tok_unsupported(p, t); /* projected_through, fill_light, ... */
             tok_fail_expected(p, t, "a light_source item or '}' in 'light_source'");
         }
     }

@@ -20,13 +20,13 @@ int gram_is_object_keyword(int kw)
     case KW_polygon: case KW_triangle: case KW_smooth_triangle: case KW_mesh: case KW_mesh2:
     case KW_box: case KW_plane: case KW_union: case KW_object:
     case KW_height_field: case KW_bicubic_patch: case KW_prism:
-    case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus:
+    case KW_text:
+    case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus: case KW_blob:
     case KW_intersection: case KW_difference: case KW_merge: case KW_quadric: case KW_poly: case KW_cubic:
     case KW_quartic: case KW_superellipsoid: case KW_lathe: case KW_sor:
     /* POV-Ray objects hstrace cannot render */
-    case KW_blob:
     case KW_sphere_sweep:
-    case KW_text: case KW_julia_fractal:
+    case KW_julia_fractal:
     case KW_isosurface: case KW_parametric: case KW_polynomial: case KW_ovus: case KW_light_group:
         return 1;
     default:
@@ -51,8 +51,8 @@ static SceneObject *new_object(Parser *p, ObjectKind kind, const Token *t)
 static const SceneObject *first_non_solid(const SceneObject *o)
 {
     switch (o->kind) {
-    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: case OBJ_QUADRIC:
-    case OBJ_POLY: case OBJ_SUPERELLIPSOID: case OBJ_LATHE: case OBJ_SOR:
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BLOB: case OBJ_BOX: case OBJ_PLANE: case OBJ_GLYPH:
+    case OBJ_QUADRIC: case OBJ_POLY: case OBJ_SUPERELLIPSOID: case OBJ_LATHE: case OBJ_SOR:
         return NULL;
     case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
         /* the parser bounds the depth (SceneObject.depth) */
@@ -84,12 +84,14 @@ static const char *object_kind_name(ObjectKind k)
     case OBJ_SUPERELLIPSOID: return "superellipsoid";
     case OBJ_LATHE: return "lathe";
     case OBJ_SOR: return "sor";
+    case OBJ_BLOB: return "blob";
     case OBJ_INTERSECTION: return "intersection";
     case OBJ_DIFFERENCE: return "difference";
     case OBJ_MERGE: return "merge";
     case OBJ_HEIGHT_FIELD: return "height_field";
     case OBJ_BICUBIC_PATCH: return "bicubic_patch";
     case OBJ_PRISM: return "prism";
+    case OBJ_GLYPH: return "text";
     }
     return "object";
 }
@@ -345,7 +347,9 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
             return;
         }
         Token at = *t;
-        if (expr_transform_item(p, t, &o->transform)) {
+        Transform step;
+        if (expr_transform_step(p, t, &o->transform, &step)) {
+            gram_extent_transform(o, &step); /* POV-Ray's Recompute_BBox, step by step */
             /* what POV-Ray's analytic shapes take into their own parameters
              * (Translate, Rotate, a uniform Scale) and what they do not */
             if (at.kw == KW_matrix || at.kw == KW_transform || !transform_is_similarity(&o->transform))
@@ -388,8 +392,8 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         case KW_sturm: o->sturm = optional_bool(p) ? 1u : 0u; break;
         case KW_split_union: skip_optional_float(p); break;
         case KW_hierarchy: /* POV-Ray's bounding inside a height field, mesh or CSG: no effect on the image */
-            if (o->kind != OBJ_HEIGHT_FIELD && o->kind != OBJ_MESH && o->kind != OBJ_UNION)
-                tok_fail(p, at.pos, "Keyword 'hierarchy' cannot be used with this object (height fields, meshes and CSG take it).");
+            if (o->kind != OBJ_HEIGHT_FIELD && o->kind != OBJ_MESH && o->kind != OBJ_UNION && o->kind != OBJ_BLOB)
+                tok_fail(p, at.pos, "Keyword 'hierarchy' cannot be used with this object (height fields, meshes, blobs and CSG take it).");
             (void)optional_bool(p);
             break;
         case KW_uv_mapping: uv = 1; break; /* every texture of the object, at the end */
@@ -425,6 +429,13 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
 }
 
 void gram_object_mods(Parser *p, SceneObject *o, const char *what) { parse_object_mods(p, o, what); }
+
+void gram_transform_object(SceneObject *o, const Transform *tr)
+{
+    transform_compose(&o->transform, tr);
+    if (!transform_is_similarity(&o->transform))
+        o->general_transform = 1;
+}
 
 static Vec3 *vec3_array(Parser *p, const TempVec *v)
 {
@@ -1042,6 +1053,7 @@ static SceneObject *parse_children(Parser *p, const Token *kw, ObjectKind kind, 
         o->u.csg.lights = l;
         o->u.csg.light_slot = slot;
     }
+    gram_csg_extent(o); /* min_extent's box, before the modifiers move it */
     parse_object_mods(p, o, name);
     return o;
 }
@@ -1057,7 +1069,7 @@ static void parse_light_object_mods(Parser *p, SceneLight *l)
         transform_identity(&tr);
         if (!expr_transform_item(p, m, &tr))
             tok_fail_expected(p, m, "a transform or '}' after a light_source in 'object'");
-        gram_transform_light(l, &tr);
+        gram_transform_light(p, l, &tr);
     }
 }
 
@@ -1077,6 +1089,8 @@ static SceneObject *copy_declared_object(Parser *p, const SceneObject *declared)
     return o;
 }
 
+SceneObject *gram_copy_object(Parser *p, const SceneObject *o) { return copy_declared_object(p, o); }
+
 /* Appends the light_sources of union `o` and of the unions inside it to the
  * scene's lights, in world space: `outer` is the transform of o's parents.
  * Order as POV-Ray's Post_Process: depth first, as written. */
@@ -1091,7 +1105,13 @@ void gram_instantiate_union_lights(Parser *p, const SceneObject *o, const Transf
         for (; next_light < o->u.csg.nlights && o->u.csg.light_slot[next_light] == c; next_light++) {
             SceneLight *l = tok_tvec_push(p, &p->gram->lights);
             *l = o->u.csg.lights[next_light];
-            gram_transform_light(l, &world);
+            gram_transform_light(p, l, &world);
+            if (l->looks_like) {
+                SceneObject *shown = copy_declared_object(p, l->looks_like); /* a light's own */
+                if (!shown->texture && p->gram->default_changed)
+                    shown->texture = gram_default_texture(p);
+                *(SceneObject **)tok_tvec_push(p, &p->gram->objects) = shown;
+            }
         }
         if (c < o->u.csg.nchildren)
             gram_instantiate_union_lights(p, o->u.csg.children[c], &world, depth + 1);
@@ -1215,6 +1235,7 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_height_field: *obj = gram_height_field(p, &kw); break;
     case KW_bicubic_patch: *obj = gram_bicubic_patch(p, &kw); break;
     case KW_prism: *obj = gram_prism(p, &kw); break;
+    case KW_text: *obj = gram_text(p, &kw); break;
     case KW_sphere: *obj = parse_sphere(p, &kw); break;
     case KW_disc: *obj = parse_disc(p, &kw); break;
     case KW_cylinder: *obj = parse_cone(p, &kw, 1); break;
@@ -1227,6 +1248,7 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_superellipsoid: *obj = gram_superellipsoid(p, &kw); break;
     case KW_lathe: *obj = gram_lathe(p, &kw); break;
     case KW_sor: *obj = gram_sor(p, &kw); break;
+    case KW_blob: *obj = gram_blob(p, &kw); break;
     case KW_union: *obj = parse_children(p, &kw, OBJ_UNION, "union"); break;
     case KW_intersection: *obj = parse_children(p, &kw, OBJ_INTERSECTION, "intersection"); break;
     case KW_difference: *obj = parse_children(p, &kw, OBJ_DIFFERENCE, "difference"); break;

@@ -9,6 +9,7 @@
 
 #include "keywords.h"
 #include "grammar.h"
+#include "truetype_font.h"
 
 /* ---- #declare ------------------------------------------------------------ */
 
@@ -18,7 +19,7 @@ static int is_unsupported_value_keyword(int kw)
     case KW_function: case KW_spline: case KW_pattern: case KW_media: case KW_density:
     case KW_fog: case KW_rainbow:
     case KW_density_map: case KW_photons: case KW_radiosity: case KW_interior_texture:
-    case KW_trace: case KW_min_extent: case KW_max_extent: case KW_vturbulence: case KW_file_exists:
+    case KW_trace: case KW_vturbulence: case KW_file_exists:
     case KW_datetime: case KW_now:
         return 1;
     default:
@@ -451,7 +452,19 @@ static void parse_global_settings(Parser *p)
             expr_colour(p, &c, 0);
             g->ambient_light = c;
             break;
-        case KW_charset: (void)tok_next(p); break;
+        case KW_charset: {
+            /* how later strings are read (String_To_UCS2): text's characters */
+            Token *cs = tok_next(p);
+            if (tok_is_kw(cs, KW_utf8))
+                p->gram->charset = TTF_CHARSET_UTF8;
+            else if (tok_is_kw(cs, KW_sys))
+                p->gram->charset = TTF_CHARSET_SYS;
+            else if (tok_is_kw(cs, KW_ascii))
+                p->gram->charset = TTF_CHARSET_ASCII;
+            else
+                tok_fail_expected(p, cs, "ascii, utf8 or sys");
+            break;
+        }
         case KW_radiosity: case KW_photons: case KW_subsurface:
             /* Not modelled: parsed past and ignored, so scenes written for
              * POV-Ray still load (their lighting will differ). */
@@ -501,6 +514,8 @@ static void add_object(Parser *p, SceneObject *o, SceneLight *l)
 {
     if (l) {
         *(SceneLight *)tok_tvec_push(p, &p->gram->lights) = *l;
+        if (l->looks_like) /* an object of the scene, where the light is */
+            add_object(p, gram_copy_object(p, l->looks_like), NULL);
         return;
     }
     if (!o->texture && p->gram->default_changed)

@@ -1414,8 +1414,10 @@ unsigned bvh_node_hits_plain(const BvhNode *n, const BvhRay *r, double t0, doubl
     return mask;
 }
 
-int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit, void *user,
-                    uint64_t *nodes)
+/* bvh_shapes_walk and bvh_shapes_nearest_walk: `nearest_first` pushes a
+ * node's children met so that the nearest entered is visited first. */
+static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit,
+                              void *user, uint64_t *nodes, int nearest_first, int avx2)
 {
     if (!b || b->nnodes == 0)
         return 0;
@@ -1435,12 +1437,28 @@ int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hid
             const BvhNode *n = &b->nodes[c];
             double enter[BVH_WIDTH];
             ++*nodes;
+#if BVH_HAVE_AVX2_PATH
+            unsigned mask = avx2 ? bvh_node_hits_avx2(n, &br, 0.0, *tmax, enter)
+                                 : bvh_node_hits(n, &br, 0.0, *tmax, enter);
+#else
             unsigned mask = bvh_node_hits(n, &br, 0.0, *tmax, enter);
+#endif
+            int first = sp;
             for (int k = BVH_WIDTH - 1; k >= 0; k--)
                 if ((mask & (1u << k)) && n->child[k] != BVH_EMPTY) {
                     stack[sp] = n->child[k];
                     enter_at[sp++] = enter[k];
                 }
+            if (nearest_first) /* farthest lowest on the stack: insertion sort of at most BVH_WIDTH */
+                for (int i = first + 1; i < sp; i++)
+                    for (int j = i; j > first && enter_at[j - 1] < enter_at[j]; j--) {
+                        double e = enter_at[j];
+                        uint32_t x = stack[j];
+                        enter_at[j] = enter_at[j - 1];
+                        stack[j] = stack[j - 1];
+                        enter_at[j - 1] = e;
+                        stack[j - 1] = x;
+                    }
             continue;
         }
         uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
@@ -1449,4 +1467,38 @@ int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hid
                 return 1;
     }
     return 0;
+}
+
+/* The walks with the AVX2 node test, inlined where the processor has it
+ * (the same answers: bvh.h). */
+#if BVH_HAVE_AVX2_PATH
+__attribute__((target("avx2"))) static int shapes_walk_avx2(const Bvh *b, Vec3 org, Vec3 dir, double *tmax,
+                                                            unsigned hide, BvhShapeVisitor visit, void *user,
+                                                            uint64_t *nodes, int nearest_first)
+{
+    return nearest_first ? shapes_walk(b, org, dir, tmax, hide, visit, user, nodes, 1, 1)
+                         : shapes_walk(b, org, dir, tmax, hide, visit, user, nodes, 0, 1);
+}
+#endif
+
+int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit, void *user,
+                    uint64_t *nodes, int avx2)
+{
+#if BVH_HAVE_AVX2_PATH
+    if (avx2)
+        return shapes_walk_avx2(b, org, dir, tmax, hide, visit, user, nodes, 0);
+#endif
+    (void)avx2;
+    return shapes_walk(b, org, dir, tmax, hide, visit, user, nodes, 0, 0);
+}
+
+int bvh_shapes_nearest_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit,
+                            void *user, uint64_t *nodes, int avx2)
+{
+#if BVH_HAVE_AVX2_PATH
+    if (avx2)
+        return shapes_walk_avx2(b, org, dir, tmax, hide, visit, user, nodes, 1);
+#endif
+    (void)avx2;
+    return shapes_walk(b, org, dir, tmax, hide, visit, user, nodes, 1, 0);
 }

@@ -100,10 +100,19 @@ struct Bvh {
  * whose box the ray org + t dir meets for some t in [0, tmax]
  * (conservatively), its material not hiding it by `hide` (HIDE_*), until
  * visit returns 1 (then 1); *nodes counts the boxes tested. visit may
- * lower *tmax (a nearest-hit query: farther boxes are then passed over). */
+ * lower *tmax (a nearest-hit query: farther boxes are then passed over).
+ * avx2: the boxes tested with bvh_node_hits_avx2 (the same answers), where
+ * the processor has it (Tracer.avx2). */
 typedef int (*BvhShapeVisitor)(void *user, int shape, double *tmax);
 int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit, void *user,
-                    uint64_t *nodes);
+                    uint64_t *nodes, int avx2);
+/* The same for a nearest-hit query (visit lowers *tmax): each node's
+ * children are visited nearest entered first, so that farther ones are
+ * passed over sooner. The visits' order is not bvh_shapes_walk's: the
+ * visitor must not depend on it (tracer.c's nearer_shape breaks ties by
+ * the shapes' order). */
+int bvh_shapes_nearest_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit,
+                            void *user, uint64_t *nodes, int avx2);
 
 /* The exact test of the polygon leaf item k holds (intersect.h): on its
  * packed copy where there is one, else the polygon's own test; the same

@@ -422,7 +422,8 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     if (w->nshapes > 0) {
         if (tr->bvh && tr->bvh->shapes) {
             double limit = plane_t;
-            bvh_shapes_walk(tr->bvh->shapes, org, dir, &limit, tr->hide, nearer_shape, &ns, &tr->stats.nodes_visited);
+            bvh_shapes_nearest_walk(tr->bvh->shapes, org, dir, &limit, tr->hide, nearer_shape, &ns,
+                                    &tr->stats.nodes_visited, tr->avx2);
         } else {
             for (int i = 0; i < w->nshapes; i++) {
                 double limit = ns.best;

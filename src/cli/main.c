@@ -11,6 +11,7 @@
 
 #include "config.h"
 #include "aov.h"
+#include "camera.h"
 #include "clock.h"
 #include "colour.h"
 #include "compare.h"
@@ -283,7 +284,7 @@ static int build_world(Frame *f, const Options *o)
 static int prepare_shadows(Frame *f, const Options *o, int distributed)
 {
     ShadowSetup setup = { &f->world, &f->grid, &f->bvh,
-                          f->world.camera.kind == CAMERA_ORTHOGRAPHIC ? NULL : &f->world.camera.location,
+                          camera_has_one_origin(&f->world.camera) ? &f->world.camera.location : NULL,
                           o->width, o->height, f->threads, o->quality >= 4, o->volumes_always, o->nth,
                           o->plane_precision, distributed ? mpi_job_broadcast : NULL, mpi_job_rank() == 0 };
     char err[1024];

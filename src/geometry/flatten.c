@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "big_memory.h"
+#include "blob.h"
 #include "clock.h"
 #include "memory_budget.h"
 #include "parallel.h"
@@ -21,6 +22,7 @@
 #include "lathe.h"
 #include "quadric.h"
 #include "sor.h"
+#include "text.h"
 #include "world_estimate.h"
 
 /* add_material's memo: 2^6 materials made lately, by a hash of what made
@@ -1010,6 +1012,60 @@ static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, 
     return 0;
 }
 
+/* A glyph of a text object (text.h), placed by its transforms (POV-Ray's
+ * TrueType keeps its outline and a transform). */
+static int flatten_glyph(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_GLYPH, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.glyph.glyph = o->u.glyph.glyph;
+    s->u.glyph.depth = o->u.glyph.depth;
+    s->max_hits = glyph_max_hits(o->u.glyph.glyph);
+    if (s->max_hits > SHAPE_MAX_HITS) {
+        snprintf(b->message, sizeof b->message,
+                 "a glyph of this text has up to %d surfaces along a line; hstrace takes %d at most", s->max_hits,
+                 SHAPE_MAX_HITS);
+        return -1;
+    }
+    shape_placed(b, s);
+    return 0;
+}
+
+/* A blob, in its own space, carried by every transform (Blob::Transform
+ * makes it a transformed one at the first). */
+static int flatten_blob(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    World *w = b->w;
+    struct Blob **list = realloc(w->blobs, sizeof *list * (size_t)(w->nblobs + 1));
+    if (!list) {
+        b->failed = 1;
+        return -1;
+    }
+    w->blobs = list;
+    struct Blob *blob = blob_make(o->u.blob.components, o->u.blob.ncomponents, o->u.blob.threshold);
+    if (!blob) {
+        b->failed = 1;
+        return -1;
+    }
+    w->blobs[w->nblobs++] = blob;
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_BLOB, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.blob.blob = blob;
+    s->u.blob.sturm = o->sturm;
+    /* up to four crossings in each interval between two of its
+     * components' boundaries */
+    long most = 8L * blob->nelements;
+    s->max_hits = most < SHAPE_MAX_HITS ? (int)most : SHAPE_MAX_HITS;
+    shape_placed(b, s);
+    return 0;
+}
+
 /* A quadric: its coefficients carried to world space by every transform
  * (quadric.h). */
 static int flatten_quadric(Builder *b, const SceneObject *o, const Inherited *in, int material)
@@ -1073,7 +1129,8 @@ static int flatten_lathe(Builder *b, const SceneObject *o, const Inherited *in, 
     s->u.lathe.sturm = o->sturm;
     /* a root of the segment's polynomial per crossing: its degree */
     const int roots = o->u.lathe.spline == SPLINE_LINEAR ? 2 : o->u.lathe.spline == SPLINE_QUADRATIC ? 4 : 6;
-    s->max_hits = o->u.lathe.nsegments > SHAPE_MAX_HITS / roots ? SHAPE_MAX_HITS : roots * o->u.lathe.nsegments;
+    const int most = SHAPE_NUMERIC_MAX_HITS;
+    s->max_hits = o->u.lathe.nsegments > most / roots ? most : roots * o->u.lathe.nsegments;
     lathe_place(s);
     shape_placed(b, s);
     return 0;
@@ -1092,7 +1149,8 @@ static int flatten_sor(Builder *b, const SceneObject *o, const Inherited *in, in
     s->u.sor.open = o->u.sor.open;
     s->u.sor.sturm = o->sturm;
     /* three crossings per segment's cubic, and the two discs */
-    s->max_hits = o->u.sor.nsegments > (SHAPE_MAX_HITS - 2) / 3 ? SHAPE_MAX_HITS : 3 * o->u.sor.nsegments + 2;
+    const int most = SHAPE_NUMERIC_MAX_HITS;
+    s->max_hits = o->u.sor.nsegments > (most - 2) / 3 ? most : 3 * o->u.sor.nsegments + 2;
     sor_place(s);
     shape_placed(b, s);
     return 0;
@@ -1609,6 +1667,8 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_DISC: return flatten_disc(b, o, &in, material);
     case OBJ_CONE: return flatten_cone(b, o, &in, material);
     case OBJ_TORUS: return flatten_torus(b, o, &in, material);
+    case OBJ_GLYPH: return flatten_glyph(b, o, &in, material);
+    case OBJ_BLOB: return flatten_blob(b, o, &in, material);
     case OBJ_QUADRIC: return flatten_quadric(b, o, &in, material);
     case OBJ_POLY: return flatten_poly(b, o, &in, material);
     case OBJ_SUPERELLIPSOID: return flatten_superellipsoid(b, o, &in, material);
@@ -1789,6 +1849,9 @@ int world_build_limited(World *w, const Scene *scene, int threads, const WorldLi
     w->camera.direction = scene->camera.direction;
     w->camera.up = scene->camera.up;
     w->camera.right = scene->camera.right;
+    w->camera.angle = scene->camera.angle;
+    w->camera.h_angle = scene->camera.h_angle;
+    w->camera.v_angle = scene->camera.v_angle;
     w->background_colour = rgb_of(&scene->background);
     w->background_filter = scene->background.filter;
     w->background_transmit = scene->background.transmit;
@@ -1847,6 +1910,9 @@ void world_free(World *w)
     free(w->sky);
     free(w->planes);
     free(w->shapes);
+    for (int i = 0; i < w->nblobs; i++)
+        blob_free(w->blobs[i]);
+    free(w->blobs);
     free(w->materials);
     free(w->maps);
     free(w->map_entries);

@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "blob.h"
 #include "csg.h"
 #include "polynomial.h"
 #include "poly.h"
@@ -14,6 +15,7 @@
 #include "quadric.h"
 #include "sor.h"
 #include "superellipsoid.h"
+#include "text.h"
 
 #define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
 #define POV_MAX_DISTANCE 1.0e7   /* POV-Ray's MAX_DISTANCE: farther crossings are not reported */
@@ -661,6 +663,12 @@ void shape_compute_bounds(Shape *s)
         lo = v3(-1.0001, -1.0001, -1.0001);
         hi = v3(1.0001, 1.0001, 1.0001);
         break;
+    case SHAPE_GLYPH:
+        glyph_local_bounds(s, &lo, &hi);
+        break;
+    case SHAPE_BLOB:
+        blob_bounds(s, &s->bbox_min, &s->bbox_max);
+        return;
     case SHAPE_TORUS: {
         double r1 = s->u.torus.minor, r2 = s->u.torus.major + s->u.torus.minor;
         lo = v3(-r2, -r1, -r2);
@@ -696,6 +704,8 @@ static int one_test(const Shape *s, Vec3 org, Vec3 u, double ulimit, ShapeHit *h
     case SHAPE_CSG: return csg_intersect_all(s, org, u, ulimit, hits);
     case SHAPE_BOX: return box_all(s, org, u, ulimit, hits);
     case SHAPE_PLANE: return plane_all(s, org, u, ulimit, hits);
+    case SHAPE_GLYPH: return glyph_intersect_all(s, org, u, ulimit, hits);
+    case SHAPE_BLOB: return blob_intersect_all(s, org, u, ulimit, hits);
     case SHAPE_QUADRIC: return quadric_all(s, org, u, ulimit, hits);
     case SHAPE_POLY: return poly_all(s, org, u, ulimit, hits);
     case SHAPE_SUPERELLIPSOID: return superellipsoid_all(s, org, u, ulimit, hits);
@@ -720,7 +730,7 @@ static int found_from_origin(ShapeKind k)
  * so on. A CSG part's are all of one test, as POV-Ray's CSG asks them. */
 static int crossings_cast_again(const Shape *s, Vec3 org, Vec3 u, double ulimit, ShapeHit *hits)
 {
-    ShapeHit one[SHAPE_MAX_HITS];
+    ShapeHit one[SHAPE_NUMERIC_MAX_HITS];
     int n = 0;
     double done = 0.0;
     Vec3 o = org;
@@ -791,6 +801,8 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_SUPERELLIPSOID: return superellipsoid_inside(s, p);
     case SHAPE_LATHE: return lathe_inside(s, p);
     case SHAPE_SOR: return sor_inside(s, p);
+    case SHAPE_GLYPH: return glyph_inside(s, p);
+    case SHAPE_BLOB: return blob_inside(s, p);
     }
     return 0;
 }
@@ -810,6 +822,8 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_SUPERELLIPSOID: return superellipsoid_normal(s, p);
     case SHAPE_LATHE: return lathe_normal(s, p, part);
     case SHAPE_SOR: return sor_normal(s, p, part);
+    case SHAPE_GLYPH: return glyph_normal(s, p, part);
+    case SHAPE_BLOB: return blob_normal(s, p);
     }
     return v3(0.0, 1.0, 0.0);
 }
@@ -833,6 +847,8 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_SUPERELLIPSOID: break;
     case SHAPE_LATHE: /* above */
     case SHAPE_SOR: break;
+    case SHAPE_GLYPH: break; /* POV-Ray 3.7's TrueType has no mapping of its own */
+    case SHAPE_BLOB: break; /* POV-Ray's blob has no uv mapping */
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }

@@ -17,7 +17,7 @@
  * objects (csg.h), where their inside matters; elsewhere a box is six
  * polygons and a plane an InfinitePlane (world.h). */
 typedef enum {
-    SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE,
+    SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE, SHAPE_GLYPH, SHAPE_BLOB,
     SHAPE_QUADRIC, /* quadric.h */
     SHAPE_POLY,    /* poly.h: poly, cubic, quartic */
     SHAPE_SUPERELLIPSOID, /* superellipsoid.h */
@@ -44,12 +44,20 @@ enum { SHAPE_SIDE = 0, SHAPE_CAP = 1, SHAPE_BASE = 2 };
  * 0: none decided, POV-Ray's own initial value). */
 enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_SIDE_Z1 };
 
-/* The most surfaces one ray can cross on one shape: four on a torus, the
- * sum of its parts' on a CSG object, which the world's build keeps within
- * this (Shape.max_hits). */
-#define SHAPE_MAX_HITS 256
+/* The most surfaces one ray can cross on one shape: four on a torus, one
+ * per line and two per curve of a glyph's outline (text.h), the sum of its
+ * parts' on a CSG object, which the world's build keeps within this
+ * (Shape.max_hits): room for a text of some 60 letters as a CSG part (a
+ * buffer of 96 KiB on the stack where one is kept). */
+#define SHAPE_MAX_HITS 4096
+/* The most crossings one test of a shape found numerically from the
+ * ray's origin reports (poly, superellipsoid, lathe, sor: shape.c casts
+ * the ray again past each, with a buffer of this many); a lathe or sor of
+ * more segments keeps its nearest crossings. */
+#define SHAPE_NUMERIC_MAX_HITS 256
 
 typedef struct Shape Shape;
+struct Blob;
 struct SplineSegment; /* scene.h: a lathe's segment */
 struct SorSegment;    /* scene.h: a sor's segment */
 
@@ -114,6 +122,12 @@ struct Shape {
             double major, minor;
             int sturm;
         } torus;
+        /* A blob (blob.h), in its own space; its components are the
+         * world's (World.blobs). sturm: POV-Ray's Sturm solver always. */
+        struct {
+            const struct Blob *blob;
+            int sturm;
+        } blob;
         /* A box between its corners lo <= hi, in world space or in its own
          * where transformed (POV-Ray's bounds, moved and scaled with the
          * box until a rotation or matrix gives it a transform). */
@@ -128,6 +142,11 @@ struct Shape {
             Vec3 normal;
             double distance;
         } plane;
+        /* A glyph of a text object (text.h), in its own space. */
+        struct {
+            const struct SceneGlyph *glyph;
+            double depth;
+        } glyph;
         /* A quadric's coefficients in world space, inverse applied, and
          * its bounds (quadric.h) */
         struct {

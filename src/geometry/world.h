@@ -118,6 +118,7 @@ typedef struct {
 typedef struct {
     CameraKind kind;
     Vec3 location, direction, up, right;
+    double angle, h_angle, v_angle; /* as in SceneCamera */
 } Camera;
 
 /* The box of one outline's points: the least and largest coordinates. */
@@ -191,6 +192,9 @@ typedef struct {
      * as it names any shape (ShapeHit.leaf) */
     Shape *shapes;
     int nparts;
+    /* The blobs' components (blob.h), one allocation per blob shape */
+    int nblobs;
+    struct Blob **blobs;
     int nmaterials;
     Material *materials;
     int nmaps;

@@ -44,6 +44,10 @@ typedef struct {
     RenderStats stats;
 } Worker;
 
+/* A pixel the camera traces no ray through (camera_ray): POV-Ray's
+ * TracePixel leaves it black and fully transparent. */
+static const Radiance UNTRACED_PIXEL = { 0.0, 0.0, 0.0, 1.0 };
+
 /* The counters the analysis channels' costs are differences of. */
 static uint64_t shadow_tests(const ShadeContext *ctx)
 {
@@ -70,11 +74,12 @@ static void trace_sample(void *user, double x, double y, AaColour *out)
     Ray ray;
     memset(&ray, 0, sizeof ray);
     ray.from.kind = HIT_NONE;
-    camera_ray_at(&u->job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
-    shade_camera_interiors(u->ctx, u->job->world, ray.org, &ray.inside);
-    Radiance c;
-    shade_trace(u->ctx, &ray, 1.0, 0, &c);
-    u->loop->camera_rays++;
+    Radiance c = UNTRACED_PIXEL;
+    if (camera_ray_at(&u->job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir)) {
+        shade_camera_interiors(u->ctx, u->job->world, ray.org, &ray.inside);
+        shade_trace(u->ctx, &ray, 1.0, 0, &c);
+        u->loop->camera_rays++;
+    }
     out->c[0] = (float)c.r;
     out->c[1] = (float)c.g;
     out->c[2] = (float)c.b;
@@ -145,15 +150,17 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
             Ray ray;
             memset(&ray, 0, sizeof ray);
             ray.from.kind = HIT_NONE;
-            camera_ray(&job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
-            shade_camera_interiors(ctx, job->world, ray.org, &ray.inside);
-            Radiance c;
+            int traced = camera_ray(&job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
+            Radiance c = UNTRACED_PIXEL;
             if (ctx->aov)
                 aov_pixel_begin(ctx->aov, shadow_tests(ctx), rays_traced(ctx, loop));
             shadow_pixel_begin(&ctx->shadow, x == wx0, y == wy0);
-            shade_trace(ctx, &ray, 1.0, 0, &c);
+            if (traced) {
+                shade_camera_interiors(ctx, job->world, ray.org, &ray.inside);
+                shade_trace(ctx, &ray, 1.0, 0, &c);
+                loop->camera_rays++;
+            }
             shadow_pixel_end(&ctx->shadow, x == wx0);
-            loop->camera_rays++;
             if (!inside)
                 continue;
             loop->pixels++;

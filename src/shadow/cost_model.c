@@ -197,8 +197,9 @@ static double time_gathering(const World *w, const Grid *g, const ShadowVolumes 
     int ncells[SEGMENTS], nseg = 0;
     for (int i = 0; cells && i < SEGMENTS; i++) {
         Vec3 org, dir;
-        camera_ray(&w->camera, width, height, (i % 8 * 2 + 1) * width / 16, (i / 8 * 2 + 1) * height / 16, &org,
-                   &dir);
+        if (!camera_ray(&w->camera, width, height, (i % 8 * 2 + 1) * width / 16, (i / 8 * 2 + 1) * height / 16,
+                        &org, &dir))
+            continue;
         Hit from = { HIT_NONE, -1, 0.0, org, -1, 0 }, hit;
         if (!trace_nearest(ctx.tracer, org, dir, HUGE_VAL, &from, &hit))
             continue;
@@ -267,7 +268,8 @@ static int calibrate(CostModel *m, const World *w, const Grid *g, const Bvh *bvh
         Vec3 org, dir;
         int px = (int)((i % SAMPLE_GRID + rng_unit(&rng)) * width / SAMPLE_GRID);
         int py = (int)((i / SAMPLE_GRID + rng_unit(&rng)) * height / SAMPLE_GRID);
-        camera_ray(&w->camera, width, height, px, py, &org, &dir);
+        if (!camera_ray(&w->camera, width, height, px, py, &org, &dir))
+            continue;
         Hit from = { HIT_NONE, -1, 0.0, org, -1, 0 }, hit;
         if (!trace_nearest(&tc, org, dir, HUGE_VAL, &from, &hit) || hit.kind != HIT_POLYGON)
             continue;

@@ -497,6 +497,98 @@ static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb,
     return 0;
 }
 
+/* The curved objects of a top cell, as gathered (light_buffer.h: LbCell.object). */
+typedef struct {
+    LbObject *c;
+    size_t n, cap;
+} ObjectList;
+
+static int by_object_near(const void *a, const void *b)
+{
+    const LbObject *x = a, *y = b;
+    if (x->near != y->near)
+        return x->near < y->near ? -1 : 1;
+    return x->shape < y->shape ? -1 : x->shape > y->shape;
+}
+
+/* Every curved object whose grown box meets the pyramid: the shapes'
+ * hierarchy walked with it (its boxes hold the objects' boxes), the list
+ * in order of the near bound. Objects that cast no shadow are left out
+ * (the shadow ray passes them over). */
+static int gather_objects(const LightBuffers *lbs, const LightBuffer *lb, const Pyramid *pyr, int face,
+                          ObjectList *out)
+{
+    const Bvh *b = lbs->bvh->shapes;
+    const World *w = lbs->world;
+    if (!b || b->nnodes == 0)
+        return 0;
+    const Vec3 at = lb->at;
+    uint32_t stack[BVH_STACK];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        uint32_t c = stack[--sp];
+        if (!bvh_is_leaf(c)) {
+            const BvhNode *node = &b->nodes[c];
+            for (int k = BVH_WIDTH - 1; k >= 0; k--) {
+                if (node->child[k] == BVH_EMPTY)
+                    continue;
+                Vec3 lo = v3(node->lo[0][k], node->lo[1][k], node->lo[2][k]);
+                Vec3 hi = v3(node->hi[0][k], node->hi[1][k], node->hi[2][k]);
+                /* the node's box grown as its objects' are (at least) */
+                double g = lbs->object_growth * (1.0 + 2.0 * fmax(v3_max_abs(lo), v3_max_abs(hi)) + lbs->object_reach) +
+                           lbs->margin;
+                if (!box_outside(pyr, at, v3_sub(lo, v3(g, g, g)), v3_add(hi, v3(g, g, g)), lbs->margin))
+                    stack[sp++] = node->child[k];
+            }
+            continue;
+        }
+        uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
+        for (uint32_t k = first; k < end; k++) {
+            if (b->prims[k].hide & HIDE_NO_SHADOW)
+                continue;
+            const Shape *sh = &w->shapes[b->items[k]];
+            if (w->materials[sh->material].no_shadow)
+                continue;
+            const double o[3] = { sh->bbox_min.x, sh->bbox_min.y, sh->bbox_min.z };
+            const double p[3] = { sh->bbox_max.x, sh->bbox_max.y, sh->bbox_max.z };
+            double lo[3], hi[3];
+            for (int a = 0; a < 3; a++) {
+                double g = lbs->object_growth * (1.0 + fabs(o[a]) + fabs(p[a]) + lbs->object_reach) + lbs->margin;
+                lo[a] = o[a] - g;
+                hi[a] = p[a] + g;
+            }
+            Vec3 blo = v3(lo[0], lo[1], lo[2]), bhi = v3(hi[0], hi[1], hi[2]);
+            if (box_outside(pyr, at, blo, bhi, lbs->margin))
+                continue;
+            /* (an unbounded box: its distances are 0, or not numbers, which fmax passes over) */
+            double dx = fmax(fmax(lo[0] - at.x, at.x - hi[0]), 0.0);
+            double dy = fmax(fmax(lo[1] - at.y, at.y - hi[1]), 0.0);
+            double dz = fmax(fmax(lo[2] - at.z, at.z - hi[2]), 0.0);
+            float near = round_down(sqrt(dx * dx + dy * dy + dz * dz) * (1.0 - 1e-9));
+            /* the box's footprint: its corners' (the box is their convex
+             * hull); an unbounded box's is the whole face */
+            LbFootprint f = { -INFINITY, INFINITY, -INFINITY, INFINITY };
+            if (isfinite(lo[0]) && isfinite(lo[1]) && isfinite(lo[2]) && isfinite(hi[0]) && isfinite(hi[1]) &&
+                isfinite(hi[2])) {
+                Vec3 corner[8];
+                for (int q = 0; q < 8; q++)
+                    corner[q] = v3(q & 1 ? hi[0] : lo[0], q & 2 ? hi[1] : lo[1], q & 4 ? hi[2] : lo[2]);
+                f = points_footprint(lbs, corner, 8, at, face, near);
+            }
+            LbObject oc = { near, f.u0, f.u1, f.v0, f.v1, b->items[k] };
+            void *items = out->c;
+            if (room_for_one(&items, out->n, &out->cap, sizeof oc))
+                return -1;
+            out->c = items;
+            out->c[out->n++] = oc;
+        }
+    }
+    if (out->n > 1)
+        qsort(out->c, out->n, sizeof *out->c, by_object_near);
+    return 0;
+}
+
 /* If opaque polygon p covers the whole pyramid (the bound at the top of
  * this file), the distance from the light beyond which it blocks every
  * point of the cell; else infinity. */
@@ -556,10 +648,10 @@ static double cover_beyond(const LightBuffers *lbs, const Polygon *p, const Pyra
  * aligned for SSE), the items and the shapes' indices. */
 static size_t blocks_of(size_t n) { return (n + LB_BLOCK - 1) / LB_BLOCK * LB_BLOCK; }
 static size_t header_bytes(void) { return (sizeof(LbCell) + 15) / 16 * 16; }
-static size_t cell_bytes(size_t n, size_t nshapes)
+static size_t cell_bytes(size_t n, size_t nshapes, size_t nobjects)
 {
     return header_bytes() + nshapes * sizeof(LbShape) + blocks_of(n) / LB_BLOCK * sizeof(LbBlock) +
-           n * 2 * sizeof(uint32_t);
+           n * 2 * sizeof(uint32_t) + nobjects * sizeof(LbObject);
 }
 
 #define CHILDREN_BYTES (LB_SUB * LB_SUB * sizeof(_Atomic(LbCell *)))
@@ -586,7 +678,7 @@ static int budget_take(LightBuffers *lbs, size_t bytes)
  * cell keeps the shapes its list refers to, a child its top cell's. NULL
  * when out of memory or budget. */
 static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt *at, const CandidateList *l,
-                         const LbCell *parent)
+                         const ObjectList *objects, const LbCell *parent)
 {
     const World *w = lbs->world;
     const Bvh *b = lbs->bvh;
@@ -636,7 +728,8 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
             if (renumber[k] == 0)
                 renumber[k] = (uint32_t)nshapes++;
     }
-    size_t bytes = cell_bytes(n, nshapes);
+    size_t nobjects = objects ? objects->n : 0;
+    size_t bytes = cell_bytes(n, nshapes, nobjects);
     if (budget_take(lbs, bytes)) {
         free(renumber);
         return NULL;
@@ -678,6 +771,11 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
         shape_at[i] = renumber ? renumber[l->c[i].shape] : l->c[i].shape;
     }
     free(renumber);
+    LbObject *object = (LbObject *)(shape_at + n);
+    for (size_t i = 0; i < nobjects; i++)
+        object[i] = objects->c[i];
+    c->object = objects ? object : parent->object;
+    c->nobjects = objects ? (uint32_t)nobjects : parent->nobjects;
     c->nshapes = (uint32_t)nshapes;
     c->shapes = parent ? parent->shapes : shapes;
     c->n = (uint32_t)n;
@@ -692,7 +790,9 @@ static LbCell *make_cell(LightBuffers *lbs, const LightBuffer *lb, const CellAt 
     /* (a split that left the list nearly as long as its parent's, its
      * candidates wider than the cells, is not split again) */
     int shorter = !parent || 4 * n < 3 * (size_t)parent->n;
-    if (n > lbs->split_at && shorter && at->level < LB_LEVELS - 1 && budget_take(lbs, CHILDREN_BYTES) == 0) {
+    int fewer_objects = !parent || 4 * (size_t)c->nobjects < 3 * (size_t)parent->nobjects;
+    int long_lists = (n > lbs->split_at && shorter) || (c->nobjects > LB_SPLIT_OBJECTS_AT && fewer_objects);
+    if (long_lists && at->level < LB_LEVELS - 1 && budget_take(lbs, CHILDREN_BYTES) == 0) {
         child = shared_arena_alloc(&lbs->arena, CHILDREN_BYTES);
         if (!child)
             atomic_fetch_sub(&lbs->bytes, CHILDREN_BYTES);
@@ -770,14 +870,31 @@ static void build_children(LightBuffers *lbs, const LightBuffer *lb, const LbCel
         }
     }
     free(over);
+    /* the objects whose footprints overlap each child, in c's order */
+    ObjectList objects[LB_SUB * LB_SUB];
+    memset(objects, 0, sizeof objects);
+    for (uint32_t k = 0; k < c->nobjects && !failed; k++) {
+        const LbObject *o = &c->object[k];
+        for (int s = 0; s < LB_SUB * LB_SUB && !failed; s++) {
+            int a = s % LB_SUB, b = s / LB_SUB;
+            if (!(wanted >> s & 1) || o->u0 > u1[a] || o->u1 < u0[a] || o->v0 > v1[b] || o->v1 < v0[b])
+                continue;
+            void *items = objects[s].c;
+            failed = room_for_one(&items, objects[s].n, &objects[s].cap, sizeof *o);
+            objects[s].c = items;
+            if (!failed)
+                objects[s].c[objects[s].n++] = *o;
+        }
+    }
     for (int s = 0; s < LB_SUB * LB_SUB; s++) {
         if (!failed && (wanted >> s & 1)) {
             CellAt child_at = { first.face, first.level, first.i + s % LB_SUB, first.j + s / LB_SUB };
-            LbCell *child = make_cell(lbs, lb, &child_at, &l[s], c);
+            LbCell *child = make_cell(lbs, lb, &child_at, &l[s], &objects[s], c);
             if (child)
                 publish(lbs, &c->child[s], child);
         }
         candidates_free(&l[s]);
+        free(objects[s].c);
     }
 }
 
@@ -814,10 +931,13 @@ const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot
     if (!c) {
         double t0 = clock_wall();
         CandidateList l = { 0 };
+        ObjectList objects = { 0 };
         Pyramid pyr = pyramid_of(&top);
-        if (gather_from_hierarchy(lbs, lb, &pyr, spot->face, &l) == 0)
-            c = make_cell(lbs, lb, &top, &l, NULL);
+        if (gather_from_hierarchy(lbs, lb, &pyr, spot->face, &l) == 0 &&
+            gather_objects(lbs, lb, &pyr, spot->face, &objects) == 0)
+            c = make_cell(lbs, lb, &top, &l, &objects, NULL);
         candidates_free(&l);
+        free(objects.c);
         if (c)
             c = publish(lbs, slot, c);
         *built = clock_wall() - t0;
@@ -845,6 +965,39 @@ const LbCell *light_buffer_cell(LightBuffers *lbs, LightBuffer *lb, const LbSpot
     }
 }
 
+/* LightBuffers.object_rank: the shapes' hierarchy walked as
+ * bvh_shapes_walk walks it (depth first, each node's first child first),
+ * every node entered. */
+static int rank_objects(LightBuffers *lbs)
+{
+    const World *w = lbs->world;
+    const Bvh *b = lbs->bvh->shapes;
+    lbs->object_rank = malloc(sizeof *lbs->object_rank * (size_t)(w->nshapes > 0 ? w->nshapes : 1));
+    if (!lbs->object_rank)
+        return -1;
+    for (int i = 0; i < w->nshapes; i++)
+        lbs->object_rank[i] = UINT32_MAX;
+    if (!b || b->nnodes == 0)
+        return 0;
+    uint32_t stack[BVH_STACK], rank = 0;
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        uint32_t c = stack[--sp];
+        if (!bvh_is_leaf(c)) {
+            const BvhNode *node = &b->nodes[c];
+            for (int k = BVH_WIDTH - 1; k >= 0; k--)
+                if (node->child[k] != BVH_EMPTY)
+                    stack[sp++] = node->child[k];
+            continue;
+        }
+        uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
+        for (uint32_t k = first; k < end; k++)
+            lbs->object_rank[b->items[k]] = rank++;
+    }
+    return 0;
+}
+
 int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double tolerance, size_t budget)
 {
     memset(lbs, 0, sizeof *lbs);
@@ -869,6 +1022,8 @@ int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double
     lbs->margin = 1e-9 * (1.0 + size);
     lbs->cover_margin = 1e-5 * (1.0 + size);
     lbs->plane_margin = 1e-3 * (1.0 + size);
+    lbs->object_growth = 4e-9;
+    lbs->object_reach = 4.0 * (1.0 + size);
     lbs->nlights = w->nlights;
     lbs->light = calloc((size_t)(w->nlights > 0 ? w->nlights : 1), sizeof *lbs->light);
     lbs->item_of = malloc(sizeof *lbs->item_of * (size_t)(w->npolygons > 0 ? w->npolygons : 1));
@@ -877,6 +1032,8 @@ int light_buffers_init(LightBuffers *lbs, const World *w, const Bvh *bvh, double
     for (int k = 0; k < bvh->nitems; k++)
         if (!(bvh->items[k] & BVH_INSTANCE))
             lbs->item_of[bvh->items[k]] = (uint32_t)k;
+    if (rank_objects(lbs))
+        return -1;
     for (int i = 0; i < w->nlights; i++) {
         const Light *l = &w->lights[i];
         if (l->kind != LIGHT_POINT || l->shadowless)
@@ -917,8 +1074,10 @@ void light_buffers_free(LightBuffers *lbs)
     }
     free(lbs->light);
     free(lbs->item_of);
+    free(lbs->object_rank);
     lbs->light = NULL;
     lbs->item_of = NULL;
+    lbs->object_rank = NULL;
     if (lbs->arena_made)
         shared_arena_free(&lbs->arena); /* every cell */
     lbs->arena_made = 0;

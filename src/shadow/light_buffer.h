@@ -29,6 +29,15 @@
  *   light and the point, for rays at least 1e-2 from the polygon's plane.
  * Everything else is the shadow ray's own test.
  *
+ * Curved objects (World.shapes) are listed too, apart: a top cell holds
+ * every object whose box, grown past the shadow ray's own box test's
+ * growth, meets its pyramid, with its near bound and footprint as a
+ * polygon's; a point tests only those nearer than it whose footprints
+ * hold its direction, each by the shadow ray's own crossings
+ * (shadow_shape_crossing), and the see-through ones crossed are folded in
+ * the order the shadow ray's walk folds them (shadow_shape_fold), so the
+ * colour is the shadow ray's to the bit.
+ *
  * Cells are built lazily, the first time a point asks: a top cell by
  * walking the hierarchy with its pyramid; a cell of more than LB_SPLIT_AT
  * candidates above the last of LB_LEVELS levels is split into LB_SUB x
@@ -56,6 +65,7 @@
 #define LB_SUB 4        /* a split cell's children per side (two bits of index a level) */
 #define LB_LEVELS 3     /* levels, the top one included */
 #define LB_SPLIT_AT 64  /* a cell with more candidates than this splits (above the last level) */
+#define LB_SPLIT_OBJECTS_AT 8 /* ... or with more curved objects than this */
 /* the finest cells per side of a face */
 #define LB_FINE (LB_TOP << (2 * (LB_LEVELS - 1)))
 
@@ -153,6 +163,15 @@ typedef struct LbBlock {
     float nx[LB_BLOCK], ny[LB_BLOCK], nz[LB_BLOCK], d[LB_BLOCK];
 } LbBlock;
 
+/* A curved object as a cell lists it: a lower bound of its grown box's
+ * distance from the light (in float, rounded down) and the box's
+ * footprint on the face (as a polygon's), so that a point passes over
+ * the objects that lie beyond it or off its direction. */
+typedef struct LbObject {
+    float near, u0, u1, v0, v1;
+    uint32_t shape;         /* its index in World.shapes */
+} LbObject;
+
 /* What a cell says about the points seen through it. */
 typedef struct LbCell {
     uint32_t n;             /* candidates */
@@ -173,6 +192,14 @@ typedef struct LbCell {
     const LbShape *shapes;
     uint32_t nshapes;
     int level;
+    /* The curved objects (World.shapes, the shapes' hierarchy's items)
+     * whose boxes, grown by LightBuffers.object_growth, meet the top cell's
+     * pyramid, nearest first: every object the shadow ray of a point seen
+     * through the cell can cross, for points within
+     * LightBuffers.object_reach of the origin. A split cell's children
+     * list those of its objects whose footprints overlap them. */
+    const struct LbObject *object;
+    uint32_t nobjects;
 } LbCell;
 
 typedef struct LightBuffer {
@@ -194,6 +221,18 @@ typedef struct LightBuffers {
     double margin;          /* absolute margin of the cells' pyramids: 1e-9 of the scene's size */
     double cover_margin;    /* the cover's margin: 1e-5 of the scene's size */
     double plane_margin;    /* the least distance of the light from a plane lb_candidate_passed uses: 1e-3 of it */
+    /* The curved objects' boxes are grown, per axis, by object_growth
+     * (1 + |lo| + |hi|) plus the margin, four times the growth of the
+     * shadow ray's box test (shape_box_hit) for points whose coordinates
+     * are at most object_reach (four times the scene's size, lights
+     * included): a point farther out has its objects walked by the shadow
+     * ray itself. */
+    double object_growth, object_reach;
+    /* Per curved object of the shapes' hierarchy (World.shapes, up to
+     * World.nshapes): its place in the order shadow_shapes_test's walk
+     * visits them (shadow_shape_fold), in which see-through ones are
+     * folded. */
+    uint32_t *object_rank;
     int nlights;
     LightBuffer **light;    /* per light: its buffer, or NULL (not a point light) */
     uint32_t *item_of;      /* per world polygon, its leaf item in the hierarchy (instances' polygons

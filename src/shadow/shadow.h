@@ -315,13 +315,15 @@ extern const ShadowMethod shadow_every_lit_method;
  * opaque blocker tried first (exact); also what a method hands its
  * decisions to where what it prepared would not pay (hst without volumes). */
 extern const ShadowMethod shadow_cache_method;
-/* The light buffer (shadow_light_buffer.c), and its polygon part (the
- * planes tested before): the light's cell decides, or the cache method's
- * polygon part where the light has no buffer or the cell is not built;
- * counts the decision and its scheme, and returns 1 when the light is
- * fully blocked. */
+/* The light buffer (shadow_light_buffer.c), and its decision for hst:
+ * the infinite planes and the curved objects first (shadow_planes_test's
+ * answer, the objects by the light's cell), then, unless they block
+ * (*surfaces_blocked), the polygons: the light's cell decides, or the cache
+ * method's polygon part where the light has no buffer or the cell is not
+ * built, counting the decision and its scheme. Multiplies into *light and
+ * returns 1 when it is fully blocked. */
 extern const ShadowMethod shadow_light_buffer_method;
-int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+int shadow_light_buffer_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *light, int *surfaces_blocked);
 /* The point lights' buffers, empty, for the render (a method's
  * preparation: the light-buffer method's, hst's). Returns 0, or -1 with
  * a message in err. */
@@ -359,6 +361,22 @@ int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
  * nearest-hit query's, POV-Ray's tolerances), filtering the light through
  * see-through ones; 1 when they block it fully. */
 int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
+/* What q's shadow ray meets of one shape (World.shapes[i], its parts for
+ * a CSG object), by shadow_shapes_test's own crossings: nothing; an
+ * opaque surface (the light is blocked, whatever else the ray meets); or
+ * see-through surfaces only (their colour is shadow_shapes_test's to fold,
+ * in its order). For methods that ask the shapes they list rather than
+ * walk the shapes' hierarchy. */
+typedef enum { SHAPE_NOT_CROSSED, SHAPE_CROSSED_OPAQUE, SHAPE_CROSSED_SEE_THROUGH } ShapeCrossing;
+ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, int i);
+/* Shape i's part of shadow_shapes_test: its crossings' colours folded
+ * into *light; 1 when it is now fully blocked. shadow_shapes_test folds
+ * the shapes in the order its walk of their hierarchy visits them, which
+ * is the order of Bvh.shapes' leaves depth first, the first child first,
+ * whatever the ray (it only passes some over): a method that folds the
+ * shapes it found crossed in that order gets the walk's colour, bit for
+ * bit. */
+int shadow_shape_fold(ShadowContext *ctx, const ShadowQuery *q, int i, RGB *light);
 /* The distances along a shadow ray at which a shape's crossing counts:
  * (tmin, tlimit), POV-Ray's window for its shadow rays (trace.cpp,
  * TracePointLightShadowRay: beyond SMALL_TOLERANCE of the point, short of

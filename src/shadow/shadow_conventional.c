@@ -140,6 +140,42 @@ int shadow_planes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     return shadow_shapes_test(ctx, q, light);
 }
 
+/* The crossings of shape i that q's shadow ray counts, in order along
+ * it (their number, at most SHAPE_MAX_HITS): none where the shape casts no
+ * shadow or the segment misses its box. */
+static int shape_shadow_crossings(ShadowContext *ctx, const ShadowQuery *q, int i, ShapeHit *hits)
+{
+    const World *w = ctx->tracer->world;
+    const Shape *s = &w->shapes[i];
+    /* The point's own shape is tested too: POV-Ray's shadow ray leaves
+     * no object out; its window (shadow_shape_window) keeps it off the
+     * surface it starts on (a sphere's far side still shadows). */
+    double tmin, tlimit;
+    shadow_shape_window(q->distance, &tmin, &tlimit);
+    if (w->materials[s->material].no_shadow || !shape_box_hit(s, q->point, q->to_light, tlimit))
+        return 0;
+    ctx->stats.shadow_shape_tests++;
+    ShapeHit all[SHAPE_MAX_HITS];
+    int nall = shape_intersect_all(s, q->point, q->to_light, tlimit, all), n = 0;
+    for (int k = 0; k < nall; k++)
+        if (all[k].t > tmin)
+            hits[n++] = all[k];
+    return n;
+}
+
+ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, int i)
+{
+    const World *w = ctx->tracer->world;
+    ShapeHit hits[SHAPE_MAX_HITS];
+    int n = shape_shadow_crossings(ctx, q, i, hits);
+    for (int k = 0; k < n; k++) {
+        const int leaf = hits[k].leaf ? (int)(hits[k].leaf - w->shapes) : i;
+        if (w->materials[w->shapes[leaf].material].opaque)
+            return SHAPE_CROSSED_OPAQUE;
+    }
+    return n > 0 ? SHAPE_CROSSED_SEE_THROUGH : SHAPE_NOT_CROSSED;
+}
+
 /* One shape's part of shadow_shapes_test; 1 when the light is now fully
  * blocked. */
 typedef struct {
@@ -155,21 +191,9 @@ static int shadow_shape_test(void *user, int i, double *tmax)
     ShadowContext *ctx = ss->ctx;
     const ShadowQuery *q = ss->q;
     const World *w = ctx->tracer->world;
-    const Shape *s = &w->shapes[i];
-    const Material *m = &w->materials[s->material];
-    /* The point's own shape is tested too: POV-Ray's shadow ray leaves
-     * no object out; its window (shadow_shape_window) keeps it off the
-     * surface it starts on (a sphere's far side still shadows). */
-    double tmin, tlimit;
-    shadow_shape_window(q->distance, &tmin, &tlimit);
-    if (m->no_shadow || !shape_box_hit(s, q->point, q->to_light, tlimit))
-        return 0;
-    ctx->stats.shadow_shape_tests++;
-    ShapeHit all[SHAPE_MAX_HITS], hits[SHAPE_MAX_HITS];
-    int nall = shape_intersect_all(s, q->point, q->to_light, tlimit, all), n = 0;
-    for (int k = 0; k < nall; k++)
-        if (all[k].t > tmin)
-            hits[n++] = all[k];
+    const Material *m = &w->materials[w->shapes[i].material];
+    ShapeHit hits[SHAPE_MAX_HITS];
+    int n = shape_shadow_crossings(ctx, q, i, hits);
     /* a fading interior fades the light over the legs the shadow ray
      * runs inside it: from the point (where it starts inside) or the
      * shape's last surface, to the next (the legs as the shape alone
@@ -195,6 +219,13 @@ static int shadow_shape_test(void *user, int i, double *tmax)
     return 0;
 }
 
+int shadow_shape_fold(ShadowContext *ctx, const ShadowQuery *q, int i, RGB *light)
+{
+    ShapeShadow ss = { ctx, q, light };
+    double unused = q->distance;
+    return shadow_shape_test(&ss, i, &unused);
+}
+
 int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->tracer->world;
@@ -206,7 +237,7 @@ int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
         double tmax = q->distance;
         uint64_t nodes = 0;
         return bvh_shapes_walk(bvh->shapes, q->point, q->to_light, &tmax, HIDE_NO_SHADOW, shadow_shape_test, &ss,
-                               &nodes);
+                               &nodes, ctx->tracer->avx2);
     }
     for (int i = 0; i < w->nshapes; i++) {
         double tmax = q->distance;

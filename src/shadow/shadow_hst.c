@@ -137,16 +137,24 @@ static void conventional(ShadowContext *ctx, const ShadowQuery *q, LightState *o
     out->depth_known = 0;
     out->self = 0;
     out->condition = COND_UNKNOWN;
-    if (shadow_planes_test(ctx, q, light)) {
-        ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
-        ctx->stats.shadow_blocked++;
-        return;
-    }
-    ctx->last_filtered = 0;
     int blocked;
     if (ctx->light_buffers) {
-        blocked = shadow_light_buffer_polygons_test(ctx, q, light); /* counts its scheme and blocked */
+        /* (the polygons' part counts its scheme and blocked) */
+        int surfaces_blocked;
+        ctx->last_filtered = 0;
+        blocked = shadow_light_buffer_decide(ctx, q, light, &surfaces_blocked);
+        if (surfaces_blocked) {
+            ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
+            ctx->stats.shadow_blocked++;
+            return;
+        }
     } else {
+        if (shadow_planes_test(ctx, q, light)) {
+            ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
+            ctx->stats.shadow_blocked++;
+            return;
+        }
+        ctx->last_filtered = 0;
         ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
         blocked = shadow_polygons_test(ctx, q, light);
         ctx->stats.shadow_blocked += (uint64_t)blocked;

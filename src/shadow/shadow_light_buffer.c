@@ -80,7 +80,7 @@ static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, const Sha
  * 1e-9 (1 + |P|)) far beyond those errors: the side test gives the shadow
  * ray's answer. Elsewhere, and for planes without a side
  * (LightBuffer.plane_side), the shadow ray's own plane test decides. */
-static int light_buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, const ShadowQuery *q, RGB *light)
+static int buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->tracer->world;
     double tmin = trace_min_distance(q->point);
@@ -103,15 +103,81 @@ static int light_buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, c
         if (shadow_plane_test(ctx, q, i, tmin, light))
             return 1;
     }
-    return shadow_shapes_test(ctx, q, light); /* the shapes by the shadow ray's own test */
+    return 0;
 }
 
-/* q's decision by buffer lb (NULL: the cache's test), planes aside. */
-static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const ShadowQuery *q, RGB *light)
-{
+/* Where q falls in its light's buffer: the buffer (NULL: none), the spot
+ * and its cell (NULL: none, the shadow ray decides). */
+typedef struct {
+    LightBuffer *lb;
     LbSpot spot;
-    const LbCell *cell = lb && light_buffer_spot(v3_neg(q->to_light), &spot) ? cell_at_spot(ctx, lb, q, &spot)
-                                                                             : NULL;
+    const LbCell *cell;
+} BufferPlace;
+
+static BufferPlace buffer_place(ShadowContext *ctx, LightBuffer *lb, const ShadowQuery *q)
+{
+    BufferPlace at = { lb, { 0, 0, 0, 0.0, 0.0 }, NULL };
+    if (lb && light_buffer_spot(v3_neg(q->to_light), &at.spot))
+        at.cell = cell_at_spot(ctx, lb, q, &at.spot);
+    return at;
+}
+
+/* The curved objects' part of q's decision (shadow_shapes_test's answer,
+ * bit for bit) by its cell's list of them: every object the shadow ray
+ * can cross is listed (light_buffer.h), so none listed nearer than the
+ * point crossed means none crossed at all, and an opaque surface crossed
+ * blocks the light whatever else the ray meets. See-through ones crossed,
+ * and no opaque one, are folded in the order the shadow ray's walk folds
+ * them (shadow_shape_fold); more of them than LB_FOLD_MAX, the walk
+ * itself folds them. */
+#define LB_FOLD_MAX 16
+static int buffer_objects_test(ShadowContext *ctx, const BufferPlace *at, const ShadowQuery *q, RGB *light)
+{
+    const LbCell *cell = at->cell;
+    const LightBuffers *lbs = ctx->light_buffers;
+    if (!cell || !lbs->bvh->shapes || v3_max_abs(q->point) > lbs->object_reach)
+        return shadow_shapes_test(ctx, q, light);
+    /* the near bounds are floats rounded down: the limit is rounded up */
+    const float limit = (float)((q->distance * (1.0 + 1e-9) + lbs->margin) * (1.0 + 0x1p-22));
+    const float u = (float)at->spot.u, v = (float)at->spot.v;
+    uint32_t fold[LB_FOLD_MAX]; /* the see-through ones crossed, by their rank */
+    int nfold = 0, too_many = 0;
+    for (uint32_t k = 0; k < cell->nobjects && cell->object[k].near <= limit; k++) {
+        const LbObject *o = &cell->object[k];
+        if (u < o->u0 || u > o->u1 || v < o->v0 || v > o->v1)
+            continue;
+        ShapeCrossing c = shadow_shape_crossing(ctx, q, (int)o->shape);
+        if (c == SHAPE_CROSSED_OPAQUE) {
+            light->r = light->g = light->b = 0.0;
+            return 1;
+        }
+        if (c == SHAPE_CROSSED_SEE_THROUGH) {
+            if (nfold == LB_FOLD_MAX) {
+                too_many = 1;
+                continue;
+            }
+            /* insertion by rank */
+            uint32_t r = lbs->object_rank[o->shape];
+            int j = nfold++;
+            for (; j > 0 && lbs->object_rank[fold[j - 1]] > r; j--)
+                fold[j] = fold[j - 1];
+            fold[j] = o->shape;
+        }
+    }
+    if (too_many)
+        return shadow_shapes_test(ctx, q, light);
+    for (int j = 0; j < nfold; j++)
+        if (shadow_shape_fold(ctx, q, (int)fold[j], light))
+            return 1;
+    return 0;
+}
+
+/* q's decision at its place in the buffer (no cell: the cache's test),
+ * planes and objects aside. */
+static int buffer_polygons_test(ShadowContext *ctx, const BufferPlace *at, const ShadowQuery *q, RGB *light)
+{
+    const LbCell *cell = at->cell;
+    const LbSpot spot = at->spot;
     if (!cell)
         return shadow_cache_polygons_test(ctx, q, light);
     LightBuffers *lbs = ctx->light_buffers;
@@ -195,25 +261,40 @@ static int buffer_polygons_test(ShadowContext *ctx, LightBuffer *lb, const Shado
     return blocked;
 }
 
-int shadow_light_buffer_polygons_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
+/* shadow_planes_test's part by the buffer: the planes by their sides,
+ * then, unless one blocks, the objects by q's cell (which *at is left
+ * holding, for the polygons' part). */
+static int buffer_surfaces_test(ShadowContext *ctx, LightBuffer *lb, const ShadowQuery *q, RGB *light,
+                                BufferPlace *at)
 {
-    return buffer_polygons_test(ctx, buffer_for(ctx, q), q, light);
+    if (!lb) {
+        *at = buffer_place(ctx, NULL, q);
+        return shadow_planes_test(ctx, q, light);
+    }
+    if (buffer_planes_test(ctx, lb, q, light))
+        return 1;
+    *at = buffer_place(ctx, lb, q);
+    return buffer_objects_test(ctx, at, q, light);
 }
 
-/* The planes' part (by their sides where the light has a buffer), then,
- * unless a plane blocks, the buffer's polygon part, which counts its own
- * scheme. */
+int shadow_light_buffer_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *light, int *surfaces_blocked)
+{
+    BufferPlace at;
+    *surfaces_blocked = buffer_surfaces_test(ctx, buffer_for(ctx, q), q, light, &at);
+    return *surfaces_blocked || buffer_polygons_test(ctx, &at, q, light);
+}
+
+/* The planes' and objects' part, then, unless they block, the buffer's
+ * polygon part, which counts its own scheme. */
 static void light_buffer_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
 {
-    LightBuffer *lb = buffer_for(ctx, q);
     light->r = light->g = light->b = 1.0;
     ctx->last_scheme = SCHEME_CONVENTIONAL;
-    if (lb ? light_buffer_planes_test(ctx, lb, q, light) : shadow_planes_test(ctx, q, light)) {
+    int surfaces_blocked;
+    if (shadow_light_buffer_decide(ctx, q, light, &surfaces_blocked) && surfaces_blocked) {
         ctx->stats.shadow_schemes[SCHEME_CONVENTIONAL]++;
         ctx->stats.shadow_blocked++;
-        return;
     }
-    buffer_polygons_test(ctx, lb, q, light);
 }
 
 int shadow_light_buffer_prepare(const ShadowMethod *self, const ShadowSetup *s, ShadowPrepared *out, char *err,

@@ -107,7 +107,8 @@ static int pilot_points(VolumePlan *plan, const World *w, const Grid *g, const B
         int px = (int)(((i % grid) + 0.5) * width / grid);
         int py = (int)(((i / grid) + 0.5) * height / grid);
         Vec3 org, dir;
-        camera_ray(&w->camera, width, height, px, py, &org, &dir);
+        if (!camera_ray(&w->camera, width, height, px, py, &org, &dir))
+            continue;
         Hit from = { HIT_NONE, -1, 0.0, org, -1, 0 }, hit;
         if (!trace_nearest(&t, org, dir, HUGE_VAL, &from, &hit))
             continue;
