@@ -113,7 +113,13 @@ incdemo/woods/wood_1.pov|
 incdemo/woods/wood_11.pov|
 objects/wtorus.pov|
 interior/ballbox1.pov|
-advanced/woodbox.pov|"
+advanced/woodbox.pov|
+incdemo/shapes_old.pov|
+objects/quartic/teardrop.pov|
+objects/quartic/quarcyl.pov|
+objects/quartic/torus.pov|
+objects/superel1.pov|
+objects/lathe2.pov|"
 
 # The limits per scene, 160x120, each LIMIT (MEASURED): the value measured
 # on 2026-11-23 (POV-Ray 3.7.0.10, one thread; the same in two runs; the
@@ -121,7 +127,8 @@ advanced/woodbox.pov|"
 # on 2026-12-02, once normals were modelled; caustic2 on 2026-12-07, once
 # fake caustics were; the camera types, spotlite and Night_moon (looks_like)
 # and Tango, the blob samples and glassthing on 2026-12-07, once they
-# rendered) and the
+# rendered; the quadrics, quartics, superellipsoids and lathe on
+# 2026-12-07, once those shapes were) and the
 # limit: the image's RMSE and its pixels off by more than 0.02, the shadow
 # mask's disagreeing pixels (none may disagree in the interior). Where the
 # images agree but for noise (RMSE below 0.01), the limit is about the
@@ -211,6 +218,13 @@ incdemo/woods/wood_11.pov                        1e-5     (7.66e-7)     1 (0)   
 objects/wtorus.pov                               1e-5     (1.27e-7)     1 (0)           1 (0)
 interior/ballbox1.pov                            1e-5     (1.08e-6)     1 (0)           1 (0)
 advanced/woodbox.pov                             0.008    (0.00398)     12 (6)          4 (2)
+# quadric, quartic, superellipsoid, lathe (measured 2026-12-07, once modelled)
+incdemo/shapes_old.pov                           1e-5     (1.94e-6)     1 (0)           1 (0)
+objects/quartic/teardrop.pov                     1e-5     (0)           1 (0)           1 (0)
+objects/quartic/quarcyl.pov                      1e-5     (0)           1 (0)           1 (0)
+objects/quartic/torus.pov                        1e-5     (2.05e-6)     1 (0)           1 (0)
+objects/superel1.pov                             1e-5     (0)           1 (0)           1 (0)
+objects/lathe2.pov                               1e-5     (2.88e-6)     1 (0)           1 (0)
 '
 
 while IFS='|' read -r scene todo; do

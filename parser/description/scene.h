@@ -396,6 +396,13 @@ typedef enum {
     OBJ_DISC,
     OBJ_CONE,            /* also cylinder (equal radii) */
     OBJ_TORUS,
+    /* POV-Ray's algebraic surfaces: quadric, and poly (also cubic and
+     * quartic), solids whose polynomial is negative inside */
+    OBJ_QUADRIC,
+    OBJ_POLY,
+    OBJ_SUPERELLIPSOID,  /* superellipsoid { <e, n> } */
+    OBJ_LATHE,           /* lathe: a spline turned about the y axis */
+    OBJ_SOR,             /* sor: a surface of revolution, radius^2 cubic in the height */
     /* One glyph of a text object (a text is a union of them): its outline
      * swept from z = 0 to z = depth (u.glyph). */
     OBJ_GLYPH,
@@ -407,6 +414,24 @@ typedef enum {
     OBJ_DIFFERENCE,
     OBJ_MERGE,
 } ObjectKind;
+
+/* One segment of a lathe's spline as POV-Ray's Compute_Lathe makes it:
+ * x(w) = ((a[0] w + b[0]) w + c[0]) w + d[0] (the radius), y(w) likewise
+ * with index 1 (the height), for w in [0, 1]. */
+typedef struct SplineSegment {
+    double a[2], b[2], c[2], d[2];
+} SplineSegment;
+
+/* One segment of a sor as POV-Ray's Compute_Sor makes it: the squared
+ * radius a y^3 + b y^2 + c y + d between the heights y1 < y2, where its
+ * radius goes from x1 to x2. */
+typedef struct SorSegment {
+    double a, b, c, d;
+    double y1, y2, x1, x2;
+} SorSegment;
+
+/* A lathe's spline (POV-Ray's LINEAR_SPLINE ... BEZIER_SPLINE). */
+typedef enum { SPLINE_LINEAR, SPLINE_QUADRATIC, SPLINE_CUBIC, SPLINE_BEZIER } SplineKind;
 
 /* How a prism's outline is swept (POV-Ray's linear_sweep, conic_sweep). */
 typedef enum { PRISM_LINEAR_SWEEP, PRISM_CONIC_SWEEP } PrismSweep;
@@ -556,6 +581,34 @@ struct SceneObject {
         struct {
             double major, minor;
         } torus;
+        struct {
+            /* quadric { <A,E,H>, <B,C,F>, <D,G,I>, J }: A x^2 + E y^2 +
+             * H z^2 + B xy + C xz + F yz + D x + G y + I z + J, the
+             * vectors as POV-Ray names them (Square_Terms, Mixed_Terms,
+             * Terms, Constant) */
+            Vec3 square, mixed, terms;
+            double constant;
+        } quadric;
+        struct {
+            /* poly { order, <coefficients> }: (order+1)(order+2)(order+3)/6
+             * of them, in POV-Ray's order of the terms (x^order first,
+             * the constant last) */
+            int order;
+            const double *coeffs;
+        } poly;
+        struct {
+            double e, n; /* superellipsoid { <e, n> }: both positive */
+        } superellipsoid;
+        struct {            /* lathe { [spline] N, <r, h>... [sturm] } */
+            SplineKind spline;
+            int nsegments;
+            const SplineSegment *segments;
+        } lathe;
+        struct {            /* sor { N, <r, h>... [open] } */
+            int nsegments;  /* N - 3 */
+            const SorSegment *segments;
+            int open;       /* no base and cap discs */
+        } sor;
         struct {
             const SceneGlyph *glyph;
             double depth;        /* the text's thickness: the sweep along z */

@@ -132,6 +132,12 @@ void gram_object_mods(Parser *p, SceneObject *o, const char *what);
 SceneObject *gram_height_field(Parser *p, const Token *kw);
 SceneObject *gram_bicubic_patch(Parser *p, const Token *kw);
 SceneObject *gram_prism(Parser *p, const Token *kw);
+SceneObject *gram_quadric(Parser *p, const Token *kw);
+/* poly (order 0: read from the file), cubic (3), quartic (4) */
+SceneObject *gram_poly(Parser *p, const Token *kw, int order);
+SceneObject *gram_superellipsoid(Parser *p, const Token *kw);
+SceneObject *gram_lathe(Parser *p, const Token *kw);
+SceneObject *gram_sor(Parser *p, const Token *kw);
 SceneObject *gram_text(Parser *p, const Token *kw); /* parse_text.c */
 /* object_extent.c: POV-Ray's BBox of an object (SceneObject.has_extent):
  * set from a minimum and maximum, read back as them, carried through one

@@ -1,5 +1,6 @@
 /* Objects: polygon, triangle, smooth_triangle, mesh, mesh2, box, plane,
- * sphere, disc, cylinder, cone, torus, union, intersection, difference, merge and object{}, with their modifiers. Every object keeps its own
+ * sphere, disc, cylinder, cone, torus, quadric, poly, cubic, quartic,
+ * superellipsoid, lathe, sor, union, intersection, difference, merge and object{}, with their modifiers. Every object keeps its own
  * transform, composed from the transforms written on it in order; a union's
  * children keep theirs (the engine applies child, then parent). */
 #include <math.h>
@@ -21,12 +22,12 @@ int gram_is_object_keyword(int kw)
     case KW_height_field: case KW_bicubic_patch: case KW_prism:
     case KW_text:
     case KW_sphere: case KW_disc: case KW_cylinder: case KW_cone: case KW_torus: case KW_blob:
-    case KW_intersection: case KW_difference: case KW_merge:
+    case KW_intersection: case KW_difference: case KW_merge: case KW_quadric: case KW_poly: case KW_cubic:
+    case KW_quartic: case KW_superellipsoid: case KW_lathe: case KW_sor:
     /* POV-Ray objects hstrace cannot render */
-    case KW_lathe: case KW_sor: case KW_superellipsoid: case KW_sphere_sweep:
+    case KW_sphere_sweep:
     case KW_julia_fractal:
-    case KW_isosurface: case KW_parametric: case KW_poly: case KW_polynomial: case KW_cubic:
-    case KW_quartic: case KW_quadric: case KW_ovus: case KW_light_group:
+    case KW_isosurface: case KW_parametric: case KW_polynomial: case KW_ovus: case KW_light_group:
         return 1;
     default:
         return 0;
@@ -51,6 +52,7 @@ static const SceneObject *first_non_solid(const SceneObject *o)
 {
     switch (o->kind) {
     case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BLOB: case OBJ_BOX: case OBJ_PLANE: case OBJ_GLYPH:
+    case OBJ_QUADRIC: case OBJ_POLY: case OBJ_SUPERELLIPSOID: case OBJ_LATHE: case OBJ_SOR:
         return NULL;
     case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
         /* the parser bounds the depth (SceneObject.depth) */
@@ -77,6 +79,11 @@ static const char *object_kind_name(ObjectKind k)
     case OBJ_DISC: return "disc";
     case OBJ_CONE: return "cone";
     case OBJ_TORUS: return "torus";
+    case OBJ_QUADRIC: return "quadric";
+    case OBJ_POLY: return "poly";
+    case OBJ_SUPERELLIPSOID: return "superellipsoid";
+    case OBJ_LATHE: return "lathe";
+    case OBJ_SOR: return "sor";
     case OBJ_BLOB: return "blob";
     case OBJ_INTERSECTION: return "intersection";
     case OBJ_DIFFERENCE: return "difference";
@@ -325,7 +332,8 @@ static int bound_readable(Parser *p, const Token *t)
         return 0;
     switch (t->kw) {
     case KW_box: case KW_plane: case KW_union: case KW_object: case KW_sphere: case KW_disc: case KW_cylinder:
-    case KW_cone: case KW_torus: case KW_intersection: case KW_difference: case KW_merge:
+    case KW_cone: case KW_torus: case KW_intersection: case KW_difference: case KW_merge: case KW_quadric:
+    case KW_poly: case KW_cubic: case KW_quartic: case KW_superellipsoid: case KW_lathe: case KW_sor:
         return 1;
     default:
         break;
@@ -351,8 +359,9 @@ static void object_bound_clip(Parser *p, SceneObject *o, const Token *kw, int cl
             o->nbounds = o->nclips;
             o->bounds = o->clips;
         }
-    } else if (!clip && !bound_readable(p, t)) {
-        /* a hint hstrace need not read: passed over, as it always was */
+    } else if (!clip && !bound_readable(p, t) && o->kind != OBJ_POLY && o->kind != OBJ_QUADRIC) {
+        /* a hint hstrace need not read: passed over, as it always was (a
+         * poly's and a quadric's bound is read: POV-Ray tests it) */
         tok_skip_block_body(p);
     } else {
         tok_unget(p);
@@ -366,6 +375,17 @@ static void object_bound_clip(Parser *p, SceneObject *o, const Token *kw, int cl
             o->depth = o->clips[i]->depth + 1;
     if (o->depth > MAX_NESTING)
         tok_fail(p, kw->pos, "nested too deeply (clipped_by inside clipped_by more than %d levels)", MAX_NESTING);
+    /* POV-Ray keeps a poly's and a quadric's bound and tests it first
+     * (src/geometry/flatten.c's bound_kept): hstrace tests solids alone */
+    for (int i = 0; !clip && (o->kind == OBJ_POLY || o->kind == OBJ_QUADRIC) && i < o->nbounds; i++) {
+        const SceneObject *odd = first_non_solid(o->bounds[i]);
+        if (odd) {
+            char msg[96];
+            snprintf(msg, sizeof msg, "'%s' in 'bounded_by' of a '%s'", object_kind_name(odd->kind),
+                     object_kind_name(o->kind));
+            tok_unsupported_at(p, odd->pos, msg);
+        }
+    }
     if (clip && o->nclips > 0) {
         const SceneObject *odd = first_non_solid(o);
         if (odd) {
@@ -1294,6 +1314,13 @@ int gram_object(Parser *p, const Token *t, SceneObject **obj, SceneLight **light
     case KW_cylinder: *obj = parse_cone(p, &kw, 1); break;
     case KW_cone: *obj = parse_cone(p, &kw, 0); break;
     case KW_torus: *obj = parse_torus(p, &kw); break;
+    case KW_quadric: *obj = gram_quadric(p, &kw); break;
+    case KW_poly: *obj = gram_poly(p, &kw, 0); break;
+    case KW_cubic: *obj = gram_poly(p, &kw, 3); break;
+    case KW_quartic: *obj = gram_poly(p, &kw, 4); break;
+    case KW_superellipsoid: *obj = gram_superellipsoid(p, &kw); break;
+    case KW_lathe: *obj = gram_lathe(p, &kw); break;
+    case KW_sor: *obj = gram_sor(p, &kw); break;
     case KW_blob: *obj = gram_blob(p, &kw); break;
     case KW_union: *obj = parse_children(p, &kw, OBJ_UNION, "union"); break;
     case KW_intersection: *obj = parse_children(p, &kw, OBJ_INTERSECTION, "intersection"); break;

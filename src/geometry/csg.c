@@ -9,7 +9,7 @@
  * surfaces? */
 static int crossing_counts(const Shape *s, const Shape *crossed, Vec3 p)
 {
-    if (s->u.csg.op == CSG_UNION)
+    if (s->u.csg.op == CSG_UNION || s->u.csg.op == CSG_BOUND)
         return 1;
     const int want_inside = s->u.csg.op != CSG_MERGE;
     const Shape *c = s->u.csg.parts;
@@ -19,12 +19,39 @@ static int crossing_counts(const Shape *s, const Shape *crossed, Vec3 p)
     return 1;
 }
 
+/* POV-Ray's MIN_ISECT_DEPTH: Find_Intersection takes no nearer crossing
+ * (a bounding solid's among them). */
+#define MIN_ISECT_DEPTH 1.0e-4
+
+/* Ray_In_Bound: does the whole line from org along dir meet every
+ * bounding solid of s (its parts after the first) at MIN_ISECT_DEPTH or
+ * beyond, or start inside it? Whatever the ray's own length: POV-Ray
+ * tests the bound along the ray as it was cast. */
+static int ray_in_bounds(const Shape *s, Vec3 org, Vec3 dir)
+{
+    ShapeHit hits[SHAPE_MAX_HITS];
+    const Shape *c = s->u.csg.parts + s->u.csg.parts->subtree;
+    for (int k = 1; k < s->u.csg.nparts; k++, c += c->subtree) {
+        int met = 0;
+        if (shape_box_hit(c, org, dir, HUGE_VAL)) {
+            int m = shape_intersect_all(c, org, dir, HUGE_VAL, hits);
+            for (int j = 0; j < m && !met; j++)
+                met = hits[j].t >= MIN_ISECT_DEPTH;
+        }
+        if (!met && !shape_inside(c, org))
+            return 0;
+    }
+    return 1;
+}
+
 int csg_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     int n = 0;
     const Shape *c = s->u.csg.parts;
-    /* a clipped object: its own crossings alone */
-    const int crossed = s->u.csg.op == CSG_CLIP ? 1 : s->u.csg.nparts;
+    if (s->u.csg.op == CSG_BOUND && !ray_in_bounds(s, org, dir))
+        return 0;
+    /* a clipped or bounded object: its own crossings alone */
+    const int crossed = s->u.csg.op == CSG_CLIP || s->u.csg.op == CSG_BOUND ? 1 : s->u.csg.nparts;
     for (int k = 0; k < crossed; k++, c += c->subtree) {
         if (!shape_box_hit(c, org, dir, tmax))
             continue;
@@ -55,6 +82,8 @@ int csg_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit 
 
 int csg_inside(const Shape *s, Vec3 p)
 {
+    if (s->u.csg.op == CSG_BOUND) /* Inside_Object does not ask the bound */
+        return shape_inside(s->u.csg.parts, p);
     const int all = s->u.csg.op == CSG_INTERSECTION || s->u.csg.op == CSG_CLIP;
     const Shape *c = s->u.csg.parts;
     for (int k = 0; k < s->u.csg.nparts; k++, c += c->subtree) {
@@ -73,7 +102,7 @@ void csg_compute_bounds(Shape *s)
     const Shape *c = s->u.csg.parts;
     /* every crossing is on a part: within the box around them (around
      * the first alone for a clipped object, whose crossings are its) */
-    const int crossed = s->u.csg.op == CSG_CLIP ? 1 : s->u.csg.nparts;
+    const int crossed = s->u.csg.op == CSG_CLIP || s->u.csg.op == CSG_BOUND ? 1 : s->u.csg.nparts;
     for (int k = 0; k < crossed && k < s->u.csg.nparts; k++, c += c->subtree) {
         lo = v3_min(lo, c->bbox_min);
         hi = v3_max(hi, c->bbox_max);

@@ -4,7 +4,9 @@
  * point is inside every other part (intersection), inside none of them
  * (merge), or always (union); a clipped object's crossings are its first
  * part's inside every clipping solid (Point_In_Clip), which are never
- * crossings themselves; a
+ * crossings themselves; a bounded object's are its first part's along a
+ * line that meets every bounding solid or starts inside it (POV-Ray's
+ * Ray_In_Bound, before it tests the object), its inside the first part's; a
  * difference is an intersection whose later parts are inverted, and an
  * inverted CSG object swaps intersection and merge over inverted parts,
  * as POV-Ray's parser and Invert rewrite them. The parts are shapes

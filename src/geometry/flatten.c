@@ -19,6 +19,9 @@
 #include "parallel.h"
 #include "planar_shapes.h"
 #include "ptr_map.h"
+#include "lathe.h"
+#include "quadric.h"
+#include "sor.h"
 #include "text.h"
 #include "world_estimate.h"
 
@@ -1092,6 +1095,96 @@ static int flatten_blob(Builder *b, const SceneObject *o, const Inherited *in, i
     return 0;
 }
 
+/* A quadric: its coefficients carried to world space by every transform
+ * (quadric.h). */
+static int flatten_quadric(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Shape *s = new_shape(b, SHAPE_QUADRIC);
+    if (!s)
+        return -1;
+    s->material = material;
+    s->inverse = in->inverse;
+    s->max_hits = 2;
+    quadric_place(s, o->u.quadric.square, o->u.quadric.mixed, o->u.quadric.terms, o->u.quadric.constant,
+                  &in->transform, in->inverse);
+    shape_placed(b, s);
+    return 0;
+}
+
+/* A poly, cubic or quartic in its own space, reached through every
+ * transform (Poly keeps a Trans). */
+static int flatten_poly(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_POLY, in, &frame, material);
+    if (!s)
+        return -1;
+    s->max_hits = o->u.poly.order;
+    s->u.poly.order = o->u.poly.order;
+    s->u.poly.coeffs = o->u.poly.coeffs;
+    s->u.poly.sturm = o->sturm;
+    shape_placed(b, s);
+    return 0;
+}
+
+/* A superellipsoid in its own space, reached through every transform. */
+static int flatten_superellipsoid(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_SUPERELLIPSOID, in, &frame, material);
+    if (!s)
+        return -1;
+    s->max_hits = 2 + 9; /* a crossing per piece of the ray at most (its box's two ends, nine planes) */
+    s->u.superellipsoid.ex = 2.0 / o->u.superellipsoid.e;
+    s->u.superellipsoid.ez = 2.0 / o->u.superellipsoid.n;
+    shape_placed(b, s);
+    return 0;
+}
+
+/* A lathe in its own space, reached through every transform; its
+ * bounding cylinder from its segments (lathe.h). */
+static int flatten_lathe(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_LATHE, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.lathe.spline = (int)o->u.lathe.spline;
+    s->u.lathe.nsegments = o->u.lathe.nsegments;
+    s->u.lathe.segments = o->u.lathe.segments;
+    s->u.lathe.sturm = o->sturm;
+    /* a root of the segment's polynomial per crossing: its degree */
+    const int roots = o->u.lathe.spline == SPLINE_LINEAR ? 2 : o->u.lathe.spline == SPLINE_QUADRATIC ? 4 : 6;
+    const int most = SHAPE_NUMERIC_MAX_HITS;
+    s->max_hits = o->u.lathe.nsegments > most / roots ? most : roots * o->u.lathe.nsegments;
+    lathe_place(s);
+    shape_placed(b, s);
+    return 0;
+}
+
+/* A sor in its own space, reached through every transform (sor.h). */
+static int flatten_sor(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    Shape *s = add_shape(b, SHAPE_SOR, in, &frame, material);
+    if (!s)
+        return -1;
+    s->u.sor.nsegments = o->u.sor.nsegments;
+    s->u.sor.segments = o->u.sor.segments;
+    s->u.sor.open = o->u.sor.open;
+    s->u.sor.sturm = o->sturm;
+    /* three crossings per segment's cubic, and the two discs */
+    const int most = SHAPE_NUMERIC_MAX_HITS;
+    s->max_hits = o->u.sor.nsegments > (most - 2) / 3 ? most : 3 * o->u.sor.nsegments + 2;
+    sor_place(s);
+    shape_placed(b, s);
+    return 0;
+}
+
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
 /* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
@@ -1186,7 +1279,7 @@ static int finish_csg(Builder *b, int top, int index, int first)
     int max_hits = 0;
     const Shape *c = s->u.csg.parts;
     /* a clipped object's crossings are its first part's alone */
-    const int crossed = s->u.csg.op == CSG_CLIP ? 1 : s->u.csg.nparts;
+    const int crossed = s->u.csg.op == CSG_CLIP || s->u.csg.op == CSG_BOUND ? 1 : s->u.csg.nparts;
     for (int k = 0; k < crossed; k++, c += c->subtree)
         max_hits += c->max_hits;
     if (max_hits > SHAPE_MAX_HITS) {
@@ -1253,6 +1346,47 @@ static int flatten_clipped(Builder *b, const SceneObject *o, const Inherited *in
         Inherited clip = *in;
         clip.inverse = 0;
         failed = flatten_object(b, o->clips[i], &clip, scene, depth + 1);
+    }
+    b->csg_depth--;
+    return failed ? -1 : finish_csg(b, top, index, first);
+}
+
+/* Does POV-Ray keep o's bounded_by for its tests? It removes the bound of
+ * an object cheap to intersect (Post_Process); of the objects hstrace
+ * reads it keeps a poly's, and a quadric's where Compute_BBox found no
+ * bounds of its own (quadric.h). */
+static int bound_kept(const SceneObject *o)
+{
+    if (o->nbounds == 0)
+        return 0;
+    if (o->kind == OBJ_POLY)
+        return 1;
+    if (o->kind == OBJ_QUADRIC)
+        return !quadric_automatic_bounds(o->u.quadric.square, o->u.quadric.mixed, o->u.quadric.terms,
+                                         o->u.quadric.constant);
+    return 0;
+}
+
+/* An object bounded_by solids POV-Ray keeps (csg.h's CSG_BOUND): the
+ * object, clipped if it is, as the first part, its bounding solids
+ * (placed as clips are, never inverted with it) after. */
+static int flatten_bounded(Builder *b, const SceneObject *o, const Inherited *in, const Scene *scene, int depth)
+{
+    const SceneTexture *tex = in->texture ? in->texture : &scene->default_texture;
+    int material = add_material(b, in, tex, &in->texture_space, o->pos);
+    if (material < 0)
+        return -1;
+    const int top = b->csg_depth == 0;
+    int index;
+    if (!begin_csg(b, CSG_BOUND, in, material, 1 + o->nbounds, &index))
+        return -1;
+    const int first = b->nparts;
+    b->csg_depth++;
+    int failed = o->nclips > 0 ? flatten_clipped(b, o, in, scene, depth) : flatten_kind(b, o, in, scene, depth);
+    for (int i = 0; !failed && i < o->nbounds; i++) {
+        Inherited bound = *in;
+        bound.inverse = 0;
+        failed = flatten_object(b, o->bounds[i], &bound, scene, depth + 1);
     }
     b->csg_depth--;
     return failed ? -1 : finish_csg(b, top, index, first);
@@ -1535,6 +1669,8 @@ static int flatten_object(Builder *b, const SceneObject *o, const Inherited *par
         b->timed_out = 1;
         return -1;
     }
+    if (bound_kept(o))
+        return flatten_bounded(b, o, &in, scene, depth);
     if (o->nclips > 0)
         return flatten_clipped(b, o, &in, scene, depth);
     return flatten_kind(b, o, &in, scene, depth);
@@ -1591,6 +1727,11 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_TORUS: return flatten_torus(b, o, &in, material);
     case OBJ_GLYPH: return flatten_glyph(b, o, &in, material);
     case OBJ_BLOB: return flatten_blob(b, o, &in, material);
+    case OBJ_QUADRIC: return flatten_quadric(b, o, &in, material);
+    case OBJ_POLY: return flatten_poly(b, o, &in, material);
+    case OBJ_SUPERELLIPSOID: return flatten_superellipsoid(b, o, &in, material);
+    case OBJ_LATHE: return flatten_lathe(b, o, &in, material);
+    case OBJ_SOR: return flatten_sor(b, o, &in, material);
     case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
         return flatten_planar_shape(b, o, &in, material);
     case OBJ_UNION:

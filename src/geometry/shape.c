@@ -10,6 +10,11 @@
 #include "blob.h"
 #include "csg.h"
 #include "polynomial.h"
+#include "poly.h"
+#include "lathe.h"
+#include "quadric.h"
+#include "sor.h"
+#include "superellipsoid.h"
 #include "text.h"
 
 #define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
@@ -619,6 +624,12 @@ void shape_compute_bounds(Shape *s)
     case SHAPE_CSG:
         csg_compute_bounds(s);
         return;
+    case SHAPE_QUADRIC: /* its bounds are set with its coefficients (quadric_place) */
+        return;
+    case SHAPE_POLY: /* unbounded, as Poly::Compute_BBox makes it */
+        s->bbox_min = v3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+        s->bbox_max = v3(HUGE_VAL, HUGE_VAL, HUGE_VAL);
+        return;
     case SHAPE_BOX:
         lo = s->u.box.lo;
         hi = s->u.box.hi;
@@ -639,6 +650,18 @@ void shape_compute_bounds(Shape *s)
     case SHAPE_CONE:
         lo = v3(-1.0, -1.0, s->u.cone.dist);
         hi = v3(1.0, 1.0, 1.0);
+        break;
+    case SHAPE_LATHE: /* Lathe::Compute_BBox */
+        lo = v3(-s->u.lathe.radius2, s->u.lathe.height1, -s->u.lathe.radius2);
+        hi = v3(s->u.lathe.radius2, s->u.lathe.height2, s->u.lathe.radius2);
+        break;
+    case SHAPE_SOR: /* Sor::Compute_BBox */
+        lo = v3(-s->u.sor.radius2, s->u.sor.height1, -s->u.sor.radius2);
+        hi = v3(s->u.sor.radius2, s->u.sor.height2, s->u.sor.radius2);
+        break;
+    case SHAPE_SUPERELLIPSOID: /* Superellipsoid::Compute_BBox */
+        lo = v3(-1.0001, -1.0001, -1.0001);
+        hi = v3(1.0001, 1.0001, 1.0001);
         break;
     case SHAPE_GLYPH:
         glyph_local_bounds(s, &lo, &hi);
@@ -670,7 +693,65 @@ void shape_compute_bounds(Shape *s)
     s->bbox_max = whi;
 }
 
-int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
+/* The crossings of a primitive by one test of the ray along unit u. */
+static int one_test(const Shape *s, Vec3 org, Vec3 u, double ulimit, ShapeHit *hits)
+{
+    switch (s->kind) {
+    case SHAPE_SPHERE: return sphere_all(s, org, u, ulimit, hits);
+    case SHAPE_DISC: return disc_all(s, org, u, ulimit, hits);
+    case SHAPE_CONE: return cone_all(s, org, u, ulimit, hits);
+    case SHAPE_TORUS: return torus_all(s, org, u, ulimit, hits);
+    case SHAPE_CSG: return csg_intersect_all(s, org, u, ulimit, hits);
+    case SHAPE_BOX: return box_all(s, org, u, ulimit, hits);
+    case SHAPE_PLANE: return plane_all(s, org, u, ulimit, hits);
+    case SHAPE_GLYPH: return glyph_intersect_all(s, org, u, ulimit, hits);
+    case SHAPE_BLOB: return blob_intersect_all(s, org, u, ulimit, hits);
+    case SHAPE_QUADRIC: return quadric_all(s, org, u, ulimit, hits);
+    case SHAPE_POLY: return poly_all(s, org, u, ulimit, hits);
+    case SHAPE_SUPERELLIPSOID: return superellipsoid_all(s, org, u, ulimit, hits);
+    case SHAPE_LATHE: return lathe_all(s, org, u, ulimit, hits);
+    case SHAPE_SOR: return sor_all(s, org, u, ulimit, hits);
+    }
+    return 0;
+}
+
+/* The shapes whose crossings POV-Ray finds numerically from the ray's
+ * origin (its polynomial solver, the superellipsoid's sampling), so that
+ * where they are found depends on where the ray starts. */
+static int found_from_origin(ShapeKind k)
+{
+    return k == SHAPE_POLY || k == SHAPE_SUPERELLIPSOID || k == SHAPE_LATHE || k == SHAPE_SOR;
+}
+
+/* Such a shape's crossings as POV-Ray meets them along a ray that goes on
+ * through it (a shadow ray through a see-through object, TracePointLight-
+ * ShadowRay): its nearest crossing, then the nearest of the ray cast again
+ * from there (POV-Ray's IPoint, the origin moved by that distance), and
+ * so on. A CSG part's are all of one test, as POV-Ray's CSG asks them. */
+static int crossings_cast_again(const Shape *s, Vec3 org, Vec3 u, double ulimit, ShapeHit *hits)
+{
+    ShapeHit one[SHAPE_NUMERIC_MAX_HITS];
+    int n = 0;
+    double done = 0.0;
+    Vec3 o = org;
+    while (n < s->max_hits) {
+        if (one_test(s, o, u, HUGE_VAL, one) == 0)
+            break;
+        double t = one[0].t;
+        if (!(done + t < ulimit))
+            break;
+        hits[n] = one[0];
+        hits[n].t = done + t;
+        n++;
+        done += t;
+        o = v3_add(o, v3_scale(u, t));
+    }
+    return n;
+}
+
+/* shape_intersect_all; nearest_only: the nearest crossing is all the
+ * caller needs (no casting again past it). */
+static int crossings(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits, int nearest_only)
 {
     /* POV-Ray's rays have unit directions and its tolerances are distances
      * along them: the test runs on the unit direction, and its distances
@@ -680,18 +761,8 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
         return 0;
     Vec3 u = len == 1.0 ? dir : v3_scale(dir, 1.0 / len);
     double ulimit = len == 1.0 ? tmax : tmax * len;
-    int n = 0;
-    switch (s->kind) {
-    case SHAPE_SPHERE: n = sphere_all(s, org, u, ulimit, hits); break;
-    case SHAPE_DISC: n = disc_all(s, org, u, ulimit, hits); break;
-    case SHAPE_CONE: n = cone_all(s, org, u, ulimit, hits); break;
-    case SHAPE_TORUS: n = torus_all(s, org, u, ulimit, hits); break;
-    case SHAPE_CSG: n = csg_intersect_all(s, org, u, ulimit, hits); break;
-    case SHAPE_BOX: n = box_all(s, org, u, ulimit, hits); break;
-    case SHAPE_PLANE: n = plane_all(s, org, u, ulimit, hits); break;
-    case SHAPE_GLYPH: n = glyph_intersect_all(s, org, u, ulimit, hits); break;
-    case SHAPE_BLOB: n = blob_intersect_all(s, org, u, ulimit, hits); break;
-    }
+    int n = found_from_origin(s->kind) && !s->is_part && !nearest_only ? crossings_cast_again(s, org, u, ulimit, hits)
+                                                                       : one_test(s, org, u, ulimit, hits);
     if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
         for (int k = 0; k < n; k++)
             hits[k].leaf = NULL;
@@ -701,10 +772,15 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     return n;
 }
 
+int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
+{
+    return crossings(s, org, dir, tmax, hits, 0);
+}
+
 double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hit)
 {
     ShapeHit hits[SHAPE_MAX_HITS];
-    if (shape_intersect_all(s, org, dir, tmax, hits) == 0)
+    if (crossings(s, org, dir, tmax, hits, 1) == 0)
         return -1.0;
     *hit = hits[0];
     return hits[0].t;
@@ -720,6 +796,11 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_CSG: return csg_inside(s, p);
     case SHAPE_BOX: return box_inside(s, p);
     case SHAPE_PLANE: return plane_inside(s, p);
+    case SHAPE_QUADRIC: return quadric_inside(s, p);
+    case SHAPE_POLY: return poly_inside(s, p);
+    case SHAPE_SUPERELLIPSOID: return superellipsoid_inside(s, p);
+    case SHAPE_LATHE: return lathe_inside(s, p);
+    case SHAPE_SOR: return sor_inside(s, p);
     case SHAPE_GLYPH: return glyph_inside(s, p);
     case SHAPE_BLOB: return blob_inside(s, p);
     }
@@ -736,6 +817,11 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_CSG: break; /* its crossings are on its primitives (ShapeHit.leaf) */
     case SHAPE_BOX: return box_normal(s, part);
     case SHAPE_PLANE: return plane_normal(s);
+    case SHAPE_QUADRIC: return quadric_normal(s, p);
+    case SHAPE_POLY: return poly_normal(s, p);
+    case SHAPE_SUPERELLIPSOID: return superellipsoid_normal(s, p);
+    case SHAPE_LATHE: return lathe_normal(s, p, part);
+    case SHAPE_SOR: return sor_normal(s, p, part);
     case SHAPE_GLYPH: return glyph_normal(s, p, part);
     case SHAPE_BLOB: return blob_normal(s, p);
     }
@@ -744,6 +830,10 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
 
 Vec3 shape_uv(const Shape *s, Vec3 p)
 {
+    if (s->kind == SHAPE_LATHE)
+        return lathe_uv(s, p);
+    if (s->kind == SHAPE_SOR)
+        return sor_uv(s, p);
     switch (s->kind) {
     case SHAPE_SPHERE: return sphere_uv(s, p);
     case SHAPE_TORUS: return torus_uv(s, p);
@@ -752,6 +842,11 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_CSG: break;  /* its crossings are on its primitives */
     case SHAPE_BOX:         /* hstrace keeps no uv of a box that is a CSG part (man page) */
     case SHAPE_PLANE: break;
+    case SHAPE_QUADRIC: /* no mapping of their own in POV-Ray 3.7 */
+    case SHAPE_POLY:
+    case SHAPE_SUPERELLIPSOID: break;
+    case SHAPE_LATHE: /* above */
+    case SHAPE_SOR: break;
     case SHAPE_GLYPH: break; /* POV-Ray 3.7's TrueType has no mapping of its own */
     case SHAPE_BLOB: break; /* POV-Ray's blob has no uv mapping */
     }

@@ -16,15 +16,24 @@
 /* SHAPE_BOX and SHAPE_PLANE are POV-Ray's box and plane as parts of CSG
  * objects (csg.h), where their inside matters; elsewhere a box is six
  * polygons and a plane an InfinitePlane (world.h). */
-typedef enum { SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE, SHAPE_GLYPH, SHAPE_BLOB } ShapeKind;
+typedef enum {
+    SHAPE_SPHERE, SHAPE_DISC, SHAPE_CONE, SHAPE_TORUS, SHAPE_CSG, SHAPE_BOX, SHAPE_PLANE, SHAPE_GLYPH, SHAPE_BLOB,
+    SHAPE_QUADRIC, /* quadric.h */
+    SHAPE_POLY,    /* poly.h: poly, cubic, quartic */
+    SHAPE_SUPERELLIPSOID, /* superellipsoid.h */
+    SHAPE_LATHE,   /* lathe.h */
+    SHAPE_SOR,     /* sor.h */
+} ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
  * difference is an intersection whose later parts are inverted, and an
  * inverted CSG object the other operation over inverted parts. UNION is
  * a union inside a CSG object or clipped (a top-level union is
  * flattened); CLIP an object clipped_by others: its first part, the
- * others its clipping solids. */
-typedef enum { CSG_UNION, CSG_INTERSECTION, CSG_MERGE, CSG_CLIP } CsgOp;
+ * others its clipping solids; BOUND an object bounded_by others where
+ * POV-Ray keeps the bound (a poly, a quadric without bounds of its own):
+ * its first part, the others its bounding solids (csg.h). */
+typedef enum { CSG_UNION, CSG_INTERSECTION, CSG_MERGE, CSG_CLIP, CSG_BOUND } CsgOp;
 
 /* Which part of a shape a crossing is on, where the normal depends on it:
  * a cone's or cylinder's side, its cap (the wide end, +z in its own space)
@@ -41,9 +50,16 @@ enum { BOX_SIDE_X0 = 1, BOX_SIDE_X1, BOX_SIDE_Y0, BOX_SIDE_Y1, BOX_SIDE_Z0, BOX_
  * (Shape.max_hits): room for a text of some 60 letters as a CSG part (a
  * buffer of 96 KiB on the stack where one is kept). */
 #define SHAPE_MAX_HITS 4096
+/* The most crossings one test of a shape found numerically from the
+ * ray's origin reports (poly, superellipsoid, lathe, sor: shape.c casts
+ * the ray again past each, with a buffer of this many); a lathe or sor of
+ * more segments keeps its nearest crossings. */
+#define SHAPE_NUMERIC_MAX_HITS 256
 
 typedef struct Shape Shape;
 struct Blob;
+struct SplineSegment; /* scene.h: a lathe's segment */
+struct SorSegment;    /* scene.h: a sor's segment */
 
 /* One crossing of a shape's surface: where, and whether the ray enters
  * the solid there (for CSG and the interiors a ray is inside). */
@@ -131,6 +147,41 @@ struct Shape {
             const struct SceneGlyph *glyph;
             double depth;
         } glyph;
+        /* A quadric's coefficients in world space, inverse applied, and
+         * its bounds (quadric.h) */
+        struct {
+            Vec3 square, mixed, terms;
+            double constant;
+        } quadric;
+        /* A poly's coefficients in POV-Ray's order of terms (poly.h), in
+         * its own space; sturm: POV-Ray's Sturm solver asked for */
+        struct {
+            int order;
+            const double *coeffs;
+            int sturm;
+        } poly;
+        /* A superellipsoid in its own space: POV-Ray's Power x and z,
+         * 2/e and 2/n of superellipsoid { <e, n> } */
+        struct {
+            double ex, ez;
+        } superellipsoid;
+        /* A lathe in its own space: its spline's segments (the scene's),
+         * their kind (SplineKind) and its overall bounding cylinder */
+        struct {
+            int spline;
+            int nsegments;
+            const struct SplineSegment *segments;
+            double radius1, radius2, height1, height2;
+            int sturm;
+        } lathe;
+        /* A sor in its own space: its segments (the scene's), its
+         * bounding cylinder, its discs' squared radii */
+        struct {
+            int nsegments;
+            const struct SorSegment *segments;
+            double radius1, radius2, height1, height2, base2, cap2;
+            int open, sturm;
+        } sor;
         /* A CSG object: nparts parts, the first at `parts` (the next at
          * parts + parts->subtree ...), set once World.shapes is final. */
         struct {

@@ -87,6 +87,11 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
     case OBJ_DISC:
     case OBJ_CONE:
     case OBJ_TORUS:
+    case OBJ_QUADRIC:
+    case OBJ_POLY:
+    case OBJ_SUPERELLIPSOID:
+    case OBJ_LATHE:
+    case OBJ_SOR:
     case OBJ_GLYPH:
     case OBJ_BLOB:
         b += sizeof(Shape) + HIERARCHY_BYTES_PER_POLYGON; /* an item of the shapes' own hierarchy */
