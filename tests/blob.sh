@@ -1,5 +1,5 @@
 #!/bin/sh
-# POV-Ray 3.7's blob (src/geometry/blob.c, its solver blob_solver.c), in
+# POV-Ray 3.7's blob (src/geometry/blob.c, its solver polynomial_solver.c), in
 # TAP, on the scenes of tests/blob/: spherical components in both syntaxes
 # and of negative strength, cylindrical ones, components made ellipsoids by
 # their own transforms, blobs transformed as a whole, sturm, hierarchy off,

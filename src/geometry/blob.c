@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "blob_solver.h"
+#include "polynomial_solver.h"
 
 #define POV_EPSILON 1.0e-10
 #define POV_BOUND_HUGE 2.0e10
@@ -516,8 +516,8 @@ int blob_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit
         if ((dk[0] >= 0.0 && dk[1] >= 0.0 && dk[2] >= 0.0 && dk[3] >= 0.0 && dk[4] >= 0.0) ||
             (dk[0] <= 0.0 && dk[1] <= 0.0 && dk[2] <= 0.0 && dk[3] <= 0.0 && dk[4] <= 0.0))
             continue;
-        double roots[BLOB_SOLVER_MAX_DEGREE];
-        int nr = blob_solve_polynomial(4, coeffs, roots, s->u.blob.sturm, BLOB_ROOT_EPSILON);
+        double roots[4];
+        int nr = poly_solve(4, coeffs, roots, s->u.blob.sturm, BLOB_ROOT_EPSILON);
         int first = n;
         for (int j = 0; j < nr && n < s->max_hits; j++) {
             double dist = roots[j];

@@ -5,8 +5,9 @@
  * between its ends, or a hemisphere's centre at either end); a ray meets
  * the surface where, between consecutive boundaries of the components it
  * passes through, the quartic sum of their fields less the threshold has
- * a root, found by POV-Ray's own solver (blob_solver.h). Kept in blob space
- * and reached through the shape's transform, as POV-Ray's Trans. */
+ * a root, found by POV-Ray's own solver (polynomial_solver.h, the poly
+ * shapes' too). Kept in blob space and reached through the shape's
+ * transform, as POV-Ray's Trans. */
 #ifndef HST_BLOB_H
 #define HST_BLOB_H
 
