@@ -286,9 +286,11 @@ check "--strict: the same without global photons renders, nothing reported" \
     test "$status $(wc -c <"$work/err" | tr -d ' ')" = "0 0"
 
 # --strict refuses only what the scene uses (issue 42): skies.inc, read
-# from POV-Ray's include folder, declares skies hstrace renders exactly and
-# others it approximates (T_Cloud3, a layered texture, is used by O_Cloud2
-# right after it, which --strict once reported as undeclared).
+# from POV-Ray's include folder, declares skies hstrace renders exactly
+# (T_Cloud3, a layered texture, is used by O_Cloud2 right after it, which
+# --strict once reported as undeclared; layered textures are modelled
+# since issue 43), and textures.inc textures it approximates (EMBWood1's
+# crand, the finish's random graininess).
 incdir=/usr/share/povray-3.7/include
 if [ -f "$incdir/skies.inc" ]; then
     for use in "none|" "S_Cloud5|sky_sphere { S_Cloud5 }"; do
@@ -304,9 +306,13 @@ if [ -f "$incdir/skies.inc" ]; then
     printf '#version 3.7;\n#include "colors.inc"\n#include "skies.inc"\ncamera { location <0, 1, -4> look_at <0, 1.5, 0> }\nplane { y, 500 texture { T_Cloud3 scale 600 } }\n' \
         >"$work/skies-layers.pov"
     run "$work/skies-layers.pov" --width 40 --height 30 --strict -o "$work/skies-layers.png"
-    check "skies.inc's T_Cloud3, used: --strict refuses it at the use, status 2, naming its declaration" \
-        exited 2 "^$work/skies-layers.pov:5:26: 'texture' is only approximated by hstrace; --strict makes it an error (declared at $incdir/skies.inc:[0-9]*)\$"
-    check "... no image" [ ! -e "$work/skies-layers.png" ]
+    check "skies.inc's T_Cloud3 (layered), used: renders with --strict" exited 0
+    printf '#version 3.7;\n#include "colors.inc"\n#include "textures.inc"\ncamera { location <0, 1, -4> look_at <0, 1.5, 0> }\nplane { y, 500 texture { EMBWood1 } }\n' \
+        >"$work/textures-crand.pov"
+    run "$work/textures-crand.pov" --width 40 --height 30 --strict -o "$work/textures-crand.png"
+    check "textures.inc's EMBWood1, used: --strict refuses its crand at the use, status 2, naming its declaration" \
+        exited 2 "^$work/textures-crand.pov:5:26: 'crand' is only approximated by hstrace; --strict makes it an error (declared at $incdir/textures.inc:[0-9]*)\$"
+    check "... no image" [ ! -e "$work/textures-crand.png" ]
     printf '#version 3.7;\n#include "colors.inc"\n#include "skies.inc"\ncamera { location <0, 1, -4> look_at <0, 1.5, 0> }\nplane { y, 500 texture { T_Cloud9 } }\n' \
         >"$work/skies-undeclared.pov"
     for strict in "" --strict; do

@@ -1229,11 +1229,13 @@ void gram_finish(Parser *p, Finish *f)
             break;
         }
         case KW_brilliance: f->brilliance = expr_float(p); break;
-        case KW_crand:
+        case KW_crand: {
+            const Token at = *t; /* (the float's tokens come after: t is not kept) */
             f->crand = expr_float(p);
             if (f->crand != 0.0)
-                tok_approximate(p, t, APPROX_FINISH, &f->approx);
+                tok_approximate(p, &at, APPROX_FINISH, &f->approx);
             break;
+        }
         case KW_phong:
             phong_albedo = allow_albedo(p);
             f->phong = expr_float(p);
