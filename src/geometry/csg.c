@@ -71,12 +71,7 @@ int csg_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit 
         n += kept;
     }
     /* nearest first; at one distance the earlier part first (stable) */
-    for (int i = 1; i < n; i++)
-        for (int j = i; j > 0 && hits[j].t < hits[j - 1].t; j--) {
-            ShapeHit x = hits[j];
-            hits[j] = hits[j - 1];
-            hits[j - 1] = x;
-        }
+    shape_hits_sort(hits, n);
     return n;
 }
 

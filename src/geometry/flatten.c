@@ -951,6 +951,15 @@ static Shape *add_shape(Builder *b, ShapeKind kind, const Inherited *in, const T
     return s;
 }
 
+/* A shape whose parameters are kept in its own space, reached through the
+ * transforms alone (no frame of its own before them). */
+static Shape *add_shape_own_space(Builder *b, ShapeKind kind, const Inherited *in, int material)
+{
+    Transform frame;
+    transform_identity(&frame);
+    return add_shape(b, kind, in, &frame, material);
+}
+
 static void shape_placed(Builder *b, Shape *s)
 {
     shape_compute_bounds(s);
@@ -1029,9 +1038,7 @@ static int flatten_cone(Builder *b, const SceneObject *o, const Inherited *in, i
  * Torus keeps its radii and a transform). */
 static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
-    Transform frame;
-    transform_identity(&frame);
-    Shape *s = add_shape(b, SHAPE_TORUS, in, &frame, material);
+    Shape *s = add_shape_own_space(b, SHAPE_TORUS, in, material);
     if (!s)
         return -1;
     s->u.torus.major = o->u.torus.major;
@@ -1045,9 +1052,7 @@ static int flatten_torus(Builder *b, const SceneObject *o, const Inherited *in, 
  * TrueType keeps its outline and a transform). */
 static int flatten_glyph(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
-    Transform frame;
-    transform_identity(&frame);
-    Shape *s = add_shape(b, SHAPE_GLYPH, in, &frame, material);
+    Shape *s = add_shape_own_space(b, SHAPE_GLYPH, in, material);
     if (!s)
         return -1;
     s->u.glyph.glyph = o->u.glyph.glyph;
@@ -1080,9 +1085,7 @@ static int flatten_blob(Builder *b, const SceneObject *o, const Inherited *in, i
         return -1;
     }
     w->blobs[w->nblobs++] = blob;
-    Transform frame;
-    transform_identity(&frame);
-    Shape *s = add_shape(b, SHAPE_BLOB, in, &frame, material);
+    Shape *s = add_shape_own_space(b, SHAPE_BLOB, in, material);
     if (!s)
         return -1;
     s->u.blob.blob = blob;
@@ -1115,9 +1118,7 @@ static int flatten_quadric(Builder *b, const SceneObject *o, const Inherited *in
  * transform (Poly keeps a Trans). */
 static int flatten_poly(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
-    Transform frame;
-    transform_identity(&frame);
-    Shape *s = add_shape(b, SHAPE_POLY, in, &frame, material);
+    Shape *s = add_shape_own_space(b, SHAPE_POLY, in, material);
     if (!s)
         return -1;
     s->max_hits = o->u.poly.order;
@@ -1131,9 +1132,7 @@ static int flatten_poly(Builder *b, const SceneObject *o, const Inherited *in, i
 /* A superellipsoid in its own space, reached through every transform. */
 static int flatten_superellipsoid(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
-    Transform frame;
-    transform_identity(&frame);
-    Shape *s = add_shape(b, SHAPE_SUPERELLIPSOID, in, &frame, material);
+    Shape *s = add_shape_own_space(b, SHAPE_SUPERELLIPSOID, in, material);
     if (!s)
         return -1;
     s->max_hits = 2 + 9; /* a crossing per piece of the ray at most (its box's two ends, nine planes) */
@@ -1147,9 +1146,7 @@ static int flatten_superellipsoid(Builder *b, const SceneObject *o, const Inheri
  * bounding cylinder from its segments (lathe.h). */
 static int flatten_lathe(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
-    Transform frame;
-    transform_identity(&frame);
-    Shape *s = add_shape(b, SHAPE_LATHE, in, &frame, material);
+    Shape *s = add_shape_own_space(b, SHAPE_LATHE, in, material);
     if (!s)
         return -1;
     s->u.lathe.spline = (int)o->u.lathe.spline;
@@ -1168,9 +1165,7 @@ static int flatten_lathe(Builder *b, const SceneObject *o, const Inherited *in, 
 /* A sor in its own space, reached through every transform (sor.h). */
 static int flatten_sor(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
-    Transform frame;
-    transform_identity(&frame);
-    Shape *s = add_shape(b, SHAPE_SOR, in, &frame, material);
+    Shape *s = add_shape_own_space(b, SHAPE_SOR, in, material);
     if (!s)
         return -1;
     s->u.sor.nsegments = o->u.sor.nsegments;

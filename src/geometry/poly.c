@@ -113,13 +113,10 @@ static int general_roots(const Shape *s, Vec3 o, Vec3 d, double *roots)
     return poly_solve(degree, eqn + first, roots, s->u.poly.sturm, POLY_ROOT_TOLERANCE);
 }
 
-/* The polynomial's gradient at q in its own space (Poly's normal0: each
- * term's partial derivatives summed in the order of terms). */
-static Vec3 local_gradient(const Shape *s, Vec3 q)
+/* The powers of q's coordinates up to order (x[i] = q.x^i, each the last
+ * times q.x, as Poly's normal0 and inside build them). */
+static void powers(Vec3 q, int order, double *x, double *y, double *z)
 {
-    const int order = s->u.poly.order;
-    const double *a = s->u.poly.coeffs;
-    double x[MAX_ORDER + 1], y[MAX_ORDER + 1], z[MAX_ORDER + 1];
     x[0] = y[0] = z[0] = 1.0;
     x[1] = q.x;
     y[1] = q.y;
@@ -129,6 +126,16 @@ static Vec3 local_gradient(const Shape *s, Vec3 q)
         y[i] = q.y * y[i - 1];
         z[i] = q.z * z[i - 1];
     }
+}
+
+/* The polynomial's gradient at q in its own space (Poly's normal0: each
+ * term's partial derivatives summed in the order of terms). */
+static Vec3 local_gradient(const Shape *s, Vec3 q)
+{
+    const int order = s->u.poly.order;
+    const double *a = s->u.poly.coeffs;
+    double x[MAX_ORDER + 1], y[MAX_ORDER + 1], z[MAX_ORDER + 1];
+    powers(q, order, x, y, z);
     Vec3 g = v3(0.0, 0.0, 0.0);
     int term = 0;
     for (int i = order; i >= 0; i--)
@@ -174,12 +181,7 @@ int poly_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
         n++;
     }
     /* nearest first; equal distances keep the solver's order */
-    for (int i = 1; i < n; i++)
-        for (int j = i; j > 0 && hits[j].t < hits[j - 1].t; j--) {
-            ShapeHit x = hits[j];
-            hits[j] = hits[j - 1];
-            hits[j - 1] = x;
-        }
+    shape_hits_sort(hits, n);
     return n;
 }
 
@@ -189,15 +191,7 @@ int poly_inside(const Shape *s, Vec3 p)
     const int order = s->u.poly.order;
     const double *a = s->u.poly.coeffs;
     double x[MAX_ORDER + 1], y[MAX_ORDER + 1], z[MAX_ORDER + 1];
-    x[0] = y[0] = z[0] = 1.0;
-    x[1] = q.x;
-    y[1] = q.y;
-    z[1] = q.z;
-    for (int i = 2; i <= order; i++) {
-        x[i] = x[1] * x[i - 1];
-        y[i] = y[1] * y[i - 1];
-        z[i] = z[1] * z[i - 1];
-    }
+    powers(q, order, x, y, z);
     double value = 0.0;
     int term = 0;
     for (int i = order; i >= 0; i--)

@@ -266,12 +266,7 @@ static int cone_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *h
             n += cone_keep(s, &hits[n], t, len, tmax, SHAPE_BASE, d, v3(0.0, 0.0, -1.0));
     }
     /* nearest first (POV-Ray takes the nearest of its stack) */
-    for (int i = 1; i < n; i++)
-        for (int j = i; j > 0 && hits[j].t < hits[j - 1].t; j--) {
-            ShapeHit x = hits[j];
-            hits[j] = hits[j - 1];
-            hits[j - 1] = x;
-        }
+    shape_hits_sort(hits, n);
     return n;
 }
 
@@ -852,6 +847,16 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }
+void shape_hits_sort(ShapeHit *hits, int n)
+{
+    for (int i = 1; i < n; i++) /* insertion: a shape has a few crossings */
+        for (int j = i; j > 0 && hits[j].t < hits[j - 1].t; j--) {
+            ShapeHit x = hits[j];
+            hits[j] = hits[j - 1];
+            hits[j - 1] = x;
+        }
+}
+
 int shape_box_hit(const Shape *s, Vec3 org, Vec3 dir, double tmax)
 {
     /* slabs grown by a relative margin far above the rounding of the

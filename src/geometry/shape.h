@@ -225,6 +225,11 @@ Vec3 shape_uv(const Shape *s, Vec3 p);
  * up, moved to origin. Discs, cones and cylinders are placed by it. */
 void shape_coordinate_frame(Transform *t, Vec3 origin, Vec3 up, double radius, double length);
 
+/* Puts n crossings in order of distance, nearest first, those at one
+ * distance in the order given (stable: a CSG object's earlier part
+ * first); POV-Ray takes the nearest of its intersection stack. */
+void shape_hits_sort(ShapeHit *hits, int n);
+
 /* Does the ray come near s's bounds for some t in [0, tmax]? A
  * conservative rejection before the exact test. */
 int shape_box_hit(const Shape *s, Vec3 org, Vec3 dir, double tmax);

@@ -111,12 +111,7 @@ int sor_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
                 keep(s, hits, &n, k / len, tmax, SOR_CURVE + j, curve_normal(e, v3_add(P, v3_scale(D, k))), D);
         }
     }
-    for (int i = 1; i < n; i++)
-        for (int j = i; j > 0 && hits[j].t < hits[j - 1].t; j--) {
-            ShapeHit x = hits[j];
-            hits[j] = hits[j - 1];
-            hits[j - 1] = x;
-        }
+    shape_hits_sort(hits, n);
     return n;
 }
 

@@ -288,12 +288,7 @@ int superellipsoid_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit
     }
     /* in order of the samples, so nearest first up to the solver's
      * rounding; sorted to be sure */
-    for (int i = 1; i < n; i++)
-        for (int j = i; j > 0 && hits[j].t < hits[j - 1].t; j--) {
-            ShapeHit x = hits[j];
-            hits[j] = hits[j - 1];
-            hits[j - 1] = x;
-        }
+    shape_hits_sort(hits, n);
     return n;
 }
 

@@ -275,12 +275,7 @@ int glyph_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
     }
 sorted:
     /* nearest first; at one distance in the order found */
-    for (int i = 1; i < f.n; i++)
-        for (int j = i; j > 0 && hits[j].t < hits[j - 1].t; j--) {
-            ShapeHit x = hits[j];
-            hits[j] = hits[j - 1];
-            hits[j - 1] = x;
-        }
+    shape_hits_sort(hits, f.n);
     return f.n;
 }
 

@@ -614,6 +614,34 @@ static int trace_refraction(ShadeContext *ctx, const Ray *ray, const Hit *hit, c
     return 0;
 }
 
+/* The refracted light a surface lets through (fil, trans: what its
+ * textures let through, and its grey), added to *out: faded by the
+ * interior the ray leaves, and filtered by fil unless totally reflected
+ * (POV-Ray's ComputeLightedTexture's refraction part). Returns 1 after a
+ * total internal reflection. */
+static int add_refraction(ShadeContext *ctx, const Ray *ray, const Hit *hit, const LightState *state,
+                          const Material *m, Vec3 normal, Vec3 raw, RGB fil, double trans, double weight, int level,
+                          Radiance *out)
+{
+    double w1 = fmax(fabs(fil.r), fmax(fabs(fil.g), fabs(fil.b)));
+    Radiance rfr = { 0, 0, 0, 0 };
+    int tir = trace_refraction(ctx, ray, hit, state, m, normal, raw, weight * w1, level, &rfr);
+    RGB attc = { 1.0, 1.0, 1.0 };
+    if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON)
+        attc = interior_fade(m, hit->t);
+    if (tir) {
+        out->r += attc.r * rfr.r;
+        out->g += attc.g * rfr.g;
+        out->b += attc.b * rfr.b;
+    } else {
+        out->r += attc.r * rfr.r * fil.r;
+        out->g += attc.g * rfr.g * fil.g;
+        out->b += attc.b * rfr.b * fil.b;
+        out->transmit = greyscale(attc.r, attc.g, attc.b) * rfr.transmit * trans;
+    }
+    return tir;
+}
+
 void shade_trace(ShadeContext *ctx, const Ray *ray, double weight, int level, Radiance *out)
 {
     ctx->tree_rays_left = ctx->max_tree_rays;
@@ -722,25 +750,9 @@ static void texture_colour(ShadeContext *ctx, const Ray *ray, const Hit *hit, co
     }
     double trans = fmin(1.0, fabs(greyscale(fil.r, fil.g, fil.b)));
 
-    int tir = 0;
-    if (trans > w->adc_bailout && ctx->quality.refraction) {
-        double w1 = fmax(fabs(fil.r), fmax(fabs(fil.g), fabs(fil.b)));
-        Radiance rfr = { 0, 0, 0, 0 };
-        tir = trace_refraction(ctx, ray, hit, state, m, t->normal, raw, weight * w1, level, &rfr);
-        RGB attc = { 1.0, 1.0, 1.0 };
-        if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON)
-            attc = interior_fade(m, hit->t);
-        if (tir) {
-            out->r += attc.r * rfr.r;
-            out->g += attc.g * rfr.g;
-            out->b += attc.b * rfr.b;
-        } else {
-            out->r += attc.r * rfr.r * fil.r;
-            out->g += attc.g * rfr.g * fil.g;
-            out->b += attc.b * rfr.b * fil.b;
-            out->transmit = greyscale(attc.r, attc.g, attc.b) * rfr.transmit * trans;
-        }
-    }
+    int tir = trans > w->adc_bailout && ctx->quality.refraction
+                  ? add_refraction(ctx, ray, hit, state, m, t->normal, raw, fil, trans, weight, level, out)
+                  : 0;
 
     /* Reflection, skipped after total internal reflection (the layer's
      * normal is the top normal for one-layer textures). */
@@ -934,25 +946,9 @@ __attribute__((noinline)) static void shade_layers_hit(ShadeContext *ctx, const 
         out->b += lit[i].acc.b * seen[i].b;
     }
 
-    int tir = 0;
-    if (trans > w->adc_bailout && ctx->quality.refraction) {
-        double w1 = fmax(fabs(fil.r), fmax(fabs(fil.g), fabs(fil.b)));
-        Radiance rfr = { 0, 0, 0, 0 };
-        tir = trace_refraction(ctx, ray, hit, state, m, lit[0].normal, raw, weight * w1, level, &rfr);
-        RGB attc = { 1.0, 1.0, 1.0 };
-        if (interior_index(&ray->inside, m->interior_key) >= 0 && fabs(m->fade_distance) > POV_EPSILON)
-            attc = interior_fade(m, hit->t);
-        if (tir) {
-            out->r += attc.r * rfr.r;
-            out->g += attc.g * rfr.g;
-            out->b += attc.b * rfr.b;
-        } else {
-            out->r += attc.r * rfr.r * fil.r;
-            out->g += attc.g * rfr.g * fil.g;
-            out->b += attc.b * rfr.b * fil.b;
-            out->transmit = greyscale(attc.r, attc.g, attc.b) * rfr.transmit * trans;
-        }
-    }
+    int tir = trans > w->adc_bailout && ctx->quality.refraction
+                  ? add_refraction(ctx, ray, hit, state, m, lit[0].normal, raw, fil, trans, weight, level, out)
+                  : 0;
     if (ctx->quality.reflection)
         layers_reflection(ctx, ray, hit, state, raw, lit, n, tir, level, out);
 }

@@ -413,6 +413,27 @@ static int by_near(const void *a, const void *b)
     return x->item < y->item ? -1 : x->item > y->item;
 }
 
+/* A lower bound of the distance from the light at `at` to the box
+ * [lo, hi], in float rounded down (0 where the light is in it; an
+ * unbounded box's distances that are not numbers are passed over). */
+static float box_near(Vec3 lo, Vec3 hi, Vec3 at)
+{
+    double dx = fmax(fmax(lo.x - at.x, at.x - hi.x), 0.0);
+    double dy = fmax(fmax(lo.y - at.y, at.y - hi.y), 0.0);
+    double dz = fmax(fmax(lo.z - at.z, at.z - hi.z), 0.0);
+    return round_down(sqrt(dx * dx + dy * dy + dz * dz) * (1.0 - 1e-9));
+}
+
+/* The footprint of the box [lo, hi] (finite) on the face: its corners'
+ * (the box is their convex hull, which is all points_footprint asks). */
+static LbFootprint box_footprint(const LightBuffers *lbs, Vec3 lo, Vec3 hi, Vec3 at, int face, double near)
+{
+    Vec3 corner[8];
+    for (int q = 0; q < 8; q++)
+        corner[q] = v3(q & 1 ? hi.x : lo.x, q & 2 ? hi.y : lo.y, q & 4 ? hi.z : lo.z);
+    return points_footprint(lbs, corner, 8, at, face, near);
+}
+
 /* An instance as a candidate (instance.h): its box (Bvh.instance_box,
  * rounded outward with the hierarchy's margin) stands for its polygons,
  * which it holds. Its near bound is the box's distance from the light,
@@ -426,17 +447,10 @@ static int instance_candidate(const LightBuffers *lbs, const LightBuffer *lb, co
     Vec3 lo = v3(box[0], box[1], box[2]), hi = v3(box[3], box[4], box[5]);
     if (box_outside(pyr, lb->at, lo, hi, lbs->margin))
         return 0;
-    Vec3 at = lb->at;
-    double dx = fmax(fmax(lo.x - at.x, at.x - hi.x), 0.0);
-    double dy = fmax(fmax(lo.y - at.y, at.y - hi.y), 0.0);
-    double dz = fmax(fmax(lo.z - at.z, at.z - hi.z), 0.0);
-    float near = round_down(sqrt(dx * dx + dy * dy + dz * dz) * (1.0 - 1e-9));
-    Vec3 corner[8];
-    for (int q = 0; q < 8; q++)
-        corner[q] = v3(q & 1 ? hi.x : lo.x, q & 2 ? hi.y : lo.y, q & 4 ? hi.z : lo.z);
+    float near = box_near(lo, hi, lb->at);
     LbShape shape;
     memset(&shape, 0, sizeof shape);
-    Candidate cand = { { 0.0f, 0.0f, 0.0f, 0.0f }, points_footprint(lbs, corner, 8, at, face, near), near, k,
+    Candidate cand = { { 0.0f, 0.0f, 0.0f, 0.0f }, box_footprint(lbs, lo, hi, lb->at, face, near), near, k,
                        (uint32_t)out->nshapes };
     return shape_push(out, &shape) || candidate_push(out, &cand) ? -1 : 0;
 }
@@ -561,21 +575,12 @@ static int gather_objects(const LightBuffers *lbs, const LightBuffer *lb, const 
             Vec3 blo = v3(lo[0], lo[1], lo[2]), bhi = v3(hi[0], hi[1], hi[2]);
             if (box_outside(pyr, at, blo, bhi, lbs->margin))
                 continue;
-            /* (an unbounded box: its distances are 0, or not numbers, which fmax passes over) */
-            double dx = fmax(fmax(lo[0] - at.x, at.x - hi[0]), 0.0);
-            double dy = fmax(fmax(lo[1] - at.y, at.y - hi[1]), 0.0);
-            double dz = fmax(fmax(lo[2] - at.z, at.z - hi[2]), 0.0);
-            float near = round_down(sqrt(dx * dx + dy * dy + dz * dz) * (1.0 - 1e-9));
-            /* the box's footprint: its corners' (the box is their convex
-             * hull); an unbounded box's is the whole face */
+            float near = box_near(blo, bhi, at);
+            /* an unbounded box's footprint is the whole face */
             LbFootprint f = { -INFINITY, INFINITY, -INFINITY, INFINITY };
             if (isfinite(lo[0]) && isfinite(lo[1]) && isfinite(lo[2]) && isfinite(hi[0]) && isfinite(hi[1]) &&
-                isfinite(hi[2])) {
-                Vec3 corner[8];
-                for (int q = 0; q < 8; q++)
-                    corner[q] = v3(q & 1 ? hi[0] : lo[0], q & 2 ? hi[1] : lo[1], q & 4 ? hi[2] : lo[2]);
-                f = points_footprint(lbs, corner, 8, at, face, near);
-            }
+                isfinite(hi[2]))
+                f = box_footprint(lbs, blo, bhi, at, face, near);
             LbObject oc = { near, f.u0, f.u1, f.v0, f.v1, b->items[k] };
             void *items = out->c;
             if (room_for_one(&items, out->n, &out->cap, sizeof oc))
