@@ -92,6 +92,15 @@ static void make_crackle_cubes(void)
                 }
 }
 
+/* a + b as POV-Ray's int arithmetic gives it on its machines, wrapping
+ * past INT_MIN and INT_MAX (a point far beyond the range of int, whose
+ * cube is held to its edge), without C's undefined overflow: in unsigned
+ * arithmetic, back to int as GCC converts (modulo 2^32). */
+static int wrapping_add(int a, int b)
+{
+    return (int)((unsigned)a + (unsigned)b);
+}
+
 /* The random point of the unit cube at (x, y, z) (IntPickInCube). */
 static Vec3 point_in_cube(int x, int y, int z)
 {
@@ -121,7 +130,8 @@ double crackle_value(const Pigment *pig, Vec3 p, int generator)
               fz = int_as_povray(floor(p.z - POV_EPSILON));
     Vec3 points[81];
     for (int i = 0; i < 81; i++)
-        points[i] = point_in_cube(fx + crackle_cubes[i][0], fy + crackle_cubes[i][1], fz + crackle_cubes[i][2]);
+        points[i] = point_in_cube(wrapping_add(fx, crackle_cubes[i][0]), wrapping_add(fy, crackle_cubes[i][1]),
+                                  wrapping_add(fz, crackle_cubes[i][2]));
 
     double d1 = metric_sum(v3_sub(points[0], p), metric);
     double d2 = metric_sum(v3_sub(points[1], p), metric);
