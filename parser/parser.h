@@ -86,6 +86,10 @@ typedef struct {
     size_t max_memory;
     /* --strict: what hstrace would approximate (ApproxKind) is an error. */
     int strict;
+    /* POV-Ray's quality below 6 (+Q0 to +Q5, its Q_QUICKC): a pigment
+     * given a quick_color shows that colour instead of itself (its
+     * pattern is not evaluated); others are evaluated as at +Q9. */
+    int quick_colours;
     /* #fopen ... write/append is an error (for a fuzzer, which must not
      * write files its inputs name). */
     int forbid_writes;

@@ -119,7 +119,8 @@ objects/quartic/teardrop.pov|
 objects/quartic/quarcyl.pov|
 objects/quartic/torus.pov|
 objects/superel1.pov|
-objects/lathe2.pov|"
+objects/lathe2.pov|
+textures/pigments/checker2.pov|"
 
 # The limits per scene, 160x120, each LIMIT (MEASURED): the value measured
 # on 2026-11-23 (POV-Ray 3.7.0.10, one thread; the same in two runs; the
@@ -225,6 +226,8 @@ objects/quartic/quarcyl.pov                      1e-5     (0)           1 (0)   
 objects/quartic/torus.pov                        1e-5     (2.05e-6)     1 (0)           1 (0)
 objects/superel1.pov                             1e-5     (0)           1 (0)           1 (0)
 objects/lathe2.pov                               1e-5     (2.88e-6)     1 (0)           1 (0)
+# quick_color shown below +Q6 as POV-Ray shows it (its +Q4 render, the mask)
+textures/pigments/checker2.pov                   1e-5     (5.24e-7)     1 (0)           1 (0)
 '
 
 while IFS='|' read -r scene todo; do

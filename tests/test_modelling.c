@@ -197,6 +197,28 @@ static void test_layers(void)
     scene_free(s);
 }
 
+/* quick_color: below +Q6 POV-Ray shows it instead of the pigment
+ * (checked against POV-Ray's renders of a checker with and without one:
+ * at +Q3 to +Q5 the one with a quick colour is that colour, the other its
+ * checker); at +Q6 and above it is ignored. */
+static void test_quick_colour(void)
+{
+    const char *text = "triangle { 0, x, y pigment { checker rgb <1,0,0>, rgb <0,0,1> quick_color rgb <0,1,0> } }\n"
+                       "triangle { 0, x, y pigment { checker rgb <1,0,0>, rgb <0,0,1> } }\n";
+    Scene *s = parse(text);
+    tap_ok(s && s->nobjects == 2 && s->objects[0]->texture->pigment.kind != PIGMENT_SOLID,
+           "quick_color at full quality: the checker is kept");
+    scene_free(s);
+    ParseOptions quick = opts;
+    quick.quick_colours = 1;
+    s = parse_with(text, &quick);
+    tap_ok(s && s->nobjects == 2 && s->objects[0]->texture->pigment.kind == PIGMENT_SOLID &&
+               colour_is(s->objects[0]->texture->pigment.colour, 0, 1, 0, 0, 0) &&
+               s->objects[1]->texture->pigment.kind != PIGMENT_SOLID,
+           "quick_color below +Q6: the quick colour stands for the pigment, a pigment without one is kept");
+    scene_free(s);
+}
+
 static void test_sky(void)
 {
     Scene *s = parse("background { rgb <0, 0, 1> }\n"
@@ -600,6 +622,7 @@ int main(void)
     test_pigments();
     test_texture_binding();
     test_layers();
+    test_quick_colour();
     test_sky();
     test_approximations();
     test_strict();

@@ -977,6 +977,8 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
     int uv_here = 0;      /* this block said uv_mapping: what follows is seen at (u, v, 0) */
     int mandel_map = 0;   /* the map is mandel's default, given at its keyword */
     Token average_at;     /* where `average` was, when it was */
+    Colour quick;         /* quick_color, shown instead below +Q6 (ParseOptions.quick_colours) */
+    int has_quick = 0;
     for (;;) {
         Token *t = tok_next(p);
         if (tok_is_punct(t, close))
@@ -1009,8 +1011,8 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
             continue;
         int kw = t->type == TK_WORD ? t->kw : -1;
         if (kw == KW_quick_color || kw == KW_quick_colour) {
-            Colour ignored;
-            expr_colour(p, &ignored, 1);
+            expr_colour(p, &quick, 1);
+            has_quick = 1;
             continue;
         }
         if (kw == KW_average) { /* in a pigment: the mean of its pigment_map's pigments */
@@ -1102,6 +1104,13 @@ static void pigment_items(Parser *p, Pigment *pig, int close)
         pig->kind = PIGMENT_SOLID;
         pig->nmap = 0;
         pig->map = NULL;
+    }
+    if (has_quick && p->opts->quick_colours) {
+        /* POV-Ray below +Q6 (Q_QUICKC): the quick colour is the pigment */
+        pig->kind = PIGMENT_SOLID;
+        pig->nmap = 0;
+        pig->map = NULL;
+        pig->colour = quick;
     }
 }
 

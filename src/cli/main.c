@@ -179,6 +179,7 @@ static int parse_scene(Frame *f, const Options *o, const ParseAnimation *anim, c
     popt.image_width = o->width;
     popt.image_height = o->height;
     popt.strict = o->strict;
+    popt.quick_colours = o->quality <= 5;
     popt.load_image = image_read_for_scene;
     popt.language_version_given = o->language_version_given;
     popt.quiet_debug = !o->debug_console;
