@@ -106,17 +106,16 @@ static int buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, const S
     return 0;
 }
 
-/* Where q falls in its light's buffer: the buffer (NULL: none), the spot
- * and its cell (NULL: none, the shadow ray decides). */
+/* Where q falls in its light's buffer lb (NULL: none): the spot and its
+ * cell (NULL: none, the shadow ray decides). */
 typedef struct {
-    LightBuffer *lb;
     LbSpot spot;
     const LbCell *cell;
 } BufferPlace;
 
 static BufferPlace buffer_place(ShadowContext *ctx, LightBuffer *lb, const ShadowQuery *q)
 {
-    BufferPlace at = { lb, { 0, 0, 0, 0.0, 0.0 }, NULL };
+    BufferPlace at = { { 0, 0, 0, 0.0, 0.0 }, NULL };
     if (lb && light_buffer_spot(v3_neg(q->to_light), &at.spot))
         at.cell = cell_at_spot(ctx, lb, q, &at.spot);
     return at;
