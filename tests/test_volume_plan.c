@@ -9,7 +9,8 @@
  *     header states it;
  *   - --volumes always builds every light that casts shadows and calibrates
  *     the whole cost model; auto with a camera that sees nothing expects no
- *     decision, builds nothing and leaves no volumes and no calibration. */
+ *     decision, builds nothing and leaves no volumes and no calibration;
+ *     auto with a polygon a pixel or more runs no pilot at all. */
 #include <stdio.h>
 
 #include "fixtures.h"
@@ -242,6 +243,27 @@ static void modes(void)
                plan.light[2].decision == PLAN_IMPOSSIBLE,
            "auto, looking away: the lights cannot pay, the shadowless one has none (%s)",
            r == 0 ? volume_plan_decision_name(plan.light[0].decision) : "");
+    if (r == 0) {
+        volume_plan_free(&plan);
+        shadow_volumes_free(&sv);
+    }
+    /* Auto with a polygon a pixel or more: not even piloted; one pixel
+     * more than the polygons, the pilot runs. */
+    o.width = f.w.npolygons;
+    o.height = 1;
+    r = have_bvh ? volume_plan_build(&plan, &sv, &cost, &f.w, &f.g, &bvh, &f.w.camera.location, &o) : -1;
+    tap_ok(r == 0 && plan.pilot_rays == 0 && sv.light == NULL && plan.light[0].decision == PLAN_TOO_MANY_POLYGONS &&
+               plan.light[1].decision == PLAN_TOO_MANY_POLYGONS && plan.light[2].decision == PLAN_IMPOSSIBLE,
+           "auto, %d polygons for as many pixels: no pilot, no volumes (%s)", f.w.npolygons,
+           r == 0 ? volume_plan_decision_name(plan.light[0].decision) : "");
+    if (r == 0) {
+        volume_plan_free(&plan);
+        shadow_volumes_free(&sv);
+    }
+    o.width = f.w.npolygons + 1;
+    r = have_bvh ? volume_plan_build(&plan, &sv, &cost, &f.w, &f.g, &bvh, &f.w.camera.location, &o) : -1;
+    tap_ok(r == 0 && plan.pilot_rays > 0 && plan.light[0].decision != PLAN_TOO_MANY_POLYGONS,
+           "auto, %d polygons for one pixel more: piloted (%d pilot rays)", f.w.npolygons, r == 0 ? plan.pilot_rays : 0);
     if (r == 0) {
         volume_plan_free(&plan);
         shadow_volumes_free(&sv);

@@ -125,6 +125,12 @@ static void print_plan(FILE *f, const VolumePlan *p)
         fprintf(f, "  volume plan every light's volumes built (--volumes always)\n");
         return;
     }
+    if (p->pilot_rays == 0) {
+        fprintf(f, "  volume plan no pilot for %.0f pixels; planned in %.1f ms\n", p->pixels, p->seconds * 1e3);
+        for (int i = 0; i < p->nlights; i++)
+            fprintf(f, "    light %d   %s\n", i, volume_plan_decision_name(p->light[i].decision));
+        return;
+    }
     fprintf(f, "  volume plan %d pilot rays for %.0f pixels; touching check %.1f ns a decision, recording cells %.1f ns"
                " a camera ray; welding, edges' uses and registering the polygons estimated %.1f ms (of which"
                " registering %.1f ms; sample of %d polygons); planned in %.1f ms\n",
@@ -133,7 +139,7 @@ static void print_plan(FILE *f, const VolumePlan *p)
     for (int i = 0; i < p->nlights; i++) {
         const LightPlan *l = &p->light[i];
         fprintf(f, "    light %d   %s", i, volume_plan_decision_name(l->decision));
-        if (l->decision == PLAN_IMPOSSIBLE || l->decision == PLAN_AREA_LIGHT) {
+        if (l->decision == PLAN_IMPOSSIBLE || l->decision == PLAN_AREA_LIGHT || l->decision == PLAN_TOO_MANY_POLYGONS) {
             fprintf(f, "\n");
             continue;
         }

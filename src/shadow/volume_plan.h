@@ -48,7 +48,8 @@ typedef enum {
     PLAN_DROPPED,         /* built; the pilot measured hst no cheaper than the shadow ray: dropped */
     PLAN_TRIAL_FAILED,    /* not built: the most promising light's volumes were tried first and did not pay */
     PLAN_PREDICTED_WONT_PAY, /* not built: priced at the tried light's measured hst cost, they would not pay */
-    PLAN_DROPPED_ALL      /* built and cheaper, but the lights kept would not repay the cells' recording: dropped */
+    PLAN_DROPPED_ALL,     /* built and cheaper, but the lights kept would not repay the cells' recording: dropped */
+    PLAN_TOO_MANY_POLYGONS /* not planned: a polygon a pixel or more, whose volumes' build outweighs every shadow ray */
 } LightPlanDecision;
 
 typedef struct {
