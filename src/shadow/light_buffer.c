@@ -455,15 +455,16 @@ static int instance_candidate(const LightBuffers *lbs, const LightBuffer *lb, co
     return shape_push(out, &shape) || candidate_push(out, &cand) ? -1 : 0;
 }
 
-/* Every polygon that may cast the light's shadows into the pyramid: the
- * hierarchy walked with it, the list in order of the near bound. */
-static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb, const Pyramid *pyr, int face,
-                                 CandidateList *out)
+/* The leaf items k of hierarchy b whose nodes' boxes, each grown by
+ * `growth` (object_growth's rule for the node's size; 0: as they are),
+ * meet the pyramid, and that cast shadows: visit(user, k) for each, in
+ * the walk's order (the gatherers sort what they keep). Returns 0, or the
+ * first nonzero visit's value. */
+typedef int (*PyramidVisit)(void *user, uint32_t k);
+static int walk_pyramid(const LightBuffers *lbs, const Bvh *b, const Pyramid *pyr, Vec3 at, double growth,
+                        PyramidVisit visit, void *user)
 {
-    const Bvh *b = lbs->bvh;
-    const World *w = lbs->world;
-    const Light *light = &w->lights[lb->light];
-    if (b->nnodes == 0)
+    if (!b || b->nnodes == 0)
         return 0;
     uint32_t stack[BVH_STACK];
     int sp = 0;
@@ -477,7 +478,14 @@ static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb,
                     continue;
                 Vec3 lo = v3(node->lo[0][k], node->lo[1][k], node->lo[2][k]);
                 Vec3 hi = v3(node->hi[0][k], node->hi[1][k], node->hi[2][k]);
-                if (!box_outside(pyr, lb->at, lo, hi, lbs->margin))
+                if (growth > 0.0) {
+                    /* the node's box grown as its objects' are (at least) */
+                    double g = growth * (1.0 + 2.0 * fmax(v3_max_abs(lo), v3_max_abs(hi)) + lbs->object_reach) +
+                               lbs->margin;
+                    lo = v3_sub(lo, v3(g, g, g));
+                    hi = v3_add(hi, v3(g, g, g));
+                }
+                if (!box_outside(pyr, at, lo, hi, lbs->margin))
                     stack[sp++] = node->child[k];
             }
             continue;
@@ -486,26 +494,57 @@ static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb,
         for (uint32_t k = first; k < end; k++) {
             if (b->prims[k].hide & HIDE_NO_SHADOW)
                 continue;
-            if (b->items[k] & BVH_INSTANCE) {
-                if (instance_candidate(lbs, lb, pyr, face, &b->instance_box[6 * (b->items[k] & ~BVH_INSTANCE)], k,
-                                       out))
-                    return -1;
-                continue;
-            }
-            const Polygon *p = &w->polygons[b->items[k]];
-            /* edge-on to the light: the shadow ray passes it (shadow_conventional.c) */
-            if (light_side_of(p, light, lbs->tolerance) == 0)
-                continue;
-            if (polygon_outside(w, p, pyr, lb->at, lbs->margin))
-                continue;
-            float near = near_bound(p, lb->at);
-            LbShape shape = polygon_shape(lbs, p, lb->at, face, near, w->materials[p->material].opaque);
-            Candidate cand = { candidate_plane(lbs, p, lb->at), footprint(lbs, p, lb->at, face, near), near, k,
-                               (uint32_t)out->nshapes };
-            if (shape_push(out, &shape) || candidate_push(out, &cand))
-                return -1;
+            int status = visit(user, k);
+            if (status)
+                return status;
         }
     }
+    return 0;
+}
+
+/* What the gatherers' visits need. */
+typedef struct {
+    const LightBuffers *lbs;
+    const LightBuffer *lb;
+    const Pyramid *pyr;
+    int face;
+    void *out;              /* CandidateList or ObjectList */
+} Gathering;
+
+/* gather_from_hierarchy's visit: leaf item k as a candidate, if it may
+ * cast the light's shadows into the pyramid. */
+static int gather_polygon(void *user, uint32_t k)
+{
+    const Gathering *g = user;
+    const LightBuffers *lbs = g->lbs;
+    const LightBuffer *lb = g->lb;
+    const Bvh *b = lbs->bvh;
+    const World *w = lbs->world;
+    CandidateList *out = g->out;
+    if (b->items[k] & BVH_INSTANCE)
+        return instance_candidate(lbs, lb, g->pyr, g->face, &b->instance_box[6 * (b->items[k] & ~BVH_INSTANCE)], k,
+                                  out);
+    const Polygon *p = &w->polygons[b->items[k]];
+    /* edge-on to the light: the shadow ray passes it (shadow_conventional.c) */
+    if (light_side_of(p, &w->lights[lb->light], lbs->tolerance) == 0)
+        return 0;
+    if (polygon_outside(w, p, g->pyr, lb->at, lbs->margin))
+        return 0;
+    float near = near_bound(p, lb->at);
+    LbShape shape = polygon_shape(lbs, p, lb->at, g->face, near, w->materials[p->material].opaque);
+    Candidate cand = { candidate_plane(lbs, p, lb->at), footprint(lbs, p, lb->at, g->face, near), near, k,
+                       (uint32_t)out->nshapes };
+    return shape_push(out, &shape) || candidate_push(out, &cand) ? -1 : 0;
+}
+
+/* Every polygon that may cast the light's shadows into the pyramid: the
+ * hierarchy walked with it, the list in order of the near bound. */
+static int gather_from_hierarchy(const LightBuffers *lbs, const LightBuffer *lb, const Pyramid *pyr, int face,
+                                 CandidateList *out)
+{
+    Gathering g = { lbs, lb, pyr, face, out };
+    if (walk_pyramid(lbs, lbs->bvh, pyr, lb->at, 0.0, gather_polygon, &g))
+        return -1;
     if (out->n > 1) /* (qsort takes no null array, even of none) */
         qsort(out->c, out->n, sizeof *out->c, by_near);
     return 0;
@@ -525,70 +564,54 @@ static int by_object_near(const void *a, const void *b)
     return x->shape < y->shape ? -1 : x->shape > y->shape;
 }
 
+/* gather_objects' visit: the shapes' hierarchy's leaf item k as a listed
+ * object, if its grown box meets the pyramid and it casts shadows. */
+static int gather_object(void *user, uint32_t k)
+{
+    const Gathering *g = user;
+    const LightBuffers *lbs = g->lbs;
+    const Vec3 at = g->lb->at;
+    const Bvh *b = lbs->bvh->shapes;
+    const World *w = lbs->world;
+    ObjectList *out = g->out;
+    const Shape *sh = &w->shapes[b->items[k]];
+    if (w->materials[sh->material].no_shadow)
+        return 0;
+    const double o[3] = { sh->bbox_min.x, sh->bbox_min.y, sh->bbox_min.z };
+    const double p[3] = { sh->bbox_max.x, sh->bbox_max.y, sh->bbox_max.z };
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; a++) {
+        double grow = lbs->object_growth * (1.0 + fabs(o[a]) + fabs(p[a]) + lbs->object_reach) + lbs->margin;
+        lo[a] = o[a] - grow;
+        hi[a] = p[a] + grow;
+    }
+    Vec3 blo = v3(lo[0], lo[1], lo[2]), bhi = v3(hi[0], hi[1], hi[2]);
+    if (box_outside(g->pyr, at, blo, bhi, lbs->margin))
+        return 0;
+    float near = box_near(blo, bhi, at);
+    /* an unbounded box's footprint is the whole face */
+    LbFootprint f = { -INFINITY, INFINITY, -INFINITY, INFINITY };
+    if (isfinite(lo[0]) && isfinite(lo[1]) && isfinite(lo[2]) && isfinite(hi[0]) && isfinite(hi[1]) && isfinite(hi[2]))
+        f = box_footprint(lbs, blo, bhi, at, g->face, near);
+    LbObject oc = { near, f.u0, f.u1, f.v0, f.v1, b->items[k] };
+    void *items = out->c;
+    if (room_for_one(&items, out->n, &out->cap, sizeof oc))
+        return -1;
+    out->c = items;
+    out->c[out->n++] = oc;
+    return 0;
+}
+
 /* Every curved object whose grown box meets the pyramid: the shapes'
- * hierarchy walked with it (its boxes hold the objects' boxes), the list
- * in order of the near bound. Objects that cast no shadow are left out
- * (the shadow ray passes them over). */
+ * hierarchy walked with it (its boxes, grown, hold the objects' grown
+ * boxes), the list in order of the near bound. Objects that cast no
+ * shadow are left out (the shadow ray passes them over). */
 static int gather_objects(const LightBuffers *lbs, const LightBuffer *lb, const Pyramid *pyr, int face,
                           ObjectList *out)
 {
-    const Bvh *b = lbs->bvh->shapes;
-    const World *w = lbs->world;
-    if (!b || b->nnodes == 0)
-        return 0;
-    const Vec3 at = lb->at;
-    uint32_t stack[BVH_STACK];
-    int sp = 0;
-    stack[sp++] = 0;
-    while (sp > 0) {
-        uint32_t c = stack[--sp];
-        if (!bvh_is_leaf(c)) {
-            const BvhNode *node = &b->nodes[c];
-            for (int k = BVH_WIDTH - 1; k >= 0; k--) {
-                if (node->child[k] == BVH_EMPTY)
-                    continue;
-                Vec3 lo = v3(node->lo[0][k], node->lo[1][k], node->lo[2][k]);
-                Vec3 hi = v3(node->hi[0][k], node->hi[1][k], node->hi[2][k]);
-                /* the node's box grown as its objects' are (at least) */
-                double g = lbs->object_growth * (1.0 + 2.0 * fmax(v3_max_abs(lo), v3_max_abs(hi)) + lbs->object_reach) +
-                           lbs->margin;
-                if (!box_outside(pyr, at, v3_sub(lo, v3(g, g, g)), v3_add(hi, v3(g, g, g)), lbs->margin))
-                    stack[sp++] = node->child[k];
-            }
-            continue;
-        }
-        uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
-        for (uint32_t k = first; k < end; k++) {
-            if (b->prims[k].hide & HIDE_NO_SHADOW)
-                continue;
-            const Shape *sh = &w->shapes[b->items[k]];
-            if (w->materials[sh->material].no_shadow)
-                continue;
-            const double o[3] = { sh->bbox_min.x, sh->bbox_min.y, sh->bbox_min.z };
-            const double p[3] = { sh->bbox_max.x, sh->bbox_max.y, sh->bbox_max.z };
-            double lo[3], hi[3];
-            for (int a = 0; a < 3; a++) {
-                double g = lbs->object_growth * (1.0 + fabs(o[a]) + fabs(p[a]) + lbs->object_reach) + lbs->margin;
-                lo[a] = o[a] - g;
-                hi[a] = p[a] + g;
-            }
-            Vec3 blo = v3(lo[0], lo[1], lo[2]), bhi = v3(hi[0], hi[1], hi[2]);
-            if (box_outside(pyr, at, blo, bhi, lbs->margin))
-                continue;
-            float near = box_near(blo, bhi, at);
-            /* an unbounded box's footprint is the whole face */
-            LbFootprint f = { -INFINITY, INFINITY, -INFINITY, INFINITY };
-            if (isfinite(lo[0]) && isfinite(lo[1]) && isfinite(lo[2]) && isfinite(hi[0]) && isfinite(hi[1]) &&
-                isfinite(hi[2]))
-                f = box_footprint(lbs, blo, bhi, at, face, near);
-            LbObject oc = { near, f.u0, f.u1, f.v0, f.v1, b->items[k] };
-            void *items = out->c;
-            if (room_for_one(&items, out->n, &out->cap, sizeof oc))
-                return -1;
-            out->c = items;
-            out->c[out->n++] = oc;
-        }
-    }
+    Gathering g = { lbs, lb, pyr, face, out };
+    if (walk_pyramid(lbs, lbs->bvh->shapes, pyr, lb->at, lbs->object_growth, gather_object, &g))
+        return -1;
     if (out->n > 1)
         qsort(out->c, out->n, sizeof *out->c, by_object_near);
     return 0;
