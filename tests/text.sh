@@ -79,7 +79,7 @@ text { font "timrom.ttf" "A" 1, 0 }|ttf or internal
 text { ttf "timrom.ttf" "A", , 0 }|expected a numeric expression
 global_settings { charset latin1 }|ascii, utf8 or sys
 text { ttf "timrom.ttf" "\u0041" 1, 0 }|the escape \\u in a text string
-#declare S = sphere { 0, 1 } #declare V = min_extent(S); sphere { V, 1 }|'min_extent' of an object other than text is not supported
+#declare S = lathe { 3, <0, 0>, <1, 1>, <0, 2> } #declare V = min_extent(S); sphere { V, 1 }|'min_extent' of this kind of object is not supported
 BAD
 # a file that is no font
 printf 'not a font\n' >"$work/bogus.ttf"

@@ -519,9 +519,10 @@ struct SceneObject {
     unsigned general_transform : 1;
     unsigned sturm : 1;   /* `sturm`: POV-Ray's Sturm root solver for the polynomial shapes */
     /* POV-Ray's bounding box of the object as min_extent and max_extent
-     * read it (its BBox: single-precision corner and lengths, carried
-     * through each transform written on it by Recompute_BBox), where
-     * hstrace keeps it: text objects (has_extent). */
+     * read it (its BBox: single-precision corner and lengths, as each
+     * kind of object makes it and carries it through the transforms
+     * written on it), where hstrace keeps it (has_extent: object_extent.c
+     * names the kinds). */
     unsigned has_extent : 1;
     float extent_lower[3], extent_lengths[3];
     int double_illuminate;
@@ -566,6 +567,14 @@ struct SceneObject {
         struct {
             Vec3 center;
             double radius;
+            /* what POV-Ray's Sphere keeps for its bounding box
+             * (object_extent.c): its centre and radius as the translations,
+             * rotations and uniform scales written on it moved them, and
+             * the transform it keeps from the first other one on (NULL
+             * until then; never changed once made, copies share it) */
+            Vec3 pov_center;
+            double pov_radius;
+            const Transform *pov_trans;
         } sphere;
         struct {
             Vec3 center, normal; /* normal of unit length */

@@ -742,7 +742,7 @@ static int is_unsupported_function(int kw)
 
 /* min_extent(OBJECT) and max_extent(OBJECT) (after the keyword at t):
  * the corners of POV-Ray's bounding box of a declared object where hstrace
- * keeps it as POV-Ray does (SceneObject.has_extent: text), the far one
+ * keeps it as POV-Ray does (SceneObject.has_extent), the far one
  * summed in single precision as POV-Ray sums it; of any other object, not
  * supported (deferred in a declaration, as the other functions). */
 static void extent_factor(Parser *p, const Token *t, double e[5], int *terms)
@@ -757,7 +757,7 @@ static void extent_factor(Parser *p, const Token *t, double e[5], int *terms)
         tok_unget(p);
         tok_skip_balanced_group(p, &open);
         char what[80];
-        snprintf(what, sizeof what, "'%s' of an object other than text", tok_keyword_name(t->kw));
+        snprintf(what, sizeof what, "'%s' of this kind of object", tok_keyword_name(t->kw));
         const char *kept = tok_temp_strndup(p, what, strlen(what));
         if (!tok_defer_unsupported(p, kept, t->pos))
             tok_unsupported_at(p, t->pos, kept);

@@ -148,6 +148,16 @@ void gram_extent_transform(SceneObject *o, const Transform *t);
 /* A union's or CSG object's box from its parts' (CSG::Compute_BBox), where
  * every part it takes has one. */
 void gram_csg_extent(SceneObject *o);
+/* A sphere's transform step as POV-Ray's Sphere takes it (its centre and
+ * radius moved, or its own transform begun or extended): kw the step's
+ * keyword (translate, rotate, scale, matrix, transform). */
+void gram_sphere_extent_step(Parser *p, SceneObject *o, int kw, const Transform *step);
+/* The bounding box of a sphere, box, cone or cylinder, torus, disc,
+ * triangle, mesh, polygon, superellipsoid or plane as POV-Ray's
+ * Compute_BBox makes it from
+ * the object's parameters and the transforms written on it so far; other
+ * kinds are left as they are. */
+void gram_primitive_extent(SceneObject *o);
 SceneObject *gram_blob(Parser *p, const Token *kw);
 /* A 2-D vector (POV-Ray's Parse_UV_Vect: a float f stands for <f, f>). */
 void gram_uv_vector(Parser *p, double out[2]);

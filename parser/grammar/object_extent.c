@@ -98,3 +98,174 @@ void gram_csg_extent(SceneObject *o)
             break;
         }
 }
+
+/* ---- the primitives' boxes (each kind's Compute_BBox) ---------------------- */
+
+#define SMALL_TOLERANCE 1.0e-3 /* POV-Ray's SMALL_TOLERANCE */
+
+/* POV-Ray's Make_BBox: a corner and lengths, each rounded to single
+ * precision. */
+static void make_bbox(SceneObject *o, Vec3 lower, Vec3 lengths)
+{
+    const double lo[3] = { lower.x, lower.y, lower.z }, len[3] = { lengths.x, lengths.y, lengths.z };
+    for (int i = 0; i < 3; i++) {
+        o->extent_lower[i] = (float)lo[i];
+        o->extent_lengths[i] = (float)len[i];
+    }
+    o->has_extent = 1;
+}
+
+/* Make_BBox of [lo, hi], then Recompute_BBox through t. */
+static void box_through(SceneObject *o, Vec3 lo, Vec3 hi, const Transform *t)
+{
+    make_bbox(o, lo, v3_sub(hi, lo));
+    gram_extent_transform(o, t);
+}
+
+/* The box around points pts carried by t, grown by `grow` each way
+ * (Make_BBox_from_min_max). */
+static void points_box(SceneObject *o, const Vec3 *pts, int n, const Transform *t, double grow)
+{
+    double mins[3] = { BOUND_HUGE, BOUND_HUGE, BOUND_HUGE }, maxs[3] = { -BOUND_HUGE, -BOUND_HUGE, -BOUND_HUGE };
+    for (int k = 0; k < n; k++) {
+        Vec3 w = transform_point(t, pts[k]);
+        const double v[3] = { w.x, w.y, w.z };
+        for (int i = 0; i < 3; i++) {
+            mins[i] = v[i] < mins[i] ? v[i] : mins[i];
+            maxs[i] = v[i] > maxs[i] ? v[i] : maxs[i];
+        }
+    }
+    for (int i = 0; i < 3; i++) {
+        mins[i] -= grow;
+        maxs[i] += grow;
+    }
+    gram_extent_from_min_max(o, mins, maxs);
+}
+
+/* Whether t only scales along the axes and moves: what POV-Ray's Box takes
+ * into its corners (a rotation or a matrix gives it a transform of its
+ * own, through which Recompute_BBox turns its box). */
+static int axis_aligned(const Transform *t)
+{
+    return t->m[0][1] == 0.0 && t->m[0][2] == 0.0 && t->m[1][0] == 0.0 && t->m[1][2] == 0.0 && t->m[2][0] == 0.0 &&
+           t->m[2][1] == 0.0;
+}
+
+void gram_sphere_extent_step(Parser *p, SceneObject *o, int kw, const Transform *step)
+{
+    /* Sphere::Translate, Rotate and a uniform Scale move the centre and
+     * the radius while it has no transform of its own; anything else
+     * (a scale that is not uniform, a matrix, a transform) begins one,
+     * which every later step extends (Sphere::Transform) */
+    const double sx = step->m[0][0], sy = step->m[1][1], sz = step->m[2][2];
+    if (!o->u.sphere.pov_trans) {
+        if (kw == KW_translate || kw == KW_rotate) {
+            o->u.sphere.pov_center = transform_point(step, o->u.sphere.pov_center);
+            return;
+        }
+        if (kw == KW_scale && sx == sy && sx == sz) {
+            o->u.sphere.pov_center = v3_scale(o->u.sphere.pov_center, sx);
+            o->u.sphere.pov_radius *= fabs(sx);
+            return;
+        }
+    }
+    /* a new transform each time: copies of a declared sphere share the old */
+    Transform *t = tok_scene_alloc(p, sizeof *t);
+    if (o->u.sphere.pov_trans)
+        *t = *o->u.sphere.pov_trans;
+    else
+        transform_identity(t);
+    transform_compose(t, step);
+    o->u.sphere.pov_trans = t;
+}
+
+void gram_primitive_extent(SceneObject *o)
+{
+    const Transform *t = &o->transform;
+    switch (o->kind) {
+    case OBJ_SPHERE: { /* Sphere::Compute_BBox */
+        double r = o->u.sphere.pov_radius;
+        make_bbox(o, v3_sub(o->u.sphere.pov_center, v3(r, r, r)), v3(2.0 * r, 2.0 * r, 2.0 * r));
+        if (o->u.sphere.pov_trans)
+            gram_extent_transform(o, o->u.sphere.pov_trans);
+        return;
+    }
+    case OBJ_BOX: { /* Box::Compute_BBox, its corners put in order as Parse_Box puts them */
+        Vec3 lo = v3_min(o->u.box.corner1, o->u.box.corner2), hi = v3_max(o->u.box.corner1, o->u.box.corner2);
+        if (axis_aligned(t)) {
+            Vec3 a = transform_point(t, lo), b = transform_point(t, hi);
+            make_bbox(o, v3_min(a, b), v3_sub(v3_max(a, b), v3_min(a, b)));
+        } else {
+            box_through(o, lo, hi, t);
+        }
+        return;
+    }
+    case OBJ_CONE: { /* Cone::Compute_BBox: its canonical box through its frame, then its transforms */
+        Transform frame;
+        double dist;
+        /* a cylinder's (and a cone's of ends within EPSILON) frame runs
+         * from its second point to its first, as POV-Ray's
+         * Compute_Cylinder_Data makes it: measured, its box turns with it
+         * (the engine's frame runs the other way, which its intersections
+         * do not tell apart) */
+        if (fabs(o->u.cone.apex_radius - o->u.cone.base_radius) < 1e-10)
+            (void)transform_cone_frame(&frame, o->u.cone.apex, o->u.cone.apex_radius, o->u.cone.base,
+                                       o->u.cone.base_radius, &dist);
+        else
+            (void)transform_cone_frame(&frame, o->u.cone.base, o->u.cone.base_radius, o->u.cone.apex,
+                                       o->u.cone.apex_radius, &dist);
+        transform_compose(&frame, t);
+        box_through(o, v3(-1.0, -1.0, dist), v3(1.0, 1.0, 1.0), &frame);
+        return;
+    }
+    case OBJ_TORUS: { /* Torus::Compute_BBox */
+        double r = o->u.torus.minor, r2 = o->u.torus.major + r;
+        box_through(o, v3(-r2, -r, -r2), v3(r2, r, r2), t);
+        return;
+    }
+    case OBJ_DISC: { /* Disc::Compute_BBox: the unit disc's frame, as Compute_Disc makes it */
+        Transform frame;
+        transform_coordinate_frame(&frame, o->u.disc.center, o->u.disc.normal, 1.0, 1.0);
+        transform_compose(&frame, t);
+        double r = o->u.disc.radius;
+        box_through(o, v3(-r, -r, -SMALL_TOLERANCE), v3(r, r, SMALL_TOLERANCE), &frame);
+        return;
+    }
+    case OBJ_TRIANGLE: /* Triangle::Compute_BBox: its points, moved by every transform, and EPSILON */
+        points_box(o, o->u.triangle.v, 3, t, 1e-10);
+        return;
+    case OBJ_MESH: { /* Mesh::Compute_BBox: its triangles' points' box, then its transform */
+        if (o->u.mesh.nfaces == 0)
+            return;
+        double mins[3] = { BOUND_HUGE, BOUND_HUGE, BOUND_HUGE }, maxs[3] = { -BOUND_HUGE, -BOUND_HUGE, -BOUND_HUGE };
+        for (int f = 0; f < o->u.mesh.nfaces; f++)
+            for (int k = 0; k < 3; k++) {
+                Vec3 v = o->u.mesh.vertices[o->u.mesh.faces[f].v[k]];
+                const double c[3] = { v.x, v.y, v.z };
+                for (int i = 0; i < 3; i++) {
+                    mins[i] = c[i] < mins[i] ? c[i] : mins[i];
+                    maxs[i] = c[i] > maxs[i] ? c[i] : maxs[i];
+                }
+            }
+        gram_extent_from_min_max(o, mins, maxs);
+        gram_extent_transform(o, t);
+        return;
+    }
+    case OBJ_POLYGON: /* Polygon::Compute_BBox: its points, a flat side widened */
+        points_box(o, o->u.polygon.points, o->u.polygon.npoints, t, 0.0);
+        for (int i = 0; i < 3; i++)
+            if (fabsf(o->extent_lengths[i]) < SMALL_TOLERANCE) {
+                o->extent_lower[i] = (float)((double)o->extent_lower[i] - SMALL_TOLERANCE);
+                o->extent_lengths[i] = (float)((double)o->extent_lengths[i] + 2.0 * SMALL_TOLERANCE);
+            }
+        return;
+    case OBJ_SUPERELLIPSOID: /* Superellipsoid::Compute_BBox: a little more than the unit cube */
+        box_through(o, v3(-1.0001, -1.0001, -1.0001), v3(1.0001, 1.0001, 1.0001), t);
+        return;
+    case OBJ_PLANE: /* Plane::Compute_BBox: everything */
+        make_bbox(o, v3(-BOUND_HUGE / 2, -BOUND_HUGE / 2, -BOUND_HUGE / 2), v3(BOUND_HUGE, BOUND_HUGE, BOUND_HUGE));
+        return;
+    default:
+        return;
+    }
+}

@@ -403,6 +403,7 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
     for (;;) {
         Token *t = tok_next(p);
         if (tok_is_punct(t, '}')) {
+            gram_primitive_extent(o); /* min_extent's box, from the transforms written so far */
             if (o->interior_texture && !o->texture) /* POV-Ray's Parse_Object_Mods' rule */
                 tok_fail(p, t->pos, "Interior texture requires an exterior texture.");
             if (uv) {
@@ -421,6 +422,8 @@ static void parse_object_mods(Parser *p, SceneObject *o, const char *what)
         Transform step;
         if (expr_transform_step(p, t, &o->transform, &step)) {
             gram_extent_transform(o, &step); /* POV-Ray's Recompute_BBox, step by step */
+            if (o->kind == OBJ_SPHERE)
+                gram_sphere_extent_step(p, o, at.kw, &step);
             /* what POV-Ray's analytic shapes take into their own parameters
              * (Translate, Rotate, a uniform Scale) and what they do not */
             if (at.kw == KW_matrix || at.kw == KW_transform || !transform_is_similarity(&o->transform))
@@ -628,6 +631,8 @@ static SceneObject *parse_sphere(Parser *p, const Token *kw)
     o->u.sphere.center = expr_vector(p);
     expr_comma(p);
     o->u.sphere.radius = expr_float(p);
+    o->u.sphere.pov_center = o->u.sphere.center;
+    o->u.sphere.pov_radius = o->u.sphere.radius;
     parse_object_mods(p, o, "sphere");
     return o;
 }

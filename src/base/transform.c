@@ -164,3 +164,61 @@ int transform_is_similarity(const Transform *t)
 }
 
 double transform_similarity_scale(const Transform *t) { return sqrt(row_dot(t, 0, 0)); }
+
+void transform_coordinate_frame(Transform *t, Vec3 origin, Vec3 up, double radius, double length)
+{
+    /* scaled by (radius, radius, length), turned about the axis
+     * (-up.y, up.x, 0) by acos(up.z) so that z becomes up, then moved to
+     * origin: the frame of POV-Ray's Compute_Coordinate_Transform */
+    transform_identity(t);
+    transform_scale(t, v3(radius, radius, length));
+    Vec3 k;
+    double angle;
+    if (fabs(up.z) > 1.0 - POV_EPSILON) {
+        k = v3(1.0, 0.0, 0.0);
+        angle = up.z < 0.0 ? M_PI : 0.0;
+    } else {
+        k = v3_normalize(v3(-up.y, up.x, 0.0));
+        angle = acos(up.z);
+    }
+    double c = cos(angle), sn = sin(angle), omc = 1.0 - c;
+    double m[12] = {
+        k.x * k.x * omc + c,        k.x * k.y * omc + k.z * sn, k.x * k.z * omc - k.y * sn,
+        k.x * k.y * omc - k.z * sn, k.y * k.y * omc + c,        k.y * k.z * omc + k.x * sn,
+        k.x * k.z * omc + k.y * sn, k.y * k.z * omc - k.x * sn, k.z * k.z * omc + c,
+        origin.x,                   origin.y,                   origin.z,
+    };
+    Transform turn;
+    transform_identity(&turn);
+    (void)transform_matrix(&turn, m); /* a rotation: never singular */
+    transform_compose(t, &turn);
+}
+
+int transform_cone_frame(Transform *frame, Vec3 base, double base_radius, Vec3 apex, double apex_radius,
+                         double *dist)
+{
+    Vec3 axis = v3_sub(apex, base);
+    double len = v3_length(axis);
+    axis = v3_scale(axis, 1.0 / len);
+    *dist = 0.0;
+    if (fabs(apex_radius - base_radius) >= POV_EPSILON) {
+        if (apex_radius < base_radius) { /* the wider end last */
+            Vec3 v = base;
+            base = apex;
+            apex = v;
+            double r = base_radius;
+            base_radius = apex_radius;
+            apex_radius = r;
+            axis = v3_neg(axis);
+        }
+        double tip = base_radius * len / (apex_radius - base_radius); /* from the base to the cone's tip */
+        double total = tip + len;
+        if ((apex_radius - base_radius) * len / total >= POV_EPSILON) {
+            *dist = tip / total;
+            transform_coordinate_frame(frame, v3_sub(base, v3_scale(axis, tip)), axis, apex_radius, total);
+            return 0;
+        }
+    }
+    transform_coordinate_frame(frame, base, axis, apex_radius, len);
+    return 1;
+}

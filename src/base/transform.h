@@ -28,6 +28,18 @@ int transform_is_similarity(const Transform *t);
 /* The scale factor of a similarity: the length of its linear part's rows. */
 double transform_similarity_scale(const Transform *t);
 
+/* t = the frame POV-Ray's Compute_Coordinate_Transform makes: its own
+ * space scaled by (radius, radius, length), z turned to the unit vector
+ * up, moved to origin. Discs, cones and cylinders are placed by it. */
+void transform_coordinate_frame(Transform *t, Vec3 origin, Vec3 up, double radius, double length);
+/* A cone's or cylinder's canonical frame (POV-Ray's Compute_Cone_Data and
+ * Compute_Cylinder_Data): the wider end at z = 1, a cone's tip at the
+ * origin and its narrower end at z = *dist (0 for a cylinder); ends of
+ * radii within EPSILON, or a cone too slender to tell from one, make a
+ * cylinder. base != apex. Returns 1 for a cylinder. */
+int transform_cone_frame(Transform *frame, Vec3 base, double base_radius, Vec3 apex, double apex_radius,
+                         double *dist);
+
 Vec3 transform_point(const Transform *t, Vec3 p);
 Vec3 transform_direction(const Transform *t, Vec3 d);
 /* Normals transform with the inverse transpose. */

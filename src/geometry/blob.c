@@ -62,7 +62,7 @@ Blob *blob_make(const SceneBlobComponent *components, int n, double threshold)
         el->len = v3_length(axis);
         double inv = 1.0 / el->len;
         axis = v3(axis.x * inv, axis.y * inv, axis.z * inv);
-        shape_coordinate_frame(&el->to_element, c->base, axis, 1.0, 1.0);
+        transform_coordinate_frame(&el->to_element, c->base, axis, 1.0, 1.0);
         transform_compose(&el->to_element, &c->placed);
         el->kind = BLOB_CYLINDER;
         el->placed = 1;

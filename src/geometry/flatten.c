@@ -978,7 +978,7 @@ static void shape_placed(Builder *b, Shape *s)
 static int flatten_disc(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
     Transform frame;
-    shape_coordinate_frame(&frame, o->u.disc.center, o->u.disc.normal, 1.0, 1.0);
+    transform_coordinate_frame(&frame, o->u.disc.center, o->u.disc.normal, 1.0, 1.0);
     Shape *s = add_shape(b, SHAPE_DISC, in, &frame, material);
     if (!s)
         return -1;
@@ -994,36 +994,10 @@ static int flatten_disc(Builder *b, const SceneObject *o, const Inherited *in, i
  * EPSILON, or a cone too slender to tell from one, make a cylinder. */
 static int flatten_cone(Builder *b, const SceneObject *o, const Inherited *in, int material)
 {
-    const double epsilon = 1e-10; /* POV-Ray's EPSILON */
-    Vec3 base = o->u.cone.base, apex = o->u.cone.apex;
-    double base_r = o->u.cone.base_radius, apex_r = o->u.cone.apex_radius;
-    Vec3 axis = v3_sub(apex, base);
-    double len = v3_length(axis);
-    axis = v3_scale(axis, 1.0 / len); /* the parser refused a degenerate one */
     Transform frame;
-    int cylinder = fabs(apex_r - base_r) < epsilon;
-    double dist = 0.0;
-    if (!cylinder) {
-        if (apex_r < base_r) {
-            Vec3 v = base;
-            base = apex;
-            apex = v;
-            double r = base_r;
-            base_r = apex_r;
-            apex_r = r;
-            axis = v3_neg(axis);
-        }
-        double tip = base_r * len / (apex_r - base_r); /* from the base to the cone's tip */
-        double total = tip + len;
-        if ((apex_r - base_r) * len / total < epsilon) {
-            cylinder = 1;
-        } else {
-            dist = tip / total;
-            shape_coordinate_frame(&frame, v3_sub(base, v3_scale(axis, tip)), axis, apex_r, total);
-        }
-    }
-    if (cylinder)
-        shape_coordinate_frame(&frame, base, axis, apex_r, len);
+    double dist;
+    int cylinder = transform_cone_frame(&frame, o->u.cone.base, o->u.cone.base_radius, o->u.cone.apex,
+                                        o->u.cone.apex_radius, &dist); /* the parser refused a degenerate one */
     Shape *s = add_shape(b, SHAPE_CONE, in, &frame, material);
     if (!s)
         return -1;

@@ -298,34 +298,6 @@ static Vec3 cone_normal(const Shape *s, Vec3 p, int part)
     return v3_normalize(transform_normal(&s->to_world, n));
 }
 
-void shape_coordinate_frame(Transform *t, Vec3 origin, Vec3 up, double radius, double length)
-{
-    /* scaled by (radius, radius, length), turned about the axis
-     * (-up.y, up.x, 0) by acos(up.z) so that z becomes up, then moved to
-     * origin: the frame of POV-Ray's Compute_Coordinate_Transform */
-    transform_identity(t);
-    transform_scale(t, v3(radius, radius, length));
-    Vec3 k;
-    double angle;
-    if (fabs(up.z) > 1.0 - POV_EPSILON) {
-        k = v3(1.0, 0.0, 0.0);
-        angle = up.z < 0.0 ? M_PI : 0.0;
-    } else {
-        k = v3_normalize(v3(-up.y, up.x, 0.0));
-        angle = acos(up.z);
-    }
-    double c = cos(angle), sn = sin(angle), omc = 1.0 - c;
-    double m[12] = {
-        k.x * k.x * omc + c,        k.x * k.y * omc + k.z * sn, k.x * k.z * omc - k.y * sn,
-        k.x * k.y * omc - k.z * sn, k.y * k.y * omc + c,        k.y * k.z * omc + k.x * sn,
-        k.x * k.z * omc + k.y * sn, k.y * k.z * omc - k.x * sn, k.z * k.z * omc + c,
-        origin.x,                   origin.y,                   origin.z,
-    };
-    Transform turn;
-    transform_identity(&turn);
-    (void)transform_matrix(&turn, m); /* a rotation: never singular */
-    transform_compose(t, &turn);
-}
 
 /* ---- torus ------------------------------------------------------------------ */
 

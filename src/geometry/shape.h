@@ -220,10 +220,6 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part);
 /* POV-Ray's UVCoord at world point p on s, as (u, v, 0). */
 Vec3 shape_uv(const Shape *s, Vec3 p);
 
-/* t = the frame POV-Ray's Compute_Coordinate_Transform makes: its own
- * space scaled by (radius, radius, length), z turned to the unit vector
- * up, moved to origin. Discs, cones and cylinders are placed by it. */
-void shape_coordinate_frame(Transform *t, Vec3 origin, Vec3 up, double radius, double length);
 
 /* Puts n crossings in order of distance, nearest first, those at one
  * distance in the order given (stable: a CSG object's earlier part
