@@ -17,6 +17,9 @@
 # POVRAY (default povray), HST_EXAMPLES_ONLY (an extended regular expression:
 # survey only the scenes whose path matches it, for work on a few of them),
 # HST_EXAMPLES_OUT (where the table goes; default bench/examples.md).
+# A scene with an animation INI beside it (Initial_Frame before
+# Final_Frame, naming no other scene: the portfolio's) is rendered, by both
+# programs, through that INI at its first frame.
 # Exit status: 0 done, 3 hstrace not built or the examples not installed.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
@@ -48,14 +51,41 @@ table_rows() { awk -F'|' '{ printf "|"; for (i = 1; i <= NF; i++) printf " %s |"
 
 (cd "$work/examples" && find . -name '*.pov' | sed 's|^\./||' | sort |
     grep -E -- "${HST_EXAMPLES_ONLY:-.}") >"$work/scenes"
+# ini_key BASE KEY: KEY's value in BASE.ini, if it has one
+ini_key() {
+    sed -n "s/^[[:space:]]*$2[[:space:]]*=[[:space:]]*\\([^[:space:];]*\\).*/\\1/p" "$dir/$1.ini" | head -1
+}
+# frame_of BASE: for a scene whose INI beside it (BASE.ini) makes it an
+# animation of several frames and names no other scene, its first frame,
+# which both programs render through that INI as a POV-Ray user would (the
+# portfolio's scenes index their arrays by frame_number); else nothing
+frame_of() {
+    [ -f "$dir/$1.ini" ] || return 0
+    first=$(ini_key "$1" Initial_Frame) last=$(ini_key "$1" Final_Frame) named=$(ini_key "$1" Input_File_Name)
+    case "$first$last" in '' | *[!0-9]*) return 0 ;; esac
+    [ "$last" -gt "$first" ] || return 0
+    [ -z "$named" ] || [ "$named" = "$1.pov" ] || return 0
+    echo "$first"
+}
+# image PREFIX: the one image a render named PREFIX.exr wrote (an
+# animation's frame gets its number before the extension)
+image() { for f in "$1".exr "$1"[0-9]*.exr; do [ -s "$f" ] && echo "$f" && return; done; echo "$1.exr"; }
+
 while read -r scene; do
     dir="$work/examples/$(dirname "$scene")"
     base=$(basename "$scene" .pov)
     img="$work/$base"
+    # the scene's own file, or its animation INI at its first frame (its
+    # output type and anti-aliasing set as for every other scene)
+    frame=$(frame_of "$base")
+    input="$base.pov"
+    [ -n "$frame" ] && input="$base.ini +SF$frame +EF$frame +FE -A"
     status=0
-    (cd "$dir" && timeout 120 "$hstrace" "$base.pov" --width $width --height $height "+Q4" --threads 1 \
+    # shellcheck disable=SC2086 # the input's words
+    (cd "$dir" && timeout 120 "$hstrace" $input --width $width --height $height "+Q4" --threads 1 \
         -o "$img.h4.exr" >/dev/null 2>"$work/err") || status=$?
-    if [ $status -ne 0 ] || [ ! -s "$img.h4.exr" ]; then
+    h4=$(image "$img.h4")
+    if [ $status -ne 0 ] || [ ! -s "$h4" ]; then
         line=$(error_line "$work/err")
         [ $status -eq 124 ] && line="(no answer within 120 s)"
         [ -n "$line" ] || line="(exit status $status: $(tail -1 "$work/err"))"
@@ -67,15 +97,20 @@ while read -r scene; do
         sort -u | tr '\n' ',' | sed 's/,$//; s/,/, /g')
     figures="POV-Ray not installed"
     if [ -n "$povray" ]; then
-        (cd "$dir" && "$hstrace" "$base.pov" --width $width --height $height "+Q3" --threads 1 \
+        # shellcheck disable=SC2086 # the input's words
+        (cd "$dir" && "$hstrace" $input --width $width --height $height "+Q3" --threads 1 \
             -o "$img.h3.exr" >/dev/null 2>&1) || true
+        pov_input="+I$base.pov"
+        [ -n "$frame" ] && pov_input="$base.ini +SF$frame +EF$frame"
         for q in 3 4; do
-            (cd "$dir" && "$povray" "+I$base.pov" "+O$img.p$q.exr" +FE +W$width +H$height -A -D -GA +WT1 \
+            # shellcheck disable=SC2086 # the input's words
+            (cd "$dir" && "$povray" $pov_input "+O$img.p$q.exr" +FE +W$width +H$height -A -D -GA +WT1 \
                 "+Q$q" >/dev/null 2>&1) || true
         done
-        if [ -s "$img.p3.exr" ] && [ -s "$img.p4.exr" ] && [ -s "$img.h3.exr" ]; then
-            report=$("$hstrace" compare "$img.p4.exr" "$img.h4.exr" --mask-a "$img.p3.exr" "$img.p4.exr" \
-                --mask-b "$img.h3.exr" "$img.h4.exr" --max-mask-share 0.001 --max-interior 0 2>&1) &&
+        h3=$(image "$img.h3") p3=$(image "$img.p3") p4=$(image "$img.p4")
+        if [ -s "$p3" ] && [ -s "$p4" ] && [ -s "$h3" ]; then
+            report=$("$hstrace" compare "$p4" "$h4" --mask-a "$p3" "$p4" \
+                --mask-b "$h3" "$h4" --max-mask-share 0.001 --max-interior 0 2>&1) &&
                 verdict=agrees || verdict="**differs**"
             pixels=$(echo "$report" | sed -n 's/.*disagree on \([0-9]*\) px.*/\1/p')
             interior=$(echo "$report" | sed -n 's/.* \([0-9]*\) interior.*/\1/p')
