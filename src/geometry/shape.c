@@ -857,35 +857,35 @@ void shape_hits_sort(ShapeHit *hits, int n)
         }
 }
 
+/* One axis of shape_box_hit: the slab between lo and hi grown by a
+ * relative margin far above the rounding of the box's corners and of the
+ * slab distances, narrowing [*near, *far]; 0 when the ray misses it. Its
+ * scalars are passed one axis at a time (no arrays of the ray and the box
+ * to fill per call: this test runs before every exact test of a shape). */
+static inline int bounds_slab(double lo, double hi, double o, double d, double *near, double *far)
+{
+    double margin = 1e-9 * (1.0 + fabs(lo) + fabs(hi) + fabs(o));
+    double l = lo - margin, h = hi + margin;
+    if (d == 0.0)
+        return !(o < l || o > h);
+    double t0 = (l - o) / d, t1 = (h - o) / d;
+    if (t0 > t1) {
+        double x = t0;
+        t0 = t1;
+        t1 = x;
+    }
+    t1 *= 1.0 + 1e-9;
+    if (t0 > *near)
+        *near = t0;
+    if (t1 < *far)
+        *far = t1;
+    return !(*near > *far);
+}
+
 int shape_box_hit(const Shape *s, Vec3 org, Vec3 dir, double tmax)
 {
-    /* slabs grown by a relative margin far above the rounding of the
-     * box's corners and of the slab distances */
-    const double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };
-    const double lo[3] = { s->bbox_min.x, s->bbox_min.y, s->bbox_min.z };
-    const double hi[3] = { s->bbox_max.x, s->bbox_max.y, s->bbox_max.z };
     double near = 0.0, far = tmax;
-    for (int a = 0; a < 3; a++) {
-        double margin = 1e-9 * (1.0 + fabs(lo[a]) + fabs(hi[a]) + fabs(o[a]));
-        double l = lo[a] - margin, h = hi[a] + margin;
-        if (d[a] == 0.0) {
-            if (o[a] < l || o[a] > h)
-                return 0;
-            continue;
-        }
-        double t0 = (l - o[a]) / d[a], t1 = (h - o[a]) / d[a];
-        if (t0 > t1) {
-            double x = t0;
-            t0 = t1;
-            t1 = x;
-        }
-        t1 *= 1.0 + 1e-9;
-        if (t0 > near)
-            near = t0;
-        if (t1 < far)
-            far = t1;
-        if (near > far)
-            return 0;
-    }
-    return 1;
+    return bounds_slab(s->bbox_min.x, s->bbox_max.x, org.x, dir.x, &near, &far) &&
+           bounds_slab(s->bbox_min.y, s->bbox_max.y, org.y, dir.y, &near, &far) &&
+           bounds_slab(s->bbox_min.z, s->bbox_max.z, org.z, dir.z, &near, &far);
 }
