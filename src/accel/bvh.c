@@ -1421,7 +1421,12 @@ static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, un
 {
     if (!b || b->nnodes == 0)
         return 0;
-    BvhRay br = bvh_ray(org, dir);
+    /* the AVX2 node test broadcasts the ray itself: no SSE2 lanes made for it */
+    BvhRay br;
+    if (avx2)
+        bvh_ray_scalar(&br, org, dir);
+    else
+        br = bvh_ray(org, dir);
     uint32_t stack[BVH_STACK];
     double enter_at[BVH_STACK];
     int sp = 0;
@@ -1444,11 +1449,15 @@ static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, un
             unsigned mask = bvh_node_hits(n, &br, 0.0, *tmax, enter);
 #endif
             int first = sp;
-            for (int k = BVH_WIDTH - 1; k >= 0; k--)
-                if ((mask & (1u << k)) && n->child[k] != BVH_EMPTY) {
+            /* the children met, the last first (the first is visited first) */
+            while (mask) {
+                int k = 31 - __builtin_clz(mask);
+                mask &= ~(1u << k);
+                if (n->child[k] != BVH_EMPTY) {
                     stack[sp] = n->child[k];
                     enter_at[sp++] = enter[k];
                 }
+            }
             if (nearest_first) /* farthest lowest on the stack: insertion sort of at most BVH_WIDTH */
                 for (int i = first + 1; i < sp; i++)
                     for (int j = i; j > first && enter_at[j - 1] < enter_at[j]; j--) {
@@ -1462,8 +1471,10 @@ static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, un
             continue;
         }
         uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
+        /* a leaf of one: the node test was its shape's own box */
+        const int boxed = end == first + 1;
         for (uint32_t k = first; k < end; k++)
-            if (!(b->prims[k].hide & hide) && visit(user, (int)b->items[k], tmax))
+            if (!(b->prims[k].hide & hide) && visit(user, (int)b->items[k], boxed, tmax))
                 return 1;
     }
     return 0;

@@ -101,9 +101,12 @@ struct Bvh {
  * (conservatively), its material not hiding it by `hide` (HIDE_*), until
  * visit returns 1 (then 1); *nodes counts the boxes tested. visit may
  * lower *tmax (a nearest-hit query: farther boxes are then passed over).
+ * boxed: 1 where the shape is alone in its leaf, so that the box the walk
+ * has just met is the shape's own (rounded outward to float, grown by the
+ * margin), 0 where the leaf's box holds others.
  * avx2: the boxes tested with bvh_node_hits_avx2 (the same answers), where
  * the processor has it (Tracer.avx2). */
-typedef int (*BvhShapeVisitor)(void *user, int shape, double *tmax);
+typedef int (*BvhShapeVisitor)(void *user, int shape, int boxed, double *tmax);
 int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit, void *user,
                     uint64_t *nodes, int avx2);
 /* The same for a nearest-hit query (visit lowers *tmax): each node's
