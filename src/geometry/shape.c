@@ -9,7 +9,7 @@
 
 #include "blob.h"
 #include "csg.h"
-#include "polynomial.h"
+#include "polynomial_solver.h"
 #include "poly.h"
 #include "lathe.h"
 #include "quadric.h"
@@ -413,13 +413,9 @@ static int torus_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *
     double k2 = p.x * d.x + p.z * d.z + pdy2;
     double c[5] = { 1.0, 4.0 * k2, 2.0 * (k1 + 2.0 * (k2 * k2 + R2 * dy2)), 4.0 * (k2 * k1 + 2.0 * R2 * pdy2),
                     k1 * k1 + 4.0 * R2 * (py2 - r2) };
-    /* Solve_Polynomial's root elimination: with the constant this small
-     * against the linear coefficient, 0 is taken for a root and the cubic
-     * left over solved (rays leaving the surface) */
-    int degree = (c[3] != 0.0 && fabs(c[4] / c[3]) < TORUS_ROOT_TOLERANCE) ? 3 : 4;
-    double roots[POLYNOMIAL_MAX_DEGREE];
-    /* the roots POV-Ray's Sturm solver brackets: 0 to MAX_DISTANCE */
-    int nr = polynomial_roots(c, degree, 0.0, POV_MAX_DISTANCE, roots);
+    /* POV-Ray's Solve_Polynomial, its root elimination included */
+    double roots[4];
+    int nr = poly_solve(4, c, roots, s->u.torus.sturm, TORUS_ROOT_TOLERANCE);
     int n = 0;
     for (int k = 0; k < nr; k++) {
         double depth = (roots[k] + closer) / len;
@@ -431,6 +427,7 @@ static int torus_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *
         hits[n].entering = (v3_dot(d, torus_local_normal(s, at)) < 0.0) != (s->inverse != 0);
         n++;
     }
+    shape_hits_sort(hits, n);
     return n;
 }
 
