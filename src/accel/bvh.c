@@ -1383,7 +1383,7 @@ BvhRay bvh_ray(Vec3 org, Vec3 dir)
     for (int a = 0; a < 3; a++) {
         r.org[a] = o[a];
         r.inv[a] = 1.0 / d[a];
-        r.neg[a] = signbit(r.inv[a]) != 0;
+        bvh_ray_faces(&r, a);
 #if defined(__SSE2__)
         r.org2[a] = _mm_set1_pd(r.org[a]);
         r.inv2[a] = _mm_set1_pd(r.inv[a]);
