@@ -7,6 +7,10 @@
 #include <math.h>
 #include <stddef.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "blob.h"
 #include "csg.h"
 #include "polynomial_solver.h"
@@ -753,8 +757,11 @@ static int crossings(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *
         return 0;
     Vec3 u = len == 1.0 ? dir : v3_scale(dir, 1.0 / len);
     double ulimit = len == 1.0 ? tmax : tmax * len;
-    int n = found_from_origin(s->kind) && !s->is_part && !nearest_only ? crossings_cast_again(s, org, u, ulimit, hits)
-                                                                       : one_test(s, org, u, ulimit, hits);
+    /* a sphere, the commonest shape, tested here without one_test's frame
+     * (the room every shape's test needs) */
+    int n = s->kind == SHAPE_SPHERE ? sphere_all(s, org, u, ulimit, hits)
+            : found_from_origin(s->kind) && !s->is_part && !nearest_only ? crossings_cast_again(s, org, u, ulimit, hits)
+                                                                         : one_test(s, org, u, ulimit, hits);
     if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
         for (int k = 0; k < n; k++)
             hits[k].leaf = NULL;
@@ -879,9 +886,43 @@ static inline int bounds_slab(double lo, double hi, double o, double d, double *
     return !(*near > *far);
 }
 
+#if defined(__SSE2__)
+/* bounds_slab on x and y at once, for a ray whose x and y directions are
+ * not 0 (narrowing [*near, *far] from [0, tmax]): each lane is bounds_slab's
+ * arithmetic in its order (IEEE operations, lane by lane); minpd(t1, t0)
+ * and maxpd(t0, t1) are its swap (t0 > t1: false for NaN, as there), maxpd
+ * and minpd against near and far its updates (a NaN distance leaves them
+ * as they were), and the lanes joined as the second axis's updates after
+ * the first's. That bounds_slab's early rejection after x is left out
+ * changes nothing: near only grows and far only shrinks. */
+static inline void bounds_slabs_xy(const Shape *s, Vec3 org, Vec3 dir, double *near, double *far)
+{
+    const __m128d sign = _mm_set1_pd(-0.0);
+    const __m128d lo = _mm_set_pd(s->bbox_min.y, s->bbox_min.x), hi = _mm_set_pd(s->bbox_max.y, s->bbox_max.x);
+    const __m128d o = _mm_set_pd(org.y, org.x), d = _mm_set_pd(dir.y, dir.x);
+    __m128d sum = _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_set1_pd(1.0), _mm_andnot_pd(sign, lo)), _mm_andnot_pd(sign, hi)),
+                             _mm_andnot_pd(sign, o));
+    __m128d margin = _mm_mul_pd(_mm_set1_pd(1e-9), sum);
+    __m128d t0 = _mm_div_pd(_mm_sub_pd(_mm_sub_pd(lo, margin), o), d);
+    __m128d t1 = _mm_div_pd(_mm_sub_pd(_mm_add_pd(hi, margin), o), d);
+    __m128d tn = _mm_min_pd(t1, t0), tf = _mm_mul_pd(_mm_max_pd(t0, t1), _mm_set1_pd(1.0 + 1e-9));
+    __m128d n = _mm_max_pd(tn, _mm_set1_pd(*near)), f = _mm_min_pd(tf, _mm_set1_pd(*far));
+    double nx = _mm_cvtsd_f64(n), ny = _mm_cvtsd_f64(_mm_unpackhi_pd(n, n));
+    double fx = _mm_cvtsd_f64(f), fy = _mm_cvtsd_f64(_mm_unpackhi_pd(f, f));
+    *near = ny > nx ? ny : nx;
+    *far = fy < fx ? fy : fx;
+}
+#endif
+
 int shape_box_hit(const Shape *s, Vec3 org, Vec3 dir, double tmax)
 {
     double near = 0.0, far = tmax;
+#if defined(__SSE2__)
+    if (dir.x != 0.0 && dir.y != 0.0) {
+        bounds_slabs_xy(s, org, dir, &near, &far);
+        return !(near > far) && bounds_slab(s->bbox_min.z, s->bbox_max.z, org.z, dir.z, &near, &far);
+    }
+#endif
     return bounds_slab(s->bbox_min.x, s->bbox_max.x, org.x, dir.x, &near, &far) &&
            bounds_slab(s->bbox_min.y, s->bbox_max.y, org.y, dir.y, &near, &far) &&
            bounds_slab(s->bbox_min.z, s->bbox_max.z, org.z, dir.z, &near, &far);

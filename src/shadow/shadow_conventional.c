@@ -185,11 +185,11 @@ static int shape_shadow_crossings(ShadowContext *ctx, const ShadowQuery *q, int 
     if (w->materials[s->material].no_shadow || !shape_box_hit(s, q->point, q->to_light, tlimit))
         return 0;
     ctx->stats.shadow_shape_tests++;
-    ShapeHit all[SHAPE_MAX_HITS];
-    int nall = shape_intersect_all(s, q->point, q->to_light, tlimit, all), n = 0;
+    /* those past the window's start kept in place, in order */
+    int nall = shape_intersect_all(s, q->point, q->to_light, tlimit, hits), n = 0;
     for (int k = 0; k < nall; k++)
-        if (all[k].t > tmin)
-            hits[n++] = all[k];
+        if (hits[k].t > tmin)
+            hits[n++] = hits[k];
     return n;
 }
 
