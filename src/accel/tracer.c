@@ -446,12 +446,14 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
 
     double best = HUGE_VAL;
     int exclude = (from && from->kind == HIT_POLYGON) ? from->index : -1;
-    if (tr->bvh && tr->avx2)
-        nearest_in_bvh_avx2(tr, tr->bvh, NULL, org, dir, NULL, tmin, plane_t, exclude, hit, &best);
-    else if (tr->bvh)
-        nearest_in_bvh_sse2(tr, tr->bvh, NULL, org, dir, NULL, tmin, plane_t, exclude, hit, &best);
-    else
+    if (!tr->bvh)
         nearest_in_grid(tr, org, dir, tmin, plane_t, exclude, hit, &best);
+    else if (tr->bvh->nnodes == 0) {
+        /* no polygon: not even the walk's call (a world of shapes and planes) */
+    } else if (tr->avx2)
+        nearest_in_bvh_avx2(tr, tr->bvh, NULL, org, dir, NULL, tmin, plane_t, exclude, hit, &best);
+    else
+        nearest_in_bvh_sse2(tr, tr->bvh, NULL, org, dir, NULL, tmin, plane_t, exclude, hit, &best);
     if (hit->kind == HIT_NONE) {
         if (plane < 0 && shape < 0) {
             if (tr->segment_cells)
