@@ -1418,8 +1418,9 @@ unsigned bvh_node_hits_plain(const BvhNode *n, const BvhRay *r, double t0, doubl
  * node's children met so that the nearest entered is visited first.
  * Always inlined: into shapes_walk_avx2, so that the AVX2 node test is
  * compiled in place rather than called per node. */
-__attribute__((always_inline)) static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit,
-                              void *user, uint64_t *nodes, int nearest_first, int avx2)
+__attribute__((always_inline)) static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax,
+                                                             unsigned hide, BvhShapeVisitor visit, void *user,
+                                                             uint64_t *nodes, int nearest_first, int avx2)
 {
     if (!b || b->nnodes == 0)
         return 0;

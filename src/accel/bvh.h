@@ -274,8 +274,8 @@ __attribute__((target("avx2"))) static inline void bvh_axis_avx2(const BvhNode *
     const float *hi = (const float *)(const void *)((const char *)n + r->last_at[a]);
     const __m256d org = _mm256_set1_pd(r->org[a]), inv = _mm256_set1_pd(r->inv[a]);
     __m256d tn = _mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(lo)), org), inv);
-    __m256d tf =
-        _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(hi)), org), inv), _mm256_set1_pd(BVH_GROW));
+    const __m256d grow = _mm256_set1_pd(BVH_GROW);
+    __m256d tf = _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(hi)), org), inv), grow);
     *near = _mm256_max_pd(tn, *near);
     *far = _mm256_min_pd(tf, *far);
 }
