@@ -83,7 +83,6 @@ static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, const Sha
 static int buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->tracer->world;
-    double tmin = trace_min_distance(q->point);
     for (int i = 0; i < w->nplanes; i++) {
         /* the point's own plane, which shadow_plane_test passes over */
         if (q->surface->kind == HIT_PLANE && q->surface->index == i)
@@ -103,7 +102,7 @@ static int buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, const S
                 continue;
             }
         }
-        if (shadow_plane_test(ctx, q, i, tmin, light))
+        if (shadow_plane_test(ctx, q, i, trace_min_distance(q->point), light))
             return 1;
     }
     return 0;
