@@ -1,5 +1,4 @@
-/* Ray/polygon intersection and the inside test, holes included; the
- * shapes' root finder (polynomial.h); and the
+/* Ray/polygon intersection and the inside test, holes included; and the
  * outline boxes' shortcut (World.outline_box: an outline the ray is
  * certainly outside of is passed over) against the full crossing count,
  * on lattices (a square with 3 x 3 holes) and stars (one concave outline)
@@ -10,7 +9,6 @@
 
 #include "fixtures.h"
 #include "intersect.h"
-#include "polynomial.h"
 #include "tap.h"
 #include "world.h"
 
@@ -162,32 +160,5 @@ int main(void)
 
     world_free(&w);
     scene_free(s);
-
-    /* The torus's root finder: (x-1)(x-2)(x-3)(x-4) = x^4 - 10x^3 + 35x^2
-     * - 50x + 24, its roots to a few ulps (where rounding of the
-     * polynomial's value leaves its sign);
-     * the range excludes those outside it; clustered roots 1e-6 apart are
-     * told apart; x^2 + 1 has none. */
-    double roots[4];
-    const double quartic[5] = { 1, -10, 35, -50, 24 };
-    int n = polynomial_roots(quartic, 4, 0.0, 1e7, roots);
-    int exact = n == 4;
-    for (int k = 0; k < n && k < 4; k++)
-        exact &= fabs(roots[k] - (k + 1.0)) <= 8e-16 * (k + 1.0);
-    tap_ok(exact, "quartic: the four roots 1, 2, 3, 4 within a few ulps (%d found: %.17g %.17g %.17g %.17g)", n,
-           roots[0], n > 1 ? roots[1] : 0.0, n > 2 ? roots[2] : 0.0, n > 3 ? roots[3] : 0.0);
-    n = polynomial_roots(quartic, 4, 1.5, 3.5, roots);
-    tap_ok(n == 2 && fabs(roots[0] - 2.0) < 1e-15 && fabs(roots[1] - 3.0) < 1e-15,
-           "quartic in [1.5, 3.5]: 2 and 3 alone (%d found)", n);
-    const double a = 1.0, b = 1.000001; /* (x - a)(x - b)(x + 5)(x - 7) */
-    double e1 = a + b + (-5) + 7, e2 = a * b + a * -5 + a * 7 + b * -5 + b * 7 + -5 * 7.0;
-    double e3 = a * b * -5 + a * b * 7 + a * -5 * 7 + b * -5 * 7, e4 = a * b * -5 * 7;
-    const double clustered[5] = { 1, -e1, e2, -e3, e4 };
-    n = polynomial_roots(clustered, 4, 0.0, 1e7, roots);
-    tap_ok(n == 3 && fabs(roots[0] - a) < 1e-9 && fabs(roots[1] - b) < 1e-9 && fabs(roots[2] - 7.0) < 1e-12,
-           "roots 1e-6 apart told apart, the negative one left out (%d found: %.12g %.12g)", n, roots[0],
-           n > 1 ? roots[1] : 0.0);
-    const double none[3] = { 1, 0, 1 };
-    tap_ok(polynomial_roots(none, 2, -1e7, 1e7, roots) == 0, "x^2 + 1: no real root");
     return tap_done();
 }

@@ -1383,7 +1383,7 @@ BvhRay bvh_ray(Vec3 org, Vec3 dir)
     for (int a = 0; a < 3; a++) {
         r.org[a] = o[a];
         r.inv[a] = 1.0 / d[a];
-        r.neg[a] = signbit(r.inv[a]) != 0;
+        bvh_ray_faces(&r, a);
 #if defined(__SSE2__)
         r.org2[a] = _mm_set1_pd(r.org[a]);
         r.inv2[a] = _mm_set1_pd(r.inv[a]);
@@ -1415,13 +1415,21 @@ unsigned bvh_node_hits_plain(const BvhNode *n, const BvhRay *r, double t0, doubl
 }
 
 /* bvh_shapes_walk and bvh_shapes_nearest_walk: `nearest_first` pushes a
- * node's children met so that the nearest entered is visited first. */
-static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit,
-                              void *user, uint64_t *nodes, int nearest_first, int avx2)
+ * node's children met so that the nearest entered is visited first.
+ * Always inlined: into shapes_walk_avx2, so that the AVX2 node test is
+ * compiled in place rather than called per node. */
+__attribute__((always_inline)) static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax,
+                                                             unsigned hide, BvhShapeVisitor visit, void *user,
+                                                             uint64_t *nodes, int nearest_first, int avx2)
 {
     if (!b || b->nnodes == 0)
         return 0;
-    BvhRay br = bvh_ray(org, dir);
+    /* the AVX2 node test broadcasts the ray itself: no SSE2 lanes made for it */
+    BvhRay br;
+    if (avx2)
+        bvh_ray_scalar(&br, org, dir);
+    else
+        br = bvh_ray(org, dir);
     uint32_t stack[BVH_STACK];
     double enter_at[BVH_STACK];
     int sp = 0;
@@ -1444,11 +1452,15 @@ static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, un
             unsigned mask = bvh_node_hits(n, &br, 0.0, *tmax, enter);
 #endif
             int first = sp;
-            for (int k = BVH_WIDTH - 1; k >= 0; k--)
-                if ((mask & (1u << k)) && n->child[k] != BVH_EMPTY) {
+            /* the children met, the last first (the first is visited first) */
+            while (mask) {
+                int k = 31 - __builtin_clz(mask);
+                mask &= ~(1u << k);
+                if (n->child[k] != BVH_EMPTY) {
                     stack[sp] = n->child[k];
                     enter_at[sp++] = enter[k];
                 }
+            }
             if (nearest_first) /* farthest lowest on the stack: insertion sort of at most BVH_WIDTH */
                 for (int i = first + 1; i < sp; i++)
                     for (int j = i; j > first && enter_at[j - 1] < enter_at[j]; j--) {
@@ -1462,8 +1474,10 @@ static inline int shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, un
             continue;
         }
         uint32_t first = bvh_leaf_first(c), end = first + bvh_leaf_count(c);
+        /* a leaf of one: the node test was its shape's own box */
+        const int boxed = end == first + 1;
         for (uint32_t k = first; k < end; k++)
-            if (!(b->prims[k].hide & hide) && visit(user, (int)b->items[k], tmax))
+            if (!(b->prims[k].hide & hide) && visit(user, (int)b->items[k], boxed, tmax))
                 return 1;
     }
     return 0;

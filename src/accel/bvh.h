@@ -14,6 +14,7 @@
 #define HST_BVH_H
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #if defined(__SSE2__)
@@ -101,9 +102,12 @@ struct Bvh {
  * (conservatively), its material not hiding it by `hide` (HIDE_*), until
  * visit returns 1 (then 1); *nodes counts the boxes tested. visit may
  * lower *tmax (a nearest-hit query: farther boxes are then passed over).
+ * boxed: 1 where the shape is alone in its leaf, so that the box the walk
+ * has just met is the shape's own (rounded outward to float, grown by the
+ * margin), 0 where the leaf's box holds others.
  * avx2: the boxes tested with bvh_node_hits_avx2 (the same answers), where
  * the processor has it (Tracer.avx2). */
-typedef int (*BvhShapeVisitor)(void *user, int shape, double *tmax);
+typedef int (*BvhShapeVisitor)(void *user, int shape, int boxed, double *tmax);
 int bvh_shapes_walk(const Bvh *b, Vec3 org, Vec3 dir, double *tmax, unsigned hide, BvhShapeVisitor visit, void *user,
                     uint64_t *nodes, int avx2);
 /* The same for a nearest-hit query (visit lowers *tmax): each node's
@@ -143,10 +147,24 @@ void bvh_free(Bvh *b);
 typedef struct {
     double org[3], inv[3];
     int neg[3];
+    /* per axis, where in a BvhNode the children's bounds met first (lo,
+     * or hi where neg) and last begin, in bytes: the AVX2 test's loads
+     * without a choice per node */
+    uint32_t first_at[3], last_at[3];
 #if defined(__SSE2__)
     __m128d org2[3], inv2[3]; /* the same, in both lanes */
 #endif
 } BvhRay;
+
+/* r's neg, first_at and last_at on axis a, from its inv. */
+static inline void bvh_ray_faces(BvhRay *r, int a)
+{
+    const uint32_t lo = (uint32_t)(offsetof(BvhNode, lo) + (size_t)a * sizeof(float[BVH_WIDTH]));
+    const uint32_t hi = (uint32_t)(offsetof(BvhNode, hi) + (size_t)a * sizeof(float[BVH_WIDTH]));
+    r->neg[a] = signbit(r->inv[a]) != 0;
+    r->first_at[a] = r->neg[a] ? hi : lo;
+    r->last_at[a] = r->neg[a] ? lo : hi;
+}
 
 BvhRay bvh_ray(Vec3 org, Vec3 dir);
 /* bvh_ray without the SSE2 lanes (org2, inv2, left unset), for the AVX2
@@ -160,7 +178,7 @@ static inline void bvh_ray_scalar_inverse(BvhRay *r, Vec3 org, const double inv[
     for (int a = 0; a < 3; a++) {
         r->org[a] = o[a];
         r->inv[a] = inv[a];
-        r->neg[a] = signbit(r->inv[a]) != 0;
+        bvh_ray_faces(r, a);
     }
 }
 
@@ -181,7 +199,7 @@ static inline void bvh_ray_scalar(BvhRay *r, Vec3 org, Vec3 dir)
     for (int a = 0; a < 3; a++) {
         r->org[a] = o[a];
         r->inv[a] = 1.0 / d[a];
-        r->neg[a] = signbit(r->inv[a]) != 0;
+        bvh_ray_faces(r, a);
     }
 }
 
@@ -247,21 +265,30 @@ static inline unsigned bvh_node_hits(const BvhNode *n, const BvhRay *r, double t
 #define BVH_HAVE_AVX2_PATH 1
 #include <immintrin.h>
 
+/* One axis of bvh_node_hits_avx2: the four children's slabs narrowing
+ * [near, far]. */
+__attribute__((target("avx2"))) static inline void bvh_axis_avx2(const BvhNode *n, const BvhRay *r, int a,
+                                                                __m256d *near, __m256d *far)
+{
+    const float *lo = (const float *)(const void *)((const char *)n + r->first_at[a]);
+    const float *hi = (const float *)(const void *)((const char *)n + r->last_at[a]);
+    const __m256d org = _mm256_set1_pd(r->org[a]), inv = _mm256_set1_pd(r->inv[a]);
+    __m256d tn = _mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(lo)), org), inv);
+    const __m256d grow = _mm256_set1_pd(BVH_GROW);
+    __m256d tf = _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(hi)), org), inv), grow);
+    *near = _mm256_max_pd(tn, *near);
+    *far = _mm256_min_pd(tf, *far);
+}
+
 __attribute__((target("avx2"))) static inline unsigned bvh_node_hits_avx2(const BvhNode *n, const BvhRay *r,
                                                                           double t0, double t1,
                                                                           double enter[BVH_WIDTH])
 {
-    const __m256d grow = _mm256_set1_pd(BVH_GROW);
     __m256d near = _mm256_set1_pd(t0), far = _mm256_set1_pd(t1 * BVH_GROW);
-    for (int a = 0; a < 3; a++) {
-        const float *lo = r->neg[a] ? n->hi[a] : n->lo[a];
-        const float *hi = r->neg[a] ? n->lo[a] : n->hi[a];
-        const __m256d org = _mm256_set1_pd(r->org[a]), inv = _mm256_set1_pd(r->inv[a]);
-        __m256d tn = _mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(lo)), org), inv);
-        __m256d tf = _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(hi)), org), inv), grow);
-        near = _mm256_max_pd(tn, near);
-        far = _mm256_min_pd(tf, far);
-    }
+    /* the axes one by one, written out (no loop to count, no branch) */
+    bvh_axis_avx2(n, r, 0, &near, &far);
+    bvh_axis_avx2(n, r, 1, &near, &far);
+    bvh_axis_avx2(n, r, 2, &near, &far);
     _mm256_storeu_pd(enter, near);
     return (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(near, far, _CMP_LE_OQ));
 }

@@ -1,11 +1,10 @@
 /* POV-Ray 3.7's polynomial solver (source/backend/math/polysolv.cpp,
  * Solve_Polynomial), for the shapes whose surfaces it intersects with it
- * (poly, cubic, quartic): the same closed formulas for the quadratic,
+ * (poly, cubic, quartic, torus, ...): the same closed formulas for the quadratic,
  * cubic and quartic, the same switch to its Sturm-sequence solver (asked
  * for by `sturm`, or forced where a quartic's coefficients span more than
  * 1e12), the same root elimination and tolerances, so that the roots
- * found, missed and misplaced are POV-Ray's own. (The torus uses
- * polynomial.h, which finds every root to the last bit.) */
+ * found, missed and misplaced are POV-Ray's own. */
 #ifndef HST_POLYNOMIAL_SOLVER_H
 #define HST_POLYNOMIAL_SOLVER_H
 

@@ -7,9 +7,13 @@
 #include <math.h>
 #include <stddef.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "blob.h"
 #include "csg.h"
-#include "polynomial.h"
+#include "polynomial_solver.h"
 #include "poly.h"
 #include "lathe.h"
 #include "quadric.h"
@@ -385,13 +389,9 @@ static int torus_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *
     double k2 = p.x * d.x + p.z * d.z + pdy2;
     double c[5] = { 1.0, 4.0 * k2, 2.0 * (k1 + 2.0 * (k2 * k2 + R2 * dy2)), 4.0 * (k2 * k1 + 2.0 * R2 * pdy2),
                     k1 * k1 + 4.0 * R2 * (py2 - r2) };
-    /* Solve_Polynomial's root elimination: with the constant this small
-     * against the linear coefficient, 0 is taken for a root and the cubic
-     * left over solved (rays leaving the surface) */
-    int degree = (c[3] != 0.0 && fabs(c[4] / c[3]) < TORUS_ROOT_TOLERANCE) ? 3 : 4;
-    double roots[POLYNOMIAL_MAX_DEGREE];
-    /* the roots POV-Ray's Sturm solver brackets: 0 to MAX_DISTANCE */
-    int nr = polynomial_roots(c, degree, 0.0, POV_MAX_DISTANCE, roots);
+    /* POV-Ray's Solve_Polynomial, its root elimination included */
+    double roots[4];
+    int nr = poly_solve(4, c, roots, s->u.torus.sturm, TORUS_ROOT_TOLERANCE);
     int n = 0;
     for (int k = 0; k < nr; k++) {
         double depth = (roots[k] + closer) / len;
@@ -403,6 +403,7 @@ static int torus_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *
         hits[n].entering = (v3_dot(d, torus_local_normal(s, at)) < 0.0) != (s->inverse != 0);
         n++;
     }
+    shape_hits_sort(hits, n);
     return n;
 }
 
@@ -728,8 +729,11 @@ static int crossings(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *
         return 0;
     Vec3 u = len == 1.0 ? dir : v3_scale(dir, 1.0 / len);
     double ulimit = len == 1.0 ? tmax : tmax * len;
-    int n = found_from_origin(s->kind) && !s->is_part && !nearest_only ? crossings_cast_again(s, org, u, ulimit, hits)
-                                                                       : one_test(s, org, u, ulimit, hits);
+    /* a sphere, the commonest shape, tested here without one_test's frame
+     * (the room every shape's test needs) */
+    int n = s->kind == SHAPE_SPHERE ? sphere_all(s, org, u, ulimit, hits)
+            : found_from_origin(s->kind) && !s->is_part && !nearest_only ? crossings_cast_again(s, org, u, ulimit, hits)
+                                                                         : one_test(s, org, u, ulimit, hits);
     if (s->kind != SHAPE_CSG) /* a primitive's crossings are its own */
         for (int k = 0; k < n; k++)
             hits[k].leaf = NULL;
@@ -829,35 +833,69 @@ void shape_hits_sort(ShapeHit *hits, int n)
         }
 }
 
+/* One axis of shape_box_hit: the slab between lo and hi grown by a
+ * relative margin far above the rounding of the box's corners and of the
+ * slab distances, narrowing [*near, *far]; 0 when the ray misses it. Its
+ * scalars are passed one axis at a time (no arrays of the ray and the box
+ * to fill per call: this test runs before every exact test of a shape). */
+static inline int bounds_slab(double lo, double hi, double o, double d, double *near, double *far)
+{
+    double margin = 1e-9 * (1.0 + fabs(lo) + fabs(hi) + fabs(o));
+    double l = lo - margin, h = hi + margin;
+    if (d == 0.0)
+        return !(o < l || o > h);
+    double t0 = (l - o) / d, t1 = (h - o) / d;
+    if (t0 > t1) {
+        double x = t0;
+        t0 = t1;
+        t1 = x;
+    }
+    t1 *= 1.0 + 1e-9;
+    if (t0 > *near)
+        *near = t0;
+    if (t1 < *far)
+        *far = t1;
+    return !(*near > *far);
+}
+
+#if defined(__SSE2__)
+/* bounds_slab on x and y at once, for a ray whose x and y directions are
+ * not 0 (narrowing [*near, *far] from [0, tmax]): each lane is bounds_slab's
+ * arithmetic in its order (IEEE operations, lane by lane); minpd(t1, t0)
+ * and maxpd(t0, t1) are its swap (t0 > t1: false for NaN, as there), maxpd
+ * and minpd against near and far its updates (a NaN distance leaves them
+ * as they were), and the lanes joined as the second axis's updates after
+ * the first's. That bounds_slab's early rejection after x is left out
+ * changes nothing: near only grows and far only shrinks. */
+static inline void bounds_slabs_xy(const Shape *s, Vec3 org, Vec3 dir, double *near, double *far)
+{
+    const __m128d sign = _mm_set1_pd(-0.0);
+    const __m128d lo = _mm_set_pd(s->bbox_min.y, s->bbox_min.x), hi = _mm_set_pd(s->bbox_max.y, s->bbox_max.x);
+    const __m128d o = _mm_set_pd(org.y, org.x), d = _mm_set_pd(dir.y, dir.x);
+    __m128d sum = _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_set1_pd(1.0), _mm_andnot_pd(sign, lo)), _mm_andnot_pd(sign, hi)),
+                             _mm_andnot_pd(sign, o));
+    __m128d margin = _mm_mul_pd(_mm_set1_pd(1e-9), sum);
+    __m128d t0 = _mm_div_pd(_mm_sub_pd(_mm_sub_pd(lo, margin), o), d);
+    __m128d t1 = _mm_div_pd(_mm_sub_pd(_mm_add_pd(hi, margin), o), d);
+    __m128d tn = _mm_min_pd(t1, t0), tf = _mm_mul_pd(_mm_max_pd(t0, t1), _mm_set1_pd(1.0 + 1e-9));
+    __m128d n = _mm_max_pd(tn, _mm_set1_pd(*near)), f = _mm_min_pd(tf, _mm_set1_pd(*far));
+    double nx = _mm_cvtsd_f64(n), ny = _mm_cvtsd_f64(_mm_unpackhi_pd(n, n));
+    double fx = _mm_cvtsd_f64(f), fy = _mm_cvtsd_f64(_mm_unpackhi_pd(f, f));
+    *near = ny > nx ? ny : nx;
+    *far = fy < fx ? fy : fx;
+}
+#endif
+
 int shape_box_hit(const Shape *s, Vec3 org, Vec3 dir, double tmax)
 {
-    /* slabs grown by a relative margin far above the rounding of the
-     * box's corners and of the slab distances */
-    const double o[3] = { org.x, org.y, org.z }, d[3] = { dir.x, dir.y, dir.z };
-    const double lo[3] = { s->bbox_min.x, s->bbox_min.y, s->bbox_min.z };
-    const double hi[3] = { s->bbox_max.x, s->bbox_max.y, s->bbox_max.z };
     double near = 0.0, far = tmax;
-    for (int a = 0; a < 3; a++) {
-        double margin = 1e-9 * (1.0 + fabs(lo[a]) + fabs(hi[a]) + fabs(o[a]));
-        double l = lo[a] - margin, h = hi[a] + margin;
-        if (d[a] == 0.0) {
-            if (o[a] < l || o[a] > h)
-                return 0;
-            continue;
-        }
-        double t0 = (l - o[a]) / d[a], t1 = (h - o[a]) / d[a];
-        if (t0 > t1) {
-            double x = t0;
-            t0 = t1;
-            t1 = x;
-        }
-        t1 *= 1.0 + 1e-9;
-        if (t0 > near)
-            near = t0;
-        if (t1 < far)
-            far = t1;
-        if (near > far)
-            return 0;
+#if defined(__SSE2__)
+    if (dir.x != 0.0 && dir.y != 0.0) {
+        bounds_slabs_xy(s, org, dir, &near, &far);
+        return !(near > far) && bounds_slab(s->bbox_min.z, s->bbox_max.z, org.z, dir.z, &near, &far);
     }
-    return 1;
+#endif
+    return bounds_slab(s->bbox_min.x, s->bbox_max.x, org.x, dir.x, &near, &far) &&
+           bounds_slab(s->bbox_min.y, s->bbox_max.y, org.y, dir.y, &near, &far) &&
+           bounds_slab(s->bbox_min.z, s->bbox_max.z, org.z, dir.z, &near, &far);
 }

@@ -116,8 +116,7 @@ struct Shape {
         } cone;
         /* A torus about the y axis of its own space: the circle of radius
          * minor swept around the circle of radius major. sturm: the scene
-         * asked for POV-Ray's Sturm solver (hstrace's one solver isolates
-         * every root as that one does). */
+         * asked for POV-Ray's Sturm solver (polynomial_solver.h). */
         struct {
             double major, minor;
             int sturm;

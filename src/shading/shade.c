@@ -91,7 +91,7 @@ static double beam_attenuation(const Light *l, Vec3 p, Vec3 to_light)
 
 /* The share of the light's colour that reaches p: the beam, then distance
  * fading (POV-Ray's Attenuate_Light). */
-static double light_attenuation(const Light *l, Vec3 p, Vec3 to_light, double distance)
+static inline double light_attenuation(const Light *l, Vec3 p, Vec3 to_light, double distance)
 {
     double a = l->beam == BEAM_NONE ? 1.0 : beam_attenuation(l, p, to_light);
     if (a > 0.0 && l->fade_power > 0.0 && fabs(l->fade_distance) > POV_EPSILON)
@@ -114,7 +114,7 @@ static RGB metallic_colour(double metallic, Vec3 normal, Vec3 to_light, RGB ligh
 /* The unit direction from p toward the light, and the distance to it. A
  * parallel light has one direction, and the distance is to the plane
  * through the light perpendicular to it. */
-static double light_direction(const Light *l, Vec3 p, Vec3 *to_light)
+static inline double light_direction(const Light *l, Vec3 p, Vec3 *to_light)
 {
     Vec3 d = v3_sub(l->location, p);
     double distance = v3_length(d);
@@ -128,10 +128,8 @@ static double light_direction(const Light *l, Vec3 p, Vec3 *to_light)
 
 /* --aov: what became of q's light at the primary hit. asked: the method's
  * test or skip ran; through: the test's answer (NULL after a skip). */
-static void note_light(ShadeContext *ctx, const ShadowQuery *q, int asked, int faces_away, const RGB *through)
+static void record_light(ShadeContext *ctx, const ShadowQuery *q, int asked, int faces_away, const RGB *through)
 {
-    if (!ctx->aov || ctx->depth != 1)
-        return;
     ShadowRecord r = { SCHEME_NONE, -1 };
     if (asked)
         r = shadow_record(&ctx->shadow, q, through);
@@ -140,6 +138,14 @@ static void note_light(ShadeContext *ctx, const ShadowQuery *q, int asked, int f
                                            : AOV_CODE_UNTESTED;
     double visibility = faces_away ? 0.0 : through ? greyscale(through->r, through->g, through->b) : 1.0;
     aov_record_light(ctx->aov, q->light, code, visibility, r.depth);
+}
+
+/* record_light where there is an --aov and q is at the primary hit: asked
+ * for every light of every hit, which mostly has none. */
+static inline void note_light(ShadeContext *ctx, const ShadowQuery *q, int asked, int faces_away, const RGB *through)
+{
+    if (ctx->aov && ctx->depth == 1)
+        record_light(ctx, q, asked, faces_away, through);
 }
 
 /* The shadow methods' states when the shading asks nothing about any light. */

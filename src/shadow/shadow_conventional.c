@@ -185,11 +185,11 @@ static int shape_shadow_crossings(ShadowContext *ctx, const ShadowQuery *q, int 
     if (w->materials[s->material].no_shadow || !shape_box_hit(s, q->point, q->to_light, tlimit))
         return 0;
     ctx->stats.shadow_shape_tests++;
-    ShapeHit all[SHAPE_MAX_HITS];
-    int nall = shape_intersect_all(s, q->point, q->to_light, tlimit, all), n = 0;
+    /* those past the window's start kept in place, in order */
+    int nall = shape_intersect_all(s, q->point, q->to_light, tlimit, hits), n = 0;
     for (int k = 0; k < nall; k++)
-        if (all[k].t > tmin)
-            hits[n++] = all[k];
+        if (hits[k].t > tmin)
+            hits[n++] = hits[k];
     return n;
 }
 
@@ -214,9 +214,14 @@ typedef struct {
     RGB *light;
 } ShapeShadow;
 
-static int shadow_shape_test(void *user, int i, double *tmax)
+static int shadow_shape_test(void *user, int i, int boxed, double *tmax)
 {
-    (void)tmax; /* every crossing up to the light counts */
+    /* every crossing up to the light counts; the shape's own box is
+     * tested whatever the walk's, so that every method's shadow ray
+     * (whose lists of shapes are not the hierarchy's) crosses the same
+     * shapes, bit for bit */
+    (void)boxed;
+    (void)tmax;
     ShapeShadow *ss = user;
     ShadowContext *ctx = ss->ctx;
     const ShadowQuery *q = ss->q;
@@ -253,7 +258,7 @@ int shadow_shape_fold(ShadowContext *ctx, const ShadowQuery *q, int i, RGB *ligh
 {
     ShapeShadow ss = { ctx, q, light };
     double unused = q->distance;
-    return shadow_shape_test(&ss, i, &unused);
+    return shadow_shape_test(&ss, i, 0, &unused);
 }
 
 int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
@@ -271,7 +276,7 @@ int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)
     }
     for (int i = 0; i < w->nshapes; i++) {
         double tmax = q->distance;
-        if (shadow_shape_test(&ss, i, &tmax))
+        if (shadow_shape_test(&ss, i, 0, &tmax))
             return 1;
     }
     return 0;

@@ -83,10 +83,12 @@ static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, const Sha
 static int buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, const ShadowQuery *q, RGB *light)
 {
     const World *w = ctx->tracer->world;
-    double tmin = trace_min_distance(q->point);
     for (int i = 0; i < w->nplanes; i++) {
+        /* the point's own plane, which shadow_plane_test passes over */
+        if (q->surface->kind == HIT_PLANE && q->surface->index == i)
+            continue;
         double s_light = lb->plane_side[i];
-        if (s_light != 0.0 && !(q->surface->kind == HIT_PLANE && q->surface->index == i)) {
+        if (s_light != 0.0) {
             const InfinitePlane *pl = &w->planes[i];
             double num = pl->d - v3_dot(pl->normal, q->point);
             double cosine = v3_dot(pl->normal, q->to_light);
@@ -100,7 +102,7 @@ static int buffer_planes_test(ShadowContext *ctx, const LightBuffer *lb, const S
                 continue;
             }
         }
-        if (shadow_plane_test(ctx, q, i, tmin, light))
+        if (shadow_plane_test(ctx, q, i, trace_min_distance(q->point), light))
             return 1;
     }
     return 0;
