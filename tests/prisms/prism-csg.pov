@@ -1,8 +1,9 @@
 // Prisms as parts of CSG and transformed: a cubic prism with a cylinder
 // taken away, the intersection of a Bezier prism and a sphere, a
-// quadratic prism taken from a box, a conic prism clipped by a plane, and
-// a linear one rotated and scaled unevenly, POV-Ray's logo (a prism in a
-// difference) among them. (tests/prisms.sh)
+// quadratic prism taken from a box, a conic prism clipped by a plane, a
+// sphere clipped by a prism, and a linear one rotated and scaled
+// unevenly, POV-Ray's logo (a prism in a difference) among them.
+// (tests/prisms.sh)
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 4, -7> look_at <0, 0.4, 0> angle 52 }
@@ -30,5 +31,9 @@ prism { conic_sweep cubic_spline 0.3, 1.2, 8,
   clipped_by { plane { z, 0.2 } } translate <-1.5, 0, -1.3> pigment { rgb <0.3, 0.4, 0.9> } }
 prism { linear_spline 0, 0.5, 5, <-0.5, -0.3>, <0.5, -0.3>, <0.5, 0.3>, <-0.5, 0.3>, <-0.5, -0.3>
   scale <1, 2, 0.5> rotate <20, 30, 40> translate <1.5, 0.6, -1.3> pigment { rgb <0.7, 0.5, 0.9> } }
+sphere { 0, 0.8 clipped_by { prism { quadratic_spline -1, 0.3, 11,
+    <0.6, -0.6>, <1, 0>, <0.3, 0.3>, <0, 1>, <-0.3, 0.3>, <-1, 0>, <-0.3, -0.3>, <0, -1>, <0.3, -0.3>, <1, 0>, <0.3, 0.3>
+    rotate 20 * y } }
+  translate <3.3, 0.6, 3.4> pigment { rgb <0.9, 0.9, 0.9> } }
 #include "logo.inc"
 object { Povray_Logo scale 0.6 rotate <0, 0, 0> translate <0, 0.6, -1.5> pigment { rgb <0.8, 0.8, 0.2> } }
