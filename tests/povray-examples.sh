@@ -122,6 +122,7 @@ objects/superel1.pov|
 objects/lathe2.pov|
 objects/prism1.pov|
 objects/prism2.pov|
+objects/prism3a.pov|
 objects/prism3b.pov|
 objects/prism3c.pov|
 incdemo/logo.pov|
@@ -235,6 +236,7 @@ objects/lathe2.pov                               1e-5     (2.88e-6)     1 (0)   
 # prism of every spline, and the prism in a difference of logo.inc (measured 2026-12-07, once modelled)
 objects/prism1.pov                               1e-5     (5.10e-7)     1 (0)           1 (0)
 objects/prism2.pov                               1e-5     (2.10e-6)     1 (0)           1 (0)
+objects/prism3a.pov                              1e-5     (2.98e-6)     1 (0)           1 (0)
 objects/prism3b.pov                              1e-5     (2.14e-6)     1 (0)           1 (0)
 objects/prism3c.pov                              1e-5     (0)           1 (0)           1 (0)
 incdemo/logo.pov                                 1e-5     (0)           1 (0)           1 (0)
