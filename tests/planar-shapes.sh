@@ -4,9 +4,11 @@
 # itself, the same smooth, and two placed by transforms, one smooth and cut
 # by its water level from an 8-bit PGM, one from an 8-bit colour PNG, one
 # from a palette PNG),
-# bicubic_patch (type 0 by flatness, type 1 by steps, uv-mapped) and
+# bicubic_patch (type 0 by flatness, type 1 by steps, uv-mapped), and
 # linear-spline prisms (a linear sweep with a hole, an open one, conic
-# sweeps, two through their apex), all in tests/planar-shapes/:
+# sweeps, two through their apex: planar, though hstrace now intersects
+# every prism as POV-Ray's analytic shape, tests/prisms.sh), all in
+# tests/planar-shapes/:
 #   - hstrace's image and shadow mask against POV-Ray's renders (+Q9, and
 #     +Q3/+Q4 for the mask), RMSE within the limits below, no interior mask
 #     disagreement (skipped without POV-Ray);

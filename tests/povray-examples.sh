@@ -120,6 +120,12 @@ objects/quartic/quarcyl.pov|
 objects/quartic/torus.pov|
 objects/superel1.pov|
 objects/lathe2.pov|
+objects/prism1.pov|
+objects/prism2.pov|
+objects/prism3a.pov|
+objects/prism3b.pov|
+objects/prism3c.pov|
+incdemo/logo.pov|
 textures/pigments/checker2.pov|"
 
 # The limits per scene, 160x120, each LIMIT (MEASURED): the value measured
@@ -129,7 +135,8 @@ textures/pigments/checker2.pov|"
 # fake caustics were; the camera types, spotlite and Night_moon (looks_like)
 # and Tango, the blob samples and glassthing on 2026-12-07, once they
 # rendered; the quadrics, quartics, superellipsoids and lathe on
-# 2026-12-07, once those shapes were) and the
+# 2026-12-07, once those shapes were; the prisms and logo.pov the same
+# day, once the prism was) and the
 # limit: the image's RMSE and its pixels off by more than 0.02, the shadow
 # mask's disagreeing pixels (none may disagree in the interior). Where the
 # images agree but for noise (RMSE below 0.01), the limit is about the
@@ -226,6 +233,13 @@ objects/quartic/quarcyl.pov                      1e-5     (0)           1 (0)   
 objects/quartic/torus.pov                        1e-5     (2.05e-6)     1 (0)           1 (0)
 objects/superel1.pov                             1e-5     (0)           1 (0)           1 (0)
 objects/lathe2.pov                               1e-5     (2.88e-6)     1 (0)           1 (0)
+# prism of every spline, and the prism in a difference of logo.inc (measured 2026-12-07, once modelled)
+objects/prism1.pov                               1e-5     (5.10e-7)     1 (0)           1 (0)
+objects/prism2.pov                               1e-5     (2.10e-6)     1 (0)           1 (0)
+objects/prism3a.pov                              1e-5     (2.98e-6)     1 (0)           1 (0)
+objects/prism3b.pov                              1e-5     (2.14e-6)     1 (0)           1 (0)
+objects/prism3c.pov                              1e-5     (0)           1 (0)           1 (0)
+incdemo/logo.pov                                 1e-5     (0)           1 (0)           1 (0)
 # quick_color shown below +Q6 as POV-Ray shows it (its +Q4 render, the mask)
 textures/pigments/checker2.pov                   1e-5     (5.24e-7)     1 (0)           1 (0)
 '

@@ -391,7 +391,7 @@ typedef enum {
      * polygons (its own sampling and subdivision), flattened so. */
     OBJ_HEIGHT_FIELD,
     OBJ_BICUBIC_PATCH,
-    OBJ_PRISM,
+    OBJ_PRISM,           /* an analytic shape: an outline of splines swept along y */
     OBJ_SPHERE,          /* the analytic shapes: kept as they are, never made polygons */
     OBJ_DISC,
     OBJ_CONE,            /* also cylinder (equal radii) */
@@ -432,6 +432,15 @@ typedef struct SorSegment {
 
 /* A lathe's spline (POV-Ray's LINEAR_SPLINE ... BEZIER_SPLINE). */
 typedef enum { SPLINE_LINEAR, SPLINE_QUADRATIC, SPLINE_CUBIC, SPLINE_BEZIER } SplineKind;
+
+/* One segment of a prism's outline as POV-Ray's Compute_Prism makes it:
+ * x(t) = a[0] t^3 + b[0] t^2 + c[0] t + d[0], z(t) likewise in [1], for
+ * t in [0, 1]; its rectangle u1..u2, v1..v2 in x and z, and x1..x2,
+ * y1..y2 the same swept (scaled by both heights for a conic sweep). */
+typedef struct PrismSegment {
+    double a[2], b[2], c[2], d[2];
+    double u1, u2, v1, v2, x1, x2, y1, y2;
+} PrismSegment;
 
 /* How a prism's outline is swept (POV-Ray's linear_sweep, conic_sweep). */
 typedef enum { PRISM_LINEAR_SWEEP, PRISM_CONIC_SWEEP } PrismSweep;
@@ -649,16 +658,18 @@ struct SceneObject {
             Vec3 control[4][4]; /* [u][v], as written, in object space */
             double st[4][2];    /* uv_vectors: the texture's uv at the patch's corners */
         } bicubic_patch;
-        struct {            /* prism with linear_spline */
+        struct {            /* prism, its segments made as Compute_Prism makes them */
             PrismSweep sweep;
+            SplineKind spline;
             double height1, height2; /* height1 <= height2 */
-            /* 2-D points (x, z in .x, .y) of closed outlines, each ending on
-             * its first point, as the polygon's points are kept */
-            int npoints;
-            const Vec3 *points;
-            int noutlines;
-            const int *outline_start; /* noutlines + 1 entries */
-            int open;                  /* no caps */
+            int nsegments;
+            const PrismSegment *segments;
+            /* the outline's rectangle (POV-Ray's u1, u2, v1, v2) and the
+             * swept one's (x1, x2, y1, y2: scaled by the heights for a
+             * conic sweep), x, z in the prism's own space */
+            double u1, u2, v1, v2, x1, x2, y1, y2;
+            int open;       /* no caps */
+            int degenerate; /* an unclosed curved outline: POV-Ray ignores it */
         } prism;
         struct {
             int nchildren;

@@ -29,13 +29,12 @@ typedef struct GramState {
 static inline double gram_single(double v) { return (double)(float)v; }
 
 /* parse_texture.c */
-/* POV-Ray's outline rule for polygons and prisms: in the points pts, an
- * outline closes on a point equal (within epsilon, in x and y, and z where
- * dims is 3) to its first, and the next point starts another; one left
+/* POV-Ray's outline rule for polygons: in the points pts, an
+ * outline closes on a point equal (within epsilon, in x, y and z) to its first, and the next point starts another; one left
  * open is closed by repeating its first point. *starts gets each outline's
  * first index, then the count of points. Returns 1 when the last outline
  * was closed in the file, 0 when it had to be (POV-Ray warns). */
-int gram_outlines(Parser *p, TempVec *pts, double epsilon, int dims, TempVec *starts);
+int gram_outlines(Parser *p, TempVec *pts, double epsilon, TempVec *starts);
 SceneTexture *gram_default_texture(Parser *p);
 SceneTexture *gram_texture(Parser *p);   /* after 'texture' */
 void gram_pigment(Parser *p, Pigment *pig); /* after 'pigment' */

@@ -52,7 +52,7 @@ static const SceneObject *first_non_solid(const SceneObject *o)
 {
     switch (o->kind) {
     case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BLOB: case OBJ_BOX: case OBJ_PLANE: case OBJ_GLYPH:
-    case OBJ_QUADRIC: case OBJ_POLY: case OBJ_SUPERELLIPSOID: case OBJ_LATHE: case OBJ_SOR:
+    case OBJ_QUADRIC: case OBJ_POLY: case OBJ_SUPERELLIPSOID: case OBJ_LATHE: case OBJ_SOR: case OBJ_PRISM:
         return NULL;
     case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
         /* the parser bounds the depth (SceneObject.depth) */
@@ -333,7 +333,7 @@ static int bound_readable(Parser *p, const Token *t)
     switch (t->kw) {
     case KW_box: case KW_plane: case KW_union: case KW_object: case KW_sphere: case KW_disc: case KW_cylinder:
     case KW_cone: case KW_torus: case KW_intersection: case KW_difference: case KW_merge: case KW_quadric:
-    case KW_poly: case KW_cubic: case KW_quartic: case KW_superellipsoid: case KW_lathe: case KW_sor:
+    case KW_poly: case KW_cubic: case KW_quartic: case KW_superellipsoid: case KW_lathe: case KW_sor: case KW_prism:
         return 1;
     default:
         break;
@@ -520,7 +520,7 @@ static Vec3 *vec3_array(Parser *p, const TempVec *v)
     return out;
 }
 
-int gram_outlines(Parser *p, TempVec *pts, double epsilon, int dims, TempVec *starts)
+int gram_outlines(Parser *p, TempVec *pts, double epsilon, TempVec *starts)
 {
     tok_tvec_init(starts, sizeof(int));
     *(int *)tok_tvec_push(p, starts) = 0;
@@ -530,8 +530,7 @@ int gram_outlines(Parser *p, TempVec *pts, double epsilon, int dims, TempVec *st
     int closed = 0;
     for (int i = 1; i < n; i++) {
         closed = 0;
-        if (fabs(first.x - v[i].x) < epsilon && fabs(first.y - v[i].y) < epsilon &&
-            (dims < 3 || fabs(first.z - v[i].z) < epsilon)) {
+        if (fabs(first.x - v[i].x) < epsilon && fabs(first.y - v[i].y) < epsilon && fabs(first.z - v[i].z) < epsilon) {
             v[i] = first;
             i++;
             if (i < n) {
@@ -578,7 +577,7 @@ static SceneObject *parse_polygon(Parser *p, const Token *kw)
     /* POV-Ray's outline rule (Parse_Polygon); an outline left open is
      * closed without POV-Ray's "Polygon not closed" warning, as before */
     TempVec starts;
-    (void)gram_outlines(p, &pts, POLY_EPSILON, 3, &starts);
+    (void)gram_outlines(p, &pts, POLY_EPSILON, &starts);
     o->u.polygon.npoints = pts.n;
     o->u.polygon.points = vec3_array(p, &pts);
     o->u.polygon.noutlines = starts.n - 1;

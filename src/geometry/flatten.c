@@ -20,6 +20,7 @@
 #include "planar_shapes.h"
 #include "ptr_map.h"
 #include "lathe.h"
+#include "prism.h"
 #include "quadric.h"
 #include "sor.h"
 #include "text.h"
@@ -1154,6 +1155,38 @@ static int flatten_sor(Builder *b, const SceneObject *o, const Inherited *in, in
     return 0;
 }
 
+/* A prism in its own space, reached through every transform (prism.h). */
+static int flatten_prism(Builder *b, const SceneObject *o, const Inherited *in, int material)
+{
+    Shape *s = add_shape_own_space(b, SHAPE_PRISM, in, material);
+    if (!s)
+        return -1;
+    s->u.prism.spline = (int)o->u.prism.spline;
+    s->u.prism.conic = o->u.prism.sweep == PRISM_CONIC_SWEEP;
+    s->u.prism.nsegments = o->u.prism.nsegments;
+    s->u.prism.segments = o->u.prism.segments;
+    s->u.prism.height1 = o->u.prism.height1;
+    s->u.prism.height2 = o->u.prism.height2;
+    s->u.prism.u1 = o->u.prism.u1;
+    s->u.prism.u2 = o->u.prism.u2;
+    s->u.prism.v1 = o->u.prism.v1;
+    s->u.prism.v2 = o->u.prism.v2;
+    s->u.prism.x1 = o->u.prism.x1;
+    s->u.prism.x2 = o->u.prism.x2;
+    s->u.prism.y1 = o->u.prism.y1;
+    s->u.prism.y2 = o->u.prism.y2;
+    s->u.prism.open = o->u.prism.open;
+    s->u.prism.degenerate = o->u.prism.degenerate;
+    s->u.prism.sturm = o->sturm;
+    /* a root of the segment's equation per crossing (its degree), and
+     * the two caps */
+    const int roots = o->u.prism.spline == SPLINE_LINEAR ? 1 : o->u.prism.spline == SPLINE_QUADRATIC ? 2 : 3;
+    const int most = SHAPE_NUMERIC_MAX_HITS;
+    s->max_hits = o->u.prism.nsegments > (most - 2) / roots ? most : roots * o->u.prism.nsegments + 2;
+    shape_placed(b, s);
+    return 0;
+}
+
 static int flatten_object(Builder *b, const SceneObject *o, const Inherited *parent, const Scene *scene, int depth);
 
 /* A box as a part of a CSG object (shape.h): POV-Ray's corners, sorted
@@ -1594,7 +1627,6 @@ static int flatten_planar_shape(Builder *b, const SceneObject *o, const Inherite
     switch (o->kind) {
     case OBJ_HEIGHT_FIELD: return height_field_pieces(o, &in->transform, &t.sink);
     case OBJ_BICUBIC_PATCH: return bicubic_patch_pieces(o, &in->transform, &t.sink);
-    case OBJ_PRISM: return prism_pieces(o, &in->transform, &t.sink);
     default: return 0;
     }
 }
@@ -1701,7 +1733,8 @@ static int flatten_kind(Builder *b, const SceneObject *o, const Inherited *in_, 
     case OBJ_SUPERELLIPSOID: return flatten_superellipsoid(b, o, &in, material);
     case OBJ_LATHE: return flatten_lathe(b, o, &in, material);
     case OBJ_SOR: return flatten_sor(b, o, &in, material);
-    case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM:
+    case OBJ_PRISM: return flatten_prism(b, o, &in, material);
+    case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH:
         return flatten_planar_shape(b, o, &in, material);
     case OBJ_UNION:
     case OBJ_INTERSECTION:

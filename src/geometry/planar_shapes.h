@@ -1,7 +1,6 @@
 /* The shapes POV-Ray 3.7 itself intersects as planar triangles and
- * polygons: height_field (two triangles a cell of its samples),
- * bicubic_patch (its own subdivision's triangles, normals interpolated) and
- * the linear-spline prism (flat sides and caps). Each builder turns the
+ * polygons: height_field (two triangles a cell of its samples) and
+ * bicubic_patch (its own subdivision's triangles, normals interpolated). Each builder turns the
  * description's object into world-space pieces handed to a PieceSink
  * (flatten.c adds them to the world), so every shadow method treats them as
  * the polygons they are; each counts its pieces beforehand for
@@ -37,13 +36,11 @@ struct PieceSink {
  * Return 0, or -1 when the sink fails. */
 int height_field_pieces(const SceneObject *o, const Transform *to_world, PieceSink *sink);
 int bicubic_patch_pieces(const SceneObject *o, const Transform *to_world, PieceSink *sink);
-int prism_pieces(const SceneObject *o, const Transform *to_world, PieceSink *sink);
 
 /* How many pieces, and points in all, the builder above makes of o at most
  * (world_estimate.c: before anything is built). */
 void height_field_count(const SceneObject *o, double *pieces, double *points);
 void bicubic_patch_count(const SceneObject *o, double *pieces, double *points);
-void prism_count(const SceneObject *o, double *pieces, double *points);
 
 /* The shading normal of a smooth height field's cell at q (a point of
  * it): its corner normals blended bilinearly by q's place in the cell

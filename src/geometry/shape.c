@@ -16,6 +16,7 @@
 #include "polynomial_solver.h"
 #include "poly.h"
 #include "lathe.h"
+#include "prism.h"
 #include "quadric.h"
 #include "sor.h"
 #include "superellipsoid.h"
@@ -627,6 +628,10 @@ void shape_compute_bounds(Shape *s)
         lo = v3(-s->u.sor.radius2, s->u.sor.height1, -s->u.sor.radius2);
         hi = v3(s->u.sor.radius2, s->u.sor.height2, s->u.sor.radius2);
         break;
+    case SHAPE_PRISM: /* Prism::Compute_BBox */
+        lo = v3(s->u.prism.x1, s->u.prism.height1, s->u.prism.y1);
+        hi = v3(s->u.prism.x2, s->u.prism.height2, s->u.prism.y2);
+        break;
     case SHAPE_SUPERELLIPSOID: /* Superellipsoid::Compute_BBox */
         lo = v3(-1.0001, -1.0001, -1.0001);
         hi = v3(1.0001, 1.0001, 1.0001);
@@ -679,6 +684,7 @@ static int one_test(const Shape *s, Vec3 org, Vec3 u, double ulimit, ShapeHit *h
     case SHAPE_SUPERELLIPSOID: return superellipsoid_all(s, org, u, ulimit, hits);
     case SHAPE_LATHE: return lathe_all(s, org, u, ulimit, hits);
     case SHAPE_SOR: return sor_all(s, org, u, ulimit, hits);
+    case SHAPE_PRISM: return prism_all(s, org, u, ulimit, hits);
     }
     return 0;
 }
@@ -688,7 +694,7 @@ static int one_test(const Shape *s, Vec3 org, Vec3 u, double ulimit, ShapeHit *h
  * where they are found depends on where the ray starts. */
 static int found_from_origin(ShapeKind k)
 {
-    return k == SHAPE_POLY || k == SHAPE_SUPERELLIPSOID || k == SHAPE_LATHE || k == SHAPE_SOR;
+    return k == SHAPE_POLY || k == SHAPE_SUPERELLIPSOID || k == SHAPE_LATHE || k == SHAPE_SOR || k == SHAPE_PRISM;
 }
 
 /* Such a shape's crossings as POV-Ray meets them along a ray that goes on
@@ -772,6 +778,7 @@ int shape_inside(const Shape *s, Vec3 p)
     case SHAPE_SUPERELLIPSOID: return superellipsoid_inside(s, p);
     case SHAPE_LATHE: return lathe_inside(s, p);
     case SHAPE_SOR: return sor_inside(s, p);
+    case SHAPE_PRISM: return prism_inside(s, p);
     case SHAPE_GLYPH: return glyph_inside(s, p);
     case SHAPE_BLOB: return blob_inside(s, p);
     }
@@ -793,6 +800,7 @@ Vec3 shape_normal(const Shape *s, Vec3 p, int part)
     case SHAPE_SUPERELLIPSOID: return superellipsoid_normal(s, p);
     case SHAPE_LATHE: return lathe_normal(s, p, part);
     case SHAPE_SOR: return sor_normal(s, p, part);
+    case SHAPE_PRISM: return prism_normal(s, p, part);
     case SHAPE_GLYPH: return glyph_normal(s, p, part);
     case SHAPE_BLOB: return blob_normal(s, p);
     }
@@ -818,6 +826,7 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     case SHAPE_SUPERELLIPSOID: break;
     case SHAPE_LATHE: /* above */
     case SHAPE_SOR: break;
+    case SHAPE_PRISM: break; /* no mapping of its own in POV-Ray 3.7 */
     case SHAPE_GLYPH: break; /* POV-Ray 3.7's TrueType has no mapping of its own */
     case SHAPE_BLOB: break; /* POV-Ray's blob has no uv mapping */
     }

@@ -23,6 +23,7 @@ typedef enum {
     SHAPE_SUPERELLIPSOID, /* superellipsoid.h */
     SHAPE_LATHE,   /* lathe.h */
     SHAPE_SOR,     /* sor.h */
+    SHAPE_PRISM,   /* prism.h */
 } ShapeKind;
 
 /* A CSG object's operation (csg.h), after POV-Ray's rewriting: a
@@ -60,6 +61,7 @@ typedef struct Shape Shape;
 struct Blob;
 struct SplineSegment; /* scene.h: a lathe's segment */
 struct SorSegment;    /* scene.h: a sor's segment */
+struct PrismSegment;  /* scene.h: a prism's segment */
 
 /* One crossing of a shape's surface: where, and whether the ray enters
  * the solid there (for CSG and the interiors a ray is inside). */
@@ -181,6 +183,16 @@ struct Shape {
             double radius1, radius2, height1, height2, base2, cap2;
             int open, sturm;
         } sor;
+        /* A prism in its own space: its segments and rectangles (the
+         * scene's, scene.h), its spline (SplineKind), its heights */
+        struct {
+            int spline, conic;
+            int nsegments;
+            const struct PrismSegment *segments;
+            double height1, height2;
+            double u1, u2, v1, v2, x1, x2, y1, y2;
+            int open, sturm, degenerate;
+        } prism;
         /* A CSG object: nparts parts, the first at `parts` (the next at
          * parts + parts->subtree ...), set once World.shapes is final. */
         struct {

@@ -92,6 +92,7 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
     case OBJ_SUPERELLIPSOID:
     case OBJ_LATHE:
     case OBJ_SOR:
+    case OBJ_PRISM:
     case OBJ_GLYPH:
     case OBJ_BLOB:
         b += sizeof(Shape) + HIERARCHY_BYTES_PER_POLYGON; /* an item of the shapes' own hierarchy */
@@ -101,14 +102,12 @@ static void leaf(const SceneObject *o, double *bytes, double *polygons)
     case OBJ_DIFFERENCE:
     case OBJ_MERGE:
         break;
-    case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: case OBJ_PRISM: {
+    case OBJ_HEIGHT_FIELD: case OBJ_BICUBIC_PATCH: {
         double points = 0.0;
         if (o->kind == OBJ_HEIGHT_FIELD)
             height_field_count(o, &n, &points);
-        else if (o->kind == OBJ_BICUBIC_PATCH)
-            bicubic_patch_count(o, &n, &points);
         else
-            prism_count(o, &n, &points);
+            bicubic_patch_count(o, &n, &points);
         b += n * (poly + 2.0 * sizeof(int) + sizeof(OutlineBox)) + points * vec;
         break;
     }

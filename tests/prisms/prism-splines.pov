@@ -1,0 +1,22 @@
+// Prisms of curved splines as POV-Ray renders them: a quadratic one (a
+// rounded star), a cubic one with sturm (a blob with a hole: two
+// outlines), a Bezier one (a heart, its parameter running backward), a
+// linear one beside them, casting shadows on the floor. (tests/prisms.sh)
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 4, -7> look_at <0, 0.4, 0> angle 50 }
+light_source { <5, 9, -6> color rgb 1 }
+light_source { <-6, 5, -2> color rgb 0.35 }
+plane { y, 0 pigment { checker rgb 0.85, rgb 0.4 } }
+prism { quadratic_spline 0, 0.8, 11,
+  <0.6, -0.6>, <1, 0>, <0.3, 0.3>, <0, 1>, <-0.3, 0.3>, <-1, 0>, <-0.3, -0.3>, <0, -1>, <0.3, -0.3>, <1, 0>, <0.3, 0.3>
+  translate <-2.2, 0, 1> pigment { rgb <0.9, 0.3, 0.2> } finish { phong 0.5 } }
+prism { cubic_spline 0, 0.6, 15,
+  <0, -1>, <1, 0>, <0.2, 0.9>, <-0.8, 0.5>, <-0.7, -0.6>, <0, -1>, <1, 0>, <0.2, 0.9>,
+  <0.3, -0.3>, <0.3, 0.3>, <-0.3, 0.3>, <-0.3, -0.3>, <0.3, -0.3>, <0.3, 0.3>, <-0.3, 0.3>
+  sturm translate <0, 0, 1.4> pigment { rgb <0.2, 0.7, 0.3> } }
+prism { bezier_spline 0, 0.5, 8,
+  <0, -1>, <0.5, -0.5>, <1.2, 0.6>, <0, 0.4>, <0, 0.4>, <-1.2, 0.6>, <-0.5, -0.5>, <0, -1>
+  translate <2.2, 0, 1> pigment { rgb <0.9, 0.2, 0.4> } }
+prism { linear_spline -0.2, 0.4, 4, <-0.5, -0.5>, <0.5, -0.5>, <0, 0.5>, <-0.5, -0.5>
+  translate <0, 0.2, -1.2> pigment { rgb <0.3, 0.4, 0.9> } }
