@@ -16,8 +16,8 @@ int deadline_passed(void);
 
 /* A step of work counted: every 2^16 steps the clock is read, and once
  * the deadline has passed every step says so at once, without the clock
- * (for work that branches: a pigment of nested averages asks for 2^40
- * colours at one point, each of which must then end at once). Cleared by
+ * (for work that branches: a pigment or normal of nested averages asks
+ * for 2^40 values at one point, each of which must then end at once). Cleared by
  * deadline_set. */
 int deadline_step(void);
 
