@@ -9,7 +9,8 @@
 # writer for ever), a directory, a device (/dev/zero, read for 4 GB
 # before) -- as the scene, an #include and an #fopen: refused at once, with
 # status 3 and the position of the name; as an image_map's picture (a
-# FIFO hung the parse before) and to `hstrace compare`: refused at once,
+# FIFO hung the parse before), a text object's font (so did a FIFO) and
+# to `hstrace compare`: refused at once,
 # status 2; the images fuzzing found and the damaged ones of issue 20
 # (tests/hostile/images; make-bad-images.py there writes the latter),
 # which `hstrace compare` refuses with a message; and the budgets'
@@ -103,6 +104,16 @@ for target in $fifo folder.pov /dev/zero; do
     check_status "image_map { png \"$target\" }: status 2 within $limit s" "$status" 2
     check "image_map { png \"$target\" }: at the name ($(head -1 "$work/err"))" \
         says "^picture.pov:1:46: image_map: cannot read '[./]*$target': $why\$"
+    # FreeType's own open of a FIFO waited for a writer for ever.
+    printf 'text { ttf "%s" "a" 0.1, 0 }\n' "$target" >"$work/files/font.pov"
+    run font.pov
+    if says "built without FreeType"; then
+        skip "text { ttf \"$target\" }" "hstrace built without FreeType"
+    else
+        check_status "text { ttf \"$target\" }: status 2 within $limit s" "$status" 2
+        check "text { ttf \"$target\" }: at the name ($(head -1 "$work/err"))" \
+            says "^font.pov:1:12: cannot read the font file '[./]*$target': $why\$"
+    fi
     (cd "$work/files" && exec timeout -s KILL $limit "$hstrace" compare "$target" "$target") >/dev/null 2>"$work/err"
     status=$?
     check_status "hstrace compare $target $target: status 2 within $limit s" "$status" 2

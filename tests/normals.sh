@@ -114,6 +114,20 @@ bump_map { png "heights.png" bump_size 2 } scale 1.2 translate -0.6*x||0
 bump_map { png "heights.png" interpolate 2 bump_size -3 once } scale 1.5||0
 bump_map { jpeg "heights.jpg" gamma 2.2 bump_size 2 } scale 0.9||0
 NORMALS
+# A declared normal with a map, used as `normal { N }`: the same normals as
+# written in place (the map was dropped at the '}' after the name, and an
+# average refused: "Average must have map.").
+for normal in "gradient x normal_map { [0.3 bumps 0.8 scale 0.1] [0.7 dents 2 scale 0.2] } scale 0.7" \
+    "average normal_map { [1 bumps 0.7 scale 0.1] [2 ripples 0.5] }"; do
+    probe "$normal" "" >"$work/inline.pov"
+    probe "N" "" | sed "s|^camera|#declare N = normal { $normal }\\
+camera|" >"$work/declared.pov"
+    run inline.pov +W48 +H48 -o inline.png
+    run declared.pov +W48 +H48 -o declared.png
+    check "#declare N = normal { $normal } ... normal { N }: renders ($(head -n 1 "$work/err"))" exited 0
+    check "normal { N } of $normal: the same image as written in place" \
+        "$hstrace" compare "$work/inline.png" "$work/declared.png" --max-rmse 0 --max-share 0
+done
 
 # --- 2. a scene as exporters write it ------------------------------------------
 cat >"$work/scene.pov" <<'EOF'

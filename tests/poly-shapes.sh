@@ -64,8 +64,8 @@ quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0> }|expected
 poly { 1, <1, 2, 3, 4> }|Order of poly is out of range
 poly { 36, <1> }|Order of poly is out of range
 cubic { <1, 2, 3> }|expected a numeric expression, found '>'
-quartic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0> }|after the 35 coefficients of a quartic of order 4
-quartic { 1 }|'<' before the 35 coefficients of 'quartic'
+quartic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0> }|expected '>' after the 35 coefficients of a quartic of order 4, found ','
+quartic { 1 }|expected '<' before the 35 coefficients of 'quartic', found '1'
 superellipsoid { <0, 1> }|both must be positive
 superellipsoid { <1, 2, 3> }|UV vector expected
 lathe { quadratic_spline 2, <0, 0>, <1, 1> }|at least three points

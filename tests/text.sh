@@ -81,6 +81,14 @@ global_settings { charset latin1 }|ascii, utf8 or sys
 text { ttf "timrom.ttf" "\u0041" 1, 0 }|the escape \\u in a text string
 #declare S = lathe { 3, <0, 0>, <1, 1>, <0, 2> } #declare V = min_extent(S); sphere { V, 1 }|'min_extent' of this kind of object is not supported
 BAD
+# an empty text: POV-Ray's box of everything, +-1e10 (it was refused as
+# "an object other than text")
+printf '%s\n' '#declare T = text { internal 1 "" 0.1, 0 }' \
+    '#debug concat(vstr(3, min_extent(T), ",", 0, 0), " ", vstr(3, max_extent(T), ",", 0, 0), "\n")' \
+    'sphere { 0, 1 }' >"$work/empty-extent.pov"
+run "$work/empty-extent.pov" --width 8 --height 6 -o "$work/empty-extent.png"
+check "min_extent and max_extent of an empty text: POV-Ray's +-1e10 ($(grep -v warning "$work/err" | head -n 1))" \
+    test "$status $(grep -c '^-10000000000,-10000000000,-10000000000 10000000000,10000000000,10000000000$' "$work/err")" = "0 1"
 # a file that is no font
 printf 'not a font\n' >"$work/bogus.ttf"
 printf '%s\n' 'text { ttf "bogus.ttf" "A" 1, 0 }' >"$work/bogus.pov"

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ptr_map.h"
+
 Finish scene_default_finish(void)
 {
     Finish f;
@@ -114,8 +116,17 @@ Colour colour_map_at(const ColourMapEntry *map, int n, double value)
     return r;
 }
 
-int pigment_is_opaque(const Pigment *pig)
+/* pigment_is_opaque's walk, each pigment once (`seen`): a pigment may be
+ * an entry of many maps, and 40 averages of two copies of the one before
+ * are 41 pigments but 2^40 paths (the world's build walked them all).
+ * A pigment seen again was opaque, or the walk would have ended there.
+ * Returns 1 opaque, 0 not, -1 out of memory. */
+static int opaque_walk(const Pigment *pig, PtrMap *seen)
 {
+    if (ptr_map_get(seen, pig) >= 0)
+        return 1;
+    if (ptr_map_put(seen, pig, 1) != 0)
+        return -1;
     if (pig->kind == PIGMENT_IMAGE_MAP) { /* `once` shows nothing (clear) outside the picture */
         const SceneImage *im = pig->image;
         if (im->npalette > 0) { /* the entries' own filter and transmit are all there is */
@@ -129,12 +140,23 @@ int pigment_is_opaque(const Pigment *pig)
     if (pig->kind == PIGMENT_SOLID)
         return pig->colour.filter == 0.0 && pig->colour.transmit == 0.0;
     for (int i = 0; i < pig->nmap; i++)
-        if (pig->map[i].pigment && !pigment_is_opaque(pig->map[i].pigment))
-            return 0;
+        if (pig->map[i].pigment) {
+            const int r = opaque_walk(pig->map[i].pigment, seen);
+            if (r != 1)
+                return r;
+        }
     for (int i = 0; i < pig->nmap; i++)
         if (pig->map[i].colour.filter != 0.0 || pig->map[i].colour.transmit != 0.0)
             return 0;
     return 1;
+}
+
+int pigment_is_opaque(const Pigment *pig)
+{
+    PtrMap seen = PTR_MAP_EMPTY;
+    const int r = opaque_walk(pig, &seen);
+    ptr_map_free(&seen);
+    return r == 1; /* out of memory: not opaque, never wrong in what it shows (it only spares less work) */
 }
 
 /* The kinds of approximation (scene.h) by name and by what they change,

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "grammar.h"
+#include "ptr_map.h"
 
 /* Places seen so far, by kind and position (a hash set: scenes with a
  * million textured faces share a handful of notes, visited many times). */
@@ -20,6 +21,10 @@ typedef struct {
     SceneApproximation per_kind[APPROX_KINDS];
     int failed;
     int photons;          /* photon mapping would run: count the photons { } blocks */
+    /* Normals walked already: a normal may be an entry of many maps, and
+     * 40 averages of two copies of the one before are 41 normals but 2^40
+     * paths (walking them all hung the parse). */
+    PtrMap normals_seen;
 } Tally;
 
 static size_t note_hash(const ApproxNote *n)
@@ -92,8 +97,12 @@ static void tally_pigment(Tally *t, const Pigment *pig)
 
 static void tally_normal(Tally *t, const SceneNormal *n, int depth)
 {
-    if (!n || depth > 1000)
+    if (!n || depth > 1000 || t->failed || ptr_map_get(&t->normals_seen, n) >= 0)
         return;
+    if (ptr_map_put(&t->normals_seen, n, 1) != 0) {
+        t->failed = 1;
+        return;
+    }
     tally_notes(t, n->approx);
     tally_notes(t, n->pattern.approx);
     for (int i = 0; i < n->nmap; i++)
@@ -182,6 +191,7 @@ void gram_collect_approximations(Parser *p)
     if (t.photons)
         tally_notes(&t, p->gram->global_photons);
     free(t.slots);
+    ptr_map_free(&t.normals_seen);
     if (t.failed)
         tok_fail(p, p->last_pos, "out of memory");
     /* --strict for photons, counted only where the rest of the scene makes

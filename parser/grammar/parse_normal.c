@@ -190,8 +190,14 @@ static int normal_pattern(Parser *p, SceneNormal *n, const Token *at)
     case KW_bump_map: special = NORMAL_BUMP_MAP; break;
     default: break;
     }
-    n->nmap = 0;
-    n->map = NULL;
+    /* A new pattern drops the map of the normal it starts from; anything
+     * else (the ']' or '}' after a declared normal) keeps it: cleared for
+     * every token, `normal { N }` lost N's normal_map (a wrong image) and
+     * an average N was refused ("Average must have map."). */
+    if (special != NORMAL_NONE || (kw >= 0 && gram_pattern_support(kw) != PAT_NONE)) {
+        n->nmap = 0;
+        n->map = NULL;
+    }
     if (special != NORMAL_NONE) {
         n->kind = special;
         if (special == NORMAL_DENTS || special == NORMAL_WAVES || special == NORMAL_RIPPLES ||

@@ -22,16 +22,24 @@ SceneObject *gram_poly(Parser *p, const Token *kw, int order)
     }
     const int n = (order + 1) * (order + 2) * (order + 3) / 6;
     double *coeffs = tok_scene_alloc(p, sizeof *coeffs * (size_t)n);
+    /* The messages say what is due in full (tok_expect_punct's "'<' after
+     * ..." would read "expected '<' after '<' before ..."). */
     char msg[96];
-    snprintf(msg, sizeof msg, "'<' before the %d coefficients of '%s'", n, what);
-    tok_expect_punct(p, '<', msg);
+    Token *t = tok_next(p);
+    if (!tok_is_punct(t, '<')) {
+        snprintf(msg, sizeof msg, "'<' before the %d coefficients of '%s'", n, what);
+        tok_fail_expected(p, t, msg);
+    }
     for (int i = 0; i < n; i++) {
         if (i > 0)
             expr_comma(p);
         coeffs[i] = expr_float(p);
     }
-    snprintf(msg, sizeof msg, "'>' after the %d coefficients of a %s of order %d", n, what, order);
-    tok_expect_punct(p, '>', msg);
+    t = tok_next(p);
+    if (!tok_is_punct(t, '>')) {
+        snprintf(msg, sizeof msg, "'>' after the %d coefficients of a %s of order %d", n, what, order);
+        tok_fail_expected(p, t, msg);
+    }
     o->u.poly.order = order;
     o->u.poly.coeffs = coeffs;
     gram_object_mods(p, o, what);

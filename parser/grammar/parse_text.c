@@ -209,10 +209,11 @@ static void lay_out(Parser *p, SceneObject *text, TtfFont *font, const unsigned 
         last_index = index;
     }
     ttf_close(font);
-    if (box_min[0] > box_max[0] || box_min[1] > box_max[1] || box_min[2] > box_max[2])
-        return; /* no glyph: POV-Ray keeps its huge box, which hstrace does not report */
+    /* no glyph (an empty string): POV-Ray keeps the box of everything,
+     * which min_extent and max_extent report as +-1e10 (measured) */
+    const int empty = box_min[0] > box_max[0] || box_min[1] > box_max[1] || box_min[2] > box_max[2];
     for (int k = 0; k < 3; k++)
-        if (box_max[k] - box_min[k] > 1.0e6) /* CRITICAL_LENGTH: the box of everything */
+        if (empty || box_max[k] - box_min[k] > 1.0e6) /* CRITICAL_LENGTH: the box of everything */
             box_min[0] = box_min[1] = box_min[2] = -1.0e10, box_max[0] = box_max[1] = box_max[2] = 1.0e10;
     gram_extent_from_min_max(text, box_min, box_max);
 }

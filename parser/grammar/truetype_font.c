@@ -51,6 +51,11 @@ void ttf_kerning(const TtfFont *f, unsigned left, unsigned right, int *kx, int *
 
 #else
 
+#include <errno.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <ft2build.h>
 #include FT_FREETYPE_H
 #include FT_TRUETYPE_TABLES_H
@@ -252,6 +257,26 @@ static void choose_cmap(TtfFont *f, int charset)
         }
 }
 
+/* Why the font file at `path` is no regular file, or NULL when it is (or
+ * cannot be opened: FreeType then says so). FreeType's own open waits for
+ * ever on a FIFO for a writer; opened here with O_NONBLOCK, a FIFO is
+ * refused at once, as the scene's other files are. */
+static const char *irregular_file(const char *path)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        return NULL;
+    struct stat st;
+    const char *why = fstat(fd, &st) != 0    ? strerror(errno)
+                      : S_ISDIR(st.st_mode)  ? strerror(EISDIR)
+                      : S_ISFIFO(st.st_mode) ? "a FIFO, not a regular file"
+                      : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device, not a regular file"
+                      : !S_ISREG(st.st_mode) ? "not a regular file"
+                                             : NULL;
+    close(fd);
+    return why;
+}
+
 TtfFont *ttf_open(const char *path, int charset, char *err, size_t errlen)
 {
     TtfFont *f = calloc(1, sizeof *f);
@@ -262,6 +287,12 @@ TtfFont *ttf_open(const char *path, int charset, char *err, size_t errlen)
     if (FT_Init_FreeType(&f->lib)) {
         free(f);
         say(err, errlen, "cannot start FreeType");
+        return NULL;
+    }
+    const char *irregular = irregular_file(path);
+    if (irregular) {
+        say(err, errlen, "cannot read the font file '%s': %s", path, irregular);
+        ttf_close(f);
         return NULL;
     }
     /* a TrueType collection: its first font, as POV-Ray takes it */

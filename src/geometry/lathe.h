@@ -4,8 +4,9 @@
  * in the spline's parameter (degree 2, 4 or 6 for linear, quadratic and
  * cubic or Bezier splines), solved by POV-Ray's solver
  * (polynomial_solver.h; sturm where the scene asks). POV-Ray's bounding
- * cylinders per segment only spare it tests, so every segment is tested
- * here. */
+ * cylinders per segment only spare it tests: here too only the segments
+ * whose heights and radii the ray reaches are solved for, which finds the
+ * same crossings. */
 #ifndef HST_LATHE_H
 #define HST_LATHE_H
 

@@ -4,7 +4,9 @@
  * Along a ray each segment gives a cubic in the distance, solved by
  * POV-Ray's solver (polynomial_solver.h; sturm where the scene asks) and
  * kept within the segment's heights. POV-Ray's bounding cylinders per
- * segment only spare it tests, so every segment is tested here. */
+ * segment only spare it tests: here too only the segments whose heights
+ * and radii the ray reaches are solved for, which finds the same
+ * crossings. */
 #ifndef HST_SOR_H
 #define HST_SOR_H
 

@@ -20,11 +20,14 @@
 static const double PLANES[PLANE_COUNT][3] = { { 1, 1, 0 }, { 1, -1, 0 }, { 1, 0, 1 }, { 1, 0, -1 }, { 0, 1, 1 },
                                                { 0, 1, -1 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
 
-/* x^e, by multiplications for the whole powers up to 6 (power()). */
+/* x^e, by multiplications for the whole powers up to 6 (power()).
+ * POV-Ray converts e to an int first; here e is tested to lie in int's
+ * range before, since an exponent near 0 gives 1/e beyond it (C's
+ * undefined behaviour), and pow takes every power outside 0 to 6 anyway. */
 static double power(double x, double e)
 {
-    int i = (int)e;
-    if (e == (double)i) {
+    const int i = e >= 0.0 && e <= 6.0 ? (int)e : -1;
+    if (i >= 0 && e == (double)i) {
         double b = x;
         switch (i) {
         case 0: return 1.0;

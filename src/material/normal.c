@@ -14,6 +14,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "deadline.h"
 #include "noise.h"
 #include "normal.h"
 #include "patterns.h"
@@ -297,6 +298,11 @@ static Vec3 perturb(const NormalSetting *s, const SceneNormal *n, const Transfor
                     Vec3 uv, Vec3 normal)
 {
     if (!n || n->kind == NORMAL_NONE) /* a map's missing entry, or a pattern not evaluated */
+        return normal;
+    /* nested maps and averages may ask for 2^40 normals at one point:
+     * past --max-render-seconds each ends at once (the render is
+     * discarded) */
+    if (deadline_step())
         return normal;
     if (n->kind == NORMAL_UV) {
         /* the entry at the surface's (u, v, 0), the normal's own warps unused */

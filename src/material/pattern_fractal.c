@@ -5,7 +5,12 @@
  * as POV-Ray writes them, so that the last bits agree. */
 #include <math.h>
 
+#include "deadline.h"
 #include "patterns.h"
+
+/* The iterations between two looks at the thread's deadline (a mask:
+ * every 2^16, a few hundred microseconds). */
+#define DEADLINE_MASK 0xFFFF
 
 /* POV-Ray's fractal_exterior_color: after `iters` iterations, escaped at
  * (a, b). */
@@ -104,6 +109,9 @@ static double power_fractal(const Pigment *pig, double x, double y, double cr, d
             mindist2 = dist2;
         if (dist2 > 4.0)
             return exterior(pig, col, a, b);
+        /* max_iteration may be 2^31: past --max-render-seconds, stop */
+        if ((col & DEADLINE_MASK) == DEADLINE_MASK && deadline_passed())
+            break;
     }
     return interior(pig, a, b, mindist2);
 }
@@ -153,6 +161,8 @@ static double magnet_fractal(const Pigment *pig, int type2, int julia, double x,
         double am1 = a - 1;
         if (dist2 > 10000.0 || am1 * am1 + b2 < 1 / 10000.0)
             return exterior(pig, col, a, b);
+        if ((col & DEADLINE_MASK) == DEADLINE_MASK && deadline_passed())
+            break;
     }
     return interior(pig, a, b, mindist2);
 }

@@ -13,6 +13,7 @@
 #include <math.h>
 
 #include "convert.h"
+#include "deadline.h"
 #include "intersect.h"
 #include "noise.h"
 #include "normal.h"
@@ -286,6 +287,11 @@ static Colour average_colour(const Pigment *pig, Vec3 warped, int generator, int
  * the noise generator and wave sources of its scene where it names none. */
 static Colour pigment_colour(const Pigment *pig, Vec3 p, int generator, int nwaves)
 {
+    /* nested maps and averages may ask for 2^40 colours at one point:
+     * past --max-render-seconds each ends at once (its colour is of no
+     * use, the render is discarded) */
+    if (deadline_step())
+        return pig->colour;
     Vec3 q = inverse_transform_point(&pig->transform, p);
     switch (pig->kind) {
     case PIGMENT_SOLID: return pig->colour;

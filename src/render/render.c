@@ -10,6 +10,7 @@
 #include "aov.h"
 #include "camera.h"
 #include "clock.h"
+#include "deadline.h"
 #include "shade.h"
 
 #define TILE 16
@@ -235,6 +236,7 @@ static void *worker_main(void *arg)
     if (opt->aov)
         ctx.aov = &aov;
     ctx.deadline = job->deadline;
+    deadline_set(job->deadline); /* for the patterns whose one value may take hours */
     ctx.max_tree_rays = opt->max_tree_rays;
     double t0 = clock_thread_cpu();
     double last_report = 0.0;
@@ -289,6 +291,7 @@ static void *worker_main(void *arg)
     loop.shading = ctx.stats;
     loop.shadow = ctx.shadow.stats;
     wk->stats = loop;
+    deadline_set(0.0); /* this thread may be the caller's, working on after the render */
     aov_pixel_free(&aov);
     shadow_context_free(&ctx.shadow);
     tracer_free(&ctx.tracer);
