@@ -30,6 +30,11 @@
 #define FUZZ_INCLUDE_DIR "data/include"
 #endif
 
+/* Each render's time, as --max-render-seconds bounds it: a scene whose one
+ * colour takes hours (a fractal pattern of 2^31 iterations, averages of
+ * averages nested 40 deep: tests/hostile) stops there, as hstrace stops it. */
+#define FUZZ_RENDER_SECONDS 1.0
+
 static void render_tiny(const Scene *scene)
 {
     /* The world held to the parse's own memory budget, as hstrace holds it
@@ -78,6 +83,7 @@ static void render_tiny(const Scene *scene)
         prepared.nth = cost.nth;
         ropt.shadows = &prepared;
         ropt.max_tree_rays = RENDER_DEFAULT_MAX_TREE_RAYS; /* a tree of 2^256 rays ends, as in hstrace */
+        ropt.max_seconds = FUZZ_RENDER_SECONDS;
         ropt.bvh = &bvh;
         ropt.pixel_coherence = 1;
         Image img;
@@ -105,6 +111,7 @@ static void render_tiny(const Scene *scene)
         prepared.cost = &cost;
         ropt.shadows = &prepared;
         ropt.max_tree_rays = RENDER_DEFAULT_MAX_TREE_RAYS;
+        ropt.max_seconds = FUZZ_RENDER_SECONDS;
         ropt.bvh = &bvh;
         Image img;
         RenderStats stats;
