@@ -62,7 +62,9 @@ ini_key() {
 frame_of() {
     [ -f "$dir/$1.ini" ] || return 0
     first=$(ini_key "$1" Initial_Frame) last=$(ini_key "$1" Final_Frame) named=$(ini_key "$1" Input_File_Name)
-    case "$first$last" in '' | *[!0-9]*) return 0 ;; esac
+    for n in "$first" "$last"; do
+        case "$n" in '' | *[!0-9]*) return 0 ;; esac
+    done
     [ "$last" -gt "$first" ] || return 0
     [ -z "$named" ] || [ "$named" = "$1.pov" ] || return 0
     echo "$first"
