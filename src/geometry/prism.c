@@ -106,17 +106,9 @@ static void keep(const Shape *s, ShapeHit *hits, int *n, double d, double tmax, 
 {
     if (!(d > PRISM_DEPTH_TOLERANCE && d < POV_MAX_DISTANCE && d < tmax))
         return;
-    int at = *n;
-    if (at == s->max_hits) { /* full: the new crossing takes the farthest's place if nearer */
-        at = 0;
-        for (int i = 1; i < *n; i++)
-            if (hits[i].t > hits[at].t)
-                at = i;
-        if (!(d < hits[at].t))
-            return;
-    } else {
-        (*n)++;
-    }
+    int at = shape_hit_slot(s, hits, n, d);
+    if (at < 0)
+        return;
     hits[at].t = d;
     hits[at].part = part;
     hits[at].entering = (v3_dot(nrm, D) < 0.0) != (s->inverse != 0);

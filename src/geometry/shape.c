@@ -832,6 +832,17 @@ Vec3 shape_uv(const Shape *s, Vec3 p)
     }
     return v3(p.x, p.y, 0.0); /* POV-Ray's default UVCoord */
 }
+int shape_hit_slot(const Shape *s, ShapeHit *hits, int *n, double d)
+{
+    if (*n < s->max_hits)
+        return (*n)++;
+    int at = 0;
+    for (int i = 1; i < *n; i++)
+        if (hits[i].t > hits[at].t)
+            at = i;
+    return d < hits[at].t ? at : -1;
+}
+
 void shape_hits_sort(ShapeHit *hits, int n)
 {
     for (int i = 1; i < n; i++) /* insertion: a shape has a few crossings */

@@ -237,6 +237,11 @@ Vec3 shape_uv(const Shape *s, Vec3 p);
  * first); POV-Ray takes the nearest of its intersection stack. */
 void shape_hits_sort(ShapeHit *hits, int n);
 
+/* Where a crossing at distance d goes among the *n crossings in hits
+ * (room for s->max_hits): the next slot (*n grows), or, the list full, the
+ * farthest one's if d is nearer; -1 where it is not kept. */
+int shape_hit_slot(const Shape *s, ShapeHit *hits, int *n, double d);
+
 /* Does the ray come near s's bounds for some t in [0, tmax]? A
  * conservative rejection before the exact test. */
 int shape_box_hit(const Shape *s, Vec3 org, Vec3 dir, double tmax);
