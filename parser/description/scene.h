@@ -569,6 +569,11 @@ struct SceneObject {
             Vec3 *uvs;           /* uv_vectors (z = 0), for uv_mapping */
             MeshFace *faces;
             const SceneTexture **textures;
+            /* its triangles' points' box (min_extent's, before its
+             * transforms), worked out once when the mesh is closed, so
+             * that each copy of a declared mesh is not walked again */
+            int has_box;
+            Vec3 box_lo, box_hi;
         } mesh;
         struct {
             Vec3 corner1, corner2;

@@ -160,6 +160,9 @@ void gram_primitive_extent(SceneObject *o);
 SceneObject *gram_blob(Parser *p, const Token *kw);
 /* A 2-D vector (POV-Ray's Parse_UV_Vect: a float f stands for <f, f>). */
 void gram_uv_vector(Parser *p, double out[2]);
+/* The spline a lathe's or prism's keyword kw names: 1 and *kind set, or 0
+ * (kw names none). */
+int gram_spline_kind(int kw, SplineKind *kind);
 
 /* parse_camera.c */
 void gram_camera(Parser *p, const Token *t, SceneCamera *cam);

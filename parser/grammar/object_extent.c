@@ -237,17 +237,20 @@ void gram_primitive_extent(SceneObject *o)
     case OBJ_MESH: { /* Mesh::Compute_BBox: its triangles' points' box, then its transform */
         if (o->u.mesh.nfaces == 0)
             return;
-        double mins[3] = { BOUND_HUGE, BOUND_HUGE, BOUND_HUGE }, maxs[3] = { -BOUND_HUGE, -BOUND_HUGE, -BOUND_HUGE };
-        for (int f = 0; f < o->u.mesh.nfaces; f++)
-            for (int k = 0; k < 3; k++) {
-                Vec3 v = o->u.mesh.vertices[o->u.mesh.faces[f].v[k]];
-                const double c[3] = { v.x, v.y, v.z };
-                for (int i = 0; i < 3; i++) {
-                    mins[i] = c[i] < mins[i] ? c[i] : mins[i];
-                    maxs[i] = c[i] > maxs[i] ? c[i] : maxs[i];
+        if (!o->u.mesh.has_box) {
+            Vec3 lo = v3(BOUND_HUGE, BOUND_HUGE, BOUND_HUGE), hi = v3(-BOUND_HUGE, -BOUND_HUGE, -BOUND_HUGE);
+            for (int f = 0; f < o->u.mesh.nfaces; f++)
+                for (int k = 0; k < 3; k++) {
+                    Vec3 v = o->u.mesh.vertices[o->u.mesh.faces[f].v[k]];
+                    lo = v3_min(lo, v);
+                    hi = v3_max(hi, v);
                 }
-            }
-        gram_extent_from_min_max(o, mins, maxs);
+            o->u.mesh.box_lo = lo;
+            o->u.mesh.box_hi = hi;
+            o->u.mesh.has_box = 1;
+        }
+        const Vec3 lo = o->u.mesh.box_lo, hi = o->u.mesh.box_hi;
+        gram_extent_from_min_max(o, (const double[3]){ lo.x, lo.y, lo.z }, (const double[3]){ hi.x, hi.y, hi.z });
         gram_extent_transform(o, t);
         return;
     }

@@ -12,16 +12,7 @@ SceneObject *gram_lathe(Parser *p, const Token *kw)
     SceneObject *o = gram_new_object(p, OBJ_LATHE, kw);
     SplineKind spline = SPLINE_LINEAR;
     Token *t = tok_next(p);
-    int k = t->type == TK_WORD ? t->kw : -1;
-    if (k == KW_linear_spline)
-        spline = SPLINE_LINEAR;
-    else if (k == KW_quadratic_spline)
-        spline = SPLINE_QUADRATIC;
-    else if (k == KW_cubic_spline)
-        spline = SPLINE_CUBIC;
-    else if (k == KW_bezier_spline)
-        spline = SPLINE_BEZIER;
-    else
+    if (!gram_spline_kind(t->type == TK_WORD ? t->kw : -1, &spline))
         tok_unget(p);
     Token at = *tok_peek(p);
     double count = expr_float(p);
@@ -87,3 +78,15 @@ SceneObject *gram_lathe(Parser *p, const Token *kw)
     gram_object_mods(p, o, "lathe");
     return o;
 }
+
+int gram_spline_kind(int kw, SplineKind *kind)
+{
+    switch (kw) {
+    case KW_linear_spline: *kind = SPLINE_LINEAR; return 1;
+    case KW_quadratic_spline: *kind = SPLINE_QUADRATIC; return 1;
+    case KW_cubic_spline: *kind = SPLINE_CUBIC; return 1;
+    case KW_bezier_spline: *kind = SPLINE_BEZIER; return 1;
+    default: return 0;
+    }
+}
+

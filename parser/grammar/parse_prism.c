@@ -193,15 +193,9 @@ SceneObject *gram_prism(Parser *p, const Token *kw)
     for (;;) { /* in any order, the last of each kind counting */
         Token *t = tok_next(p);
         int k = t->type == TK_WORD ? t->kw : -1;
-        if (k == KW_linear_spline)
-            spline = SPLINE_LINEAR;
-        else if (k == KW_quadratic_spline)
-            spline = SPLINE_QUADRATIC;
-        else if (k == KW_cubic_spline)
-            spline = SPLINE_CUBIC;
-        else if (k == KW_bezier_spline)
-            spline = SPLINE_BEZIER;
-        else if (k == KW_linear_sweep)
+        if (gram_spline_kind(k, &spline))
+            continue;
+        if (k == KW_linear_sweep)
             o->u.prism.sweep = PRISM_LINEAR_SWEEP;
         else if (k == KW_conic_sweep)
             o->u.prism.sweep = PRISM_CONIC_SWEEP;
