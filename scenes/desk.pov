@@ -45,8 +45,9 @@ polygon { 5, <-0.65, -0.45>, <0.65, -0.45>, <0.65, 0.45>, <-0.65, 0.45>, <-0.65,
 polygon { 4, <-0.65, -0.45>, <0.65, -0.45>, <-0.05, 0.25>, <-0.65, -0.45>
   pigment { color rgb <0.30, 0.50, 0.25> }
   translate <-1.1, 3.95, 2.93> }
-// the frame stands off the wall on four small blocks
-#declare Standoff = box { <-0.05, -0.05, 0>, <0.05, 0.05, 0.10> texture { DarkWood } }
+// the frame stands off the wall on four small blocks, their fronts just
+// behind the frame's back (faces in one plane would be coincident surfaces)
+#declare Standoff = box { <-0.05, -0.05, 0.001>, <0.05, 0.05, 0.10> texture { DarkWood } }
 object { Standoff translate <-1.82, 3.43, 2.90> }
 object { Standoff translate <-1.82, 4.47, 2.90> }
 object { Standoff translate <-0.38, 3.43, 2.90> }

@@ -195,6 +195,20 @@ static inline void take_nearer(Hit *hit, double *best, uint32_t pi, int instance
     }
 }
 
+/* Polygon pi's hit at t, about to be offered to take_nearer, against the
+ * nearest so far: at exactly its distance it is a coincident surface
+ * (trace_coincident_material), and the one of the two take_nearer will not
+ * keep (the higher index) is remembered with the distance. */
+static inline void note_tie(Tracer *tr, const Hit *hit, double best, uint32_t pi, int instance, double t)
+{
+    if (hit->kind != HIT_POLYGON || t != best || (int)pi == hit->index)
+        return;
+    int keeps_new = (int)pi < hit->index;
+    tr->tie_t = t;
+    tr->tie_index = keeps_new ? hit->index : (int)pi;
+    tr->tie_instance = keeps_new ? hit->instance : instance;
+}
+
 /* The farthest distance a polygon test may still report: below the best so
  * far, or at it (for a tie), and before the plane (which wins ties). */
 static inline double test_limit(const Hit *hit, double best, double plane_t)
@@ -212,8 +226,10 @@ static inline void try_nearer(Tracer *tr, const RayFrame *frame, uint32_t pi, do
         return;
     tr->stats.polygon_tests++;
     double t = intersect_polygon_in(w, &w->polygons[pi], frame, test_limit(hit, *best, plane_t));
-    if (t > tmin)
+    if (t > tmin) {
+        note_tie(tr, hit, *best, pi, -1, t);
         take_nearer(hit, best, pi, -1, t);
+    }
 }
 
 /* The exact test of the polygon a leaf item holds (bvh.h): on its packed
@@ -233,8 +249,10 @@ static inline void try_nearer_prim(Tracer *tr, const Bvh *b, const RayFrame *fra
         return;
     tr->stats.polygon_tests++;
     double t = prim_test(tr->world, b, k, id, frame, test_limit(hit, *best, plane_t));
-    if (t > tmin)
+    if (t > tmin) {
+        note_tie(tr, hit, *best, id, instance, t);
         take_nearer(hit, best, id, instance, t);
+    }
 }
 
 /* Whether an instance's polygon pi (in World.polygons) is hidden from the
@@ -403,6 +421,7 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
     double tmin = trace_min_distance(org);
     hit->kind = HIT_NONE;
     hit->instance = -1;
+    tr->tie_t = -1.0;
 
     /* Planes first: they bound the polygon query, and on an exact tie (a
      * box resting on a plane) the plane wins, as it does in POV-Ray, whose
@@ -526,4 +545,14 @@ int trace_instance_hits(Tracer *tr, int instance, Vec3 org, Vec3 dir, double tmi
         return segment_hits_in_bvh_avx2(tr, b, in, lorg, ldir, NULL, tmin, tmax, exclude, hide, visit, user, tests);
 #endif
     return segment_hits_in_bvh_sse2(tr, b, in, lorg, ldir, NULL, tmin, tmax, exclude, hide, visit, user, tests);
+}
+
+int trace_coincident_material(const Tracer *t, const Hit *hit)
+{
+    if (hit->kind != HIT_POLYGON || t->tie_t != hit->t)
+        return -1;
+    int other = world_polygon_material_hinted(t->world, t->tie_index, t->tie_instance);
+    int mine = hit_material(t->world, hit);
+    const Material *m = t->world->materials;
+    return other != mine && !materials_look_alike(&m[other], &m[mine]) ? other : -1;
 }

@@ -60,6 +60,11 @@ typedef struct {
      * handed (an index in World.instances), -1 for a world polygon: a hint
      * for world_polygon_hinted. */
     int visiting;
+    /* The last trace_nearest's tie: a polygon met at exactly tie_t besides
+     * the one kept (the lower index), by its id and instance (-1: a world
+     * polygon); tie_t < 0: none (trace_coincident_material). */
+    double tie_t;
+    int tie_index, tie_instance;
     /* trace_point_touches_other's answer for the last point asked about. */
     int touch_valid, touch_kind, touch_index, touch_result;
     Vec3 touch_point;
@@ -148,6 +153,15 @@ static inline int hit_material(const World *w, const Hit *h)
          : h->kind == HIT_SHAPE   ? w->shapes[h->index].material
                                   : w->planes[h->index].material;
 }
+
+/* Coincident surfaces: where the polygon hit, found by the last
+ * trace_nearest, lies at exactly the distance of another polygon of a
+ * different material, that material (an index in World.materials), else
+ * -1. hstrace keeps the polygon of the lower index, which is the object
+ * declared first; POV-Ray keeps whichever its bounding hierarchy meets
+ * first, which varies from pixel to pixel (the speckles of coincident
+ * surfaces), so such hits are counted and reported, not matched. */
+int trace_coincident_material(const Tracer *t, const Hit *hit);
 
 /* The surface a hit lies on as the material code names it (pigment.h's
  * surface ids): a polygon's id, -1 for a plane, a shape's id. */

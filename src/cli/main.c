@@ -458,6 +458,27 @@ static int render(Frame *f, const Options *o, int distributed)
     return EXIT_OK;
 }
 
+/* Coincident surfaces the camera saw (trace_coincident_material): where
+ * two objects' surfaces of different materials lie at one distance, the
+ * image is hstrace's rule (the object declared first), not POV-Ray's
+ * (whichever its bounding hierarchy meets first, often a speckle of both).
+ * Said like the approximations, at the first object of the least pair. */
+static void warn_coincident(const Frame *f, const Options *o)
+{
+    const RenderStats *s = &f->report.render;
+    uint64_t n = s->shading.coincident_hits, pair = s->coincident_pair;
+    if (n == 0 || pair == 0)
+        return;
+    const Material *a = &f->world.materials[(pair >> 32) - 1], *b = &f->world.materials[(pair & 0xffffffffu) - 1];
+    const char *where = a->pos.file ? a->pos.file : o->scene;
+    fprintf(stderr,
+            "%s:%d:%d: warning: %llu camera ray%s met coincident surfaces of two objects, this one and %s:%d:%d "
+            "(among others); hstrace shows the object declared first, POV-Ray whichever it meets first (a speckle of "
+            "both where their textures differ)\n",
+            where, a->pos.line, a->pos.column, (unsigned long long)n, n == 1 ? "" : "s",
+            b->pos.file ? b->pos.file : where, b->pos.line, b->pos.column);
+}
+
 /* The image into `output`, with the EXR header's provenance. */
 static int write_image(Frame *f, int argc, char **argv, const Options *o, const ParseAnimation *anim,
                        const char *output, double wall0)
@@ -565,6 +586,8 @@ static int render_frame(int argc, char **argv, const Options *o, const ParseAnim
         status = set_render_options(&f, o, distributed, stats_json);
     if (status == EXIT_OK)
         status = render(&f, o, distributed);
+    if (status == EXIT_OK && f.writes && o->warning_console)
+        warn_coincident(&f, o);
     if (status == EXIT_OK && f.writes)
         status = write_image(&f, argc, argv, o, anim, output, wall0);
     if (status == EXIT_OK && f.writes)

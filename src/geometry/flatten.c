@@ -284,6 +284,7 @@ static int add_material(Builder *b, const Inherited *in, const SceneTexture *tex
     m->double_illuminate = in->double_illuminate;
     m->hollow = in->hollow;
     m->pos = pos;
+    m->texture = tex;
     if (memo) {
         memo->index = w->nmaterials;
         memo->tex = tex;

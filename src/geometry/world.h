@@ -5,6 +5,8 @@
 #ifndef HST_WORLD_H
 #define HST_WORLD_H
 
+#include <string.h>
+
 #include "scene.h"
 #include "shape.h"
 #include "vecmath.h"
@@ -82,7 +84,21 @@ typedef struct {
     int no_shadow, no_image, no_reflection, double_illuminate;
     int hollow;           /* fog goes on inside it (POV-Ray's hollow) */
     SourcePos pos;        /* the object, for messages */
+    /* The scene's texture it was made from: two materials of one texture
+     * placed alike (pattern_to_world, normal_to_world) show the same
+     * surface (materials_look_alike) */
+    const SceneTexture *texture;
 } Material;
+
+/* Whether two materials show the same surface: made from one texture of
+ * the scene, its patterns placed alike, the same layers below and inside
+ * (for telling coincident surfaces that differ from those that do not). */
+static inline int materials_look_alike(const Material *a, const Material *b)
+{
+    return a->texture == b->texture && a->below == b->below && a->inside == b->inside &&
+           memcmp(&a->pattern_to_world, &b->pattern_to_world, sizeof a->pattern_to_world) == 0 &&
+           memcmp(&a->normal_to_world, &b->normal_to_world, sizeof a->normal_to_world) == 0;
+}
 
 /* One planar polygon: a triangle, or POV-Ray polygon outlines (holes by the
  * even-odd rule). Points live in World.points. */

@@ -289,6 +289,7 @@ static void *worker_main(void *arg)
     loop.render_seconds = clock_thread_cpu() - t0;
     loop.rays = ctx.tracer.stats;
     loop.shading = ctx.stats;
+    loop.coincident_pair = ctx.coincident_pair;
     loop.shadow = ctx.shadow.stats;
     wk->stats = loop;
     deadline_set(0.0); /* this thread may be the caller's, working on after the render */

@@ -23,6 +23,8 @@ void stats_add(RenderStats *t, const RenderStats *p)
     shade_counters_add(&t->shading, &p->shading);
     shadow_counters_add(&t->shadow, &p->shadow);
     t->render_seconds += p->render_seconds;
+    if (p->coincident_pair != 0 && (t->coincident_pair == 0 || p->coincident_pair < t->coincident_pair))
+        t->coincident_pair = p->coincident_pair;
 }
 
 /* The render's counters, one row each, from the rooms' own lists

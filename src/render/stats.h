@@ -17,6 +17,9 @@ typedef struct {
     ShadeCounters shading;        /* secondary rays (shade.h) */
     ShadowCounters shadow;        /* shadow testing (shadow.h) */
     double render_seconds;        /* thread CPU time in the render loop */
+    /* Two coincident materials camera rays met (ShadeContext.coincident_pair):
+     * (a + 1) << 32 | (b + 1), a < b, the least over threads and ranks; 0: none */
+    uint64_t coincident_pair;
 } RenderStats;
 
 void stats_add(RenderStats *total, const RenderStats *part);

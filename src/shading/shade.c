@@ -654,6 +654,23 @@ void shade_trace(ShadeContext *ctx, const Ray *ray, double weight, int level, Ra
     trace_ray(ctx, ray, weight, level, 0, out);
 }
 
+/* A camera ray's hit on one of two coincident surfaces of different
+ * materials (trace_coincident_material): counted, and the pair of least
+ * materials kept, so that the report names the same objects for any
+ * number of threads. */
+static void note_coincident(ShadeContext *ctx, const Hit *hit)
+{
+    int other = trace_coincident_material(&ctx->tracer, hit);
+    if (other < 0)
+        return;
+    int mine = hit_material(ctx->tracer.world, hit);
+    uint64_t a = (uint64_t)(mine < other ? mine : other), b = (uint64_t)(mine < other ? other : mine);
+    uint64_t key = (a + 1) << 32 | (b + 1);
+    ctx->stats.coincident_hits++;
+    if (ctx->coincident_pair == 0 || key < ctx->coincident_pair)
+        ctx->coincident_pair = key;
+}
+
 /* POV-Ray's TraceRay: `level` is the trace level so far; a continued
  * (transmitted, same-ior) ray does not start a new level. */
 static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int level, int continued, Radiance *out)
@@ -678,6 +695,8 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
     ctx->tracer.hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);
     int found = trace_nearest(&ctx->tracer, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);
     ctx->tracer.hide = 0;
+    if (found && ctx->depth == 0)
+        note_coincident(ctx, &hit);
     if (!found) {
         background(w, ray, out);
         if (ctx->quality.volume && w->nfogs && in_atmosphere(&ray->inside))

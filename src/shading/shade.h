@@ -69,6 +69,9 @@ typedef struct {
     int camera_inside_known;
     Vec3 camera_inside_at;
     InteriorList camera_inside;
+    /* Of the camera rays' coincident surfaces (stats.coincident_hits), the
+     * pair of materials of the least key ((a + 1) << 32 | (b + 1), a < b), 0: none. */
+    uint64_t coincident_pair;
 } ShadeContext;
 
 #define SHADE_CLOCK_RAYS 1024
