@@ -5,7 +5,8 @@
 # finish and a normal per layer, shadows through filtering and transmitting
 # layers, a POV-Ray 3.6 scene with an object moved between its layers;
 # interior textures on shapes and boxes, a mirrored one, seen through gaps
-# in the outer texture and filtering shadows), each rendered by hstrace
+# in the outer texture and filtering shadows; tiles, POV-Ray's checker of
+# two textures), each rendered by hstrace
 # and by POV-Ray 3.7 (+Q9 for the image, +Q3 and +Q4 for the shadow mask)
 # and compared by `hstrace compare` against the limits measured for each;
 # then every exact shadow method on each scene with --verify-shadows: not
@@ -14,7 +15,9 @@
 # POV-Ray shades it, not approximated), while a layered texture_map entry,
 # still blended into one pigment, is refused by --strict; a texture_map as
 # a layer, an interior texture on a surface whose inside hstrace cannot
-# tell, and one without an outer texture are refused at FILE:LINE:COLUMN.
+# tell, one without an outer texture, and tiles without a tile's texture
+# (POV-Ray stops with a segmentation fault on a missing tile2 texture) are
+# refused at FILE:LINE:COLUMN.
 #
 # Environment: top_srcdir, top_builddir (default .), POVRAY (path or name of
 # povray; may be empty: the comparisons with POV-Ray are skipped).
@@ -30,7 +33,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="layers-transparent layers-finishes layers-normals layers-shadow layers-legacy interior-texture interior-texture-placed"
+scenes="layers-transparent layers-finishes layers-normals layers-shadow layers-legacy interior-texture interior-texture-placed tiles"
 for s in $scenes; do
     cp "$srcdir/tests/layered-textures/$s.pov" "$work/$s.pov" || bail "cannot copy tests/layered-textures/$s.pov"
 done
@@ -52,6 +55,7 @@ interior-texture     7e-4   (3.6e-4)     2 (1)     1 (0)
 # shadow ray from inside the box leaves it by an edge, lit in one render
 # and not in the other (none with an interior texture that takes no light)
 interior-texture-placed 3.6e-3 (1.8e-3)  12 (6)    1 (0)
+tiles                1e-4   (1.2e-6)     0 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each
 povray_scenes_check "$limits" tests/layered-textures.sh $scenes
@@ -89,5 +93,9 @@ sphere { 0, 1 texture { pigment { rgbt 0.5 } } texture { checker texture { pigme
 sphere { 0, 1 texture { pigment { rgbt 0.5 } } texture { pigment { rgbt } } }|expected
 mesh { triangle { 0, x, y } texture { pigment { rgb 1 } } interior_texture { pigment { rgb 1 } } }|'interior_texture' on a 'mesh' is not supported
 sphere { 0, 1 interior_texture { pigment { rgb 1 } } }|Interior texture requires an exterior texture
+sphere { 0, 1 texture { tiles { tile2 texture { pigment { rgb 1 } } } } }|First texture missing from tiles
+sphere { 0, 1 texture { tiles { texture { pigment { rgb 1 } } tile2 } } }|Second texture missing from tiles
+sphere { 0, 1 texture { tiles { texture { pigment { rgb 1 } } } } }|expected texture or tile2 in 'tiles'
+sphere { 0, 1 texture { pigment { rgb 1 } tiles { texture { pigment { rgb 1 } } tile2 texture { pigment { rgb 0 } } } } }|tiles must come first in its texture
 BAD
 tap_end

@@ -1572,6 +1572,47 @@ static void parse_patterned_texture(Parser *p, SceneTexture *tex, const Token *a
         tok_fail(p, at->pos, "Patterned texture must have texture_map.");
 }
 
+/* tiles { texture { } ... tile2 texture { } ... } after 'tiles' (`at`), as
+ * POV-Ray's Parse_Tiles: a checker texture whose first tile's textures
+ * (layered, the last on top) are the map's entry 1 and the second tile's
+ * its entry 0 ("to keep compatible with old tiles"). A tile without a
+ * texture is refused: POV-Ray refuses the first, and stops with a
+ * segmentation fault on the second. */
+static void parse_tiles(Parser *p, SceneTexture *tex, const Token *at)
+{
+    tok_begin_block(p, "tiles");
+    tok_nesting_enter(p, at);
+    Pigment *pig = &tex->pigment;
+    const ApproxNote *notes = pig->approx;
+    memset(pig, 0, sizeof *pig);
+    pig->kind = PIGMENT_SOLID;
+    pig->approx = notes;
+    transform_identity(&pig->transform);
+    tex->normal = NULL; /* its textures have the normals */
+    gram_start_pattern(p, pig, KW_checker);
+    SceneTexture *tile[2] = { NULL, NULL }; /* the first tile, then tile2 */
+    for (int k = 0; k < 2; k++) {
+        if (k == 1) {
+            Token *t = tok_next(p);
+            if (!tok_is_kw(t, KW_tile2))
+                tok_fail_expected(p, t, "texture or tile2 in 'tiles'");
+        }
+        while (tok_is_kw(tok_peek(p), KW_texture)) {
+            Token here = *tok_next(p);
+            SceneTexture *layer = gram_texture(p);
+            tile[k] = tile[k] ? gram_layer_textures(p, layer, tile[k], &here) : layer;
+        }
+        if (!tile[k])
+            tok_fail(p, p->tok.pos, k == 0 ? "First texture missing from tiles" : "Second texture missing from tiles");
+    }
+    Token *end = tok_next(p);
+    if (!tok_is_punct(end, '}'))
+        tok_fail_expected(p, end, "texture or '}' after tile2 in 'tiles'");
+    tok_nesting_leave(p);
+    TextureMapEntry e[2] = { { .value = 0.0, .texture = tile[1] }, { .value = 1.0, .texture = tile[0] } };
+    set_texture_map(p, tex, e, 2, at);
+}
+
 /* material_map { [type] "file" [gamma G] [premultiplied B] once
  * interpolate map_type texture { } ... } after 'material_map' (`at`), as
  * POV-Ray's Parse_Material_Map: the picture (read as data, not gamma
@@ -1725,6 +1766,12 @@ static void texture_items(Parser *p, SceneTexture *tex, int close)
                 tok_fail(p, here.pos, "material_map must come first in its texture (only transforms may follow "
                                         "it)");
             parse_material_map(p, tex, &here);
+            texture_map_transforms(p, tex, close, &here);
+            return;
+        case KW_tiles:
+            if (!first)
+                tok_fail(p, here.pos, "tiles must come first in its texture (only transforms may follow it)");
+            parse_tiles(p, tex, &here);
             texture_map_transforms(p, tex, close, &here);
             return;
         default:
