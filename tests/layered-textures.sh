@@ -5,7 +5,8 @@
 # finish and a normal per layer, shadows through filtering and transmitting
 # layers, a POV-Ray 3.6 scene with an object moved between its layers;
 # interior textures on shapes and boxes, a mirrored one, seen through gaps
-# in the outer texture and filtering shadows; tiles, POV-Ray's checker of
+# in the outer texture and filtering shadows, on prisms, lathes, sors and
+# superellipsoids cut open; tiles, POV-Ray's checker of
 # two textures), each rendered by hstrace
 # and by POV-Ray 3.7 (+Q9 for the image, +Q3 and +Q4 for the shadow mask)
 # and compared by `hstrace compare` against the limits measured for each;
@@ -33,7 +34,7 @@ run() { # runs hstrace, keeps stderr in $work/err and the status in $status
     "$hstrace" "$@" --threads 1 >"$work/out" 2>"$work/err"; status=$?
 }
 
-scenes="layers-transparent layers-finishes layers-normals layers-shadow layers-legacy interior-texture interior-texture-placed tiles"
+scenes="layers-transparent layers-finishes layers-normals layers-shadow layers-legacy interior-texture interior-texture-placed interior-texture-swept interior-texture-prism-below tiles"
 for s in $scenes; do
     cp "$srcdir/tests/layered-textures/$s.pov" "$work/$s.pov" || bail "cannot copy tests/layered-textures/$s.pov"
 done
@@ -55,6 +56,11 @@ interior-texture     7e-4   (3.6e-4)     2 (1)     1 (0)
 # shadow ray from inside the box leaves it by an edge, lit in one render
 # and not in the other (none with an interior texture that takes no light)
 interior-texture-placed 3.6e-3 (1.8e-3)  12 (6)    1 (0)
+# interior-texture-swept: one pixel (100, 150) off, and one at a shadow edge
+interior-texture-swept 1e-3 (4.8e-4)     2 (1)     2 (1)
+# interior-texture-prism-below: a row of pixels along the far edges of the bases,
+# where a cap and a side meet, shows the texture of the other surface
+interior-texture-prism-below 5e-3 (4.4e-3) 80 (74)  1 (0)
 tiles                1e-4   (1.2e-6)     0 (0)     1 (0)
 '
 # shellcheck disable=SC2086 # the scene names, one word each

@@ -177,7 +177,8 @@ static void apply_texture(Parser *p, SceneObject *o, SceneTexture *tex, const To
 static const SceneObject *no_inside_known(const SceneObject *o, int depth)
 {
     switch (o->kind) {
-    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE:
+    case OBJ_SPHERE: case OBJ_DISC: case OBJ_CONE: case OBJ_TORUS: case OBJ_BOX: case OBJ_PLANE: case OBJ_PRISM:
+    case OBJ_LATHE: case OBJ_SOR: case OBJ_SUPERELLIPSOID:
         return NULL;
     case OBJ_UNION: case OBJ_INTERSECTION: case OBJ_DIFFERENCE: case OBJ_MERGE:
         for (int i = 0; i < o->u.csg.nchildren && depth < MAX_NESTING; i++) {
