@@ -1,6 +1,7 @@
 #!/bin/sh
 # Coincident surfaces (trace_coincident_material), in TAP: two boxes whose
-# tops lie in one plane where they overlap. hstrace shows the object
+# tops lie in one plane where they overlap; a cylinder standing on a plane,
+# seen from below and, made of glass, through its top. hstrace shows the object
 # declared first there, in every pixel, and says on standard error that
 # the image cannot be POV-Ray's (FILE:LINE:COLUMN of both objects, the
 # camera rays counted as in --stats-json); POV-Ray's own render of the
@@ -29,9 +30,11 @@ render() {
         >/dev/null 2>"$1-$2.err")
 }
 
-# coincident NAME: the JSON's count of camera rays on coincident surfaces
+# coincident NAME [KEY]: the JSON's count of camera rays (or KEY's rays) on
+# coincident surfaces
 coincident() {
-    python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["rays"]["coincident"])' "$work/$1.json"
+    python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["rays"][sys.argv[2]])' "$work/$1.json" \
+        "${2:-coincident}"
 }
 
 # The PPM images' pixels, by tests/coincident/pixels.py:
@@ -45,7 +48,7 @@ pixels() { python3 "$srcdir/tests/coincident/pixels.py" "$@"; }
 starts() { case "$1" in "$2"*) return 0 ;; *) return 1 ;; esac; }
 
 for t in 1 2; do
-    for s in red-first blue-first one-texture apart; do
+    for s in red-first blue-first one-texture apart cylinder-below glass-on-plane; do
         render "$s" "$t"
         check_status "$s.pov renders on $t thread(s)" $? 0
     done
@@ -55,12 +58,12 @@ done
 warning=$(head -n 1 "$work/red-first-1.err")
 n=$(coincident red-first-1)
 check "red-first.pov: a warning at the first box, naming the second, counting the rays --stats-json counts ($warning)" \
-    starts "$warning" "red-first.pov:5:1: warning: $n camera rays met coincident surfaces of two objects, this one and red-first.pov:6:1 "
+    starts "$warning" "red-first.pov:5:1: warning: $n camera rays and 0 others met coincident surfaces of two objects, this one and red-first.pov:6:1 "
 check "red-first.pov: the same warning on 2 threads" [ "$warning" = "$(head -n 1 "$work/red-first-2.err")" ]
 check "red-first.pov: the same image on 2 threads" cmp -s "$work/red-first-1.ppm" "$work/red-first-2.ppm"
 warning=$(head -n 1 "$work/blue-first-1.err")
 check "blue-first.pov: the warning at the box declared first ($warning)" \
-    starts "$warning" "blue-first.pov:4:1: warning: $(coincident blue-first-1) camera rays met coincident surfaces of two objects, this one and blue-first.pov:5:1 "
+    starts "$warning" "blue-first.pov:4:1: warning: $(coincident blue-first-1) camera rays and 0 others met coincident surfaces of two objects, this one and blue-first.pov:5:1 "
 
 # The region: where the two orders' images differ. Each shows its first box
 # there, in every pixel; one camera ray a pixel, each counted.
@@ -71,6 +74,22 @@ check "red-first.pov shows the red box in every pixel of it ($2 of $1)" same_cou
 check "blue-first.pov shows the blue box in every pixel of it ($5 of $1)" same_count "$5" "$1"
 check "red-first.pov counts a camera ray per pixel of it ($n)" same_count "$n" "$1"
 overlap=$1
+
+# A curved object's surface in a plane: within 1e-9 of it, whichever the
+# arithmetic puts nearer is shown. Seen by the camera (a base from below),
+# and by the rays refracted into a glass standing on the plane.
+warning=$(head -n 1 "$work/cylinder-below-1.err")
+n=$(coincident cylinder-below-1)
+check "cylinder-below.pov: a warning at the plane, naming the cylinder, counting the camera rays ($warning)" \
+    starts "$warning" "cylinder-below.pov:6:1: warning: $n camera rays and 0 others met coincident surfaces of two objects, this one and cylinder-below.pov:7:1 "
+check "cylinder-below.pov: some camera rays counted ($n)" [ "$n" -gt 0 ]
+check "cylinder-below.pov: the same image on 2 threads" cmp -s "$work/cylinder-below-1.ppm" "$work/cylinder-below-2.ppm"
+warning=$(head -n 1 "$work/glass-on-plane-1.err")
+m=$(coincident glass-on-plane-1 coincident_secondary)
+check "glass-on-plane.pov: a warning counting the refracted rays, none of the camera's ($warning)" \
+    starts "$warning" "glass-on-plane.pov:5:1: warning: 0 camera rays and $m others met coincident surfaces of two objects, this one and glass-on-plane.pov:6:1 "
+check "glass-on-plane.pov: some refracted rays counted ($m)" [ "$m" -gt 0 ]
+check "glass-on-plane.pov: the same image on 2 threads" cmp -s "$work/glass-on-plane-1.ppm" "$work/glass-on-plane-2.ppm"
 
 for s in one-texture apart; do
     check "$s.pov: no warning ($(head -n 1 "$work/$s-1.err"))" [ ! -s "$work/$s-1.err" ]

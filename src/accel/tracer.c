@@ -205,8 +205,8 @@ static inline void note_tie(Tracer *tr, const Hit *hit, double best, uint32_t pi
         return;
     int keeps_new = (int)pi < hit->index;
     tr->tie_t = t;
-    tr->tie_index = keeps_new ? hit->index : (int)pi;
-    tr->tie_instance = keeps_new ? hit->instance : instance;
+    tr->tie_material = keeps_new ? world_polygon_material_hinted(tr->world, hit->index, hit->instance)
+                                 : world_polygon_material_hinted(tr->world, (int)pi, instance);
 }
 
 /* The farthest distance a polygon test may still report: below the best so
@@ -387,7 +387,36 @@ typedef struct {
     double best;
     int shape, part;
     int surface;          /* the primitive met: `shape`, or a part of it (a CSG object's) */
+    int plane;            /* the nearest plane, which `best` starts at (-1: none) */
 } NearestShape;
+
+/* Two surfaces this near along a ray (relatively) are one surface to the
+ * eye, and which of them a renderer shows there is its rounding's choice:
+ * coincident surfaces (trace_coincident_material). */
+#define COINCIDENT_WINDOW 1e-9
+
+/* The material of the surface nearest so far in a shapes walk. */
+static int nearest_shape_material(const NearestShape *ns)
+{
+    const World *w = ns->tr->world;
+    return ns->shape >= 0 ? w->shapes[ns->surface].material : ns->plane >= 0 ? w->planes[ns->plane].material : -1;
+}
+
+/* Shape surface `surface` met at t in a shapes walk, beside the nearest so
+ * far (before it is taken, if it is): within COINCIDENT_WINDOW of it, the
+ * two are coincident, the one not kept remembered with its distance. */
+static void note_shape_tie(NearestShape *ns, int surface, double t, int taken)
+{
+    if (ns->shape < 0 && ns->plane < 0)
+        return;
+    if (!(fabs(t - ns->best) <= COINCIDENT_WINDOW * ns->best))
+        return;
+    const World *w = ns->tr->world;
+    if (ns->shape >= 0 && ns->surface == surface)
+        return;
+    ns->tr->tie_t = taken ? ns->best : t;
+    ns->tr->tie_material = taken ? nearest_shape_material(ns) : w->shapes[surface].material;
+}
 
 /* boxed: the walk has just met the shape's own box (bvh.h), a cull the
  * hierarchy already trusts to keep every crossing: shape_box_hit, the same
@@ -400,16 +429,24 @@ static int nearer_shape(void *user, int i, int boxed, double *tmax)
     NearestShape *ns = user;
     const Shape *s = &ns->tr->world->shapes[i];
     double limit = ns->shape >= 0 && i < ns->shape ? nextafter(ns->best, HUGE_VAL) : ns->best;
-    if (!boxed && !shape_box_hit(s, ns->org, ns->dir, limit))
+    /* looked at a little beyond the nearest so far, for the coincident
+     * surfaces there; kept only within the limit, as before */
+    double window = limit < HUGE_VAL ? limit * (1.0 + COINCIDENT_WINDOW) : limit;
+    if (!boxed && !shape_box_hit(s, ns->org, ns->dir, window))
         return 0;
     ns->tr->stats.shape_tests++;
     ShapeHit h;
-    double t = shape_nearest(s, ns->org, ns->dir, limit, &h);
-    if (t > 0.0 && (t < ns->best || i < ns->shape)) {
+    double t = shape_nearest(s, ns->org, ns->dir, window, &h);
+    if (!(t > 0.0))
+        return 0;
+    int surface = h.leaf ? (int)(h.leaf - ns->tr->world->shapes) : i;
+    int taken = t < limit && (t < ns->best || i < ns->shape);
+    note_shape_tie(ns, surface, t, taken);
+    if (taken) {
         ns->best = t;
         ns->shape = i;
         ns->part = h.part;
-        ns->surface = h.leaf ? (int)(h.leaf - ns->tr->world->shapes) : i;
+        ns->surface = surface;
         *tmax = t;
     }
     return 0;
@@ -443,7 +480,7 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
 
     /* The shapes next, under the same bound: a shape nearer than every
      * plane bounds the polygon query in turn. */
-    NearestShape ns = { tr, org, dir, plane_t, -1, 0, -1 };
+    NearestShape ns = { tr, org, dir, plane_t, -1, 0, -1, plane };
     if (w->nshapes > 0) {
         if (tr->bvh && tr->bvh->shapes) {
             double limit = plane_t;
@@ -485,6 +522,13 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
         best = plane_t;
     } else {
         tr->stats.polygon_hits++;
+        /* a polygon just nearer than the curved object or plane that
+         * bounded its walk: coincident with it (one just beyond that
+         * object is not looked for) */
+        if ((shape >= 0 || plane >= 0) && fabs(plane_t - best) <= COINCIDENT_WINDOW * best) {
+            tr->tie_t = plane_t;
+            tr->tie_material = shape >= 0 ? w->shapes[shape_surface].material : w->planes[plane].material;
+        }
     }
     hit->t = best;
     hit->point = v3_madd(org, dir, best);
@@ -549,9 +593,9 @@ int trace_instance_hits(Tracer *tr, int instance, Vec3 org, Vec3 dir, double tmi
 
 int trace_coincident_material(const Tracer *t, const Hit *hit)
 {
-    if (hit->kind != HIT_POLYGON || t->tie_t != hit->t)
+    if (t->tie_t < 0.0 || !(fabs(t->tie_t - hit->t) <= COINCIDENT_WINDOW * hit->t))
         return -1;
-    int other = world_polygon_material_hinted(t->world, t->tie_index, t->tie_instance);
+    int other = t->tie_material;
     int mine = hit_material(t->world, hit);
     const Material *m = t->world->materials;
     return other != mine && !materials_look_alike(&m[other], &m[mine]) ? other : -1;

@@ -60,11 +60,11 @@ typedef struct {
      * handed (an index in World.instances), -1 for a world polygon: a hint
      * for world_polygon_hinted. */
     int visiting;
-    /* The last trace_nearest's tie: a polygon met at exactly tie_t besides
-     * the one kept (the lower index), by its id and instance (-1: a world
-     * polygon); tie_t < 0: none (trace_coincident_material). */
+    /* The last trace_nearest's tie: a surface met at tie_t, as near as the
+     * one kept, and its material (trace_coincident_material); tie_t < 0:
+     * none. */
     double tie_t;
-    int tie_index, tie_instance;
+    int tie_material;
     /* trace_point_touches_other's answer for the last point asked about. */
     int touch_valid, touch_kind, touch_index, touch_result;
     Vec3 touch_point;
@@ -154,13 +154,18 @@ static inline int hit_material(const World *w, const Hit *h)
                                   : w->planes[h->index].material;
 }
 
-/* Coincident surfaces: where the polygon hit, found by the last
- * trace_nearest, lies at exactly the distance of another polygon of a
- * different material, that material (an index in World.materials), else
- * -1. hstrace keeps the polygon of the lower index, which is the object
- * declared first; POV-Ray keeps whichever its bounding hierarchy meets
- * first, which varies from pixel to pixel (the speckles of coincident
- * surfaces), so such hits are counted and reported, not matched. */
+/* Coincident surfaces: where the hit found by the last trace_nearest lies
+ * at the distance of another surface of a different material (and not one
+ * placed alike: materials_look_alike), that material (an index in
+ * World.materials), else -1. Polygons tie at exactly one distance, and
+ * hstrace keeps the lower index, the object declared first; a curved
+ * object ties with a plane or another curved object within
+ * COINCIDENT_WINDOW (1e-9) of it, where their arithmetic's rounding
+ * decides. POV-Ray keeps whichever its bounding hierarchy meets first or
+ * its rounding puts nearer, which varies from pixel to pixel (the speckles
+ * of coincident surfaces), so such hits are counted and reported, not
+ * matched. Polygons' ties with planes and curved objects are not looked
+ * for. */
 int trace_coincident_material(const Tracer *t, const Hit *hit);
 
 /* The surface a hit lies on as the material code names it (pigment.h's

@@ -466,17 +466,18 @@ static int render(Frame *f, const Options *o, int distributed)
 static void warn_coincident(const Frame *f, const Options *o)
 {
     const RenderStats *s = &f->report.render;
-    uint64_t n = s->shading.coincident_hits, pair = s->coincident_pair;
-    if (n == 0 || pair == 0)
+    uint64_t n = s->shading.coincident_hits, m = s->shading.coincident_secondary, pair = s->coincident_pair;
+    if (n + m == 0 || pair == 0)
         return;
     const Material *a = &f->world.materials[(pair >> 32) - 1], *b = &f->world.materials[(pair & 0xffffffffu) - 1];
     const char *where = a->pos.file ? a->pos.file : o->scene;
     fprintf(stderr,
-            "%s:%d:%d: warning: %llu camera ray%s met coincident surfaces of two objects, this one and %s:%d:%d "
-            "(among others); hstrace shows the object declared first, POV-Ray whichever it meets first (a speckle of "
-            "both where their textures differ)\n",
-            where, a->pos.line, a->pos.column, (unsigned long long)n, n == 1 ? "" : "s",
-            b->pos.file ? b->pos.file : where, b->pos.line, b->pos.column);
+            "%s:%d:%d: warning: %llu camera ray%s and %llu other%s met coincident surfaces of two objects, this one "
+            "and %s:%d:%d (among others); hstrace shows the one declared first or the nearer by its rounding, "
+            "POV-Ray the one it meets first or the nearer by its rounding (a speckle of both where their textures "
+            "differ)\n",
+            where, a->pos.line, a->pos.column, (unsigned long long)n, n == 1 ? "" : "s", (unsigned long long)m,
+            m == 1 ? "" : "s", b->pos.file ? b->pos.file : where, b->pos.line, b->pos.column);
 }
 
 /* The image into `output`, with the EXR header's provenance. */

@@ -654,11 +654,11 @@ void shade_trace(ShadeContext *ctx, const Ray *ray, double weight, int level, Ra
     trace_ray(ctx, ray, weight, level, 0, out);
 }
 
-/* A camera ray's hit on one of two coincident surfaces of different
- * materials (trace_coincident_material): counted, and the pair of least
- * materials kept, so that the report names the same objects for any
- * number of threads. */
-static void note_coincident(ShadeContext *ctx, const Hit *hit)
+/* A ray's hit on one of two coincident surfaces of different materials
+ * (trace_coincident_material): counted, a camera ray's apart, and the pair
+ * of least materials kept, so that the report names the same objects for
+ * any number of threads. */
+static void note_coincident(ShadeContext *ctx, const Hit *hit, int camera)
 {
     int other = trace_coincident_material(&ctx->tracer, hit);
     if (other < 0)
@@ -666,7 +666,10 @@ static void note_coincident(ShadeContext *ctx, const Hit *hit)
     int mine = hit_material(ctx->tracer.world, hit);
     uint64_t a = (uint64_t)(mine < other ? mine : other), b = (uint64_t)(mine < other ? other : mine);
     uint64_t key = (a + 1) << 32 | (b + 1);
-    ctx->stats.coincident_hits++;
+    if (camera)
+        ctx->stats.coincident_hits++;
+    else
+        ctx->stats.coincident_secondary++;
     if (ctx->coincident_pair == 0 || key < ctx->coincident_pair)
         ctx->coincident_pair = key;
 }
@@ -695,8 +698,8 @@ static void trace_ray(ShadeContext *ctx, const Ray *ray, double weight, int leve
     ctx->tracer.hide = (ray->not_image ? 0u : HIDE_NO_IMAGE) | (ray->reflection ? HIDE_NO_REFLECTION : 0u);
     int found = trace_nearest(&ctx->tracer, ray->org, ray->dir, HUGE_VAL, &ray->from, &hit);
     ctx->tracer.hide = 0;
-    if (found && ctx->depth == 0)
-        note_coincident(ctx, &hit);
+    if (found)
+        note_coincident(ctx, &hit, ctx->depth == 0);
     if (!found) {
         background(w, ray, out);
         if (ctx->quality.volume && w->nfogs && in_atmosphere(&ray->inside))
