@@ -55,6 +55,28 @@ static void own_ray(const Shape *s, Vec3 org, Vec3 dir, Vec3 *o, Vec3 *d)
     *d = s->transformed ? inverse_transform_direction(&s->to_world, dir) : dir;
 }
 
+/* sphere_all's test in the sphere's own space, along u, which is d / len
+ * (len = |d| > 0): the two crossings' t along d in t[0] (entering) and
+ * t[1] (leaving); returns which of them count, as bits (1: t[0], 2: t[1]).
+ * Shared by sphere_all and shape_sphere_crossings, so that both do the
+ * same arithmetic. */
+static inline unsigned sphere_unit_crossings(const Shape *s, Vec3 o, Vec3 u, double len, double tmax, double t[2])
+{
+    double r = s->u.sphere.radius, t1, t2;
+    if (!sphere_roots(o, u, s->u.sphere.center, r * r, &t1, &t2))
+        return 0;
+    unsigned kept = 0;
+    const double depth[2] = { t1, t2 };
+    for (int k = 0; k < 2; k++) {
+        if (!(depth[k] > SPHERE_DEPTH_TOLERANCE && depth[k] < POV_MAX_DISTANCE))
+            continue;
+        t[k] = len == 1.0 ? depth[k] : depth[k] / len;
+        if (t[k] < tmax)
+            kept |= 1u << k;
+    }
+    return kept;
+}
+
 static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
 {
     Vec3 o, d;
@@ -66,24 +88,46 @@ static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit 
     if (!(len > 0.0))
         return 0;
     Vec3 u = len == 1.0 ? d : v3_scale(d, 1.0 / len);
-    double r = s->u.sphere.radius, t1, t2;
-    if (!sphere_roots(o, u, s->u.sphere.center, r * r, &t1, &t2))
-        return 0;
+    double t[2];
+    unsigned kept = sphere_unit_crossings(s, o, u, len, tmax, t);
     int n = 0;
     /* the first crossing enters the solid, the second leaves it (an
      * inverse sphere's solid is the outside) */
-    const double depth[2] = { t1, t2 };
     for (int k = 0; k < 2; k++) {
-        if (!(depth[k] > SPHERE_DEPTH_TOLERANCE && depth[k] < POV_MAX_DISTANCE))
+        if (!(kept & (1u << k)))
             continue;
-        double t = len == 1.0 ? depth[k] : depth[k] / len;
-        if (!(t < tmax))
-            continue;
-        hits[n].t = t;
+        hits[n].t = t[k];
         hits[n].entering = (k == 0) != (s->inverse != 0);
         hits[n].part = SHAPE_SIDE;
         n++;
     }
+    return n;
+}
+
+void shape_ray_init(ShapeRay *r, Vec3 org, Vec3 dir)
+{
+    r->org = org;
+    r->len = v3_length(dir);
+    r->u = r->len == 1.0 ? dir : v3_scale(dir, 1.0 / r->len);
+    r->ulen = v3_length(r->u);
+    r->uu = r->ulen == 1.0 ? r->u : v3_scale(r->u, 1.0 / r->ulen);
+}
+
+int shape_sphere_crossings(const Shape *s, const ShapeRay *r, double tmax, double t[2])
+{
+    /* crossings(): the unit direction u and the limit along it */
+    if (!(r->len > 0.0))
+        return 0;
+    double ulimit = r->len == 1.0 ? tmax : tmax * r->len;
+    /* sphere_all(s, org, u, ulimit), s untransformed: its own ray is r's */
+    if (!(r->ulen > 0.0))
+        return 0;
+    double ut[2];
+    unsigned kept = sphere_unit_crossings(s, r->org, r->uu, r->ulen, ulimit, ut);
+    int n = 0;
+    for (int k = 0; k < 2; k++)
+        if (kept & (1u << k)) /* crossings() divides back to t along dir */
+            t[n++] = r->len == 1.0 ? ut[k] : ut[k] / r->len;
     return n;
 }
 

@@ -219,6 +219,27 @@ int shape_intersect_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHi
  * -1 when there is none before tmax. */
 double shape_nearest(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hit);
 
+/* A ray as the analytic shapes' tests make it unit (crossings and
+ * sphere_all in shape.c), worked out once for a ray tested against many
+ * spheres: POV-Ray's rays are unit, so the tests run along u = dir / |dir|,
+ * and a sphere's along u made unit again (|u| may round off 1). */
+typedef struct {
+    Vec3 org;
+    double len;  /* |dir| */
+    Vec3 u;      /* dir / len, as crossings() makes it */
+    double ulen; /* |u| */
+    Vec3 uu;     /* u / ulen, as sphere_all makes it */
+} ShapeRay;
+void shape_ray_init(ShapeRay *r, Vec3 org, Vec3 dir);
+
+/* shape_intersect_all for an untransformed sphere (kind SHAPE_SPHERE,
+ * !transformed; its box not tested): the t of its crossings, nearest first,
+ * into t; returns how many (0 to 2). The same arithmetic, bit for bit
+ * (tests/test_bvh.c compares them), without the frame every shape's test
+ * needs: the fast path of the tests that meet many spheres along one ray
+ * (shadow rays through a light buffer's cell, nearest hits). */
+int shape_sphere_crossings(const Shape *s, const ShapeRay *r, double tmax, double t[2]);
+
 /* Is the world point inside the solid (POV-Ray's Inside, inverse
  * included)? */
 int shape_inside(const Shape *s, Vec3 p);

@@ -371,7 +371,18 @@ int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
  * in its order). For methods that ask the shapes they list rather than
  * walk the shapes' hierarchy. */
 typedef enum { SHAPE_NOT_CROSSED, SHAPE_CROSSED_OPAQUE, SHAPE_CROSSED_SEE_THROUGH } ShapeCrossing;
-ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, int i);
+/* q's shadow ray as the spheres' fast test takes it (shape_sphere_crossings),
+ * made at the first untransformed sphere asked about ({ .made = 0 } before):
+ * a caller that asks about many shapes for one q keeps one. */
+typedef struct {
+    ShapeRay ray;
+    int made;
+} ShadowSphereRay;
+/* sr: q's (see above). An untransformed sphere's answer is the spheres'
+ * fast test's (its box asked only where the sphere is crossed: the answer
+ * is the box's and the sphere's together, in either order); every other
+ * shape's is shadow_shapes_test's own crossings'. */
+ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, int i, ShadowSphereRay *sr);
 /* Shape i's part of shadow_shapes_test: its crossings' colours folded
  * into *light; 1 when it is now fully blocked. shadow_shapes_test folds
  * the shapes in the order its walk of their hierarchy visits them, which

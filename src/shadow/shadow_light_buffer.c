@@ -145,11 +145,12 @@ static int buffer_objects_test(ShadowContext *ctx, const BufferPlace *at, const 
     const float u = (float)at->spot.u, v = (float)at->spot.v;
     uint32_t fold[LB_FOLD_MAX]; /* the see-through ones crossed, by their rank */
     int nfold = 0, too_many = 0;
+    ShadowSphereRay sr = { .made = 0 };
     for (uint32_t k = 0; k < cell->nobjects && cell->object[k].near <= limit; k++) {
         const LbObject *o = &cell->object[k];
         if (u < o->u0 || u > o->u1 || v < o->v0 || v > o->v1)
             continue;
-        ShapeCrossing c = shadow_shape_crossing(ctx, q, (int)o->shape);
+        ShapeCrossing c = shadow_shape_crossing(ctx, q, (int)o->shape, &sr);
         if (c == SHAPE_CROSSED_OPAQUE) {
             light->r = light->g = light->b = 0.0;
             return 1;
