@@ -377,7 +377,13 @@ typedef enum { SHAPE_NOT_CROSSED, SHAPE_CROSSED_OPAQUE, SHAPE_CROSSED_SEE_THROUG
 typedef struct {
     ShapeRay ray;
     int made;
+    /* the last sphere's crossings in the shadow window, nearest first,
+     * where shadow_shape_crossing found it crossed (else n is 0) */
+    int n;
+    double t[2];
 } ShadowSphereRay;
+/* The shapes shadow_shape_crossing tests by the spheres' fast test. */
+static inline int shadow_sphere_fast(const Shape *s) { return s->kind == SHAPE_SPHERE && !s->transformed; }
 /* sr: q's (see above). An untransformed sphere's answer is the spheres'
  * fast test's (its box asked only where the sphere is crossed: the answer
  * is the box's and the sphere's together, in either order); every other
@@ -391,6 +397,11 @@ ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, in
  * shapes it found crossed in that order gets the walk's colour, bit for
  * bit. */
 int shadow_shape_fold(ShadowContext *ctx, const ShadowQuery *q, int i, RGB *light);
+/* shadow_shape_fold for a sphere shadow_shape_crossing found crossed, see
+ * through, by the fast test (shadow_sphere_fast): its crossings (t[0..n-1],
+ * ShadowSphereRay's) folded as shadow_shape_fold folds its own, without
+ * finding them again. */
+int shadow_sphere_fold(ShadowContext *ctx, const ShadowQuery *q, int i, const double *t, int n, RGB *light);
 /* The distances along a shadow ray at which a shape's crossing counts:
  * (tmin, tlimit), POV-Ray's window for its shadow rays (trace.cpp,
  * TracePointLightShadowRay: beyond SMALL_TOLERANCE of the point, short of

@@ -213,18 +213,22 @@ static ShapeCrossing sphere_shadow_crossing(ShadowContext *ctx, const ShadowQuer
     double tmin, tlimit, t[2];
     shadow_shape_window(q->distance, &tmin, &tlimit);
     ctx->stats.shadow_shape_tests++;
-    int n = shape_sphere_crossings(s, &sr->ray, tlimit, t), crossed = 0;
-    for (int k = 0; k < n; k++) /* shape_shadow_crossings' window */
-        crossed |= t[k] > tmin;
-    if (!crossed || !shape_box_hit(s, q->point, q->to_light, tlimit))
+    int nall = shape_sphere_crossings(s, &sr->ray, tlimit, t);
+    sr->n = 0;
+    for (int k = 0; k < nall; k++) /* shape_shadow_crossings' window */
+        if (t[k] > tmin)
+            sr->t[sr->n++] = t[k];
+    if (sr->n == 0 || !shape_box_hit(s, q->point, q->to_light, tlimit)) {
+        sr->n = 0;
         return SHAPE_NOT_CROSSED;
+    }
     return m->opaque ? SHAPE_CROSSED_OPAQUE : SHAPE_CROSSED_SEE_THROUGH;
 }
 
 ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, int i, ShadowSphereRay *sr)
 {
     const World *w = ctx->tracer->world;
-    if (w->shapes[i].kind == SHAPE_SPHERE && !w->shapes[i].transformed)
+    if (shadow_sphere_fast(&w->shapes[i]))
         return sphere_shadow_crossing(ctx, q, &w->shapes[i], sr);
     ShapeHit hits[SHAPE_MAX_HITS];
     int n = shape_shadow_crossings(ctx, q, i, hits);
@@ -235,6 +239,8 @@ ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, in
     }
     return n > 0 ? SHAPE_CROSSED_SEE_THROUGH : SHAPE_NOT_CROSSED;
 }
+
+static int fold_crossings(ShadowContext *ctx, const ShadowQuery *q, int i, const ShapeHit *hits, int n, RGB *light);
 
 /* One shape's part of shadow_shapes_test; 1 when the light is now fully
  * blocked. */
@@ -255,10 +261,17 @@ static int shadow_shape_test(void *user, int i, int boxed, double *tmax)
     ShapeShadow *ss = user;
     ShadowContext *ctx = ss->ctx;
     const ShadowQuery *q = ss->q;
-    const World *w = ctx->tracer->world;
-    const Material *m = &w->materials[w->shapes[i].material];
     ShapeHit hits[SHAPE_MAX_HITS];
     int n = shape_shadow_crossings(ctx, q, i, hits);
+    return fold_crossings(ctx, q, i, hits, n, ss->light);
+}
+
+/* Shape i's n crossings (hits, in order along q's shadow ray) folded into
+ * *light; 1 when it is now fully blocked. */
+static int fold_crossings(ShadowContext *ctx, const ShadowQuery *q, int i, const ShapeHit *hits, int n, RGB *light)
+{
+    const World *w = ctx->tracer->world;
+    const Material *m = &w->materials[w->shapes[i].material];
     /* a fading interior fades the light over the legs the shadow ray
      * runs inside it: from the point (where it starts inside) or the
      * shape's last surface, to the next (the legs as the shape alone
@@ -270,13 +283,13 @@ static int shadow_shape_test(void *user, int i, int boxed, double *tmax)
         /* a CSG object's crossing is on one of its parts, with its texture */
         const int leaf = hits[k].leaf ? (int)(hits[k].leaf - w->shapes) : i;
         if (pass_through(ctx, &w->materials[w->shapes[leaf].material], surface_of_shape(leaf), hits[k].part, NULL,
-                         q, hits[k].t, ss->light))
+                         q, hits[k].t, light))
             return 1;
         if (inside) {
             RGB f = interior_fade(m, hits[k].t - from);
-            ss->light->r *= f.r;
-            ss->light->g *= f.g;
-            ss->light->b *= f.b;
+            light->r *= f.r;
+            light->g *= f.g;
+            light->b *= f.b;
         }
         inside = !inside && interior_fades_shadows(m);
         from = hits[k].t;
@@ -289,6 +302,14 @@ int shadow_shape_fold(ShadowContext *ctx, const ShadowQuery *q, int i, RGB *ligh
     ShapeShadow ss = { ctx, q, light };
     double unused = q->distance;
     return shadow_shape_test(&ss, i, 0, &unused);
+}
+
+int shadow_sphere_fold(ShadowContext *ctx, const ShadowQuery *q, int i, const double *t, int n, RGB *light)
+{
+    ShapeHit hits[2]; /* shape_intersect_all's, less what fold_crossings does not read */
+    for (int k = 0; k < n; k++)
+        hits[k] = (ShapeHit){ .t = t[k], .part = SHAPE_SIDE, .leaf = NULL };
+    return fold_crossings(ctx, q, i, hits, n, light);
 }
 
 int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)

@@ -143,9 +143,18 @@ static int buffer_objects_test(ShadowContext *ctx, const BufferPlace *at, const 
     /* the near bounds are floats rounded down: the limit is rounded up */
     const float limit = (float)((q->distance * (1.0 + 1e-9) + lbs->margin) * (1.0 + 0x1p-22));
     const float u = (float)at->spot.u, v = (float)at->spot.v;
-    uint32_t fold[LB_FOLD_MAX]; /* the see-through ones crossed, by their rank */
+    /* the see-through ones crossed, by their rank; a sphere tested by the
+     * fast test with its crossings (n > 0), which the fold need not find
+     * again */
+    struct {
+        uint32_t shape;
+        int n;
+        double t[2];
+    } fold[LB_FOLD_MAX];
     int nfold = 0, too_many = 0;
-    ShadowSphereRay sr = { .made = 0 };
+    ShadowSphereRay sr; /* made at its first sphere (no more set here: this runs at every decision) */
+    sr.made = 0;
+    sr.n = 0;
     for (uint32_t k = 0; k < cell->nobjects && cell->object[k].near <= limit; k++) {
         const LbObject *o = &cell->object[k];
         if (u < o->u0 || u > o->u1 || v < o->v0 || v > o->v1)
@@ -163,15 +172,19 @@ static int buffer_objects_test(ShadowContext *ctx, const BufferPlace *at, const 
             /* insertion by rank */
             uint32_t r = lbs->object_rank[o->shape];
             int j = nfold++;
-            for (; j > 0 && lbs->object_rank[fold[j - 1]] > r; j--)
+            for (; j > 0 && lbs->object_rank[fold[j - 1].shape] > r; j--)
                 fold[j] = fold[j - 1];
-            fold[j] = o->shape;
+            fold[j].shape = o->shape;
+            fold[j].n = shadow_sphere_fast(&lbs->world->shapes[o->shape]) ? sr.n : 0;
+            for (int h = 0; h < fold[j].n; h++)
+                fold[j].t[h] = sr.t[h];
         }
     }
     if (too_many)
         return shadow_shapes_test(ctx, q, light);
     for (int j = 0; j < nfold; j++)
-        if (shadow_shape_fold(ctx, q, (int)fold[j], light))
+        if (fold[j].n > 0 ? shadow_sphere_fold(ctx, q, (int)fold[j].shape, fold[j].t, fold[j].n, light)
+                          : shadow_shape_fold(ctx, q, (int)fold[j].shape, light))
             return 1;
     return 0;
 }
