@@ -24,28 +24,8 @@
 
 #define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
 #define POV_MAX_DISTANCE 1.0e7   /* POV-Ray's MAX_DISTANCE: farther crossings are not reported */
-#define SPHERE_DEPTH_TOLERANCE 1.0e-6 /* spheres.cpp's DEPTH_TOLERANCE */
 
 /* ---- sphere ------------------------------------------------------------- */
-
-/* POV-Ray's Sphere::Intersect for a unit direction: the two crossings of
- * the line, or 0 when it misses, grazes (half chord squared within EPSILON)
- * or starts outside moving away. */
-static int sphere_roots(Vec3 org, Vec3 unit_dir, Vec3 center, double radius2, double *t1, double *t2)
-{
-    Vec3 oc = v3_sub(center, org);
-    double oc2 = v3_dot(oc, oc);
-    double closest = v3_dot(oc, unit_dir);
-    if (oc2 >= radius2 && closest < POV_EPSILON)
-        return 0;
-    double half_chord2 = radius2 - oc2 + closest * closest;
-    if (!(half_chord2 > POV_EPSILON))
-        return 0;
-    double half_chord = sqrt(half_chord2);
-    *t1 = closest - half_chord;
-    *t2 = closest + half_chord;
-    return 1;
-}
 
 /* The ray in s's own space where its parameters are kept there
  * (Shape.transformed), else as it is; the direction is not made unit. */
@@ -53,28 +33,6 @@ static void own_ray(const Shape *s, Vec3 org, Vec3 dir, Vec3 *o, Vec3 *d)
 {
     *o = s->transformed ? inverse_transform_point(&s->to_world, org) : org;
     *d = s->transformed ? inverse_transform_direction(&s->to_world, dir) : dir;
-}
-
-/* sphere_all's test in the sphere's own space, along u, which is d / len
- * (len = |d| > 0): the two crossings' t along d in t[0] (entering) and
- * t[1] (leaving); returns which of them count, as bits (1: t[0], 2: t[1]).
- * Shared by sphere_all and shape_sphere_crossings, so that both do the
- * same arithmetic. */
-static inline unsigned sphere_unit_crossings(const Shape *s, Vec3 o, Vec3 u, double len, double tmax, double t[2])
-{
-    double r = s->u.sphere.radius, t1, t2;
-    if (!sphere_roots(o, u, s->u.sphere.center, r * r, &t1, &t2))
-        return 0;
-    unsigned kept = 0;
-    const double depth[2] = { t1, t2 };
-    for (int k = 0; k < 2; k++) {
-        if (!(depth[k] > SPHERE_DEPTH_TOLERANCE && depth[k] < POV_MAX_DISTANCE))
-            continue;
-        t[k] = len == 1.0 ? depth[k] : depth[k] / len;
-        if (t[k] < tmax)
-            kept |= 1u << k;
-    }
-    return kept;
 }
 
 static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit *hits)
@@ -89,7 +47,7 @@ static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit 
         return 0;
     Vec3 u = len == 1.0 ? d : v3_scale(d, 1.0 / len);
     double t[2];
-    unsigned kept = sphere_unit_crossings(s, o, u, len, tmax, t);
+    unsigned kept = shape_sphere_unit_crossings(s, o, u, len, tmax, t);
     int n = 0;
     /* the first crossing enters the solid, the second leaves it (an
      * inverse sphere's solid is the outside) */
@@ -101,33 +59,6 @@ static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit 
         hits[n].part = SHAPE_SIDE;
         n++;
     }
-    return n;
-}
-
-void shape_ray_init(ShapeRay *r, Vec3 org, Vec3 dir)
-{
-    r->org = org;
-    r->len = v3_length(dir);
-    r->u = r->len == 1.0 ? dir : v3_scale(dir, 1.0 / r->len);
-    r->ulen = v3_length(r->u);
-    r->uu = r->ulen == 1.0 ? r->u : v3_scale(r->u, 1.0 / r->ulen);
-}
-
-int shape_sphere_crossings(const Shape *s, const ShapeRay *r, double tmax, double t[2])
-{
-    /* crossings(): the unit direction u and the limit along it */
-    if (!(r->len > 0.0))
-        return 0;
-    double ulimit = r->len == 1.0 ? tmax : tmax * r->len;
-    /* sphere_all(s, org, u, ulimit), s untransformed: its own ray is r's */
-    if (!(r->ulen > 0.0))
-        return 0;
-    double ut[2];
-    unsigned kept = sphere_unit_crossings(s, r->org, r->uu, r->ulen, ulimit, ut);
-    int n = 0;
-    for (int k = 0; k < 2; k++)
-        if (kept & (1u << k)) /* crossings() divides back to t along dir */
-            t[n++] = r->len == 1.0 ? ut[k] : ut[k] / r->len;
     return n;
 }
 
