@@ -457,7 +457,15 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
 
     /* The shapes next, under the same bound: a shape nearer than every
      * plane bounds the polygon query in turn. */
-    NearestShape ns = { tr, org, dir, plane_t, -1, 0, -1, 0, { { 0, 0, 0 }, 0, { 0, 0, 0 }, 0, { 0, 0, 0 } } };
+    NearestShape ns; /* its ray left unset: made where a sphere needs it (ray_made) */
+    ns.tr = tr;
+    ns.org = org;
+    ns.dir = dir;
+    ns.best = plane_t;
+    ns.shape = -1;
+    ns.part = 0;
+    ns.surface = -1;
+    ns.ray_made = 0;
     if (w->nshapes > 0) {
         if (tr->bvh && tr->bvh->shapes) {
             double limit = plane_t;
