@@ -504,7 +504,7 @@ void shade_camera_interiors(ShadeContext *ctx, const World *w, Vec3 org, Interio
     /* the same origin as the last camera ray's: the same interiors */
     if (ctx->camera_inside_known && ctx->camera_inside_at.x == org.x && ctx->camera_inside_at.y == org.y &&
         ctx->camera_inside_at.z == org.z) {
-        *inside = ctx->camera_inside;
+        interior_copy(inside, &ctx->camera_inside);
         return;
     }
     for (int i = 0; i < w->nshapes; i++) {
@@ -512,7 +512,7 @@ void shade_camera_interiors(ShadeContext *ctx, const World *w, Vec3 org, Interio
         if (shape_inside(&w->shapes[i], org) && interior_index(inside, m->interior_key) < 0)
             interior_push(inside, m);
     }
-    ctx->camera_inside = *inside;
+    interior_copy(&ctx->camera_inside, inside);
     ctx->camera_inside_at = org;
     ctx->camera_inside_known = 1;
 }
@@ -521,21 +521,23 @@ void shade_camera_interiors(ShadeContext *ctx, const World *w, Vec3 org, Interio
  * (POV-Ray's ComputeRefraction bookkeeping; the atmosphere has ior 1). */
 static double refraction_ratio(const InteriorList *inside, const Material *m, InteriorList *beyond)
 {
-    *beyond = *inside;
+    interior_copy(beyond, inside);
     if (beyond->n == 0) {
         interior_push(beyond, m);
         return 1.0 / m->ior;
     }
+    /* the iors read from inside, which beyond copies up to where it is
+     * changed (the compiler cannot tell that interior_copy filled them) */
     int at = interior_index(beyond, m->interior_key);
     if (at == beyond->n - 1) { /* leaving the innermost */
         interior_remove(beyond, at);
-        return beyond->n == 0 ? m->ior : m->ior / beyond->ior[beyond->n - 1];
+        return beyond->n == 0 ? m->ior : m->ior / inside->ior[beyond->n - 1];
     }
     if (at >= 0) { /* leaving an overlap */
         interior_remove(beyond, at);
         return 1.0;
     }
-    double outer = beyond->ior[beyond->n - 1];
+    double outer = inside->ior[inside->n - 1];
     interior_push(beyond, m);
     return outer / m->ior;
 }
@@ -562,7 +564,7 @@ static void trace_reflection(ShadeContext *ctx, const Ray *ray, const Hit *hit, 
     Ray r;
     r.from = *hit;
     r.state = state;
-    r.inside = ray->inside;
+    interior_copy(&r.inside, &ray->inside);
     r.org = hit->point;
     r.not_image = 1;
     r.reflection = 1;
