@@ -411,6 +411,39 @@ static inline void shadow_shape_window(double distance, double *tmin, double *tl
     *tmin = 1.0e-3;
     *tlimit = distance - 1.0e-3;
 }
+/* shadow_shape_crossing for an untransformed sphere: shape_shadow_crossings'
+ * answer (some crossing in the window, inside the box) with the sphere's
+ * test first, by shape_sphere_crossings (the same arithmetic as
+ * shape_intersect_all's), and the box's only where the sphere is crossed:
+ * most spheres a cell lists pass the box test and miss, and the box costs
+ * as much as the sphere. Both tests are exact functions of the ray: their
+ * order changes no answer. shadow_shape_tests counts the exact tests.
+ * Inline here for the light buffer's loop over a cell's objects. */
+static inline ShapeCrossing shadow_sphere_crossing(ShadowContext *ctx, const ShadowQuery *q, const Shape *s,
+                                                   ShadowSphereRay *sr)
+{
+    const Material *m = &ctx->tracer->world->materials[s->material];
+    if (m->no_shadow)
+        return SHAPE_NOT_CROSSED;
+    if (!sr->made) {
+        shape_ray_init(&sr->ray, q->point, q->to_light);
+        sr->made = 1;
+    }
+    double tmin, tlimit, t[2];
+    shadow_shape_window(q->distance, &tmin, &tlimit);
+    ctx->stats.shadow_shape_tests++;
+    int nall = shape_sphere_crossings(s, &sr->ray, tlimit, t);
+    sr->n = 0;
+    for (int k = 0; k < nall; k++) /* shape_shadow_crossings' window */
+        if (t[k] > tmin)
+            sr->t[sr->n++] = t[k];
+    if (sr->n == 0 || !shape_box_hit(s, q->point, q->to_light, tlimit)) {
+        sr->n = 0;
+        return SHAPE_NOT_CROSSED;
+    }
+    return m->opaque ? SHAPE_CROSSED_OPAQUE : SHAPE_CROSSED_SEE_THROUGH;
+}
+
 /* One plane's part: World.planes[i] (passed over where it is q's own
  * surface or casts no shadow); tmin: trace_min_distance(q->point). */
 int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tmin, RGB *light);

@@ -159,7 +159,9 @@ static int buffer_objects_test(ShadowContext *ctx, const BufferPlace *at, const 
         const LbObject *o = &cell->object[k];
         if (u < o->u0 || u > o->u1 || v < o->v0 || v > o->v1)
             continue;
-        ShapeCrossing c = shadow_shape_crossing(ctx, q, (int)o->shape, &sr);
+        const Shape *s = &lbs->world->shapes[o->shape];
+        ShapeCrossing c = shadow_sphere_fast(s) ? shadow_sphere_crossing(ctx, q, s, &sr)
+                                                : shadow_shape_crossing(ctx, q, (int)o->shape, &sr);
         if (c == SHAPE_CROSSED_OPAQUE) {
             light->r = light->g = light->b = 0.0;
             return 1;
