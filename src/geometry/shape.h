@@ -212,18 +212,17 @@ struct Shape {
 typedef struct {
     Vec3 org;
     double len;  /* |dir| */
-    Vec3 u;      /* dir / len, as crossings() makes it */
-    double ulen; /* |u| */
+    double ulen; /* |u|, u = dir / len as crossings() makes it */
     Vec3 uu;     /* u / ulen, as sphere_all makes it */
 } ShapeRay;
 static inline void shape_ray_init(ShapeRay *r, Vec3 org, Vec3 dir)
 {
     r->org = org;
     r->len = v3_length(dir);
-    r->u = r->len == 1.0 ? dir : v3_scale(dir, 1.0 / r->len);
+    Vec3 u = r->len == 1.0 ? dir : v3_scale(dir, 1.0 / r->len);
     /* u is dir itself where len is 1: its length is len (the same sum) */
-    r->ulen = r->len == 1.0 ? r->len : v3_length(r->u);
-    r->uu = r->ulen == 1.0 ? r->u : v3_scale(r->u, 1.0 / r->ulen);
+    r->ulen = r->len == 1.0 ? r->len : v3_length(u);
+    r->uu = r->ulen == 1.0 ? u : v3_scale(u, 1.0 / r->ulen);
 }
 
 /* ---- the sphere's test: sphere_all's (shape.c), inline here for the
