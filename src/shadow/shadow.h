@@ -128,6 +128,11 @@ typedef struct LbMemo {
     const struct LbCell *cell;
     int face, i, j;
 } LbMemo;
+/* The cells remembered per light and kind of point (ShadowContext.
+ * light_buffer_memo), the last used first: two, since the points a thread
+ * asks about often go back and forth across a cell's border (the
+ * anti-aliasing's samples, a tile's rows). */
+#define LB_MEMO_CELLS 2
 
 /* The most polygons an hst beam gathers before it gives up (its samples
  * then decided by the shadow ray through the hierarchy). */
@@ -168,7 +173,7 @@ typedef struct ShadowContext {
     void *method_state;        /* a method's own per-thread data (its thread_init makes it), or NULL */
     const struct EmbreeScene *embree; /* the embree method's scene (shared, read-only), or NULL */
     struct LightBuffers *light_buffers; /* the lights' buffers (shared, built as points ask), or NULL */
-    struct LbMemo *light_buffer_memo;   /* ... and per light, 2 light + secondary: the cell this thread used last */
+    struct LbMemo *light_buffer_memo;   /* ... and per light, at LB_MEMO_CELLS (2 light + secondary): the cells this thread used last */
     /* Time of the current decision already counted whole (a light buffer's
      * cell built), which the sampled timing leaves out (shadow_decide.h). */
     double untimed_seconds;

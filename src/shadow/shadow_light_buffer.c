@@ -41,25 +41,39 @@ static void count_build(ShadowContext *ctx, double seconds)
     }
 }
 
-/* The cell at spot: the thread's last one for the light while it still
- * holds the spot (neighbouring points mostly share a cell), else the
- * buffer's. */
+/* Does the remembered cell m hold spot, and is it still the buffer's cell
+ * there? (a split cell is remembered only where the budget left its child
+ * unbuilt: it is looked up again) */
+static inline int memo_holds(const LbMemo *m, const LbSpot *spot)
+{
+    if (!m->cell || m->face != spot->face)
+        return 0;
+    int shift = 2 * (LB_LEVELS - 1 - m->cell->level);
+    return (spot->iu >> shift) == m->i && (spot->iv >> shift) == m->j && !m->cell->child;
+}
+
+/* The cell at spot: one of the thread's last ones for the light while it
+ * still holds the spot (neighbouring points mostly share a cell), else
+ * the buffer's. */
 static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, const ShadowQuery *q, const LbSpot *spot)
 {
-    LbMemo *m = &ctx->light_buffer_memo[2 * q->light + shadow_query_secondary(q)];
-    if (m->cell && m->face == spot->face) {
-        int shift = 2 * (LB_LEVELS - 1 - m->cell->level);
-        /* (a split cell is remembered only where the budget left its
-         * child unbuilt: it is looked up again) */
-        if ((spot->iu >> shift) == m->i && (spot->iv >> shift) == m->j && !m->cell->child)
-            return m->cell;
+    _Static_assert(LB_MEMO_CELLS == 2, "the last cell and the one before");
+    LbMemo *m = &ctx->light_buffer_memo[LB_MEMO_CELLS * (2 * q->light + shadow_query_secondary(q))];
+    if (memo_holds(&m[0], spot))
+        return m[0].cell;
+    if (memo_holds(&m[1], spot)) {
+        LbMemo x = m[1];
+        m[1] = m[0];
+        m[0] = x;
+        return x.cell;
     }
     double built;
     const LbCell *c = light_buffer_cell(ctx->light_buffers, lb, spot, &built);
     count_build(ctx, built);
     if (c) {
         int shift = 2 * (LB_LEVELS - 1 - c->level);
-        *m = (LbMemo){ c, spot->face, spot->iu >> shift, spot->iv >> shift };
+        m[1] = m[0];
+        m[0] = (LbMemo){ c, spot->face, spot->iu >> shift, spot->iv >> shift };
     }
     return c;
 }
