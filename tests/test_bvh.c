@@ -415,6 +415,99 @@ static void check_world(const char *name, const World *w, int avx2)
     grid_free(&g);
 }
 
+/* shape_sphere_crossings (the spheres' fast test) against shape_intersect_all
+ * (the reference), bit for bit, on an untransformed sphere: rays from around
+ * it, from its surface (along it, grazing, out, in), along the axes, of
+ * unit and other lengths (and none), under limits short of, at and past its
+ * crossings. Returns how many rays differ; *rays counts them. */
+static int sphere_crossings_differ(const Shape *s, uint64_t *rs, int *rays)
+{
+    Vec3 c = s->u.sphere.center;
+    double r = s->u.sphere.radius;
+    int differ = 0;
+    for (int i = 0; i < 400; i++) {
+        Vec3 n = random_dir(rs), d = random_dir(rs);
+        Vec3 o = v3_add(c, v3_scale(random_dir(rs), r * 4.0 * unit(rs)));
+        switch (i % 8) {
+        case 0: /* on the surface, along it (grazing) */
+            o = v3_add(c, v3_scale(n, r));
+            d = v3_normalize(v3_cross(n, d));
+            break;
+        case 1: /* on the surface, in or out */
+            o = v3_add(c, v3_scale(n, r));
+            d = i % 16 == 1 ? n : v3_neg(n);
+            break;
+        case 2: /* toward the centre from far off */
+            o = v3_add(c, v3_scale(n, r * 1e4));
+            d = v3_sub(c, o);
+            break;
+        case 3: /* along an axis */
+            d = i % 24 == 3 ? v3(1, 0, 0) : i % 24 == 11 ? v3(0, -1, 0) : v3(0, 0, 1);
+            break;
+        case 4: /* not of unit length */
+            d = v3_scale(d, 0.37 + 5.0 * unit(rs));
+            break;
+        case 5: /* none */
+            if (i % 40 == 5)
+                d = v3(0, 0, 0);
+            break;
+        default: /* toward a point on the surface, tangent at it or nearly */
+            d = v3_sub(v3_add(c, v3_scale(n, r * (1.0 + (unit(rs) - 0.5) * 1e-9))), o);
+            break;
+        }
+        double tmax = i % 3 == 0 ? HUGE_VAL : i % 3 == 1 ? 3.0 * r * unit(rs) : 1e-6;
+        ShapeHit hits[SHAPE_MAX_HITS];
+        int n_ref = shape_intersect_all(s, o, d, tmax, hits);
+        ShapeRay ray;
+        shape_ray_init(&ray, o, d);
+        double t[2];
+        int n_fast = shape_sphere_crossings(s, &ray, tmax, t);
+        int same = n_fast == n_ref;
+        for (int k = 0; same && k < n_ref; k++)
+            same = memcmp(&t[k], &hits[k].t, sizeof t[k]) == 0;
+        differ += !same;
+        ++*rays;
+    }
+    return differ;
+}
+
+static void check_sphere_crossings(const char *name, const World *w)
+{
+    uint64_t rs = 0xD1B54A32D192ED03ULL;
+    int rays = 0, differ = 0, spheres = 0;
+    for (int i = 0; i < w->nshapes; i++)
+        if (w->shapes[i].kind == SHAPE_SPHERE && !w->shapes[i].transformed) {
+            differ += sphere_crossings_differ(&w->shapes[i], &rs, &rays);
+            spheres++;
+        }
+    if (spheres > 0)
+        tap_ok(differ == 0,
+               "%s: the spheres' fast test (shape_sphere_crossings) finds shape_intersect_all's crossings, bit for "
+               "bit (%d spheres, %d rays, %d differ)",
+               name, spheres, rays, differ);
+}
+
+/* The same on spheres of every size and place, inverse ones among them. */
+static void check_sphere_crossings_spread(void)
+{
+    uint64_t rs = 0x94D049BB133111EBULL;
+    int rays = 0, differ = 0;
+    for (int i = 0; i < 200; i++) {
+        Shape s;
+        memset(&s, 0, sizeof s);
+        s.kind = SHAPE_SPHERE;
+        s.u.sphere.center = v3((unit(&rs) - 0.5) * (i < 100 ? 10.0 : 1e5), unit(&rs) - 0.5, (unit(&rs) - 0.5) * 1e3);
+        s.u.sphere.radius = i % 5 == 0 ? 1e-4 : i % 5 == 1 ? 300.0 : 0.05 + 2.0 * unit(&rs);
+        s.inverse = i % 7 == 0;
+        shape_compute_bounds(&s);
+        differ += sphere_crossings_differ(&s, &rs, &rays);
+    }
+    tap_ok(differ == 0,
+           "the spheres' fast test (shape_sphere_crossings) finds shape_intersect_all's crossings, bit for bit, on "
+           "200 spheres of every size and place (%d rays, %d differ)",
+           rays, differ);
+}
+
 static void check_scene_file(const char *srcdir, const char *rel)
 {
     World w;
@@ -425,6 +518,7 @@ static void check_scene_file(const char *srcdir, const char *rel)
         return;
     }
     check_same_as_plain(rel, &w);
+    check_sphere_crossings(rel, &w);
     check_world(rel, &w, 0);
     /* The traversals again with AVX2's box test, where this processor has it. */
     if (bvh_have_avx2())
@@ -445,9 +539,11 @@ int main(void)
         "scenes/hard/inside-volume.pov", "scenes/hard/light-in-plane.pov", "scenes/hard/long-shadows.pov",
         "scenes/hard/mirrors.pov", "scenes/hard/shared-edges-perspective.pov", "scenes/hard/shared-edges.pov",
         "scenes/hard/transparent.pov", "scenes/shapes/shapes-many.pov", "scenes/shapes/sphere-basic.pov",
+        "bench/marbles.pov",
     };
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++)
         check_scene_file(srcdir, scenes[i]);
+    check_sphere_crossings_spread();
 
     /* Random soups: clusters of small triangles, many of them sharing
      * vertices exactly (ties), and coincident copies of the same triangle;

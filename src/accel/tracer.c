@@ -388,6 +388,8 @@ typedef struct {
     int shape, part;
     int surface;          /* the primitive met: `shape`, or a part of it (a CSG object's) */
     int plane;            /* the nearest plane, which `best` starts at (-1: none) */
+    int ray_made;         /* ray: made at the first untransformed sphere met */
+    ShapeRay ray;
 } NearestShape;
 
 /* Two surfaces this near along a ray (relatively) are one surface to the
@@ -452,6 +454,42 @@ static int nearer_shape(void *user, int i, int boxed, double *tmax)
     return 0;
 }
 
+/* nearer_shape, with an untransformed sphere's test by
+ * shape_sphere_crossings (shape_nearest's answer, bit for bit: the nearest
+ * of shape_intersect_all's crossings, on the ray made unit once for all the
+ * spheres it meets) and its box tested only where it is crossed (the box
+ * and the sphere decide together, in either order). tests/test_bvh.c
+ * compares trace_nearest with shape_nearest on every shape. */
+static int nearer_shape_fast(void *user, int i, int boxed, double *tmax)
+{
+    NearestShape *ns = user;
+    const Shape *s = &ns->tr->world->shapes[i];
+    if (s->kind != SHAPE_SPHERE || s->transformed)
+        return nearer_shape(user, i, boxed, tmax);
+    double limit = ns->shape >= 0 && i < ns->shape ? nextafter(ns->best, HUGE_VAL) : ns->best;
+    double window = limit < HUGE_VAL ? limit * (1.0 + COINCIDENT_WINDOW) : limit; /* as nearer_shape's */
+    if (!ns->ray_made) {
+        shape_ray_init(&ns->ray, ns->org, ns->dir);
+        ns->ray_made = 1;
+    }
+    ns->tr->stats.shape_tests++;
+    double t[2];
+    if (shape_sphere_crossings(s, &ns->ray, window, t) == 0 || (!boxed && !shape_box_hit(s, ns->org, ns->dir, window)))
+        return 0;
+    if (!(t[0] > 0.0))
+        return 0;
+    int taken = t[0] < limit && (t[0] < ns->best || i < ns->shape);
+    note_shape_tie(ns, i, t[0], taken);
+    if (taken) {
+        ns->best = t[0];
+        ns->shape = i;
+        ns->part = SHAPE_SIDE;
+        ns->surface = i;
+        *tmax = t[0];
+    }
+    return 0;
+}
+
 int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, Hit *hit)
 {
     const World *w = tr->world;
@@ -480,11 +518,20 @@ int trace_nearest(Tracer *tr, Vec3 org, Vec3 dir, double tmax, const Hit *from, 
 
     /* The shapes next, under the same bound: a shape nearer than every
      * plane bounds the polygon query in turn. */
-    NearestShape ns = { tr, org, dir, plane_t, -1, 0, -1, plane };
+    NearestShape ns; /* its ray left unset: made where a sphere needs it (ray_made) */
+    ns.tr = tr;
+    ns.org = org;
+    ns.dir = dir;
+    ns.best = plane_t;
+    ns.shape = -1;
+    ns.part = 0;
+    ns.surface = -1;
+    ns.plane = plane;
+    ns.ray_made = 0;
     if (w->nshapes > 0) {
         if (tr->bvh && tr->bvh->shapes) {
             double limit = plane_t;
-            bvh_shapes_nearest_walk(tr->bvh->shapes, org, dir, &limit, tr->hide, nearer_shape, &ns,
+            bvh_shapes_nearest_walk(tr->bvh->shapes, org, dir, &limit, tr->hide, nearer_shape_fast, &ns,
                                     &tr->stats.nodes_visited, tr->avx2);
         } else {
             for (int i = 0; i < w->nshapes; i++) {

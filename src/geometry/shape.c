@@ -24,28 +24,8 @@
 
 #define POV_EPSILON 1.0e-10      /* POV-Ray's EPSILON */
 #define POV_MAX_DISTANCE 1.0e7   /* POV-Ray's MAX_DISTANCE: farther crossings are not reported */
-#define SPHERE_DEPTH_TOLERANCE 1.0e-6 /* spheres.cpp's DEPTH_TOLERANCE */
 
 /* ---- sphere ------------------------------------------------------------- */
-
-/* POV-Ray's Sphere::Intersect for a unit direction: the two crossings of
- * the line, or 0 when it misses, grazes (half chord squared within EPSILON)
- * or starts outside moving away. */
-static int sphere_roots(Vec3 org, Vec3 unit_dir, Vec3 center, double radius2, double *t1, double *t2)
-{
-    Vec3 oc = v3_sub(center, org);
-    double oc2 = v3_dot(oc, oc);
-    double closest = v3_dot(oc, unit_dir);
-    if (oc2 >= radius2 && closest < POV_EPSILON)
-        return 0;
-    double half_chord2 = radius2 - oc2 + closest * closest;
-    if (!(half_chord2 > POV_EPSILON))
-        return 0;
-    double half_chord = sqrt(half_chord2);
-    *t1 = closest - half_chord;
-    *t2 = closest + half_chord;
-    return 1;
-}
 
 /* The ray in s's own space where its parameters are kept there
  * (Shape.transformed), else as it is; the direction is not made unit. */
@@ -66,20 +46,15 @@ static int sphere_all(const Shape *s, Vec3 org, Vec3 dir, double tmax, ShapeHit 
     if (!(len > 0.0))
         return 0;
     Vec3 u = len == 1.0 ? d : v3_scale(d, 1.0 / len);
-    double r = s->u.sphere.radius, t1, t2;
-    if (!sphere_roots(o, u, s->u.sphere.center, r * r, &t1, &t2))
-        return 0;
+    double t[2];
+    unsigned kept = shape_sphere_unit_crossings(s, o, u, len, tmax, t);
     int n = 0;
     /* the first crossing enters the solid, the second leaves it (an
      * inverse sphere's solid is the outside) */
-    const double depth[2] = { t1, t2 };
     for (int k = 0; k < 2; k++) {
-        if (!(depth[k] > SPHERE_DEPTH_TOLERANCE && depth[k] < POV_MAX_DISTANCE))
+        if (!(kept & (1u << k)))
             continue;
-        double t = len == 1.0 ? depth[k] : depth[k] / len;
-        if (!(t < tmax))
-            continue;
-        hits[n].t = t;
+        hits[n].t = t[k];
         hits[n].entering = (k == 0) != (s->inverse != 0);
         hits[n].part = SHAPE_SIDE;
         n++;

@@ -205,6 +205,98 @@ struct Shape {
     Vec3 bbox_min, bbox_max; /* world space */
 };
 
+/* A ray as the analytic shapes' tests make it unit (crossings and
+ * sphere_all in shape.c), worked out once for a ray tested against many
+ * spheres: POV-Ray's rays are unit, so the tests run along u = dir / |dir|,
+ * and a sphere's along u made unit again (|u| may round off 1). */
+typedef struct {
+    Vec3 org;
+    double len;  /* |dir| */
+    double ulen; /* |u|, u = dir / len as crossings() makes it */
+    Vec3 uu;     /* u / ulen, as sphere_all makes it */
+} ShapeRay;
+static inline void shape_ray_init(ShapeRay *r, Vec3 org, Vec3 dir)
+{
+    r->org = org;
+    r->len = v3_length(dir);
+    Vec3 u = r->len == 1.0 ? dir : v3_scale(dir, 1.0 / r->len);
+    /* u is dir itself where len is 1: its length is len (the same sum) */
+    r->ulen = r->len == 1.0 ? r->len : v3_length(u);
+    r->uu = r->ulen == 1.0 ? u : v3_scale(u, 1.0 / r->ulen);
+}
+
+/* ---- the sphere's test: sphere_all's (shape.c), inline here for the
+ * tests that meet many spheres along one ray ---- */
+
+#define SHAPE_SPHERE_DEPTH_TOLERANCE 1.0e-6 /* spheres.cpp's DEPTH_TOLERANCE */
+#define SHAPE_MAX_DISTANCE 1.0e7            /* POV-Ray's MAX_DISTANCE */
+
+/* POV-Ray's Sphere::Intersect for a unit direction: the two crossings of
+ * the line, or 0 when it misses, grazes (half chord squared within EPSILON)
+ * or starts outside moving away. */
+static inline int shape_sphere_roots(Vec3 org, Vec3 unit_dir, Vec3 center, double radius2, double *t1, double *t2)
+{
+    Vec3 oc = v3_sub(center, org);
+    double oc2 = v3_dot(oc, oc);
+    double closest = v3_dot(oc, unit_dir);
+    if (oc2 >= radius2 && closest < POV_EPSILON)
+        return 0;
+    double half_chord2 = radius2 - oc2 + closest * closest;
+    if (!(half_chord2 > POV_EPSILON))
+        return 0;
+    double half_chord = sqrt(half_chord2);
+    *t1 = closest - half_chord;
+    *t2 = closest + half_chord;
+    return 1;
+}
+
+/* sphere_all's test in the sphere's own space from o along u, which is
+ * d / len (len = |d| > 0): the two crossings' t along d in t[0] (entering)
+ * and t[1] (leaving); returns which of them count, as bits (1: t[0], 2:
+ * t[1]). sphere_all's own, and shape_sphere_crossings', so that both do the
+ * same arithmetic. */
+static inline unsigned shape_sphere_unit_crossings(const Shape *s, Vec3 o, Vec3 u, double len, double tmax,
+                                                   double t[2])
+{
+    double r = s->u.sphere.radius, t1, t2;
+    if (!shape_sphere_roots(o, u, s->u.sphere.center, r * r, &t1, &t2))
+        return 0;
+    unsigned kept = 0;
+    const double depth[2] = { t1, t2 };
+    for (int k = 0; k < 2; k++) {
+        if (!(depth[k] > SHAPE_SPHERE_DEPTH_TOLERANCE && depth[k] < SHAPE_MAX_DISTANCE))
+            continue;
+        t[k] = len == 1.0 ? depth[k] : depth[k] / len;
+        if (t[k] < tmax)
+            kept |= 1u << k;
+    }
+    return kept;
+}
+
+/* shape_intersect_all for an untransformed sphere (kind SHAPE_SPHERE,
+ * !transformed; its box not tested) along r: the t of its crossings,
+ * nearest first, into t; returns how many (0 to 2). The same arithmetic,
+ * bit for bit (tests/test_bvh.c compares them), without the frame every
+ * shape's test needs: the fast path of the tests that meet many spheres
+ * along one ray (shadow rays through a light buffer's cell, nearest hits). */
+static inline int shape_sphere_crossings(const Shape *s, const ShapeRay *r, double tmax, double t[2])
+{
+    /* crossings(): the unit direction u and the limit along it */
+    if (!(r->len > 0.0))
+        return 0;
+    double ulimit = r->len == 1.0 ? tmax : tmax * r->len;
+    /* sphere_all(s, org, u, ulimit), s untransformed: its own ray is r's */
+    if (!(r->ulen > 0.0))
+        return 0;
+    double ut[2];
+    unsigned kept = shape_sphere_unit_crossings(s, r->org, r->uu, r->ulen, ulimit, ut);
+    int n = 0;
+    for (int k = 0; k < 2; k++)
+        if (kept & (1u << k)) /* crossings() divides back to t along dir */
+            t[n++] = r->len == 1.0 ? ut[k] : ut[k] / r->len;
+    return n;
+}
+
 /* Fills s's bounds from its parameters and transform (POV-Ray's
  * Compute_BBox, carried through the transform as Recompute_BBox does). */
 void shape_compute_bounds(Shape *s);

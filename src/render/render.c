@@ -73,8 +73,7 @@ static void trace_sample(void *user, double x, double y, AaColour *out)
     SampleUser *u = user;
     const RenderOptions *opt = u->job->opt;
     Ray ray;
-    memset(&ray, 0, sizeof ray);
-    ray.from.kind = HIT_NONE;
+    ray_init_camera(&ray);
     Radiance c = UNTRACED_PIXEL;
     if (camera_ray_at(&u->job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir)) {
         shade_camera_interiors(u->ctx, u->job->world, ray.org, &ray.inside);
@@ -149,8 +148,7 @@ static long render_tile(ShadeContext *ctx, RenderStats *loop, Job *job, int tile
         for (int x = wx0; x < wx1; x++) {
             int inside = x >= x0 && x < x1 && y >= y0;
             Ray ray;
-            memset(&ray, 0, sizeof ray);
-            ray.from.kind = HIT_NONE;
+            ray_init_camera(&ray);
             int traced = camera_ray(&job->world->camera, opt->width, opt->height, x, y, &ray.org, &ray.dir);
             Radiance c = UNTRACED_PIXEL;
             if (ctx->aov)

@@ -104,7 +104,7 @@ static RGB metallic_colour(double metallic, Vec3 normal, Vec3 to_light, RGB ligh
 {
     double x = fabs(acos(v3_dot(normal, to_light))) / (M_PI / 2.0);
     double f = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
-    f = fmin(1.0, fmax(0.0, f));
+    f = min_of(1.0, max_of(0.0, f));
     double k = metallic * (1.0 - f);
     RGB r = { light.r * (1.0 + k * (pigment.r - 1.0)), light.g * (1.0 + k * (pigment.g - 1.0)),
               light.b * (1.0 + k * (pigment.b - 1.0)) };
@@ -191,8 +191,12 @@ static int diffuse_only(const Finish *f, const Light *l)
     return l->shadowless || (!(f->phong > 0.0) && !(f->specular > 0.0));
 }
 
-static void add_light(const Finish *f, const Light *l, Vec3 eye_dir, Vec3 normal, Vec3 to_light, RGB pigment,
-                      double attenuation, RGB lc, RGB *acc)
+/* Always inlined: its arguments (three vectors and two colours by value)
+ * cost as much to pass as its diffuse term costs to work out, and
+ * direct_light calls it for every texture and light. */
+__attribute__((always_inline)) static inline void add_light(const Finish *f, const Light *l, Vec3 eye_dir,
+                                                             Vec3 normal, Vec3 to_light, RGB pigment,
+                                                             double attenuation, RGB lc, RGB *acc)
 {
     add_diffuse(f, normal, to_light, pigment, attenuation, lc, acc);
     if (l->shadowless)
@@ -416,9 +420,9 @@ static void direct_light(ShadeContext *ctx, const Material *m, const Hit *hit, c
  * weight of the reflected ray (ComputeReflectivity, type 0). */
 static RGB reflectivity(const Finish *f, double cos_incidence, double *weight)
 {
-    double wmax = fmax(f->reflection_max[0], fmax(f->reflection_max[1], f->reflection_max[2]));
-    double wmin = fmax(f->reflection_min[0], fmax(f->reflection_min[1], f->reflection_min[2]));
-    *weight *= fmax(wmax, wmin);
+    double wmax = max_of(f->reflection_max[0], max_of(f->reflection_max[1], f->reflection_max[2]));
+    double wmin = max_of(f->reflection_min[0], max_of(f->reflection_min[1], f->reflection_min[2]));
+    *weight *= max_of(wmax, wmin);
     double frac = fabs(f->reflection_falloff - 1.0) > POV_EPSILON ? pow(1.0 - cos_incidence, f->reflection_falloff)
                                                                   : 1.0 - cos_incidence;
     RGB r;
@@ -444,14 +448,14 @@ static RGB reflectivity_fresnel(const Finish *f, double cos_incidence, double io
         double k = 0.5 * ((g - cos_incidence) * (g - cos_incidence)) / ((g + cos_incidence) * (g + cos_incidence));
         double a = cos_incidence * (g + cos_incidence) - 1.0, b = cos_incidence * (g - cos_incidence) + 1.0;
         k = k * (1.0 + (a * a) / (b * b));
-        k = fmin(1.0, fmax(0.0, k));
+        k = min_of(1.0, max_of(0.0, k));
         r.r = k * f->reflection_max[0] + (1.0 - k) * f->reflection_min[0];
         r.g = k * f->reflection_max[1] + (1.0 - k) * f->reflection_min[1];
         r.b = k * f->reflection_max[2] + (1.0 - k) * f->reflection_min[2];
     } else {
         r.r = f->reflection_max[0]; r.g = f->reflection_max[1]; r.b = f->reflection_max[2];
     }
-    *weight *= fmax(r.r, fmax(r.g, r.b));
+    *weight *= max_of(r.r, max_of(r.g, r.b));
     return r;
 }
 
@@ -500,7 +504,7 @@ void shade_camera_interiors(ShadeContext *ctx, const World *w, Vec3 org, Interio
     /* the same origin as the last camera ray's: the same interiors */
     if (ctx->camera_inside_known && ctx->camera_inside_at.x == org.x && ctx->camera_inside_at.y == org.y &&
         ctx->camera_inside_at.z == org.z) {
-        *inside = ctx->camera_inside;
+        interior_copy(inside, &ctx->camera_inside);
         return;
     }
     for (int i = 0; i < w->nshapes; i++) {
@@ -508,7 +512,7 @@ void shade_camera_interiors(ShadeContext *ctx, const World *w, Vec3 org, Interio
         if (shape_inside(&w->shapes[i], org) && interior_index(inside, m->interior_key) < 0)
             interior_push(inside, m);
     }
-    ctx->camera_inside = *inside;
+    interior_copy(&ctx->camera_inside, inside);
     ctx->camera_inside_at = org;
     ctx->camera_inside_known = 1;
 }
@@ -517,21 +521,23 @@ void shade_camera_interiors(ShadeContext *ctx, const World *w, Vec3 org, Interio
  * (POV-Ray's ComputeRefraction bookkeeping; the atmosphere has ior 1). */
 static double refraction_ratio(const InteriorList *inside, const Material *m, InteriorList *beyond)
 {
-    *beyond = *inside;
+    interior_copy(beyond, inside);
     if (beyond->n == 0) {
         interior_push(beyond, m);
         return 1.0 / m->ior;
     }
+    /* the iors read from inside, which beyond copies up to where it is
+     * changed (the compiler cannot tell that interior_copy filled them) */
     int at = interior_index(beyond, m->interior_key);
     if (at == beyond->n - 1) { /* leaving the innermost */
         interior_remove(beyond, at);
-        return beyond->n == 0 ? m->ior : m->ior / beyond->ior[beyond->n - 1];
+        return beyond->n == 0 ? m->ior : m->ior / inside->ior[beyond->n - 1];
     }
     if (at >= 0) { /* leaving an overlap */
         interior_remove(beyond, at);
         return 1.0;
     }
-    double outer = beyond->ior[beyond->n - 1];
+    double outer = inside->ior[inside->n - 1];
     interior_push(beyond, m);
     return outer / m->ior;
 }
@@ -558,7 +564,7 @@ static void trace_reflection(ShadeContext *ctx, const Ray *ray, const Hit *hit, 
     Ray r;
     r.from = *hit;
     r.state = state;
-    r.inside = ray->inside;
+    interior_copy(&r.inside, &ray->inside);
     r.org = hit->point;
     r.not_image = 1;
     r.reflection = 1;
@@ -629,7 +635,7 @@ static int add_refraction(ShadeContext *ctx, const Ray *ray, const Hit *hit, con
                           const Material *m, Vec3 normal, Vec3 raw, RGB fil, double trans, double weight, int level,
                           Radiance *out)
 {
-    double w1 = fmax(fabs(fil.r), fmax(fabs(fil.g), fabs(fil.b)));
+    double w1 = max_of(fabs(fil.r), max_of(fabs(fil.g), fabs(fil.b)));
     Radiance rfr = { 0, 0, 0, 0 };
     int tir = trace_refraction(ctx, ray, hit, state, m, normal, raw, weight * w1, level, &rfr);
     RGB attc = { 1.0, 1.0, 1.0 };
@@ -735,7 +741,7 @@ static void texture_own_light(ShadeContext *ctx, const Ray *ray, const Material 
     if (f->reflection_metallic != 0.0) {
         double x = fabs(acos(cos_incidence)) / (M_PI / 2.0);
         double F = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
-        F = fmin(1.0, fmax(0.0, F));
+        F = min_of(1.0, max_of(0.0, F));
         double k = f->reflection_metallic * (1.0 - F);
         t->reflec.r *= 1.0 + k * (t->pigment.r - 1.0);
         t->reflec.g *= 1.0 + k * (t->pigment.g - 1.0);
@@ -744,7 +750,7 @@ static void texture_own_light(ShadeContext *ctx, const Ray *ray, const Material 
     const Colour *pc = &t->colour;
     double att = 1.0 - pc->filter - pc->transmit;
     if (w->legacy_layer_light) /* POV-Ray 3.6's formula, kept for its scenes */
-        att = 1.0 - (pc->filter * fmax(pc->r, fmax(pc->g, pc->b)) + pc->transmit);
+        att = 1.0 - (pc->filter * max_of(pc->r, max_of(pc->g, pc->b)) + pc->transmit);
     t->att = att;
     /* POV-Ray's radiosity (at +Q9, its "advanced light") takes ambient's place */
     RGB amb = w->radiosity_replaces_ambient && ctx->quality.volume ? (RGB){ 0, 0, 0 } : w->ambient_light;
@@ -772,11 +778,11 @@ static void texture_colour(ShadeContext *ctx, const Ray *ray, const Hit *hit, co
     RGB fil = { pigment.r * pc->filter + pc->transmit, pigment.g * pc->filter + pc->transmit,
                 pigment.b * pc->filter + pc->transmit };
     if (f->conserve_energy) {
-        fil.r *= fmin(1.0, 1.0 - t->reflec.r);
-        fil.g *= fmin(1.0, 1.0 - t->reflec.g);
-        fil.b *= fmin(1.0, 1.0 - t->reflec.b);
+        fil.r *= min_of(1.0, 1.0 - t->reflec.r);
+        fil.g *= min_of(1.0, 1.0 - t->reflec.g);
+        fil.b *= min_of(1.0, 1.0 - t->reflec.b);
     }
-    double trans = fmin(1.0, fabs(greyscale(fil.r, fil.g, fil.b)));
+    double trans = min_of(1.0, fabs(greyscale(fil.r, fil.g, fil.b)));
 
     int tir = trans > w->adc_bailout && ctx->quality.refraction
                   ? add_refraction(ctx, ray, hit, state, m, t->normal, raw, fil, trans, weight, level, out)
@@ -946,11 +952,11 @@ __attribute__((noinline)) static void shade_layers_hit(ShadeContext *ctx, const 
         fil.g *= c->g * c->filter + c->transmit;
         fil.b *= c->b * c->filter + c->transmit;
         if (t->finish->conserve_energy && !ctx->quality.full_ambient) {
-            fil.r *= fmin(1.0, 1.0 - t->reflec.r);
-            fil.g *= fmin(1.0, 1.0 - t->reflec.g);
-            fil.b *= fmin(1.0, 1.0 - t->reflec.b);
+            fil.r *= min_of(1.0, 1.0 - t->reflec.r);
+            fil.g *= min_of(1.0, 1.0 - t->reflec.g);
+            fil.b *= min_of(1.0, 1.0 - t->reflec.b);
         }
-        trans = fmin(1.0, fabs(greyscale(fil.r, fil.g, fil.b)));
+        trans = min_of(1.0, fabs(greyscale(fil.r, fil.g, fil.b)));
         /* --aov's light loss weighs a layer by a single figure */
         t->weight = greyscale(seen[n].r, seen[n].g, seen[n].b);
     }

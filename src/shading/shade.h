@@ -88,6 +88,32 @@ typedef struct {
     unsigned not_image : 1, reflection : 1;
 } Ray;
 
+/* dst = src, its interiors alone (the first n of each array): the rest is
+ * never read, and the whole list is some 280 bytes, copied for every ray. */
+static inline void interior_copy(InteriorList *dst, const InteriorList *src)
+{
+    dst->n = src->n;
+    for (int i = 0; i < src->n; i++) {
+        dst->key[i] = src->key[i];
+        dst->ior[i] = src->ior[i];
+        dst->hollow[i] = src->hollow[i];
+    }
+}
+
+/* A camera ray before its origin and direction are set: from nothing
+ * (HIT_NONE), inside nothing, at the eye (no shadow state), an image ray.
+ * Set field by field: a memset would clear its interior list's arrays,
+ * which nothing reads past n. */
+static inline void ray_init_camera(Ray *r)
+{
+    r->org = r->dir = v3(0, 0, 0);
+    r->from = (Hit){ .kind = HIT_NONE };
+    r->inside.n = 0;
+    r->state = NULL;
+    r->not_image = 0;
+    r->reflection = 0;
+}
+
 /* The interiors a camera ray starts inside: those of the shapes whose
  * inside holds its origin, in the world's order (POV-Ray's
  * InitRayContainerState, which asks every object's Inside; hstrace asks

@@ -60,7 +60,7 @@ int shadow_context_init(ShadowContext *ctx, Tracer *tracer, const World *w, cons
         return -1;
     shadow_cache_forget(ctx, nl);
     if (p->light_buffers) {
-        ctx->light_buffer_memo = calloc(2 * (size_t)nl, sizeof *ctx->light_buffer_memo);
+        ctx->light_buffer_memo = calloc(2 * LB_MEMO_CELLS * (size_t)nl, sizeof *ctx->light_buffer_memo);
         if (!ctx->light_buffer_memo)
             return -1;
     }

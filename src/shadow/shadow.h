@@ -128,6 +128,11 @@ typedef struct LbMemo {
     const struct LbCell *cell;
     int face, i, j;
 } LbMemo;
+/* The cells remembered per light and kind of point (ShadowContext.
+ * light_buffer_memo), the last used first: two, since the points a thread
+ * asks about often go back and forth across a cell's border (the
+ * anti-aliasing's samples, a tile's rows). */
+#define LB_MEMO_CELLS 2
 
 /* The most polygons an hst beam gathers before it gives up (its samples
  * then decided by the shadow ray through the hierarchy). */
@@ -168,7 +173,7 @@ typedef struct ShadowContext {
     void *method_state;        /* a method's own per-thread data (its thread_init makes it), or NULL */
     const struct EmbreeScene *embree; /* the embree method's scene (shared, read-only), or NULL */
     struct LightBuffers *light_buffers; /* the lights' buffers (shared, built as points ask), or NULL */
-    struct LbMemo *light_buffer_memo;   /* ... and per light, 2 light + secondary: the cell this thread used last */
+    struct LbMemo *light_buffer_memo;   /* ... and per light, at LB_MEMO_CELLS (2 light + secondary): the cells this thread used last */
     /* Time of the current decision already counted whole (a light buffer's
      * cell built), which the sampled timing leaves out (shadow_decide.h). */
     double untimed_seconds;
@@ -371,7 +376,24 @@ int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light);
  * in its order). For methods that ask the shapes they list rather than
  * walk the shapes' hierarchy. */
 typedef enum { SHAPE_NOT_CROSSED, SHAPE_CROSSED_OPAQUE, SHAPE_CROSSED_SEE_THROUGH } ShapeCrossing;
-ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, int i);
+/* q's shadow ray as the spheres' fast test takes it (shape_sphere_crossings),
+ * made at the first untransformed sphere asked about ({ .made = 0 } before):
+ * a caller that asks about many shapes for one q keeps one. */
+typedef struct {
+    ShapeRay ray;
+    int made;
+    /* the last sphere's crossings in the shadow window, nearest first,
+     * where shadow_shape_crossing found it crossed (else n is 0) */
+    int n;
+    double t[2];
+} ShadowSphereRay;
+/* The shapes shadow_shape_crossing tests by the spheres' fast test. */
+static inline int shadow_sphere_fast(const Shape *s) { return s->kind == SHAPE_SPHERE && !s->transformed; }
+/* sr: q's (see above). An untransformed sphere's answer is the spheres'
+ * fast test's (its box asked only where the sphere is crossed: the answer
+ * is the box's and the sphere's together, in either order); every other
+ * shape's is shadow_shapes_test's own crossings'. */
+ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, int i, ShadowSphereRay *sr);
 /* Shape i's part of shadow_shapes_test: its crossings' colours folded
  * into *light; 1 when it is now fully blocked. shadow_shapes_test folds
  * the shapes in the order its walk of their hierarchy visits them, which
@@ -380,6 +402,11 @@ ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, in
  * shapes it found crossed in that order gets the walk's colour, bit for
  * bit. */
 int shadow_shape_fold(ShadowContext *ctx, const ShadowQuery *q, int i, RGB *light);
+/* shadow_shape_fold for a sphere shadow_shape_crossing found crossed, see
+ * through, by the fast test (shadow_sphere_fast): its crossings (t[0..n-1],
+ * ShadowSphereRay's) folded as shadow_shape_fold folds its own, without
+ * finding them again. */
+int shadow_sphere_fold(ShadowContext *ctx, const ShadowQuery *q, int i, const double *t, int n, RGB *light);
 /* The distances along a shadow ray at which a shape's crossing counts:
  * (tmin, tlimit), POV-Ray's window for its shadow rays (trace.cpp,
  * TracePointLightShadowRay: beyond SMALL_TOLERANCE of the point, short of
@@ -389,6 +416,39 @@ static inline void shadow_shape_window(double distance, double *tmin, double *tl
     *tmin = 1.0e-3;
     *tlimit = distance - 1.0e-3;
 }
+/* shadow_shape_crossing for an untransformed sphere: shape_shadow_crossings'
+ * answer (some crossing in the window, inside the box) with the sphere's
+ * test first, by shape_sphere_crossings (the same arithmetic as
+ * shape_intersect_all's), and the box's only where the sphere is crossed:
+ * most spheres a cell lists pass the box test and miss, and the box costs
+ * as much as the sphere. Both tests are exact functions of the ray: their
+ * order changes no answer. shadow_shape_tests counts the exact tests.
+ * Inline here for the light buffer's loop over a cell's objects. */
+static inline ShapeCrossing shadow_sphere_crossing(ShadowContext *ctx, const ShadowQuery *q, const Shape *s,
+                                                   ShadowSphereRay *sr)
+{
+    const Material *m = &ctx->tracer->world->materials[s->material];
+    if (m->no_shadow)
+        return SHAPE_NOT_CROSSED;
+    if (!sr->made) {
+        shape_ray_init(&sr->ray, q->point, q->to_light);
+        sr->made = 1;
+    }
+    double tmin, tlimit, t[2];
+    shadow_shape_window(q->distance, &tmin, &tlimit);
+    ctx->stats.shadow_shape_tests++;
+    int nall = shape_sphere_crossings(s, &sr->ray, tlimit, t);
+    sr->n = 0;
+    for (int k = 0; k < nall; k++) /* shape_shadow_crossings' window */
+        if (t[k] > tmin)
+            sr->t[sr->n++] = t[k];
+    if (sr->n == 0 || !shape_box_hit(s, q->point, q->to_light, tlimit)) {
+        sr->n = 0;
+        return SHAPE_NOT_CROSSED;
+    }
+    return m->opaque ? SHAPE_CROSSED_OPAQUE : SHAPE_CROSSED_SEE_THROUGH;
+}
+
 /* One plane's part: World.planes[i] (passed over where it is q's own
  * surface or casts no shadow); tmin: trace_min_distance(q->point). */
 int shadow_plane_test(ShadowContext *ctx, const ShadowQuery *q, int i, double tmin, RGB *light);

@@ -193,9 +193,11 @@ static int shape_shadow_crossings(ShadowContext *ctx, const ShadowQuery *q, int 
     return n;
 }
 
-ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, int i)
+ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, int i, ShadowSphereRay *sr)
 {
     const World *w = ctx->tracer->world;
+    if (shadow_sphere_fast(&w->shapes[i]))
+        return shadow_sphere_crossing(ctx, q, &w->shapes[i], sr);
     ShapeHit hits[SHAPE_MAX_HITS];
     int n = shape_shadow_crossings(ctx, q, i, hits);
     for (int k = 0; k < n; k++) {
@@ -205,6 +207,8 @@ ShapeCrossing shadow_shape_crossing(ShadowContext *ctx, const ShadowQuery *q, in
     }
     return n > 0 ? SHAPE_CROSSED_SEE_THROUGH : SHAPE_NOT_CROSSED;
 }
+
+static int fold_crossings(ShadowContext *ctx, const ShadowQuery *q, int i, const ShapeHit *hits, int n, RGB *light);
 
 /* One shape's part of shadow_shapes_test; 1 when the light is now fully
  * blocked. */
@@ -225,10 +229,17 @@ static int shadow_shape_test(void *user, int i, int boxed, double *tmax)
     ShapeShadow *ss = user;
     ShadowContext *ctx = ss->ctx;
     const ShadowQuery *q = ss->q;
-    const World *w = ctx->tracer->world;
-    const Material *m = &w->materials[w->shapes[i].material];
     ShapeHit hits[SHAPE_MAX_HITS];
     int n = shape_shadow_crossings(ctx, q, i, hits);
+    return fold_crossings(ctx, q, i, hits, n, ss->light);
+}
+
+/* Shape i's n crossings (hits, in order along q's shadow ray) folded into
+ * *light; 1 when it is now fully blocked. */
+static int fold_crossings(ShadowContext *ctx, const ShadowQuery *q, int i, const ShapeHit *hits, int n, RGB *light)
+{
+    const World *w = ctx->tracer->world;
+    const Material *m = &w->materials[w->shapes[i].material];
     /* a fading interior fades the light over the legs the shadow ray
      * runs inside it: from the point (where it starts inside) or the
      * shape's last surface, to the next (the legs as the shape alone
@@ -240,13 +251,13 @@ static int shadow_shape_test(void *user, int i, int boxed, double *tmax)
         /* a CSG object's crossing is on one of its parts, with its texture */
         const int leaf = hits[k].leaf ? (int)(hits[k].leaf - w->shapes) : i;
         if (pass_through(ctx, &w->materials[w->shapes[leaf].material], surface_of_shape(leaf), hits[k].part, NULL,
-                         q, hits[k].t, ss->light))
+                         q, hits[k].t, light))
             return 1;
         if (inside) {
             RGB f = interior_fade(m, hits[k].t - from);
-            ss->light->r *= f.r;
-            ss->light->g *= f.g;
-            ss->light->b *= f.b;
+            light->r *= f.r;
+            light->g *= f.g;
+            light->b *= f.b;
         }
         inside = !inside && interior_fades_shadows(m);
         from = hits[k].t;
@@ -259,6 +270,14 @@ int shadow_shape_fold(ShadowContext *ctx, const ShadowQuery *q, int i, RGB *ligh
     ShapeShadow ss = { ctx, q, light };
     double unused = q->distance;
     return shadow_shape_test(&ss, i, 0, &unused);
+}
+
+int shadow_sphere_fold(ShadowContext *ctx, const ShadowQuery *q, int i, const double *t, int n, RGB *light)
+{
+    ShapeHit hits[2]; /* shape_intersect_all's, less what fold_crossings does not read */
+    for (int k = 0; k < n; k++)
+        hits[k] = (ShapeHit){ .t = t[k], .part = SHAPE_SIDE, .leaf = NULL };
+    return fold_crossings(ctx, q, i, hits, n, light);
 }
 
 int shadow_shapes_test(ShadowContext *ctx, const ShadowQuery *q, RGB *light)

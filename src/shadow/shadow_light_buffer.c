@@ -41,25 +41,39 @@ static void count_build(ShadowContext *ctx, double seconds)
     }
 }
 
-/* The cell at spot: the thread's last one for the light while it still
- * holds the spot (neighbouring points mostly share a cell), else the
- * buffer's. */
+/* Does the remembered cell m hold spot, and is it still the buffer's cell
+ * there? (a split cell is remembered only where the budget left its child
+ * unbuilt: it is looked up again) */
+static inline int memo_holds(const LbMemo *m, const LbSpot *spot)
+{
+    if (!m->cell || m->face != spot->face)
+        return 0;
+    int shift = 2 * (LB_LEVELS - 1 - m->cell->level);
+    return (spot->iu >> shift) == m->i && (spot->iv >> shift) == m->j && !m->cell->child;
+}
+
+/* The cell at spot: one of the thread's last ones for the light while it
+ * still holds the spot (neighbouring points mostly share a cell), else
+ * the buffer's. */
 static const LbCell *cell_at_spot(ShadowContext *ctx, LightBuffer *lb, const ShadowQuery *q, const LbSpot *spot)
 {
-    LbMemo *m = &ctx->light_buffer_memo[2 * q->light + shadow_query_secondary(q)];
-    if (m->cell && m->face == spot->face) {
-        int shift = 2 * (LB_LEVELS - 1 - m->cell->level);
-        /* (a split cell is remembered only where the budget left its
-         * child unbuilt: it is looked up again) */
-        if ((spot->iu >> shift) == m->i && (spot->iv >> shift) == m->j && !m->cell->child)
-            return m->cell;
+    _Static_assert(LB_MEMO_CELLS == 2, "the last cell and the one before");
+    LbMemo *m = &ctx->light_buffer_memo[LB_MEMO_CELLS * (2 * q->light + shadow_query_secondary(q))];
+    if (memo_holds(&m[0], spot))
+        return m[0].cell;
+    if (memo_holds(&m[1], spot)) {
+        LbMemo x = m[1];
+        m[1] = m[0];
+        m[0] = x;
+        return x.cell;
     }
     double built;
     const LbCell *c = light_buffer_cell(ctx->light_buffers, lb, spot, &built);
     count_build(ctx, built);
     if (c) {
         int shift = 2 * (LB_LEVELS - 1 - c->level);
-        *m = (LbMemo){ c, spot->face, spot->iu >> shift, spot->iv >> shift };
+        m[1] = m[0];
+        m[0] = (LbMemo){ c, spot->face, spot->iu >> shift, spot->iv >> shift };
     }
     return c;
 }
@@ -143,13 +157,25 @@ static int buffer_objects_test(ShadowContext *ctx, const BufferPlace *at, const 
     /* the near bounds are floats rounded down: the limit is rounded up */
     const float limit = (float)((q->distance * (1.0 + 1e-9) + lbs->margin) * (1.0 + 0x1p-22));
     const float u = (float)at->spot.u, v = (float)at->spot.v;
-    uint32_t fold[LB_FOLD_MAX]; /* the see-through ones crossed, by their rank */
+    /* the see-through ones crossed, by their rank; a sphere tested by the
+     * fast test with its crossings (n > 0), which the fold need not find
+     * again */
+    struct {
+        uint32_t shape;
+        int n;
+        double t[2];
+    } fold[LB_FOLD_MAX];
     int nfold = 0, too_many = 0;
+    ShadowSphereRay sr; /* made at its first sphere (no more set here: this runs at every decision) */
+    sr.made = 0;
+    sr.n = 0;
     for (uint32_t k = 0; k < cell->nobjects && cell->object[k].near <= limit; k++) {
         const LbObject *o = &cell->object[k];
         if (u < o->u0 || u > o->u1 || v < o->v0 || v > o->v1)
             continue;
-        ShapeCrossing c = shadow_shape_crossing(ctx, q, (int)o->shape);
+        const Shape *s = &lbs->world->shapes[o->shape];
+        ShapeCrossing c = shadow_sphere_fast(s) ? shadow_sphere_crossing(ctx, q, s, &sr)
+                                                : shadow_shape_crossing(ctx, q, (int)o->shape, &sr);
         if (c == SHAPE_CROSSED_OPAQUE) {
             light->r = light->g = light->b = 0.0;
             return 1;
@@ -162,15 +188,19 @@ static int buffer_objects_test(ShadowContext *ctx, const BufferPlace *at, const 
             /* insertion by rank */
             uint32_t r = lbs->object_rank[o->shape];
             int j = nfold++;
-            for (; j > 0 && lbs->object_rank[fold[j - 1]] > r; j--)
+            for (; j > 0 && lbs->object_rank[fold[j - 1].shape] > r; j--)
                 fold[j] = fold[j - 1];
-            fold[j] = o->shape;
+            fold[j].shape = o->shape;
+            fold[j].n = shadow_sphere_fast(&lbs->world->shapes[o->shape]) ? sr.n : 0;
+            for (int h = 0; h < fold[j].n; h++)
+                fold[j].t[h] = sr.t[h];
         }
     }
     if (too_many)
         return shadow_shapes_test(ctx, q, light);
     for (int j = 0; j < nfold; j++)
-        if (shadow_shape_fold(ctx, q, (int)fold[j], light))
+        if (fold[j].n > 0 ? shadow_sphere_fold(ctx, q, (int)fold[j].shape, fold[j].t, fold[j].n, light)
+                          : shadow_shape_fold(ctx, q, (int)fold[j].shape, light))
             return 1;
     return 0;
 }
