@@ -144,14 +144,13 @@ static BufferPlace buffer_place(ShadowContext *ctx, LightBuffer *lb, const Shado
  * blocks the light whatever else the ray meets. See-through ones crossed,
  * and no opaque one, are folded in the order the shadow ray's walk folds
  * them (shadow_shape_fold); more of them than LB_FOLD_MAX, the walk
- * itself folds them. */
+ * itself folds them. For a world with curved objects only (the caller
+ * asks). */
 #define LB_FOLD_MAX 16
 static int buffer_objects_test(ShadowContext *ctx, const BufferPlace *at, const ShadowQuery *q, RGB *light)
 {
     const LbCell *cell = at->cell;
     const LightBuffers *lbs = ctx->light_buffers;
-    if (lbs->world->nshapes == 0)
-        return 0;
     if (!cell || !lbs->bvh->shapes || v3_max_abs(q->point) > lbs->object_reach)
         return shadow_shapes_test(ctx, q, light);
     /* the near bounds are floats rounded down: the limit is rounded up */
@@ -315,7 +314,9 @@ static int buffer_surfaces_test(ShadowContext *ctx, LightBuffer *lb, const Shado
     if (buffer_planes_test(ctx, lb, q, light))
         return 1;
     *at = buffer_place(ctx, lb, q);
-    return buffer_objects_test(ctx, at, q, light);
+    /* (asked here, not in the test: a world without curved objects, most
+     * polygon scenes, then makes no call at every decision) */
+    return ctx->light_buffers->world->nshapes > 0 && buffer_objects_test(ctx, at, q, light);
 }
 
 static inline int buffer_decide(ShadowContext *ctx, const ShadowQuery *q, RGB *light, int *surfaces_blocked)
