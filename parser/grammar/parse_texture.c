@@ -1514,6 +1514,20 @@ static void parse_texture_list(Parser *p, SceneTexture *tex, int count, const To
     set_texture_map(p, tex, e, count, at);
 }
 
+/* A texture made of other textures (a pattern's texture_map or list,
+ * tiles, a material_map): its own pigment cleared for the pattern that
+ * chooses among them (its notes of approximations kept), and no normal of
+ * its own (its textures have theirs). */
+static void clear_for_pattern(SceneTexture *tex)
+{
+    Pigment *pig = &tex->pigment;
+    const ApproxNote *notes = pig->approx;
+    memset(pig, 0, sizeof *pig); /* PIGMENT_SOLID, colour 0 */
+    pig->approx = notes;
+    transform_identity(&pig->transform);
+    tex->normal = NULL;
+}
+
 /* A patterned texture (POV-Ray's Parse_Pattern for a texture), from its
  * pattern keyword `at` (read) to `close`: the pattern, its modifiers and
  * transforms, and its texture_map (checker and hexagon: their list of
@@ -1523,13 +1537,7 @@ static void parse_patterned_texture(Parser *p, SceneTexture *tex, const Token *a
     int kw = at->kw;
     Pigment *pig = &tex->pigment;
     /* the pattern of the texture itself: none of the default pigment's colours */
-    const ApproxNote *notes = pig->approx;
-    memset(pig, 0, sizeof *pig);
-    pig->kind = PIGMENT_SOLID;
-    pig->colour = (Colour){ 0, 0, 0, 0, 0 };
-    pig->approx = notes;
-    transform_identity(&pig->transform);
-    tex->normal = NULL; /* its entries have the normals */
+    clear_for_pattern(tex);
     gram_start_pattern(p, pig, kw);
     int listed = gram_pattern_list_count(kw) > 0;
     if (listed)
@@ -1582,14 +1590,8 @@ static void parse_tiles(Parser *p, SceneTexture *tex, const Token *at)
 {
     tok_begin_block(p, "tiles");
     tok_nesting_enter(p, at);
-    Pigment *pig = &tex->pigment;
-    const ApproxNote *notes = pig->approx;
-    memset(pig, 0, sizeof *pig);
-    pig->kind = PIGMENT_SOLID;
-    pig->approx = notes;
-    transform_identity(&pig->transform);
-    tex->normal = NULL; /* its textures have the normals */
-    gram_start_pattern(p, pig, KW_checker);
+    clear_for_pattern(tex);
+    gram_start_pattern(p, &tex->pigment, KW_checker);
     SceneTexture *tile[2] = { NULL, NULL }; /* the first tile, then tile2 */
     for (int k = 0; k < 2; k++) {
         if (k == 1) {
@@ -1622,11 +1624,7 @@ static void parse_material_map(Parser *p, SceneTexture *tex, const Token *at)
     tok_begin_block(p, "material_map");
     tok_nesting_enter(p, at);
     Pigment *pig = &tex->pigment;
-    const ApproxNote *notes = pig->approx;
-    memset(pig, 0, sizeof *pig);
-    transform_identity(&pig->transform);
-    pig->approx = notes;
-    tex->normal = NULL; /* its textures have the normals */
+    clear_for_pattern(tex);
     gram_image_source(p, pig, at, "material_map", 0);
     TempVec entries;
     tok_tvec_init(&entries, sizeof(TextureMapEntry));
