@@ -420,6 +420,32 @@ static void note_shape_tie(NearestShape *ns, int surface, double t, int taken)
     ns->tr->tie_material = taken ? nearest_shape_material(ns) : w->shapes[surface].material;
 }
 
+/* The limit a shape's crossing must beat to be the nearest (an exact tie
+ * kept for the lower index), and the window a little beyond it that the
+ * shape is tested to, for the coincident surfaces there. */
+static double shape_limit(const NearestShape *ns, int i)
+{
+    return ns->shape >= 0 && i < ns->shape ? nextafter(ns->best, HUGE_VAL) : ns->best;
+}
+
+static double shape_window(double limit) { return limit < HUGE_VAL ? limit * (1.0 + COINCIDENT_WINDOW) : limit; }
+
+/* Shape i's crossing at t > 0 (within the window), on surface `surface`
+ * and part `part`: noted if coincident with the nearest so far, and kept
+ * if it is nearer (within the limit, as before the window). */
+static void offer_shape(NearestShape *ns, int i, int surface, int part, double t, double limit, double *tmax)
+{
+    int taken = t < limit && (t < ns->best || i < ns->shape);
+    note_shape_tie(ns, surface, t, taken);
+    if (taken) {
+        ns->best = t;
+        ns->shape = i;
+        ns->part = part;
+        ns->surface = surface;
+        *tmax = t;
+    }
+}
+
 /* boxed: the walk has just met the shape's own box (bvh.h), a cull the
  * hierarchy already trusts to keep every crossing: shape_box_hit, the same
  * box grown otherwise, would cull again before the exact test (in marbles,
@@ -430,27 +456,14 @@ static int nearer_shape(void *user, int i, int boxed, double *tmax)
 {
     NearestShape *ns = user;
     const Shape *s = &ns->tr->world->shapes[i];
-    double limit = ns->shape >= 0 && i < ns->shape ? nextafter(ns->best, HUGE_VAL) : ns->best;
-    /* looked at a little beyond the nearest so far, for the coincident
-     * surfaces there; kept only within the limit, as before */
-    double window = limit < HUGE_VAL ? limit * (1.0 + COINCIDENT_WINDOW) : limit;
+    double limit = shape_limit(ns, i), window = shape_window(limit);
     if (!boxed && !shape_box_hit(s, ns->org, ns->dir, window))
         return 0;
     ns->tr->stats.shape_tests++;
     ShapeHit h;
     double t = shape_nearest(s, ns->org, ns->dir, window, &h);
-    if (!(t > 0.0))
-        return 0;
-    int surface = h.leaf ? (int)(h.leaf - ns->tr->world->shapes) : i;
-    int taken = t < limit && (t < ns->best || i < ns->shape);
-    note_shape_tie(ns, surface, t, taken);
-    if (taken) {
-        ns->best = t;
-        ns->shape = i;
-        ns->part = h.part;
-        ns->surface = surface;
-        *tmax = t;
-    }
+    if (t > 0.0)
+        offer_shape(ns, i, h.leaf ? (int)(h.leaf - ns->tr->world->shapes) : i, h.part, t, limit, tmax);
     return 0;
 }
 
@@ -466,8 +479,7 @@ static int nearer_shape_fast(void *user, int i, int boxed, double *tmax)
     const Shape *s = &ns->tr->world->shapes[i];
     if (s->kind != SHAPE_SPHERE || s->transformed)
         return nearer_shape(user, i, boxed, tmax);
-    double limit = ns->shape >= 0 && i < ns->shape ? nextafter(ns->best, HUGE_VAL) : ns->best;
-    double window = limit < HUGE_VAL ? limit * (1.0 + COINCIDENT_WINDOW) : limit; /* as nearer_shape's */
+    double limit = shape_limit(ns, i), window = shape_window(limit);
     if (!ns->ray_made) {
         shape_ray_init(&ns->ray, ns->org, ns->dir);
         ns->ray_made = 1;
@@ -476,17 +488,8 @@ static int nearer_shape_fast(void *user, int i, int boxed, double *tmax)
     double t[2];
     if (shape_sphere_crossings(s, &ns->ray, window, t) == 0 || (!boxed && !shape_box_hit(s, ns->org, ns->dir, window)))
         return 0;
-    if (!(t[0] > 0.0))
-        return 0;
-    int taken = t[0] < limit && (t[0] < ns->best || i < ns->shape);
-    note_shape_tie(ns, i, t[0], taken);
-    if (taken) {
-        ns->best = t[0];
-        ns->shape = i;
-        ns->part = SHAPE_SIDE;
-        ns->surface = i;
-        *tmax = t[0];
-    }
+    if (t[0] > 0.0)
+        offer_shape(ns, i, i, SHAPE_SIDE, t[0], limit, tmax);
     return 0;
 }
 

@@ -164,8 +164,8 @@ static inline int hit_material(const World *w, const Hit *h)
  * decides. POV-Ray keeps whichever its bounding hierarchy meets first or
  * its rounding puts nearer, which varies from pixel to pixel (the speckles
  * of coincident surfaces), so such hits are counted and reported, not
- * matched. Polygons' ties with planes and curved objects are not looked
- * for. */
+ * matched. A polygon just nearer than a plane or curved object is looked
+ * for, not one just beyond it. */
 int trace_coincident_material(const Tracer *t, const Hit *hit);
 
 /* The surface a hit lies on as the material code names it (pigment.h's
